@@ -1,0 +1,289 @@
+//! The one error type of the core crate.
+//!
+//! Every variant names the rule that was broken and, where it has one, the place
+//! (point index and coordinate) where it was broken. Messages are lowercase, one
+//! line, without a final period, so that callers can prefix a file name.
+
+use std::fmt;
+
+use crate::fuzzy::Axis;
+
+/// Where in a list of fuzzy points a fault was found.
+///
+/// Displayed as a JSON-like path with a trailing `": "`, e.g. `points[2].y: `, or
+/// as nothing at all when the place is unknown. Indices are 0-based, as in the
+/// `points` array of a job file.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Place {
+    /// Index of the point (0-based), if known.
+    pub point: Option<usize>,
+    /// Coordinate within the point, if known.
+    pub axis: Option<Axis>,
+}
+
+impl Place {
+    /// No place known.
+    pub const NONE: Place = Place {
+        point: None,
+        axis: None,
+    };
+
+    /// The place `points[point].axis`.
+    #[must_use]
+    pub fn new(point: usize, axis: Axis) -> Self {
+        Place {
+            point: Some(point),
+            axis: Some(axis),
+        }
+    }
+}
+
+impl fmt::Display for Place {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match (self.point, self.axis) {
+            (Some(i), Some(a)) => write!(f, "points[{i}].{a}: "),
+            (Some(i), None) => write!(f, "points[{i}]: "),
+            (None, Some(a)) => write!(f, "{a}: "),
+            (None, None) => Ok(()),
+        }
+    }
+}
+
+/// Everything that can be wrong with the input of the core crate.
+///
+/// The library never panics on user input; each validated constructor
+/// (`try_new`) returns one of these instead.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[non_exhaustive]
+pub enum Error {
+    /// A value that must be a finite number is NaN or infinite.
+    ///
+    /// ```
+    /// # use t2spline::{Error, Nt2Number};
+    /// let e = Nt2Number::try_new(f64::NAN, [0.0, 1.0], [0.0, 1.0], [0.0, 1.0], 0.5).unwrap_err();
+    /// assert!(matches!(e, Error::NotFinite { what: "crisp", .. }));
+    /// ```
+    #[error("{place}{what} = {value} is not a finite number")]
+    NotFinite {
+        /// Where the value was found.
+        place: Place,
+        /// Which value (`"crisp"`, `"upper.left"`, `"weight"`, ...).
+        what: &'static str,
+        /// The offending value.
+        value: f64,
+    },
+
+    /// The seven values of a fuzzy number are out of order (SPEC §1).
+    ///
+    /// ```
+    /// # use t2spline::{Error, Nt2Number};
+    /// let e = Nt2Number::try_new(1.0, [0.7, 1.9], [0.6, 1.6], [0.8, 1.3], 0.6).unwrap_err();
+    /// assert!(matches!(e, Error::Order { rule: "upper.left <= primary.left", .. }));
+    /// assert_eq!(e.to_string(), "the order upper.left <= primary.left is broken: 0.7 > 0.6");
+    /// ```
+    #[error("{place}the order {rule} is broken: {left} > {right}")]
+    Order {
+        /// Where the number is.
+        place: Place,
+        /// The broken inequality, in SPEC words.
+        rule: &'static str,
+        /// The value on the left of the inequality.
+        left: f64,
+        /// The value on the right of the inequality.
+        right: f64,
+    },
+
+    /// A scalar is outside the range it must lie in.
+    ///
+    /// ```
+    /// # use t2spline::{Alpha, Error};
+    /// let e = Alpha::try_new(1.5).unwrap_err();
+    /// assert_eq!(e.to_string(), "alpha = 1.5 is outside [0, 1]");
+    /// ```
+    #[error("{place}{what} = {value} is outside {range}")]
+    OutOfRange {
+        /// Where the value was found.
+        place: Place,
+        /// Which value (`"alpha"`, `"lower_height"`, ...).
+        what: &'static str,
+        /// The offending value.
+        value: f64,
+        /// The allowed range, as text (`"[0, 1]"`, `"(0, 1]"`).
+        range: &'static str,
+    },
+
+    /// A curve of order `k` needs at least `k` control points (SPEC §6).
+    ///
+    /// ```
+    /// # use t2spline::{Error, NurbsCurve};
+    /// let e = NurbsCurve::<2>::try_clamped(2, vec![[0.0, 0.0], [1.0, 1.0]], vec![1.0, 1.0]).unwrap_err();
+    /// assert_eq!(e, Error::TooFewControlPoints { order: 3, count: 2 });
+    /// ```
+    #[error("a curve of order {order} needs at least {order} control points, got {count}")]
+    TooFewControlPoints {
+        /// The order `k = degree + 1`.
+        order: usize,
+        /// The number of control points given.
+        count: usize,
+    },
+
+    /// There must be one weight per control point.
+    ///
+    /// ```
+    /// # use t2spline::{Error, NurbsCurve};
+    /// let e = NurbsCurve::<2>::try_clamped(1, vec![[0.0, 0.0], [1.0, 1.0]], vec![1.0]).unwrap_err();
+    /// assert_eq!(e, Error::WeightCount { expected: 2, found: 1 });
+    /// ```
+    #[error("weights: expected {expected} (one per control point), got {found}")]
+    WeightCount {
+        /// Number of control points.
+        expected: usize,
+        /// Number of weights given.
+        found: usize,
+    },
+
+    /// A weight is not a finite number greater than 0 (SPEC §6).
+    ///
+    /// ```
+    /// # use t2spline::{Error, NurbsCurve};
+    /// let e = NurbsCurve::<2>::try_clamped(1, vec![[0.0, 0.0], [1.0, 1.0]], vec![1.0, 0.0]).unwrap_err();
+    /// assert_eq!(e.to_string(), "weights[1] = 0 must be finite and greater than 0");
+    /// ```
+    #[error("weights[{index}] = {value} must be finite and greater than 0")]
+    Weight {
+        /// Index of the weight (0-based).
+        index: usize,
+        /// The offending value.
+        value: f64,
+    },
+
+    /// The knot vector must have `n + k` values (SPEC §6).
+    ///
+    /// ```
+    /// # use t2spline::{Error, KnotVector};
+    /// let e = KnotVector::try_new(vec![0.0, 0.0, 1.0, 1.0], 2, 3).unwrap_err();
+    /// assert_eq!(e, Error::KnotCount { expected: 6, found: 4 });
+    /// ```
+    #[error("knots: expected {expected} values (control points + order), got {found}")]
+    KnotCount {
+        /// `n + k`.
+        expected: usize,
+        /// Number of knots given.
+        found: usize,
+    },
+
+    /// A knot is not a finite number.
+    ///
+    /// ```
+    /// # use t2spline::{Error, KnotVector};
+    /// let e = KnotVector::try_new(vec![0.0, 0.0, f64::INFINITY, 1.0], 1, 2).unwrap_err();
+    /// assert!(matches!(e, Error::KnotNotFinite { index: 2, .. }));
+    /// ```
+    #[error("knots[{index}] = {value} is not a finite number")]
+    KnotNotFinite {
+        /// Index of the knot (0-based).
+        index: usize,
+        /// The offending value.
+        value: f64,
+    },
+
+    /// Knots must not decrease (SPEC §6).
+    ///
+    /// ```
+    /// # use t2spline::{Error, KnotVector};
+    /// let e = KnotVector::try_new(vec![0.0, 0.0, 0.7, 0.5, 1.0, 1.0], 1, 4).unwrap_err();
+    /// assert_eq!(e.to_string(), "knots[3] = 0.5 is less than knots[2] = 0.7: knots must not decrease");
+    /// ```
+    #[error("knots[{index}] = {value} is less than knots[{}] = {previous}: knots must not decrease", index - 1)]
+    KnotDecreasing {
+        /// Index of the knot that is smaller than its predecessor.
+        index: usize,
+        /// The predecessor's value.
+        previous: f64,
+        /// The knot's value.
+        value: f64,
+    },
+
+    /// A knot repeats more than `k` times (SPEC §6).
+    ///
+    /// ```
+    /// # use t2spline::{Error, KnotVector};
+    /// let e = KnotVector::try_new(vec![0.0, 0.0, 0.0, 1.0, 1.0], 1, 3).unwrap_err();
+    /// assert_eq!(e.to_string(), "knots[0..3]: the value 0 repeats 3 times, more than the order 2");
+    /// ```
+    #[error("knots[{first}..{}]: the value {value} repeats {multiplicity} times, more than the order {order}", first + multiplicity)]
+    KnotMultiplicity {
+        /// Index of the first copy.
+        first: usize,
+        /// The repeated value.
+        value: f64,
+        /// How many times it repeats.
+        multiplicity: usize,
+        /// The order `k`.
+        order: usize,
+    },
+
+    /// The parameter domain `[U[p], U[n]]` is empty (SPEC §6).
+    ///
+    /// ```
+    /// # use t2spline::{Error, KnotVector};
+    /// let e = KnotVector::try_new(vec![0.0, 1.0, 1.0, 1.0, 2.0, 3.0], 2, 3).unwrap_err();
+    /// assert!(matches!(e, Error::EmptyDomain { .. }));
+    /// ```
+    #[error("knots: the domain [knots[{degree}], knots[{count}]] = [{start}, {end}] is empty; it needs knots[{degree}] < knots[{count}]")]
+    EmptyDomain {
+        /// The degree `p`.
+        degree: usize,
+        /// The number of control points `n`.
+        count: usize,
+        /// `U[p]`.
+        start: f64,
+        /// `U[n]`.
+        end: f64,
+    },
+
+    /// A parameter is NaN or outside the curve's domain.
+    ///
+    /// ```
+    /// # use t2spline::{Error, NurbsCurve};
+    /// let c = NurbsCurve::<2>::try_clamped(1, vec![[0.0, 0.0], [1.0, 1.0]], vec![1.0, 1.0])?;
+    /// assert!(matches!(c.eval(1.5), Err(Error::OutOfDomain { .. })));
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("parameter t = {t} is outside the domain [{start}, {end}]")]
+    OutOfDomain {
+        /// The parameter.
+        t: f64,
+        /// Start of the domain.
+        start: f64,
+        /// End of the domain.
+        end: f64,
+    },
+}
+
+impl Error {
+    /// Returns the same error, located at `place` if it carries a place.
+    #[must_use]
+    pub fn at(self, place: Place) -> Self {
+        match self {
+            Error::NotFinite { what, value, .. } => Error::NotFinite { place, what, value },
+            Error::Order {
+                rule, left, right, ..
+            } => Error::Order {
+                place,
+                rule,
+                left,
+                right,
+            },
+            Error::OutOfRange {
+                what, value, range, ..
+            } => Error::OutOfRange {
+                place,
+                what,
+                value,
+                range,
+            },
+            other => other,
+        }
+    }
+}

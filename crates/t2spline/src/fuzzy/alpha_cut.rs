@@ -1,0 +1,216 @@
+//! The alpha-cut of SPEC §2 (the paper's "fuzzification", Eqs. 4.1–4.2).
+
+use crate::error::{Error, Place};
+use crate::fuzzy::{Interval, Layer, Nt2Number, Tfn};
+
+/// A membership level in `[0, 1]`; [`Alpha::try_new`] is the only way in.
+#[derive(Clone, Copy, Debug, PartialEq, PartialOrd)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct Alpha(f64);
+
+impl Alpha {
+    /// Validates a level.
+    ///
+    /// # Errors
+    /// [`Error::OutOfRange`] if `value` is NaN or not in `[0, 1]`.
+    ///
+    /// # Examples
+    /// ```
+    /// # use t2spline::Alpha;
+    /// assert_eq!(Alpha::try_new(0.8)?.get(), 0.8);
+    /// assert!(Alpha::try_new(f64::NAN).is_err());
+    /// # Ok::<(), t2spline::Error>(())
+    /// ```
+    pub fn try_new(value: f64) -> Result<Self, Error> {
+        if (0.0..=1.0).contains(&value) {
+            Ok(Alpha(value))
+        } else {
+            Err(Error::OutOfRange {
+                place: Place::NONE,
+                what: "alpha",
+                value,
+                range: "[0, 1]",
+            })
+        }
+    }
+
+    /// The value.
+    #[must_use]
+    pub fn get(self) -> f64 {
+        self.0
+    }
+}
+
+/// The alpha-cut of one [`Nt2Number`] (SPEC §2).
+///
+/// Upper and primary cuts always exist; the lower cut exists only for `α ≤ h`
+/// (paper Eq. 4.1) and is absent above the lower height (Eq. 4.2, where the paper
+/// writes 0 for the missing value).
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct AlphaCut {
+    crisp: f64,
+    upper: Interval,
+    primary: Interval,
+    lower: Option<Interval>,
+}
+
+/// `cut(e, s) = e + s·(crisp − e)` (SPEC §2), evaluated as `(1 − s)·e + s·crisp`
+/// so that `s = 0` gives `e` and `s = 1` gives `crisp` exactly, and kept between
+/// `e` and `crisp`, where the exact value lies, against rounding.
+fn cut(e: f64, crisp: f64, s: f64) -> f64 {
+    ((1.0 - s) * e + s * crisp).clamp(e.min(crisp), e.max(crisp))
+}
+
+impl AlphaCut {
+    pub(crate) fn of(x: &Nt2Number, alpha: Alpha) -> Self {
+        let (a, c, h) = (alpha.get(), x.crisp(), x.height().get());
+        let upper =
+            Interval::new_unchecked(cut(x.upper().left(), c, a), cut(x.upper().right(), c, a));
+        let primary = Interval::new_unchecked(
+            cut(x.primary().left(), c, a),
+            cut(x.primary().right(), c, a),
+        );
+        // α ≤ h: the lower triangle of height h is cut at the fraction α/h of the
+        // way to its apex (SPEC §2.1). Mathematically the lower ends stay inside
+        // the primary cut (α/h ≥ α and lower ⊂ primary); `max`/`min` only guard
+        // the last bit against rounding.
+        let lower = (a <= h).then(|| {
+            let s = a / h;
+            Interval::new_unchecked(
+                cut(x.lower().left(), c, s).max(primary.left()),
+                cut(x.lower().right(), c, s).min(primary.right()),
+            )
+        });
+        AlphaCut {
+            crisp: c,
+            upper,
+            primary,
+            lower,
+        }
+    }
+
+    /// The crisp value, which every cut contains.
+    #[must_use]
+    pub fn crisp(&self) -> f64 {
+        self.crisp
+    }
+
+    /// The cut of the upper membership function.
+    #[must_use]
+    pub fn upper(&self) -> Interval {
+        self.upper
+    }
+
+    /// The cut of the primary membership function.
+    #[must_use]
+    pub fn primary(&self) -> Interval {
+        self.primary
+    }
+
+    /// The cut of the lower membership function; `None` when `α > h`.
+    #[must_use]
+    pub fn lower(&self) -> Option<Interval> {
+        self.lower
+    }
+
+    /// The cut value of one layer; `None` for the lower layers when `α > h`.
+    #[must_use]
+    pub fn layer(&self, layer: Layer) -> Option<f64> {
+        match layer {
+            Layer::UpperLeft => Some(self.upper.left()),
+            Layer::PrimaryLeft => Some(self.primary.left()),
+            Layer::LowerLeft => self.lower.map(|l| l.left()),
+            Layer::Crisp => Some(self.crisp),
+            Layer::LowerRight => self.lower.map(|l| l.right()),
+            Layer::PrimaryRight => Some(self.primary.right()),
+            Layer::UpperRight => Some(self.upper.right()),
+        }
+    }
+
+    /// Type reduction by the paper's "centroid min" rule (SPEC §3, Def. 4.3).
+    ///
+    /// ```text
+    /// α ≤ h:  left = (upper.left' + primary.left' + lower.left') / 3
+    ///         right = (lower.right' + primary.right' + upper.right') / 3
+    /// α > h:  left = (upper.left' + primary.left') / 2
+    ///         right = (primary.right' + upper.right') / 2
+    /// ```
+    /// The average changes from three terms to two at `α = h`, so the result
+    /// jumps there: that is the paper's method.
+    ///
+    /// # Examples
+    /// ```
+    /// # use t2spline::{Alpha, Nt2Number};
+    /// let x = Nt2Number::try_new(1.0, [0.4, 1.9], [0.6, 1.6], [0.8, 1.3], 0.6)?;
+    /// let t = x.alpha_cut(Alpha::try_new(0.8)?).type_reduce();
+    /// assert!((t.left() - 0.9).abs() < 1e-15 && (t.right() - 1.15).abs() < 1e-15);
+    /// # Ok::<(), t2spline::Error>(())
+    /// ```
+    #[must_use]
+    pub fn type_reduce(&self) -> Tfn {
+        let c = self.crisp;
+        let (left, right) = match self.lower {
+            Some(l) => (
+                (self.upper.left() + self.primary.left() + l.left()) / 3.0,
+                (l.right() + self.primary.right() + self.upper.right()) / 3.0,
+            ),
+            None => (
+                (self.upper.left() + self.primary.left()) / 2.0,
+                (self.primary.right() + self.upper.right()) / 2.0,
+            ),
+        };
+        // A mean of values in [upper.left', crisp] lies there too; the clamp
+        // only removes rounding.
+        Tfn::new_unchecked(
+            left.clamp(self.upper.left(), c),
+            c,
+            right.clamp(c, self.upper.right()),
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn x() -> Nt2Number {
+        Nt2Number::try_new(1.0, [0.4, 1.9], [0.6, 1.6], [0.8, 1.3], 0.6).unwrap()
+    }
+
+    #[test]
+    fn alpha_zero_is_the_number_itself() {
+        let c = x().alpha_cut(Alpha::try_new(0.0).unwrap());
+        assert_eq!(c.upper(), x().upper());
+        assert_eq!(c.primary(), x().primary());
+        assert_eq!(c.lower(), Some(x().lower()));
+    }
+
+    #[test]
+    fn alpha_one_is_crisp() {
+        let c = x().alpha_cut(Alpha::try_new(1.0).unwrap());
+        for l in crate::Layer::ALL {
+            assert!(
+                matches!(c.layer(l), None | Some(1.0)),
+                "{l}: {:?}",
+                c.layer(l)
+            );
+        }
+        assert_eq!(c.lower(), None);
+    }
+
+    #[test]
+    fn lower_cut_at_alpha_equal_h_is_the_crisp_value() {
+        let c = x().alpha_cut(Alpha::try_new(0.6).unwrap());
+        assert_eq!(c.lower(), Some(Interval::new_unchecked(1.0, 1.0)));
+    }
+
+    #[test]
+    fn lower_cut_uses_alpha_over_h() {
+        // α = 0.3, h = 0.6: s = 0.5, lower.left' = 0.8 + 0.5·0.2 = 0.9.
+        let c = x().alpha_cut(Alpha::try_new(0.3).unwrap());
+        let l = c.lower().unwrap();
+        assert!((l.left() - 0.9).abs() < 1e-15);
+        assert!((l.right() - 1.15).abs() < 1e-15);
+    }
+}

@@ -1,0 +1,18 @@
+//! Normal triangular type-2 fuzzy numbers and points (SPEC §1–§5).
+//!
+//! The flow through this module is the flow of one uncertain value through the
+//! method: an [`Nt2Number`] is cut at a level [`Alpha`] into an [`AlphaCut`]
+//! (SPEC §2), type-reduced to a type-1 triangle [`Tfn`] (SPEC §3) and defuzzified
+//! to one real number (SPEC §4). An [`Nt2Point`] does the same per coordinate.
+
+mod alpha_cut;
+mod layer;
+mod number;
+mod point;
+mod type_reduce;
+
+pub use alpha_cut::{Alpha, AlphaCut};
+pub use layer::{Layer, Layers};
+pub use number::{Height, Interval, Membership, Nt2Number};
+pub use point::{Axis, Nt2Point, Nt2Point2, Nt2Point3};
+pub use type_reduce::Tfn;

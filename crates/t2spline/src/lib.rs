@@ -1,0 +1,68 @@
+//! # t2spline — normal type-2 fuzzy rational B-spline curves
+//!
+//! Models uncertain data with rational B-spline curves whose control points are
+//! *normal triangular type-2 fuzzy numbers* (NT2TFN), following Zakaria, Wahab
+//! and Gobithaasan, "Normal Type-2 Fuzzy Rational B-spline Curve", as made
+//! precise by the project's `SPEC.md` (section numbers below refer to it).
+//!
+//! The crate has no I/O: job and result files live in `t2spline-io`, the
+//! command-line tool in `t2spline-cli`.
+//!
+//! ## The method in one example (Algorithm 1.1)
+//! ```
+//! use t2spline::{Alpha, FuzzyCurve, Layer, Nt2Number, Nt2Point, Side};
+//!
+//! // Stage 1: fuzzy control points (crisp value, upper, primary, lower feet, h).
+//! let x = |c: f64| Nt2Number::try_new(c, [c - 0.6, c + 0.9], [c - 0.4, c + 0.6], [c - 0.2, c + 0.3], 0.6);
+//! let points = vec![
+//!     Nt2Point::new([x(1.0)?, x(1.0)?]),
+//!     Nt2Point::new([x(2.0)?, x(4.0)?]),
+//!     Nt2Point::new([x(5.0)?, x(4.5)?]),
+//!     Nt2Point::new([x(6.0)?, x(1.0)?]),
+//! ];
+//! let curve = FuzzyCurve::try_new(2, points, vec![1.0, 1.0, 3.0, 1.0], None)?;
+//! let layers = curve.eval_layers(0.25)?;            // seven ordered layer points
+//! assert!(layers[Layer::UpperLeft][0] <= layers[Layer::Crisp][0]);
+//!
+//! // Stages 2–4 at alpha = 0.8 (above h = 0.6: the lower cut is absent).
+//! let solution = curve.solve(Alpha::try_new(0.8)?);
+//! assert!(solution.alpha_cut_curve(Layer::LowerLeft).is_none());
+//! let left = solution.type_reduced_curve(Side::Left);
+//! let solved = solution.defuzzified_curve();         // the crisp type-2 solution
+//! assert!(left.eval(0.5)?[0] <= solved.eval(0.5)?[0]);
+//!
+//! // Unequal left and right spreads move the solution off the crisp curve. Here
+//! // every number has left spreads (0.6, 0.4) and right spreads (0.9, 0.6), so
+//! // left = c − 0.1, right = c + 0.15 and every defuzzified point is the crisp
+//! // one moved by 0.05/3 in x and y: the distance is that constant.
+//! let d = solution.distance();
+//! let offset = 0.05 / 3.0 * 2f64.sqrt();
+//! assert!((d.max - offset).abs() < 1e-12 && (d.rms - offset).abs() < 1e-12);
+//! # Ok::<(), t2spline::Error>(())
+//! ```
+//!
+//! ## Contents
+//! - [`fuzzy`]: [`Nt2Number`] (SPEC §1), [`Alpha`] and [`AlphaCut`] (§2), type
+//!   reduction to a [`Tfn`] (§3), defuzzification (§4), [`Nt2Point`] (§5), and the
+//!   seven [`Layer`]s.
+//! - [`nurbs`]: [`KnotVector`], basis functions and [`NurbsCurve`] of any order
+//!   (§6).
+//! - [`pipeline`]: [`FuzzyCurve`] (stage 1), [`Solution`] (stages 2–4) and the
+//!   [`Distance`] between the crisp and the defuzzified curve (§7).
+//! - Features: `serde` (Serialize for the data types), `proptest` (generators in
+//!   `strategies`).
+
+mod error;
+pub mod fuzzy;
+pub mod nurbs;
+pub mod pipeline;
+#[cfg(any(test, feature = "proptest"))]
+pub mod strategies;
+
+pub use error::{Error, Place};
+pub use fuzzy::{
+    Alpha, AlphaCut, Axis, Height, Interval, Layer, Layers, Membership, Nt2Number, Nt2Point,
+    Nt2Point2, Nt2Point3, Tfn,
+};
+pub use nurbs::{Domain, KnotVector, NurbsCurve};
+pub use pipeline::{Distance, FuzzyCurve, Side, Solution};

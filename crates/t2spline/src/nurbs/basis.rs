@@ -1,0 +1,41 @@
+//! B-spline basis functions (The NURBS Book, §2.2 and Algorithm A2.2).
+
+/// The `p + 1` non-zero basis functions `N_{span−p,p}(t) … N_{span,p}(t)`, written
+/// into `out[0..=p]` (The NURBS Book, A2.2, the Cox–de Boor recurrence in
+/// triangular form):
+///
+/// ```text
+/// N_{i,0}(t) = 1 if U[i] ≤ t < U[i+1], else 0
+/// N_{i,p}(t) = (t − U[i])/(U[i+p] − U[i])·N_{i,p−1}(t) + (U[i+p+1] − t)/(U[i+p+1] − U[i+1])·N_{i+1,p−1}(t)
+/// ```
+/// `span` must be a non-empty span (`U[span] < U[span+1]`) with `p ≤ span`, so
+/// that every denominator is positive. The values are non-negative and sum to 1
+/// for `t` in `[U[span], U[span+1]]`.
+///
+/// # Panics
+/// If `out.len() < degree + 1` or `span + degree >= knots.len()`.
+///
+/// # Examples
+/// ```
+/// # use t2spline::nurbs::basis::basis_functions;
+/// let u = [0.0, 0.0, 0.0, 1.0, 1.0, 1.0];
+/// let mut n = [0.0; 3];
+/// basis_functions(&u, 2, 2, 0.5, &mut n);
+/// assert_eq!(n, [0.25, 0.5, 0.25]); // Bernstein polynomials at 1/2
+/// ```
+pub fn basis_functions(knots: &[f64], degree: usize, span: usize, t: f64, out: &mut [f64]) {
+    let mut left = vec![0.0; degree + 1];
+    let mut right = vec![0.0; degree + 1];
+    out[0] = 1.0;
+    for j in 1..=degree {
+        left[j] = t - knots[span + 1 - j];
+        right[j] = knots[span + j] - t;
+        let mut saved = 0.0;
+        for r in 0..j {
+            let temp = out[r] / (right[r + 1] + left[j - r]);
+            out[r] = saved + right[r + 1] * temp;
+            saved = left[j - r] * temp;
+        }
+        out[j] = saved;
+    }
+}

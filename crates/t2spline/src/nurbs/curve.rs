@@ -1,0 +1,316 @@
+//! The rational B-spline curve of SPEC §6 (paper Def. 5.1).
+
+use crate::error::{Error, Place};
+use crate::fuzzy::Axis;
+use crate::nurbs::basis::basis_functions;
+use crate::nurbs::{Domain, KnotVector};
+
+/// A rational B-spline curve in `D` dimensions (SPEC §6, paper Def. 5.1):
+///
+/// ```text
+/// C(t) = Σᵢ wᵢ Nᵢ,ₚ(t) Pᵢ / Σᵣ wᵣ Nᵣ,ₚ(t),   t ∈ [U[p], U[n]]
+/// ```
+/// of degree `p` (order `k = p + 1`), with `n ≥ k` control points `Pᵢ`, weights
+/// `wᵢ > 0` and a validated [`KnotVector`]. Equal weights give the non-rational
+/// B-spline.
+///
+/// # Examples
+/// The quarter circle as a rational quadratic (The NURBS Book, Ex. 7.1):
+/// ```
+/// # use t2spline::NurbsCurve;
+/// let w = std::f64::consts::FRAC_1_SQRT_2;
+/// let c = NurbsCurve::try_clamped(2, vec![[1.0, 0.0], [1.0, 1.0], [0.0, 1.0]], vec![1.0, w, 1.0])?;
+/// let [x, y] = c.eval(0.3)?;
+/// assert!((x.hypot(y) - 1.0).abs() < 1e-15);
+/// # Ok::<(), t2spline::Error>(())
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct NurbsCurve<const D: usize> {
+    control_points: Vec<[f64; D]>,
+    weights: Vec<f64>,
+    knots: KnotVector,
+}
+
+impl<const D: usize> NurbsCurve<D> {
+    /// Makes a curve from control points, weights and a knot vector whose degree
+    /// and count it must match.
+    ///
+    /// # Errors
+    /// [`Error::KnotCount`] if the knot vector was made for another number of
+    /// control points; [`Error::WeightCount`], [`Error::Weight`] for a wrong
+    /// number of weights or a weight that is not finite and positive;
+    /// [`Error::NotFinite`] for a non-finite coordinate.
+    pub fn try_new(
+        control_points: Vec<[f64; D]>,
+        weights: Vec<f64>,
+        knots: KnotVector,
+    ) -> Result<Self, Error> {
+        let n = control_points.len();
+        if knots.count() != n {
+            return Err(Error::KnotCount {
+                expected: n + knots.degree() + 1,
+                found: knots.as_slice().len(),
+            });
+        }
+        check_weights(&weights, n)?;
+        for (i, p) in control_points.iter().enumerate() {
+            for (axis, &value) in Axis::first::<D>().into_iter().zip(p) {
+                if !value.is_finite() {
+                    return Err(Error::NotFinite {
+                        place: Place::new(i, axis),
+                        what: "coordinate",
+                        value,
+                    });
+                }
+            }
+        }
+        Ok(NurbsCurve {
+            control_points,
+            weights,
+            knots,
+        })
+    }
+
+    /// Makes a curve with the default clamped uniform knot vector (SPEC §6).
+    ///
+    /// # Errors
+    /// [`Error::TooFewControlPoints`] if there are fewer than `degree + 1`
+    /// control points, and the errors of [`NurbsCurve::try_new`].
+    pub fn try_clamped(
+        degree: usize,
+        control_points: Vec<[f64; D]>,
+        weights: Vec<f64>,
+    ) -> Result<Self, Error> {
+        let knots = KnotVector::clamped_uniform(degree, control_points.len())?;
+        Self::try_new(control_points, weights, knots)
+    }
+
+    /// A curve from parts that are already known to be valid and consistent.
+    pub(crate) fn from_parts_unchecked(
+        control_points: Vec<[f64; D]>,
+        weights: Vec<f64>,
+        knots: KnotVector,
+    ) -> Self {
+        debug_assert_eq!(control_points.len(), knots.count());
+        debug_assert_eq!(weights.len(), knots.count());
+        NurbsCurve {
+            control_points,
+            weights,
+            knots,
+        }
+    }
+
+    /// The degree `p`.
+    #[must_use]
+    pub fn degree(&self) -> usize {
+        self.knots.degree()
+    }
+
+    /// The order `k = p + 1`.
+    #[must_use]
+    pub fn order(&self) -> usize {
+        self.degree() + 1
+    }
+
+    /// The control points.
+    #[must_use]
+    pub fn control_points(&self) -> &[[f64; D]] {
+        &self.control_points
+    }
+
+    /// The weights.
+    #[must_use]
+    pub fn weights(&self) -> &[f64] {
+        &self.weights
+    }
+
+    /// The knot vector.
+    #[must_use]
+    pub fn knots(&self) -> &KnotVector {
+        &self.knots
+    }
+
+    /// The parameter domain `[U[p], U[n]]`.
+    #[must_use]
+    pub fn domain(&self) -> Domain {
+        self.knots.domain()
+    }
+
+    /// The point `C(t)`.
+    ///
+    /// At an interior knot of full multiplicity the value from the right is
+    /// returned; at the right end of the domain the last non-empty span is used.
+    ///
+    /// # Errors
+    /// [`Error::OutOfDomain`] if `t` is NaN or outside [`NurbsCurve::domain`].
+    pub fn eval(&self, t: f64) -> Result<[f64; D], Error> {
+        self.domain().check(t)?;
+        Ok(self.eval_unchecked(t))
+    }
+
+    /// `C(t)` for `t` in the domain.
+    pub(crate) fn eval_unchecked(&self, t: f64) -> [f64; D] {
+        let (first, r) = self.rational_basis_span(t);
+        let mut out = [0.0; D];
+        for (ri, p) in r.iter().zip(&self.control_points[first..]) {
+            for (o, x) in out.iter_mut().zip(p) {
+                *o += ri * x;
+            }
+        }
+        out
+    }
+
+    /// The index of the first non-zero rational basis function at `t` and the
+    /// `p + 1` values from there on; see [`rational_basis_span`].
+    pub(crate) fn rational_basis_span(&self, t: f64) -> (usize, Vec<f64>) {
+        rational_basis_span(&self.knots, &self.weights, t)
+    }
+
+    /// All `n` rational basis functions `Rᵢ(t)` (SPEC §6), zeros outside the span.
+    /// They are non-negative and sum to 1.
+    ///
+    /// # Errors
+    /// [`Error::OutOfDomain`] if `t` is NaN or outside the domain.
+    ///
+    /// # Examples
+    /// ```
+    /// # use t2spline::NurbsCurve;
+    /// let c = NurbsCurve::try_clamped(2, vec![[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]], vec![1.0, 2.0, 1.0])?;
+    /// let r = c.rational_basis(0.5)?;
+    /// // N = (1/4, 1/2, 1/4), wN = (1/4, 1, 1/4), Σ = 3/2.
+    /// let expect = [1.0 / 6.0, 2.0 / 3.0, 1.0 / 6.0];
+    /// assert!(r.iter().zip(expect).all(|(a, b)| (a - b).abs() < 1e-15));
+    /// # Ok::<(), t2spline::Error>(())
+    /// ```
+    pub fn rational_basis(&self, t: f64) -> Result<Vec<f64>, Error> {
+        self.domain().check(t)?;
+        let (first, r) = self.rational_basis_span(t);
+        let mut all = vec![0.0; self.control_points.len()];
+        all[first..first + r.len()].copy_from_slice(&r);
+        Ok(all)
+    }
+
+    /// `C(t)` at every parameter of `params`.
+    ///
+    /// # Errors
+    /// [`Error::OutOfDomain`] for the first parameter outside the domain.
+    pub fn sample(&self, params: &[f64]) -> Result<Vec<[f64; D]>, Error> {
+        params.iter().map(|&t| self.eval(t)).collect()
+    }
+}
+
+/// The index of the first non-zero rational basis function at `t` (in the
+/// domain) and the `p + 1` values from there on:
+///
+/// ```text
+/// Rⱼ(t) = wⱼ Nⱼ,ₚ(t) / Σᵣ wᵣ Nᵣ,ₚ(t)
+/// ```
+pub(crate) fn rational_basis_span(
+    knots: &KnotVector,
+    weights: &[f64],
+    t: f64,
+) -> (usize, Vec<f64>) {
+    let p = knots.degree();
+    let span = knots.find_span(t);
+    let mut n = vec![0.0; p + 1];
+    basis_functions(knots.as_slice(), p, span, t, &mut n);
+    let first = span - p;
+    let mut denominator = 0.0;
+    for (nj, w) in n.iter_mut().zip(&weights[first..]) {
+        *nj *= w;
+        denominator += *nj;
+    }
+    // Σ wᵣ Nᵣ > 0: the Nᵣ are non-negative, sum to 1, and every wᵣ > 0.
+    for nj in &mut n {
+        *nj /= denominator;
+    }
+    (first, n)
+}
+
+/// Checks that there are `n` weights, each finite and greater than 0.
+pub(crate) fn check_weights(weights: &[f64], n: usize) -> Result<(), Error> {
+    if weights.len() != n {
+        return Err(Error::WeightCount {
+            expected: n,
+            found: weights.len(),
+        });
+    }
+    match weights.iter().position(|w| !(w.is_finite() && *w > 0.0)) {
+        Some(index) => Err(Error::Weight {
+            index,
+            value: weights[index],
+        }),
+        None => Ok(()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use approx::assert_relative_eq;
+
+    fn quarter_circle() -> NurbsCurve<2> {
+        let w = std::f64::consts::FRAC_1_SQRT_2;
+        NurbsCurve::try_clamped(
+            2,
+            vec![[1.0, 0.0], [1.0, 1.0], [0.0, 1.0]],
+            vec![1.0, w, 1.0],
+        )
+        .unwrap()
+    }
+
+    #[test]
+    fn quarter_circle_has_radius_one_everywhere() {
+        let c = quarter_circle();
+        for t in c.domain().uniform(1001) {
+            let [x, y] = c.eval(t).unwrap();
+            assert_relative_eq!(x.hypot(y), 1.0, epsilon = 1e-15);
+        }
+        assert_eq!(c.eval(0.0).unwrap(), [1.0, 0.0]);
+        assert_eq!(c.eval(1.0).unwrap(), [0.0, 1.0]);
+    }
+
+    #[test]
+    fn equal_weights_give_the_bernstein_form() {
+        // Degree 3, one span: C(t) = Σ B_i,3(t) P_i.
+        let p = [[0.0, 0.0], [1.0, 3.0], [3.0, -1.0], [4.0, 2.0]];
+        for w in [1.0, 2.5] {
+            let c = NurbsCurve::try_clamped(3, p.to_vec(), vec![w; 4]).unwrap();
+            for t in [0.0, 0.1, 0.5, 0.77, 1.0] {
+                let s = 1.0 - t;
+                let b = [s * s * s, 3.0 * t * s * s, 3.0 * t * t * s, t * t * t];
+                let expect: [f64; 2] =
+                    std::array::from_fn(|d| (0..4).map(|i| b[i] * p[i][d]).sum());
+                let got = c.eval(t).unwrap();
+                assert_relative_eq!(got[0], expect[0], epsilon = 1e-14);
+                assert_relative_eq!(got[1], expect[1], epsilon = 1e-14);
+            }
+        }
+    }
+
+    #[test]
+    fn full_multiplicity_interior_knot_jumps_and_takes_the_right_value() {
+        let u = KnotVector::try_new(vec![0.0, 0.0, 0.5, 0.5, 1.0, 1.0], 1, 4).unwrap();
+        let c = NurbsCurve::try_new(
+            vec![[0.0, 0.0], [1.0, 0.0], [5.0, 5.0], [6.0, 5.0]],
+            vec![1.0; 4],
+            u,
+        )
+        .unwrap();
+        assert_eq!(c.eval(0.5).unwrap(), [5.0, 5.0]);
+        let before = c.eval(0.5 - 1e-12).unwrap();
+        assert!((before[0] - 1.0).abs() < 1e-10, "{before:?}");
+        assert_eq!(c.eval(1.0).unwrap(), [6.0, 5.0]);
+    }
+
+    #[test]
+    fn bad_parameters_and_weights_are_errors() {
+        let c = quarter_circle();
+        assert!(c.eval(f64::NAN).is_err());
+        assert!(c.eval(-1e-300).is_err());
+        assert!(matches!(
+            NurbsCurve::try_clamped(1, vec![[0.0, 0.0], [1.0, 1.0]], vec![1.0, f64::NAN]),
+            Err(Error::Weight { index: 1, .. })
+        ));
+    }
+}

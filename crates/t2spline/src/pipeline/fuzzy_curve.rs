@@ -1,0 +1,187 @@
+//! Stage 1: the normal type-2 fuzzy rational B-spline curve (NT2FRBsC) and its
+//! seven layer curves (SPEC §6–§7, paper Eq. 5.1, Fig. 5.1).
+
+use crate::error::Error;
+use crate::fuzzy::{Alpha, Axis, Height, Layer, Layers, Nt2Number, Nt2Point};
+use crate::nurbs::curve::{check_weights, rational_basis_span};
+use crate::nurbs::{Domain, KnotVector, NurbsCurve};
+use crate::pipeline::Solution;
+
+/// A rational B-spline curve whose control points are normal type-2 fuzzy points
+/// (SPEC §6, paper Def. 5.1):
+///
+/// ```text
+/// C̃(t) = Σᵢ wᵢ Nᵢ,ₚ(t) P̃ᵢ / Σᵣ wᵣ Nᵣ,ₚ(t)
+/// ```
+/// evaluated layer by layer: one rational B-spline through each of the seven
+/// values of every control point, all with the same weights and knots. Because
+/// the rational basis is non-negative and sums to 1, the seven layer curves keep
+/// the order of SPEC §1 at every `t`.
+///
+/// # Examples
+/// ```
+/// # use t2spline::{FuzzyCurve, Layer, Nt2Number, Nt2Point};
+/// let n = |c: f64| Nt2Number::try_new(c, [c - 1.0, c + 2.0], [c - 0.5, c + 1.0], [c - 0.2, c + 0.3], 0.5);
+/// let points = vec![
+///     Nt2Point::new([n(0.0)?, n(0.0)?]),
+///     Nt2Point::new([n(1.0)?, n(2.0)?]),
+///     Nt2Point::new([n(2.0)?, n(0.0)?]),
+/// ];
+/// let c = FuzzyCurve::try_new(2, points, vec![1.0, 1.0, 1.0], None)?;
+/// let at = c.eval_layers(0.5)?;
+/// assert_eq!(at[Layer::Crisp], [1.0, 1.0]);
+/// assert_eq!(at[Layer::UpperRight], [3.0, 3.0]);
+/// # Ok::<(), t2spline::Error>(())
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct FuzzyCurve<const D: usize> {
+    points: Vec<Nt2Point<D>>,
+    weights: Vec<f64>,
+    knots: KnotVector,
+}
+
+impl<const D: usize> FuzzyCurve<D> {
+    /// Makes a fuzzy curve of degree `degree`; `knots = None` selects the clamped
+    /// uniform default (SPEC §6).
+    ///
+    /// # Errors
+    /// [`Error::TooFewControlPoints`], [`Error::WeightCount`], [`Error::Weight`],
+    /// and the knot errors of [`KnotVector::try_new`].
+    pub fn try_new(
+        degree: usize,
+        points: Vec<Nt2Point<D>>,
+        weights: Vec<f64>,
+        knots: Option<Vec<f64>>,
+    ) -> Result<Self, Error> {
+        let n = points.len();
+        let knots = match knots {
+            Some(values) => KnotVector::try_new(values, degree, n)?,
+            None => KnotVector::clamped_uniform(degree, n)?,
+        };
+        check_weights(&weights, n)?;
+        Ok(FuzzyCurve {
+            points,
+            weights,
+            knots,
+        })
+    }
+
+    /// The fuzzy control points.
+    #[must_use]
+    pub fn points(&self) -> &[Nt2Point<D>] {
+        &self.points
+    }
+
+    /// The weights.
+    #[must_use]
+    pub fn weights(&self) -> &[f64] {
+        &self.weights
+    }
+
+    /// The knot vector.
+    #[must_use]
+    pub fn knots(&self) -> &KnotVector {
+        &self.knots
+    }
+
+    /// The degree `p`.
+    #[must_use]
+    pub fn degree(&self) -> usize {
+        self.knots.degree()
+    }
+
+    /// The order `k = p + 1`.
+    #[must_use]
+    pub fn order(&self) -> usize {
+        self.degree() + 1
+    }
+
+    /// The parameter domain.
+    #[must_use]
+    pub fn domain(&self) -> Domain {
+        self.knots.domain()
+    }
+
+    /// A crisp curve with this curve's weights and knots through `control_points`
+    /// (one per fuzzy control point).
+    pub(crate) fn with_control_points(&self, control_points: Vec<[f64; D]>) -> NurbsCurve<D> {
+        NurbsCurve::from_parts_unchecked(control_points, self.weights.clone(), self.knots.clone())
+    }
+
+    /// The layer curve through one value of every control point (SPEC §6).
+    #[must_use]
+    pub fn layer_curve(&self, layer: Layer) -> NurbsCurve<D> {
+        self.with_control_points(self.points.iter().map(|p| p.layer(layer)).collect())
+    }
+
+    /// The curve through the crisp values: the crisp rational B-spline.
+    #[must_use]
+    pub fn crisp_curve(&self) -> NurbsCurve<D> {
+        self.layer_curve(Layer::Crisp)
+    }
+
+    /// The seven layer curves at `t`, from one evaluation of the rational basis.
+    ///
+    /// # Errors
+    /// [`Error::OutOfDomain`] if `t` is NaN or outside the domain.
+    pub fn eval_layers(&self, t: f64) -> Result<Layers<[f64; D]>, Error> {
+        self.domain().check(t)?;
+        // All layer curves share one rational basis.
+        let (first, r) = rational_basis_span(&self.knots, &self.weights, t);
+        let mut out = Layers::from_fn(|_| [0.0; D]);
+        for (ri, p) in r.iter().zip(&self.points[first..]) {
+            for layer in Layer::ALL {
+                for (o, x) in out[layer].iter_mut().zip(p.layer(layer)) {
+                    *o += ri * x;
+                }
+            }
+        }
+        Ok(out)
+    }
+
+    /// The lower height shared by every number of each coordinate, or `None` if
+    /// some coordinate mixes heights.
+    #[must_use]
+    pub fn coordinate_heights(&self) -> Option<[Height; D]> {
+        let first = self.points.first()?;
+        let heights = first.coords().map(|x| x.height());
+        self.points
+            .iter()
+            .all(|p| {
+                p.coords()
+                    .iter()
+                    .zip(&heights)
+                    .all(|(x, h)| x.height() == *h)
+            })
+            .then_some(heights)
+    }
+
+    /// The fuzzy curve at `t` as a fuzzy point, when each coordinate has one
+    /// lower height for all control points (then the point's numbers have that
+    /// height); `Ok(None)` otherwise, since a mix of heights does not combine
+    /// into one number (SPEC §6).
+    ///
+    /// # Errors
+    /// [`Error::OutOfDomain`] if `t` is NaN or outside the domain.
+    pub fn eval(&self, t: f64) -> Result<Option<Nt2Point<D>>, Error> {
+        let layers = self.eval_layers(t)?;
+        Ok(self.coordinate_heights().map(|heights| {
+            Nt2Point::new(std::array::from_fn(|d| {
+                let values = layers.map(|p| p[d]);
+                Nt2Number::from_layers_unchecked(&values, heights[d])
+            }))
+        }))
+    }
+
+    /// Runs stages 2–4 of Algorithm 1.1 at level `alpha` (SPEC §7).
+    #[must_use]
+    pub fn solve(&self, alpha: Alpha) -> Solution<D> {
+        Solution::new(self.clone(), alpha)
+    }
+
+    /// The axes of this curve's points.
+    #[must_use]
+    pub fn axes(&self) -> [Axis; D] {
+        Axis::first::<D>()
+    }
+}

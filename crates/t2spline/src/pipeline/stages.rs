@@ -1,0 +1,173 @@
+//! Stages 2–4 of Algorithm 1.1 (SPEC §7): alpha-cut, type reduction and
+//! defuzzification of the control points, and the curves through them.
+
+use crate::fuzzy::{Alpha, AlphaCut, Layer, Tfn};
+use crate::nurbs::NurbsCurve;
+use crate::pipeline::{Distance, FuzzyCurve};
+
+/// A side of a type-reduced number `(left, crisp, right)`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Side {
+    /// The left foot.
+    Left,
+    /// The right foot.
+    Right,
+}
+
+/// The four stages of Algorithm 1.1 at one level alpha (SPEC §7):
+///
+/// 1. **NT2FRBsC** — the fuzzy curve ([`Solution::fuzzy_curve`], paper Fig. 5.1);
+/// 2. **α-NT2FRBsC** — alpha-cut control points and their curves (Fig. 5.2);
+/// 3. **TR-α-NT2FRBsC** — type-reduced control points `(left, crisp, right)` and
+///    the left and right curves (Fig. 5.3);
+/// 4. **D-TR-α-NT2FRBsC** — defuzzified control points and the crisp solution
+///    curve, compared with the crisp curve (Fig. 5.4).
+///
+/// Every stage works on the control points, as Algorithm 1.1 does; the curves
+/// are rational B-splines through the results with the original weights and
+/// knots. With one lower height per coordinate this equals cutting, reducing and
+/// defuzzifying the curve itself; with mixed heights it does not (SPEC §6).
+///
+/// # Examples
+/// ```
+/// # use t2spline::{Alpha, FuzzyCurve, Nt2Number, Nt2Point};
+/// let n = |c: f64| Nt2Number::try_new(c, [c - 1.0, c + 1.0], [c - 0.5, c + 0.5], [c - 0.2, c + 0.2], 0.5);
+/// let points = (0..4).map(|i| Ok(Nt2Point::new([n(i as f64)?, n((i * i) as f64)?])))
+///     .collect::<Result<Vec<_>, t2spline::Error>>()?;
+/// let s = FuzzyCurve::try_new(2, points, vec![1.0, 1.0, 3.0, 1.0], None)?.solve(Alpha::try_new(0.8)?);
+/// // Symmetric spreads: the defuzzified curve is the crisp curve.
+/// assert!(s.distance().max < 1e-12);
+/// # Ok::<(), t2spline::Error>(())
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct Solution<const D: usize> {
+    alpha: Alpha,
+    curve: FuzzyCurve<D>,
+    alpha_cut: Vec<[AlphaCut; D]>,
+    type_reduced: Vec<[Tfn; D]>,
+    defuzzified: Vec<[f64; D]>,
+}
+
+impl<const D: usize> Solution<D> {
+    pub(crate) fn new(curve: FuzzyCurve<D>, alpha: Alpha) -> Self {
+        let alpha_cut: Vec<[AlphaCut; D]> =
+            curve.points().iter().map(|p| p.alpha_cut(alpha)).collect();
+        let type_reduced: Vec<[Tfn; D]> = alpha_cut
+            .iter()
+            .map(|cuts| cuts.map(|c| c.type_reduce()))
+            .collect();
+        let defuzzified = type_reduced
+            .iter()
+            .map(|tfns| tfns.map(|t| t.defuzzify()))
+            .collect();
+        Solution {
+            alpha,
+            curve,
+            alpha_cut,
+            type_reduced,
+            defuzzified,
+        }
+    }
+
+    /// The level alpha.
+    #[must_use]
+    pub fn alpha(&self) -> Alpha {
+        self.alpha
+    }
+
+    /// Stage 1: the fuzzy curve.
+    #[must_use]
+    pub fn fuzzy_curve(&self) -> &FuzzyCurve<D> {
+        &self.curve
+    }
+
+    /// Stage 2: the alpha-cut of every control point, per coordinate.
+    #[must_use]
+    pub fn alpha_cut_points(&self) -> &[[AlphaCut; D]] {
+        &self.alpha_cut
+    }
+
+    /// Stage 2: the control points of one alpha-cut layer; `None` for a lower
+    /// layer when some number is cut above its lower height (SPEC §2.2).
+    #[must_use]
+    pub fn alpha_cut_layer(&self, layer: Layer) -> Option<Vec<[f64; D]>> {
+        self.alpha_cut
+            .iter()
+            .map(|cuts| {
+                let mut p = [0.0; D];
+                for (x, c) in p.iter_mut().zip(cuts) {
+                    *x = c.layer(layer)?;
+                }
+                Some(p)
+            })
+            .collect()
+    }
+
+    /// Stage 2: the curve through one alpha-cut layer, when that layer exists
+    /// for every control point.
+    #[must_use]
+    pub fn alpha_cut_curve(&self, layer: Layer) -> Option<NurbsCurve<D>> {
+        self.alpha_cut_layer(layer)
+            .map(|points| self.curve.with_control_points(points))
+    }
+
+    /// Stage 3: the type-reduced number of every control point, per coordinate.
+    #[must_use]
+    pub fn type_reduced_points(&self) -> &[[Tfn; D]] {
+        &self.type_reduced
+    }
+
+    /// Stage 3: the left or right type-reduced control points.
+    #[must_use]
+    pub fn type_reduced_side(&self, side: Side) -> Vec<[f64; D]> {
+        self.type_reduced
+            .iter()
+            .map(|tfns| {
+                tfns.map(|t| match side {
+                    Side::Left => t.left(),
+                    Side::Right => t.right(),
+                })
+            })
+            .collect()
+    }
+
+    /// Stage 3: the curve through the left or right type-reduced control points.
+    #[must_use]
+    pub fn type_reduced_curve(&self, side: Side) -> NurbsCurve<D> {
+        self.curve.with_control_points(self.type_reduced_side(side))
+    }
+
+    /// Stage 4: the defuzzified control points.
+    #[must_use]
+    pub fn defuzzified_points(&self) -> &[[f64; D]] {
+        &self.defuzzified
+    }
+
+    /// Stage 4: the crisp type-2 solution curve through the defuzzified points.
+    #[must_use]
+    pub fn defuzzified_curve(&self) -> NurbsCurve<D> {
+        self.curve.with_control_points(self.defuzzified.clone())
+    }
+
+    /// The crisp curve through the crisp control points.
+    #[must_use]
+    pub fn crisp_curve(&self) -> NurbsCurve<D> {
+        self.curve.crisp_curve()
+    }
+
+    /// The distance between the crisp and the defuzzified curve at equal `t`
+    /// over the whole domain (SPEC §7); see [`Distance`].
+    #[must_use]
+    pub fn distance(&self) -> Distance {
+        let difference = self
+            .defuzzified
+            .iter()
+            .zip(self.curve.points())
+            .map(|(d, p)| {
+                let c = p.crisp();
+                std::array::from_fn(|i| d[i] - c[i])
+            })
+            .collect();
+        Distance::of_curve(&self.curve.with_control_points(difference))
+    }
+}

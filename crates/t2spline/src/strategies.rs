@@ -1,0 +1,136 @@
+//! proptest generators of valid inputs, for this crate's property tests and for
+//! downstream crates (feature `proptest`).
+
+use proptest::prelude::*;
+
+use crate::{FuzzyCurve, KnotVector, Nt2Number, Nt2Point, NurbsCurve};
+
+/// A lower height: often 1 or a round value, otherwise anything in `(0, 1]`.
+pub fn height() -> impl Strategy<Value = f64> + Clone {
+    prop_oneof![
+        Just(1.0),
+        Just(0.5),
+        (1u32..=1000).prop_map(|k| f64::from(k) / 1000.0),
+    ]
+}
+
+/// A spread that is sometimes exactly zero.
+fn spread() -> impl Strategy<Value = f64> + Clone {
+    prop_oneof![1 => Just(0.0), 4 => 0.0..3.0f64]
+}
+
+/// A valid number with crisp value in `[-10, 10]` and the given height.
+pub fn number_with_height(h: f64) -> impl Strategy<Value = Nt2Number> + Clone {
+    (
+        -10.0..10.0f64,
+        [spread(), spread(), spread()],
+        [spread(), spread(), spread()],
+    )
+        .prop_map(move |(c, mut l, mut r)| {
+            l.sort_by(f64::total_cmp);
+            r.sort_by(f64::total_cmp);
+            // l[0] ≤ l[1] ≤ l[2]: lower, primary, upper distances from crisp.
+            Nt2Number::try_new(
+                c,
+                [c - l[2], c + r[2]],
+                [c - l[1], c + r[1]],
+                [c - l[0], c + r[0]],
+                h,
+            )
+            .expect("ordered spreads make a valid number")
+        })
+}
+
+/// A valid number with any height.
+pub fn number() -> impl Strategy<Value = Nt2Number> + Clone {
+    height().prop_flat_map(number_with_height)
+}
+
+/// A point whose numbers have any heights.
+pub fn point<const D: usize>() -> impl Strategy<Value = Nt2Point<D>> + Clone {
+    proptest::array::uniform(number()).prop_map(Nt2Point::new)
+}
+
+/// Knot values for degree `p` and `n` control points: clamped or not, with
+/// repeated interior knots (up to full multiplicity) drawn from a coarse grid.
+pub fn knots(degree: usize, count: usize) -> impl Strategy<Value = Vec<f64>> {
+    let order = degree + 1;
+    let interior = count - order;
+    (
+        any::<bool>(),
+        proptest::collection::vec(
+            prop_oneof![(1u32..10).prop_map(|k| f64::from(k) / 10.0), 0.01..0.99f64],
+            interior,
+        ),
+        proptest::collection::vec(0.0..1.0f64, order * 2),
+    )
+        .prop_map(move |(clamped, mut inner, ends)| {
+            inner.sort_by(f64::total_cmp);
+            let mut u = Vec::with_capacity(count + order);
+            if clamped {
+                u.extend(std::iter::repeat_n(0.0, order));
+                u.extend(&inner);
+                u.extend(std::iter::repeat_n(1.0, order));
+            } else {
+                let mut lo: Vec<f64> = ends[..order].iter().map(|e| -e).collect();
+                let mut hi: Vec<f64> = ends[order..].iter().map(|e| 1.0 + e).collect();
+                lo.sort_by(f64::total_cmp);
+                hi.sort_by(f64::total_cmp);
+                u.extend(lo);
+                u.extend(&inner);
+                u.extend(hi);
+            }
+            u
+        })
+        .prop_filter("valid knot vector", move |u| {
+            KnotVector::problems(u, degree, count).is_empty()
+        })
+}
+
+/// Degree, control point count (`n ≥ k`), weights in `[0.2, 5]` and knots.
+fn shape() -> impl Strategy<Value = (usize, usize, Vec<f64>, Vec<f64>)> {
+    (1usize..=5, 0usize..=6).prop_flat_map(|(degree, extra)| {
+        let count = degree + 1 + extra;
+        (
+            Just(degree),
+            Just(count),
+            proptest::collection::vec(0.2..5.0f64, count),
+            knots(degree, count),
+        )
+    })
+}
+
+/// A crisp rational B-spline curve of degree 1–5 with coordinates in `[-10, 10]`.
+pub fn curve<const D: usize>() -> impl Strategy<Value = NurbsCurve<D>> {
+    shape().prop_flat_map(|(degree, count, weights, knots)| {
+        proptest::collection::vec(proptest::array::uniform(-10.0..10.0f64), count).prop_map(
+            move |points| {
+                let u = KnotVector::try_new(knots.clone(), degree, count).expect("filtered");
+                NurbsCurve::try_new(points, weights.clone(), u).expect("valid parts")
+            },
+        )
+    })
+}
+
+/// A fuzzy curve whose numbers have independent heights.
+pub fn fuzzy_curve<const D: usize>() -> impl Strategy<Value = FuzzyCurve<D>> {
+    fuzzy_curve_from(point::<D>())
+}
+
+/// A fuzzy curve whose numbers all share one lower height.
+pub fn fuzzy_curve_common_height<const D: usize>() -> impl Strategy<Value = FuzzyCurve<D>> {
+    height().prop_flat_map(|h| {
+        fuzzy_curve_from(proptest::array::uniform(number_with_height(h)).prop_map(Nt2Point::new))
+    })
+}
+
+fn fuzzy_curve_from<const D: usize>(
+    point: impl Strategy<Value = Nt2Point<D>> + Clone,
+) -> impl Strategy<Value = FuzzyCurve<D>> {
+    shape().prop_flat_map(move |(degree, count, weights, knots)| {
+        proptest::collection::vec(point.clone(), count).prop_map(move |points| {
+            FuzzyCurve::try_new(degree, points, weights.clone(), Some(knots.clone()))
+                .expect("valid parts")
+        })
+    })
+}
