@@ -1,0 +1,15 @@
+//! One module per subcommand: validate the raw arguments into a plan, then call
+//! the libraries.
+
+mod run;
+mod validate;
+
+use crate::cli::{Cli, Command};
+
+/// Runs the chosen subcommand.
+pub fn dispatch(cli: Cli) -> anyhow::Result<()> {
+    match cli.command {
+        Command::Run(args) => run::run(args),
+        Command::Validate(args) => validate::validate(&args),
+    }
+}

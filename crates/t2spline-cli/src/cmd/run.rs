@@ -1,0 +1,75 @@
+//! `t2spline run JOB.json [-o OUT.json] [--alpha A] [--samples N] [--csv DIR]`.
+
+use std::path::PathBuf;
+
+use anyhow::bail;
+use t2spline::Alpha;
+use t2spline_io::job::check_samples;
+use t2spline_io::{render_csv, to_json_pretty, write_atomic, Error, Job, RunResult};
+
+use crate::cli::RunArgs;
+use crate::output::{read_job, write};
+
+/// A run with every input validated.
+struct Plan {
+    job: Job,
+    alpha: Alpha,
+    samples: usize,
+    output: Option<PathBuf>,
+    csv: Option<PathBuf>,
+}
+
+impl Plan {
+    fn new(args: RunArgs) -> anyhow::Result<Plan> {
+        let alpha = args
+            .alpha
+            .map(|a| {
+                Alpha::try_new(a).map_err(|e| Error::Option {
+                    option: "--alpha",
+                    message: e.to_string(),
+                })
+            })
+            .transpose()?;
+        let samples = args
+            .samples
+            .map(|n| {
+                check_samples(n).map_err(|message| Error::Option {
+                    option: "--samples",
+                    message,
+                })
+            })
+            .transpose()?;
+        let job = read_job(&args.job)?;
+        let Some(alpha) = alpha.or(job.alpha) else {
+            bail!(
+                "{}: alpha: missing: give it in the job file or with --alpha",
+                args.job.display()
+            );
+        };
+        Ok(Plan {
+            alpha,
+            samples: samples.unwrap_or(job.samples),
+            job,
+            output: args.output,
+            csv: args.csv,
+        })
+    }
+}
+
+pub fn run(args: RunArgs) -> anyhow::Result<()> {
+    let plan = Plan::new(args)?;
+    let result = RunResult::compute(&plan.job, plan.alpha, plan.samples);
+    let json = to_json_pretty(&serde_json::to_value(&result)?);
+    // Everything is computed before anything is written.
+    if let Some(dir) = &plan.csv {
+        let files = render_csv(&result);
+        std::fs::create_dir_all(dir).map_err(|source| Error::Write {
+            path: dir.clone(),
+            source,
+        })?;
+        for (name, text) in files {
+            write_atomic(&dir.join(name), text.as_bytes())?;
+        }
+    }
+    write(plan.output.as_deref(), json.as_bytes())
+}

@@ -1,0 +1,23 @@
+//! `t2spline validate JOB.json`: report every problem, or a one-line summary.
+
+use crate::cli::ValidateArgs;
+use crate::output::{read_job, write};
+use t2spline_io::JobCurve;
+
+pub fn validate(args: &ValidateArgs) -> anyhow::Result<()> {
+    let job = read_job(&args.job)?;
+    let (points, order) = match &job.curve {
+        JobCurve::Planar(c) => (c.points().len(), c.order()),
+        JobCurve::Spatial(c) => (c.points().len(), c.order()),
+    };
+    let alpha = job
+        .alpha
+        .map_or("not set".to_owned(), |a| a.get().to_string());
+    let line = format!(
+        "{}: ok: {}-D, {points} points, order {order}, alpha {alpha}, {} samples\n",
+        args.job.display(),
+        job.curve.dimension(),
+        job.samples,
+    );
+    write(None, line.as_bytes())
+}

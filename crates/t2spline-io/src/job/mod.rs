@@ -1,0 +1,165 @@
+//! Job files (SPEC §8): reading, validating every rule at once, and writing back.
+
+mod parse;
+
+use std::path::Path;
+
+use serde_json::{json, Map, Value};
+use t2spline::{Alpha, FuzzyCurve, Layer, Nt2Point};
+
+use crate::Error;
+
+/// The default number of samples (SPEC §8).
+pub const DEFAULT_SAMPLES: usize = 101;
+/// The largest number of samples a job may ask for. Every sample costs about
+/// 16 curves × 3 coordinates × 8 bytes in a result, so 10⁶ samples make a result
+/// of a few hundred megabytes of JSON; more is refused before anything is
+/// allocated.
+pub const MAX_SAMPLES: usize = 1_000_000;
+
+/// Checks a number of samples against SPEC §8 (at least 2) and [`MAX_SAMPLES`].
+///
+/// # Errors
+/// The rule that `n` breaks, as text.
+///
+/// # Examples
+/// ```
+/// # use t2spline_io::job::check_samples;
+/// assert_eq!(check_samples(101), Ok(101));
+/// assert!(check_samples(1).is_err());
+/// ```
+pub fn check_samples(n: u64) -> Result<usize, String> {
+    if n < 2 {
+        Err(format!(
+            "samples = {n}: at least 2 are needed (both ends of the domain)"
+        ))
+    } else if n > MAX_SAMPLES as u64 {
+        Err(format!(
+            "samples = {n} is more than the limit {MAX_SAMPLES}"
+        ))
+    } else {
+        usize::try_from(n).map_err(|_| format!("samples = {n} does not fit this machine"))
+    }
+}
+
+/// A validated job: a fuzzy curve in 2-D or 3-D and how to run it (SPEC §8).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Job {
+    /// Free text carried along to the result.
+    pub description: Option<String>,
+    /// The level alpha; may be left to the command line.
+    pub alpha: Option<Alpha>,
+    /// Number of uniform parameters at which curves are sampled (2 … [`MAX_SAMPLES`]).
+    pub samples: usize,
+    /// The fuzzy curve.
+    pub curve: JobCurve,
+}
+
+/// A fuzzy curve of either dimension.
+#[derive(Clone, Debug, PartialEq)]
+pub enum JobCurve {
+    /// Points with coordinates `x`, `y`.
+    Planar(FuzzyCurve<2>),
+    /// Points with coordinates `x`, `y`, `z`.
+    Spatial(FuzzyCurve<3>),
+}
+
+impl JobCurve {
+    /// 2 or 3.
+    #[must_use]
+    pub fn dimension(&self) -> usize {
+        match self {
+            JobCurve::Planar(_) => 2,
+            JobCurve::Spatial(_) => 3,
+        }
+    }
+}
+
+impl Job {
+    /// Parses and validates a job from JSON text; `source` names the file in
+    /// messages.
+    ///
+    /// # Errors
+    /// [`Error::Invalid`] listing every problem found: JSON syntax (with line and
+    /// column), unknown or missing keys, wrong types, and every rule of SPEC §1,
+    /// §6 and §8, each with its place (`points[2].y`, `weights[1]`, `knots`, ...).
+    ///
+    /// # Examples
+    /// ```
+    /// # use t2spline_io::Job;
+    /// let e = Job::parse(r#"{"order": 2, "alhpa": 0.5, "points": []}"#, "job.json").unwrap_err();
+    /// assert_eq!(e.lines(), [
+    ///     "job.json: alhpa: unknown key (did you mean `alpha`?)",
+    ///     "job.json: points: a curve of order 2 needs at least 2 control points, got 0",
+    /// ]);
+    /// ```
+    pub fn parse(text: &str, source: &str) -> Result<Job, Error> {
+        parse::parse(text).map_err(|problems| Error::Invalid {
+            file: source.to_owned(),
+            problems,
+        })
+    }
+
+    /// Reads and validates a job file.
+    ///
+    /// # Errors
+    /// [`Error::Read`] if the file cannot be read, and the errors of [`Job::parse`].
+    pub fn read(path: &Path) -> Result<Job, Error> {
+        let text = std::fs::read_to_string(path).map_err(|source| Error::Read {
+            path: path.to_owned(),
+            source,
+        })?;
+        Job::parse(&text, &path.display().to_string())
+    }
+
+    /// The job as JSON in canonical form: explicit weights and knots, and every
+    /// number with its own `lower_height`. Parsing it gives back an equal job.
+    #[must_use]
+    pub fn to_json(&self) -> Value {
+        let mut out = Map::new();
+        if let Some(d) = &self.description {
+            out.insert("description".into(), json!(d));
+        }
+        let (degree, weights, knots, points) = match &self.curve {
+            JobCurve::Planar(c) => curve_parts(c),
+            JobCurve::Spatial(c) => curve_parts(c),
+        };
+        out.insert("degree".into(), json!(degree));
+        out.insert("weights".into(), json!(weights));
+        out.insert("knots".into(), json!(knots));
+        if let Some(a) = self.alpha {
+            out.insert("alpha".into(), json!(a.get()));
+        }
+        out.insert("samples".into(), json!(self.samples));
+        out.insert("points".into(), Value::Array(points));
+        Value::Object(out)
+    }
+}
+
+fn curve_parts<const D: usize>(c: &FuzzyCurve<D>) -> (usize, Vec<f64>, Vec<f64>, Vec<Value>) {
+    let points = c.points().iter().map(point_json).collect();
+    (
+        c.degree(),
+        c.weights().to_vec(),
+        c.knots().as_slice().to_vec(),
+        points,
+    )
+}
+
+fn point_json<const D: usize>(p: &Nt2Point<D>) -> Value {
+    let mut out = Map::new();
+    for (axis, x) in t2spline::Axis::first::<D>().iter().zip(p.coords()) {
+        let pair = |l: Layer, r: Layer| json!([x.layer(l), x.layer(r)]);
+        out.insert(
+            axis.name().into(),
+            json!({
+                "crisp": x.crisp(),
+                "upper": pair(Layer::UpperLeft, Layer::UpperRight),
+                "primary": pair(Layer::PrimaryLeft, Layer::PrimaryRight),
+                "lower": pair(Layer::LowerLeft, Layer::LowerRight),
+                "lower_height": x.height().get(),
+            }),
+        );
+    }
+    Value::Object(out)
+}

@@ -1,0 +1,529 @@
+//! The job-file validator: walks the JSON value and collects every problem.
+//!
+//! Parsing goes through `serde_json::Value` rather than derived structs so that
+//! one pass can report *every* problem (serde stops at the first) and name each
+//! by its place in the file.
+
+use serde_json::{Map, Value};
+use t2spline::{Alpha, Axis, FuzzyCurve, Height, KnotVector, Nt2Number, Nt2Point, Place};
+
+use super::{check_samples, Job, JobCurve, DEFAULT_SAMPLES};
+use crate::Problem;
+
+const TOP_KEYS: &[&str] = &[
+    "description",
+    "order",
+    "degree",
+    "weights",
+    "knots",
+    "alpha",
+    "lower_height",
+    "samples",
+    "points",
+];
+const POINT_KEYS: &[&str] = &["x", "y", "z"];
+const NUMBER_KEYS: &[&str] = &["crisp", "upper", "primary", "lower", "lower_height"];
+
+/// Parses `text` as a job, or returns every problem found.
+pub(super) fn parse(text: &str) -> Result<Job, Vec<Problem>> {
+    let value: Value = serde_json::from_str(text).map_err(|e| vec![syntax_problem(&e)])?;
+    let mut w = Walker::default();
+    let job = w.job(&value);
+    match job {
+        Some(job) if w.problems.is_empty() => Ok(job),
+        _ => Err(w.problems),
+    }
+}
+
+/// A JSON syntax error with its line and column, without serde's own suffix.
+fn syntax_problem(e: &serde_json::Error) -> Problem {
+    let text = e.to_string();
+    let suffix = format!(" at line {} column {}", e.line(), e.column());
+    let message = text.strip_suffix(&suffix).unwrap_or(&text);
+    Problem {
+        line_column: Some((e.line(), e.column())),
+        message: format!("JSON syntax error: {message}"),
+    }
+}
+
+/// What kind of JSON value `v` is, for messages.
+fn kind(v: &Value) -> &'static str {
+    match v {
+        Value::Null => "null",
+        Value::Bool(_) => "a boolean",
+        Value::Number(_) => "a number",
+        Value::String(_) => "a string",
+        Value::Array(_) => "an array",
+        Value::Object(_) => "an object",
+    }
+}
+
+/// The known key closest to `key` by edit distance, if it is a likely typo.
+fn suggestion(key: &str, known: &[&'static str]) -> Option<&'static str> {
+    known
+        .iter()
+        .map(|k| (edit_distance(key, k), *k))
+        .filter(|(d, k)| *d <= 2 && *d < k.len())
+        .min()
+        .map(|(_, k)| k)
+}
+
+/// Levenshtein distance with adjacent transpositions counting 1 (optimal string
+/// alignment), so that `alhpa` is one step from `alpha`.
+fn edit_distance(a: &str, b: &str) -> usize {
+    let (a, b): (Vec<char>, Vec<char>) = (a.chars().collect(), b.chars().collect());
+    let mut d = vec![vec![0usize; b.len() + 1]; a.len() + 1];
+    for (i, row) in d.iter_mut().enumerate() {
+        row[0] = i;
+    }
+    for j in 0..=b.len() {
+        d[0][j] = j;
+    }
+    for i in 1..=a.len() {
+        for j in 1..=b.len() {
+            let cost = usize::from(a[i - 1] != b[j - 1]);
+            d[i][j] = (d[i - 1][j] + 1)
+                .min(d[i][j - 1] + 1)
+                .min(d[i - 1][j - 1] + cost);
+            if i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] {
+                d[i][j] = d[i][j].min(d[i - 2][j - 2] + 1);
+            }
+        }
+    }
+    d[a.len()][b.len()]
+}
+
+/// The fuzzy numbers of one point, per axis, once parsed.
+type RawPoint = Vec<(Axis, Option<Nt2Number>)>;
+
+#[derive(Default)]
+struct Walker {
+    problems: Vec<Problem>,
+}
+
+impl Walker {
+    fn report(&mut self, key: &str, rule: impl std::fmt::Display) {
+        self.problems.push(Problem::at(key, rule));
+    }
+
+    fn object<'v>(
+        &mut self,
+        v: &'v Value,
+        key: &str,
+        what: &str,
+    ) -> Option<&'v Map<String, Value>> {
+        let o = v.as_object();
+        if o.is_none() {
+            self.report(
+                key,
+                format!("expected {what} (a JSON object), got {}", kind(v)),
+            );
+        }
+        o
+    }
+
+    fn unknown_keys(&mut self, o: &Map<String, Value>, prefix: &str, known: &[&'static str]) {
+        for k in o.keys().filter(|k| !known.contains(&k.as_str())) {
+            let key = if prefix.is_empty() {
+                k.clone()
+            } else {
+                format!("{prefix}.{k}")
+            };
+            match suggestion(k, known) {
+                Some(s) => self.report(&key, format!("unknown key (did you mean `{s}`?)")),
+                None => self.report(
+                    &key,
+                    format!("unknown key (known keys: {})", known.join(", ")),
+                ),
+            }
+        }
+    }
+
+    fn number(&mut self, v: &Value, key: &str) -> Option<f64> {
+        let x = v.as_f64();
+        if x.is_none() {
+            self.report(key, format!("expected a number, got {}", kind(v)));
+        }
+        x
+    }
+
+    /// A whole number ≥ 0; `3.0` is accepted as 3, as spreadsheets write it.
+    fn whole(&mut self, v: &Value, key: &str) -> Option<u64> {
+        if let Some(n) = v.as_u64() {
+            return Some(n);
+        }
+        match v.as_f64() {
+            Some(x) if x >= 0.0 && x.fract() == 0.0 && x < 2f64.powi(53) => Some(x as u64),
+            Some(x) => {
+                self.report(key, format!("expected a whole number >= 0, got {x}"));
+                None
+            }
+            None => {
+                self.report(key, format!("expected a whole number, got {}", kind(v)));
+                None
+            }
+        }
+    }
+
+    fn numbers(&mut self, v: &Value, key: &str) -> Option<Vec<f64>> {
+        let Some(items) = v.as_array() else {
+            self.report(
+                key,
+                format!("expected an array of numbers, got {}", kind(v)),
+            );
+            return None;
+        };
+        let xs: Vec<Option<f64>> = items
+            .iter()
+            .enumerate()
+            .map(|(i, x)| self.number(x, &format!("{key}[{i}]")))
+            .collect();
+        xs.into_iter().collect()
+    }
+
+    fn pair(&mut self, v: &Value, key: &str) -> Option<[f64; 2]> {
+        match v.as_array().map(Vec::as_slice) {
+            Some([l, r]) => {
+                let l = self.number(l, &format!("{key}[0]"));
+                let r = self.number(r, &format!("{key}[1]"));
+                Some([l?, r?])
+            }
+            _ => {
+                self.report(
+                    key,
+                    format!(
+                        "expected [left, right], an array of two numbers, got {}",
+                        describe(v)
+                    ),
+                );
+                None
+            }
+        }
+    }
+
+    fn job(&mut self, root: &Value) -> Option<Job> {
+        let o = self.object(root, "job", "the job")?;
+        self.unknown_keys(o, "", TOP_KEYS);
+
+        let description = match o.get("description") {
+            None => None,
+            Some(Value::String(s)) => Some(s.clone()),
+            Some(v) => {
+                self.report("description", format!("expected a string, got {}", kind(v)));
+                None
+            }
+        };
+        let degree = self.degree(o);
+        let alpha = o.get("alpha").and_then(|v| {
+            let a = self.number(v, "alpha")?;
+            Alpha::try_new(a)
+                .map_err(|e| self.problems.push(Problem::new(e.to_string())))
+                .ok()
+        });
+        // `Err(())`: a top-level height was given but is invalid (reported here
+        // once, not again for every number that inherits it).
+        let height: Result<Option<f64>, ()> = match o.get("lower_height") {
+            None => Ok(None),
+            Some(v) => match self.number(v, "lower_height").map(Height::try_new) {
+                Some(Ok(h)) => Ok(Some(h.get())),
+                Some(Err(e)) => {
+                    self.problems.push(Problem::new(e.to_string()));
+                    Err(())
+                }
+                None => Err(()),
+            },
+        };
+        let samples = match o.get("samples") {
+            None => Some(DEFAULT_SAMPLES),
+            Some(v) => self.whole(v, "samples").and_then(|n| self.samples(n)),
+        };
+        let weights = o.get("weights").and_then(|v| self.numbers(v, "weights"));
+        let knots = o.get("knots").and_then(|v| self.numbers(v, "knots"));
+        let points = match o.get("points") {
+            None => {
+                self.report("points", "missing: a job needs its fuzzy control points");
+                None
+            }
+            Some(v) => self.points(v, height),
+        };
+        let (degree, points, samples) = (degree?, points?, samples?);
+
+        // Curve-level rules (SPEC §6), once the parts are known.
+        let n = points.len();
+        let order = degree + 1;
+        if n < order {
+            self.report(
+                "points",
+                t2spline::Error::TooFewControlPoints { order, count: n },
+            );
+            return None;
+        }
+        let weights = match (weights, o.contains_key("weights")) {
+            (Some(w), _) => Some(w),
+            (None, false) => Some(vec![1.0; n]),
+            (None, true) => None,
+        };
+        if let Some(w) = &weights {
+            if w.len() != n {
+                self.problems.push(Problem::new(
+                    t2spline::Error::WeightCount {
+                        expected: n,
+                        found: w.len(),
+                    }
+                    .to_string(),
+                ));
+            }
+            for (index, &value) in w.iter().enumerate() {
+                if !(value.is_finite() && value > 0.0) {
+                    self.problems.push(Problem::new(
+                        t2spline::Error::Weight { index, value }.to_string(),
+                    ));
+                }
+            }
+        }
+        if let Some(u) = &knots {
+            for e in KnotVector::problems(u, degree, n) {
+                self.problems.push(Problem::new(e.to_string()));
+            }
+        }
+        if o.contains_key("knots") && knots.is_none() {
+            return None;
+        }
+        let weights = weights?;
+        if !self.problems.is_empty() {
+            return None;
+        }
+        let curve = match points {
+            Points::Planar(p) => {
+                FuzzyCurve::try_new(degree, p, weights, knots).map(JobCurve::Planar)
+            }
+            Points::Spatial(p) => {
+                FuzzyCurve::try_new(degree, p, weights, knots).map(JobCurve::Spatial)
+            }
+        };
+        match curve {
+            Ok(curve) => Some(Job {
+                description,
+                alpha,
+                samples,
+                curve,
+            }),
+            Err(e) => {
+                // Every rule FuzzyCurve checks was checked above; keep the
+                // message should the two ever disagree.
+                self.problems.push(Problem::new(e.to_string()));
+                None
+            }
+        }
+    }
+
+    fn degree(&mut self, o: &Map<String, Value>) -> Option<usize> {
+        match (o.get("order"), o.get("degree")) {
+            (Some(_), Some(_)) => {
+                self.report(
+                    "order, degree",
+                    "give exactly one of them (order = degree + 1)",
+                );
+                None
+            }
+            (None, None) => {
+                self.report("order", "missing: give `order` (k) or `degree` (k - 1)");
+                None
+            }
+            (Some(v), None) => match self.whole(v, "order")? {
+                0 => {
+                    self.report("order", "order = 0: the order must be at least 1");
+                    None
+                }
+                k => usize::try_from(k - 1).ok(),
+            },
+            (None, Some(v)) => self
+                .whole(v, "degree")
+                .and_then(|p| usize::try_from(p).ok()),
+        }
+    }
+
+    fn samples(&mut self, n: u64) -> Option<usize> {
+        check_samples(n)
+            .map_err(|rule| self.report("samples", rule))
+            .ok()
+    }
+
+    fn points(&mut self, v: &Value, height: Result<Option<f64>, ()>) -> Option<Points> {
+        let Some(items) = v.as_array() else {
+            self.report(
+                "points",
+                format!("expected an array of points, got {}", kind(v)),
+            );
+            return None;
+        };
+        let mut dimension: Option<(usize, Vec<&'static str>)> = None;
+        let mut parsed: Vec<Option<RawPoint>> = Vec::with_capacity(items.len());
+        for (i, item) in items.iter().enumerate() {
+            let key = format!("points[{i}]");
+            let Some(o) = self.object(item, &key, "a point") else {
+                parsed.push(None);
+                continue;
+            };
+            self.unknown_keys(o, &key, POINT_KEYS);
+            let axes: Vec<Axis> = [Axis::X, Axis::Y, Axis::Z]
+                .into_iter()
+                .filter(|a| o.contains_key(a.name()))
+                .collect();
+            let names: Vec<&'static str> = axes.iter().map(|a| a.name()).collect();
+            let mut usable = true;
+            if !(names == ["x", "y"] || names == ["x", "y", "z"]) {
+                self.report(
+                    &key,
+                    format!(
+                        "has coordinates [{}]; a point needs x and y, and optionally z",
+                        names.join(", ")
+                    ),
+                );
+                usable = false;
+            } else {
+                match &dimension {
+                    None => dimension = Some((i, names.clone())),
+                    Some((first, first_names)) if *first_names != names => {
+                        self.report(&key, format!(
+                            "has coordinates [{}] but points[{first}] has [{}]: every point needs the same coordinates",
+                            names.join(", "),
+                            first_names.join(", ")
+                        ));
+                        usable = false;
+                    }
+                    Some(_) => {}
+                }
+            }
+            // The numbers are checked even in an unusable point, so that one
+            // run reports all their problems too.
+            let point: RawPoint = axes
+                .into_iter()
+                .map(|axis| (axis, self.number_of(&o[axis.name()], i, axis, height)))
+                .collect();
+            if !usable {
+                parsed.push(None);
+                continue;
+            }
+            parsed.push(Some(point));
+        }
+        let points: Vec<RawPoint> = parsed.into_iter().collect::<Option<_>>()?;
+        if points.iter().flatten().any(|(_, x)| x.is_none()) {
+            return None;
+        }
+        let numbers = |p: &RawPoint| {
+            p.iter()
+                .map(|(_, x)| x.expect("checked above"))
+                .collect::<Vec<_>>()
+        };
+        match dimension.map(|(_, names)| names.len()) {
+            Some(3) => Some(Points::Spatial(
+                points
+                    .iter()
+                    .map(|p| Nt2Point::new(array(numbers(p))))
+                    .collect(),
+            )),
+            _ => Some(Points::Planar(
+                points
+                    .iter()
+                    .map(|p| Nt2Point::new(array(numbers(p))))
+                    .collect(),
+            )),
+        }
+    }
+
+    /// One fuzzy number at `points[i].axis`.
+    fn number_of(
+        &mut self,
+        v: &Value,
+        i: usize,
+        axis: Axis,
+        height: Result<Option<f64>, ()>,
+    ) -> Option<Nt2Number> {
+        let key = format!("points[{i}].{axis}");
+        let o = self.object(v, &key, "a fuzzy number")?;
+        self.unknown_keys(o, &key, NUMBER_KEYS);
+        let mut get = |name: &str| {
+            let v = o.get(name);
+            if v.is_none() {
+                self.report(&format!("{key}.{name}"), "missing");
+            }
+            v
+        };
+        let (crisp, upper, primary, lower) =
+            (get("crisp"), get("upper"), get("primary"), get("lower"));
+        let crisp = crisp.and_then(|v| self.number(v, &format!("{key}.crisp")));
+        let upper = upper.and_then(|v| self.pair(v, &format!("{key}.upper")));
+        let primary = primary.and_then(|v| self.pair(v, &format!("{key}.primary")));
+        let lower = lower.and_then(|v| self.pair(v, &format!("{key}.lower")));
+        let own = o
+            .get("lower_height")
+            .map(|v| self.number(v, &format!("{key}.lower_height")));
+        // `stand_in`: there is no valid height (reported, here or at the top
+        // level); the order is still checked, with a valid height in its place.
+        let (h, stand_in) = match (own, height) {
+            (Some(own), _) => (own?, false),
+            (None, Ok(Some(h))) => (h, false),
+            (None, Ok(None)) => {
+                self.report(
+                    &key,
+                    "no lower_height: give it in the number or at the top level of the job",
+                );
+                (1.0, true)
+            }
+            (None, Err(())) => (1.0, true),
+        };
+        let (crisp, upper, primary, lower) = (crisp?, upper?, primary?, lower?);
+        let problems = Nt2Number::problems(crisp, upper, primary, lower, h);
+        for e in &problems {
+            self.problems
+                .push(Problem::new(e.clone().at(Place::new(i, axis)).to_string()));
+        }
+        if stand_in {
+            return None;
+        }
+        Nt2Number::try_new(crisp, upper, primary, lower, h).ok()
+    }
+}
+
+/// Short description of a value that should have been a pair.
+fn describe(v: &Value) -> String {
+    match v.as_array() {
+        Some(a) => format!("an array of {} values", a.len()),
+        None => kind(v).to_owned(),
+    }
+}
+
+/// A vector of exactly `D` numbers as an array; the caller guarantees the length.
+fn array<const D: usize>(v: Vec<Nt2Number>) -> [Nt2Number; D] {
+    v.try_into().expect("the dimension was checked to be D")
+}
+
+/// The control points of either dimension.
+enum Points {
+    Planar(Vec<Nt2Point<2>>),
+    Spatial(Vec<Nt2Point<3>>),
+}
+
+impl Points {
+    fn len(&self) -> usize {
+        match self {
+            Points::Planar(p) => p.len(),
+            Points::Spatial(p) => p.len(),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn edit_distance_counts_transpositions_once() {
+        assert_eq!(edit_distance("alhpa", "alpha"), 1);
+        assert_eq!(edit_distance("wieghts", "weights"), 1);
+        assert_eq!(edit_distance("", "abc"), 3);
+        assert_eq!(suggestion("sample", TOP_KEYS), Some("samples"));
+        assert_eq!(suggestion("colour", TOP_KEYS), None);
+    }
+}
