@@ -246,53 +246,22 @@ impl Walker {
             }
             Some(v) => self.points(v, height),
         };
-        let (degree, points, samples) = (degree?, points?, samples?);
-
-        // Curve-level rules (SPEC §6), once the parts are known.
-        let n = points.len();
-        let order = degree + 1;
-        if n < order {
-            self.report(
-                "points",
-                t2spline::Error::TooFewControlPoints { order, count: n },
-            );
-            return None;
-        }
+        // Curve-level rules (SPEC §6), checked against the number of entries in
+        // `points` even when some of them are invalid.
+        let n = o.get("points").and_then(Value::as_array).map(Vec::len);
         let weights = match (weights, o.contains_key("weights")) {
             (Some(w), _) => Some(w),
-            (None, false) => Some(vec![1.0; n]),
+            (None, false) => n.map(|n| vec![1.0; n]),
             (None, true) => None,
         };
-        if let Some(w) = &weights {
-            if w.len() != n {
-                self.problems.push(Problem::new(
-                    t2spline::Error::WeightCount {
-                        expected: n,
-                        found: w.len(),
-                    }
-                    .to_string(),
-                ));
-            }
-            for (index, &value) in w.iter().enumerate() {
-                if !(value.is_finite() && value > 0.0) {
-                    self.problems.push(Problem::new(
-                        t2spline::Error::Weight { index, value }.to_string(),
-                    ));
-                }
-            }
+        if let (Some(degree), Some(n)) = (degree, n) {
+            self.curve_rules(degree, n, weights.as_deref(), knots.as_deref());
         }
-        if let Some(u) = &knots {
-            for e in KnotVector::problems(u, degree, n) {
-                self.problems.push(Problem::new(e.to_string()));
-            }
-        }
-        if o.contains_key("knots") && knots.is_none() {
-            return None;
-        }
-        let weights = weights?;
+        // A key that failed to parse is None here and has been reported.
         if !self.problems.is_empty() {
             return None;
         }
+        let (degree, points, samples, weights) = (degree?, points?, samples?, weights?);
         let curve = match points {
             Points::Planar(p) => {
                 FuzzyCurve::try_new(degree, p, weights, knots).map(JobCurve::Planar)
@@ -313,6 +282,44 @@ impl Walker {
                 // message should the two ever disagree.
                 self.problems.push(Problem::new(e.to_string()));
                 None
+            }
+        }
+    }
+
+    /// The rules that tie points, weights and knots together (SPEC §6).
+    fn curve_rules(
+        &mut self,
+        degree: usize,
+        n: usize,
+        weights: Option<&[f64]>,
+        knots: Option<&[f64]>,
+    ) {
+        let order = degree + 1;
+        if n < order {
+            self.report(
+                "points",
+                t2spline::Error::TooFewControlPoints { order, count: n },
+            );
+            return;
+        }
+        if let Some(w) = weights {
+            if w.len() != n {
+                let e = t2spline::Error::WeightCount {
+                    expected: n,
+                    found: w.len(),
+                };
+                self.problems.push(Problem::new(e.to_string()));
+            }
+            for (index, &value) in w.iter().enumerate() {
+                if !(value.is_finite() && value > 0.0) {
+                    let e = t2spline::Error::Weight { index, value };
+                    self.problems.push(Problem::new(e.to_string()));
+                }
+            }
+        }
+        if let Some(u) = knots {
+            for e in KnotVector::problems(u, degree, n) {
+                self.problems.push(Problem::new(e.to_string()));
             }
         }
     }
@@ -503,15 +510,6 @@ fn array<const D: usize>(v: Vec<Nt2Number>) -> [Nt2Number; D] {
 enum Points {
     Planar(Vec<Nt2Point<2>>),
     Spatial(Vec<Nt2Point<3>>),
-}
-
-impl Points {
-    fn len(&self) -> usize {
-        match self {
-            Points::Planar(p) => p.len(),
-            Points::Spatial(p) => p.len(),
-        }
-    }
 }
 
 #[cfg(test)]
