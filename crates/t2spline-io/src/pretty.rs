@@ -9,8 +9,9 @@ use serde_json::Value;
 ///
 /// # Examples
 /// ```
+/// // Keys keep their order (the workspace builds serde_json with `preserve_order`).
 /// let v = serde_json::json!({"p": [[1.0, 2.5], [3.0, 4.0]], "n": 2});
-/// assert_eq!(t2spline_io::to_json_pretty(&v), "{\n  \"n\": 2,\n  \"p\": [\n    [1.0, 2.5],\n    [3.0, 4.0]\n  ]\n}\n");
+/// assert_eq!(t2spline_io::to_json_pretty(&v), "{\n  \"p\": [\n    [1.0, 2.5],\n    [3.0, 4.0]\n  ],\n  \"n\": 2\n}\n");
 /// ```
 #[must_use]
 pub fn to_json_pretty(value: &Value) -> String {

@@ -134,3 +134,39 @@ fn fuzzy_curve_from<const D: usize>(
         })
     })
 }
+
+/// Knot values for degree `p` and `n` control points, every one drawn from the
+/// grid `{0, 1/8, …, 1}`: repeated knots turn up anywhere, also at the ends of
+/// the domain of an unclamped vector (`U[n−1] = U[n]`, where the right end must
+/// fall back to the last non-empty span) and in the interior with full
+/// multiplicity. Grid values are exact binary fractions.
+pub fn grid_knots(degree: usize, count: usize) -> impl Strategy<Value = Vec<f64>> {
+    proptest::collection::vec(0u32..=8, count + degree + 1)
+        .prop_map(|mut k| {
+            k.sort_unstable();
+            k.into_iter()
+                .map(|k| f64::from(k) / 8.0)
+                .collect::<Vec<f64>>()
+        })
+        .prop_filter("valid knot vector", move |u| {
+            KnotVector::problems(u, degree, count).is_empty()
+        })
+}
+
+/// A crisp rational B-spline curve like [`curve`], with [`grid_knots`].
+pub fn grid_curve<const D: usize>() -> impl Strategy<Value = NurbsCurve<D>> {
+    (1usize..=5, 0usize..=6)
+        .prop_flat_map(|(degree, extra)| {
+            let count = degree + 1 + extra;
+            (
+                Just(degree),
+                proptest::collection::vec(0.2..5.0f64, count),
+                grid_knots(degree, count),
+                proptest::collection::vec(proptest::array::uniform(-10.0..10.0f64), count),
+            )
+        })
+        .prop_map(|(degree, weights, knots, points)| {
+            let u = KnotVector::try_new(knots, degree, points.len()).expect("filtered");
+            NurbsCurve::try_new(points, weights, u).expect("valid parts")
+        })
+}

@@ -11,7 +11,7 @@ use t2spline::{
 
 /// Cases per property: enough to meet repeated knots, zero spreads and
 /// `alpha = h`, small enough that the file runs in a few seconds in debug.
-const CASES: u32 = 20000;
+const CASES: u32 = 256;
 
 /// `|a − b| ≤ tol·max(1, |a|, |b|)`: absolute near 0, relative for large values.
 fn close(a: f64, b: f64, tol: f64) -> bool {
@@ -135,12 +135,19 @@ fn symmetric_number() -> impl Strategy<Value = Nt2Number> + Clone {
         })
 }
 
-/// A fuzzy curve with the shape (degree, weights, knots) of a random crisp
-/// curve and control points made by `point`.
+/// A crisp curve with knots from [`strategies::curve`] (clamped or not, coarse
+/// or fine interior knots) or from [`strategies::grid_curve`] (repeated knots
+/// anywhere, also at the ends of an unclamped domain).
+fn any_curve<const D: usize>() -> impl Strategy<Value = NurbsCurve<D>> {
+    prop_oneof![strategies::curve::<D>(), strategies::grid_curve::<D>()]
+}
+
+/// A fuzzy curve with the shape (degree, weights, knots) of [`any_curve`] and
+/// control points made by `point`.
 fn fuzzy_curve_like<const D: usize>(
     point: impl Strategy<Value = Nt2Point<D>> + Clone,
 ) -> impl Strategy<Value = FuzzyCurve<D>> {
-    strategies::curve::<D>().prop_flat_map(move |c| {
+    any_curve::<D>().prop_flat_map(move |c| {
         proptest::collection::vec(point.clone(), c.control_points().len()).prop_map(move |points| {
             FuzzyCurve::try_new(
                 c.degree(),
@@ -151,6 +158,24 @@ fn fuzzy_curve_like<const D: usize>(
             .expect("the parts of a valid curve")
         })
     })
+}
+
+/// A fuzzy curve with independent heights, of either kind of shape.
+fn any_fuzzy_curve<const D: usize>() -> impl Strategy<Value = FuzzyCurve<D>> {
+    prop_oneof![
+        strategies::fuzzy_curve::<D>(),
+        fuzzy_curve_like(strategies::point::<D>()),
+    ]
+}
+
+/// A fuzzy curve whose numbers share one lower height, of either kind of shape.
+fn any_fuzzy_curve_common_height<const D: usize>() -> impl Strategy<Value = FuzzyCurve<D>> {
+    prop_oneof![
+        strategies::fuzzy_curve_common_height::<D>(),
+        strategies::height().prop_flat_map(|h| fuzzy_curve_like(
+            proptest::array::uniform(strategies::number_with_height(h)).prop_map(Nt2Point::new)
+        )),
+    ]
 }
 
 /// A value whose seven values are all `x`, with any height.
@@ -165,7 +190,7 @@ proptest! {
 
     /// SPEC §6: `R_i(t) ≥ 0` and `Σ R_i(t) = 1` on the whole domain.
     #[test]
-    fn rational_basis_is_a_partition_of_unity(c in strategies::curve::<2>(), s in 0.0..=1.0f64) {
+    fn rational_basis_is_a_partition_of_unity(c in any_curve::<2>(), s in 0.0..=1.0f64) {
         for t in parameters(c.knots(), s) {
             let r = c.rational_basis(t).expect("t in the domain");
             prop_assert!(r.iter().all(|&ri| ri >= -1e-15),
@@ -181,7 +206,7 @@ proptest! {
     /// SPEC §6: `R_i = w_i N_i / Σ w_r N_r` with `N_i` from the Cox–de Boor
     /// definition (an independent oracle for the span search and A2.2).
     #[test]
-    fn rational_basis_matches_the_definition(c in strategies::curve::<2>(), s in 0.0..=1.0f64) {
+    fn rational_basis_matches_the_definition(c in any_curve::<2>(), s in 0.0..=1.0f64) {
         let (u, p, n) = (c.knots().as_slice(), c.degree(), c.control_points().len());
         for t in parameters(c.knots(), s) {
             let basis = cox_de_boor(u, p, n, t);
@@ -200,7 +225,7 @@ proptest! {
     /// B-spline `Σ N_i(t) P_i`.
     #[test]
     fn equal_weights_give_the_plain_b_spline(
-        c in strategies::curve::<2>(), w in 0.2..5.0f64, s in 0.0..=1.0f64,
+        c in any_curve::<2>(), w in 0.2..5.0f64, s in 0.0..=1.0f64,
     ) {
         let (u, p, n) = (c.knots().as_slice(), c.degree(), c.control_points().len());
         let equal = NurbsCurve::try_new(c.control_points().to_vec(), vec![w; n], c.knots().clone())
@@ -222,8 +247,8 @@ proptest! {
     /// rounding is monotone too), with independent heights, in 2-D and 3-D.
     #[test]
     fn layer_curves_keep_the_seven_value_order(
-        c2 in strategies::fuzzy_curve::<2>(),
-        c3 in strategies::fuzzy_curve::<3>(),
+        c2 in any_fuzzy_curve::<2>(),
+        c3 in any_fuzzy_curve::<3>(),
         s in 0.0..=1.0f64,
     ) {
         fn check<const D: usize>(c: &FuzzyCurve<D>, s: f64) -> Result<(), TestCaseError> {
@@ -247,7 +272,7 @@ proptest! {
     /// (built from the control points) at `t`.
     #[test]
     fn stages_commute_with_evaluation_for_a_common_height(
-        c in strategies::fuzzy_curve_common_height::<2>(),
+        c in any_fuzzy_curve_common_height::<2>(),
         kind in alpha_kind(),
         random in 0.0..=1.0f64,
         s in 0.0..=1.0f64,
@@ -346,7 +371,7 @@ proptest! {
     /// same monotonicity as the layer order).
     #[test]
     fn type_reduced_curves_bracket_crisp_and_defuzzified(
-        c in strategies::fuzzy_curve::<2>(), random in 0.0..=1.0f64, s in 0.0..=1.0f64,
+        c in any_fuzzy_curve::<2>(), random in 0.0..=1.0f64, s in 0.0..=1.0f64,
     ) {
         let solution = c.solve(Alpha::try_new(random).expect("alpha in [0, 1]"));
         let curves = [
@@ -397,7 +422,7 @@ proptest! {
     /// SPEC §2–§4: at `α = 1` every cut is the crisp value, so the defuzzified
     /// control points are exactly the crisp ones and the distance is exactly 0.
     #[test]
-    fn alpha_one_gives_the_crisp_control_points(c in strategies::fuzzy_curve::<2>()) {
+    fn alpha_one_gives_the_crisp_control_points(c in any_fuzzy_curve::<2>()) {
         let solution = c.solve(Alpha::try_new(1.0).expect("1 is a level"));
         let crisp: Vec<[f64; 2]> = c.points().iter().map(Nt2Point::crisp).collect();
         prop_assert_eq!(solution.defuzzified_points(), &crisp[..]);
@@ -410,7 +435,7 @@ proptest! {
     /// defuzzified curve by the same map.
     #[test]
     fn defuzzified_curve_is_affine_invariant(
-        c in strategies::fuzzy_curve::<2>(),
+        c in any_fuzzy_curve::<2>(),
         scale in [0.1..10.0f64, 0.1..10.0f64],
         shift in [-10.0..10.0f64, -10.0..10.0f64],
         random in 0.0..=1.0f64,
