@@ -12,6 +12,15 @@ pub fn is_stdio(path: &Path) -> bool {
     path.as_os_str() == "-"
 }
 
+/// How messages name the job file: as given, or `<stdin>` for `-`.
+pub fn job_name(path: &Path) -> String {
+    if is_stdio(path) {
+        "<stdin>".to_owned()
+    } else {
+        path.display().to_string()
+    }
+}
+
 /// Reads and validates the job at `path`, or from standard input for `-`.
 pub fn read_job(path: &Path) -> anyhow::Result<Job> {
     if is_stdio(path) {
@@ -19,7 +28,7 @@ pub fn read_job(path: &Path) -> anyhow::Result<Job> {
         std::io::stdin()
             .read_to_string(&mut text)
             .context("standard input: cannot read")?;
-        Ok(Job::parse(&text, "<stdin>")?)
+        Ok(Job::parse(&text, &job_name(path))?)
     } else {
         Ok(Job::read(path)?)
     }

@@ -41,7 +41,7 @@ impl fmt::Display for Problem {
 #[non_exhaustive]
 pub enum Error {
     /// The job file could not be read.
-    #[error("{}: cannot read: {source}", path.display())]
+    #[error("{}: cannot read", path.display())]
     Read {
         /// The file.
         path: PathBuf,
@@ -52,14 +52,14 @@ pub enum Error {
     /// The job breaks one or more rules; each problem is one line of the message.
     #[error("{}", Invalid::lines(file, problems))]
     Invalid {
-        /// The file name as given (or `-` for standard input).
+        /// The file name as given (or `<stdin>` for standard input).
         file: String,
         /// Every problem found.
         problems: Vec<Problem>,
     },
     /// An output file or folder could not be written; nothing was left
     /// half-written.
-    #[error("{}: cannot write: {source}", path.display())]
+    #[error("{}: cannot write", path.display())]
     Write {
         /// The file or folder.
         path: PathBuf,
@@ -95,9 +95,18 @@ impl Invalid {
 
 impl Error {
     /// The lines of the message, one per problem: what a tool prints, each line
-    /// naming the file, the place and the rule.
+    /// naming the file, the place and the rule. The chain of sources (the
+    /// `io::Error` of [`Error::Read`] and [`Error::Write`]) follows the message,
+    /// separated by `": "`.
     #[must_use]
     pub fn lines(&self) -> Vec<String> {
-        self.to_string().lines().map(str::to_owned).collect()
+        let mut text = self.to_string();
+        let mut source = std::error::Error::source(self);
+        while let Some(s) = source {
+            text.push_str(": ");
+            text.push_str(&s.to_string());
+            source = s.source();
+        }
+        text.lines().map(str::to_owned).collect()
     }
 }

@@ -8,7 +8,7 @@ use t2spline_io::job::check_samples;
 use t2spline_io::{render_csv, to_json_pretty, write_atomic, Error, Job, RunResult};
 
 use crate::cli::RunArgs;
-use crate::output::{read_job, write};
+use crate::output::{job_name, read_job, write};
 
 /// A run with every input validated.
 struct Plan {
@@ -43,7 +43,7 @@ impl Plan {
         let Some(alpha) = alpha.or(job.alpha) else {
             bail!(
                 "{}: alpha: missing: give it in the job file or with --alpha",
-                args.job.display()
+                job_name(&args.job)
             );
         };
         Ok(Plan {

@@ -1,7 +1,7 @@
 //! `t2spline validate JOB.json`: report every problem, or a one-line summary.
 
 use crate::cli::ValidateArgs;
-use crate::output::{read_job, write};
+use crate::output::{job_name, read_job, write};
 use t2spline_io::JobCurve;
 
 pub fn validate(args: &ValidateArgs) -> anyhow::Result<()> {
@@ -15,7 +15,7 @@ pub fn validate(args: &ValidateArgs) -> anyhow::Result<()> {
         .map_or("not set".to_owned(), |a| a.get().to_string());
     let line = format!(
         "{}: ok: {}-D, {points} points, order {order}, alpha {alpha}, {} samples\n",
-        args.job.display(),
+        job_name(&args.job),
         job.curve.dimension(),
         job.samples,
     );

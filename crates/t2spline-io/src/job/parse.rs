@@ -76,8 +76,8 @@ fn edit_distance(a: &str, b: &str) -> usize {
     for (i, row) in d.iter_mut().enumerate() {
         row[0] = i;
     }
-    for j in 0..=b.len() {
-        d[0][j] = j;
+    for (j, cell) in d[0].iter_mut().enumerate() {
+        *cell = j;
     }
     for i in 1..=a.len() {
         for j in 1..=b.len() {
@@ -294,7 +294,9 @@ impl Walker {
         weights: Option<&[f64]>,
         knots: Option<&[f64]>,
     ) {
-        let order = degree + 1;
+        // A degree of u64::MAX is valid JSON; saturating keeps it an error
+        // (too few points) rather than an overflow.
+        let order = degree.saturating_add(1);
         if n < order {
             self.report(
                 "points",
