@@ -2,10 +2,10 @@
 //! with a closed pipe treated as success.
 
 use std::io::{Read, Write};
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 use anyhow::Context;
-use t2spline_io::{write_atomic, Job};
+use t2spline_io::{write_all_atomic, Error, Job};
 
 /// Whether the path names a standard stream.
 pub fn is_stdio(path: &Path) -> bool {
@@ -34,17 +34,72 @@ pub fn read_job(path: &Path) -> anyhow::Result<Job> {
     }
 }
 
-/// Writes `bytes` to `path` atomically, or to standard output when `path` is
-/// `None` or `-`.
-pub fn write(path: Option<&Path>, bytes: &[u8]) -> anyhow::Result<()> {
-    match path {
-        Some(p) if !is_stdio(p) => Ok(write_atomic(p, bytes)?),
-        _ => {
-            let mut out = std::io::stdout().lock();
-            out.write_all(bytes)?;
-            out.flush()?;
-            Ok(())
+/// Everything a command writes, gathered first and written at the end: the
+/// files all or nothing ([`write_all_atomic`]), folders created only as needed
+/// and removed again if the files could not be written, standard output last.
+#[derive(Debug, Default)]
+pub struct Outputs {
+    dirs: Vec<PathBuf>,
+    files: Vec<(PathBuf, Vec<u8>)>,
+    stdout: Vec<u8>,
+}
+
+impl Outputs {
+    /// `bytes` to the file `path`, or to standard output for `None` or `-`.
+    pub fn to(&mut self, path: Option<&Path>, bytes: Vec<u8>) {
+        match path {
+            Some(p) if !is_stdio(p) => self.files.push((p.to_owned(), bytes)),
+            _ => self.stdout.extend(bytes),
         }
+    }
+
+    /// A file inside `dir`, which is created if missing.
+    pub fn in_dir(&mut self, dir: &Path, name: &str, bytes: Vec<u8>) {
+        if !self.dirs.iter().any(|d| d == dir) {
+            self.dirs.push(dir.to_owned());
+        }
+        self.files.push((dir.join(name), bytes));
+    }
+
+    /// Writes everything.
+    pub fn commit(self) -> anyhow::Result<()> {
+        let mut created = Vec::new();
+        let result = self.write_files(&mut created);
+        if result.is_err() {
+            // Only folders this run created, and only if still empty.
+            for dir in created.iter().rev() {
+                let _ = std::fs::remove_dir(dir);
+            }
+        }
+        result?;
+        if !self.stdout.is_empty() {
+            let mut out = std::io::stdout().lock();
+            out.write_all(&self.stdout)?;
+            out.flush()?;
+        }
+        Ok(())
+    }
+
+    fn write_files(&self, created: &mut Vec<PathBuf>) -> anyhow::Result<()> {
+        for dir in &self.dirs {
+            let mut missing: Vec<PathBuf> = dir
+                .ancestors()
+                .filter(|a| !a.as_os_str().is_empty() && !a.exists())
+                .map(Path::to_owned)
+                .collect();
+            std::fs::create_dir_all(dir).map_err(|source| Error::Write {
+                path: dir.clone(),
+                source,
+            })?;
+            missing.reverse();
+            created.extend(missing);
+        }
+        let files: Vec<(&Path, &[u8])> = self
+            .files
+            .iter()
+            .map(|(p, b)| (p.as_path(), b.as_slice()))
+            .collect();
+        Ok(write_all_atomic(&files)?)
     }
 }
 

@@ -686,3 +686,28 @@ fn stdin_can_be_written_by_a_pipe_too() {
         "<stdin>: ok: 2-D, 4 points, order 3, alpha 0.8, 101 samples\n"
     );
 }
+
+#[test]
+fn csv_and_output_are_written_all_or_nothing() {
+    // The JSON output's folder is missing: the run fails and leaves neither the
+    // CSV files nor the CSV folder it would have created.
+    let dir = tempfile::tempdir().unwrap();
+    let csv = dir.path().join("csv/nested");
+    let out = dir.path().join("missing/out.json");
+    let (code, stdout, stderr) = run(&[
+        "run",
+        path_str(&example()),
+        "--csv",
+        path_str(&csv),
+        "-o",
+        path_str(&out),
+    ]);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(stdout.is_empty(), "{stdout}");
+    assert!(stderr.contains("out.json: cannot write"), "{stderr}");
+    assert!(
+        !stderr.contains(".t2spline-"),
+        "names a temporary file: {stderr}"
+    );
+    assert_empty_dir(dir.path(), &[]);
+}

@@ -12,10 +12,31 @@ use crate::Error;
 /// # Errors
 /// [`Error::Write`] naming `path`.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), Error> {
-    let failed = |source| Error::Write {
-        path: path.to_owned(),
-        source,
-    };
+    write_all_atomic(&[(path, bytes)])
+}
+
+/// Writes several files all or nothing, as far as the file system allows: every
+/// file is first written in full to a temporary file beside its destination and
+/// flushed; only when all of them succeeded are they renamed into place. A
+/// failure while writing (a missing folder, a full disk) leaves every
+/// destination as it was.
+///
+/// # Errors
+/// [`Error::Write`] naming the first file that could not be written.
+pub fn write_all_atomic(files: &[(&Path, &[u8])]) -> Result<(), Error> {
+    let staged = files
+        .iter()
+        .map(|&(path, bytes)| stage(path, bytes).map(|tmp| (path, tmp)))
+        .collect::<Result<Vec<_>, _>>()?;
+    for (path, tmp) in staged {
+        tmp.persist(path).map_err(|e| write_error(path, e.error))?;
+    }
+    Ok(())
+}
+
+/// A flushed temporary file holding `bytes`, in the folder of `path`; removed
+/// when dropped unless persisted.
+fn stage(path: &Path, bytes: &[u8]) -> Result<tempfile::NamedTempFile, Error> {
     let dir = match path.parent() {
         Some(d) if !d.as_os_str().is_empty() => d,
         _ => Path::new("."),
@@ -24,11 +45,27 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> Result<(), Error> {
         .prefix(".t2spline-")
         .suffix(".tmp")
         .tempfile_in(dir)
-        .map_err(failed)?;
-    file.write_all(bytes).map_err(failed)?;
-    file.as_file().sync_all().map_err(failed)?;
-    file.persist(path).map_err(|e| failed(e.error))?;
-    Ok(())
+        .map_err(|e| write_error(path, e))?;
+    file.write_all(bytes).map_err(|e| write_error(path, e))?;
+    file.as_file()
+        .sync_all()
+        .map_err(|e| write_error(path, e))?;
+    Ok(file)
+}
+
+/// [`Error::Write`] for `path`. tempfile's errors end in
+/// ` at path "<temporary file>"`; the user named `path`, which the message
+/// carries, so only the reason is kept.
+fn write_error(path: &Path, e: std::io::Error) -> Error {
+    let text = e.to_string();
+    let source = match text.rfind(" at path \"") {
+        Some(i) => std::io::Error::new(e.kind(), &text[..i]),
+        None => e,
+    };
+    Error::Write {
+        path: path.to_owned(),
+        source,
+    }
 }
 
 #[cfg(test)]
@@ -46,13 +83,27 @@ mod tests {
     }
 
     #[test]
-    fn a_missing_folder_is_an_error_naming_the_file() {
+    fn a_missing_folder_is_an_error_naming_the_file_not_the_temporary() {
         let dir = tempfile::tempdir().unwrap();
         let path = dir.path().join("no/such/out.json");
         let e = write_atomic(&path, b"x").unwrap_err();
+        let lines = e.lines().join("\n");
+        assert!(lines.contains("no/such/out.json: cannot write"), "{lines}");
+        assert!(lines.contains("No such file or directory"), "{lines}");
         assert!(
-            e.to_string().contains("no/such/out.json: cannot write"),
-            "{e}"
+            !lines.contains(".t2spline-"),
+            "names the temporary file: {lines}"
         );
+    }
+
+    #[test]
+    fn a_failing_file_leaves_the_others_unwritten() {
+        let dir = tempfile::tempdir().unwrap();
+        let good = dir.path().join("good.csv");
+        let bad = dir.path().join("missing/bad.json");
+        let e = write_all_atomic(&[(&good, b"a"), (&bad, b"b")]).unwrap_err();
+        assert!(e.to_string().contains("bad.json"), "{e}");
+        assert!(!good.exists());
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
     }
 }

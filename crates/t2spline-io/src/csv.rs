@@ -4,7 +4,7 @@ use std::path::{Path, PathBuf};
 
 use t2spline::Layer;
 
-use crate::atomic::write_atomic;
+use crate::atomic::write_all_atomic;
 use crate::result::{Point, RunResult};
 use crate::Error;
 
@@ -112,20 +112,24 @@ fn table(params: &[f64], family: &Family, dims: usize, extra: Option<(&str, &[f6
 }
 
 /// Writes the four CSV files of [`render_csv`] into `dir`, creating it if
-/// needed; each file is written atomically. Returns the paths written.
+/// needed; the files are written all or nothing ([`write_all_atomic`]). Returns
+/// the paths written.
 ///
 /// # Errors
 /// [`Error::Write`] if the folder cannot be created or a file cannot be written.
 pub fn write_csv(dir: &Path, result: &RunResult) -> Result<Vec<PathBuf>, Error> {
+    let files: Vec<(PathBuf, String)> = render_csv(result)
+        .into_iter()
+        .map(|(name, text)| (dir.join(name), text))
+        .collect();
     std::fs::create_dir_all(dir).map_err(|source| Error::Write {
         path: dir.to_owned(),
         source,
     })?;
-    render_csv(result)
-        .into_iter()
-        .map(|(name, text)| {
-            let path = dir.join(name);
-            write_atomic(&path, text.as_bytes()).map(|()| path)
-        })
-        .collect()
+    let refs: Vec<(&Path, &[u8])> = files
+        .iter()
+        .map(|(p, t)| (p.as_path(), t.as_bytes()))
+        .collect();
+    write_all_atomic(&refs)?;
+    Ok(files.into_iter().map(|(p, _)| p).collect())
 }

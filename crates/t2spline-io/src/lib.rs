@@ -34,7 +34,7 @@ pub mod job;
 mod pretty;
 pub mod result;
 
-pub use crate::atomic::write_atomic;
+pub use crate::atomic::{write_all_atomic, write_atomic};
 pub use crate::csv::{render_csv, write_csv, CSV_FILES};
 pub use error::{Error, Problem};
 pub use job::{Job, JobCurve, DEFAULT_SAMPLES, MAX_SAMPLES};

@@ -5,10 +5,10 @@ use std::path::PathBuf;
 use anyhow::bail;
 use t2spline::Alpha;
 use t2spline_io::job::check_samples;
-use t2spline_io::{render_csv, to_json_pretty, write_atomic, Error, Job, RunResult};
+use t2spline_io::{render_csv, to_json_pretty, Error, Job, RunResult};
 
 use crate::cli::RunArgs;
-use crate::output::{job_name, read_job, write};
+use crate::output::{job_name, read_job, Outputs};
 
 /// A run with every input validated.
 struct Plan {
@@ -61,15 +61,12 @@ pub fn run(args: RunArgs) -> anyhow::Result<()> {
     let result = RunResult::compute(&plan.job, plan.alpha, plan.samples);
     let json = to_json_pretty(&serde_json::to_value(&result)?);
     // Everything is computed before anything is written.
+    let mut out = Outputs::default();
     if let Some(dir) = &plan.csv {
-        let files = render_csv(&result);
-        std::fs::create_dir_all(dir).map_err(|source| Error::Write {
-            path: dir.clone(),
-            source,
-        })?;
-        for (name, text) in files {
-            write_atomic(&dir.join(name), text.as_bytes())?;
+        for (name, text) in render_csv(&result) {
+            out.in_dir(dir, name, text.into_bytes());
         }
     }
-    write(plan.output.as_deref(), json.as_bytes())
+    out.to(plan.output.as_deref(), json.into_bytes());
+    out.commit()
 }
