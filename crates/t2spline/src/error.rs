@@ -259,6 +259,106 @@ pub enum Error {
         /// End of the domain.
         end: f64,
     },
+
+    /// A knot cannot be inserted that many times: its multiplicity would pass
+    /// the order `k` (SPEC §6).
+    ///
+    /// ```
+    /// # use t2spline::{Error, NurbsCurve};
+    /// let c = NurbsCurve::<2>::try_clamped(2, vec![[0.0, 0.0], [1.0, 1.0], [2.0, 0.0]], vec![1.0; 3])?;
+    /// let e = c.insert_knot(0.5, 4).unwrap_err();
+    /// assert_eq!(e.to_string(), "cannot insert knot 0.5 4 times: it has multiplicity 0 and may have at most the order 3");
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("cannot insert knot {knot} {times} times: it has multiplicity {multiplicity} and may have at most the order {order}")]
+    KnotInsertion {
+        /// The knot value.
+        knot: f64,
+        /// How many insertions were asked for.
+        times: usize,
+        /// Its multiplicity before insertion.
+        multiplicity: usize,
+        /// The order `k`.
+        order: usize,
+    },
+
+    /// A curve can only be split strictly inside its domain.
+    ///
+    /// ```
+    /// # use t2spline::{Error, NurbsCurve};
+    /// let c = NurbsCurve::<2>::try_clamped(1, vec![[0.0, 0.0], [1.0, 1.0]], vec![1.0, 1.0])?;
+    /// assert!(matches!(c.split_at(1.0), Err(Error::SplitOutside { .. })));
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("cannot split at t = {t}: it must lie strictly inside the domain ({start}, {end})")]
+    SplitOutside {
+        /// The parameter.
+        t: f64,
+        /// Start of the domain.
+        start: f64,
+        /// End of the domain.
+        end: f64,
+    },
+
+    /// An arc length outside `[0, total length]` has no parameter.
+    ///
+    /// ```
+    /// # use t2spline::{Error, NurbsCurve};
+    /// let c = NurbsCurve::<2>::try_clamped(1, vec![[0.0, 0.0], [3.0, 4.0]], vec![1.0, 1.0])?;
+    /// assert!(matches!(c.param_at_length(6.0), Err(Error::LengthOutside { .. })));
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("arc length {length} is outside [0, {total}], the length of the curve")]
+    LengthOutside {
+        /// The length asked for.
+        length: f64,
+        /// The length of the whole curve.
+        total: f64,
+    },
+
+    /// The curve has no direction here: every derivative up to the degree
+    /// vanishes (the curve is constant around `t`), or the first derivative
+    /// vanishes where a quantity needs it (curvature at a cusp).
+    ///
+    /// ```
+    /// # use t2spline::{Error, NurbsCurve};
+    /// let c = NurbsCurve::<2>::try_clamped(1, vec![[1.0, 1.0], [1.0, 1.0]], vec![1.0, 1.0])?;
+    /// assert!(matches!(c.tangent(0.5), Err(Error::Singular { .. })));
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("the {what} at t = {t} is undefined: the curve has zero speed there")]
+    Singular {
+        /// `"tangent"` or `"curvature"`.
+        what: &'static str,
+        /// The parameter.
+        t: f64,
+    },
+
+    /// An operation that makes new fuzzy control points needs one lower height
+    /// per coordinate: a combination of numbers with different heights has no
+    /// height that keeps the alpha-cut curves unchanged (SPEC §6).
+    ///
+    /// ```
+    /// # use t2spline::{Error, FuzzyCurve, Nt2Number, Nt2Point};
+    /// let n = |c: f64, h: f64| Nt2Number::try_new(c, [c - 1.0, c + 1.0], [c, c], [c, c], h);
+    /// let points = vec![
+    ///     Nt2Point::new([n(0.0, 0.5)?, n(0.0, 0.5)?]),
+    ///     Nt2Point::new([n(1.0, 0.7)?, n(1.0, 0.5)?]),
+    /// ];
+    /// let c = FuzzyCurve::try_new(1, points, vec![1.0, 1.0], None)?;
+    /// let e = c.insert_knot(0.5, 1).unwrap_err();
+    /// assert_eq!(e.to_string(), "points[1].x: lower_height 0.7 differs from 0.5 of points[0].x; this operation needs one lower height per coordinate");
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("{place}lower_height {height} differs from {expected} of points[0].{axis}; this operation needs one lower height per coordinate", axis = place.axis.map_or("?", |a| a.name()))]
+    MixedHeights {
+        /// The first number whose height differs from the first point's.
+        place: Place,
+        /// Its height.
+        height: f64,
+        /// The height of the same coordinate of the first point.
+        expected: f64,
+    },
 }
 
 impl Error {

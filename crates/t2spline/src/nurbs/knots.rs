@@ -159,6 +159,25 @@ impl KnotVector {
         out
     }
 
+    /// A knot vector that an exact algorithm derived from a valid one.
+    pub(crate) fn from_parts_unchecked(values: Vec<f64>, degree: usize) -> Self {
+        debug_assert!(
+            values.len() > degree + 1
+                && Self::problems(&values, degree, values.len() - degree - 1).is_empty(),
+            "{values:?} (degree {degree})"
+        );
+        KnotVector { values, degree }
+    }
+
+    /// Whether the curve is clamped: its first `k` and its last `k` knots are
+    /// equal, so that it starts and ends at its first and last control points.
+    #[must_use]
+    pub fn is_clamped(&self) -> bool {
+        let k = self.degree + 1;
+        let u = &self.values;
+        u[..k].iter().all(|&v| v == u[0]) && u[u.len() - k..].iter().all(|&v| v == u[u.len() - 1])
+    }
+
     /// The clamped uniform knot vector (SPEC §6 default): `k` zeros, `n − k`
     /// uniform interior knots `i/(n − k + 1)`, `k` ones.
     ///

@@ -1,12 +1,37 @@
 //! Rational B-spline (NURBS) curves of any order (SPEC §6, paper Def. 5.1).
 //!
 //! [`KnotVector`] validates knots and finds spans; [`basis`] holds the B-spline
-//! basis functions (The NURBS Book, A2.1–A2.2); [`NurbsCurve`] evaluates
-//! `C(t) = Σ wᵢ Nᵢ,ₚ(t) Pᵢ / Σ wᵣ Nᵣ,ₚ(t)`.
+//! basis functions (The NURBS Book, A2.1–A2.2) and [`derivatives`] their
+//! derivatives (A2.3); [`NurbsCurve`] evaluates
+//! `C(t) = Σ wᵢ Nᵢ,ₚ(t) Pᵢ / Σ wᵣ Nᵣ,ₚ(t)` and offers the curve operations:
+//!
+//! | operation | method | source |
+//! |---|---|---|
+//! | derivatives of any order, tangent, curvature | [`NurbsCurve::derivatives`], [`NurbsCurve::tangent`], [`NurbsCurve::curvature`] | A3.2, A4.2 |
+//! | knot insertion, refinement | [`NurbsCurve::insert_knot`], [`NurbsCurve::refine_knots`] | A5.1, A5.4 |
+//! | degree elevation | [`NurbsCurve::elevate_degree`] | A5.9 |
+//! | splitting, pieces, clamping | [`NurbsCurve::split_at`], [`NurbsCurve::segment`], [`NurbsCurve::clamped`] | §5.3 |
+//! | arc length, parameter at a length | [`NurbsCurve::arc_length`], [`NurbsCurve::param_at_length`] | Gauss–Kronrod |
+//! | closest point | [`NurbsCurve::closest_point`] | §6.1 |
+//! | bounding box | [`NurbsCurve::bounding_box`] | — |
+//!
+//! Fuzzy curves apply the same operations to their seven layers with shared
+//! knots and weights (`FuzzyCurve`, in [`crate::pipeline`]).
 
+mod arc_length;
+pub use arc_length::LENGTH_TOLERANCE;
 pub mod basis;
+mod bounding_box;
+mod closest_point;
 pub(crate) mod curve;
+pub(crate) mod degree_elevation;
+pub mod derivatives;
+pub(crate) mod knot_insertion;
 mod knots;
+pub(crate) mod net;
+pub(crate) mod split;
 
+pub use bounding_box::BoundingBox;
+pub use closest_point::ClosestPoint;
 pub use curve::NurbsCurve;
 pub use knots::{Domain, KnotVector};

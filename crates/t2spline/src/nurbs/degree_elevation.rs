@@ -1,0 +1,273 @@
+//! Degree elevation (The NURBS Book, §5.5, A5.9).
+
+use crate::nurbs::net::Row;
+use crate::nurbs::split::segment;
+use crate::nurbs::{KnotVector, NurbsCurve};
+
+/// Binomial coefficient `C(n, k)` as a float.
+fn binomial(n: usize, k: usize) -> f64 {
+    (0..k).fold(1.0, |acc, i| acc * (n - i) as f64 / (i + 1) as f64)
+}
+
+/// `Σ cⱼ·rowⱼ` over the pairs given.
+fn combine<'a>(width: usize, terms: impl Iterator<Item = (f64, &'a Row)>) -> Row {
+    let mut out = vec![0.0; width];
+    for (c, row) in terms {
+        for (o, x) in out.iter_mut().zip(row) {
+            *o += c * x;
+        }
+    }
+    out
+}
+
+/// Raises the degree of a curve by `t` (A5.9, DegreeElevateCurve), on
+/// homogeneous control points. An unclamped curve is clamped first (see
+/// [`NurbsCurve::clamped`]); the result is clamped, every knot's multiplicity
+/// grows by `t`.
+///
+/// A5.9 walks the knot vector once: it extracts each Bézier segment by knot
+/// insertion, raises its degree with the coefficients
+/// `C(p, j)·C(t, i − j) / C(p + t, i)` (Eq. 5.36) and removes the knots it
+/// inserted. One change to the book's listing: after a knot of full
+/// multiplicity `p + 1` (where the curve may jump) the next segment shares no
+/// control point with the previous one, so its first point is kept too.
+pub(crate) fn elevate(knots: &KnotVector, rows: &[Row], t: usize) -> (KnotVector, Vec<Row>) {
+    if t == 0 {
+        return (knots.clone(), rows.to_vec());
+    }
+    let (knots, rows) = if knots.is_clamped() {
+        (knots.clone(), rows.to_vec())
+    } else {
+        let d = knots.domain();
+        segment(knots, rows, d.start, d.end).expect("the domain ends lie in the domain")
+    };
+    let width = rows[0].len();
+    let p = knots.degree();
+    let u = knots.as_slice();
+    let n = rows.len() - 1;
+    let m = n + p + 1;
+    let ph = p + t;
+    let ph2 = ph / 2;
+    // Bézier degree elevation coefficients.
+    let mut bezalfs = vec![vec![0.0; p + 1]; ph + 1];
+    bezalfs[0][0] = 1.0;
+    bezalfs[ph][p] = 1.0;
+    for i in 1..=ph2 {
+        let inv = 1.0 / binomial(ph, i);
+        for j in i.saturating_sub(t)..=p.min(i) {
+            bezalfs[i][j] = inv * binomial(p, j) * binomial(t, i - j);
+        }
+    }
+    for i in ph2 + 1..ph {
+        for j in i.saturating_sub(t)..=p.min(i) {
+            bezalfs[i][j] = bezalfs[ph - i][p - j];
+        }
+    }
+    let zero = vec![0.0; width];
+    let mut bpts: Vec<Row> = rows[..=p].to_vec();
+    let mut next_bpts: Vec<Row> = vec![zero.clone(); p.saturating_sub(1).max(1)];
+    let mut ebpts: Vec<Row> = vec![zero.clone(); ph + 1];
+    let mut alfs = vec![0.0; p.max(1)];
+    let mut qw: Vec<Row> = vec![rows[0].clone()];
+    let mut uh: Vec<f64> = vec![u[0]; ph + 1];
+    let mut ua = u[0];
+    let (mut a, mut b) = (p, p + 1);
+    let mut r: isize = -1;
+    while b < m {
+        let i0 = b;
+        while b < m && u[b] == u[b + 1] {
+            b += 1;
+        }
+        let mul = b - i0 + 1;
+        let ub = u[b];
+        let oldr = r;
+        r = p as isize - mul as isize;
+        // After the first segment, oldr = −1 means the previous knot had full
+        // multiplicity: the segments share no point.
+        let lbz = match oldr {
+            o if o > 0 => ((o + 2) / 2) as usize,
+            o if o < 0 && a != p => 0,
+            _ => 1,
+        };
+        let rbz = if r > 0 {
+            ph - ((r + 1) / 2) as usize
+        } else {
+            ph
+        };
+        if r > 0 {
+            // Insert u[b] r times to get the Bézier segment.
+            let numer = ub - ua;
+            for k in (mul + 1..=p).rev() {
+                alfs[k - mul - 1] = numer / (u[a + k] - ua);
+            }
+            for j in 1..=r as usize {
+                let save = r as usize - j;
+                let s = mul + j;
+                for k in (s..=p).rev() {
+                    let alpha = alfs[k - s];
+                    bpts[k] = crate::nurbs::net::lerp(alpha, &bpts[k], &bpts[k - 1]);
+                }
+                next_bpts[save] = bpts[p].clone();
+            }
+        }
+        // Degree-elevate the Bézier segment.
+        for (i, e) in ebpts.iter_mut().enumerate().skip(lbz) {
+            *e = combine(
+                width,
+                (i.saturating_sub(t)..=p.min(i)).map(|j| (bezalfs[i][j], &bpts[j])),
+            );
+        }
+        if oldr > 1 {
+            // Remove the knot u = ua oldr times.
+            let oldr = oldr as usize;
+            let kind = uh.len();
+            let mut first = kind - 2;
+            let mut last = kind;
+            let den = ub - ua;
+            let bet = (ub - uh[kind - 1]) / den;
+            for tr in 1..oldr {
+                let (mut i, mut j) = (first, last);
+                let mut kj = j - kind + 1;
+                while j - i > tr {
+                    if i < qw.len() {
+                        let alf = (ub - uh[i]) / (ua - uh[i]);
+                        qw[i] = crate::nurbs::net::lerp(alf, &qw[i], &qw[i - 1]);
+                    }
+                    if j >= lbz {
+                        let factor = if j - tr <= kind - ph + oldr {
+                            (ub - uh[j - tr]) / den
+                        } else {
+                            bet
+                        };
+                        ebpts[kj] = crate::nurbs::net::lerp(factor, &ebpts[kj], &ebpts[kj + 1]);
+                    }
+                    i += 1;
+                    j -= 1;
+                    kj = kj.wrapping_sub(1);
+                }
+                first -= 1;
+                last += 1;
+            }
+        }
+        if a != p {
+            // Load the knot ua.
+            let copies = (ph as isize - oldr) as usize;
+            uh.extend(std::iter::repeat_n(ua, copies));
+        }
+        qw.extend(ebpts[lbz..=rbz].iter().cloned());
+        if b < m {
+            // Set up for the next pass.
+            let r0 = r.max(0) as usize;
+            bpts[..r0].clone_from_slice(&next_bpts[..r0]);
+            for j in r0..=p {
+                bpts[j] = rows[b - p + j].clone();
+            }
+            a = b;
+            b += 1;
+            ua = ub;
+        } else {
+            uh.extend(std::iter::repeat_n(ub, ph + 1));
+        }
+    }
+    (KnotVector::from_parts_unchecked(uh, ph), qw)
+}
+
+impl<const D: usize> NurbsCurve<D> {
+    /// The same curve as a curve of degree `p + times` (The NURBS Book, A5.9).
+    ///
+    /// Every knot's multiplicity grows by `times`, so the continuity at each knot
+    /// is kept. An unclamped curve comes back clamped (same domain).
+    ///
+    /// # Examples
+    /// A parabola as a cubic:
+    /// ```
+    /// # use t2spline::NurbsCurve;
+    /// let c = NurbsCurve::try_clamped(2, vec![[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]], vec![1.0; 3])?;
+    /// let d = c.elevate_degree(1);
+    /// assert_eq!(d.degree(), 3);
+    /// assert_eq!(d.control_points()[1], [2.0 / 3.0, 4.0 / 3.0]);
+    /// # Ok::<(), t2spline::Error>(())
+    /// ```
+    #[must_use]
+    pub fn elevate_degree(&self, times: usize) -> Self {
+        let (knots, rows) = elevate(self.knots(), &self.rows(), times);
+        Self::from_rows(knots, &rows)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn assert_same_geometry<const D: usize>(a: &NurbsCurve<D>, b: &NurbsCurve<D>) {
+        assert_eq!(a.domain(), b.domain());
+        for t in a.domain().uniform(301) {
+            let (p, q) = (a.eval(t).unwrap(), b.eval(t).unwrap());
+            for d in 0..D {
+                assert!((p[d] - q[d]).abs() < 1e-12, "t = {t}: {p:?} vs {q:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn elevation_keeps_the_curve_and_raises_multiplicities() {
+        let knots = [
+            vec![0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0],
+            vec![0.0, 0.0, 0.0, 0.0, 0.3, 0.6, 0.6, 1.0, 1.0, 1.0, 1.0],
+            vec![0.0, 0.0, 0.0, 0.0, 0.5, 0.5, 0.5, 1.0, 1.0, 1.0, 1.0],
+            vec![
+                0.0, 0.0, 0.0, 0.0, 0.2, 0.5, 0.5, 0.5, 0.5, 1.0, 1.0, 1.0, 1.0,
+            ],
+        ];
+        for u in knots {
+            let n = u.len() - 4;
+            let points: Vec<[f64; 3]> = (0..n)
+                .map(|i| {
+                    let x = i as f64;
+                    [x, (x * 1.7).sin() * 3.0, x * x * 0.2]
+                })
+                .collect();
+            let weights = (0..n).map(|i| 0.5 + (i % 3) as f64).collect();
+            let c = NurbsCurve::try_new(
+                points,
+                weights,
+                KnotVector::try_new(u.clone(), 3, n).unwrap(),
+            )
+            .unwrap();
+            for times in 1..=3 {
+                let d = c.elevate_degree(times);
+                assert_eq!(d.degree(), 3 + times);
+                for &v in &u {
+                    assert_eq!(
+                        d.knots().multiplicity(v),
+                        c.knots().multiplicity(v) + times,
+                        "{u:?}"
+                    );
+                }
+                assert_same_geometry(&c, &d);
+            }
+        }
+    }
+
+    #[test]
+    fn elevating_degree_one_and_an_unclamped_curve() {
+        let line = NurbsCurve::try_clamped(
+            1,
+            vec![[0.0, 0.0], [1.0, 1.0], [3.0, 0.0]],
+            vec![1.0, 2.0, 1.0],
+        )
+        .unwrap();
+        assert_same_geometry(&line, &line.elevate_degree(2));
+        let u = KnotVector::try_new(vec![0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0], 2, 4).unwrap();
+        let c = NurbsCurve::try_new(
+            vec![[0.0, 0.0], [1.0, 3.0], [3.0, -1.0], [4.0, 2.0]],
+            vec![1.0, 2.0, 0.5, 1.0],
+            u,
+        )
+        .unwrap();
+        let d = c.elevate_degree(1);
+        assert!(d.knots().is_clamped());
+        assert_same_geometry(&c, &d);
+        assert_eq!(c.elevate_degree(0), c);
+    }
+}
