@@ -66,6 +66,22 @@ impl<const D: usize> FuzzyCurve<D> {
         })
     }
 
+    /// A fuzzy curve from parts that an exact algorithm derived from a valid
+    /// curve.
+    pub(crate) fn from_parts_unchecked(
+        points: Vec<Nt2Point<D>>,
+        weights: Vec<f64>,
+        knots: KnotVector,
+    ) -> Self {
+        debug_assert_eq!(points.len(), knots.count());
+        debug_assert_eq!(weights.len(), knots.count());
+        FuzzyCurve {
+            points,
+            weights,
+            knots,
+        }
+    }
+
     /// The fuzzy control points.
     #[must_use]
     pub fn points(&self) -> &[Nt2Point<D>] {

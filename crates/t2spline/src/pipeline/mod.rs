@@ -7,6 +7,7 @@
 //! and the defuzzified curve.
 
 mod fuzzy_curve;
+mod fuzzy_ops;
 mod metrics;
 mod stages;
 

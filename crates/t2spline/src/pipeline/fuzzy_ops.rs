@@ -1,0 +1,252 @@
+//! The curve operations on a fuzzy curve: every layer with the same knots and
+//! weights (SPEC §6), so that the result is again a fuzzy curve.
+//!
+//! Knot insertion, refinement, splitting and degree elevation are linear maps
+//! of the homogeneous control points `(wᵢPᵢ, wᵢ)` whose coefficients depend only
+//! on knots and weights. The seven layers are stacked into one homogeneous row
+//! per control point, `(w·x_upper_left, …, w·x_upper_right, w)`, and the crisp
+//! algorithm runs once on those rows, so every layer sees the same
+//! coefficients and the crisp layer of the result is bit for bit the result of
+//! the crisp algorithm.
+//!
+//! **Why the order of SPEC §1 survives.** A new Cartesian point is
+//! `Qⱼ = Σᵢ cⱼᵢwᵢPᵢ / Σᵢ cⱼᵢwᵢ`: with `cⱼᵢ ≥ 0` a convex combination of old
+//! points with coefficients `cⱼᵢwᵢ/Σ cⱼᵢwᵢ` common to all seven layers, so the
+//! order of the old values carries over to every new value. Insertion,
+//! refinement and splitting compute the rows by steps `α·a + (1 − α)·b` with
+//! `α ∈ [0, 1]`, which are monotone in floating point too: their order holds
+//! bit for bit. Degree elevation (A5.9) has non-negative coefficients as a map
+//! (Prautzsch, 1984), but A5.9 gets there by knot removal, an extrapolation;
+//! its rounding can swap two almost equal values by an ulp. Such swaps are
+//! repaired by clamping outward from the crisp value (`lower.left ← min(lower.left,
+//! crisp)`, then `primary.left ← min(primary.left, lower.left)`, …); the tests
+//! check that nothing larger than rounding is ever repaired.
+
+use crate::error::{Error, Place};
+use crate::fuzzy::{Axis, Height, Layer, Layers, Nt2Number, Nt2Point};
+use crate::nurbs::degree_elevation::elevate;
+use crate::nurbs::knot_insertion::{insert, refine};
+use crate::nurbs::net::Row;
+use crate::nurbs::split::{segment, split};
+use crate::nurbs::{BoundingBox, KnotVector};
+use crate::pipeline::FuzzyCurve;
+
+impl<const D: usize> FuzzyCurve<D> {
+    /// The lower height of each coordinate, shared by every point.
+    ///
+    /// # Errors
+    /// [`Error::MixedHeights`] naming the first number whose height differs
+    /// from the first point's.
+    fn common_heights(&self) -> Result<[Height; D], Error> {
+        let first = self.points()[0].coords().map(|x| x.height());
+        for (i, p) in self.points().iter().enumerate() {
+            for (axis, (x, h)) in Axis::first::<D>()
+                .into_iter()
+                .zip(p.coords().iter().zip(&first))
+            {
+                if x.height() != *h {
+                    return Err(Error::MixedHeights {
+                        place: Place::new(i, axis),
+                        height: x.height().get(),
+                        expected: h.get(),
+                    });
+                }
+            }
+        }
+        Ok(first)
+    }
+
+    /// One homogeneous row per control point: the seven layers, then the weight.
+    fn stacked_rows(&self) -> Vec<Row> {
+        self.points()
+            .iter()
+            .zip(self.weights())
+            .map(|(p, &w)| {
+                Layer::ALL
+                    .iter()
+                    .flat_map(|&l| p.layer(l).map(|x| w * x))
+                    .chain([w])
+                    .collect()
+            })
+            .collect()
+    }
+
+    /// Runs an operation on the stacked rows and rebuilds the fuzzy curve; also
+    /// returns the largest order violation that had to be repaired.
+    pub(crate) fn map_rows(
+        &self,
+        op: impl FnOnce(&KnotVector, &[Row]) -> Result<(KnotVector, Vec<Row>), Error>,
+    ) -> Result<(Self, f64), Error> {
+        let heights = self.common_heights()?;
+        let (knots, rows) = op(self.knots(), &self.stacked_rows())?;
+        Ok(rebuild(knots, &rows, heights))
+    }
+
+    /// The same fuzzy curve with the knot `u` inserted `times` times, in every
+    /// layer (see [`NurbsCurve::insert_knot`](crate::NurbsCurve::insert_knot));
+    /// the layer curves are unchanged, and so are the curves of every stage.
+    ///
+    /// # Errors
+    /// Those of `NurbsCurve::insert_knot`, and [`Error::MixedHeights`] if a
+    /// coordinate mixes lower heights.
+    ///
+    /// # Examples
+    /// ```
+    /// # use t2spline::{FuzzyCurve, Layer, Nt2Number, Nt2Point};
+    /// let n = |c: f64| Nt2Number::try_new(c, [c - 1.0, c + 2.0], [c - 0.5, c + 1.0], [c - 0.2, c + 0.3], 0.5);
+    /// let points = vec![
+    ///     Nt2Point::new([n(0.0)?, n(0.0)?]),
+    ///     Nt2Point::new([n(1.0)?, n(2.0)?]),
+    ///     Nt2Point::new([n(2.0)?, n(0.0)?]),
+    /// ];
+    /// let c = FuzzyCurve::try_new(2, points, vec![1.0, 3.0, 1.0], None)?;
+    /// let d = c.insert_knot(0.3, 1)?;
+    /// assert_eq!(d.points().len(), 4);
+    /// let (a, b) = (c.eval_layers(0.6)?, d.eval_layers(0.6)?);
+    /// assert!((a[Layer::UpperRight][1] - b[Layer::UpperRight][1]).abs() < 1e-14);
+    /// # Ok::<(), t2spline::Error>(())
+    /// ```
+    pub fn insert_knot(&self, u: f64, times: usize) -> Result<Self, Error> {
+        Ok(self.map_rows(|k, r| insert(k, r, u, times))?.0)
+    }
+
+    /// The same fuzzy curve with all knots of `new` inserted, in every layer
+    /// (see [`NurbsCurve::refine_knots`](crate::NurbsCurve::refine_knots)).
+    ///
+    /// # Errors
+    /// Those of `NurbsCurve::refine_knots`, and [`Error::MixedHeights`].
+    pub fn refine_knots(&self, new: &[f64]) -> Result<Self, Error> {
+        Ok(self.map_rows(|k, r| refine(k, r, new))?.0)
+    }
+
+    /// The same fuzzy curve with its degree raised by `times`, in every layer
+    /// (see [`NurbsCurve::elevate_degree`](crate::NurbsCurve::elevate_degree)).
+    ///
+    /// # Errors
+    /// [`Error::MixedHeights`].
+    pub fn elevate_degree(&self, times: usize) -> Result<Self, Error> {
+        Ok(self.map_rows(|k, r| Ok(elevate(k, r, times)))?.0)
+    }
+
+    /// The two fuzzy curves on `[a, t]` and `[t, b]`, every layer split at `t`
+    /// (see [`NurbsCurve::split_at`](crate::NurbsCurve::split_at)).
+    ///
+    /// # Errors
+    /// [`Error::SplitOutside`] unless `a < t < b`; [`Error::MixedHeights`].
+    pub fn split_at(&self, t: f64) -> Result<[Self; 2], Error> {
+        let heights = self.common_heights()?;
+        let pieces = split(self.knots(), &self.stacked_rows(), t)?;
+        Ok(pieces.map(|(knots, rows)| rebuild(knots, &rows, heights).0))
+    }
+
+    /// The fuzzy curve over `[a, b]`, clamped at both ends (see
+    /// [`NurbsCurve::segment`](crate::NurbsCurve::segment)).
+    ///
+    /// # Errors
+    /// As `NurbsCurve::segment`, and [`Error::MixedHeights`].
+    pub fn segment(&self, a: f64, b: f64) -> Result<Self, Error> {
+        let domain = self.domain();
+        domain.check(a)?;
+        domain.check(b)?;
+        if a >= b || b.is_nan() {
+            return Err(Error::SplitOutside {
+                t: b,
+                start: a,
+                end: domain.end,
+            });
+        }
+        Ok(self.map_rows(|k, r| segment(k, r, a, b))?.0)
+    }
+
+    /// The derivatives `C⁽⁰⁾ … C⁽ⁿ⁾` of every layer curve at `t` (see
+    /// [`NurbsCurve::derivatives`](crate::NurbsCurve::derivatives)). Unlike the
+    /// points, derivatives of the layers are not ordered.
+    ///
+    /// # Errors
+    /// [`Error::OutOfDomain`] if `t` is NaN or outside the domain.
+    pub fn derivatives(&self, t: f64, order: usize) -> Result<Layers<Vec<[f64; D]>>, Error> {
+        self.domain().check(t)?;
+        Ok(Layers::from_fn(|l| {
+            self.layer_curve(l).derivatives_unchecked(t, order)
+        }))
+    }
+
+    /// The arc length of every layer curve (see
+    /// [`NurbsCurve::arc_length`](crate::NurbsCurve::arc_length)).
+    #[must_use]
+    pub fn arc_lengths(&self) -> Layers<f64> {
+        Layers::from_fn(|l| self.layer_curve(l).arc_length())
+    }
+
+    /// The bounding box of all seven layer curves: the region the fuzzy curve
+    /// can occupy. Since the layers are ordered at every `t`, its lower corner
+    /// comes from the `upper_left` curve and its upper corner from the
+    /// `upper_right` curve.
+    ///
+    /// # Examples
+    /// ```
+    /// # use t2spline::{FuzzyCurve, Nt2Number, Nt2Point};
+    /// let n = |c: f64| Nt2Number::try_new(c, [c - 1.0, c + 2.0], [c, c], [c, c], 1.0);
+    /// let c = FuzzyCurve::try_new(1, vec![Nt2Point::new([n(0.0)?, n(0.0)?]), Nt2Point::new([n(1.0)?, n(3.0)?])], vec![1.0; 2], None)?;
+    /// let b = c.bounding_box();
+    /// assert_eq!((b.min, b.max), ([-1.0, -1.0], [3.0, 5.0]));
+    /// # Ok::<(), t2spline::Error>(())
+    /// ```
+    #[must_use]
+    pub fn bounding_box(&self) -> BoundingBox<D> {
+        Layer::ALL
+            .iter()
+            .map(|&l| self.layer_curve(l).bounding_box())
+            .reduce(BoundingBox::union)
+            .expect("seven layers")
+    }
+}
+
+/// The fuzzy curve from stacked homogeneous rows, with the order repaired;
+/// also the largest repair made.
+fn rebuild<const D: usize>(
+    knots: KnotVector,
+    rows: &[Row],
+    heights: [Height; D],
+) -> (FuzzyCurve<D>, f64) {
+    let mut worst: f64 = 0.0;
+    let mut weights = Vec::with_capacity(rows.len());
+    let points = rows
+        .iter()
+        .map(|row| {
+            let w = row[7 * D];
+            weights.push(w);
+            Nt2Point::new(std::array::from_fn(|d| {
+                let mut v = Layers::from_fn(|l| row[l.index() * D + d] / w);
+                worst = worst.max(repair_order(&mut v));
+                Nt2Number::from_layers_unchecked(&v, heights[d])
+            }))
+        })
+        .collect();
+    (
+        FuzzyCurve::from_parts_unchecked(points, weights, knots),
+        worst,
+    )
+}
+
+/// Clamps the seven values outward from the crisp one so that they are
+/// ordered; returns the largest change.
+fn repair_order(v: &mut Layers<f64>) -> f64 {
+    let mut worst: f64 = 0.0;
+    let mut fix = |v: &mut Layers<f64>, l: Layer, inner: Layer, left: bool| {
+        let (x, bound) = (v[l], v[inner]);
+        let y = if left { x.min(bound) } else { x.max(bound) };
+        worst = worst.max((y - x).abs());
+        v[l] = y;
+    };
+    fix(v, Layer::LowerLeft, Layer::Crisp, true);
+    fix(v, Layer::PrimaryLeft, Layer::LowerLeft, true);
+    fix(v, Layer::UpperLeft, Layer::PrimaryLeft, true);
+    fix(v, Layer::LowerRight, Layer::Crisp, false);
+    fix(v, Layer::PrimaryRight, Layer::LowerRight, false);
+    fix(v, Layer::UpperRight, Layer::PrimaryRight, false);
+    worst
+}
+
+#[cfg(test)]
+mod tests;
