@@ -119,15 +119,16 @@ impl<const D: usize> NurbsCurve<D> {
     /// [`Error::OutOfDomain`] if `t` is NaN or outside the domain.
     ///
     /// # Examples
-    /// The quarter circle `(cos θ, sin θ)` as a rational quadratic has
-    /// `C'(0) = (0, 2)` and `C''(0) = (−4, 0)`; the speed never vanishes:
+    /// At the start of a clamped curve `C'(a) = p/(U[p+1] − a)·(w₁/w₀)·(P₁ − P₀)`
+    /// (The NURBS Book, Eq. 4.9): for the quarter circle, `(0, √2)`.
     /// ```
     /// # use t2spline::NurbsCurve;
     /// let w = std::f64::consts::FRAC_1_SQRT_2;
     /// let c = NurbsCurve::try_clamped(2, vec![[1.0, 0.0], [1.0, 1.0], [0.0, 1.0]], vec![1.0, w, 1.0])?;
-    /// let d = c.derivatives(0.0, 2)?;
+    /// let d = c.derivatives(0.0, 3)?;
     /// assert_eq!(d[0], [1.0, 0.0]);
-    /// assert!((d[1][0]).abs() < 1e-15 && (d[1][1] - 2.0 * 2f64.sqrt()).abs() < 1e-14);
+    /// assert!(d[1][0].abs() < 1e-15 && (d[1][1] - 2f64.sqrt()).abs() < 1e-15);
+    /// assert!(d[3][0] != 0.0); // the third derivative of a rational quadratic
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn derivatives(&self, t: f64, order: usize) -> Result<Vec<[f64; D]>, Error> {

@@ -1,0 +1,39 @@
+"""Runs the peer suite: t2spline against geomdl 5.4.0 and scipy on random
+curves. Prints one line per topic (cases, comparisons, largest relative error
+per peer), every failure, and a closing line `N passed, M failed` (cases).
+Exits with 1 on any mismatch above the tolerance (1e-9 relative).
+
+    peer/.venv/bin/python peer/run.py [--seed S] [TOPIC ...]
+"""
+
+import argparse
+import importlib
+import random
+import sys
+
+from common import build_ours, TOLERANCE
+
+TOPICS = ["test_evaluation", "test_derivatives", "test_knot_insertion", "test_degree_elevation"]
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("--seed", type=int, default=20261126, help="seed of the random cases")
+    parser.add_argument("topics", nargs="*", default=TOPICS, help="topic modules to run")
+    args = parser.parse_args()
+    binary = build_ours()
+    passed = failed = 0
+    print(f"peer suite: seed {args.seed}, tolerance {TOLERANCE:g} relative")
+    for name in args.topics:
+        topic = importlib.import_module(name).run(random.Random(f"{args.seed}/{name}"), binary)
+        print(topic.summary())
+        for line in topic.failures[:20]:
+            print("  FAIL " + line)
+        failed += len(topic.failed_cases)
+        passed += topic.cases - len(topic.failed_cases)
+    print(f"peer: {passed} passed, {failed} failed")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
