@@ -43,6 +43,11 @@ pub struct RunArgs {
     /// this folder, creating it if needed.
     #[arg(long, value_name = "DIR")]
     pub csv: Option<PathBuf>,
+    /// Also compute the derivatives of orders 1 to K of the crisp and the
+    /// defuzzified curve at the sample parameters, and their arc lengths
+    /// (result keys `curves.derivatives`, `curves.arc_length`); K from 1 to 16.
+    #[arg(long, value_name = "K", allow_negative_numbers = true)]
+    pub derivatives: Option<i64>,
 }
 
 /// Arguments of `t2spline validate`.

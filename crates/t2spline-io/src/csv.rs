@@ -31,7 +31,8 @@ pub const CSV_FILES: [(&str, &str); 4] = [
 /// One named column group: a curve sampled at the result's parameters.
 type Family<'a> = Vec<(String, &'a [Point])>;
 
-/// Renders the four CSV files of a result, as `(file name, contents)`.
+/// Renders the four CSV files of a result, as `(file name, contents)`, and
+/// [`DERIVATIVES_CSV`] when the result has derivatives.
 ///
 /// Every file starts with the column `t`; a curve `name` contributes columns
 /// `name_x`, `name_y` (and `name_z`). Numbers are written in the shortest form
@@ -79,7 +80,7 @@ pub fn render_csv(result: &RunResult) -> Vec<(&'static str, String)> {
         })
         .collect();
     let dims = result.dimension;
-    vec![
+    let mut files = vec![
         (CSV_FILES[0].0, table(&c.params, &stage1, dims, None)),
         (CSV_FILES[1].0, table(&c.params, &stage2, dims, None)),
         (CSV_FILES[2].0, table(&c.params, &stage3, dims, None)),
@@ -87,8 +88,27 @@ pub fn render_csv(result: &RunResult) -> Vec<(&'static str, String)> {
             CSV_FILES[3].0,
             table(&c.params, &stage4, dims, Some(("distance", &distance))),
         ),
-    ]
+    ];
+    if let Some(d) = &c.derivatives {
+        // `crisp_d1_x, …, defuzzified_dK_z`: the derivatives of `--derivatives K`.
+        let family: Family = [("crisp", &d.crisp), ("defuzzified", &d.defuzzified)]
+            .into_iter()
+            .flat_map(|(name, orders)| {
+                orders
+                    .iter()
+                    .enumerate()
+                    .map(move |(k, points)| (format!("{name}_d{}", k + 1), points.as_slice()))
+            })
+            .collect();
+        files.push((DERIVATIVES_CSV, table(&c.params, &family, dims, None)));
+    }
+    files
 }
+
+/// The extra file [`write_csv`] writes for a result with derivatives
+/// (`t2spline run --derivatives K --csv DIR`): columns `crisp_d1_x, …,
+/// defuzzified_dK_y` after `t`.
+pub const DERIVATIVES_CSV: &str = "derivatives.csv";
 
 fn table(params: &[f64], family: &Family, dims: usize, extra: Option<(&str, &[f64])>) -> String {
     let axes = ["x", "y", "z"];

@@ -7,6 +7,8 @@
 //!   the four stages and the crisp-to-defuzzified distance — as serde types.
 //! - [`render_csv`] / [`write_csv`]: the sampled curves as CSV, one file per
 //!   curve family.
+//! - [`derivatives`]: `--derivatives K`, derivatives and arc lengths of the
+//!   crisp and the defuzzified curve.
 //! - [`write_atomic`]: output files that are complete or absent, never half
 //!   written.
 //!
@@ -29,13 +31,14 @@
 
 mod atomic;
 mod csv;
+pub mod derivatives;
 mod error;
 pub mod job;
 mod pretty;
 pub mod result;
 
 pub use crate::atomic::{write_all_atomic, write_atomic};
-pub use crate::csv::{render_csv, write_csv, CSV_FILES};
+pub use crate::csv::{render_csv, write_csv, CSV_FILES, DERIVATIVES_CSV};
 pub use error::{Error, Problem};
 pub use job::{Job, JobCurve, DEFAULT_SAMPLES, MAX_SAMPLES};
 pub use pretty::to_json_pretty;

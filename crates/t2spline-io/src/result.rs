@@ -4,6 +4,7 @@
 use serde::{Deserialize, Serialize};
 use t2spline::{Alpha, FuzzyCurve, Layer, Side, Solution};
 
+use crate::derivatives::{CrispDefuzzified, DerivativeCurves};
 use crate::job::{Job, JobCurve};
 
 /// A point as a list of coordinates.
@@ -80,6 +81,14 @@ pub struct Curves {
     pub alpha_cut: SixLayers<Option<Vec<Point>>>,
     /// Stage 3: the type-reduced left and right curves.
     pub type_reduced: LeftRight<Vec<Point>>,
+    /// With `--derivatives K`: for each order `1 … K`, the derivative vectors
+    /// of the crisp and the defuzzified curve at `params`.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub derivatives: Option<DerivativeCurves>,
+    /// With `--derivatives K`: the arc lengths of the crisp and the
+    /// defuzzified curve.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub arc_length: Option<CrispDefuzzified<f64>>,
 }
 
 /// One value per non-crisp layer, with the layer names of SPEC §8.
@@ -226,6 +235,8 @@ fn compute<const D: usize>(curve: &FuzzyCurve<D>, alpha: Alpha, samples: usize) 
                 right: sample(solution.type_reduced_curve(Side::Right)),
             },
             params,
+            derivatives: None,
+            arc_length: None,
         },
         error: Distance {
             max: d.max,

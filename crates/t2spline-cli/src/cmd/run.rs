@@ -1,9 +1,11 @@
-//! `t2spline run JOB.json [-o OUT.json] [--alpha A] [--samples N] [--csv DIR]`.
+//! `t2spline run JOB.json [-o OUT.json] [--alpha A] [--samples N] [--csv DIR]
+//! [--derivatives K]`.
 
 use std::path::PathBuf;
 
 use anyhow::bail;
 use t2spline::Alpha;
+use t2spline_io::derivatives::check_derivative_order;
 use t2spline_io::job::check_samples;
 use t2spline_io::{render_csv, to_json_pretty, Error, Job, RunResult};
 
@@ -17,6 +19,8 @@ struct Plan {
     samples: usize,
     output: Option<PathBuf>,
     csv: Option<PathBuf>,
+    /// The highest derivative order asked for, if any.
+    derivatives: Option<usize>,
 }
 
 impl Plan {
@@ -46,19 +50,33 @@ impl Plan {
                 job_name(&args.job)
             );
         };
+        let samples = samples.unwrap_or(job.samples);
+        let derivatives = args
+            .derivatives
+            .map(|k| {
+                check_derivative_order(k, samples).map_err(|message| Error::Option {
+                    option: "--derivatives",
+                    message,
+                })
+            })
+            .transpose()?;
         Ok(Plan {
             alpha,
-            samples: samples.unwrap_or(job.samples),
+            samples,
             job,
             output: args.output,
             csv: args.csv,
+            derivatives,
         })
     }
 }
 
 pub fn run(args: RunArgs) -> anyhow::Result<()> {
     let plan = Plan::new(args)?;
-    let result = RunResult::compute(&plan.job, plan.alpha, plan.samples);
+    let mut result = RunResult::compute(&plan.job, plan.alpha, plan.samples);
+    if let Some(order) = plan.derivatives {
+        result.add_derivatives(&plan.job, order);
+    }
     let json = to_json_pretty(&serde_json::to_value(&result)?);
     // Everything is computed before anything is written.
     let mut out = Outputs::default();

@@ -4,7 +4,6 @@ use crate::nurbs::NurbsCurve;
 
 /// An axis-aligned box `[min, max]`, coordinate by coordinate.
 #[derive(Clone, Copy, Debug, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct BoundingBox<const D: usize> {
     /// The smallest value of each coordinate.
     pub min: [f64; D],
@@ -22,9 +21,9 @@ impl<const D: usize> BoundingBox<D> {
     /// The smallest box holding this box and the point `p`.
     #[must_use]
     pub fn with_point(mut self, p: [f64; D]) -> Self {
-        for d in 0..D {
-            self.min[d] = self.min[d].min(p[d]);
-            self.max[d] = self.max[d].max(p[d]);
+        for ((lo, hi), x) in self.min.iter_mut().zip(&mut self.max).zip(p) {
+            *lo = lo.min(x);
+            *hi = hi.max(x);
         }
         self
     }
@@ -73,6 +72,7 @@ impl<const D: usize> NurbsCurve<D> {
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     #[must_use]
+    #[allow(clippy::needless_range_loop)] // `d` indexes the axis of every sample
     pub fn bounding_box(&self) -> BoundingBox<D> {
         let mut b = BoundingBox::of_point(self.eval_unchecked(self.domain().start));
         let steps = SAMPLES_PER_DEGREE * self.order();

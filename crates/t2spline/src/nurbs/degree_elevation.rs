@@ -31,6 +31,8 @@ fn combine<'a>(width: usize, terms: impl Iterator<Item = (f64, &'a Row)>) -> Row
 /// inserted. One change to the book's listing: after a knot of full
 /// multiplicity `p + 1` (where the curve may jump) the next segment shares no
 /// control point with the previous one, so its first point is kept too.
+// The indices follow the book's listing, so that it can be checked line by line.
+#[allow(clippy::needless_range_loop, clippy::explicit_counter_loop)]
 pub(crate) fn elevate(knots: &KnotVector, rows: &[Row], t: usize) -> (KnotVector, Vec<Row>) {
     if t == 0 {
         return (knots.clone(), rows.to_vec());
