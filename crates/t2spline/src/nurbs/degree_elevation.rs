@@ -180,6 +180,12 @@ impl<const D: usize> NurbsCurve<D> {
     /// Every knot's multiplicity grows by `times`, so the continuity at each knot
     /// is kept. An unclamped curve comes back clamped (same domain).
     ///
+    /// **Accuracy.** A5.9 removes the knots it inserted, an extrapolation whose
+    /// rounding grows with the inverse distance between neighbouring knots. With
+    /// knots at least 10⁻⁴ of the domain apart the curve moves by less than
+    /// 10⁻¹² of its size (property tests); knots 4.7·10⁻⁵ apart at degree 5 gave
+    /// 1.8·10⁻¹¹ in the peer suite, still far below its tolerance of 10⁻⁹.
+    ///
     /// # Examples
     /// A parabola as a cubic:
     /// ```

@@ -28,7 +28,7 @@ use crate::nurbs::degree_elevation::elevate;
 use crate::nurbs::knot_insertion::{insert, refine};
 use crate::nurbs::net::Row;
 use crate::nurbs::split::{segment, split};
-use crate::nurbs::{BoundingBox, KnotVector};
+use crate::nurbs::{BoundingBox, ClosestPoint, KnotVector};
 use crate::pipeline::FuzzyCurve;
 
 impl<const D: usize> FuzzyCurve<D> {
@@ -169,6 +169,15 @@ impl<const D: usize> FuzzyCurve<D> {
         Ok(Layers::from_fn(|l| {
             self.layer_curve(l).derivatives_unchecked(t, order)
         }))
+    }
+
+    /// The point of every layer curve closest to `target` (see
+    /// [`NurbsCurve::closest_point`](crate::NurbsCurve::closest_point)). Other
+    /// per-layer quantities (tangent, curvature, parameter at a length) come
+    /// from [`FuzzyCurve::layer_curve`].
+    #[must_use]
+    pub fn closest_points(&self, target: [f64; D]) -> Layers<ClosestPoint<D>> {
+        Layers::from_fn(|l| self.layer_curve(l).closest_point(target))
     }
 
     /// The arc length of every layer curve (see
