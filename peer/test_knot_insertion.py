@@ -4,9 +4,9 @@ coefficients (wP, w)). Knots are random, existing interior knots, and the ends
 of the domain of unclamped curves; insertion goes up to full multiplicity.
 
 geomdl is asked only what it supports: a knot strictly inside the domain, at
-most degree − multiplicity times (its A5.1 indexes past its array for
-multiplicity p + 1, and its span search assumes u < U[n]). scipy covers every
-case. Refinement is compared with FITPACK's insertions one knot at a time."""
+most degree − multiplicity times (its A5.1 refuses multiplicity p + 1 and,
+forced with check_num=False, leaves an empty control point; its span search
+assumes U[span] <= u < U[n]). scipy covers every case. Refinement is compared with FITPACK's insertions one knot at a time."""
 
 import numpy as np
 from geomdl import operations
