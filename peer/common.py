@@ -198,6 +198,17 @@ def compare_curves(ours_curve, peer_curve):
     )
 
 
+def answered(topic, binary, cases):
+    """Our results for `cases`, as (index, case, result) for every case we
+    answered; a case we refused counts as a failure of `topic`."""
+    for i, (case, result) in enumerate(zip(cases, ours(binary, cases))):
+        topic.cases += 1
+        if "error" in result:
+            topic.fail(i, result["error"])
+        else:
+            yield i, case, result
+
+
 class Topic:
     """Counts cases and comparisons of one topic, and keeps the largest error
     seen per peer and every failure."""

@@ -13,7 +13,7 @@ import sys
 
 from common import build_ours, TOLERANCE
 
-TOPICS = ["test_evaluation", "test_derivatives", "test_knot_insertion", "test_degree_elevation"]
+TOPICS = ["test_evaluation", "test_derivatives", "test_knot_insertion", "test_degree_elevation", "test_split"]
 
 
 def main():

@@ -19,7 +19,7 @@ multiplicity must have grown by the number of elevations."""
 
 from geomdl import helpers, operations
 
-from common import compare_curves, coordinate_scale, domain, geomdl_as_dict, geomdl_curve, multiplicity, ours, params, random_curve, relative_error, scipy_points, Topic
+from common import answered, compare_curves, coordinate_scale, domain, geomdl_as_dict, geomdl_curve, multiplicity, params, random_curve, relative_error, scipy_points, Topic
 
 CASES = 250
 
@@ -30,12 +30,7 @@ def run(rng, binary):
     for _ in range(CASES):
         curve = random_curve(rng)
         cases.append(dict(curve, op="elevate", times=rng.randint(1, 3)))
-    results = ours(binary, cases)
-    for i, (case, result) in enumerate(zip(cases, results)):
-        topic.cases += 1
-        if "error" in result:
-            topic.fail(i, result["error"])
-            continue
+    for i, case, result in answered(topic, binary, cases):
         got = result["curve"]
         p, times = case["degree"], case["times"]
         detail = f"degree {p} + {times}, {case['kind']}"

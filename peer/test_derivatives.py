@@ -9,7 +9,7 @@ The error of order k is relative to the largest reference value of that order
 in the case, but at least (largest coordinate)·(domain length)^-k, the natural
 size of a k-th derivative of the curve."""
 
-from common import coordinate_scale, domain, geomdl_curve, ours, params, random_curve, relative_error, scipy_derivatives, Topic
+from common import answered, coordinate_scale, domain, geomdl_curve, params, random_curve, relative_error, scipy_derivatives, Topic
 
 CASES = 250
 
@@ -21,12 +21,7 @@ def run(rng, binary):
         curve = random_curve(rng)
         order = rng.randint(1, curve["degree"] + 2)
         cases.append(dict(curve, op="derivatives", order=order, params=params(rng, curve)))
-    results = ours(binary, cases)
-    for i, (case, result) in enumerate(zip(cases, results)):
-        topic.cases += 1
-        if "error" in result:
-            topic.fail(i, result["error"])
-            continue
+    for i, case, result in answered(topic, binary, cases):
         g = geomdl_curve(case)
         a, b = domain(case)
         peers = {

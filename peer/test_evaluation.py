@@ -2,7 +2,7 @@
 (wP, w), divided by w), at both ends of the domain, every interior knot and
 random parameters."""
 
-from common import coordinate_scale, geomdl_curve, ours, params, random_curve, relative_error, scipy_points, Topic
+from common import answered, coordinate_scale, geomdl_curve, params, random_curve, relative_error, scipy_points, Topic
 
 CASES = 250
 
@@ -13,12 +13,7 @@ def run(rng, binary):
     for _ in range(CASES):
         curve = random_curve(rng)
         cases.append(dict(curve, op="derivatives", order=0, params=params(rng, curve, 12)))
-    results = ours(binary, cases)
-    for i, (case, result) in enumerate(zip(cases, results)):
-        topic.cases += 1
-        if "error" in result:
-            topic.fail(i, result["error"])
-            continue
+    for i, case, result in answered(topic, binary, cases):
         got = [d[0] for d in result["derivatives"]]
         scale = coordinate_scale(case)
         g = geomdl_curve(case)

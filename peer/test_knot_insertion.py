@@ -12,7 +12,7 @@ import numpy as np
 from geomdl import operations
 from scipy.interpolate import insert as fitpack_insert
 
-from common import compare_curves, domain, geomdl_as_dict, geomdl_curve, homogeneous, multiplicity, ours, random_curve, Topic
+from common import answered, compare_curves, domain, geomdl_as_dict, geomdl_curve, homogeneous, multiplicity, random_curve, Topic
 
 CASES = 250
 
@@ -60,12 +60,7 @@ def run(rng, binary):
             new = [knot_choice(rng, curve) for _ in range(rng.randint(1, 6))]
             new = [u for j, u in enumerate(new) if multiplicity(curve, u) + new[: j + 1].count(u) <= p + 1]
             cases.append(dict(curve, op="refine", new_knots=new))
-    results = ours(binary, cases)
-    for i, (case, result) in enumerate(zip(cases, results)):
-        topic.cases += 1
-        if "error" in result:
-            topic.fail(i, result["error"])
-            continue
+    for i, case, result in answered(topic, binary, cases):
         got = result["curve"]
         if case["op"] == "insert":
             u, times = case["knot"], case["times"]

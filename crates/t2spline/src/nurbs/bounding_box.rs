@@ -127,23 +127,11 @@ fn bisect(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64, fa: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::nurbs::KnotVector;
+    use crate::nurbs::fixtures::{jump, six_point_quadratic};
 
     #[test]
     fn box_contains_dense_samples_and_is_reached() {
-        let c = NurbsCurve::try_new(
-            vec![
-                [0.0, 0.0],
-                [1.0, 3.0],
-                [3.0, -1.0],
-                [4.0, 2.0],
-                [6.0, 0.0],
-                [7.0, 1.0],
-            ],
-            vec![1.0, 2.5, 0.4, 1.0, 3.0, 0.7],
-            KnotVector::try_new(vec![0.0, 0.0, 0.0, 0.3, 0.3, 0.8, 1.0, 1.0, 1.0], 2, 6).unwrap(),
-        )
-        .unwrap();
+        let c = six_point_quadratic();
         let b = c.bounding_box();
         let mut dense = BoundingBox::of_point(c.eval(0.0).unwrap());
         for t in c.domain().uniform(100_001) {
@@ -161,13 +149,7 @@ mod tests {
 
     #[test]
     fn both_sides_of_a_jump_count() {
-        let u = KnotVector::try_new(vec![0.0, 0.0, 0.5, 0.5, 1.0, 1.0], 1, 4).unwrap();
-        let c = NurbsCurve::try_new(
-            vec![[0.0, 0.0], [1.0, 0.0], [5.0, 5.0], [6.0, 5.0]],
-            vec![1.0; 4],
-            u,
-        )
-        .unwrap();
+        let c = jump();
         assert_eq!(
             c.bounding_box(),
             BoundingBox {

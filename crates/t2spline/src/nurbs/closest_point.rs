@@ -178,7 +178,7 @@ impl<const D: usize> NurbsCurve<D> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::nurbs::KnotVector;
+    use crate::nurbs::fixtures::{jump, six_point_quadratic};
 
     fn brute_force<const D: usize>(c: &NurbsCurve<D>, p: [f64; D]) -> f64 {
         c.domain()
@@ -190,19 +190,7 @@ mod tests {
 
     #[test]
     fn closest_point_beats_dense_sampling() {
-        let c = NurbsCurve::try_new(
-            vec![
-                [0.0, 0.0],
-                [1.0, 3.0],
-                [3.0, -1.0],
-                [4.0, 2.0],
-                [6.0, 0.0],
-                [7.0, 1.0],
-            ],
-            vec![1.0, 2.5, 0.4, 1.0, 3.0, 0.7],
-            KnotVector::try_new(vec![0.0, 0.0, 0.0, 0.3, 0.3, 0.8, 1.0, 1.0, 1.0], 2, 6).unwrap(),
-        )
-        .unwrap();
+        let c = six_point_quadratic();
         for p in [
             [2.0, 1.0],
             [-3.0, -3.0],
@@ -239,13 +227,7 @@ mod tests {
 
     #[test]
     fn both_sides_of_a_jump_are_candidates() {
-        let u = KnotVector::try_new(vec![0.0, 0.0, 0.5, 0.5, 1.0, 1.0], 1, 4).unwrap();
-        let c = NurbsCurve::try_new(
-            vec![[0.0, 0.0], [1.0, 0.0], [5.0, 5.0], [6.0, 5.0]],
-            vec![1.0; 4],
-            u,
-        )
-        .unwrap();
+        let c = jump();
         // (1, 0) is the left limit at t = 0.5; C(0.5) itself is (5, 5).
         let near = c.closest_point([1.2, 0.1]);
         assert!(

@@ -206,15 +206,11 @@ impl<const D: usize> NurbsCurve<D> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::nurbs::fixtures::{self, unclamped_quadratic};
 
     fn assert_same_geometry<const D: usize>(a: &NurbsCurve<D>, b: &NurbsCurve<D>) {
         assert_eq!(a.domain(), b.domain());
-        for t in a.domain().uniform(301) {
-            let (p, q) = (a.eval(t).unwrap(), b.eval(t).unwrap());
-            for d in 0..D {
-                assert!((p[d] - q[d]).abs() < 1e-12, "t = {t}: {p:?} vs {q:?}");
-            }
-        }
+        fixtures::assert_same_geometry(a, b, 301, 1e-12);
     }
 
     #[test]
@@ -266,13 +262,7 @@ mod tests {
         )
         .unwrap();
         assert_same_geometry(&line, &line.elevate_degree(2));
-        let u = KnotVector::try_new(vec![0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0], 2, 4).unwrap();
-        let c = NurbsCurve::try_new(
-            vec![[0.0, 0.0], [1.0, 3.0], [3.0, -1.0], [4.0, 2.0]],
-            vec![1.0, 2.0, 0.5, 1.0],
-            u,
-        )
-        .unwrap();
+        let c = unclamped_quadratic();
         let d = c.elevate_degree(1);
         assert!(d.knots().is_clamped());
         assert_same_geometry(&c, &d);

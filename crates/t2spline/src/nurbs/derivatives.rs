@@ -272,6 +272,7 @@ pub(crate) fn norm<const D: usize>(v: &[f64; D]) -> f64 {
 mod tests {
     use super::*;
     use crate::nurbs::basis::basis_functions;
+    use crate::nurbs::fixtures::five_point_cubic;
     use crate::nurbs::KnotVector;
 
     #[test]
@@ -292,12 +293,7 @@ mod tests {
 
     #[test]
     fn derivatives_match_central_differences() {
-        let c = NurbsCurve::try_new(
-            vec![[0.0, 0.0], [1.0, 3.0], [3.0, -1.0], [4.0, 2.0], [6.0, 0.0]],
-            vec![1.0, 2.5, 0.4, 1.0, 3.0],
-            KnotVector::try_new(vec![0.0, 0.0, 0.0, 0.0, 0.4, 1.0, 1.0, 1.0, 1.0], 3, 5).unwrap(),
-        )
-        .unwrap();
+        let c = five_point_cubic();
         let h = 1e-5;
         for t in [0.1, 0.25, 0.6, 0.9] {
             let d = c.derivatives(t, 2).unwrap();

@@ -193,36 +193,11 @@ impl<const D: usize> NurbsCurve<D> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn curve() -> NurbsCurve<2> {
-        NurbsCurve::try_new(
-            vec![
-                [0.0, 0.0],
-                [1.0, 3.0],
-                [3.0, -1.0],
-                [4.0, 2.0],
-                [6.0, 0.0],
-                [7.0, 1.0],
-            ],
-            vec![1.0, 2.5, 0.4, 1.0, 3.0, 0.7],
-            KnotVector::try_new(vec![0.0, 0.0, 0.0, 0.3, 0.3, 0.8, 1.0, 1.0, 1.0], 2, 6).unwrap(),
-        )
-        .unwrap()
-    }
-
-    fn assert_same_geometry(a: &NurbsCurve<2>, b: &NurbsCurve<2>) {
-        for t in a.domain().uniform(257) {
-            let (p, q) = (a.eval(t).unwrap(), b.eval(t).unwrap());
-            assert!(
-                (p[0] - q[0]).abs() < 1e-13 && (p[1] - q[1]).abs() < 1e-13,
-                "t = {t}: {p:?} vs {q:?}"
-            );
-        }
-    }
+    use crate::nurbs::fixtures::{assert_same_geometry, six_point_quadratic, unclamped_quadratic};
 
     #[test]
     fn insertion_keeps_the_curve_at_new_and_existing_knots_and_the_ends() {
-        let c = curve();
+        let c = six_point_quadratic();
         for (u, times) in [
             (0.5, 1),
             (0.5, 3),
@@ -235,29 +210,23 @@ mod tests {
             let d = c.insert_knot(u, times).unwrap();
             assert_eq!(d.control_points().len(), 6 + times);
             assert_eq!(d.knots().multiplicity(u), c.knots().multiplicity(u) + times);
-            assert_same_geometry(&c, &d);
+            assert_same_geometry(&c, &d, 257, 1e-13);
         }
     }
 
     #[test]
     fn insertion_at_the_end_of_an_unclamped_curve() {
-        let u = KnotVector::try_new(vec![0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0], 2, 4).unwrap();
-        let c = NurbsCurve::try_new(
-            vec![[0.0, 0.0], [1.0, 3.0], [3.0, -1.0], [4.0, 2.0]],
-            vec![1.0, 2.0, 0.5, 1.0],
-            u,
-        )
-        .unwrap();
+        let c = unclamped_quadratic();
         for u in [2.0, 4.0, 3.0] {
             let d = c.insert_knot(u, 2).unwrap();
             assert_eq!(d.domain(), c.domain());
-            assert_same_geometry(&c, &d);
+            assert_same_geometry(&c, &d, 257, 1e-13);
         }
     }
 
     #[test]
     fn too_many_insertions_are_refused() {
-        let c = curve();
+        let c = six_point_quadratic();
         assert!(matches!(
             c.insert_knot(0.3, 2),
             Err(Error::KnotInsertion {
@@ -279,7 +248,7 @@ mod tests {
 
     #[test]
     fn refinement_equals_repeated_insertion() {
-        let c = curve();
+        let c = six_point_quadratic();
         let x = [0.1, 0.3, 0.5, 0.5, 0.8, 0.95, 0.02];
         let refined = c.refine_knots(&x).unwrap();
         let mut one_by_one = c.clone();
@@ -294,6 +263,6 @@ mod tests {
         {
             assert!((p[0] - q[0]).abs() < 1e-13 && (p[1] - q[1]).abs() < 1e-13);
         }
-        assert_same_geometry(&c, &refined);
+        assert_same_geometry(&c, &refined, 257, 1e-13);
     }
 }

@@ -26,6 +26,8 @@ mod closest_point;
 pub(crate) mod curve;
 pub(crate) mod degree_elevation;
 pub mod derivatives;
+#[cfg(test)]
+pub(crate) mod fixtures;
 pub(crate) mod knot_insertion;
 mod knots;
 pub(crate) mod net;

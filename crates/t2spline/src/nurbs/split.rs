@@ -146,15 +146,11 @@ impl<const D: usize> NurbsCurve<D> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::nurbs::fixtures::{assert_same_geometry, five_point_cubic, jump};
 
     #[test]
     fn split_pieces_reproduce_the_curve() {
-        let c = NurbsCurve::try_new(
-            vec![[0.0, 0.0], [1.0, 3.0], [3.0, -1.0], [4.0, 2.0], [6.0, 0.0]],
-            vec![1.0, 2.5, 0.4, 1.0, 3.0],
-            KnotVector::try_new(vec![0.0, 0.0, 0.0, 0.0, 0.4, 1.0, 1.0, 1.0, 1.0], 3, 5).unwrap(),
-        )
-        .unwrap();
+        let c = five_point_cubic();
         for t in [0.1, 0.4, 0.77] {
             let [l, r] = c.split_at(t).unwrap();
             assert_eq!((l.domain().start, l.domain().end), (0.0, t));
@@ -177,14 +173,7 @@ mod tests {
 
     #[test]
     fn split_at_a_jump_gives_both_limits() {
-        let u = KnotVector::try_new(vec![0.0, 0.0, 0.5, 0.5, 1.0, 1.0], 1, 4).unwrap();
-        let c = NurbsCurve::try_new(
-            vec![[0.0, 0.0], [1.0, 0.0], [5.0, 5.0], [6.0, 5.0]],
-            vec![1.0; 4],
-            u,
-        )
-        .unwrap();
-        let [l, r] = c.split_at(0.5).unwrap();
+        let [l, r] = jump().split_at(0.5).unwrap();
         assert_eq!(l.control_points(), &[[0.0, 0.0], [1.0, 0.0]]);
         assert_eq!(r.control_points(), &[[5.0, 5.0], [6.0, 5.0]]);
     }
@@ -201,12 +190,6 @@ mod tests {
         let d = c.clamped();
         assert!(d.knots().is_clamped());
         assert_eq!(d.domain(), c.domain());
-        for t in c.domain().uniform(101) {
-            let (p, q) = (c.eval(t).unwrap(), d.eval(t).unwrap());
-            assert!(
-                (p[0] - q[0]).abs() < 1e-13 && (p[1] - q[1]).abs() < 1e-13,
-                "{t}"
-            );
-        }
+        assert_same_geometry(&c, &d, 101, 1e-13);
     }
 }
