@@ -111,7 +111,10 @@ fn run<const D: usize>(case: &Value) -> Outcome {
             json!({ "curve": curve_json(&c.refine_knots(&new).map_err(error)?) })
         }
         "elevate" => {
-            json!({ "curve": curve_json(&c.elevate_degree(usize_field(case, "times")?)) })
+            let d = c
+                .elevate_degree(usize_field(case, "times")?)
+                .map_err(error)?;
+            json!({ "curve": curve_json(&d) })
         }
         "split" => {
             let [l, r] = c.split_at(f64_field(case, "t")?).map_err(error)?;

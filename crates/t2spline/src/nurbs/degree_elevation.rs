@@ -1,8 +1,29 @@
 //! Degree elevation (The NURBS Book, §5.5, A5.9).
 
+use crate::error::{Error, Place};
 use crate::nurbs::net::Row;
 use crate::nurbs::split::segment;
 use crate::nurbs::{KnotVector, NurbsCurve};
+
+/// The highest degree that elevation may reach. The Bézier elevation
+/// coefficients `C(p, j)·C(t, i − j)/C(p + t, i)` span ever more orders of
+/// magnitude as the degree grows; no practical curve needs more, and the bound
+/// keeps a nonsense request from asking for unbounded memory.
+pub const MAX_ELEVATED_DEGREE: usize = 64;
+
+/// Checks that degree `p` raised `t` times stays within [`MAX_ELEVATED_DEGREE`].
+pub(crate) fn check_elevation(p: usize, t: usize) -> Result<(), Error> {
+    let degree = p.saturating_add(t);
+    if degree > MAX_ELEVATED_DEGREE {
+        return Err(Error::OutOfRange {
+            place: Place::NONE,
+            what: "degree after elevation",
+            value: degree as f64,
+            range: "[1, 64]",
+        });
+    }
+    Ok(())
+}
 
 /// Binomial coefficient `C(n, k)` as a float.
 fn binomial(n: usize, k: usize) -> f64 {
@@ -186,20 +207,24 @@ impl<const D: usize> NurbsCurve<D> {
     /// 10⁻¹² of its size (property tests); knots 4.7·10⁻⁵ apart at degree 5 gave
     /// 1.8·10⁻¹¹ in the peer suite, still far below its tolerance of 10⁻⁹.
     ///
+    /// # Errors
+    /// [`Error::OutOfRange`] if the new degree would exceed
+    /// [`MAX_ELEVATED_DEGREE`].
+    ///
     /// # Examples
     /// A parabola as a cubic:
     /// ```
     /// # use t2spline::NurbsCurve;
     /// let c = NurbsCurve::try_clamped(2, vec![[0.0, 0.0], [1.0, 2.0], [2.0, 0.0]], vec![1.0; 3])?;
-    /// let d = c.elevate_degree(1);
+    /// let d = c.elevate_degree(1)?;
     /// assert_eq!(d.degree(), 3);
     /// assert_eq!(d.control_points()[1], [2.0 / 3.0, 4.0 / 3.0]);
     /// # Ok::<(), t2spline::Error>(())
     /// ```
-    #[must_use]
-    pub fn elevate_degree(&self, times: usize) -> Self {
+    pub fn elevate_degree(&self, times: usize) -> Result<Self, Error> {
+        check_elevation(self.degree(), times)?;
         let (knots, rows) = elevate(self.knots(), &self.rows(), times);
-        Self::from_rows(knots, &rows)
+        Ok(Self::from_rows(knots, &rows))
     }
 }
 
@@ -239,7 +264,7 @@ mod tests {
             )
             .unwrap();
             for times in 1..=3 {
-                let d = c.elevate_degree(times);
+                let d = c.elevate_degree(times).unwrap();
                 assert_eq!(d.degree(), 3 + times);
                 for &v in &u {
                     assert_eq!(
@@ -261,11 +286,15 @@ mod tests {
             vec![1.0, 2.0, 1.0],
         )
         .unwrap();
-        assert_same_geometry(&line, &line.elevate_degree(2));
+        assert_same_geometry(&line, &line.elevate_degree(2).unwrap());
         let c = unclamped_quadratic();
-        let d = c.elevate_degree(1);
+        let d = c.elevate_degree(1).unwrap();
         assert!(d.knots().is_clamped());
         assert_same_geometry(&c, &d);
-        assert_eq!(c.elevate_degree(0), c);
+        assert_eq!(c.elevate_degree(0).unwrap(), c);
+        assert!(matches!(
+            c.elevate_degree(usize::MAX),
+            Err(Error::OutOfRange { .. })
+        ));
     }
 }

@@ -1,8 +1,27 @@
 //! Derivatives of any order of a rational curve, its tangent and curvature
 //! (The NURBS Book, A2.3, A3.2 and A4.2).
 
-use crate::error::Error;
+use crate::error::{Error, Place};
 use crate::nurbs::NurbsCurve;
+
+/// The highest derivative order computed. Rational derivatives grow roughly
+/// like `k!/hᵏ` (h a knot span), so orders far above the degree overflow
+/// long before this; the bound keeps a nonsense order from asking for
+/// unbounded time and memory.
+pub const MAX_DERIVATIVE_ORDER: usize = 64;
+
+/// Checks a derivative order against [`MAX_DERIVATIVE_ORDER`].
+pub(crate) fn check_order(order: usize) -> Result<(), Error> {
+    if order > MAX_DERIVATIVE_ORDER {
+        return Err(Error::OutOfRange {
+            place: Place::NONE,
+            what: "derivative order",
+            value: order as f64,
+            range: "[0, 64]",
+        });
+    }
+    Ok(())
+}
 
 /// The basis functions `N_{span−p,p} … N_{span,p}` and their derivatives up to
 /// order `n` at `t` (The NURBS Book, A2.3): `ders[k][j]` is the `k`-th
@@ -116,7 +135,8 @@ impl<const D: usize> NurbsCurve<D> {
     /// derivatives where the curve is not smooth).
     ///
     /// # Errors
-    /// [`Error::OutOfDomain`] if `t` is NaN or outside the domain.
+    /// [`Error::OutOfDomain`] if `t` is NaN or outside the domain;
+    /// [`Error::OutOfRange`] if `order` exceeds [`MAX_DERIVATIVE_ORDER`].
     ///
     /// # Examples
     /// At the start of a clamped curve `C'(a) = p/(U[p+1] − a)·(w₁/w₀)·(P₁ − P₀)`
@@ -133,6 +153,7 @@ impl<const D: usize> NurbsCurve<D> {
     /// ```
     pub fn derivatives(&self, t: f64, order: usize) -> Result<Vec<[f64; D]>, Error> {
         self.domain().check(t)?;
+        check_order(order)?;
         Ok(self.derivatives_unchecked(t, order))
     }
 
@@ -352,6 +373,14 @@ mod tests {
         .unwrap();
         let d = c.derivatives(0.3, 5).unwrap();
         assert!(d[3..].iter().flatten().all(|x| x.abs() < 1e-12), "{d:?}");
+        assert_eq!(c.derivatives(0.3, MAX_DERIVATIVE_ORDER).unwrap().len(), 65);
+        assert!(matches!(
+            c.derivatives(0.3, usize::MAX),
+            Err(Error::OutOfRange {
+                what: "derivative order",
+                ..
+            })
+        ));
     }
 
     #[test]

@@ -15,7 +15,7 @@ fn check_insertion(knots: &KnotVector, u: f64, times: usize) -> Result<(), Error
     knots.domain().check(u)?;
     let multiplicity = knots.multiplicity(u);
     let order = knots.degree() + 1;
-    if multiplicity + times > order {
+    if multiplicity.saturating_add(times) > order {
         return Err(Error::KnotInsertion {
             knot: u,
             times,
@@ -235,6 +235,10 @@ mod tests {
                 order: 3,
                 ..
             })
+        ));
+        assert!(matches!(
+            c.insert_knot(0.5, usize::MAX),
+            Err(Error::KnotInsertion { .. })
         ));
         assert!(matches!(
             c.insert_knot(1.5, 1),

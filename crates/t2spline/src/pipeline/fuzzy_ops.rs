@@ -24,7 +24,7 @@
 
 use crate::error::{Error, Place};
 use crate::fuzzy::{Axis, Height, Layer, Layers, Nt2Number, Nt2Point};
-use crate::nurbs::degree_elevation::elevate;
+use crate::nurbs::degree_elevation::{check_elevation, elevate};
 use crate::nurbs::knot_insertion::{insert, refine};
 use crate::nurbs::net::Row;
 use crate::nurbs::split::{segment, split};
@@ -123,8 +123,10 @@ impl<const D: usize> FuzzyCurve<D> {
     /// (see [`NurbsCurve::elevate_degree`](crate::NurbsCurve::elevate_degree)).
     ///
     /// # Errors
+    /// [`Error::OutOfRange`] if the new degree would exceed 64;
     /// [`Error::MixedHeights`].
     pub fn elevate_degree(&self, times: usize) -> Result<Self, Error> {
+        check_elevation(self.degree(), times)?;
         Ok(self.map_rows(|k, r| Ok(elevate(k, r, times)))?.0)
     }
 
@@ -163,9 +165,12 @@ impl<const D: usize> FuzzyCurve<D> {
     /// points, derivatives of the layers are not ordered.
     ///
     /// # Errors
-    /// [`Error::OutOfDomain`] if `t` is NaN or outside the domain.
+    /// [`Error::OutOfDomain`] if `t` is NaN or outside the domain;
+    /// [`Error::OutOfRange`] if `order` exceeds
+    /// [`MAX_DERIVATIVE_ORDER`](crate::nurbs::derivatives::MAX_DERIVATIVE_ORDER).
     pub fn derivatives(&self, t: f64, order: usize) -> Result<Layers<Vec<[f64; D]>>, Error> {
         self.domain().check(t)?;
+        crate::nurbs::derivatives::check_order(order)?;
         Ok(Layers::from_fn(|l| {
             self.layer_curve(l).derivatives_unchecked(t, order)
         }))

@@ -157,7 +157,7 @@ proptest! {
         let (d, repaired) = c.map_rows(|k, r| Ok(elevate(k, r, times))).unwrap();
         prop_assert!(repaired <= 1e-13 * scale(&c), "repaired {}", repaired);
         prop_assert_eq!(d.degree(), c.degree() + times);
-        assert_crisp_layer(&d, &c.crisp_curve().elevate_degree(times))?;
+        assert_crisp_layer(&d, &c.crisp_curve().elevate_degree(times).unwrap())?;
         assert_same_geometry(&c, &d, Alpha::try_new(a).unwrap())?;
     }
 
