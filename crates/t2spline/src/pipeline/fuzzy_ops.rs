@@ -135,6 +135,24 @@ impl<const D: usize> FuzzyCurve<D> {
     ///
     /// # Errors
     /// [`Error::SplitOutside`] unless `a < t < b`; [`Error::MixedHeights`].
+    ///
+    /// # Examples
+    /// ```
+    /// # use t2spline::{FuzzyCurve, Layer, Nt2Number, Nt2Point};
+    /// let n = |c: f64| Nt2Number::try_new(c, [c - 1.0, c + 2.0], [c - 0.5, c + 1.0], [c - 0.2, c + 0.3], 0.5);
+    /// let points = vec![
+    ///     Nt2Point::new([n(0.0)?, n(0.0)?]),
+    ///     Nt2Point::new([n(1.0)?, n(2.0)?]),
+    ///     Nt2Point::new([n(2.0)?, n(0.0)?]),
+    /// ];
+    /// let c = FuzzyCurve::try_new(2, points, vec![1.0, 3.0, 1.0], None)?;
+    /// let [left, right] = c.split_at(0.4)?;
+    /// // The pieces meet in one fuzzy point: every layer is continuous.
+    /// assert_eq!(left.points().last(), right.points().first());
+    /// let (a, b) = (c.eval_layers(0.2)?, left.eval_layers(0.2)?);
+    /// assert!((a[Layer::UpperLeft][0] - b[Layer::UpperLeft][0]).abs() < 1e-15);
+    /// # Ok::<(), t2spline::Error>(())
+    /// ```
     pub fn split_at(&self, t: f64) -> Result<[Self; 2], Error> {
         let heights = self.common_heights()?;
         let pieces = split(self.knots(), &self.stacked_rows(), t)?;
@@ -168,6 +186,22 @@ impl<const D: usize> FuzzyCurve<D> {
     /// [`Error::OutOfDomain`] if `t` is NaN or outside the domain;
     /// [`Error::OutOfRange`] if `order` exceeds
     /// [`MAX_DERIVATIVE_ORDER`](crate::nurbs::derivatives::MAX_DERIVATIVE_ORDER).
+    ///
+    /// # Examples
+    /// A straight fuzzy segment: every layer has the constant velocity of its
+    /// own end points.
+    /// ```
+    /// # use t2spline::{FuzzyCurve, Layer, Nt2Number, Nt2Point};
+    /// let n = |c: f64, s: f64| Nt2Number::try_new(c, [c - s, c + s], [c, c], [c, c], 1.0);
+    /// let c = FuzzyCurve::try_new(1, vec![
+    ///     Nt2Point::new([n(0.0, 0.0)?, n(0.0, 0.0)?]),
+    ///     Nt2Point::new([n(4.0, 1.0)?, n(2.0, 0.5)?]),
+    /// ], vec![1.0, 1.0], None)?;
+    /// let d = c.derivatives(0.5, 1)?;
+    /// assert_eq!(d[Layer::Crisp][1], [4.0, 2.0]);
+    /// assert_eq!(d[Layer::UpperLeft][1], [3.0, 1.5]);
+    /// # Ok::<(), t2spline::Error>(())
+    /// ```
     pub fn derivatives(&self, t: f64, order: usize) -> Result<Layers<Vec<[f64; D]>>, Error> {
         self.domain().check(t)?;
         crate::nurbs::derivatives::check_order(order)?;
