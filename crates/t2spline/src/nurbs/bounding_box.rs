@@ -1,6 +1,6 @@
 //! The axis-aligned bounding box of a curve.
 
-use crate::nurbs::NurbsCurve;
+use crate::nurbs::{Domain, NurbsCurve};
 
 /// An axis-aligned box `[min, max]`, coordinate by coordinate.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -79,15 +79,7 @@ impl<const D: usize> NurbsCurve<D> {
         for (span, [lo, hi]) in self.knots().spans() {
             let at = |t: f64| self.derivatives_in_span(span, t, 1);
             b = b.with_point(at(lo)[0]).with_point(at(hi)[0]);
-            let ts: Vec<f64> = (0..=steps)
-                .map(|j| {
-                    if j == steps {
-                        hi
-                    } else {
-                        lo + (hi - lo) * j as f64 / steps as f64
-                    }
-                })
-                .collect();
+            let ts = Domain { start: lo, end: hi }.uniform(steps + 1);
             let ders: Vec<[f64; D]> = ts.iter().map(|&t| at(t)[1]).collect();
             for d in 0..D {
                 for j in 0..steps {

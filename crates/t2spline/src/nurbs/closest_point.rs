@@ -1,7 +1,7 @@
 //! The point of a curve closest to a given point (The NURBS Book, §6.1).
 
 use crate::nurbs::derivatives::norm;
-use crate::nurbs::NurbsCurve;
+use crate::nurbs::{Domain, NurbsCurve};
 
 /// The result of [`NurbsCurve::closest_point`].
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -71,15 +71,7 @@ impl<const D: usize> NurbsCurve<D> {
         let mut best = at(d.start);
         let steps = SAMPLES_PER_DEGREE * self.order();
         for (span, [a, b]) in self.knots().spans() {
-            let ts: Vec<f64> = (0..=steps)
-                .map(|j| {
-                    if j == steps {
-                        b
-                    } else {
-                        a + (b - a) * j as f64 / steps as f64
-                    }
-                })
-                .collect();
+            let ts = Domain { start: a, end: b }.uniform(steps + 1);
             // The end of a span is evaluated with its own piece (left limit).
             let dist: Vec<f64> = ts
                 .iter()

@@ -1,6 +1,7 @@
 //! Degree elevation (The NURBS Book, §5.5, A5.9).
 
 use crate::error::{Error, Place};
+use crate::nurbs::derivatives::binomial;
 use crate::nurbs::net::Row;
 use crate::nurbs::split::segment;
 use crate::nurbs::{KnotVector, NurbsCurve};
@@ -23,11 +24,6 @@ pub(crate) fn check_elevation(p: usize, t: usize) -> Result<(), Error> {
         });
     }
     Ok(())
-}
-
-/// Binomial coefficient `C(n, k)` as a float.
-fn binomial(n: usize, k: usize) -> f64 {
-    (0..k).fold(1.0, |acc, i| acc * (n - i) as f64 / (i + 1) as f64)
 }
 
 /// `Σ cⱼ·rowⱼ` over the pairs given.

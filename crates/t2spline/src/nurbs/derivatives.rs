@@ -111,8 +111,8 @@ pub fn basis_derivatives(
     ders
 }
 
-/// Binomial coefficient `C(n, k)` as a float (exact for the sizes used here).
-fn binomial(n: usize, k: usize) -> f64 {
+/// Binomial coefficient `C(n, k)` as a float (exact while below 2⁵³).
+pub(crate) fn binomial(n: usize, k: usize) -> f64 {
     (0..k).fold(1.0, |acc, i| acc * (n - i) as f64 / (i + 1) as f64)
 }
 
