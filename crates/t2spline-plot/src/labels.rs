@@ -108,7 +108,7 @@ fn around(anchor: Px, text: &str) -> Vec<(Rect, Option<[Px; 2]>)> {
     let mut out = Vec::new();
     for r in [5.0, 12.0, 24.0, 40.0, 60.0] {
         for (dx, dy) in dirs {
-            let norm = (dx * dx + dy * dy as f64).sqrt();
+            let norm = (dx * dx + dy * dy).sqrt();
             let (ux, uy) = (dx / norm, dy / norm);
             let cx = anchor[0] + ux * r + dx * 0.5 * b.w;
             let cy = anchor[1] + uy * r + dy * 0.5 * b.h;
