@@ -110,7 +110,7 @@ mod tests {
             m.face
                 .names()
                 .into_iter()
-                .find(|n| n.name_id == ttf_parser::name_id::FAMILY)
+                .find(|n| n.name_id == ttf_parser::name_id::FAMILY && n.is_unicode())
                 .and_then(|n| n.to_string()),
             Some(FONT_FAMILY.to_owned())
         );

@@ -111,7 +111,7 @@ mod tests {
         assert_eq!(t, [0.0, 0.25, 0.5, 0.75, 1.0]);
         let (t, s) = nice_ticks(3.2, 3.9, 5);
         assert_eq!(s, 0.2);
-        assert_eq!(t.len(), 3);
+        assert_eq!(t.len(), 4, "3.2, 3.4, 3.6, 3.8: {t:?}");
         assert_eq!(decimals_for(s), 1);
         assert_eq!(decimals_for(0.25), 2);
         assert_eq!(decimals_for(5.0), 0);

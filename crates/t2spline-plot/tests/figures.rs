@@ -110,9 +110,22 @@ fn every_figure_has_title_axes_labels_and_a_legend_or_colour_bar() {
                 );
             }
             assert!(!fig.legend.is_empty(), "{case}/{}: legend", fig.name);
-            let panels = if case.contains("3d") && fig.name != "number" { 3 } else { 1 };
-            let panels = if fig.name == "stage4-defuzzified" && panels == 1 { 2 } else { panels };
-            assert_eq!(fig.panels.len(), panels, "{case}/{}: projections (and detail)", fig.name);
+            let panels = if case.contains("3d") && fig.name != "number" {
+                3
+            } else {
+                1
+            };
+            let panels = if fig.name == "stage4-defuzzified" && panels == 1 {
+                2
+            } else {
+                panels
+            };
+            assert_eq!(
+                fig.panels.len(),
+                panels,
+                "{case}/{}: projections (and detail)",
+                fig.name
+            );
         }
     }
 }
