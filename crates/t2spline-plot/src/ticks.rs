@@ -6,7 +6,7 @@
 ///
 /// # Examples
 /// ```
-/// let (ticks, step) = t2spline_plot::ticks::nice_ticks(0.13, 6.9, 6);
+/// let (ticks, step) = t2spline_plot::ticks::nice_ticks(0.13, 6.9, 7);
 /// assert_eq!(step, 1.0);
 /// assert_eq!(ticks, [1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
 /// ```

@@ -1,6 +1,6 @@
 //! The figures of the method: one builder per figure, each reading a
 //! [`RunResult`] (and, for the fuzzy number, the library's number) and
-//! returning a [`Figure`] in data coordinates.
+//! returning a [`crate::scene::Figure`] in data coordinates.
 //!
 //! | file stem | shows | paper |
 //! |---|---|---|

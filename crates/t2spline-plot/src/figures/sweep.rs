@@ -17,7 +17,7 @@ pub fn sweep_alphas() -> Vec<f64> {
 }
 
 /// The `alpha-sweep` figure: one defuzzified curve per alpha of
-/// [`sweep_alphas`], coloured by alpha (viridis) with a colour bar marking the
+/// `sweep_alphas`, coloured by alpha (viridis) with a colour bar marking the
 /// lower heights, where the solution jumps.
 #[must_use]
 pub fn sweep_figure(job: &Job) -> crate::scene::Figure {
