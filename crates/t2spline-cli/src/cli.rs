@@ -2,7 +2,7 @@
 
 use std::path::PathBuf;
 
-use clap::{Args, Parser, Subcommand};
+use clap::{Args, Parser, Subcommand, ValueEnum};
 
 /// Normal type-2 fuzzy rational B-spline curves: model uncertain control points,
 /// cut, type-reduce and defuzzify them (Algorithm 1.1 of Zakaria, Wahab and
@@ -22,6 +22,10 @@ pub enum Command {
     Run(RunArgs),
     /// Check a job file and report every problem in it.
     Validate(ValidateArgs),
+    /// Draw the figures of every stage (SVG and/or PNG) into a folder.
+    Plot(PlotArgs),
+    /// Write a self-contained HTML report with an alpha slider into a folder.
+    Report(ReportArgs),
 }
 
 /// Arguments of `t2spline run`.
@@ -55,4 +59,62 @@ pub struct RunArgs {
 pub struct ValidateArgs {
     /// The job file; `-` reads standard input.
     pub job: PathBuf,
+}
+
+/// File formats of `t2spline plot`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum FormatArg {
+    /// SVG only (vector, for papers).
+    Svg,
+    /// PNG only (1920 pixels wide for one panel).
+    Png,
+    /// Both.
+    Both,
+}
+
+/// Coordinates for `--axis`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum AxisArg {
+    /// The first coordinate.
+    X,
+    /// The second coordinate.
+    Y,
+    /// The third coordinate (3-D jobs).
+    Z,
+}
+
+/// Arguments of `t2spline plot`.
+#[derive(Debug, Args)]
+pub struct PlotArgs {
+    /// The job file; `-` reads standard input.
+    pub job: PathBuf,
+    /// The folder to write the figures into (created if missing).
+    #[arg(short, long, value_name = "DIR")]
+    pub output: PathBuf,
+    /// Which files to write per figure.
+    #[arg(long, value_enum, default_value_t = FormatArg::Both)]
+    pub format: FormatArg,
+    /// The control point whose fuzzy number the `number` figure shows (from 0).
+    #[arg(long, value_name = "I", default_value_t = 0)]
+    pub point: usize,
+    /// The coordinate whose fuzzy number the `number` figure shows.
+    #[arg(long, value_enum, default_value_t = AxisArg::X)]
+    pub axis: AxisArg,
+    /// The level alpha in [0, 1]; overrides the job file.
+    #[arg(long, value_name = "A", allow_negative_numbers = true)]
+    pub alpha: Option<f64>,
+}
+
+/// Arguments of `t2spline report`.
+#[derive(Debug, Args)]
+pub struct ReportArgs {
+    /// The job file; `-` reads standard input.
+    pub job: PathBuf,
+    /// The folder to write `report.html` into (created if missing).
+    #[arg(short, long, value_name = "DIR")]
+    pub output: PathBuf,
+    /// The alpha the slider starts at; overrides the job file (default: the
+    /// job's alpha, else 0.5).
+    #[arg(long, value_name = "A", allow_negative_numbers = true)]
+    pub alpha: Option<f64>,
 }

@@ -23,15 +23,26 @@ pub fn job_name(path: &Path) -> String {
 
 /// Reads and validates the job at `path`, or from standard input for `-`.
 pub fn read_job(path: &Path) -> anyhow::Result<Job> {
-    if is_stdio(path) {
+    Ok(read_job_text(path)?.0)
+}
+
+/// Reads and validates the job at `path` (or standard input for `-`), and
+/// returns it with its text (the report shows it).
+pub fn read_job_text(path: &Path) -> anyhow::Result<(Job, String)> {
+    let text = if is_stdio(path) {
         let mut text = String::new();
         std::io::stdin()
             .read_to_string(&mut text)
             .context("standard input: cannot read")?;
-        Ok(Job::parse(&text, &job_name(path))?)
+        text
     } else {
-        Ok(Job::read(path)?)
-    }
+        std::fs::read_to_string(path).map_err(|source| Error::Read {
+            path: path.to_owned(),
+            source,
+        })?
+    };
+    let job = Job::parse(&text, &job_name(path))?;
+    Ok((job, text))
 }
 
 /// Everything a command writes, gathered first and written at the end: the

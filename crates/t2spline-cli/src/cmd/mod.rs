@@ -1,6 +1,9 @@
 //! One module per subcommand: validate the raw arguments into a plan, then call
 //! the libraries.
 
+mod alpha;
+mod plot;
+mod report;
 mod run;
 mod validate;
 
@@ -11,5 +14,7 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<()> {
     match cli.command {
         Command::Run(args) => run::run(args),
         Command::Validate(args) => validate::validate(&args),
+        Command::Plot(args) => plot::plot(&args),
+        Command::Report(args) => report::report(&args),
     }
 }

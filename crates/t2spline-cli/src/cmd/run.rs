@@ -3,14 +3,13 @@
 
 use std::path::PathBuf;
 
-use anyhow::bail;
 use t2spline::Alpha;
 use t2spline_io::derivatives::check_derivative_order;
 use t2spline_io::job::check_samples;
 use t2spline_io::{render_csv, to_json_pretty, Error, Job, RunResult};
 
 use crate::cli::RunArgs;
-use crate::output::{job_name, read_job, Outputs};
+use crate::output::{read_job, Outputs};
 
 /// A run with every input validated.
 struct Plan {
@@ -25,15 +24,7 @@ struct Plan {
 
 impl Plan {
     fn new(args: RunArgs) -> anyhow::Result<Plan> {
-        let alpha = args
-            .alpha
-            .map(|a| {
-                Alpha::try_new(a).map_err(|e| Error::Option {
-                    option: "--alpha",
-                    message: e.to_string(),
-                })
-            })
-            .transpose()?;
+        let alpha = super::alpha::parse_option(args.alpha)?;
         let samples = args
             .samples
             .map(|n| {
@@ -44,12 +35,7 @@ impl Plan {
             })
             .transpose()?;
         let job = read_job(&args.job)?;
-        let Some(alpha) = alpha.or(job.alpha) else {
-            bail!(
-                "{}: alpha: missing: give it in the job file or with --alpha",
-                job_name(&args.job)
-            );
-        };
+        let alpha = super::alpha::required(alpha, &job, &args.job)?;
         let samples = samples.unwrap_or(job.samples);
         let derivatives = args
             .derivatives

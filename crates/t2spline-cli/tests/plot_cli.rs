@@ -1,0 +1,151 @@
+//! `t2spline plot` and `t2spline report` run as the built binary.
+
+use std::path::{Path, PathBuf};
+
+use assert_cmd::Command;
+use predicates::str::contains;
+
+fn example() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/paper-alg-1-1.json")
+}
+
+fn t2spline() -> Command {
+    Command::cargo_bin("t2spline").unwrap()
+}
+
+const NAMES: [&str; 6] = [
+    "number",
+    "stage1-fuzzy",
+    "stage2-alpha-cut",
+    "stage3-type-reduced",
+    "stage4-defuzzified",
+    "alpha-sweep",
+];
+
+#[test]
+fn plot_writes_every_figure_in_both_formats_by_default() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("figs");
+    t2spline()
+        .args([
+            "plot",
+            example().to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+        ])
+        .assert()
+        .success()
+        .stdout(contains("stage4-defuzzified.png"));
+    for name in NAMES {
+        for ext in ["svg", "png"] {
+            let p = out.join(format!("{name}.{ext}"));
+            assert!(
+                std::fs::metadata(&p).unwrap().len() > 1000,
+                "{}",
+                p.display()
+            );
+        }
+    }
+    assert_eq!(
+        std::fs::read_dir(&out).unwrap().count(),
+        12,
+        "no stray files"
+    );
+}
+
+#[test]
+fn plot_svg_only_and_a_chosen_number() {
+    let dir = tempfile::tempdir().unwrap();
+    t2spline()
+        .args([
+            "plot",
+            example().to_str().unwrap(),
+            "-o",
+            dir.path().to_str().unwrap(),
+        ])
+        .args([
+            "--format", "svg", "--point", "3", "--axis", "y", "--alpha", "0.3",
+        ])
+        .assert()
+        .success();
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 6);
+    let number = std::fs::read_to_string(dir.path().join("number.svg")).unwrap();
+    assert!(
+        number.contains("coordinate y of control point 3"),
+        "{number}"
+    );
+    assert!(number.contains("α = 0.3"));
+}
+
+#[test]
+fn plot_errors_name_the_option_and_write_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("figs");
+    t2spline()
+        .args([
+            "plot",
+            example().to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+            "--point",
+            "4",
+        ])
+        .assert()
+        .code(2)
+        .stderr("t2spline: --point: point 4 does not exist: the job has 4 points, 0 to 3\n");
+    t2spline()
+        .args([
+            "plot",
+            example().to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+            "--axis",
+            "z",
+        ])
+        .assert()
+        .code(2)
+        .stderr("t2spline: --axis: coordinate z does not exist in a 2-D job\n");
+    t2spline()
+        .args([
+            "plot",
+            example().to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+            "--alpha",
+            "1.5",
+        ])
+        .assert()
+        .code(2)
+        .stderr(contains("--alpha"));
+    assert!(!out.exists(), "nothing written on error");
+}
+
+#[test]
+fn report_is_one_self_contained_file() {
+    let dir = tempfile::tempdir().unwrap();
+    t2spline()
+        .args([
+            "report",
+            example().to_str().unwrap(),
+            "-o",
+            dir.path().to_str().unwrap(),
+        ])
+        .assert()
+        .success()
+        .stdout(contains("report.html"));
+    let html = std::fs::read_to_string(dir.path().join("report.html")).unwrap();
+    assert!(html.starts_with("<!DOCTYPE html>"));
+    // Nothing is loaded from elsewhere: no links, no script or image sources,
+    // and the only URL is the SVG namespace.
+    for forbidden in ["<link", "src=", "@import", "url(http", "href=\"http"] {
+        assert!(!html.contains(forbidden), "found {forbidden}");
+    }
+    let urls = html.matches("http://").count();
+    let namespaces = html.matches("http://www.w3.org/2000/svg").count();
+    assert_eq!(urls, namespaces, "only the SVG namespace is a URL");
+    assert!(
+        html.contains("&quot;order&quot;: 3"),
+        "the job itself is shown"
+    );
+    assert!(html.len() < 2_500_000, "report size {}", html.len());
+}

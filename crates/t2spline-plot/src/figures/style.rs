@@ -1,0 +1,90 @@
+//! How each series of the method looks, the same in every figure.
+
+use t2spline::Layer;
+
+use crate::style::{Fill, Marker, Shape, Stroke, BLACK, BLUE, GREEN, GREY, PURPLE, VERMILLION};
+
+/// The line of a layer curve (left and right ends of one function look alike).
+#[must_use]
+pub fn layer_stroke(layer: Layer) -> Stroke {
+    match layer {
+        Layer::UpperLeft | Layer::UpperRight => Stroke::dashed(BLUE, 1.3, "7 4"),
+        Layer::PrimaryLeft | Layer::PrimaryRight => Stroke::dashed(GREEN, 1.3, "10 3 2 3"),
+        Layer::LowerLeft | Layer::LowerRight => Stroke::dashed(VERMILLION, 1.7, "2 2.5"),
+        Layer::Crisp => crisp_stroke(),
+    }
+}
+
+/// The marker of a layer's control points.
+#[must_use]
+pub fn layer_marker(layer: Layer) -> Marker {
+    match layer {
+        Layer::UpperLeft | Layer::UpperRight => Marker::open(Shape::Square, 6.5, BLUE),
+        Layer::PrimaryLeft | Layer::PrimaryRight => Marker::open(Shape::Triangle, 7.0, GREEN),
+        Layer::LowerLeft | Layer::LowerRight => Marker::open(Shape::Circle, 6.5, VERMILLION),
+        Layer::Crisp => crisp_marker(),
+    }
+}
+
+/// The crisp curve.
+#[must_use]
+pub fn crisp_stroke() -> Stroke {
+    Stroke::solid(BLACK, 1.9)
+}
+
+/// The crisp control points.
+#[must_use]
+pub fn crisp_marker() -> Marker {
+    Marker::filled(Shape::Circle, 6.5, BLACK)
+}
+
+/// The control polygon.
+#[must_use]
+pub fn polygon_stroke() -> Stroke {
+    Stroke::dashed(GREY, 0.9, "3 3")
+}
+
+/// The light band between the two upper layer curves.
+#[must_use]
+pub fn upper_band() -> Fill {
+    Fill {
+        color: BLUE,
+        opacity: 0.12,
+    }
+}
+
+/// The darker band between the two lower layer curves.
+#[must_use]
+pub fn lower_band() -> Fill {
+    Fill {
+        color: VERMILLION,
+        opacity: 0.32,
+    }
+}
+
+/// Type-reduced curves.
+#[must_use]
+pub fn reduced_stroke() -> Stroke {
+    Stroke::dashed(PURPLE, 1.7, "8 3")
+}
+
+/// The band between the type-reduced curves.
+#[must_use]
+pub fn reduced_band() -> Fill {
+    Fill {
+        color: PURPLE,
+        opacity: 0.16,
+    }
+}
+
+/// The defuzzified (solution) curve.
+#[must_use]
+pub fn solution_stroke() -> Stroke {
+    Stroke::dashed(BLUE, 1.9, "6 3")
+}
+
+/// The defuzzified control points.
+#[must_use]
+pub fn solution_marker() -> Marker {
+    Marker::open(Shape::Diamond, 8.0, BLUE)
+}

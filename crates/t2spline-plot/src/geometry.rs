@@ -1,0 +1,206 @@
+//! Pixel geometry for layout: rectangles, and what a rectangle would cover
+//! (curve segments, markers, filled areas, other texts).
+
+/// A point in pixels, y downwards.
+pub type Px = [f64; 2];
+
+/// An axis-aligned rectangle in pixels.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Rect {
+    /// Left edge.
+    pub x: f64,
+    /// Top edge.
+    pub y: f64,
+    /// Width.
+    pub w: f64,
+    /// Height.
+    pub h: f64,
+}
+
+impl Rect {
+    /// The right edge.
+    #[must_use]
+    pub fn right(&self) -> f64 {
+        self.x + self.w
+    }
+
+    /// The bottom edge.
+    #[must_use]
+    pub fn bottom(&self) -> f64 {
+        self.y + self.h
+    }
+
+    /// The rectangle grown by `m` on every side.
+    #[must_use]
+    pub fn grow(&self, m: f64) -> Rect {
+        Rect {
+            x: self.x - m,
+            y: self.y - m,
+            w: self.w + 2.0 * m,
+            h: self.h + 2.0 * m,
+        }
+    }
+
+    /// Whether the point lies inside or on the border.
+    #[must_use]
+    pub fn contains(&self, p: Px) -> bool {
+        p[0] >= self.x && p[0] <= self.right() && p[1] >= self.y && p[1] <= self.bottom()
+    }
+
+    /// Whether `other` lies entirely inside.
+    #[must_use]
+    pub fn contains_rect(&self, other: &Rect) -> bool {
+        other.x >= self.x - 1e-9
+            && other.y >= self.y - 1e-9
+            && other.right() <= self.right() + 1e-9
+            && other.bottom() <= self.bottom() + 1e-9
+    }
+
+    /// Whether the two rectangles share interior points.
+    #[must_use]
+    pub fn overlaps(&self, other: &Rect) -> bool {
+        self.x < other.right()
+            && other.x < self.right()
+            && self.y < other.bottom()
+            && other.y < self.bottom()
+    }
+
+    /// Whether the segment `a`–`b` meets the rectangle (Liang–Barsky clipping).
+    #[must_use]
+    pub fn meets_segment(&self, a: Px, b: Px) -> bool {
+        let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+        let mut t0: f64 = 0.0;
+        let mut t1: f64 = 1.0;
+        for (p, q) in [
+            (-dx, a[0] - self.x),
+            (dx, self.right() - a[0]),
+            (-dy, a[1] - self.y),
+            (dy, self.bottom() - a[1]),
+        ] {
+            if p == 0.0 {
+                if q < 0.0 {
+                    return false;
+                }
+            } else {
+                let r = q / p;
+                if p < 0.0 {
+                    t0 = t0.max(r);
+                } else {
+                    t1 = t1.min(r);
+                }
+                if t0 > t1 {
+                    return false;
+                }
+            }
+        }
+        true
+    }
+
+    /// The point of the rectangle nearest to `p`.
+    #[must_use]
+    pub fn nearest(&self, p: Px) -> Px {
+        [
+            p[0].clamp(self.x, self.right()),
+            p[1].clamp(self.y, self.bottom()),
+        ]
+    }
+}
+
+/// Whether `p` lies inside the polygon (even-odd rule).
+#[must_use]
+pub fn in_polygon(p: Px, poly: &[Px]) -> bool {
+    let mut inside = false;
+    let mut j = poly.len().wrapping_sub(1);
+    for i in 0..poly.len() {
+        let (a, b) = (poly[i], poly[j]);
+        if (a[1] > p[1]) != (b[1] > p[1])
+            && p[0] < (b[0] - a[0]) * (p[1] - a[1]) / (b[1] - a[1]) + a[0]
+        {
+            inside = !inside;
+        }
+        j = i;
+    }
+    inside
+}
+
+/// Everything drawn in a panel that a text or legend must not cover, in pixels.
+#[derive(Clone, Debug, Default)]
+pub struct Obstacles {
+    /// Line segments (curves, rules, bars).
+    pub segments: Vec<[Px; 2]>,
+    /// Boxes (markers, texts, the legend).
+    pub rects: Vec<Rect>,
+    /// Filled polygons.
+    pub areas: Vec<Vec<Px>>,
+}
+
+impl Obstacles {
+    /// How many obstacles `r` covers (0 means free).
+    #[must_use]
+    pub fn hits(&self, r: &Rect) -> usize {
+        let segs = self
+            .segments
+            .iter()
+            .filter(|s| r.meets_segment(s[0], s[1]))
+            .count();
+        let rects = self.rects.iter().filter(|o| o.overlaps(r)).count();
+        let areas = self
+            .areas
+            .iter()
+            .filter(|poly| {
+                let corners = [
+                    [r.x, r.y],
+                    [r.right(), r.y],
+                    [r.x, r.bottom()],
+                    [r.right(), r.bottom()],
+                ];
+                corners.iter().any(|&c| in_polygon(c, poly)) || poly.iter().any(|&v| r.contains(v))
+            })
+            .count();
+        segs + rects + areas
+    }
+
+    /// Adds a polyline as its segments.
+    pub fn add_polyline(&mut self, pts: &[Px]) {
+        self.segments.extend(pts.windows(2).map(|w| [w[0], w[1]]));
+    }
+
+    /// Adds everything of `other`.
+    pub fn extend(&mut self, other: &Obstacles) {
+        self.segments.extend_from_slice(&other.segments);
+        self.rects.extend_from_slice(&other.rects);
+        self.areas.extend(other.areas.iter().cloned());
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const R: Rect = Rect {
+        x: 10.0,
+        y: 10.0,
+        w: 10.0,
+        h: 10.0,
+    };
+
+    #[test]
+    fn segments_meet_a_rectangle_only_when_they_cross_it() {
+        assert!(R.meets_segment([0.0, 15.0], [30.0, 15.0]));
+        assert!(R.meets_segment([12.0, 12.0], [13.0, 13.0]));
+        assert!(!R.meets_segment([0.0, 0.0], [30.0, 5.0]));
+        assert!(!R.meets_segment([0.0, 0.0], [9.0, 30.0]));
+        assert!(R.meets_segment([0.0, 30.0], [30.0, 0.0]));
+    }
+
+    #[test]
+    fn areas_count_when_the_box_is_inside_or_holds_a_vertex() {
+        let mut o = Obstacles::default();
+        o.areas
+            .push(vec![[0.0, 0.0], [100.0, 0.0], [100.0, 100.0], [0.0, 100.0]]);
+        assert_eq!(o.hits(&R), 1);
+        let far = Rect { x: 200.0, ..R };
+        assert_eq!(o.hits(&far), 0);
+        assert!(in_polygon([5.0, 5.0], &o.areas[0]));
+    }
+}
