@@ -41,16 +41,34 @@ fn stage(path: &Path, bytes: &[u8]) -> Result<tempfile::NamedTempFile, Error> {
         Some(d) if !d.as_os_str().is_empty() => d,
         _ => Path::new("."),
     };
-    let mut file = tempfile::Builder::new()
-        .prefix(".t2spline-")
-        .suffix(".tmp")
-        .tempfile_in(dir)
-        .map_err(|e| write_error(path, e))?;
+    let mut builder = tempfile::Builder::new();
+    builder.prefix(".t2spline-").suffix(".tmp");
+    if let Some(p) = permissions_for(path) {
+        builder.permissions(p);
+    }
+    let mut file = builder.tempfile_in(dir).map_err(|e| write_error(path, e))?;
     file.write_all(bytes).map_err(|e| write_error(path, e))?;
     file.as_file()
         .sync_all()
         .map_err(|e| write_error(path, e))?;
     Ok(file)
+}
+
+/// The permissions the written file gets: those of the file it replaces, or
+/// else what a plain `File::create` gives (on Unix read-write for all, less the
+/// umask), not the owner-only mode tempfile uses for private temporary files.
+fn permissions_for(path: &Path) -> Option<std::fs::Permissions> {
+    if let Ok(meta) = std::fs::metadata(path) {
+        return Some(meta.permissions());
+    }
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        // The mode is passed to open(2), which applies the umask.
+        Some(std::fs::Permissions::from_mode(0o666))
+    }
+    #[cfg(not(unix))]
+    None
 }
 
 /// [`Error::Write`] for `path`. tempfile's errors end in
@@ -94,6 +112,22 @@ mod tests {
             !lines.contains(".t2spline-"),
             "names the temporary file: {lines}"
         );
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn new_files_get_the_usual_mode_and_replaced_files_keep_theirs() {
+        use std::os::unix::fs::PermissionsExt;
+        let dir = tempfile::tempdir().unwrap();
+        let mode = |p: &Path| std::fs::metadata(p).unwrap().permissions().mode() & 0o777;
+        let plain = dir.path().join("plain");
+        std::fs::File::create(&plain).unwrap();
+        let ours = dir.path().join("ours.json");
+        write_atomic(&ours, b"x").unwrap();
+        assert_eq!(mode(&ours), mode(&plain), "mode differs from File::create");
+        std::fs::set_permissions(&ours, std::fs::Permissions::from_mode(0o640)).unwrap();
+        write_atomic(&ours, b"y").unwrap();
+        assert_eq!(mode(&ours), 0o640);
     }
 
     #[test]
