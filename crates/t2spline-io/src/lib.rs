@@ -11,6 +11,8 @@
 //!   crisp and the defuzzified curve.
 //! - [`write_atomic`]: output files that are complete or absent, never half
 //!   written.
+//! - [`FitData`]: data files for `t2spline fit` (fuzzy data points), fitted
+//!   into a job file.
 //!
 //! ```
 //! use t2spline_io::{Job, RunResult};
@@ -33,6 +35,7 @@ mod atomic;
 mod csv;
 pub mod derivatives;
 mod error;
+pub mod fit_data;
 pub mod job;
 mod pretty;
 pub mod result;
@@ -40,6 +43,7 @@ pub mod result;
 pub use crate::atomic::{write_all_atomic, write_atomic};
 pub use crate::csv::{render_csv, write_csv, CSV_FILES, DERIVATIVES_CSV};
 pub use error::{Error, Problem};
+pub use fit_data::{DataPoints, FitData, FitOutcome, FitSummary};
 pub use job::{Job, JobCurve, DEFAULT_SAMPLES, MAX_SAMPLES};
 pub use pretty::to_json_pretty;
 pub use result::RunResult;

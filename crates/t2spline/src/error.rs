@@ -359,6 +359,140 @@ pub enum Error {
         /// The height of the same coordinate of the first point.
         expected: f64,
     },
+
+    /// A curve of degree `p` through data needs at least `p + 1` data points.
+    ///
+    /// ```
+    /// # use t2spline::Error;
+    /// # use t2spline::fit::{fit_curve, FitOptions};
+    /// let e = fit_curve(&[[0.0, 0.0], [1.0, 1.0]], &FitOptions::interpolation(2)).unwrap_err();
+    /// assert_eq!(e.to_string(), "points: a curve of degree 2 needs at least 3 data points, got 2");
+    /// ```
+    #[error("points: a curve of degree {degree} needs at least {} data points, got {count}", degree + 1)]
+    TooFewDataPoints {
+        /// The degree `p`.
+        degree: usize,
+        /// The number of data points given.
+        count: usize,
+    },
+
+    /// Fitting needs degree 1 or more: knots by averaging divide by the degree,
+    /// and a piecewise-constant curve cannot pass through distinct points.
+    ///
+    /// ```
+    /// # use t2spline::Error;
+    /// # use t2spline::fit::{fit_curve, FitOptions};
+    /// let e = fit_curve(&[[0.0, 0.0], [1.0, 1.0]], &FitOptions::interpolation(0)).unwrap_err();
+    /// assert_eq!(e, Error::ZeroDegreeFit);
+    /// ```
+    #[error("degree 0 cannot be fitted: a piecewise-constant curve does not pass through its data; give degree 1 or more")]
+    ZeroDegreeFit,
+
+    /// Least squares with `n` control points needs `p + 1 ≤ n ≤` the number of
+    /// data points.
+    ///
+    /// ```
+    /// # use t2spline::Error;
+    /// # use t2spline::fit::{fit_curve, FitOptions};
+    /// let q = [[0.0, 0.0], [1.0, 1.0], [2.0, 0.0]];
+    /// let e = fit_curve(&q, &FitOptions::approximation(1, 5)).unwrap_err();
+    /// assert_eq!(e.to_string(), "control points: 5 is outside [2, 3] (degree + 1 to the number of data points)");
+    /// ```
+    #[error("control points: {count} is outside [{min}, {max}] (degree + 1 to the number of data points)")]
+    ControlPointCount {
+        /// The number asked for.
+        count: usize,
+        /// `p + 1`.
+        min: usize,
+        /// The number of data points.
+        max: usize,
+    },
+
+    /// Two consecutive data points coincide (or nearly so), so chord-length or
+    /// centripetal parameters would give them one parameter.
+    ///
+    /// ```
+    /// # use t2spline::Error;
+    /// # use t2spline::fit::{fit_curve, FitOptions};
+    /// let q = [[0.0, 0.0], [1.0, 1.0], [1.0, 1.0], [2.0, 0.0]];
+    /// let e = fit_curve(&q, &FitOptions::interpolation(2)).unwrap_err();
+    /// assert_eq!(e, Error::CoincidentDataPoints { first: 1, second: 2 });
+    /// ```
+    #[error("points[{first}] and points[{second}]: consecutive data points at the same crisp position get the same parameter; remove or merge the repeat, or use uniform parameters")]
+    CoincidentDataPoints {
+        /// Index of the first point.
+        first: usize,
+        /// Index of the second point.
+        second: usize,
+    },
+
+    /// The fitting system is singular to working precision: the data do not
+    /// determine a control point.
+    ///
+    /// ```
+    /// # use t2spline::Error;
+    /// # use t2spline::fit::{fit_curve, FitOptions};
+    /// // points[1] and points[2] are 1e-15 apart: their parameters differ, but
+    /// // the two equations agree to working precision.
+    /// let q = [[0.0, 0.0], [1.0, 0.0], [1.0 + 1e-15, 0.0], [2.0, 1.0]];
+    /// let e = fit_curve(&q, &FitOptions::interpolation(2)).unwrap_err();
+    /// assert_eq!(e, Error::SingularFit { column: 2 });
+    /// ```
+    #[error("the fitting system is singular to working precision: control point {column} is not determined by the data (are data points repeated, or their parameters too close?)")]
+    SingularFit {
+        /// The first control point that is not determined.
+        column: usize,
+    },
+
+    /// The fitting system is so ill-conditioned that the control points would
+    /// keep fewer than four correct digits (condition number above 10¹²).
+    /// Least squares with nearly as many control points as data points does
+    /// this with the knots of The NURBS Book Eq. 9.69; fewer control points
+    /// help.
+    ///
+    /// ```
+    /// # use t2spline::Error;
+    /// # use t2spline::fit::{fit_curve, FitOptions};
+    /// // 39 points spaced ever wider (chords grow by 10 % each), degree 5.
+    /// let q: Vec<[f64; 2]> = (0..39).map(|k| [1.1f64.powi(k), 0.0]).collect();
+    /// let e = fit_curve(&q, &FitOptions::approximation(5, 38)).unwrap_err();
+    /// assert!(matches!(e, Error::IllConditionedFit { .. }), "{e}");
+    /// assert!(fit_curve(&q, &FitOptions::approximation(5, 20)).is_ok());
+    /// ```
+    #[error("the fitting system is too ill-conditioned (condition number {condition:.1e}): the control points would keep fewer than four correct digits; use fewer control points, or check for nearly repeated data points")]
+    IllConditionedFit {
+        /// The estimated condition number.
+        condition: f64,
+    },
+
+    /// Fitting each layer on its own gave control points that break the order
+    /// of SPEC §1; the valid fit ([`FuzzyFitMode::Valid`](crate::fit::FuzzyFitMode::Valid)) avoids this.
+    ///
+    /// ```
+    /// # use t2spline::{Error, Nt2Number, Nt2Point};
+    /// # use t2spline::fit::{fit_fuzzy, FitOptions, FuzzyFitMode};
+    /// // The upper spread is wide at the middle point only: the independent
+    /// // quadratic interpolant of the upper.left layer dips below where the
+    /// // primary.left layer's control point lies.
+    /// let n = |c: f64, up: f64| Nt2Number::try_new(c, [c - up, c + 0.3], [c - 0.2, c + 0.2], [c - 0.1, c + 0.1], 1.0);
+    /// let data = vec![
+    ///     Nt2Point::new([n(0.0, 0.3)?, n(0.0, 0.3)?]),
+    ///     Nt2Point::new([n(1.0, 0.2)?, n(1.0, 0.2)?]),
+    ///     Nt2Point::new([n(2.0, 3.0)?, n(2.0, 0.2)?]),
+    ///     Nt2Point::new([n(3.0, 0.2)?, n(3.0, 0.2)?]),
+    ///     Nt2Point::new([n(4.0, 0.3)?, n(4.0, 0.3)?]),
+    /// ];
+    /// let fit = fit_fuzzy(&data, &FitOptions::interpolation(3), FuzzyFitMode::Independent)?;
+    /// assert!(matches!(fit.to_curve(), Err(Error::UnorderedFit { .. })));
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("fitting every layer on its own breaks the order of SPEC §1 at {count} place(s); the first: {first}")]
+    UnorderedFit {
+        /// How many inequalities are broken.
+        count: usize,
+        /// The first of them.
+        first: crate::fit::OrderViolation,
+    },
 }
 
 impl Error {

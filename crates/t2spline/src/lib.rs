@@ -53,10 +53,13 @@
 //!   shared knots and weights, so the result is again a fuzzy curve.
 //! - [`pipeline`]: [`FuzzyCurve`] (stage 1), [`Solution`] (stages 2–4) and the
 //!   [`Distance`] between the crisp and the defuzzified curve (§7).
+//! - [`fit`]: curves through data or approximating them (interpolation and
+//!   least squares, The NURBS Book §9.2.1 and §9.4.1), crisp and fuzzy.
 //! - Features: `serde` (Serialize for the data types), `proptest` (generators in
 //!   `strategies`).
 
 mod error;
+pub mod fit;
 pub mod fuzzy;
 pub mod nurbs;
 pub mod pipeline;

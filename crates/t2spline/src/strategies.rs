@@ -170,3 +170,73 @@ pub fn grid_curve<const D: usize>() -> impl Strategy<Value = NurbsCurve<D>> {
             NurbsCurve::try_new(points, weights, u).expect("valid parts")
         })
 }
+
+/// Data points for fitting: a random walk with steps of length `[0.1, 3]` in
+/// random directions, so that consecutive points never coincide and the ratio
+/// of neighbouring chords stays below 30 (the systems stay well conditioned).
+pub fn data_points<const D: usize>(
+    count: std::ops::RangeInclusive<usize>,
+) -> impl Strategy<Value = Vec<[f64; D]>> {
+    (
+        proptest::array::uniform::<_, D>(-10.0..10.0f64),
+        proptest::collection::vec(
+            (0.1..3.0f64, proptest::array::uniform::<_, D>(-1.0..1.0f64)),
+            count,
+        ),
+    )
+        .prop_map(|(start, steps)| {
+            let mut at = start;
+            let mut out = Vec::with_capacity(steps.len());
+            for (length, direction) in steps {
+                let norm = direction.iter().map(|x| x * x).sum::<f64>().sqrt();
+                let unit: [f64; D] = if norm > 1e-3 {
+                    direction.map(|x| x / norm)
+                } else {
+                    std::array::from_fn(|d| if d == 0 { 1.0 } else { 0.0 })
+                };
+                out.push(at);
+                at = std::array::from_fn(|d| at[d] + length * unit[d]);
+            }
+            out
+        })
+}
+
+/// Fuzzy data points: crisp values from [`data_points`], spreads drawn per
+/// point and coordinate independently (so they vary wildly from point to
+/// point, which is what breaks independent fits), one common lower height.
+pub fn fuzzy_data<const D: usize>(
+    count: std::ops::RangeInclusive<usize>,
+) -> impl Strategy<Value = Vec<Nt2Point<D>>> {
+    (height(), data_points::<D>(count)).prop_flat_map(|(h, crisp)| {
+        let n = crisp.len();
+        proptest::collection::vec(
+            proptest::array::uniform::<_, D>((
+                [spread(), spread(), spread()],
+                [spread(), spread(), spread()],
+            )),
+            n,
+        )
+        .prop_map(move |spreads| {
+            crisp
+                .iter()
+                .zip(&spreads)
+                .map(|(c, s)| {
+                    Nt2Point::new(std::array::from_fn(|d| {
+                        let (mut l, mut r) = s[d];
+                        l.sort_by(f64::total_cmp);
+                        r.sort_by(f64::total_cmp);
+                        let x = c[d];
+                        Nt2Number::try_new(
+                            x,
+                            [x - l[2], x + r[2]],
+                            [x - l[1], x + r[1]],
+                            [x - l[0], x + r[0]],
+                            h,
+                        )
+                        .expect("ordered spreads make a valid number")
+                    }))
+                })
+                .collect()
+        })
+    })
+}

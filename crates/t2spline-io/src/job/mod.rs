@@ -1,6 +1,6 @@
 //! Job files (SPEC §8): reading, validating every rule at once, and writing back.
 
-mod parse;
+pub(crate) mod parse;
 
 use std::path::Path;
 
@@ -137,7 +137,7 @@ impl Job {
 }
 
 fn curve_parts<const D: usize>(c: &FuzzyCurve<D>) -> (usize, Vec<f64>, Vec<f64>, Vec<Value>) {
-    let points = c.points().iter().map(point_json).collect();
+    let points = c.points().iter().map(|p| point_json(p, None)).collect();
     (
         c.degree(),
         c.weights().to_vec(),
@@ -146,20 +146,22 @@ fn curve_parts<const D: usize>(c: &FuzzyCurve<D>) -> (usize, Vec<f64>, Vec<f64>,
     )
 }
 
-fn point_json<const D: usize>(p: &Nt2Point<D>) -> Value {
+/// A point as in a job file; a number's `lower_height` is left out when it
+/// equals `top_height`, the job's top-level default.
+pub(crate) fn point_json<const D: usize>(p: &Nt2Point<D>, top_height: Option<f64>) -> Value {
     let mut out = Map::new();
     for (axis, x) in t2spline::Axis::first::<D>().iter().zip(p.coords()) {
         let pair = |l: Layer, r: Layer| json!([x.layer(l), x.layer(r)]);
-        out.insert(
-            axis.name().into(),
-            json!({
-                "crisp": x.crisp(),
-                "upper": pair(Layer::UpperLeft, Layer::UpperRight),
-                "primary": pair(Layer::PrimaryLeft, Layer::PrimaryRight),
-                "lower": pair(Layer::LowerLeft, Layer::LowerRight),
-                "lower_height": x.height().get(),
-            }),
-        );
+        let mut number = json!({
+            "crisp": x.crisp(),
+            "upper": pair(Layer::UpperLeft, Layer::UpperRight),
+            "primary": pair(Layer::PrimaryLeft, Layer::PrimaryRight),
+            "lower": pair(Layer::LowerLeft, Layer::LowerRight),
+        });
+        if top_height != Some(x.height().get()) {
+            number["lower_height"] = json!(x.height().get());
+        }
+        out.insert(axis.name().into(), number);
     }
     Value::Object(out)
 }

@@ -8,6 +8,7 @@ use serde_json::{Map, Value};
 use t2spline::{Alpha, Axis, FuzzyCurve, Height, KnotVector, Nt2Number, Nt2Point, Place};
 
 use super::{check_samples, Job, JobCurve, DEFAULT_SAMPLES};
+use crate::fit_data::{DataPoints, FitData};
 use crate::Problem;
 
 const TOP_KEYS: &[&str] = &[
@@ -16,6 +17,17 @@ const TOP_KEYS: &[&str] = &[
     "degree",
     "weights",
     "knots",
+    "alpha",
+    "lower_height",
+    "samples",
+    "points",
+];
+/// The keys of a data file for `t2spline fit`: those of a job but the two the
+/// fit computes.
+const DATA_KEYS: &[&str] = &[
+    "description",
+    "order",
+    "degree",
     "alpha",
     "lower_height",
     "samples",
@@ -31,6 +43,17 @@ pub(super) fn parse(text: &str) -> Result<Job, Vec<Problem>> {
     let job = w.job(&value);
     match job {
         Some(job) if w.problems.is_empty() => Ok(job),
+        _ => Err(w.problems),
+    }
+}
+
+/// Parses `text` as a data file for fitting, or returns every problem found.
+pub(crate) fn parse_data(text: &str) -> Result<FitData, Vec<Problem>> {
+    let value: Value = serde_json::from_str(text).map_err(|e| vec![syntax_problem(&e)])?;
+    let mut w = Walker::default();
+    let data = w.data(&value);
+    match data {
+        Some(data) if w.problems.is_empty() => Ok(data),
         _ => Err(w.problems),
     }
 }
@@ -201,10 +224,15 @@ impl Walker {
         }
     }
 
-    fn job(&mut self, root: &Value) -> Option<Job> {
-        let o = self.object(root, "job", "the job")?;
-        self.unknown_keys(o, "", TOP_KEYS);
-
+    /// The keys a job and a data file share, checked against `known`.
+    /// `missing_points` says what `points` holds, for its message.
+    fn header(
+        &mut self,
+        o: &Map<String, Value>,
+        known: &[&'static str],
+        missing_points: &str,
+    ) -> Header {
+        self.unknown_keys(o, "", known);
         let description = match o.get("description") {
             None => None,
             Some(Value::String(s)) => Some(s.clone()),
@@ -234,34 +262,57 @@ impl Walker {
             },
         };
         let samples = match o.get("samples") {
-            None => Some(DEFAULT_SAMPLES),
-            Some(v) => self.whole(v, "samples").and_then(|n| self.samples(n)),
+            None => Some(None),
+            Some(v) => self
+                .whole(v, "samples")
+                .and_then(|n| self.samples(n))
+                .map(Some),
         };
-        let weights = o.get("weights").and_then(|v| self.numbers(v, "weights"));
-        let knots = o.get("knots").and_then(|v| self.numbers(v, "knots"));
         let points = match o.get("points") {
             None => {
-                self.report("points", "missing: a job needs its fuzzy control points");
+                self.report("points", format!("missing: {missing_points}"));
                 None
             }
             Some(v) => self.points(v, height),
         };
+        Header {
+            description,
+            degree_key: if o.contains_key("degree") {
+                "degree"
+            } else {
+                "order"
+            },
+            degree,
+            alpha,
+            lower_height: height.ok().flatten(),
+            samples,
+            points,
+            count: o.get("points").and_then(Value::as_array).map(Vec::len),
+        }
+    }
+
+    fn job(&mut self, root: &Value) -> Option<Job> {
+        let o = self.object(root, "job", "the job")?;
+        let header = self.header(o, TOP_KEYS, "a job needs its fuzzy control points");
+        let weights = o.get("weights").and_then(|v| self.numbers(v, "weights"));
+        let knots = o.get("knots").and_then(|v| self.numbers(v, "knots"));
         // Curve-level rules (SPEC §6), checked against the number of entries in
         // `points` even when some of them are invalid.
-        let n = o.get("points").and_then(Value::as_array).map(Vec::len);
+        let n = header.count;
         let weights = match (weights, o.contains_key("weights")) {
             (Some(w), _) => Some(w),
             (None, false) => n.map(|n| vec![1.0; n]),
             (None, true) => None,
         };
-        if let (Some(degree), Some(n)) = (degree, n) {
+        if let (Some(degree), Some(n)) = (header.degree, n) {
             self.curve_rules(degree, n, weights.as_deref(), knots.as_deref());
         }
         // A key that failed to parse is None here and has been reported.
         if !self.problems.is_empty() {
             return None;
         }
-        let (degree, points, samples, weights) = (degree?, points?, samples?, weights?);
+        let (degree, points, samples, weights) =
+            (header.degree?, header.points?, header.samples?, weights?);
         let curve = match points {
             Points::Planar(p) => {
                 FuzzyCurve::try_new(degree, p, weights, knots).map(JobCurve::Planar)
@@ -272,9 +323,9 @@ impl Walker {
         };
         match curve {
             Ok(curve) => Some(Job {
-                description,
-                alpha,
-                samples,
+                description: header.description,
+                alpha: header.alpha,
+                samples: samples.unwrap_or(DEFAULT_SAMPLES),
                 curve,
             }),
             Err(e) => {
@@ -284,6 +335,49 @@ impl Walker {
                 None
             }
         }
+    }
+
+    /// A data file: the keys of a job but `weights` and `knots`, at least
+    /// `degree + 1` points, and a degree of at least 1.
+    fn data(&mut self, root: &Value) -> Option<FitData> {
+        let o = self.object(root, "data", "the data file")?;
+        for key in ["weights", "knots"] {
+            if o.contains_key(key) {
+                self.report(
+                    key,
+                    "not allowed in a data file: the fit makes the weights (all 1) and the knots",
+                );
+            }
+        }
+        let mut known = DATA_KEYS.to_vec();
+        known.extend(["weights", "knots"]);
+        let header = self.header(o, &known, "a data file needs its fuzzy data points");
+        if let (Some(degree), Some(count)) = (header.degree, header.count) {
+            if degree == 0 {
+                self.report(header.degree_key, t2spline::Error::ZeroDegreeFit);
+            } else if count < degree + 1 {
+                self.problems.push(Problem::new(
+                    t2spline::Error::TooFewDataPoints { degree, count }.to_string(),
+                ));
+            }
+        }
+        if !self.problems.is_empty() {
+            return None;
+        }
+        Some(FitData {
+            // Set by the caller, which knows the file's name.
+            source: String::new(),
+            description: header.description,
+            degree_key: header.degree_key,
+            degree: header.degree?,
+            alpha: header.alpha,
+            lower_height: header.lower_height,
+            samples: header.samples?,
+            points: match header.points? {
+                Points::Planar(p) => DataPoints::Planar(p),
+                Points::Spatial(p) => DataPoints::Spatial(p),
+            },
+        })
     }
 
     /// The rules that tie points, weights and knots together (SPEC §6).
@@ -506,6 +600,22 @@ fn describe(v: &Value) -> String {
 /// A vector of exactly `D` numbers as an array; the caller guarantees the length.
 fn array<const D: usize>(v: Vec<Nt2Number>) -> [Nt2Number; D] {
     v.try_into().expect("the dimension was checked to be D")
+}
+
+/// What a job and a data file share, as parsed (`None`: missing or invalid,
+/// and reported).
+struct Header {
+    description: Option<String>,
+    /// `"order"` or `"degree"`: the key the file used.
+    degree_key: &'static str,
+    degree: Option<usize>,
+    alpha: Option<Alpha>,
+    lower_height: Option<f64>,
+    /// `Some(None)`: not given.
+    samples: Option<Option<usize>>,
+    points: Option<Points>,
+    /// The number of entries of `points`, valid or not.
+    count: Option<usize>,
 }
 
 /// The control points of either dimension.

@@ -13,6 +13,7 @@ mod type_reduce;
 
 pub use alpha_cut::{Alpha, AlphaCut};
 pub use layer::{Layer, Layers};
+pub(crate) use number::RULES;
 pub use number::{Height, Interval, Membership, Nt2Number};
 pub use point::{Axis, Nt2Point, Nt2Point2, Nt2Point3};
 pub use type_reduce::Tfn;

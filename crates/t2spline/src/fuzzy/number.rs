@@ -167,7 +167,7 @@ const NAMES: [&str; 7] = [
 ];
 
 /// The six inequalities of SPEC §1, as text.
-const RULES: [&str; 6] = [
+pub(crate) const RULES: [&str; 6] = [
     "upper.left <= primary.left",
     "primary.left <= lower.left",
     "lower.left <= crisp",

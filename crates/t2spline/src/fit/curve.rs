@@ -1,0 +1,167 @@
+//! Fitting a crisp B-spline curve to data points: global interpolation (The
+//! NURBS Book §9.2.1, Algorithm A9.1) and least squares with the end points
+//! interpolated (§9.4.1).
+
+use crate::error::Error;
+use crate::fit::design::Design;
+use crate::fit::knots::{approximation_knots, averaging_knots, check_counts};
+use crate::fit::Parametrization;
+use crate::nurbs::{KnotVector, NurbsCurve};
+
+/// What to fit: the degree, how the data get their parameters, and whether
+/// the curve interpolates the data or approximates them with fewer control
+/// points.
+///
+/// # Examples
+/// ```
+/// # use t2spline::fit::{FitOptions, Parametrization};
+/// let o = FitOptions::interpolation(3).with_parametrization(Parametrization::Centripetal);
+/// assert_eq!((o.degree, o.control_points), (3, None));
+/// assert_eq!(FitOptions::approximation(2, 7).control_points, Some(7));
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct FitOptions {
+    /// The degree `p ≥ 1` of the curve.
+    pub degree: usize,
+    /// How the data points get their parameters.
+    pub parametrization: Parametrization,
+    /// `None`: interpolate, one control point per data point (§9.2.1).
+    /// `Some(n)`: least squares with `n` control points, `p + 1 ≤ n ≤` the
+    /// number of data points, the end points interpolated (§9.4.1).
+    pub control_points: Option<usize>,
+}
+
+impl FitOptions {
+    /// Interpolation of degree `degree`, chord-length parameters.
+    #[must_use]
+    pub fn interpolation(degree: usize) -> Self {
+        FitOptions {
+            degree,
+            parametrization: Parametrization::ChordLength,
+            control_points: None,
+        }
+    }
+
+    /// Least squares of degree `degree` with `control_points` control points,
+    /// chord-length parameters.
+    #[must_use]
+    pub fn approximation(degree: usize, control_points: usize) -> Self {
+        FitOptions {
+            control_points: Some(control_points),
+            ..FitOptions::interpolation(degree)
+        }
+    }
+
+    /// The same options with another parametrization.
+    #[must_use]
+    pub fn with_parametrization(self, parametrization: Parametrization) -> Self {
+        FitOptions {
+            parametrization,
+            ..self
+        }
+    }
+
+    /// The parameters of `points` and the knot vector of the fit: averaging
+    /// (Eq. 9.8) for interpolation, Eqs. 9.68–9.69 for least squares with
+    /// fewer control points than data points. Least squares with as many
+    /// control points as data points is interpolation, and gets its knots.
+    ///
+    /// # Errors
+    /// As [`fit_curve`].
+    pub fn parameters_and_knots<const D: usize>(
+        &self,
+        points: &[[f64; D]],
+    ) -> Result<(Vec<f64>, KnotVector), Error> {
+        check_counts(points.len(), self.degree)?;
+        let params = self.parametrization.parameters(points)?;
+        let knots = match self.control_points {
+            // As many control points as data points: the least-squares
+            // minimum is 0, the interpolant. Eq. 9.69 would place the knots
+            // so that the system is nearly singular (condition numbers of
+            // 10¹⁵ and more were seen on random data), Eq. 9.8 does not.
+            Some(count) if count != points.len() => {
+                approximation_knots(&params, self.degree, count)?
+            }
+            _ => averaging_knots(&params, self.degree)?,
+        };
+        Ok((params, knots))
+    }
+}
+
+/// A fitted crisp curve and the parameters its data got.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CurveFit<const D: usize> {
+    /// The curve: weights 1, clamped knots on `[0, 1]`.
+    pub curve: NurbsCurve<D>,
+    /// The parameter `ūₖ` of each data point.
+    pub params: Vec<f64>,
+    /// The estimated condition number of the system that was solved: the
+    /// control points may be wrong in their last log₁₀(condition) digits.
+    pub condition: f64,
+}
+
+/// Fits a B-spline curve (all weights 1) to `points`.
+///
+/// ```text
+/// interpolation:  C(ūₖ) = Qₖ for k = 0 … m,  n + 1 = m + 1 control points   (A9.1)
+/// least squares:  C(ū₀) = Q₀, C(ū_m) = Q_m,  min Σ_{k=1}^{m−1} |Qₖ − C(ūₖ)|²   (§9.4.1)
+/// ```
+/// Parameters from [`Parametrization`], knots by averaging (Eq. 9.8) or by
+/// Eqs. 9.68–9.69 ([`FitOptions::parameters_and_knots`]). The linear systems
+/// are banded and solved by Givens QR (see ARCHITECTURE.md), which needs
+/// neither pivoting nor the normal equations; their condition number is
+/// estimated and returned.
+///
+/// # Errors
+/// [`Error::ZeroDegreeFit`]; [`Error::TooFewDataPoints`] for fewer than `p + 1`
+/// points; [`Error::ControlPointCount`]; [`Error::CoincidentDataPoints`] for
+/// equal neighbours under chord-length or centripetal parameters;
+/// [`Error::NotFinite`] for a non-finite coordinate; [`Error::SingularFit`] if
+/// the system is singular to working precision; [`Error::IllConditionedFit`]
+/// if its condition number exceeds 10¹².
+///
+/// # Examples
+/// Points on the parabola `y = x²` sampled at its own chord-length parameters
+/// are reproduced by a quadratic interpolant wherever it is evaluated:
+/// ```
+/// # use t2spline::fit::{fit_curve, FitOptions};
+/// let q: Vec<[f64; 2]> = (0..6).map(|i| { let x = i as f64 / 5.0; [x, x * x] }).collect();
+/// let fit = fit_curve(&q, &FitOptions::interpolation(2))?;
+/// for (t, qk) in fit.params.iter().zip(&q) {
+///     let c = fit.curve.eval(*t)?;
+///     assert!((c[0] - qk[0]).abs() < 1e-14 && (c[1] - qk[1]).abs() < 1e-14);
+/// }
+/// # Ok::<(), t2spline::Error>(())
+/// ```
+pub fn fit_curve<const D: usize>(
+    points: &[[f64; D]],
+    options: &FitOptions,
+) -> Result<CurveFit<D>, Error> {
+    check_finite(points)?;
+    let (params, knots) = options.parameters_and_knots(points)?;
+    let design = Design::new(&params, &knots)?;
+    let control = design.fit(points)?;
+    let weights = vec![1.0; design.count()];
+    let curve = NurbsCurve::try_new(control, weights, knots)?;
+    Ok(CurveFit {
+        curve,
+        params,
+        condition: design.condition(),
+    })
+}
+
+/// [`Error::NotFinite`] at the first non-finite coordinate.
+pub(crate) fn check_finite<const D: usize>(points: &[[f64; D]]) -> Result<(), Error> {
+    for (i, p) in points.iter().enumerate() {
+        for (axis, &value) in crate::Axis::first::<D>().into_iter().zip(p) {
+            if !value.is_finite() {
+                return Err(Error::NotFinite {
+                    place: crate::Place::new(i, axis),
+                    what: "coordinate",
+                    value,
+                });
+            }
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,37 @@
+//! Fitting curves to data: global interpolation and least squares, crisp and
+//! fuzzy (The NURBS Book, 2nd ed., §9.2.1 and §9.4.1).
+//!
+//! - [`Parametrization`]: parameters of the data points (Eqs. 9.3–9.6).
+//! - [`averaging_knots`] (Eq. 9.8) and [`approximation_knots`] (Eqs. 9.68–9.69).
+//! - [`fit_curve`]: a crisp B-spline through the data (Algorithm A9.1) or
+//!   approximating them with the end points interpolated (§9.4.1).
+//! - [`fit_fuzzy`]: a fuzzy curve through fuzzy data points, with the order of
+//!   SPEC §1 kept by construction ([`FuzzyFitMode::Valid`]) or each layer
+//!   fitted on its own and checked ([`FuzzyFitMode::Independent`]).
+//!
+//! All linear systems are banded and solved by Givens QR
+//! (`banded.rs`); the valid fuzzy fit adds non-negative least squares
+//! (Lawson–Hanson, `nnls.rs`).
+//!
+//! ```
+//! use t2spline::fit::{fit_curve, FitOptions, Parametrization};
+//! let q = [[0.0, 0.0], [1.0, 2.0], [3.0, 3.0], [4.0, 1.0], [6.0, 0.0]];
+//! let options = FitOptions::interpolation(3).with_parametrization(Parametrization::Centripetal);
+//! let fit = fit_curve(&q, &options)?;
+//! let c = fit.curve.eval(fit.params[2])?;
+//! assert!((c[0] - 3.0).abs() < 1e-12 && (c[1] - 3.0).abs() < 1e-12);
+//! # Ok::<(), t2spline::Error>(())
+//! ```
+
+pub(crate) mod banded;
+mod curve;
+mod design;
+mod fuzzy;
+mod knots;
+mod nnls;
+mod parametrization;
+
+pub use curve::{fit_curve, CurveFit, FitOptions};
+pub use fuzzy::{fit_fuzzy, Deviation, FuzzyFit, FuzzyFitMode, OrderViolation};
+pub use knots::{approximation_knots, averaging_knots};
+pub use parametrization::Parametrization;
