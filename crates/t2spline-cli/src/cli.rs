@@ -26,6 +26,8 @@ pub enum Command {
     Plot(PlotArgs),
     /// Write a self-contained HTML report with an alpha slider into a folder.
     Report(ReportArgs),
+    /// Fit a fuzzy curve to fuzzy data points and write it as a job file.
+    Fit(FitArgs),
 }
 
 /// Arguments of `t2spline run`.
@@ -117,4 +119,35 @@ pub struct ReportArgs {
     /// job's alpha, else 0.5).
     #[arg(long, value_name = "A", allow_negative_numbers = true)]
     pub alpha: Option<f64>,
+}
+
+/// Arguments of `t2spline fit`.
+#[derive(Debug, Args)]
+pub struct FitArgs {
+    /// The data file: the keys of a job file except `weights` and `knots`; its
+    /// points are fuzzy data points. `-` reads standard input.
+    pub data: PathBuf,
+    /// Write the job file here instead of standard output (`-` is standard
+    /// output).
+    #[arg(short, long, value_name = "JOB.json")]
+    pub output: Option<PathBuf>,
+    /// How the data points get their parameters, from the crisp values:
+    /// chord length, centripetal (square roots of the chords) or uniform.
+    #[arg(long, value_name = "METHOD", default_value = "chord",
+          value_parser = clap::builder::PossibleValuesParser::new(["chord", "centripetal", "uniform"]))]
+    pub parametrization: String,
+    /// Approximate the data by least squares with M control points (the end
+    /// points interpolated) instead of interpolating them.
+    #[arg(long, value_name = "M")]
+    pub control_points: Option<usize>,
+    /// How the six non-crisp layers are fitted: `valid` fits the spreads as
+    /// nested non-negative quantities, so the control points are always valid
+    /// fuzzy numbers; `independent` fits each layer on its own and refuses to
+    /// write a job whose control points break the order.
+    #[arg(long, value_name = "MODE", default_value = "valid",
+          value_parser = clap::builder::PossibleValuesParser::new(["valid", "independent"]))]
+    pub fuzzy_fit: String,
+    /// Do not print the report on standard error.
+    #[arg(short, long)]
+    pub quiet: bool,
 }

@@ -5,7 +5,7 @@ use std::io::{Read, Write};
 use std::path::{Path, PathBuf};
 
 use anyhow::Context;
-use t2spline_io::{write_all_atomic, Error, Job};
+use t2spline_io::{write_all_atomic, Error, FitData, Job};
 
 /// Whether the path names a standard stream.
 pub fn is_stdio(path: &Path) -> bool {
@@ -30,11 +30,7 @@ pub fn read_job(path: &Path) -> anyhow::Result<Job> {
 /// returns it with its text (the report shows it).
 pub fn read_job_text(path: &Path) -> anyhow::Result<(Job, String)> {
     let text = if is_stdio(path) {
-        let mut text = String::new();
-        std::io::stdin()
-            .read_to_string(&mut text)
-            .context("standard input: cannot read")?;
-        text
+        read_stdin()?
     } else {
         std::fs::read_to_string(path).map_err(|source| Error::Read {
             path: path.to_owned(),
@@ -43,6 +39,23 @@ pub fn read_job_text(path: &Path) -> anyhow::Result<(Job, String)> {
     };
     let job = Job::parse(&text, &job_name(path))?;
     Ok((job, text))
+}
+
+/// Reads and validates the data file at `path`, or from standard input for `-`.
+pub fn read_data(path: &Path) -> anyhow::Result<FitData> {
+    if is_stdio(path) {
+        Ok(FitData::parse(&read_stdin()?, &job_name(path))?)
+    } else {
+        Ok(FitData::read(path)?)
+    }
+}
+
+fn read_stdin() -> anyhow::Result<String> {
+    let mut text = String::new();
+    std::io::stdin()
+        .read_to_string(&mut text)
+        .context("standard input: cannot read")?;
+    Ok(text)
 }
 
 /// Everything a command writes, gathered first and written at the end: the

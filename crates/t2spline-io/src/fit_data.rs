@@ -180,6 +180,22 @@ impl FitData {
         }
     }
 
+    /// The error for a fit whose control points break the order of SPEC §1:
+    /// one line per broken inequality, then `advice`, each naming this file.
+    #[must_use]
+    pub fn order_error(&self, violations: &[OrderViolation], advice: &str) -> Error {
+        let mut problems = vec![Problem::new(format!(
+            "fitting every layer on its own breaks the order of SPEC §1 at {} place(s) of the control points:",
+            violations.len()
+        ))];
+        problems.extend(violations.iter().map(|v| Problem::new(v.to_string())));
+        problems.push(Problem::new(advice));
+        Error::Invalid {
+            file: self.source.clone(),
+            problems,
+        }
+    }
+
     fn outcome<const D: usize>(&self, data_points: usize, fit: &FuzzyFit<D>) -> FitOutcome {
         let mixed_heights = Axis::first::<D>()
             .into_iter()

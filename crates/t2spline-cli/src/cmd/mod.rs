@@ -2,6 +2,7 @@
 //! the libraries.
 
 mod alpha;
+mod fit;
 mod plot;
 mod report;
 mod run;
@@ -16,5 +17,6 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<()> {
         Command::Validate(args) => validate::validate(&args),
         Command::Plot(args) => plot::plot(&args),
         Command::Report(args) => report::report(&args),
+        Command::Fit(args) => fit::fit(args),
     }
 }

@@ -152,7 +152,8 @@ impl Triangle {
     /// `Err` if a diagonal value is zero or negligible next to the largest.
     fn check_rank(&self) -> Result<(), Error> {
         let largest = (0..self.n).map(|j| self.at(j, 0).abs()).fold(0.0, f64::max);
-        match (0..self.n).find(|&j| !(self.at(j, 0).abs() > RANK_TOLERANCE * largest)) {
+        let negligible = |d: f64| d.is_nan() || d <= RANK_TOLERANCE * largest;
+        match (0..self.n).find(|&j| negligible(self.at(j, 0).abs())) {
             Some(column) => Err(Error::SingularFit { column }),
             None => Ok(()),
         }

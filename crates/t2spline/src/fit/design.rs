@@ -64,7 +64,7 @@ impl Design {
             interior.push_row(start, &values[skip..skip + take]);
         }
         let condition = condition(&interior).map_err(|e| shift_column(e, 1))?;
-        if !(condition <= MAX_CONDITION) {
+        if condition.is_nan() || condition > MAX_CONDITION {
             return Err(Error::IllConditionedFit { condition });
         }
         Ok(Design {

@@ -1,0 +1,151 @@
+//! `t2spline fit DATA.json [-o JOB.json] [--parametrization M] [--control-points M]
+//! [--fuzzy-fit valid|independent] [-q]`.
+
+use std::path::PathBuf;
+
+use anyhow::anyhow;
+use t2spline::fit::{FitOptions, FuzzyFitMode, Parametrization};
+use t2spline::Layer;
+use t2spline_io::{to_json_pretty, Error, FitData, FitSummary, Job};
+
+use crate::cli::FitArgs;
+use crate::output::{job_name, read_data, Outputs};
+
+/// Condition numbers above this get a warning: the control points may then
+/// be wrong in their last eight digits or more.
+const WARN_CONDITION: f64 = 1e8;
+
+/// A fit with every input validated.
+struct Plan {
+    data: FitData,
+    options: FitOptions,
+    mode: FuzzyFitMode,
+    output: Option<PathBuf>,
+    quiet: bool,
+}
+
+impl Plan {
+    fn new(args: FitArgs) -> anyhow::Result<Plan> {
+        // clap has checked the names; the parsers agree with its lists.
+        let parametrization: Parametrization = args
+            .parametrization
+            .parse()
+            .map_err(|e: String| anyhow!(e))?;
+        let mode: FuzzyFitMode = args.fuzzy_fit.parse().map_err(|e: String| anyhow!(e))?;
+        let data = read_data(&args.data)?;
+        if let Some(m) = args.control_points {
+            let (min, max) = (data.degree + 1, data.len());
+            if m < min || m > max {
+                return Err(Error::Option {
+                    option: "--control-points",
+                    message: format!(
+                        "{m} is outside [{min}, {max}]: at least degree + 1, at most the {max} data points of {}",
+                        data.source
+                    ),
+                }
+                .into());
+            }
+        }
+        Ok(Plan {
+            options: FitOptions {
+                degree: data.degree,
+                parametrization,
+                control_points: args.control_points,
+            },
+            data,
+            mode,
+            output: args.output,
+            quiet: args.quiet,
+        })
+    }
+}
+
+pub fn fit(args: FitArgs) -> anyhow::Result<()> {
+    let plan = Plan::new(args)?;
+    let outcome = plan.data.fit(&plan.options, plan.mode)?;
+    if !plan.quiet {
+        for line in report(&plan, &outcome.summary) {
+            eprintln!("t2spline fit: {line}");
+        }
+    }
+    let job = match outcome.job {
+        Ok(job) => job,
+        Err(violations) => {
+            return Err(plan
+                .data
+                .order_error(
+                    &violations,
+                    "no job written: these control points are not valid fuzzy numbers; `--fuzzy-fit valid` (the default) fits the spreads so that they are",
+                )
+                .into());
+        }
+    };
+    let text = to_json_pretty(&job);
+    // The last guard: what is written must be a valid job file.
+    let name = plan.output.as_deref().map_or("<stdout>".to_owned(), job_name);
+    Job::parse(&text, &name)
+        .map_err(|e| anyhow!("internal error: the fitted job does not validate:\n{e}"))?;
+    let mut out = Outputs::default();
+    out.to(plan.output.as_deref(), text.into_bytes());
+    out.commit()
+}
+
+/// The lines of the report on standard error.
+fn report(plan: &Plan, s: &FitSummary) -> Vec<String> {
+    let method = match plan.options.control_points {
+        None => "interpolation".to_owned(),
+        Some(_) => "least squares, end points interpolated".to_owned(),
+    };
+    let mut lines = vec![format!(
+        "{}: {} data points, degree {}, {} parameters: {method}, {} control points, condition number {:.1e}",
+        plan.data.source,
+        s.data_points,
+        plan.options.degree,
+        plan.options.parametrization,
+        s.control_points,
+        s.condition,
+    )];
+    if s.condition > WARN_CONDITION {
+        lines.push(format!(
+            "warning: the system is ill-conditioned: the control points may be wrong in their last {:.0} digits; fewer control points give a better-posed fit",
+            s.condition.log10()
+        ));
+    }
+    for (axis, h) in &s.mixed_heights {
+        lines.push(format!(
+            "{axis}: the data mix lower heights; the control points get the smallest, {}",
+            h.get()
+        ));
+    }
+    match (plan.mode, s.independent_violations.first()) {
+        (_, None) => lines.push(
+            "each layer fitted on its own gives valid fuzzy control points".to_owned(),
+        ),
+        (FuzzyFitMode::Valid, Some(first)) => lines.push(format!(
+            "each layer fitted on its own would break the order of SPEC §1 at {} place(s) (first: {first}); the spreads were fitted as nested non-negative increments instead",
+            s.independent_violations.len()
+        )),
+        (FuzzyFitMode::Independent, Some(_)) => {}
+    }
+    lines.push(
+        "largest deviation of each layer curve from its data, at the data parameters:".to_owned(),
+    );
+    for (layer, d) in s.deviations.iter() {
+        let at = if d.max > 0.0 {
+            format!("points[{}].{}", d.point, d.axis)
+        } else {
+            "-".to_owned()
+        };
+        let note = if layer == Layer::Crisp && plan.options.control_points.is_none() {
+            "  (interpolated)"
+        } else {
+            ""
+        };
+        lines.push(format!(
+            "  {:<14}{:>10.3e}  {at}{note}",
+            layer.name(),
+            d.max
+        ));
+    }
+    lines
+}

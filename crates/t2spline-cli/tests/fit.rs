@@ -1,0 +1,199 @@
+//! `t2spline fit`: the built binary on the shipped example and on bad input.
+
+use std::path::{Path, PathBuf};
+
+use assert_cmd::Command;
+use predicates::prelude::*;
+use serde_json::{json, Value};
+
+/// The shipped example (relative to this crate).
+fn example() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/fit-measurements.json")
+}
+
+fn t2spline() -> Command {
+    Command::cargo_bin("t2spline").unwrap()
+}
+
+fn read_json(path: &Path) -> Value {
+    serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
+}
+
+#[test]
+fn fits_the_example_into_a_job_that_runs() {
+    let dir = tempfile::tempdir().unwrap();
+    let job = dir.path().join("job.json");
+    t2spline()
+        .arg("fit")
+        .arg(example())
+        .arg("-o")
+        .arg(&job)
+        .assert()
+        .code(0)
+        .stdout("")
+        .stderr(predicate::str::contains(
+            "13 data points, degree 3, chord parameters: interpolation, 13 control points",
+        ))
+        .stderr(predicate::str::contains(
+            "each layer fitted on its own would break the order of SPEC §1",
+        ))
+        .stderr(
+            predicate::str::is_match(
+                r"crisp +[0-9.]+e-1[0-9] +points\[\d+\]\.[xy]  \(interpolated\)",
+            )
+            .unwrap(),
+        );
+    let v = read_json(&job);
+    assert_eq!(v["degree"], json!(3));
+    assert_eq!(v["points"].as_array().unwrap().len(), 13);
+    assert_eq!(v["samples"], json!(201));
+    t2spline()
+        .args(["validate"])
+        .arg(&job)
+        .assert()
+        .code(0)
+        .stdout(predicate::str::contains(
+            "ok: 2-D, 13 points, order 4, alpha 0.5, 201 samples",
+        ));
+    t2spline().arg("run").arg(&job).assert().code(0);
+}
+
+#[test]
+fn writes_to_standard_output_and_reads_standard_input() {
+    let text = std::fs::read_to_string(example()).unwrap();
+    let out = t2spline()
+        .args(["fit", "-", "--quiet", "--parametrization", "centripetal"])
+        .write_stdin(text)
+        .assert()
+        .code(0)
+        .stderr("")
+        .get_output()
+        .stdout
+        .clone();
+    let v: Value = serde_json::from_slice(&out).unwrap();
+    assert_eq!(v["knots"].as_array().unwrap().len(), 17);
+}
+
+#[test]
+fn least_squares_with_fewer_control_points() {
+    let out = t2spline()
+        .arg("fit")
+        .arg(example())
+        .args(["--control-points", "7", "-q"])
+        .assert()
+        .code(0)
+        .get_output()
+        .stdout
+        .clone();
+    let v: Value = serde_json::from_slice(&out).unwrap();
+    assert_eq!(v["points"].as_array().unwrap().len(), 7);
+    assert_eq!(v["knots"].as_array().unwrap().len(), 11);
+}
+
+#[test]
+fn independent_fit_of_the_example_is_refused_and_writes_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let job = dir.path().join("job.json");
+    std::fs::write(&job, "old").unwrap();
+    t2spline()
+        .arg("fit")
+        .arg(example())
+        .args(["--fuzzy-fit", "independent", "-o"])
+        .arg(&job)
+        .assert()
+        .code(2)
+        .stdout("")
+        .stderr(predicate::str::contains("fitting every layer on its own breaks the order of SPEC §1 at"))
+        .stderr(predicate::str::is_match(
+            r"t2spline: .*fit-measurements.json: control point \d+, [xy]: the order [a-z.]+ <= [a-z.]+ is broken: ",
+        ).unwrap())
+        .stderr(predicate::str::contains("no job written"));
+    assert_eq!(std::fs::read_to_string(&job).unwrap(), "old");
+}
+
+#[test]
+fn bad_options_are_named() {
+    t2spline()
+        .arg("fit")
+        .arg(example())
+        .args(["--control-points", "3"])
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains(
+            "t2spline: --control-points: 3 is outside [4, 13]",
+        ));
+    t2spline()
+        .arg("fit")
+        .arg(example())
+        .args(["--parametrization", "chordal"])
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("invalid value 'chordal'"));
+}
+
+fn write_data(dir: &Path, v: &Value) -> PathBuf {
+    let path = dir.join("data.json");
+    std::fs::write(&path, v.to_string()).unwrap();
+    path
+}
+
+#[test]
+fn bad_data_files_name_file_place_and_rule() {
+    let dir = tempfile::tempdir().unwrap();
+    let n = |c: f64| json!({"crisp": c, "upper": [c - 0.3, c + 0.3], "primary": [c - 0.2, c + 0.2], "lower": [c - 0.1, c + 0.1]});
+    let good: Vec<Value> = (0..5)
+        .map(|k| json!({"x": n(f64::from(k)), "y": n(f64::from(k * k))}))
+        .collect();
+
+    let mut v = json!({"degree": 2, "lower_height": 0.5, "knots": [0, 1], "points": good.clone()});
+    let path = write_data(dir.path(), &v);
+    t2spline()
+        .arg("fit")
+        .arg(&path)
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains(format!(
+            "t2spline: {}: knots: not allowed in a data file",
+            path.display()
+        )));
+
+    v = json!({"degree": 2, "lower_height": 0.5, "points": good.clone()});
+    v["points"][1]["y"]["primary"] = json!([0.5, 1.05]);
+    let path = write_data(dir.path(), &v);
+    t2spline()
+        .arg("fit")
+        .arg(&path)
+        .assert()
+        .code(2)
+        .stderr(format!(
+            "t2spline: {0}: points[1].y: the order upper.left <= primary.left is broken: 0.7 > 0.5\n\
+             t2spline: {0}: points[1].y: the order lower.right <= primary.right is broken: 1.1 > 1.05\n",
+            path.display()
+        ));
+
+    v = json!({"degree": 2, "lower_height": 0.5, "points": good.clone()});
+    v["points"][3] = v["points"][2].clone();
+    let path = write_data(dir.path(), &v);
+    t2spline()
+        .arg("fit")
+        .arg(&path)
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains(
+            "points[2] and points[3]: consecutive data points",
+        ));
+    // Uniform parameters accept the repeat (a curve may pass a point twice).
+    t2spline()
+        .arg("fit")
+        .arg(&path)
+        .args(["--parametrization", "uniform", "-q"])
+        .assert()
+        .code(0);
+
+    t2spline()
+        .arg("fit")
+        .arg(dir.path().join("missing.json"))
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("missing.json: cannot read"));
+}
