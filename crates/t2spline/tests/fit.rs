@@ -284,7 +284,7 @@ fn bad_data_are_clear_errors() {
 }
 
 /// Cases per property; each fits a few systems of up to 40 unknowns.
-const CASES: u32 = 2000;
+const CASES: u32 = 1000;
 
 fn options_strategy(points: usize) -> impl Strategy<Value = FitOptions> {
     let max_degree = (points - 1).min(5);

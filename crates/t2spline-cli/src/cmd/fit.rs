@@ -82,7 +82,10 @@ pub fn fit(args: FitArgs) -> anyhow::Result<()> {
     };
     let text = to_json_pretty(&job);
     // The last guard: what is written must be a valid job file.
-    let name = plan.output.as_deref().map_or("<stdout>".to_owned(), job_name);
+    let name = plan
+        .output
+        .as_deref()
+        .map_or("<stdout>".to_owned(), job_name);
     Job::parse(&text, &name)
         .map_err(|e| anyhow!("internal error: the fitted job does not validate:\n{e}"))?;
     let mut out = Outputs::default();
