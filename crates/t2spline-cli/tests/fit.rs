@@ -39,7 +39,7 @@ fn fits_the_example_into_a_job_that_runs() {
         ))
         .stderr(
             predicate::str::is_match(
-                r"crisp +[0-9.]+e-1[0-9] +points\[\d+\]\.[xy]  \(interpolated\)",
+                r"crisp +[0-9.]+e-1[0-9] +points\[\d+\]\.[xy] +\(interpolated\)",
             )
             .unwrap(),
         );

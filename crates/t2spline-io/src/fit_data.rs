@@ -59,6 +59,9 @@ pub struct FitSummary {
     /// For each layer, the largest distance between its curve and its data at
     /// the data parameters.
     pub deviations: Layers<Deviation>,
+    /// For each layer, the largest distance between its fitted spread
+    /// `layer − crisp` and the data's, at the data parameters.
+    pub spread_deviations: Layers<Deviation>,
     /// Where fitting each layer on its own breaks the order of SPEC §1.
     pub independent_violations: Vec<OrderViolation>,
     /// Coordinates whose data mix lower heights, with the (smallest) height
@@ -209,6 +212,7 @@ impl FitData {
             mode: fit.mode(),
             condition: fit.condition(),
             deviations: *fit.deviations(),
+            spread_deviations: *fit.spread_deviations(),
             independent_violations: fit.independent_violations().to_vec(),
             mixed_heights,
         };

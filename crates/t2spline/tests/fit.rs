@@ -234,6 +234,8 @@ fn constant_spreads_are_fitted_exactly_by_the_valid_fit() {
         for (layer, d) in fit.deviations().iter() {
             // Each layer is the crisp curve moved by a constant.
             assert!(d.max <= crisp_error + 1e-12, "{options:?}, {layer}: {d:?}");
+            let s = fit.spread_deviations()[layer];
+            assert!(s.max < 1e-12, "{options:?}, {layer}: spread {s:?}");
         }
         assert_eq!(fit.heights().map(|h| h.get()), [0.6, 0.6]);
         assert_eq!(fit.mixed_heights(), [false, false]);

@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 
 use anyhow::anyhow;
-use t2spline::fit::{FitOptions, FuzzyFitMode, Parametrization};
+use t2spline::fit::{Deviation, FitOptions, FuzzyFitMode, Parametrization};
 use t2spline::Layer;
 use t2spline_io::{to_json_pretty, Error, FitData, FitSummary, Job};
 
@@ -131,24 +131,41 @@ fn report(plan: &Plan, s: &FitSummary) -> Vec<String> {
         (FuzzyFitMode::Independent, Some(_)) => {}
     }
     lines.push(
-        "largest deviation of each layer curve from its data, at the data parameters:".to_owned(),
+        "largest deviation from the data at the data parameters, of each layer and of its spread (layer - crisp):"
+            .to_owned(),
     );
-    for (layer, d) in s.deviations.iter() {
-        let at = if d.max > 0.0 {
+    let at = |d: &Deviation| {
+        if d.max > 0.0 {
             format!("points[{}].{}", d.point, d.axis)
         } else {
             "-".to_owned()
-        };
-        let note = if layer == Layer::Crisp && plan.options.control_points.is_none() {
-            "  (interpolated)"
+        }
+    };
+    for (layer, d) in s.deviations.iter() {
+        let spread = &s.spread_deviations[layer];
+        let line = if layer == Layer::Crisp {
+            let note = if plan.options.control_points.is_none() {
+                "interpolated"
+            } else {
+                "least squares"
+            };
+            format!(
+                "  {:<14}{:>10.3e}  {:<14}({note})",
+                layer.name(),
+                d.max,
+                at(d)
+            )
         } else {
-            ""
+            format!(
+                "  {:<14}{:>10.3e}  {:<14}spread {:>9.3e}  {}",
+                layer.name(),
+                d.max,
+                at(d),
+                spread.max,
+                at(spread)
+            )
         };
-        lines.push(format!(
-            "  {:<14}{:>10.3e}  {at}{note}",
-            layer.name(),
-            d.max
-        ));
+        lines.push(line);
     }
     lines
 }

@@ -121,6 +121,7 @@ pub struct FuzzyFit<const D: usize> {
     heights: [Height; D],
     mixed_heights: [bool; D],
     deviations: Layers<Deviation>,
+    spread_deviations: Layers<Deviation>,
     independent_violations: Vec<OrderViolation>,
     condition: f64,
 }
@@ -179,7 +180,17 @@ pub fn fit_fuzzy<const D: usize>(
         FuzzyFitMode::Independent => independent,
         FuzzyFitMode::Valid => nested_spreads(&design, &layer_data, crisp)?,
     };
-    let deviations = Layers::from_fn(|l| deviation(&design.values(&control[l]), &layer_data[l]));
+    let fitted = Layers::from_fn(|l| design.values(&control[l]));
+    let deviations = Layers::from_fn(|l| deviation(&fitted[l], &layer_data[l]));
+    // Spreads `layer − crisp`, fitted and in the data.
+    let spread = |v: &Layers<Vec<[f64; D]>>, l: Layer| -> Vec<[f64; D]> {
+        v[l].iter()
+            .zip(&v[Layer::Crisp])
+            .map(|(a, c)| std::array::from_fn(|d| a[d] - c[d]))
+            .collect()
+    };
+    let spread_deviations =
+        Layers::from_fn(|l| deviation(&spread(&fitted, l), &spread(&layer_data, l)));
     let (heights, mixed_heights) = heights(data);
     Ok(FuzzyFit {
         mode,
@@ -189,6 +200,7 @@ pub fn fit_fuzzy<const D: usize>(
         heights,
         mixed_heights,
         deviations,
+        spread_deviations,
         independent_violations,
         condition: design.condition(),
     })
@@ -358,6 +370,14 @@ impl<const D: usize> FuzzyFit<D> {
     #[must_use]
     pub fn deviations(&self) -> &Layers<Deviation> {
         &self.deviations
+    }
+
+    /// How far each fitted spread `layer − crisp` is from the data's spread,
+    /// at the data parameters: the deviation of the layer without that of the
+    /// crisp layer (which least squares adds). Zero for the crisp layer.
+    #[must_use]
+    pub fn spread_deviations(&self) -> &Layers<Deviation> {
+        &self.spread_deviations
     }
 
     /// The largest deviation of the six non-crisp layers, and its layer.
