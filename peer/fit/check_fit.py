@@ -81,20 +81,17 @@ def random_data(rng, count, dim):
     return points
 
 
+def layer_value(number, layer):
+    """One of the seven values of a fuzzy number as written in a job file."""
+    if layer == "crisp":
+        return number["crisp"]
+    membership, side = layer.split("_")
+    return number[membership][0 if side == "left" else 1]
+
+
 def layer_values(points, layer, dim):
-    """The data of one layer as an (m+1) x dim array."""
-    out = []
-    for p in points:
-        row = []
-        for d in range(dim):
-            n = p[AXES[d]]
-            row.append({
-                "upper_left": n["upper"][0], "primary_left": n["primary"][0], "lower_left": n["lower"][0],
-                "crisp": n["crisp"], "lower_right": n["lower"][1], "primary_right": n["primary"][1],
-                "upper_right": n["upper"][1],
-            }[layer])
-        out.append(row)
-    return np.array(out)
+    """One layer of the points as an (m+1) x dim array."""
+    return np.array([[layer_value(p[AXES[d]], layer) for d in range(dim)] for p in points])
 
 
 def parameters(crisp, method):
@@ -165,19 +162,7 @@ def order_violations(layers, dim):
 
 
 def job_layers(job, dim):
-    out = {name: [] for name in LAYERS}
-    for p in job["points"]:
-        for name in LAYERS:
-            row = []
-            for d in range(dim):
-                n = p[AXES[d]]
-                row.append({
-                    "upper_left": n["upper"][0], "primary_left": n["primary"][0], "lower_left": n["lower"][0],
-                    "crisp": n["crisp"], "lower_right": n["lower"][1], "primary_right": n["primary"][1],
-                    "upper_right": n["upper"][1],
-                }[name])
-            out[name].append(row)
-    return {k: np.array(v) for k, v in out.items()}
+    return {name: layer_values(job["points"], name, dim) for name in LAYERS}
 
 
 def rel_error(ours, ref):

@@ -34,8 +34,12 @@ fn fits_the_example_into_a_job_that_runs() {
         .stderr(predicate::str::contains(
             "13 data points, degree 3, chord parameters: interpolation, 13 control points",
         ))
+        // The README quotes these numbers.
         .stderr(predicate::str::contains(
-            "each layer fitted on its own would break the order of SPEC §1",
+            "each layer fitted on its own would break the order of SPEC §1 at 35 place(s)",
+        ))
+        .stderr(predicate::str::contains(
+            "upper_left      1.604e-1  points[8].y   spread  1.604e-1  points[8].y",
         ))
         .stderr(
             predicate::str::is_match(
@@ -196,4 +200,32 @@ fn bad_data_files_name_file_place_and_rule() {
         .assert()
         .code(2)
         .stderr(predicate::str::contains("missing.json: cannot read"));
+}
+
+#[test]
+fn independent_fit_is_written_when_it_is_valid() {
+    // Equal spreads everywhere: every layer is the crisp curve moved by a
+    // constant, and fitting each on its own keeps the order.
+    let dir = tempfile::tempdir().unwrap();
+    let n = |c: f64| json!({"crisp": c, "upper": [c - 0.3, c + 0.4], "primary": [c - 0.2, c + 0.2], "lower": [c - 0.1, c + 0.05]});
+    let points: Vec<Value> = (0..6)
+        .map(|k| json!({"x": n(f64::from(k)), "y": n(f64::from(k * k % 7))}))
+        .collect();
+    let path = write_data(
+        dir.path(),
+        &json!({"order": 3, "lower_height": 0.8, "points": points}),
+    );
+    t2spline()
+        .arg("fit")
+        .arg(&path)
+        .args(["--fuzzy-fit", "independent", "-o"])
+        .arg(dir.path().join("job.json"))
+        .assert()
+        .code(0)
+        .stderr(predicate::str::contains(
+            "each layer fitted on its own gives valid fuzzy control points",
+        ));
+    let v = read_json(&dir.path().join("job.json"));
+    assert_eq!(v["order"], json!(3));
+    assert_eq!(v["lower_height"], json!(0.8));
 }

@@ -38,22 +38,23 @@ const NUMBER_KEYS: &[&str] = &["crisp", "upper", "primary", "lower", "lower_heig
 
 /// Parses `text` as a job, or returns every problem found.
 pub(super) fn parse(text: &str) -> Result<Job, Vec<Problem>> {
-    let value: Value = serde_json::from_str(text).map_err(|e| vec![syntax_problem(&e)])?;
-    let mut w = Walker::default();
-    let job = w.job(&value);
-    match job {
-        Some(job) if w.problems.is_empty() => Ok(job),
-        _ => Err(w.problems),
-    }
+    walk(text, Walker::job)
 }
 
 /// Parses `text` as a data file for fitting, or returns every problem found.
 pub(crate) fn parse_data(text: &str) -> Result<FitData, Vec<Problem>> {
+    walk(text, Walker::data)
+}
+
+/// Parses `text` as JSON and reads it with `read`, collecting every problem.
+fn walk<T>(
+    text: &str,
+    read: impl FnOnce(&mut Walker, &Value) -> Option<T>,
+) -> Result<T, Vec<Problem>> {
     let value: Value = serde_json::from_str(text).map_err(|e| vec![syntax_problem(&e)])?;
     let mut w = Walker::default();
-    let data = w.data(&value);
-    match data {
-        Some(data) if w.problems.is_empty() => Ok(data),
+    match read(&mut w, &value) {
+        Some(out) if w.problems.is_empty() => Ok(out),
         _ => Err(w.problems),
     }
 }
