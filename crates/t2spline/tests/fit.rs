@@ -368,6 +368,15 @@ proptest! {
     }
 
     #[test]
+    fn least_squares_with_as_many_control_points_as_data_is_interpolation(
+        (q, options) in data_and_options::<2>()
+    ) {
+        let interpolation = FitOptions { control_points: None, ..options };
+        let full = FitOptions { control_points: Some(q.len()), ..options };
+        prop_assert_eq!(fit_curve(&q, &full).unwrap(), fit_curve(&q, &interpolation).unwrap());
+    }
+
+    #[test]
     fn least_squares_residuals_are_orthogonal_to_the_interior_basis(
         (q, options) in data_and_options::<3>()
     ) {
