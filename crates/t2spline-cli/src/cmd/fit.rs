@@ -141,6 +141,14 @@ fn report(plan: &Plan, s: &FitSummary) -> Vec<String> {
             "-".to_owned()
         }
     };
+    // The location column is as wide as its longest entry.
+    let width = s
+        .deviations
+        .iter()
+        .map(|(_, d)| at(d).len())
+        .max()
+        .unwrap_or(0)
+        + 2;
     for (layer, d) in s.deviations.iter() {
         let spread = &s.spread_deviations[layer];
         let line = if layer == Layer::Crisp {
@@ -150,14 +158,14 @@ fn report(plan: &Plan, s: &FitSummary) -> Vec<String> {
                 "least squares"
             };
             format!(
-                "  {:<14}{:>10.3e}  {:<14}({note})",
+                "  {:<14}{:>10.3e}  {:<width$}({note})",
                 layer.name(),
                 d.max,
                 at(d)
             )
         } else {
             format!(
-                "  {:<14}{:>10.3e}  {:<14}spread {:>9.3e}  {}",
+                "  {:<14}{:>10.3e}  {:<width$}spread {:>9.3e}  {}",
                 layer.name(),
                 d.max,
                 at(d),

@@ -40,11 +40,21 @@ impl BandMatrix {
 
     /// Appends a row whose values start at column `first`.
     ///
+    /// Rows must come in order of their first column, as the basis at
+    /// increasing parameters does: the row-by-row reduction of
+    /// [`least_squares`] relies on it (an earlier row never reaches further
+    /// right than a later one's band).
+    ///
     /// # Panics
-    /// If `values` is longer than the band or reaches past the last column
-    /// (with non-zero values); both are internal invariants of the callers.
+    /// If `values` is longer than the band, reaches past the last column (with
+    /// non-zero values), or `first` is less than the previous row's; all are
+    /// internal invariants of the callers.
     pub(crate) fn push_row(&mut self, first: usize, values: &[f64]) {
         assert!(values.len() <= self.width, "row longer than the band");
+        assert!(
+            self.first.last().is_none_or(|&previous| previous <= first),
+            "rows out of order"
+        );
         assert!(
             values
                 .iter()
@@ -114,6 +124,7 @@ impl BandMatrix {
         }
         let mut out = BandMatrix::new(keep.len(), self.width);
         let mut row = Vec::with_capacity(self.width);
+        let mut previous = 0;
         for r in 0..self.rows() {
             let (first, v) = self.row(r);
             row.clear();
@@ -125,7 +136,9 @@ impl BandMatrix {
                     row.push(a);
                 }
             }
-            out.push_row(start.unwrap_or(0), &row);
+            // A row with no kept column is zero; keep the order of first columns.
+            previous = start.unwrap_or(previous);
+            out.push_row(previous, &row);
         }
         out
     }
