@@ -240,3 +240,30 @@ pub fn fuzzy_data<const D: usize>(
         })
     })
 }
+
+/// How far degree elevation (The NURBS Book A5.9) may move a curve through
+/// rounding, for tests: A5.9 removes knots by extrapolation, which amplifies
+/// the rounding of homogeneous coordinates by up to the ratio of the domain to
+/// the smallest gap between distinct knots, and dividing by the weight adds the
+/// ratio of the largest to the smallest weight:
+///
+/// ```text
+/// tolerance = 64 ε · scale · (w_max / w_min) · (b − a) / min gap
+/// ```
+/// `scale` is the size of the coordinates (their largest absolute value).
+#[must_use]
+pub fn elevation_tolerance(knots: &KnotVector, weights: &[f64], scale: f64) -> f64 {
+    let d = knots.domain();
+    let min_gap = knots
+        .as_slice()
+        .windows(2)
+        .map(|w| w[1] - w[0])
+        .filter(|&g| g > 0.0)
+        .fold(f64::INFINITY, f64::min);
+    let (w_min, w_max) = weights
+        .iter()
+        .fold((f64::INFINITY, 0.0f64), |(lo, hi), &w| {
+            (lo.min(w), hi.max(w))
+        });
+    64.0 * f64::EPSILON * scale * (w_max / w_min) * (d.end - d.start) / min_gap
+}
