@@ -493,6 +493,26 @@ pub enum Error {
         /// The first of them.
         first: crate::fit::OrderViolation,
     },
+
+    /// A list given to the sampling engine has the wrong length.
+    ///
+    /// ```
+    /// # use t2spline::{Error, KnotVector};
+    /// # use t2spline::sampling::Sampler;
+    /// let knots = KnotVector::clamped_uniform(1, 2)?;
+    /// let e = Sampler::try_new(&knots, &[1.0, 1.0], &[vec![0.0, 1.0, 2.0]]).unwrap_err();
+    /// assert!(matches!(e, Error::Length { expected: 2, found: 3, .. }));
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("{what}: expected {expected}, got {found}")]
+    Length {
+        /// What was counted.
+        what: &'static str,
+        /// The length needed.
+        expected: usize,
+        /// The length given.
+        found: usize,
+    },
 }
 
 impl Error {

@@ -55,7 +55,12 @@
 //!   [`Distance`] between the crisp and the defuzzified curve (§7).
 //! - [`fit`]: curves through data or approximating them (interpolation and
 //!   least squares, The NURBS Book §9.2.1 and §9.4.1), crisp and fuzzy.
-//! - Features: `serde` (Serialize for the data types), `proptest` (generators in
+//! - [`sampling`]: the fast sampling engine — one power form of the rational
+//!   basis per span for all layers and alpha levels, structure-of-arrays output,
+//!   multi-threaded for large jobs ([`NurbsCurve::sample_soa`],
+//!   [`FuzzyCurve::sample_layers`], [`FuzzyCurve::sample_sweep`]).
+//! - Features: `parallel` (default: large sampling jobs run on rayon's threads),
+//!   `serde` (Serialize for the data types), `proptest` (generators in
 //!   `strategies`).
 
 mod error;
@@ -63,6 +68,7 @@ pub mod fit;
 pub mod fuzzy;
 pub mod nurbs;
 pub mod pipeline;
+pub mod sampling;
 #[cfg(any(test, feature = "proptest"))]
 pub mod strategies;
 

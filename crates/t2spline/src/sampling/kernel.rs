@@ -1,0 +1,198 @@
+//! The inner loops of [`Sampler`]: blocks of parameters, runs of parameters in
+//! one span, and Horner's rule for a fixed order so that the compiler unrolls it
+//! and vectorises across parameters.
+
+use crate::sampling::power_form::Span;
+use crate::sampling::{Params, Sampler};
+
+/// Parameters per block: the parameters, local variables and reciprocal
+/// denominators of a block stay in the first-level cache.
+pub(crate) const BLOCK: usize = 512;
+
+/// Evaluates the parameters `first ..` of `params` (as many as each slice of
+/// `out` is long) into `out`, one slice per channel.
+pub(crate) fn run(sampler: &Sampler, params: Params<'_>, first: usize, out: &mut [&mut [f64]]) {
+    let Some(len) = out.first().map(|o| o.len()) else {
+        return; // No channels: nothing to compute.
+    };
+    let domain = sampler.domain();
+    let spans = sampler.spans();
+    let mut t = [0.0; BLOCK];
+    let mut s = [0.0; BLOCK];
+    let mut r = [0.0; BLOCK];
+    let mut span = 0;
+    let mut done = 0;
+    while done < len {
+        let n = BLOCK.min(len - done);
+        params.fill(domain, first + done, &mut t[..n]);
+        let mut i = 0;
+        while i < n {
+            span = locate(spans, span, t[i]);
+            let j = i
+                + 1
+                + t[i + 1..n]
+                    .iter()
+                    .take_while(|&&x| contains(spans, span, x))
+                    .count();
+            evaluate(
+                sampler,
+                span,
+                &t[i..j],
+                &mut s[..j - i],
+                &mut r[..j - i],
+                out,
+                done + i,
+            );
+            i = j;
+        }
+        apply_bounds(sampler, out, done..done + n, &mut t);
+        done += n;
+    }
+}
+
+/// Whether `t` (in the domain) belongs to span `k`: `[start, end)`, or
+/// `[start, end]` for the last span.
+#[inline]
+fn contains(spans: &[Span], k: usize, t: f64) -> bool {
+    let sp = &spans[k];
+    sp.start <= t && (t < sp.end || k + 1 == spans.len())
+}
+
+/// The span of `t` (in the domain): the hint or its successor when parameters
+/// are sorted, otherwise by binary search (the span to the right of an interior
+/// knot, the last span at the right end).
+#[inline]
+fn locate(spans: &[Span], hint: usize, t: f64) -> usize {
+    if contains(spans, hint, t) {
+        hint
+    } else if hint + 1 < spans.len() && contains(spans, hint + 1, t) {
+        hint + 1
+    } else {
+        spans
+            .partition_point(|sp| sp.start <= t)
+            .saturating_sub(1)
+            .min(spans.len() - 1)
+    }
+}
+
+/// Evaluates the parameters `t`, all in span `span`, into `out[..][at ..]`;
+/// `s` and `r` are scratch of `t.len()`.
+#[inline]
+fn evaluate(
+    sampler: &Sampler,
+    span: usize,
+    t: &[f64],
+    s: &mut [f64],
+    r: &mut [f64],
+    out: &mut [&mut [f64]],
+    at: usize,
+) {
+    let sp = sampler.spans()[span];
+    let table = sampler.span_table(span);
+    match sampler.order() {
+        1 => evaluate_order::<1>(&sp, table, t, s, r, out, at),
+        2 => evaluate_order::<2>(&sp, table, t, s, r, out, at),
+        3 => evaluate_order::<3>(&sp, table, t, s, r, out, at),
+        4 => evaluate_order::<4>(&sp, table, t, s, r, out, at),
+        5 => evaluate_order::<5>(&sp, table, t, s, r, out, at),
+        6 => evaluate_order::<6>(&sp, table, t, s, r, out, at),
+        7 => evaluate_order::<7>(&sp, table, t, s, r, out, at),
+        8 => evaluate_order::<8>(&sp, table, t, s, r, out, at),
+        order => evaluate_any(order, &sp, table, t, s, r, out, at),
+    }
+}
+
+/// `Σₖ c[k]·sᵏ` by Horner's rule, `K` coefficients.
+#[inline(always)]
+fn horner<const K: usize>(c: &[f64; K], s: f64) -> f64 {
+    let mut acc = c[K - 1];
+    for k in (0..K - 1).rev() {
+        acc = acc * s + c[k];
+    }
+    acc
+}
+
+/// Horner's rule for any number of coefficients, with the same operations in
+/// the same order as [`horner`].
+#[inline]
+fn horner_any(c: &[f64], s: f64) -> f64 {
+    let (last, rest) = c.split_last().unwrap_or((&0.0, &[]));
+    rest.iter().rev().fold(*last, |acc, &ck| acc * s + ck)
+}
+
+#[inline(always)]
+fn evaluate_order<const K: usize>(
+    sp: &Span,
+    table: &[f64],
+    t: &[f64],
+    s: &mut [f64],
+    r: &mut [f64],
+    out: &mut [&mut [f64]],
+    at: usize,
+) {
+    let denominator: [f64; K] = std::array::from_fn(|k| table[k]);
+    for ((s, r), &t) in s.iter_mut().zip(r.iter_mut()).zip(t) {
+        let x = (t - sp.mid) * sp.inv_half;
+        *s = x;
+        // W > 0: the basis is non-negative, sums to 1, and the weights are > 0.
+        *r = 1.0 / horner(&denominator, x);
+    }
+    for (row, o) in table[K..].chunks_exact(K).zip(out.iter_mut()) {
+        let c: [f64; K] = std::array::from_fn(|k| row[k]);
+        let o = &mut o[at..at + t.len()];
+        for ((o, &x), &r) in o.iter_mut().zip(s.iter()).zip(r.iter()) {
+            *o = horner(&c, x) * r;
+        }
+    }
+}
+
+#[allow(clippy::too_many_arguments)]
+fn evaluate_any(
+    order: usize,
+    sp: &Span,
+    table: &[f64],
+    t: &[f64],
+    s: &mut [f64],
+    r: &mut [f64],
+    out: &mut [&mut [f64]],
+    at: usize,
+) {
+    let denominator = &table[..order];
+    for ((s, r), &t) in s.iter_mut().zip(r.iter_mut()).zip(t) {
+        let x = (t - sp.mid) * sp.inv_half;
+        *s = x;
+        *r = 1.0 / horner_any(denominator, x);
+    }
+    for (c, o) in table[order..].chunks_exact(order).zip(out.iter_mut()) {
+        let o = &mut o[at..at + t.len()];
+        for ((o, &x), &r) in o.iter_mut().zip(s.iter()).zip(r.iter()) {
+            *o = horner_any(c, x) * r;
+        }
+    }
+}
+
+/// Applies the sampler's bounds to `range` of every channel; `scratch` holds a
+/// copy of the bounding channel so that the loop reads one slice and writes
+/// another.
+fn apply_bounds(
+    sampler: &Sampler,
+    out: &mut [&mut [f64]],
+    range: std::ops::Range<usize>,
+    scratch: &mut [f64; BLOCK],
+) {
+    let n = range.len();
+    for b in sampler.bounds() {
+        if let Some(lo) = b.at_least {
+            scratch[..n].copy_from_slice(&out[lo][range.clone()]);
+            for (o, &l) in out[b.channel][range.clone()].iter_mut().zip(&scratch[..n]) {
+                *o = o.max(l);
+            }
+        }
+        if let Some(hi) = b.at_most {
+            scratch[..n].copy_from_slice(&out[hi][range.clone()]);
+            for (o, &h) in out[b.channel][range.clone()].iter_mut().zip(&scratch[..n]) {
+                *o = o.min(h);
+            }
+        }
+    }
+}

@@ -1,0 +1,35 @@
+//! Fast sampling: many curves that share knots and weights, at many parameters.
+//!
+//! Figures, reports, alpha sweeps and fitting evaluate one curve at many
+//! parameters for its seven layers and many alpha levels. The [`Sampler`] turns
+//! the rational basis into power form once per knot span and applies it to
+//! every *channel* (one coordinate of one curve): for a parameter it evaluates
+//! the common denominator once, and each channel with one Horner evaluation.
+//! Sorted parameters are walked span by span; output is structure of arrays
+//! ([`CurveSamples`]: one vector per coordinate); large jobs run on rayon's
+//! threads (feature `parallel`, on by default) with results identical bit for
+//! bit to one thread.
+//!
+//! The curve types use it:
+//!
+//! | call | samples |
+//! |---|---|
+//! | [`NurbsCurve::sample_soa`](crate::NurbsCurve::sample_soa) | one crisp curve |
+//! | [`FuzzyCurve::sample_layers`](crate::FuzzyCurve::sample_layers) | the seven layer curves (stage 1) |
+//! | [`FuzzyCurve::sample_sweep`](crate::FuzzyCurve::sample_sweep) | stage 1 and stages 2–4 at many alpha levels |
+//! | [`Solution::sample_stages`](crate::Solution::sample_stages) | stages 2–4 at one level |
+//!
+//! The straightforward evaluators ([`NurbsCurve::eval`](crate::NurbsCurve::eval),
+//! [`FuzzyCurve::eval_layers`](crate::FuzzyCurve::eval_layers)) stay as the
+//! reference that the tests hold this engine to (1e-12 relative).
+
+mod curves;
+mod kernel;
+mod params;
+mod power_form;
+mod sampler;
+mod samples;
+
+pub use params::Params;
+pub use sampler::{Bound, Sampler};
+pub use samples::{CurveSamples, LayerSamples, StageSamples, SweepSamples};

@@ -1,0 +1,293 @@
+//! The sampling engine: many curves with one knot vector and one set of weights,
+//! evaluated together from one power form per span.
+
+use crate::error::{Error, Place};
+use crate::nurbs::curve::check_weights;
+use crate::nurbs::{Domain, KnotVector};
+use crate::sampling::kernel;
+use crate::sampling::power_form::{PowerBasis, Span};
+use crate::sampling::Params;
+
+/// A rule that keeps one sampled channel between two others, applied after
+/// evaluation: `out[channel] = clamp(out[channel], out[at_least], out[at_most])`.
+///
+/// Use it only where the exact curves obey the order (for instance layer curves
+/// whose control values are ordered, SPEC §6): then it only removes rounding,
+/// and never moves a value further from the exact one than the rounding error
+/// of its neighbour. Bounds are applied in the order given, so a bound may rely
+/// on channels that earlier bounds have settled.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Bound {
+    /// The channel to clamp.
+    pub channel: usize,
+    /// A channel it must not be below.
+    pub at_least: Option<usize>,
+    /// A channel it must not be above.
+    pub at_most: Option<usize>,
+}
+
+/// Evaluates many rational B-spline curves that share one knot vector and one
+/// set of weights — the seven layer curves of a fuzzy curve, the curves of every
+/// stage at any number of alpha levels — at many parameters (SPEC §6–§7).
+///
+/// A *channel* is one coordinate of one curve: the values `vᵢ` it takes at the
+/// control points. On construction every non-empty span is converted once to
+/// power form in its local variable `s ∈ [−1, 1]` (see `power_form.rs`), for
+/// the common denominator and for every channel's numerator:
+///
+/// ```text
+/// W(s) = Σₖ dₖ sᵏ = Σⱼ wⱼ Nⱼ,ₚ(t),   Vᶜ(s) = Σₖ aᶜₖ sᵏ = Σⱼ wⱼ Nⱼ,ₚ(t) vᶜⱼ,   Cᶜ(t) = Vᶜ(s) / W(s)
+/// ```
+/// so a parameter costs one Horner evaluation and one division for the
+/// denominator and one Horner evaluation and one multiplication per channel.
+/// Sorted parameters are walked span by span, unsorted ones are found by binary
+/// search; the value at an interior knot is taken from the right and the right
+/// end of the domain uses the last non-empty span, as [`crate::NurbsCurve::eval`]
+/// does. Output is one array per channel (structure of arrays). With the
+/// `parallel` feature, large jobs are split into chunks over rayon's threads;
+/// every value is computed by the same operations in either case, so the results
+/// are bit for bit the same.
+///
+/// # Examples
+/// ```
+/// # use t2spline::{KnotVector, NurbsCurve};
+/// # use t2spline::sampling::{Params, Sampler};
+/// // Two channels (x and y) of the rational quarter circle.
+/// let w = std::f64::consts::FRAC_1_SQRT_2;
+/// let knots = KnotVector::clamped_uniform(2, 3)?;
+/// let sampler = Sampler::try_new(&knots, &[1.0, w, 1.0], &[[1.0, 1.0, 0.0], [0.0, 1.0, 1.0]])?;
+/// let [x, y] = <[Vec<f64>; 2]>::try_from(sampler.sample(Params::Uniform(11))?).unwrap();
+/// assert!(x.iter().zip(&y).all(|(x, y)| (x.hypot(*y) - 1.0).abs() < 1e-14));
+/// # Ok::<(), t2spline::Error>(())
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct Sampler {
+    domain: Domain,
+    order: usize,
+    spans: Vec<Span>,
+    channels: usize,
+    /// Per span: `channels + 1` rows of `order` power coefficients, row 0 the
+    /// denominator.
+    table: Vec<f64>,
+    bounds: Vec<Bound>,
+}
+
+/// Below this many channel values a job runs on the calling thread: splitting
+/// costs more than it saves.
+#[cfg(feature = "parallel")]
+const PARALLEL_MIN_VALUES: usize = 1 << 16;
+
+/// Smallest number of parameters per parallel task.
+#[cfg(feature = "parallel")]
+const MIN_CHUNK: usize = 4096;
+
+impl Sampler {
+    /// Prepares `channels` (each one value per control point) for sampling, with
+    /// the curve's knots and weights.
+    ///
+    /// # Errors
+    /// [`Error::WeightCount`] or [`Error::Weight`] for wrong weights;
+    /// [`Error::Length`] if a channel does not have one value per control point;
+    /// [`Error::NotFinite`] for a value that is NaN or infinite.
+    pub fn try_new<C: AsRef<[f64]>>(
+        knots: &KnotVector,
+        weights: &[f64],
+        channels: &[C],
+    ) -> Result<Self, Error> {
+        let n = knots.count();
+        check_weights(weights, n)?;
+        for channel in channels {
+            let values = channel.as_ref();
+            if values.len() != n {
+                return Err(Error::Length {
+                    what: "channel values (one per control point)",
+                    expected: n,
+                    found: values.len(),
+                });
+            }
+            if let Some((i, &value)) = values.iter().enumerate().find(|(_, v)| !v.is_finite()) {
+                return Err(Error::NotFinite {
+                    place: Place {
+                        point: Some(i),
+                        axis: None,
+                    },
+                    what: "channel value",
+                    value,
+                });
+            }
+        }
+        Ok(Self::new_unchecked(knots, weights, channels))
+    }
+
+    /// [`Sampler::try_new`] for inputs known to be valid.
+    pub(crate) fn new_unchecked<C: AsRef<[f64]>>(
+        knots: &KnotVector,
+        weights: &[f64],
+        channels: &[C],
+    ) -> Self {
+        let basis = PowerBasis::new(knots, weights);
+        let order = basis.order();
+        let rows = channels.len() + 1;
+        let mut table = Vec::with_capacity(basis.spans().len() * rows * order);
+        for (k, span) in basis.spans().iter().enumerate() {
+            let c = basis.span_coefficients(k);
+            // Row 0: the denominator Σⱼ wⱼNⱼ; then each channel's numerator.
+            for power in 0..order {
+                table.push((0..order).map(|j| c[j * order + power]).sum());
+            }
+            for channel in channels {
+                let v = &channel.as_ref()[span.first..span.first + order];
+                for power in 0..order {
+                    table.push((0..order).map(|j| c[j * order + power] * v[j]).sum());
+                }
+            }
+        }
+        Sampler {
+            domain: knots.domain(),
+            order,
+            spans: basis.spans().to_vec(),
+            channels: channels.len(),
+            table,
+            bounds: Vec::new(),
+        }
+    }
+
+    /// Adds order-keeping rules, applied in the given order after evaluation.
+    ///
+    /// # Errors
+    /// [`Error::Length`] if a bound names a channel that does not exist.
+    pub fn with_bounds(mut self, bounds: &[Bound]) -> Result<Self, Error> {
+        for b in bounds {
+            let worst = [Some(b.channel), b.at_least, b.at_most]
+                .into_iter()
+                .flatten()
+                .max()
+                .unwrap_or(0);
+            if worst >= self.channels {
+                return Err(Error::Length {
+                    what: "channels (a bound names a channel past the last)",
+                    expected: self.channels,
+                    found: worst + 1,
+                });
+            }
+        }
+        self.bounds.extend_from_slice(bounds);
+        Ok(self)
+    }
+
+    /// The number of channels.
+    #[must_use]
+    pub fn channels(&self) -> usize {
+        self.channels
+    }
+
+    /// The parameter domain.
+    #[must_use]
+    pub fn domain(&self) -> Domain {
+        self.domain
+    }
+
+    /// Samples every channel at `params`; one vector per channel.
+    ///
+    /// # Errors
+    /// [`Error::OutOfDomain`] for the first parameter outside the domain.
+    pub fn sample<'a>(&self, params: impl Into<Params<'a>>) -> Result<Vec<Vec<f64>>, Error> {
+        let params = params.into();
+        params.check(self.domain)?;
+        let mut out = vec![vec![0.0; params.len()]; self.channels];
+        let mut slices: Vec<&mut [f64]> = out.iter_mut().map(Vec::as_mut_slice).collect();
+        self.run(params, &mut slices);
+        Ok(out)
+    }
+
+    /// Samples every channel at `params` into `out`, one slice per channel, each
+    /// as long as `params`; reuses the caller's memory.
+    ///
+    /// # Errors
+    /// [`Error::Length`] if `out` has the wrong number or length of slices;
+    /// [`Error::OutOfDomain`] for the first parameter outside the domain.
+    pub fn sample_into<'a>(
+        &self,
+        params: impl Into<Params<'a>>,
+        out: &mut [&mut [f64]],
+    ) -> Result<(), Error> {
+        let params = params.into();
+        if out.len() != self.channels {
+            return Err(Error::Length {
+                what: "output slices (one per channel)",
+                expected: self.channels,
+                found: out.len(),
+            });
+        }
+        if let Some(o) = out.iter().find(|o| o.len() != params.len()) {
+            return Err(Error::Length {
+                what: "output values (one per parameter)",
+                expected: params.len(),
+                found: o.len(),
+            });
+        }
+        params.check(self.domain)?;
+        self.run(params, out);
+        Ok(())
+    }
+
+    /// Runs a checked job, in parallel when it is large enough.
+    fn run(&self, params: Params<'_>, out: &mut [&mut [f64]]) {
+        #[cfg(feature = "parallel")]
+        {
+            let threads = rayon::current_num_threads();
+            if threads > 1 && params.len() * (self.channels + 1) >= PARALLEL_MIN_VALUES {
+                let chunk = params
+                    .len()
+                    .div_ceil(threads * 4)
+                    .next_multiple_of(kernel::BLOCK)
+                    .max(MIN_CHUNK);
+                self.run_parallel(params, out, chunk);
+                return;
+            }
+        }
+        self.run_serial(params, 0, out);
+    }
+
+    /// Evaluates the parameters `first ..` (as many as each slice of `out` is
+    /// long) on the calling thread.
+    pub(crate) fn run_serial(&self, params: Params<'_>, first: usize, out: &mut [&mut [f64]]) {
+        kernel::run(self, params, first, out);
+    }
+
+    /// Splits the job into chunks of `chunk` parameters and runs them on rayon's
+    /// threads; each chunk is [`Sampler::run_serial`] on its part of every slice.
+    #[cfg(feature = "parallel")]
+    pub(crate) fn run_parallel(&self, params: Params<'_>, out: &mut [&mut [f64]], chunk: usize) {
+        use rayon::prelude::*;
+        let tasks = params.len().div_ceil(chunk);
+        let mut jobs: Vec<(usize, Vec<&mut [f64]>)> = (0..tasks)
+            .map(|k| (k * chunk, Vec::with_capacity(out.len())))
+            .collect();
+        for slice in out.iter_mut() {
+            for (job, piece) in jobs.iter_mut().zip(slice.chunks_mut(chunk)) {
+                job.1.push(piece);
+            }
+        }
+        jobs.into_par_iter()
+            .for_each(|(first, mut pieces)| self.run_serial(params, first, &mut pieces));
+    }
+
+    pub(crate) fn order(&self) -> usize {
+        self.order
+    }
+
+    pub(crate) fn spans(&self) -> &[Span] {
+        &self.spans
+    }
+
+    pub(crate) fn bounds(&self) -> &[Bound] {
+        &self.bounds
+    }
+
+    /// The table rows of one span: denominator, then one per channel.
+    pub(crate) fn span_table(&self, span: usize) -> &[f64] {
+        let size = (self.channels + 1) * self.order;
+        &self.table[span * size..(span + 1) * size]
+    }
+}

@@ -1,0 +1,188 @@
+//! Sampled curves as structure of arrays: one vector per coordinate.
+
+use std::ops::Index;
+
+use crate::fuzzy::{Alpha, Layer, Layers};
+use crate::pipeline::Side;
+
+/// One curve sampled at `len()` parameters, one vector per coordinate
+/// (structure of arrays): `coord(0)[i]` is the x coordinate at the i-th
+/// parameter.
+///
+/// # Examples
+/// ```
+/// # use t2spline::NurbsCurve;
+/// # use t2spline::sampling::Params;
+/// let c = NurbsCurve::try_clamped(1, vec![[0.0, 0.0], [2.0, 4.0]], vec![1.0, 1.0])?;
+/// let s = c.sample_soa(Params::Uniform(3))?;
+/// assert_eq!(s.coord(1), &[0.0, 2.0, 4.0]);
+/// assert_eq!(s.point(1), [1.0, 2.0]);
+/// # Ok::<(), t2spline::Error>(())
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct CurveSamples<const D: usize> {
+    coords: [Vec<f64>; D],
+}
+
+impl<const D: usize> CurveSamples<D> {
+    /// Wraps one vector per coordinate, all of one length.
+    pub(crate) fn from_coords(coords: [Vec<f64>; D]) -> Self {
+        debug_assert!(coords.iter().all(|c| c.len() == coords[0].len()));
+        CurveSamples { coords }
+    }
+
+    /// The number of samples.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.coords.first().map_or(0, Vec::len)
+    }
+
+    /// Whether there are no samples.
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The values of one coordinate (`0` is x).
+    ///
+    /// # Panics
+    /// If `axis >= D`.
+    #[must_use]
+    pub fn coord(&self, axis: usize) -> &[f64] {
+        &self.coords[axis]
+    }
+
+    /// The vectors of all coordinates.
+    #[must_use]
+    pub fn coords(&self) -> &[Vec<f64>; D] {
+        &self.coords
+    }
+
+    /// The vectors of all coordinates, by value.
+    #[must_use]
+    pub fn into_coords(self) -> [Vec<f64>; D] {
+        self.coords
+    }
+
+    /// The i-th sample as a point.
+    ///
+    /// # Panics
+    /// If `i >= len()`.
+    #[must_use]
+    pub fn point(&self, i: usize) -> [f64; D] {
+        std::array::from_fn(|d| self.coords[d][i])
+    }
+
+    /// The samples as points, in order.
+    pub fn points(&self) -> impl ExactSizeIterator<Item = [f64; D]> + '_ {
+        (0..self.len()).map(|i| self.point(i))
+    }
+}
+
+/// The seven layer curves of a fuzzy curve (stage 1, SPEC §6–§7), sampled at the
+/// same parameters; index by [`Layer`].
+///
+/// At every parameter the seven values of each coordinate keep the order of
+/// SPEC §1 exactly, as the exact curves do.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LayerSamples<const D: usize> {
+    pub(crate) layers: Layers<CurveSamples<D>>,
+}
+
+impl<const D: usize> LayerSamples<D> {
+    /// The seven sampled curves.
+    #[must_use]
+    pub fn layers(&self) -> &Layers<CurveSamples<D>> {
+        &self.layers
+    }
+
+    /// The number of samples.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.layers[Layer::Crisp].len()
+    }
+
+    /// Whether there are no samples.
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+}
+
+impl<const D: usize> Index<Layer> for LayerSamples<D> {
+    type Output = CurveSamples<D>;
+    fn index(&self, layer: Layer) -> &CurveSamples<D> {
+        &self.layers[layer]
+    }
+}
+
+/// The curves of stages 2–4 at one level alpha (SPEC §7), sampled.
+///
+/// The crisp curve is the same at every level and is not repeated here: it is
+/// the [`Layer::Crisp`] curve of the stage-1 [`LayerSamples`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct StageSamples<const D: usize> {
+    pub(crate) alpha: Alpha,
+    pub(crate) alpha_cut: Layers<Option<CurveSamples<D>>>,
+    pub(crate) type_reduced: [CurveSamples<D>; 2],
+    pub(crate) defuzzified: CurveSamples<D>,
+}
+
+impl<const D: usize> StageSamples<D> {
+    /// The level.
+    #[must_use]
+    pub fn alpha(&self) -> Alpha {
+        self.alpha
+    }
+
+    /// Stage 2: the curve through one alpha-cut layer; `None` for
+    /// [`Layer::Crisp`] (it is the stage-1 crisp curve) and for a lower layer
+    /// that does not exist at this level (SPEC §2.2).
+    #[must_use]
+    pub fn alpha_cut(&self, layer: Layer) -> Option<&CurveSamples<D>> {
+        self.alpha_cut[layer].as_ref()
+    }
+
+    /// Stage 3: the type-reduced left or right curve.
+    #[must_use]
+    pub fn type_reduced(&self, side: Side) -> &CurveSamples<D> {
+        match side {
+            Side::Left => &self.type_reduced[0],
+            Side::Right => &self.type_reduced[1],
+        }
+    }
+
+    /// Stage 4: the crisp type-2 solution curve.
+    #[must_use]
+    pub fn defuzzified(&self) -> &CurveSamples<D> {
+        &self.defuzzified
+    }
+}
+
+/// Stage 1 and stages 2–4 at several levels, all sampled at the same parameters
+/// from one power form (see [`crate::FuzzyCurve::sample_sweep`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct SweepSamples<const D: usize> {
+    pub(crate) layers: LayerSamples<D>,
+    pub(crate) levels: Vec<StageSamples<D>>,
+}
+
+impl<const D: usize> SweepSamples<D> {
+    /// Stage 1: the seven layer curves (the crisp curve among them).
+    #[must_use]
+    pub fn layers(&self) -> &LayerSamples<D> {
+        &self.layers
+    }
+
+    /// Stages 2–4, one entry per level, in the order the levels were given.
+    #[must_use]
+    pub fn levels(&self) -> &[StageSamples<D>] {
+        &self.levels
+    }
+
+    /// The parts, by value.
+    #[must_use]
+    pub fn into_parts(self) -> (LayerSamples<D>, Vec<StageSamples<D>>) {
+        (self.layers, self.levels)
+    }
+}
