@@ -28,12 +28,7 @@ pub(crate) fn run(sampler: &Sampler, params: Params<'_>, first: usize, out: &mut
         let mut i = 0;
         while i < n {
             span = locate(spans, span, t[i]);
-            let j = i
-                + 1
-                + t[i + 1..n]
-                    .iter()
-                    .take_while(|&&x| contains(spans, span, x))
-                    .count();
+            let j = run_end(spans, span, &t[..n], i + 1);
             evaluate(
                 sampler,
                 span,
@@ -56,6 +51,34 @@ pub(crate) fn run(sampler: &Sampler, params: Params<'_>, first: usize, out: &mut
 fn contains(spans: &[Span], k: usize, t: f64) -> bool {
     let sp = &spans[k];
     sp.start <= t && (t < sp.end || k + 1 == spans.len())
+}
+
+/// The first index `j ≥ from` of `t` whose parameter is not in span `k` (or
+/// `t.len()`). Tests eight parameters at a time without branching, so that a
+/// long sorted run costs a few vector comparisons per eight parameters.
+#[inline]
+fn run_end(spans: &[Span], k: usize, t: &[f64], from: usize) -> usize {
+    let sp = &spans[k];
+    // The last span is closed on the right; every parameter is in the domain.
+    let end = if k + 1 == spans.len() {
+        f64::INFINITY
+    } else {
+        sp.end
+    };
+    let mut j = from;
+    while j + 8 <= t.len() {
+        let all = t[j..j + 8]
+            .iter()
+            .fold(true, |all, &x| all & (sp.start <= x) & (x < end));
+        if !all {
+            break;
+        }
+        j += 8;
+    }
+    j + t[j..]
+        .iter()
+        .take_while(|&&x| sp.start <= x && x < end)
+        .count()
 }
 
 /// The span of `t` (in the domain): the hint or its successor when parameters

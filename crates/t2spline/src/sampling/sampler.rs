@@ -194,7 +194,10 @@ impl Sampler {
     pub fn sample<'a>(&self, params: impl Into<Params<'a>>) -> Result<Vec<Vec<f64>>, Error> {
         let params = params.into();
         params.check(self.domain)?;
-        let mut out = vec![vec![0.0; params.len()]; self.channels];
+        // One zeroed allocation per channel (`vec![v; k]` would copy `v`).
+        let mut out: Vec<Vec<f64>> = (0..self.channels)
+            .map(|_| vec![0.0; params.len()])
+            .collect();
         let mut slices: Vec<&mut [f64]> = out.iter_mut().map(Vec::as_mut_slice).collect();
         self.run(params, &mut slices);
         Ok(out)

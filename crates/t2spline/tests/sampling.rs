@@ -1,0 +1,314 @@
+//! The sampling engine (`t2spline::sampling`) against the straightforward
+//! evaluators it replaces for dense sampling: `NurbsCurve::eval`,
+//! `FuzzyCurve::eval_layers` and the curves of `Solution`, to 1e-12 relative,
+//! on random curves with repeated knots up to full multiplicity, at both domain
+//! ends, at every knot, and with sorted and unsorted parameters.
+
+use proptest::prelude::*;
+use t2spline::sampling::{CurveSamples, Params, Sampler};
+use t2spline::{
+    strategies, Alpha, Error, FuzzyCurve, KnotVector, Layer, Nt2Number, Nt2Point, NurbsCurve, Side,
+};
+
+/// Relative tolerance of the engine against the reference evaluators.
+const TOL: f64 = 1e-12;
+
+/// `|a − b| ≤ TOL·scale`, where `scale` is the size of the curve's control
+/// values (at least 1): both evaluators round at that scale.
+fn close(a: f64, b: f64, scale: f64) -> bool {
+    (a - b).abs() <= TOL * scale.max(1.0)
+}
+
+/// The largest absolute control value of a fuzzy curve.
+fn scale<const D: usize>(c: &FuzzyCurve<D>) -> f64 {
+    c.points()
+        .iter()
+        .flat_map(|p| Layer::ALL.map(|l| p.layer(l)))
+        .flatten()
+        .fold(0.0, |m: f64, x| m.max(x.abs()))
+}
+
+/// Parameters that probe the engine: both ends, every knot in the domain (where
+/// spans change, including knots of full multiplicity), and `extra` values at
+/// fractions of the domain; sorted, as a sampler walks them.
+fn probe_params(knots: &KnotVector, fractions: &[f64]) -> Vec<f64> {
+    let d = knots.domain();
+    let mut t: Vec<f64> = fractions.iter().map(|&s| d.lerp(s)).collect();
+    t.extend([d.start, d.end]);
+    t.extend(knots.as_slice().iter().filter(|&&u| d.contains(u)));
+    t.sort_by(f64::total_cmp);
+    t
+}
+
+fn fractions() -> impl Strategy<Value = Vec<f64>> {
+    proptest::collection::vec(0.0..=1.0f64, 0..40)
+}
+
+/// Checks every sample against `reference(t)`.
+fn check_curve<const D: usize>(
+    got: &CurveSamples<D>,
+    params: &[f64],
+    scale: f64,
+    reference: impl Fn(f64) -> [f64; D],
+) -> Result<(), TestCaseError> {
+    prop_assert_eq!(got.len(), params.len());
+    for (i, &t) in params.iter().enumerate() {
+        let (a, b) = (got.point(i), reference(t));
+        prop_assert!(
+            a.iter().zip(&b).all(|(&x, &y)| close(x, y, scale)),
+            "t = {t}: engine {a:?}, reference {b:?}"
+        );
+    }
+    Ok(())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(400))]
+
+    #[test]
+    fn crisp_sampling_matches_eval(c in strategies::curve::<2>(), s in fractions(), rotate in 0usize..50) {
+        let scale = c.control_points().iter().flatten().fold(0.0, |m: f64, x| m.max(x.abs()));
+        let sorted = probe_params(c.knots(), &s);
+        check_curve(&c.sample_soa(&sorted).unwrap(), &sorted, scale, |t| c.eval(t).unwrap())?;
+        // The same parameters out of order: found by search instead of walking.
+        let mut shuffled = sorted.clone();
+        shuffled.reverse();
+        let k = rotate % shuffled.len();
+        shuffled.rotate_left(k);
+        check_curve(&c.sample_soa(&shuffled).unwrap(), &shuffled, scale, |t| c.eval(t).unwrap())?;
+    }
+
+    #[test]
+    fn layer_sampling_matches_eval_layers_and_keeps_the_order(
+        c in strategies::fuzzy_curve::<2>(), s in fractions(),
+    ) {
+        let params = probe_params(c.knots(), &s);
+        let got = c.sample_layers(&params).unwrap();
+        let scale = scale(&c);
+        for layer in Layer::ALL {
+            check_curve(&got[layer], &params, scale, |t| c.eval_layers(t).unwrap()[layer])?;
+        }
+        for i in 0..params.len() {
+            for d in 0..2 {
+                let v = Layer::ALL.map(|l| got[l].coord(d)[i]);
+                prop_assert!(v.windows(2).all(|w| w[0] <= w[1]), "t = {}: {v:?}", params[i]);
+            }
+        }
+    }
+
+    #[test]
+    fn sweep_matches_the_curves_of_every_stage(
+        c in strategies::fuzzy_curve::<3>(),
+        s in fractions(),
+        alphas in proptest::collection::vec(0.0..=1.0f64, 1..4),
+    ) {
+        let alphas: Vec<Alpha> = alphas.into_iter().map(|a| Alpha::try_new(a).unwrap()).collect();
+        let params = probe_params(c.knots(), &s);
+        let sweep = c.sample_sweep(&params, &alphas).unwrap();
+        let scale = scale(&c);
+        prop_assert_eq!(sweep.levels().len(), alphas.len());
+        for (level, &alpha) in sweep.levels().iter().zip(&alphas) {
+            let solution = c.solve(alpha);
+            prop_assert_eq!(level.alpha(), alpha);
+            prop_assert!(level.alpha_cut(Layer::Crisp).is_none());
+            for layer in Layer::ALL.into_iter().filter(|&l| l != Layer::Crisp) {
+                match (level.alpha_cut(layer), solution.alpha_cut_curve(layer)) {
+                    (Some(got), Some(curve)) => check_curve(got, &params, scale, |t| curve.eval(t).unwrap())?,
+                    (None, None) => {}
+                    (got, want) => prop_assert!(false, "{layer}: {:?} vs {:?}", got.is_some(), want.is_some()),
+                }
+            }
+            let left = solution.type_reduced_curve(Side::Left);
+            let right = solution.type_reduced_curve(Side::Right);
+            let solved = solution.defuzzified_curve();
+            check_curve(level.type_reduced(Side::Left), &params, scale, |t| left.eval(t).unwrap())?;
+            check_curve(level.type_reduced(Side::Right), &params, scale, |t| right.eval(t).unwrap())?;
+            check_curve(level.defuzzified(), &params, scale, |t| solved.eval(t).unwrap())?;
+            // Orders that hold for the exact curves hold for the samples.
+            let crisp = &sweep.layers()[Layer::Crisp];
+            for i in 0..params.len() {
+                for d in 0..3 {
+                    let (l, x, r) = (
+                        level.type_reduced(Side::Left).coord(d)[i],
+                        crisp.coord(d)[i],
+                        level.type_reduced(Side::Right).coord(d)[i],
+                    );
+                    let y = level.defuzzified().coord(d)[i];
+                    prop_assert!(l <= x && x <= r && l <= y && y <= r, "{l} {x} {r} {y}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn uniform_params_are_the_domain_grid(c in strategies::curve::<2>(), n in 2usize..300) {
+        let grid = c.domain().uniform(n);
+        prop_assert_eq!(c.sample_soa(Params::Uniform(n)).unwrap(), c.sample_soa(&grid).unwrap());
+    }
+}
+
+/// A curve of degree `p` with awkward weights and uneven knots, for the
+/// conditioning of the power form at high degree.
+fn high_degree_curve(p: usize) -> NurbsCurve<2> {
+    let n = p + 6;
+    let points: Vec<[f64; 2]> = (0..n)
+        .map(|i| {
+            let x = i as f64;
+            [x * 3.0 - 7.0, (x * 1.7).sin() * 9.0]
+        })
+        .collect();
+    let weights: Vec<f64> = (0..n).map(|i| [1.0, 0.2, 5.0, 0.7][i % 4]).collect();
+    let mut knots = vec![0.0; p + 1];
+    let interior = [0.01, 0.02, 0.5, 0.5, 0.97];
+    knots.extend(interior);
+    knots.extend(vec![1.0; p + 1]);
+    let u = KnotVector::try_new(knots, p, n).unwrap();
+    NurbsCurve::try_new(points, weights, u).unwrap()
+}
+
+#[test]
+fn high_degrees_stay_within_tolerance() {
+    for p in 1..=12 {
+        let c = high_degree_curve(p);
+        let params = c.domain().uniform(2001);
+        let got = c.sample_soa(&params).unwrap();
+        for (i, &t) in params.iter().enumerate() {
+            let want = c.eval(t).unwrap();
+            let a = got.point(i);
+            assert!(
+                close(a[0], want[0], 21.0) && close(a[1], want[1], 21.0),
+                "degree {p}, t = {t}: {a:?} vs {want:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn full_multiplicity_knot_takes_the_value_from_the_right() {
+    let u = KnotVector::try_new(vec![0.0, 0.0, 0.5, 0.5, 1.0, 1.0], 1, 4).unwrap();
+    let c = NurbsCurve::try_new(
+        vec![[0.0, 0.0], [1.0, 0.0], [5.0, 5.0], [6.0, 5.0]],
+        vec![1.0; 4],
+        u,
+    )
+    .unwrap();
+    let s = c.sample_soa(&[0.0, 0.25, 0.5, 1.0]).unwrap();
+    assert!((s.point(1)[0] - 0.5).abs() < 1e-15);
+    assert!((s.point(2)[0] - 5.0).abs() < 1e-15 && (s.point(2)[1] - 5.0).abs() < 1e-15);
+    assert!((s.point(3)[0] - 6.0).abs() < 1e-15);
+}
+
+#[test]
+fn bad_parameters_and_outputs_are_errors() {
+    let c = high_degree_curve(3);
+    assert!(matches!(
+        c.sample_soa(&[0.5, 1.5]),
+        Err(Error::OutOfDomain { t, .. }) if t == 1.5
+    ));
+    assert!(matches!(
+        c.sample_soa(&[f64::NAN]),
+        Err(Error::OutOfDomain { .. })
+    ));
+    let sampler = c.sampler();
+    let mut a = vec![0.0; 3];
+    let mut b = vec![0.0; 2];
+    let mut out: Vec<&mut [f64]> = vec![&mut a, &mut b];
+    assert!(matches!(
+        sampler.sample_into(Params::Uniform(3), &mut out),
+        Err(Error::Length {
+            expected: 3,
+            found: 2,
+            ..
+        })
+    ));
+    assert!(matches!(
+        sampler.sample_into(Params::Uniform(3), &mut out[..1]),
+        Err(Error::Length {
+            expected: 2,
+            found: 1,
+            ..
+        })
+    ));
+    let knots = KnotVector::clamped_uniform(1, 2).unwrap();
+    assert!(matches!(
+        Sampler::try_new(&knots, &[1.0, 1.0], &[[0.0, f64::INFINITY]]),
+        Err(Error::NotFinite { .. })
+    ));
+    assert!(matches!(
+        Sampler::try_new(&knots, &[1.0, -1.0], &[[0.0, 1.0]]),
+        Err(Error::Weight { index: 1, .. })
+    ));
+}
+
+#[test]
+fn empty_params_give_empty_samples() {
+    let c = high_degree_curve(2);
+    assert!(c.sample_soa(Params::Uniform(0)).unwrap().is_empty());
+    assert!(c.sample_soa(&[]).unwrap().is_empty());
+}
+
+/// A fuzzy curve big enough to pass the parallel threshold.
+fn paper_like_curve() -> FuzzyCurve<2> {
+    let n = |c: f64| {
+        Nt2Number::try_new(
+            c,
+            [c - 0.6, c + 0.9],
+            [c - 0.4, c + 0.6],
+            [c - 0.2, c + 0.3],
+            0.6,
+        )
+        .unwrap()
+    };
+    let points = (0..10)
+        .map(|i| {
+            let x = i as f64;
+            Nt2Point::new([n(x), n((x * 1.3).sin() * 3.0)])
+        })
+        .collect();
+    FuzzyCurve::try_new(
+        3,
+        points,
+        vec![1.0, 0.5, 2.0, 1.0, 3.0, 0.7, 1.0, 1.5, 0.8, 1.0],
+        None,
+    )
+    .unwrap()
+}
+
+#[cfg(feature = "parallel")]
+#[test]
+fn threads_give_bit_identical_results() {
+    let c = paper_like_curve();
+    let alphas = [Alpha::try_new(0.3).unwrap(), Alpha::try_new(0.8).unwrap()];
+    let mut t = c.domain().uniform(50_001);
+    t.swap(10, 40_000); // some unsorted parameters too
+    let run = |threads: usize| {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        pool.install(|| {
+            (
+                c.sample_sweep(&t, &alphas).unwrap(),
+                c.sample_layers(Params::Uniform(100_003)).unwrap(),
+            )
+        })
+    };
+    let (one, three) = (run(1), run(3));
+    // PartialEq on f64 vectors: equal values, bit for bit except ±0 (none here).
+    assert!(one == three, "results differ between 1 and 3 threads");
+}
+
+#[test]
+fn fuzzy_curve_with_crisp_numbers_gives_seven_equal_layers() {
+    let points = (0..6)
+        .map(|i| {
+            let x = Nt2Number::try_crisp(i as f64).unwrap();
+            Nt2Point::new([x, Nt2Number::try_crisp((i * i) as f64).unwrap()])
+        })
+        .collect();
+    let c = FuzzyCurve::try_new(2, points, vec![1.0, 2.0, 0.5, 1.0, 3.0, 1.0], None).unwrap();
+    let s = c.sample_layers(Params::Uniform(257)).unwrap();
+    for l in Layer::ALL {
+        assert_eq!(s[l], s[Layer::Crisp], "{l}");
+    }
+}
