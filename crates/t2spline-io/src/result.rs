@@ -2,6 +2,7 @@
 //! stage, and the distance between the crisp and the defuzzified curve.
 
 use serde::{Deserialize, Serialize};
+use t2spline::sampling::{CurveSamples, Params};
 use t2spline::{Alpha, FuzzyCurve, Layer, Side, Solution};
 
 use crate::derivatives::{CrispDefuzzified, DerivativeCurves};
@@ -152,7 +153,9 @@ pub struct Distance {
 
 impl RunResult {
     /// Runs stages 1–4 of the job's curve at `alpha` and samples every curve at
-    /// `samples` uniform parameters.
+    /// `samples` uniform parameters, all with the sampling engine
+    /// ([`t2spline::sampling`]: one power form of the rational basis for every
+    /// curve, multi-threaded for large jobs).
     #[must_use]
     pub fn compute(job: &Job, alpha: Alpha, samples: usize) -> RunResult {
         let mut r = match &job.curve {
@@ -168,24 +171,21 @@ fn to_vecs<const D: usize>(points: &[[f64; D]]) -> Vec<Point> {
     points.iter().map(|p| p.to_vec()).collect()
 }
 
+/// A sampled curve as a list of points.
+fn sampled<const D: usize>(curve: &CurveSamples<D>) -> Vec<Point> {
+    curve.points().map(|p| p.to_vec()).collect()
+}
+
 fn compute<const D: usize>(curve: &FuzzyCurve<D>, alpha: Alpha, samples: usize) -> RunResult {
     let solution: Solution<D> = curve.solve(alpha);
     let params = curve.domain().uniform(samples);
-    let sample = |c: t2spline::NurbsCurve<D>| {
-        to_vecs(
-            &c.sample(&params)
-                .expect("uniform parameters lie in the domain"),
-        )
-    };
-    let at_params: Vec<_> = params
-        .iter()
-        .map(|&t| {
-            curve
-                .eval_layers(t)
-                .expect("uniform parameters lie in the domain")
-        })
-        .collect();
-    let layer_samples = |layer: Layer| at_params.iter().map(|l| l[layer].to_vec()).collect();
+    // Every curve of every stage from one power form of the rational basis.
+    let (layers, levels) = curve
+        .sample_sweep(Params::Uniform(samples), &[alpha])
+        .expect("uniform parameters lie in the domain")
+        .into_parts();
+    let level = &levels[0];
+    let layer_samples = |layer: Layer| sampled(&layers[layer]);
     let cut_points = solution.alpha_cut_points();
     let d = solution.distance();
     let regime = {
@@ -227,12 +227,12 @@ fn compute<const D: usize>(curve: &FuzzyCurve<D>, alpha: Alpha, samples: usize) 
         },
         curves: Curves {
             crisp: layer_samples(Layer::Crisp),
-            defuzzified: sample(solution.defuzzified_curve()),
+            defuzzified: sampled(level.defuzzified()),
             layers: SixLayers::from_fn(layer_samples),
-            alpha_cut: SixLayers::from_fn(|l| solution.alpha_cut_curve(l).map(sample)),
+            alpha_cut: SixLayers::from_fn(|l| level.alpha_cut(l).map(sampled)),
             type_reduced: LeftRight {
-                left: sample(solution.type_reduced_curve(Side::Left)),
-                right: sample(solution.type_reduced_curve(Side::Right)),
+                left: sampled(level.type_reduced(Side::Left)),
+                right: sampled(level.type_reduced(Side::Right)),
             },
             params,
             derivatives: None,
