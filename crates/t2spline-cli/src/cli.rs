@@ -28,6 +28,8 @@ pub enum Command {
     Report(ReportArgs),
     /// Fit a fuzzy curve to fuzzy data points and write it as a job file.
     Fit(FitArgs),
+    /// Time the sampling engine: one line per case with the median of 5 runs.
+    Bench(BenchArgs),
 }
 
 /// Arguments of `t2spline run`.
@@ -150,4 +152,22 @@ pub struct FitArgs {
     /// Do not print the report on standard error.
     #[arg(short, long)]
     pub quiet: bool,
+}
+
+/// Arguments of `t2spline bench`.
+#[derive(Debug, Args)]
+pub struct BenchArgs {
+    /// What to time: `crisp` (the crisp curve), `fuzzy` (all seven layer
+    /// curves), `sweep` (stages 1–4 at 11 alpha levels, every curve), or `all`.
+    #[arg(long, value_name = "CASE", default_value = "all", value_parser = ["crisp", "fuzzy", "sweep", "all"])]
+    pub case: String,
+    /// Parameter values per run (uniform over the domain).
+    #[arg(long, value_name = "N", default_value_t = 1_000_000)]
+    pub points: u64,
+    /// Threads the sampling engine may use (default: one per core).
+    #[arg(long, value_name = "T")]
+    pub threads: Option<u64>,
+    /// Time this job's curve instead of the built-in one (degree 3, ten points).
+    #[arg(long, value_name = "JOB.json")]
+    pub curve: Option<PathBuf>,
 }

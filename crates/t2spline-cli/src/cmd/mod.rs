@@ -5,6 +5,7 @@ mod alpha;
 mod fit;
 mod plot;
 mod report;
+mod bench;
 mod run;
 mod validate;
 
@@ -18,5 +19,6 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<()> {
         Command::Plot(args) => plot::plot(&args),
         Command::Report(args) => report::report(&args),
         Command::Fit(args) => fit::fit(args),
+        Command::Bench(args) => bench::bench(&args),
     }
 }

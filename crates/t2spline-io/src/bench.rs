@@ -1,0 +1,246 @@
+//! The measurements behind `t2spline bench`: the sampling engine on one curve,
+//! timed as the median of five runs after one warm-up run.
+
+use std::fmt;
+use std::time::Instant;
+
+use t2spline::sampling::Params;
+use t2spline::{Alpha, FuzzyCurve, Nt2Number, Nt2Point};
+
+use crate::{Error, JobCurve};
+
+/// Timed runs per case; the median is reported.
+pub const RUNS: usize = 5;
+
+/// What a benchmark case samples, at `points` uniform parameters.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BenchCase {
+    /// The crisp curve ([`t2spline::NurbsCurve::sample_soa`]).
+    Crisp,
+    /// All seven layer curves ([`FuzzyCurve::sample_layers`]).
+    Fuzzy,
+    /// Stages 1–4 at the 11 levels 0, 0.1, …, 1 and every resulting curve
+    /// ([`FuzzyCurve::sample_sweep`]).
+    Sweep,
+}
+
+impl BenchCase {
+    /// Every case, in the order `--case all` runs them.
+    pub const ALL: [BenchCase; 3] = [BenchCase::Crisp, BenchCase::Fuzzy, BenchCase::Sweep];
+
+    /// The name used on the command line and in the output.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            BenchCase::Crisp => "crisp",
+            BenchCase::Fuzzy => "fuzzy",
+            BenchCase::Sweep => "sweep",
+        }
+    }
+}
+
+impl fmt::Display for BenchCase {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// The measured time of one case.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BenchResult {
+    /// The case.
+    pub case: BenchCase,
+    /// Parameter values per run.
+    pub points: usize,
+    /// Threads the engine was allowed.
+    pub threads: usize,
+    /// Median wall time of [`RUNS`] runs, in seconds.
+    pub seconds: f64,
+}
+
+impl BenchResult {
+    /// Parameter values per second: `points / seconds`.
+    #[must_use]
+    pub fn points_per_second(&self) -> f64 {
+        self.points as f64 / self.seconds
+    }
+}
+
+impl fmt::Display for BenchResult {
+    /// `bench <case> points=<N> threads=<T> seconds=<median> points_per_second=<N/seconds>`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(
+            f,
+            "bench {} points={} threads={} seconds={:.6} points_per_second={:.4e}",
+            self.case,
+            self.points,
+            self.threads,
+            self.seconds,
+            self.points_per_second()
+        )
+    }
+}
+
+/// The default benchmark curve: degree 3, ten control points
+/// (0,0), (1,2), (2,−1), (3,3), (4,0), (5,2.5), (6,−2), (7,1), (8,3), (9,0),
+/// weights 1, 0.5, 2, 1, 3, 0.7, 1, 1.5, 0.8, 1, clamped uniform knots; every
+/// coordinate `c` is the fuzzy number with upper feet `c − 0.3, c + 0.45`,
+/// primary feet `c − 0.2, c + 0.3`, lower feet `c − 0.1, c + 0.15` and lower
+/// height 0.6 (unequal spreads, so the stages move the curve).
+///
+/// # Examples
+/// ```
+/// let c = t2spline_io::bench::default_curve();
+/// assert_eq!((c.degree(), c.points().len()), (3, 10));
+/// ```
+#[must_use]
+pub fn default_curve() -> FuzzyCurve<2> {
+    const POINTS: [[f64; 2]; 10] = [
+        [0.0, 0.0],
+        [1.0, 2.0],
+        [2.0, -1.0],
+        [3.0, 3.0],
+        [4.0, 0.0],
+        [5.0, 2.5],
+        [6.0, -2.0],
+        [7.0, 1.0],
+        [8.0, 3.0],
+        [9.0, 0.0],
+    ];
+    const WEIGHTS: [f64; 10] = [1.0, 0.5, 2.0, 1.0, 3.0, 0.7, 1.0, 1.5, 0.8, 1.0];
+    let number = |c: f64| {
+        Nt2Number::try_new(
+            c,
+            [c - 0.3, c + 0.45],
+            [c - 0.2, c + 0.3],
+            [c - 0.1, c + 0.15],
+            0.6,
+        )
+        .expect("the spreads are ordered and finite")
+    };
+    let points = POINTS
+        .iter()
+        .map(|p| Nt2Point::new(p.map(number)))
+        .collect();
+    FuzzyCurve::try_new(3, points, WEIGHTS.to_vec(), None).expect("a valid curve")
+}
+
+/// The 11 levels of the sweep case: 0, 0.1, …, 1.
+#[must_use]
+pub fn sweep_levels() -> Vec<Alpha> {
+    (0..=10)
+        .map(|k| Alpha::try_new(f64::from(k) / 10.0).expect("k/10 lies in [0, 1]"))
+        .collect()
+}
+
+/// Times `case` on `curve` at `points` uniform parameters, with the engine
+/// allowed `threads` threads: one warm-up run, then the median of [`RUNS`].
+/// Each run allocates and returns its output, as a caller of the sampling
+/// functions sees it.
+///
+/// # Errors
+/// [`Error::Option`] if `threads` is 0 or the thread pool cannot be made.
+pub fn run_case(
+    curve: &JobCurve,
+    case: BenchCase,
+    points: usize,
+    threads: usize,
+) -> Result<BenchResult, Error> {
+    let seconds = with_threads(threads, || match curve {
+        JobCurve::Planar(c) => time_case(c, case, points),
+        JobCurve::Spatial(c) => time_case(c, case, points),
+    })?;
+    Ok(BenchResult {
+        case,
+        points,
+        threads,
+        seconds,
+    })
+}
+
+/// Runs `f` on a rayon pool of `threads` threads (on the calling thread only,
+/// without the `parallel` feature of the core crate).
+fn with_threads<T: Send>(threads: usize, f: impl FnOnce() -> T + Send) -> Result<T, Error> {
+    if threads == 0 {
+        return Err(Error::Option {
+            option: "--threads",
+            message: "at least 1 thread is needed".to_owned(),
+        });
+    }
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .map_err(|e| Error::Option {
+            option: "--threads",
+            message: e.to_string(),
+        })?;
+    Ok(pool.install(f))
+}
+
+fn time_case<const D: usize>(curve: &FuzzyCurve<D>, case: BenchCase, points: usize) -> f64 {
+    let params = Params::Uniform(points);
+    let crisp = curve.crisp_curve();
+    let levels = sweep_levels();
+    // Uniform parameters lie in the domain, so sampling cannot fail; the output
+    // is dropped inside the timed region, as a caller's would be eventually.
+    let once = || match case {
+        BenchCase::Crisp => drop(std::hint::black_box(crisp.sample_soa(params))),
+        BenchCase::Fuzzy => drop(std::hint::black_box(curve.sample_layers(params))),
+        BenchCase::Sweep => drop(std::hint::black_box(curve.sample_sweep(params, &levels))),
+    };
+    once();
+    let mut times: Vec<f64> = (0..RUNS)
+        .map(|_| {
+            let start = Instant::now();
+            once();
+            start.elapsed().as_secs_f64()
+        })
+        .collect();
+    times.sort_by(f64::total_cmp);
+    times[RUNS / 2]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_case_runs_and_reports_in_the_documented_format() {
+        let curve = JobCurve::Planar(default_curve());
+        for case in BenchCase::ALL {
+            let r = run_case(&curve, case, 1000, 2).unwrap();
+            assert!(r.seconds > 0.0 && r.seconds.is_finite(), "{r:?}");
+            let line = r.to_string();
+            let fields: Vec<&str> = line.split(' ').collect();
+            assert_eq!(
+                fields[..4],
+                ["bench", case.name(), "points=1000", "threads=2"]
+            );
+            assert!(fields[4].starts_with("seconds="), "{line}");
+            let rate: f64 = fields[5]
+                .strip_prefix("points_per_second=")
+                .unwrap()
+                .parse()
+                .unwrap();
+            assert!((rate - 1000.0 / r.seconds).abs() <= 1e-3 * rate, "{line}");
+        }
+    }
+
+    #[test]
+    fn zero_threads_is_an_error() {
+        let curve = JobCurve::Planar(default_curve());
+        let e = run_case(&curve, BenchCase::Crisp, 10, 0).unwrap_err();
+        assert_eq!(e.to_string(), "--threads: at least 1 thread is needed");
+    }
+
+    #[test]
+    fn default_curve_is_the_documented_one() {
+        let c = default_curve();
+        assert_eq!(
+            c.weights(),
+            &[1.0, 0.5, 2.0, 1.0, 3.0, 0.7, 1.0, 1.5, 0.8, 1.0]
+        );
+        assert_eq!(c.points()[5].crisp(), [5.0, 2.5]);
+        assert_eq!(c.knots().as_slice()[4], 1.0 / 7.0);
+    }
+}
