@@ -170,4 +170,9 @@ pub struct BenchArgs {
     /// Time this job's curve instead of the built-in one (degree 3, ten points).
     #[arg(long, value_name = "JOB.json")]
     pub curve: Option<PathBuf>,
+    /// Write every run into the output arrays of the previous one instead of
+    /// fresh ones (times evaluation and stores without the page faults of new
+    /// memory); the lines end in `output=reused`.
+    #[arg(long)]
+    pub reuse: bool,
 }

@@ -2,9 +2,10 @@
 //! timed as the median of five runs after one warm-up run.
 
 use std::fmt;
+use std::hint::black_box;
 use std::time::Instant;
 
-use t2spline::sampling::Params;
+use t2spline::sampling::{CurveSamples, LayerSamples, Params, SweepSamples};
 use t2spline::{Alpha, FuzzyCurve, Nt2Number, Nt2Point};
 
 use crate::{Error, JobCurve};
@@ -54,6 +55,8 @@ pub struct BenchResult {
     pub points: usize,
     /// Threads the engine was allowed.
     pub threads: usize,
+    /// Whether the output arrays were kept and reused from run to run.
+    pub reuse: bool,
     /// Median wall time of [`RUNS`] runs, in seconds.
     pub seconds: f64,
 }
@@ -67,7 +70,8 @@ impl BenchResult {
 }
 
 impl fmt::Display for BenchResult {
-    /// `bench <case> points=<N> threads=<T> seconds=<median> points_per_second=<N/seconds>`.
+    /// `bench <case> points=<N> threads=<T> seconds=<median> points_per_second=<N/seconds>`,
+    /// followed by ` output=reused` when the output arrays were reused.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
@@ -77,7 +81,11 @@ impl fmt::Display for BenchResult {
             self.threads,
             self.seconds,
             self.points_per_second()
-        )
+        )?;
+        if self.reuse {
+            f.write_str(" output=reused")?;
+        }
+        Ok(())
     }
 }
 
@@ -135,8 +143,13 @@ pub fn sweep_levels() -> Vec<Alpha> {
 
 /// Times `case` on `curve` at `points` uniform parameters, with the engine
 /// allowed `threads` threads: one warm-up run, then the median of [`RUNS`].
-/// Each run allocates and returns its output, as a caller of the sampling
-/// functions sees it.
+///
+/// Without `reuse` each run allocates its output and drops it, as a caller of
+/// `sample_soa`, `sample_layers` or `sample_sweep` sees it; the first write to
+/// freshly mapped memory (page faults) is then part of the time. With `reuse`
+/// the runs write into the arrays of the previous run (`sample_soa_into`,
+/// `sample_layers_into`, `sample_sweep_into`), which times the evaluation and
+/// the stores alone.
 ///
 /// # Errors
 /// [`Error::Option`] if `threads` is 0 or the thread pool cannot be made.
@@ -145,15 +158,17 @@ pub fn run_case(
     case: BenchCase,
     points: usize,
     threads: usize,
+    reuse: bool,
 ) -> Result<BenchResult, Error> {
     let seconds = with_threads(threads, || match curve {
-        JobCurve::Planar(c) => time_case(c, case, points),
-        JobCurve::Spatial(c) => time_case(c, case, points),
+        JobCurve::Planar(c) => time_case(c, case, points, reuse),
+        JobCurve::Spatial(c) => time_case(c, case, points, reuse),
     })?;
     Ok(BenchResult {
         case,
         points,
         threads,
+        reuse,
         seconds,
     })
 }
@@ -177,16 +192,36 @@ fn with_threads<T: Send>(threads: usize, f: impl FnOnce() -> T + Send) -> Result
     Ok(pool.install(f))
 }
 
-fn time_case<const D: usize>(curve: &FuzzyCurve<D>, case: BenchCase, points: usize) -> f64 {
+fn time_case<const D: usize>(
+    curve: &FuzzyCurve<D>,
+    case: BenchCase,
+    points: usize,
+    reuse: bool,
+) -> f64 {
     let params = Params::Uniform(points);
     let crisp = curve.crisp_curve();
     let levels = sweep_levels();
-    // Uniform parameters lie in the domain, so sampling cannot fail; the output
-    // is dropped inside the timed region, as a caller's would be eventually.
-    let once = || match case {
-        BenchCase::Crisp => drop(std::hint::black_box(crisp.sample_soa(params))),
-        BenchCase::Fuzzy => drop(std::hint::black_box(curve.sample_layers(params))),
-        BenchCase::Sweep => drop(std::hint::black_box(curve.sample_sweep(params, &levels))),
+    let mut crisp_out = CurveSamples::empty();
+    let mut layers_out = LayerSamples::empty();
+    let mut sweep_out = SweepSamples::empty();
+    // Uniform parameters lie in the domain, so sampling cannot fail (and the
+    // results are checked by the tests); a fresh output is dropped inside the
+    // timed region, as a caller's would be eventually.
+    let mut once = || match (case, reuse) {
+        (BenchCase::Crisp, false) => drop(black_box(crisp.sample_soa(params))),
+        (BenchCase::Fuzzy, false) => drop(black_box(curve.sample_layers(params))),
+        (BenchCase::Sweep, false) => drop(black_box(curve.sample_sweep(params, &levels))),
+        (BenchCase::Crisp, true) => drop(black_box(crisp.sample_soa_into(params, &mut crisp_out))),
+        (BenchCase::Fuzzy, true) => {
+            drop(black_box(curve.sample_layers_into(params, &mut layers_out)));
+        }
+        (BenchCase::Sweep, true) => {
+            drop(black_box(curve.sample_sweep_into(
+                params,
+                &levels,
+                &mut sweep_out,
+            )));
+        }
     };
     once();
     let mut times: Vec<f64> = (0..RUNS)
@@ -207,8 +242,8 @@ mod tests {
     #[test]
     fn every_case_runs_and_reports_in_the_documented_format() {
         let curve = JobCurve::Planar(default_curve());
-        for case in BenchCase::ALL {
-            let r = run_case(&curve, case, 1000, 2).unwrap();
+        for (case, reuse) in BenchCase::ALL.into_iter().zip([false, true, false]) {
+            let r = run_case(&curve, case, 1000, 2, reuse).unwrap();
             assert!(r.seconds > 0.0 && r.seconds.is_finite(), "{r:?}");
             let line = r.to_string();
             let fields: Vec<&str> = line.split(' ').collect();
@@ -223,13 +258,14 @@ mod tests {
                 .parse()
                 .unwrap();
             assert!((rate - 1000.0 / r.seconds).abs() <= 1e-3 * rate, "{line}");
+            assert_eq!(fields.get(6), reuse.then_some(&"output=reused"), "{line}");
         }
     }
 
     #[test]
     fn zero_threads_is_an_error() {
         let curve = JobCurve::Planar(default_curve());
-        let e = run_case(&curve, BenchCase::Crisp, 10, 0).unwrap_err();
+        let e = run_case(&curve, BenchCase::Crisp, 10, 0, false).unwrap_err();
         assert_eq!(e.to_string(), "--threads: at least 1 thread is needed");
     }
 

@@ -1,4 +1,4 @@
-//! `t2spline bench [--case crisp|fuzzy|sweep|all] [--points N] [--threads T] [--curve JOB.json]`.
+//! `t2spline bench [--case crisp|fuzzy|sweep|all] [--points N] [--threads T] [--curve JOB.json] [--reuse]`.
 
 use std::io::Write;
 
@@ -14,6 +14,7 @@ struct Plan {
     points: usize,
     threads: usize,
     curve: JobCurve,
+    reuse: bool,
 }
 
 impl Plan {
@@ -45,6 +46,7 @@ impl Plan {
             points,
             threads,
             curve,
+            reuse: args.reuse,
         })
     }
 }
@@ -57,7 +59,7 @@ pub fn bench(args: &BenchArgs) -> anyhow::Result<()> {
     let plan = Plan::new(args)?;
     let mut out = std::io::stdout().lock();
     for case in plan.cases {
-        let result = run_case(&plan.curve, case, plan.points, plan.threads)?;
+        let result = run_case(&plan.curve, case, plan.points, plan.threads, plan.reuse)?;
         // One line per case as soon as it is measured.
         writeln!(out, "{result}")?;
         out.flush()?;

@@ -103,6 +103,12 @@ impl<T> Layers<T> {
         &self.0
     }
 
+    /// The seven values in SPEC §1 order, by value.
+    #[must_use]
+    pub fn into_array(self) -> [T; 7] {
+        self.0
+    }
+
     /// `(layer, value)` pairs in SPEC §1 order.
     pub fn iter(&self) -> impl Iterator<Item = (Layer, &T)> {
         Layer::ALL.into_iter().zip(self.0.iter())

@@ -39,10 +39,31 @@ impl<const D: usize> NurbsCurve<D> {
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn sample_soa<'a>(&self, params: impl Into<Params<'a>>) -> Result<CurveSamples<D>, Error> {
-        let mut coords = self.sampler().sample(params)?.into_iter();
-        Ok(CurveSamples::from_coords(std::array::from_fn(|_| {
-            coords.next().unwrap_or_default()
-        })))
+        let mut out = CurveSamples::empty();
+        self.sample_soa_into(params, &mut out)?;
+        Ok(out)
+    }
+
+    /// [`NurbsCurve::sample_soa`] into `out`, reusing its vectors: repeated
+    /// sampling then touches no fresh memory. On error `out` is left empty.
+    ///
+    /// # Errors
+    /// [`Error::OutOfDomain`] for the first parameter outside the domain.
+    pub fn sample_soa_into<'a>(
+        &self,
+        params: impl Into<Params<'a>>,
+        out: &mut CurveSamples<D>,
+    ) -> Result<(), Error> {
+        let mut buffers: Vec<Vec<f64>> = std::mem::replace(out, CurveSamples::empty())
+            .into_buffers()
+            .collect();
+        let mut coords = self
+            .sampler()
+            .sample_reusing(params, &mut buffers)?
+            .into_iter();
+        *out =
+            CurveSamples::from_coords(std::array::from_fn(|_| coords.next().unwrap_or_default()));
+        Ok(())
     }
 }
 
@@ -75,7 +96,24 @@ impl<const D: usize> FuzzyCurve<D> {
         &self,
         params: impl Into<Params<'a>>,
     ) -> Result<LayerSamples<D>, Error> {
-        Ok(sweep(self, params.into(), &[], true)?.layers)
+        Ok(sweep(self, params.into(), &[], true, Vec::new())?.layers)
+    }
+
+    /// [`FuzzyCurve::sample_layers`] into `out`, reusing its vectors: repeated
+    /// sampling then touches no fresh memory. On error `out` is left empty.
+    ///
+    /// # Errors
+    /// [`Error::OutOfDomain`] for the first parameter outside the domain.
+    pub fn sample_layers_into<'a>(
+        &self,
+        params: impl Into<Params<'a>>,
+        out: &mut LayerSamples<D>,
+    ) -> Result<(), Error> {
+        let buffers = std::mem::replace(out, LayerSamples::empty())
+            .into_buffers()
+            .collect();
+        *out = sweep(self, params.into(), &[], true, buffers)?.layers;
+        Ok(())
     }
 
     /// Runs stages 2–4 at every level of `alphas` and samples, at `params`, the
@@ -111,7 +149,24 @@ impl<const D: usize> FuzzyCurve<D> {
         alphas: &[Alpha],
     ) -> Result<SweepSamples<D>, Error> {
         let solutions: Vec<Solution<D>> = alphas.iter().map(|&a| self.solve(a)).collect();
-        sweep(self, params.into(), &solutions, true)
+        sweep(self, params.into(), &solutions, true, Vec::new())
+    }
+
+    /// [`FuzzyCurve::sample_sweep`] into `out`, reusing its vectors: repeated
+    /// sweeps then touch no fresh memory. On error `out` is left empty.
+    ///
+    /// # Errors
+    /// [`Error::OutOfDomain`] for the first parameter outside the domain.
+    pub fn sample_sweep_into<'a>(
+        &self,
+        params: impl Into<Params<'a>>,
+        alphas: &[Alpha],
+        out: &mut SweepSamples<D>,
+    ) -> Result<(), Error> {
+        let buffers = std::mem::replace(out, SweepSamples::empty()).into_buffers();
+        let solutions: Vec<Solution<D>> = alphas.iter().map(|&a| self.solve(a)).collect();
+        *out = sweep(self, params.into(), &solutions, true, buffers)?;
+        Ok(())
     }
 }
 
@@ -130,6 +185,7 @@ impl<const D: usize> Solution<D> {
             params.into(),
             std::slice::from_ref(self),
             false,
+            Vec::new(),
         )?;
         let (_, levels) = sweep.into_parts();
         Ok(levels.into_iter().next().expect("one level was asked for"))
@@ -187,12 +243,14 @@ impl<const D: usize> Channels<D> {
 }
 
 /// Samples the crisp curve, the six other layers if `layers`, and the curves of
-/// stages 2–4 of every solution, with one sampler.
+/// stages 2–4 of every solution, with one sampler, into vectors taken from
+/// `buffers` where it has them.
 fn sweep<const D: usize>(
     curve: &FuzzyCurve<D>,
     params: Params<'_>,
     solutions: &[Solution<D>],
     layers: bool,
+    mut buffers: Vec<Vec<f64>>,
 ) -> Result<SweepSamples<D>, Error> {
     let mut ch = Channels::<D> {
         values: Vec::new(),
@@ -230,7 +288,11 @@ fn sweep<const D: usize>(
     let sampler = Sampler::new_unchecked(curve.knots(), curve.weights(), &ch.values)
         .with_bounds(&ch.bounds)
         .expect("the bounds name channels just made");
-    let mut out: Vec<Option<Vec<f64>>> = sampler.sample(params)?.into_iter().map(Some).collect();
+    let mut out: Vec<Option<Vec<f64>>> = sampler
+        .sample_reusing(params, &mut buffers)?
+        .into_iter()
+        .map(Some)
+        .collect();
     let mut take = |base: usize| {
         CurveSamples::from_coords(std::array::from_fn(|d| {
             out[base + d].take().expect("each channel is taken once")

@@ -203,6 +203,31 @@ impl Sampler {
         Ok(out)
     }
 
+    /// Samples every channel at `params` into vectors taken from `buffers` (and
+    /// new ones when it runs out), resized to `params.len()`: repeated sampling
+    /// reuses memory the operating system has already handed over.
+    ///
+    /// # Errors
+    /// [`Error::OutOfDomain`] for the first parameter outside the domain.
+    pub fn sample_reusing<'a>(
+        &self,
+        params: impl Into<Params<'a>>,
+        buffers: &mut Vec<Vec<f64>>,
+    ) -> Result<Vec<Vec<f64>>, Error> {
+        let params = params.into();
+        params.check(self.domain)?;
+        let mut out: Vec<Vec<f64>> = (0..self.channels)
+            .map(|_| {
+                let mut v = buffers.pop().unwrap_or_default();
+                v.resize(params.len(), 0.0);
+                v
+            })
+            .collect();
+        let mut slices: Vec<&mut [f64]> = out.iter_mut().map(Vec::as_mut_slice).collect();
+        self.run(params, &mut slices);
+        Ok(out)
+    }
+
     /// Samples every channel at `params` into `out`, one slice per channel, each
     /// as long as `params`; reuses the caller's memory.
     ///

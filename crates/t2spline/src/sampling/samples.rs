@@ -73,6 +73,17 @@ impl<const D: usize> CurveSamples<D> {
         std::array::from_fn(|d| self.coords[d][i])
     }
 
+    /// No samples (a buffer for the `_into` sampling functions).
+    #[must_use]
+    pub fn empty() -> Self {
+        CurveSamples::from_coords(std::array::from_fn(|_| Vec::new()))
+    }
+
+    /// The vectors, for reuse.
+    pub(crate) fn into_buffers(self) -> impl Iterator<Item = Vec<f64>> {
+        self.coords.into_iter()
+    }
+
     /// The samples as points, in order.
     pub fn points(&self) -> impl ExactSizeIterator<Item = [f64; D]> + '_ {
         (0..self.len()).map(|i| self.point(i))
@@ -90,6 +101,21 @@ pub struct LayerSamples<const D: usize> {
 }
 
 impl<const D: usize> LayerSamples<D> {
+    /// No samples (a buffer for [`crate::FuzzyCurve::sample_layers_into`]).
+    #[must_use]
+    pub fn empty() -> Self {
+        LayerSamples {
+            layers: Layers::from_fn(|_| CurveSamples::empty()),
+        }
+    }
+
+    pub(crate) fn into_buffers(self) -> impl Iterator<Item = Vec<f64>> {
+        self.layers
+            .into_array()
+            .into_iter()
+            .flat_map(CurveSamples::into_buffers)
+    }
+
     /// The seven sampled curves.
     #[must_use]
     pub fn layers(&self) -> &Layers<CurveSamples<D>> {
@@ -168,6 +194,29 @@ pub struct SweepSamples<const D: usize> {
 }
 
 impl<const D: usize> SweepSamples<D> {
+    /// No samples (a buffer for [`crate::FuzzyCurve::sample_sweep_into`]).
+    #[must_use]
+    pub fn empty() -> Self {
+        SweepSamples {
+            layers: LayerSamples::empty(),
+            levels: Vec::new(),
+        }
+    }
+
+    pub(crate) fn into_buffers(self) -> Vec<Vec<f64>> {
+        let mut out: Vec<Vec<f64>> = self.layers.into_buffers().collect();
+        for level in self.levels {
+            for curve in level.alpha_cut.into_array().into_iter().flatten() {
+                out.extend(curve.into_buffers());
+            }
+            let [left, right] = level.type_reduced;
+            out.extend(left.into_buffers());
+            out.extend(right.into_buffers());
+            out.extend(level.defuzzified.into_buffers());
+        }
+        out
+    }
+
     /// Stage 1: the seven layer curves (the crisp curve among them).
     #[must_use]
     pub fn layers(&self) -> &LayerSamples<D> {
