@@ -9,7 +9,7 @@
 //!   curve family.
 //! - [`derivatives`]: `--derivatives K`, derivatives and arc lengths of the
 //!   crisp and the defuzzified curve.
-//! - [`bench`]: the timings behind `t2spline bench`.
+//! - [`bench`](mod@bench): the timings behind `t2spline bench`.
 //! - [`write_atomic`]: output files that are complete or absent, never half
 //!   written.
 //! - [`FitData`]: data files for `t2spline fit` (fuzzy data points), fitted

@@ -88,10 +88,10 @@ proptest! {
         for layer in Layer::ALL {
             check_curve(&got[layer], &params, scale, |t| c.eval_layers(t).unwrap()[layer])?;
         }
-        for i in 0..params.len() {
+        for (i, t) in params.iter().enumerate() {
             for d in 0..2 {
                 let v = Layer::ALL.map(|l| got[l].coord(d)[i]);
-                prop_assert!(v.windows(2).all(|w| w[0] <= w[1]), "t = {}: {v:?}", params[i]);
+                prop_assert!(v.windows(2).all(|w| w[0] <= w[1]), "t = {t}: {v:?}");
             }
         }
     }
@@ -126,7 +126,7 @@ proptest! {
             check_curve(level.defuzzified(), &params, scale, |t| solved.eval(t).unwrap())?;
             // Orders that hold for the exact curves hold for the samples.
             let crisp = &sweep.layers()[Layer::Crisp];
-            for i in 0..params.len() {
+            for i in 0..crisp.len() {
                 for d in 0..3 {
                     let (l, x, r) = (
                         level.type_reduced(Side::Left).coord(d)[i],
