@@ -5,8 +5,10 @@ use std::fmt;
 use std::hint::black_box;
 use std::time::Instant;
 
-use t2spline::sampling::{CurveSamples, LayerSamples, Params, SweepSamples};
-use t2spline::{Alpha, FuzzyCurve, Nt2Number, Nt2Point};
+use t2spline::sampling::{
+    benchmark_curve, benchmark_levels, CurveSamples, LayerSamples, Params, SweepSamples,
+};
+use t2spline::FuzzyCurve;
 
 use crate::{Error, JobCurve};
 
@@ -20,7 +22,8 @@ pub enum BenchCase {
     Crisp,
     /// All seven layer curves ([`FuzzyCurve::sample_layers`]).
     Fuzzy,
-    /// Stages 1–4 at the 11 levels 0, 0.1, …, 1 and every resulting curve
+    /// Stages 1–4 at the 11 levels 0, 0.1, …, 1
+    /// ([`t2spline::sampling::benchmark_levels`]) and every resulting curve
     /// ([`FuzzyCurve::sample_sweep`]).
     Sweep,
 }
@@ -89,12 +92,8 @@ impl fmt::Display for BenchResult {
     }
 }
 
-/// The default benchmark curve: degree 3, ten control points
-/// (0,0), (1,2), (2,−1), (3,3), (4,0), (5,2.5), (6,−2), (7,1), (8,3), (9,0),
-/// weights 1, 0.5, 2, 1, 3, 0.7, 1, 1.5, 0.8, 1, clamped uniform knots; every
-/// coordinate `c` is the fuzzy number with upper feet `c − 0.3, c + 0.45`,
-/// primary feet `c − 0.2, c + 0.3`, lower feet `c − 0.1, c + 0.15` and lower
-/// height 0.6 (unequal spreads, so the stages move the curve).
+/// The default benchmark curve, [`t2spline::sampling::benchmark_curve`]:
+/// degree 3, ten control points, unequal spreads.
 ///
 /// # Examples
 /// ```
@@ -103,42 +102,7 @@ impl fmt::Display for BenchResult {
 /// ```
 #[must_use]
 pub fn default_curve() -> FuzzyCurve<2> {
-    const POINTS: [[f64; 2]; 10] = [
-        [0.0, 0.0],
-        [1.0, 2.0],
-        [2.0, -1.0],
-        [3.0, 3.0],
-        [4.0, 0.0],
-        [5.0, 2.5],
-        [6.0, -2.0],
-        [7.0, 1.0],
-        [8.0, 3.0],
-        [9.0, 0.0],
-    ];
-    const WEIGHTS: [f64; 10] = [1.0, 0.5, 2.0, 1.0, 3.0, 0.7, 1.0, 1.5, 0.8, 1.0];
-    let number = |c: f64| {
-        Nt2Number::try_new(
-            c,
-            [c - 0.3, c + 0.45],
-            [c - 0.2, c + 0.3],
-            [c - 0.1, c + 0.15],
-            0.6,
-        )
-        .expect("the spreads are ordered and finite")
-    };
-    let points = POINTS
-        .iter()
-        .map(|p| Nt2Point::new(p.map(number)))
-        .collect();
-    FuzzyCurve::try_new(3, points, WEIGHTS.to_vec(), None).expect("a valid curve")
-}
-
-/// The 11 levels of the sweep case: 0, 0.1, …, 1.
-#[must_use]
-pub fn sweep_levels() -> Vec<Alpha> {
-    (0..=10)
-        .map(|k| Alpha::try_new(f64::from(k) / 10.0).expect("k/10 lies in [0, 1]"))
-        .collect()
+    benchmark_curve()
 }
 
 /// Times `case` on `curve` at `points` uniform parameters, with the engine
@@ -200,7 +164,7 @@ fn time_case<const D: usize>(
 ) -> f64 {
     let params = Params::Uniform(points);
     let crisp = curve.crisp_curve();
-    let levels = sweep_levels();
+    let levels = benchmark_levels();
     let mut crisp_out = CurveSamples::empty();
     let mut layers_out = LayerSamples::empty();
     let mut sweep_out = SweepSamples::empty();

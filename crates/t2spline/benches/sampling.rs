@@ -17,40 +17,12 @@ use std::hint::black_box;
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use curvo::prelude::NurbsCurve2D;
 use nalgebra::Point3;
-use t2spline::sampling::{CurveSamples, LayerSamples, Params};
-use t2spline::{Alpha, FuzzyCurve, Nt2Number, Nt2Point, NurbsCurve};
+use t2spline::sampling::{benchmark_curve, benchmark_levels, CurveSamples, LayerSamples, Params};
+use t2spline::{FuzzyCurve, NurbsCurve};
 
-const POINTS: [[f64; 2]; 10] = [
-    [0.0, 0.0],
-    [1.0, 2.0],
-    [2.0, -1.0],
-    [3.0, 3.0],
-    [4.0, 0.0],
-    [5.0, 2.5],
-    [6.0, -2.0],
-    [7.0, 1.0],
-    [8.0, 3.0],
-    [9.0, 0.0],
-];
-const WEIGHTS: [f64; 10] = [1.0, 0.5, 2.0, 1.0, 3.0, 0.7, 1.0, 1.5, 0.8, 1.0];
-
-/// The `t2spline bench` curve (see `t2spline_io::bench::default_curve`).
+/// The `t2spline bench` curve.
 fn fuzzy_curve() -> FuzzyCurve<2> {
-    let number = |c: f64| {
-        Nt2Number::try_new(
-            c,
-            [c - 0.3, c + 0.45],
-            [c - 0.2, c + 0.3],
-            [c - 0.1, c + 0.15],
-            0.6,
-        )
-        .unwrap()
-    };
-    let points = POINTS
-        .iter()
-        .map(|p| Nt2Point::new(p.map(number)))
-        .collect();
-    FuzzyCurve::try_new(3, points, WEIGHTS.to_vec(), None).unwrap()
+    benchmark_curve()
 }
 
 /// The same crisp curve for curvo: homogeneous control points (w·x, w·y, w).
@@ -132,9 +104,7 @@ fn fuzzy(c: &mut Criterion) {
 
 fn sweep(c: &mut Criterion) {
     let curve = fuzzy_curve();
-    let levels: Vec<Alpha> = (0..=10)
-        .map(|k| Alpha::try_new(k as f64 / 10.0).unwrap())
-        .collect();
+    let levels = benchmark_levels();
     let n = 100_000;
     let mut g = c.benchmark_group("sweep");
     g.throughput(Throughput::Elements(n as u64)).sample_size(10);

@@ -5,7 +5,7 @@
 //! ends, at every knot, and with sorted and unsorted parameters.
 
 use proptest::prelude::*;
-use t2spline::sampling::{CurveSamples, Params, Sampler};
+use t2spline::sampling::{Bound, CurveSamples, Params, Sampler};
 use t2spline::{
     strategies, Alpha, Error, FuzzyCurve, KnotVector, Layer, Nt2Number, Nt2Point, NurbsCurve, Side,
 };
@@ -311,4 +311,48 @@ fn fuzzy_curve_with_crisp_numbers_gives_seven_equal_layers() {
     for l in Layer::ALL {
         assert_eq!(s[l], s[Layer::Crisp], "{l}");
     }
+}
+
+#[test]
+fn bounds_clamp_channels_and_ignore_self_bounds() {
+    // Three constant channels 1, 0, 2 on a line; bound channel 0 into [ch1, ch2]
+    // (no change), channel 1 at least channel 0 (raised to 1), and channel 2 by
+    // itself (a no-op, not an error).
+    let knots = KnotVector::clamped_uniform(1, 2).unwrap();
+    let s = Sampler::try_new(&knots, &[1.0, 3.0], &[[1.0, 1.0], [0.0, 0.0], [2.0, 2.0]])
+        .unwrap()
+        .with_bounds(&[
+            Bound {
+                channel: 0,
+                at_least: Some(1),
+                at_most: Some(2),
+            },
+            Bound {
+                channel: 1,
+                at_least: Some(0),
+                at_most: None,
+            },
+            Bound {
+                channel: 2,
+                at_least: Some(2),
+                at_most: Some(2),
+            },
+        ])
+        .unwrap();
+    let out = s.sample(Params::Uniform(5)).unwrap();
+    assert!(out[0].iter().all(|&x| (x - 1.0).abs() < 1e-15), "{out:?}");
+    assert_eq!(out[1], out[0]);
+    assert!(out[2].iter().all(|&x| (x - 2.0).abs() < 1e-15), "{out:?}");
+    assert!(matches!(
+        s.with_bounds(&[Bound {
+            channel: 3,
+            at_least: None,
+            at_most: None
+        }]),
+        Err(Error::Length {
+            expected: 3,
+            found: 4,
+            ..
+        })
+    ));
 }

@@ -10,8 +10,15 @@ use crate::sampling::{Params, Sampler};
 pub(crate) const BLOCK: usize = 512;
 
 /// Evaluates the parameters `first ..` of `params` (as many as each slice of
-/// `out` is long) into `out`, one slice per channel.
-pub(crate) fn run(sampler: &Sampler, params: Params<'_>, first: usize, out: &mut [&mut [f64]]) {
+/// `out` is long) into `out`, one slice per channel; `sorted` says that the
+/// parameters never decrease.
+pub(crate) fn run(
+    sampler: &Sampler,
+    params: Params<'_>,
+    sorted: bool,
+    first: usize,
+    out: &mut [&mut [f64]],
+) {
     let Some(len) = out.first().map(|o| o.len()) else {
         return; // No channels: nothing to compute.
     };
@@ -28,7 +35,11 @@ pub(crate) fn run(sampler: &Sampler, params: Params<'_>, first: usize, out: &mut
         let mut i = 0;
         while i < n {
             span = locate(spans, span, t[i]);
-            let j = run_end(spans, span, &t[..n], i + 1);
+            let j = if sorted {
+                sorted_run_end(spans, span, &t[..n], i + 1)
+            } else {
+                run_end(spans, span, &t[..n], i + 1)
+            };
             evaluate(
                 sampler,
                 span,
@@ -40,7 +51,7 @@ pub(crate) fn run(sampler: &Sampler, params: Params<'_>, first: usize, out: &mut
             );
             i = j;
         }
-        apply_bounds(sampler, out, done..done + n, &mut t);
+        apply_bounds(sampler, out, done..done + n);
         done += n;
     }
 }
@@ -79,6 +90,17 @@ fn run_end(spans: &[Span], k: usize, t: &[f64], from: usize) -> usize {
         .iter()
         .take_while(|&&x| sp.start <= x && x < end)
         .count()
+}
+
+/// [`run_end`] for parameters that never decrease (and `t[from − 1]` in span
+/// `k`): a binary search for the first one past the span's end.
+#[inline]
+fn sorted_run_end(spans: &[Span], k: usize, t: &[f64], from: usize) -> usize {
+    if k + 1 == spans.len() {
+        return t.len(); // The last span takes the rest of the domain.
+    }
+    let end = spans[k].end;
+    from + t[from..].partition_point(|&x| x < end)
 }
 
 /// The span of `t` (in the domain): the hint or its successor when parameters
@@ -143,6 +165,7 @@ fn horner_any(c: &[f64], s: f64) -> f64 {
     rest.iter().rev().fold(*last, |acc, &ck| acc * s + ck)
 }
 
+/// [`evaluate_with`] for `K` coefficients held in registers.
 #[inline(always)]
 fn evaluate_order<const K: usize>(
     sp: &Span,
@@ -153,22 +176,11 @@ fn evaluate_order<const K: usize>(
     out: &mut [&mut [f64]],
     at: usize,
 ) {
-    let denominator: [f64; K] = std::array::from_fn(|k| table[k]);
-    for ((s, r), &t) in s.iter_mut().zip(r.iter_mut()).zip(t) {
-        let x = (t - sp.mid) * sp.inv_half;
-        *s = x;
-        // W > 0: the basis is non-negative, sums to 1, and the weights are > 0.
-        *r = 1.0 / horner(&denominator, x);
-    }
-    for (row, o) in table[K..].chunks_exact(K).zip(out.iter_mut()) {
-        let c: [f64; K] = std::array::from_fn(|k| row[k]);
-        let o = &mut o[at..at + t.len()];
-        for ((o, &x), &r) in o.iter_mut().zip(s.iter()).zip(r.iter()) {
-            *o = horner(&c, x) * r;
-        }
-    }
+    let load = |row: &[f64]| -> [f64; K] { std::array::from_fn(|k| row[k]) };
+    evaluate_with(K, load, horner::<K>, sp, table, t, s, r, out, at);
 }
 
+/// [`evaluate_with`] for any number of coefficients.
 #[allow(clippy::too_many_arguments)]
 fn evaluate_any(
     order: usize,
@@ -180,42 +192,72 @@ fn evaluate_any(
     out: &mut [&mut [f64]],
     at: usize,
 ) {
-    let denominator = &table[..order];
+    let load = |row: &[f64]| row.to_vec();
+    let horner = |c: &Vec<f64>, x: f64| horner_any(c, x);
+    evaluate_with(order, load, horner, sp, table, t, s, r, out, at);
+}
+
+/// Evaluates the parameters `t` of one span: the local variable `s` and the
+/// reciprocal denominator `r` first, then every channel as `V(s)·r` into
+/// `out[channel][at ..]`. `load` turns a row of `order` coefficients into the
+/// form `horner` evaluates.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn evaluate_with<C>(
+    order: usize,
+    load: impl Fn(&[f64]) -> C,
+    horner: impl Fn(&C, f64) -> f64,
+    sp: &Span,
+    table: &[f64],
+    t: &[f64],
+    s: &mut [f64],
+    r: &mut [f64],
+    out: &mut [&mut [f64]],
+    at: usize,
+) {
+    let denominator = load(&table[..order]);
     for ((s, r), &t) in s.iter_mut().zip(r.iter_mut()).zip(t) {
         let x = (t - sp.mid) * sp.inv_half;
         *s = x;
-        *r = 1.0 / horner_any(denominator, x);
+        // W > 0: the basis is non-negative, sums to 1, and the weights are > 0.
+        *r = 1.0 / horner(&denominator, x);
     }
-    for (c, o) in table[order..].chunks_exact(order).zip(out.iter_mut()) {
+    for (row, o) in table[order..].chunks_exact(order).zip(out.iter_mut()) {
+        let c = load(row);
         let o = &mut o[at..at + t.len()];
         for ((o, &x), &r) in o.iter_mut().zip(s.iter()).zip(r.iter()) {
-            *o = horner_any(c, x) * r;
+            *o = horner(&c, x) * r;
         }
     }
 }
 
-/// Applies the sampler's bounds to `range` of every channel; `scratch` holds a
-/// copy of the bounding channel so that the loop reads one slice and writes
-/// another.
-fn apply_bounds(
-    sampler: &Sampler,
-    out: &mut [&mut [f64]],
-    range: std::ops::Range<usize>,
-    scratch: &mut [f64; BLOCK],
-) {
-    let n = range.len();
+/// Applies the sampler's bounds to `range` of every channel.
+fn apply_bounds(sampler: &Sampler, out: &mut [&mut [f64]], range: std::ops::Range<usize>) {
     for b in sampler.bounds() {
         if let Some(lo) = b.at_least {
-            scratch[..n].copy_from_slice(&out[lo][range.clone()]);
-            for (o, &l) in out[b.channel][range.clone()].iter_mut().zip(&scratch[..n]) {
-                *o = o.max(l);
+            let (o, l) = pair(out, b.channel, lo);
+            // `if` rather than `f64::max`: no NaN here, and this form compiles
+            // to packed max instructions.
+            for (o, &l) in o[range.clone()].iter_mut().zip(&l[range.clone()]) {
+                *o = if *o < l { l } else { *o };
             }
         }
         if let Some(hi) = b.at_most {
-            scratch[..n].copy_from_slice(&out[hi][range.clone()]);
-            for (o, &h) in out[b.channel][range.clone()].iter_mut().zip(&scratch[..n]) {
-                *o = o.min(h);
+            let (o, h) = pair(out, b.channel, hi);
+            for (o, &h) in o[range.clone()].iter_mut().zip(&h[range.clone()]) {
+                *o = if *o > h { h } else { *o };
             }
         }
+    }
+}
+
+/// Channel `write` mutably and channel `read` (another one) shared.
+fn pair<'a>(out: &'a mut [&mut [f64]], write: usize, read: usize) -> (&'a mut [f64], &'a [f64]) {
+    if read < write {
+        let (head, tail) = out.split_at_mut(write);
+        (&mut *tail[0], &*head[read])
+    } else {
+        let (head, tail) = out.split_at_mut(read);
+        (&mut *head[write], &*tail[0])
     }
 }

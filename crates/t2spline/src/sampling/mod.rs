@@ -23,6 +23,7 @@
 //! [`FuzzyCurve::eval_layers`](crate::FuzzyCurve::eval_layers)) stay as the
 //! reference that the tests hold this engine to (1e-12 relative).
 
+mod benchmark;
 mod curves;
 mod kernel;
 mod params;
@@ -30,6 +31,7 @@ mod power_form;
 mod sampler;
 mod samples;
 
+pub use benchmark::{benchmark_curve, benchmark_levels};
 pub use params::Params;
 pub use sampler::{Bound, Sampler};
 pub use samples::{CurveSamples, LayerSamples, StageSamples, SweepSamples};

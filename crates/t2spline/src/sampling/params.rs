@@ -2,6 +2,18 @@
 
 use crate::error::Error;
 use crate::nurbs::Domain;
+use crate::sampling::kernel::BLOCK;
+
+/// `0, 1, …, BLOCK − 1` as floats.
+const STEPS: [f64; BLOCK] = {
+    let mut steps = [0.0; BLOCK];
+    let mut k = 0;
+    while k < BLOCK {
+        steps[k] = k as f64;
+        k += 1;
+    }
+    steps
+};
 
 /// The parameters at which a sampler evaluates its curves.
 ///
@@ -73,17 +85,24 @@ impl Params<'_> {
         }
     }
 
-    /// `Ok` if every parameter lies in `domain`.
+    /// `Ok(sorted)` if every parameter lies in `domain`, where `sorted` says
+    /// whether they never decrease (always for `Uniform`).
     ///
     /// # Errors
     /// [`Error::OutOfDomain`] for the first one that does not (or is NaN).
-    pub(crate) fn check(&self, domain: Domain) -> Result<(), Error> {
+    pub(crate) fn check(&self, domain: Domain) -> Result<bool, Error> {
         match self {
-            Params::Uniform(_) => Ok(()),
-            Params::Given(t) => match t.iter().find(|&&t| !domain.contains(t)) {
-                Some(&t) => domain.check(t),
-                None => Ok(()),
-            },
+            Params::Uniform(_) => Ok(true),
+            Params::Given(t) => {
+                let mut sorted = true;
+                let mut previous = f64::NEG_INFINITY;
+                for &x in *t {
+                    domain.check(x)?;
+                    sorted &= previous <= x;
+                    previous = x;
+                }
+                Ok(sorted)
+            }
         }
     }
 
@@ -93,9 +112,21 @@ impl Params<'_> {
         match self {
             Params::Uniform(n) => {
                 // Exactly `Domain::uniform`: lerp(i / (n − 1)), the last one b.
+                // `first + STEPS[k]` is the integer `first + k` exactly (below
+                // 2⁵³), without a slow unsigned conversion per parameter.
+                // `lerp(s)` is `a + (b − a)·s` except at s = 1, which only the
+                // last parameter reaches (then `b` exactly); so the loop has no
+                // branch and the last one is set afterwards.
                 let last = n.saturating_sub(1).max(1) as f64;
-                for (i, t) in out.iter_mut().enumerate() {
-                    *t = domain.lerp((first + i) as f64 / last);
+                let base = first as f64;
+                let (a, width) = (domain.start, domain.end - domain.start);
+                for (t, step) in out.iter_mut().zip(&STEPS) {
+                    *t = a + width * ((base + step) / last);
+                }
+                if *n >= 2 && first + out.len() == *n {
+                    if let Some(t) = out.last_mut() {
+                        *t = domain.end;
+                    }
                 }
             }
             Params::Given(t) => out.copy_from_slice(&t[first..first + out.len()]),

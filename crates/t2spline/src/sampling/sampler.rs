@@ -171,7 +171,13 @@ impl Sampler {
                 });
             }
         }
-        self.bounds.extend_from_slice(bounds);
+        // A channel bounded by itself is left as it is: drop such halves.
+        let own = |c: Option<usize>, channel: usize| c.filter(|&c| c != channel);
+        self.bounds.extend(bounds.iter().map(|b| Bound {
+            channel: b.channel,
+            at_least: own(b.at_least, b.channel),
+            at_most: own(b.at_most, b.channel),
+        }));
         Ok(self)
     }
 
@@ -192,15 +198,7 @@ impl Sampler {
     /// # Errors
     /// [`Error::OutOfDomain`] for the first parameter outside the domain.
     pub fn sample<'a>(&self, params: impl Into<Params<'a>>) -> Result<Vec<Vec<f64>>, Error> {
-        let params = params.into();
-        params.check(self.domain)?;
-        // One zeroed allocation per channel (`vec![v; k]` would copy `v`).
-        let mut out: Vec<Vec<f64>> = (0..self.channels)
-            .map(|_| vec![0.0; params.len()])
-            .collect();
-        let mut slices: Vec<&mut [f64]> = out.iter_mut().map(Vec::as_mut_slice).collect();
-        self.run(params, &mut slices);
-        Ok(out)
+        self.sample_reusing(params, &mut Vec::new())
     }
 
     /// Samples every channel at `params` into vectors taken from `buffers` (and
@@ -215,16 +213,21 @@ impl Sampler {
         buffers: &mut Vec<Vec<f64>>,
     ) -> Result<Vec<Vec<f64>>, Error> {
         let params = params.into();
-        params.check(self.domain)?;
+        let sorted = params.check(self.domain)?;
+        let n = params.len();
         let mut out: Vec<Vec<f64>> = (0..self.channels)
-            .map(|_| {
-                let mut v = buffers.pop().unwrap_or_default();
-                v.resize(params.len(), 0.0);
-                v
+            .map(|_| match buffers.pop() {
+                Some(mut v) => {
+                    v.resize(n, 0.0);
+                    v
+                }
+                // A zeroed allocation: fresh pages from the system are zero
+                // already, so nothing is written twice.
+                None => vec![0.0; n],
             })
             .collect();
         let mut slices: Vec<&mut [f64]> = out.iter_mut().map(Vec::as_mut_slice).collect();
-        self.run(params, &mut slices);
+        self.run(params, sorted, &mut slices);
         Ok(out)
     }
 
@@ -254,13 +257,14 @@ impl Sampler {
                 found: o.len(),
             });
         }
-        params.check(self.domain)?;
-        self.run(params, out);
+        let sorted = params.check(self.domain)?;
+        self.run(params, sorted, out);
         Ok(())
     }
 
-    /// Runs a checked job, in parallel when it is large enough.
-    fn run(&self, params: Params<'_>, out: &mut [&mut [f64]]) {
+    /// Runs a checked job, in parallel when it is large enough; `sorted` says
+    /// that the parameters never decrease.
+    fn run(&self, params: Params<'_>, sorted: bool, out: &mut [&mut [f64]]) {
         #[cfg(feature = "parallel")]
         {
             let threads = rayon::current_num_threads();
@@ -270,23 +274,35 @@ impl Sampler {
                     .div_ceil(threads * 4)
                     .next_multiple_of(kernel::BLOCK)
                     .max(MIN_CHUNK);
-                self.run_parallel(params, out, chunk);
+                self.run_parallel(params, sorted, out, chunk);
                 return;
             }
         }
-        self.run_serial(params, 0, out);
+        self.run_serial(params, sorted, 0, out);
     }
 
     /// Evaluates the parameters `first ..` (as many as each slice of `out` is
     /// long) on the calling thread.
-    pub(crate) fn run_serial(&self, params: Params<'_>, first: usize, out: &mut [&mut [f64]]) {
-        kernel::run(self, params, first, out);
+    pub(crate) fn run_serial(
+        &self,
+        params: Params<'_>,
+        sorted: bool,
+        first: usize,
+        out: &mut [&mut [f64]],
+    ) {
+        kernel::run(self, params, sorted, first, out);
     }
 
     /// Splits the job into chunks of `chunk` parameters and runs them on rayon's
     /// threads; each chunk is [`Sampler::run_serial`] on its part of every slice.
     #[cfg(feature = "parallel")]
-    pub(crate) fn run_parallel(&self, params: Params<'_>, out: &mut [&mut [f64]], chunk: usize) {
+    pub(crate) fn run_parallel(
+        &self,
+        params: Params<'_>,
+        sorted: bool,
+        out: &mut [&mut [f64]],
+        chunk: usize,
+    ) {
         use rayon::prelude::*;
         let tasks = params.len().div_ceil(chunk);
         let mut jobs: Vec<(usize, Vec<&mut [f64]>)> = (0..tasks)
@@ -298,7 +314,7 @@ impl Sampler {
             }
         }
         jobs.into_par_iter()
-            .for_each(|(first, mut pieces)| self.run_serial(params, first, &mut pieces));
+            .for_each(|(first, mut pieces)| self.run_serial(params, sorted, first, &mut pieces));
     }
 
     pub(crate) fn order(&self) -> usize {
