@@ -5,7 +5,7 @@
 //! ends, at every knot, and with sorted and unsorted parameters.
 
 use proptest::prelude::*;
-use t2spline::sampling::{Bound, CurveSamples, Params, Sampler};
+use t2spline::sampling::{Bound, CurveSamples, LayerSamples, Params, Sampler, SweepSamples};
 use t2spline::{
     strategies, Alpha, Error, FuzzyCurve, KnotVector, Layer, Nt2Number, Nt2Point, NurbsCurve, Side,
 };
@@ -355,4 +355,35 @@ fn bounds_clamp_channels_and_ignore_self_bounds() {
             ..
         })
     ));
+}
+
+#[test]
+fn one_level_alone_equals_that_level_of_a_sweep() {
+    let c = paper_like_curve();
+    for a in [0.0, 0.45, 0.6, 0.61, 1.0] {
+        let alpha = Alpha::try_new(a).unwrap();
+        let alone = c.solve(alpha).sample_stages(Params::Uniform(777)).unwrap();
+        let sweep = c.sample_sweep(Params::Uniform(777), &[alpha]).unwrap();
+        assert_eq!(alone, sweep.levels()[0], "alpha = {a}");
+    }
+}
+
+#[test]
+fn reused_buffers_give_the_same_samples_at_any_size() {
+    let c = paper_like_curve();
+    let alphas = [Alpha::try_new(0.2).unwrap(), Alpha::try_new(0.9).unwrap()];
+    let mut layers = LayerSamples::empty();
+    let mut sweep = SweepSamples::empty();
+    let mut crisp = CurveSamples::empty();
+    for n in [1000, 10, 3001] {
+        let p = Params::Uniform(n);
+        c.sample_layers_into(p, &mut layers).unwrap();
+        assert_eq!(layers, c.sample_layers(p).unwrap(), "{n}");
+        c.sample_sweep_into(p, &alphas, &mut sweep).unwrap();
+        assert_eq!(sweep, c.sample_sweep(p, &alphas).unwrap(), "{n}");
+        c.crisp_curve().sample_soa_into(p, &mut crisp).unwrap();
+        assert_eq!(crisp, layers[Layer::Crisp], "{n}");
+    }
+    assert!(c.sample_layers_into(&[2.0], &mut layers).is_err());
+    assert!(layers.is_empty());
 }
