@@ -152,7 +152,8 @@ impl Sampler {
         }
     }
 
-    /// Adds order-keeping rules, applied in the given order after evaluation.
+    /// Adds order-keeping rules, applied in the given order after evaluation. A
+    /// channel bounded by itself is left as it is.
     ///
     /// # Errors
     /// [`Error::Length`] if a bound names a channel that does not exist.
