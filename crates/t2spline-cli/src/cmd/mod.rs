@@ -5,7 +5,6 @@ mod alpha;
 mod fit;
 mod plot;
 mod report;
-mod bench;
 mod run;
 mod validate;
 
