@@ -44,7 +44,7 @@ fn check_line(line: &str, case: &str, points: u64, threads: u64) {
         .parse()
         .unwrap();
     assert!(seconds > 0.0, "{line}");
-    // Both are printed rounded; the rate is N / seconds to a few digits.
+    // Seconds are printed in full, the rate to five digits.
     assert!(
         (rate * seconds / points as f64 - 1.0).abs() < 1e-3,
         "{line}"

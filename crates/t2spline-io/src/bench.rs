@@ -78,7 +78,7 @@ impl fmt::Display for BenchResult {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(
             f,
-            "bench {} points={} threads={} seconds={:.6} points_per_second={:.4e}",
+            "bench {} points={} threads={} seconds={} points_per_second={:.4e}",
             self.case,
             self.points,
             self.threads,
