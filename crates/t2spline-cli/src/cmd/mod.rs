@@ -2,6 +2,7 @@
 //! the libraries.
 
 mod alpha;
+mod bench;
 mod fit;
 mod plot;
 mod report;
