@@ -1,10 +1,11 @@
-//! Reading the job and writing results: files atomically, standard streams
-//! with a closed pipe treated as success.
+//! Reading jobs and data files (within the size limit, as UTF-8) and writing
+//! results: files all or nothing, standard output last, a closed pipe treated
+//! as success.
 
-use std::io::{Read, Write};
+use std::io::Write;
 use std::path::{Path, PathBuf};
 
-use anyhow::Context;
+use t2spline_io::job::{read_text, read_text_from};
 use t2spline_io::{write_all_atomic, Error, FitData, Job};
 
 /// Whether the path names a standard stream.
@@ -21,41 +22,77 @@ pub fn job_name(path: &Path) -> String {
     }
 }
 
+/// The text at `path`, or of standard input for `-`, within the size limit and
+/// as UTF-8.
+pub fn read_input(path: &Path) -> Result<String, Error> {
+    if is_stdio(path) {
+        read_text_from(std::io::stdin().lock(), &job_name(path))
+    } else {
+        read_text(path)
+    }
+}
+
 /// Reads and validates the job at `path`, or from standard input for `-`.
-pub fn read_job(path: &Path) -> anyhow::Result<Job> {
+pub fn read_job(path: &Path) -> Result<Job, Error> {
     Ok(read_job_text(path)?.0)
 }
 
 /// Reads and validates the job at `path` (or standard input for `-`), and
-/// returns it with its text (the report shows it).
-pub fn read_job_text(path: &Path) -> anyhow::Result<(Job, String)> {
-    let text = if is_stdio(path) {
-        read_stdin()?
-    } else {
-        std::fs::read_to_string(path).map_err(|source| Error::Read {
-            path: path.to_owned(),
-            source,
-        })?
-    };
+/// returns it with its text (the report shows it; messages place problems in
+/// it).
+pub fn read_job_text(path: &Path) -> Result<(Job, String), Error> {
+    let text = read_input(path)?;
     let job = Job::parse(&text, &job_name(path))?;
     Ok((job, text))
 }
 
 /// Reads and validates the data file at `path`, or from standard input for `-`.
-pub fn read_data(path: &Path) -> anyhow::Result<FitData> {
-    if is_stdio(path) {
-        Ok(FitData::parse(&read_stdin()?, &job_name(path))?)
-    } else {
-        Ok(FitData::read(path)?)
-    }
+pub fn read_data(path: &Path) -> Result<FitData, Error> {
+    FitData::parse(&read_input(path)?, &job_name(path))
 }
 
-fn read_stdin() -> anyhow::Result<String> {
-    let mut text = String::new();
-    std::io::stdin()
-        .read_to_string(&mut text)
-        .context("standard input: cannot read")?;
-    Ok(text)
+/// Writes to standard output with `write`; a failure is an [`Error::Write`]
+/// naming `<stdout>` (a closed pipe among them, which `main` treats as success).
+pub fn to_stdout(write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>) -> Result<(), Error> {
+    let mut out = std::io::BufWriter::new(std::io::stdout().lock());
+    write(&mut out)
+        .and_then(|()| out.flush())
+        .map_err(|source| Error::Write {
+            path: PathBuf::from("<stdout>"),
+            source,
+        })
+}
+
+/// The folders a run creates for its outputs, so that a failed run can remove
+/// them again.
+#[derive(Debug, Default)]
+pub struct NewFolders {
+    created: Vec<PathBuf>,
+}
+
+impl NewFolders {
+    /// Creates `dir` and any missing ancestors, remembering which were new.
+    pub fn create(&mut self, dir: &Path) -> Result<(), Error> {
+        let mut missing: Vec<PathBuf> = dir
+            .ancestors()
+            .filter(|a| !a.as_os_str().is_empty() && !a.exists())
+            .map(Path::to_owned)
+            .collect();
+        std::fs::create_dir_all(dir).map_err(|source| Error::Write {
+            path: dir.to_owned(),
+            source,
+        })?;
+        missing.reverse();
+        self.created.extend(missing);
+        Ok(())
+    }
+
+    /// Removes the folders created, deepest first, as far as they are empty.
+    pub fn remove(self) {
+        for dir in self.created.iter().rev() {
+            let _ = std::fs::remove_dir(dir);
+        }
+    }
 }
 
 /// Everything a command writes, gathered first and written at the end: the
@@ -87,43 +124,29 @@ impl Outputs {
 
     /// Writes everything.
     pub fn commit(self) -> anyhow::Result<()> {
-        let mut created = Vec::new();
-        let result = self.write_files(&mut created);
-        if result.is_err() {
+        let mut folders = NewFolders::default();
+        let files = self.write_files(&mut folders);
+        if files.is_err() {
             // Only folders this run created, and only if still empty.
-            for dir in created.iter().rev() {
-                let _ = std::fs::remove_dir(dir);
-            }
+            folders.remove();
         }
-        result?;
+        files?;
         if !self.stdout.is_empty() {
-            let mut out = std::io::stdout().lock();
-            out.write_all(&self.stdout)?;
-            out.flush()?;
+            to_stdout(|w| w.write_all(&self.stdout))?;
         }
         Ok(())
     }
 
-    fn write_files(&self, created: &mut Vec<PathBuf>) -> anyhow::Result<()> {
+    fn write_files(&self, folders: &mut NewFolders) -> Result<(), Error> {
         for dir in &self.dirs {
-            let mut missing: Vec<PathBuf> = dir
-                .ancestors()
-                .filter(|a| !a.as_os_str().is_empty() && !a.exists())
-                .map(Path::to_owned)
-                .collect();
-            std::fs::create_dir_all(dir).map_err(|source| Error::Write {
-                path: dir.clone(),
-                source,
-            })?;
-            missing.reverse();
-            created.extend(missing);
+            folders.create(dir)?;
         }
         let files: Vec<(&Path, &[u8])> = self
             .files
             .iter()
             .map(|(p, b)| (p.as_path(), b.as_slice()))
             .collect();
-        Ok(write_all_atomic(&files)?)
+        write_all_atomic(&files)
     }
 }
 

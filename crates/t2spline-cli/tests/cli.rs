@@ -335,7 +335,8 @@ fn alpha_missing_everywhere_is_an_error_naming_alpha() {
     assert_eq!(
         stderr,
         format!(
-            "t2spline: {}: alpha: missing: give it in the job file or with --alpha\n",
+            // A missing key is placed at the object that lacks it.
+            "t2spline: {}:1:1: alpha: missing: give it in the job file or with --alpha\n",
             job.display()
         )
     );
@@ -350,7 +351,7 @@ fn alpha_missing_everywhere_is_an_error_naming_alpha() {
         .assert()
         .code(2)
         .stdout("")
-        .stderr("t2spline: <stdin>: alpha: missing: give it in the job file or with --alpha\n");
+        .stderr("t2spline: <stdin>:1:1: alpha: missing: give it in the job file or with --alpha\n");
 }
 
 #[test]
@@ -517,8 +518,32 @@ fn bad_job_files_give_one_line_per_problem_naming_file_and_place() {
             let (code, stdout, stderr) = run(&[sub, path_str(&job)]);
             assert_eq!(code, 2, "{sub} {name}");
             assert_eq!(stdout, "", "{sub} {name}");
-            assert_eq!(stderr, expected, "{sub} {name}");
+            // Every line has the line and column after the file name; the
+            // positions themselves are checked in `errors.rs`.
+            let file = format!("t2spline: {}:", job.display());
+            assert!(
+                stderr.lines().all(|l| without_position(l, &file) != l),
+                "{sub} {name}: {stderr}"
+            );
+            let strip = |text: &str| -> String {
+                text.lines()
+                    .map(|l| without_position(l, &file) + "\n")
+                    .collect()
+            };
+            assert_eq!(strip(&stderr), strip(&expected), "{sub} {name}");
         }
+    }
+}
+
+/// `{file}12:5: rest` → `{file} rest`; other lines unchanged.
+fn without_position(line: &str, file: &str) -> String {
+    let number = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
+    let Some(rest) = line.strip_prefix(file) else {
+        return line.to_owned();
+    };
+    match rest.splitn(3, ':').collect::<Vec<_>>()[..] {
+        [l, c, rest] if number(l) && number(c) => format!("{file}{rest}"),
+        _ => line.to_owned(),
     }
 }
 
@@ -558,8 +583,14 @@ fn validate_lists_exactly_the_three_problems() {
     assert_eq!(stdout, "");
     let lines: Vec<&str> = stderr.lines().collect();
     assert_eq!(lines.len(), 3, "{stderr}");
+    let file = format!("t2spline: {}:", job.display());
     let prefix = format!("t2spline: {}: ", job.display());
-    assert!(lines.iter().all(|l| l.starts_with(&prefix)), "{stderr}");
+    assert!(
+        lines
+            .iter()
+            .all(|l| without_position(l, &file).starts_with(&prefix)),
+        "{stderr}"
+    );
     assert!(lines[0].contains("alhpa") && lines[0].contains("`alpha`"));
     assert!(lines[1].contains("points[1].y") && lines[1].contains("lower.left <= crisp"));
     assert!(lines[2].contains("weights[1]"));
@@ -571,7 +602,7 @@ fn a_missing_file_is_an_error_naming_it() {
     let missing = dir.path().join("nope.json");
     for sub in ["run", "validate"] {
         let (code, stdout, stderr) = run(&[sub, path_str(&missing)]);
-        assert_eq!(code, 2);
+        assert_eq!(code, 3, "exit code 3: the job cannot be read");
         assert_eq!(stdout, "");
         let lines: Vec<&str> = stderr.lines().collect();
         assert_eq!(lines.len(), 1, "{stderr}");
@@ -594,7 +625,7 @@ fn an_unwritable_output_is_an_error_naming_it() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("no/such/folder/out.json");
     let (code, stdout, stderr) = run(&["run", path_str(&example()), "-o", path_str(&out)]);
-    assert_eq!(code, 2);
+    assert_eq!(code, 4, "exit code 4: an output cannot be written");
     assert_eq!(stdout, "");
     assert!(
         stderr.starts_with(&format!("t2spline: {}: cannot write: ", out.display())),
@@ -702,7 +733,7 @@ fn csv_and_output_are_written_all_or_nothing() {
         "-o",
         path_str(&out),
     ]);
-    assert_eq!(code, 2, "{stderr}");
+    assert_eq!(code, 4, "{stderr}");
     assert!(stdout.is_empty(), "{stdout}");
     assert!(stderr.contains("out.json: cannot write"), "{stderr}");
     assert!(

@@ -1,10 +1,12 @@
 //! CSV export of the sampled curves: one file per curve family, with headers.
 
+use std::io::Write;
 use std::path::{Path, PathBuf};
 
-use t2spline::Layer;
+use t2spline::pipeline::euclidean_norm;
+use t2spline::{Layer, Num};
 
-use crate::atomic::write_all_atomic;
+use crate::atomic::Staged;
 use crate::result::{Point, RunResult};
 use crate::Error;
 
@@ -31,14 +33,41 @@ pub const CSV_FILES: [(&str, &str); 4] = [
 /// One named column group: a curve sampled at the result's parameters.
 type Family<'a> = Vec<(String, &'a [Point])>;
 
-/// Renders the four CSV files of a result, as `(file name, contents)`, and
+/// One CSV file of a result: `t`, then every curve's coordinates, then an
+/// optional extra column.
+struct Table<'a> {
+    params: &'a [f64],
+    family: Family<'a>,
+    dims: usize,
+    extra: Option<(&'static str, Vec<f64>)>,
+}
+
+impl Table<'_> {
+    fn write(&self, out: &mut dyn Write) -> std::io::Result<()> {
+        let axes = ["x", "y", "z"];
+        let mut w = csv::Writer::from_writer(out);
+        let mut header = vec!["t".to_owned()];
+        for (name, _) in &self.family {
+            header.extend(axes[..self.dims].iter().map(|a| format!("{name}_{a}")));
+        }
+        header.extend(self.extra.as_ref().map(|(name, _)| (*name).to_owned()));
+        w.write_record(&header)?;
+        let number = |x: &f64| Num(*x).to_string();
+        for (i, t) in self.params.iter().enumerate() {
+            let mut row = vec![number(t)];
+            for (_, points) in &self.family {
+                row.extend(points[i].iter().map(number));
+            }
+            row.extend(self.extra.as_ref().map(|(_, v)| number(&v[i])));
+            w.write_record(&row)?;
+        }
+        w.flush()
+    }
+}
+
+/// The tables of a result, in the order of [`CSV_FILES`], then
 /// [`DERIVATIVES_CSV`] when the result has derivatives.
-///
-/// Every file starts with the column `t`; a curve `name` contributes columns
-/// `name_x`, `name_y` (and `name_z`). Numbers are written in the shortest form
-/// that reads back to the same `f64`.
-#[must_use]
-pub fn render_csv(result: &RunResult) -> Vec<(&'static str, String)> {
+fn tables(result: &RunResult) -> Vec<(&'static str, Table<'_>)> {
     let c = &result.curves;
     let layer = |l: Layer| -> &[Point] {
         match c.layers.get(l) {
@@ -67,27 +96,27 @@ pub fn render_csv(result: &RunResult) -> Vec<(&'static str, String)> {
         ("crisp".into(), &c.crisp),
         ("defuzzified".into(), &c.defuzzified),
     ];
+    // Scaled, so that a distance near 1e-170 does not underflow when squared.
     let distance: Vec<f64> = c
         .crisp
         .iter()
         .zip(&c.defuzzified)
         .map(|(a, b)| {
-            a.iter()
-                .zip(b)
-                .map(|(x, y)| (x - y) * (x - y))
-                .sum::<f64>()
-                .sqrt()
+            let d: Vec<f64> = a.iter().zip(b).map(|(x, y)| x - y).collect();
+            euclidean_norm(&d)
         })
         .collect();
-    let dims = result.dimension;
+    let table = |family, extra| Table {
+        params: &c.params,
+        family,
+        dims: result.dimension,
+        extra,
+    };
     let mut files = vec![
-        (CSV_FILES[0].0, table(&c.params, &stage1, dims, None)),
-        (CSV_FILES[1].0, table(&c.params, &stage2, dims, None)),
-        (CSV_FILES[2].0, table(&c.params, &stage3, dims, None)),
-        (
-            CSV_FILES[3].0,
-            table(&c.params, &stage4, dims, Some(("distance", &distance))),
-        ),
+        (CSV_FILES[0].0, table(stage1, None)),
+        (CSV_FILES[1].0, table(stage2, None)),
+        (CSV_FILES[2].0, table(stage3, None)),
+        (CSV_FILES[3].0, table(stage4, Some(("distance", distance)))),
     ];
     if let Some(d) = &c.derivatives {
         // `crisp_d1_x, …, defuzzified_dK_z`: the derivatives of `--derivatives K`.
@@ -100,7 +129,7 @@ pub fn render_csv(result: &RunResult) -> Vec<(&'static str, String)> {
                     .map(move |(k, points)| (format!("{name}_d{}", k + 1), points.as_slice()))
             })
             .collect();
-        files.push((DERIVATIVES_CSV, table(&c.params, &family, dims, None)));
+        files.push((DERIVATIVES_CSV, table(family, None)));
     }
     files
 }
@@ -110,46 +139,65 @@ pub fn render_csv(result: &RunResult) -> Vec<(&'static str, String)> {
 /// defuzzified_dK_y` after `t`.
 pub const DERIVATIVES_CSV: &str = "derivatives.csv";
 
-fn table(params: &[f64], family: &Family, dims: usize, extra: Option<(&str, &[f64])>) -> String {
-    let axes = ["x", "y", "z"];
-    let mut w = csv::Writer::from_writer(Vec::new());
-    let mut header = vec!["t".to_owned()];
-    for (name, _) in family {
-        header.extend(axes[..dims].iter().map(|a| format!("{name}_{a}")));
-    }
-    header.extend(extra.map(|(name, _)| name.to_owned()));
-    // Writing to a Vec cannot fail.
-    w.write_record(&header).expect("in-memory write");
-    for (i, t) in params.iter().enumerate() {
-        let mut row = vec![t.to_string()];
-        for (_, points) in family {
-            row.extend(points[i].iter().map(f64::to_string));
-        }
-        row.extend(extra.map(|(_, v)| v[i].to_string()));
-        w.write_record(&row).expect("in-memory write");
-    }
-    String::from_utf8(w.into_inner().expect("in-memory write")).expect("CSV of numbers is UTF-8")
+/// Renders the four CSV files of a result, as `(file name, contents)`, and
+/// [`DERIVATIVES_CSV`] when the result has derivatives.
+///
+/// Every file starts with the column `t`; a curve `name` contributes columns
+/// `name_x`, `name_y` (and `name_z`). Numbers are written in the shortest form
+/// that reads back to the same `f64`, in exponent form beyond 1e16 and below
+/// 1e-6 (`1e300`, not 301 digits).
+#[must_use]
+pub fn render_csv(result: &RunResult) -> Vec<(&'static str, String)> {
+    tables(result)
+        .into_iter()
+        .map(|(name, table)| {
+            let mut out = Vec::new();
+            // Writing to a Vec cannot fail, and CSV of numbers and names is UTF-8.
+            table.write(&mut out).expect("in-memory write");
+            (
+                name,
+                String::from_utf8(out).expect("CSV of numbers is UTF-8"),
+            )
+        })
+        .collect()
 }
 
-/// Writes the four CSV files of [`render_csv`] into `dir`, creating it if
-/// needed; the files are written all or nothing ([`write_all_atomic`]). Returns
-/// the paths written.
+/// Writes the CSV files of [`render_csv`] into `dir`, creating it if
+/// needed, all or nothing: each is written completely to a temporary file
+/// first, and only then are the four renamed into place. Returns the paths
+/// written.
 ///
 /// # Errors
-/// [`Error::Write`] if the folder cannot be created or a file cannot be written.
+/// [`Error::Write`] if the folder cannot be created or a file cannot be
+/// written; then no file in `dir` has changed.
 pub fn write_csv(dir: &Path, result: &RunResult) -> Result<Vec<PathBuf>, Error> {
-    let files: Vec<(PathBuf, String)> = render_csv(result)
-        .into_iter()
-        .map(|(name, text)| (dir.join(name), text))
-        .collect();
+    let mut staged = Staged::default();
+    let paths = stage_csv(&mut staged, dir, result)?;
+    staged.commit()?;
+    Ok(paths)
+}
+
+/// Writes the CSV files of a result into temporary files beside their
+/// targets in `dir` (created if needed), to be renamed by [`Staged::commit`]
+/// together with other outputs. Returns the target paths.
+///
+/// # Errors
+/// [`Error::Write`] if the folder cannot be created or a file cannot be
+/// written.
+pub fn stage_csv(
+    staged: &mut Staged,
+    dir: &Path,
+    result: &RunResult,
+) -> Result<Vec<PathBuf>, Error> {
     std::fs::create_dir_all(dir).map_err(|source| Error::Write {
         path: dir.to_owned(),
         source,
     })?;
-    let refs: Vec<(&Path, &[u8])> = files
-        .iter()
-        .map(|(p, t)| (p.as_path(), t.as_bytes()))
-        .collect();
-    write_all_atomic(&refs)?;
-    Ok(files.into_iter().map(|(p, _)| p).collect())
+    tables(result)
+        .into_iter()
+        .map(|(name, table)| {
+            let path = dir.join(name);
+            staged.add(&path, |w| table.write(w)).map(|()| path)
+        })
+        .collect()
 }

@@ -6,24 +6,24 @@ use std::path::PathBuf;
 /// One thing wrong with a job file: where, and which rule.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Problem {
-    /// Line and column (1-based) for JSON syntax errors.
+    /// Line and column (from 1; columns count characters) of the place in the
+    /// file: the key of an object member or an array element; for a missing
+    /// key, the member or element whose object lacks it (the root object for a
+    /// top-level key). `None` for a problem with the whole file (too large, not
+    /// UTF-8 at all).
     pub line_column: Option<(usize, usize)>,
     /// The place and the rule, e.g. `points[2].y: the order upper.left <= primary.left is broken: 0.7 > 0.6`.
     pub message: String,
 }
 
 impl Problem {
-    /// A problem at a place named inside `message`.
+    /// A problem with the file as a whole, at no line and column (a fit that
+    /// the data cannot give, a file too large).
     pub(crate) fn new(message: impl Into<String>) -> Self {
         Problem {
             line_column: None,
             message: message.into(),
         }
-    }
-
-    /// A problem at `key`: `"{key}: {rule}"`.
-    pub(crate) fn at(key: &str, rule: impl fmt::Display) -> Self {
-        Problem::new(format!("{key}: {rule}"))
     }
 }
 
@@ -75,6 +75,16 @@ pub enum Error {
         /// The rule.
         message: String,
     },
+    /// A computed value is NaN or infinite. Valid input never leads here (the
+    /// core crate's ranges guarantee finite results); it would be a bug, and
+    /// the result is not written rather than written with `null` in its place.
+    #[error("internal error: {key} = {value} is not a finite number; nothing was written (please report this with the job file)")]
+    NotFinite {
+        /// Where in the result, e.g. `curves.defuzzified[7][1]`.
+        key: String,
+        /// The value.
+        value: f64,
+    },
 }
 
 /// Formatting of [`Error::Invalid`].
@@ -98,6 +108,13 @@ impl Error {
     /// naming the file, the place and the rule. The chain of sources (the
     /// `io::Error` of [`Error::Read`] and [`Error::Write`]) follows the message,
     /// separated by `": "`.
+    ///
+    /// # Examples
+    /// ```
+    /// # use std::path::Path;
+    /// let e = t2spline_io::job::read_text(Path::new("no/such/job.json")).unwrap_err();
+    /// assert_eq!(e.lines(), ["no/such/job.json: cannot read: No such file or directory (os error 2)"]);
+    /// ```
     #[must_use]
     pub fn lines(&self) -> Vec<String> {
         let mut text = self.to_string();

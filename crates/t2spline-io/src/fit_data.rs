@@ -92,8 +92,8 @@ impl FitData {
     /// # use t2spline_io::FitData;
     /// let e = FitData::parse(r#"{"degree": 2, "knots": [0, 1], "points": []}"#, "data.json").unwrap_err();
     /// assert_eq!(e.lines(), [
-    ///     "data.json: knots: not allowed in a data file: the fit makes the weights (all 1) and the knots",
-    ///     "data.json: points: a curve of degree 2 needs at least 3 data points, got 0",
+    ///     "data.json:1:15: knots: not allowed in a data file: the fit makes the weights (all 1) and the knots",
+    ///     "data.json:1:32: points: a curve of degree 2 needs at least 3 data points, got 0",
     /// ]);
     /// ```
     pub fn parse(text: &str, source: &str) -> Result<FitData, Error> {
@@ -108,13 +108,10 @@ impl FitData {
     /// Reads and validates a data file.
     ///
     /// # Errors
-    /// [`Error::Read`] if the file cannot be read, and the errors of
-    /// [`FitData::parse`].
+    /// The errors of [`read_text`](crate::job::read_text) (a file that cannot
+    /// be read, is too large or is not UTF-8) and of [`FitData::parse`].
     pub fn read(path: &Path) -> Result<FitData, Error> {
-        let text = std::fs::read_to_string(path).map_err(|source| Error::Read {
-            path: path.to_owned(),
-            source,
-        })?;
+        let text = crate::job::read_text(path)?;
         FitData::parse(&text, &path.display().to_string())
     }
 

@@ -45,8 +45,19 @@ fn parse(v: &Value) -> Result<FitData, t2spline_io::Error> {
     FitData::parse(&v.to_string(), "data.json")
 }
 
+/// The error lines, without the line and column after the file name (the
+/// positions are tested in `limits.rs`).
 fn lines(v: &Value) -> Vec<String> {
-    parse(v).unwrap_err().lines()
+    let number = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
+    parse(v)
+        .unwrap_err()
+        .lines()
+        .into_iter()
+        .map(|line| match line.splitn(4, ':').collect::<Vec<_>>()[..] {
+            [file, l, c, rest] if number(l) && number(c) => format!("{file}:{rest}"),
+            _ => line,
+        })
+        .collect()
 }
 
 #[test]

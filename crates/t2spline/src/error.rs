@@ -49,6 +49,32 @@ impl fmt::Display for Place {
     }
 }
 
+/// A number in a message: as `Display` writes it (`0.5`, `2`, `-3.25`), but in
+/// exponent form when that would take more than about 20 digits (`1e301`,
+/// `2.5e-200`), so that an extreme value does not become a 300-digit line.
+///
+/// ```
+/// # use t2spline::Num;
+/// assert_eq!(Num(0.0).to_string(), "0");
+/// assert_eq!(Num(-2.5).to_string(), "-2.5");
+/// assert_eq!(Num(1e301).to_string(), "1e301");
+/// assert_eq!(Num(-2.5e-200).to_string(), "-2.5e-200");
+/// assert_eq!(Num(f64::NAN).to_string(), "NaN");
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Num(pub f64);
+
+impl fmt::Display for Num {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let a = self.0.abs();
+        if a.is_finite() && a != 0.0 && !(1e-6..1e16).contains(&a) {
+            write!(f, "{:e}", self.0)
+        } else {
+            write!(f, "{}", self.0)
+        }
+    }
+}
+
 /// Everything that can be wrong with the input of the core crate.
 ///
 /// The library never panics on user input; each validated constructor
@@ -81,7 +107,7 @@ pub enum Error {
     /// assert!(matches!(e, Error::Order { rule: "upper.left <= primary.left", .. }));
     /// assert_eq!(e.to_string(), "the order upper.left <= primary.left is broken: 0.7 > 0.6");
     /// ```
-    #[error("{place}the order {rule} is broken: {left} > {right}")]
+    #[error("{place}the order {rule} is broken: {} > {}", Num(*left), Num(*right))]
     Order {
         /// Where the number is.
         place: Place,
@@ -100,7 +126,7 @@ pub enum Error {
     /// let e = Alpha::try_new(1.5).unwrap_err();
     /// assert_eq!(e.to_string(), "alpha = 1.5 is outside [0, 1]");
     /// ```
-    #[error("{place}{what} = {value} is outside {range}")]
+    #[error("{place}{what} = {} is outside {range}", Num(*value))]
     OutOfRange {
         /// Where the value was found.
         place: Place,
@@ -127,6 +153,22 @@ pub enum Error {
         count: usize,
     },
 
+    /// A weight is finite and positive but outside
+    /// [[`MIN_WEIGHT`](crate::MIN_WEIGHT), [`MAX_WEIGHT`](crate::MAX_WEIGHT)].
+    ///
+    /// ```
+    /// # use t2spline::{Error, NurbsCurve};
+    /// let e = NurbsCurve::<2>::try_clamped(1, vec![[0.0, 0.0], [1.0, 1.0]], vec![1.0, 1e151]).unwrap_err();
+    /// assert_eq!(e.to_string(), "weights[1] = 1e151 is outside [1e-150, 1e150]");
+    /// ```
+    #[error("weights[{index}] = {} is outside [1e-150, 1e150]", Num(*value))]
+    WeightOutOfRange {
+        /// Index of the weight (0-based).
+        index: usize,
+        /// The offending value.
+        value: f64,
+    },
+
     /// There must be one weight per control point.
     ///
     /// ```
@@ -149,7 +191,7 @@ pub enum Error {
     /// let e = NurbsCurve::<2>::try_clamped(1, vec![[0.0, 0.0], [1.0, 1.0]], vec![1.0, 0.0]).unwrap_err();
     /// assert_eq!(e.to_string(), "weights[1] = 0 must be finite and greater than 0");
     /// ```
-    #[error("weights[{index}] = {value} must be finite and greater than 0")]
+    #[error("weights[{index}] = {} must be finite and greater than 0", Num(*value))]
     Weight {
         /// Index of the weight (0-based).
         index: usize,
@@ -187,6 +229,22 @@ pub enum Error {
         value: f64,
     },
 
+    /// A knot is finite but its magnitude is more than
+    /// [`MAX_MAGNITUDE`](crate::MAX_MAGNITUDE).
+    ///
+    /// ```
+    /// # use t2spline::{Error, KnotVector};
+    /// let e = KnotVector::try_new(vec![-2e150, 0.0, 1.0, 1.0], 1, 2).unwrap_err();
+    /// assert_eq!(e.to_string(), "knots[0] = -2e150 is outside [-1e150, 1e150]");
+    /// ```
+    #[error("knots[{index}] = {} is outside [-1e150, 1e150]", Num(*value))]
+    KnotOutOfRange {
+        /// Index of the knot (0-based).
+        index: usize,
+        /// The offending value.
+        value: f64,
+    },
+
     /// Knots must not decrease (SPEC §6).
     ///
     /// ```
@@ -194,7 +252,7 @@ pub enum Error {
     /// let e = KnotVector::try_new(vec![0.0, 0.0, 0.7, 0.5, 1.0, 1.0], 1, 4).unwrap_err();
     /// assert_eq!(e.to_string(), "knots[3] = 0.5 is less than knots[2] = 0.7: knots must not decrease");
     /// ```
-    #[error("knots[{index}] = {value} is less than knots[{}] = {previous}: knots must not decrease", index - 1)]
+    #[error("knots[{index}] = {} is less than knots[{}] = {}: knots must not decrease", Num(*value), index - 1, Num(*previous))]
     KnotDecreasing {
         /// Index of the knot that is smaller than its predecessor.
         index: usize,
@@ -211,7 +269,7 @@ pub enum Error {
     /// let e = KnotVector::try_new(vec![0.0, 0.0, 0.0, 1.0, 1.0], 1, 3).unwrap_err();
     /// assert_eq!(e.to_string(), "knots[0..3]: the value 0 repeats 3 times, more than the order 2");
     /// ```
-    #[error("knots[{first}..{}]: the value {value} repeats {multiplicity} times, more than the order {order}", first + multiplicity)]
+    #[error("knots[{first}..{}]: the value {} repeats {multiplicity} times, more than the order {order}", first + multiplicity, Num(*value))]
     KnotMultiplicity {
         /// Index of the first copy.
         first: usize,
@@ -230,7 +288,7 @@ pub enum Error {
     /// let e = KnotVector::try_new(vec![0.0, 1.0, 1.0, 1.0, 2.0, 3.0], 2, 3).unwrap_err();
     /// assert!(matches!(e, Error::EmptyDomain { .. }));
     /// ```
-    #[error("knots: the domain [knots[{degree}], knots[{count}]] = [{start}, {end}] is empty; it needs knots[{degree}] < knots[{count}]")]
+    #[error("knots: the domain [knots[{degree}], knots[{count}]] = [{}, {}] is empty; it needs knots[{degree}] < knots[{count}]", Num(*start), Num(*end))]
     EmptyDomain {
         /// The degree `p`.
         degree: usize,
@@ -250,7 +308,7 @@ pub enum Error {
     /// assert!(matches!(c.eval(1.5), Err(Error::OutOfDomain { .. })));
     /// # Ok::<(), Error>(())
     /// ```
-    #[error("parameter t = {t} is outside the domain [{start}, {end}]")]
+    #[error("parameter t = {} is outside the domain [{}, {}]", Num(*t), Num(*start), Num(*end))]
     OutOfDomain {
         /// The parameter.
         t: f64,
@@ -332,6 +390,33 @@ pub enum Error {
         what: &'static str,
         /// The parameter.
         t: f64,
+    },
+
+    /// An operation on a valid curve would give a curve outside the input
+    /// ranges: degree elevation removes knots by dividing by knot differences,
+    /// and knots very close together or weights many orders of magnitude apart
+    /// amplify rounding past any meaningful value.
+    ///
+    /// ```
+    /// # use t2spline::{Error, KnotVector, NurbsCurve};
+    /// // Interior knots 1e-311 apart (subnormal) and weights 1e150 apart.
+    /// let u = KnotVector::try_new(vec![0.0, 0.0, 0.0, 0.0, 1e-311, 2e-311, 1.0, 1.0, 1.0, 1.0], 3, 6)?;
+    /// let c = NurbsCurve::try_new(
+    ///     vec![[0.0, 1.0], [1.0, -1.0], [2.0, 1.0], [3.0, -1.0], [4.0, 1.0], [5.0, -1.0]],
+    ///     vec![1.0, 1e-150, 1e-150, 1.0, 1e-150, 1.0], u)?;
+    /// assert!(matches!(c.elevate_degree(1), Err(Error::IllConditioned { operation: "degree elevation", .. })));
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("{operation}: the result would have {what} = {} outside {range}; the knots are too close together or the weights too far apart for it", Num(*value))]
+    IllConditioned {
+        /// `"degree elevation"`, `"splitting"`, ...
+        operation: &'static str,
+        /// `"a weight"` or `"a coordinate"`.
+        what: &'static str,
+        /// The value.
+        value: f64,
+        /// The range it should lie in.
+        range: &'static str,
     },
 
     /// An operation that makes new fuzzy control points needs one lower height

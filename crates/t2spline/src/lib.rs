@@ -59,6 +59,8 @@
 //!   basis per span for all layers and alpha levels, structure-of-arrays output,
 //!   multi-threaded for large jobs ([`NurbsCurve::sample_soa`],
 //!   [`FuzzyCurve::sample_layers`], [`FuzzyCurve::sample_sweep`]).
+//! - [`MAX_MAGNITUDE`], [`MIN_WEIGHT`], [`MAX_WEIGHT`]: the range of inputs,
+//!   chosen so that every result is finite; constructors refuse values outside.
 //! - Features: `parallel` (default: large sampling jobs run on rayon's threads),
 //!   `serde` (Serialize for the data types), `proptest` (generators in
 //!   `strategies`).
@@ -66,16 +68,18 @@
 mod error;
 pub mod fit;
 pub mod fuzzy;
+mod limits;
 pub mod nurbs;
 pub mod pipeline;
 pub mod sampling;
 #[cfg(any(test, feature = "proptest"))]
 pub mod strategies;
 
-pub use error::{Error, Place};
+pub use error::{Error, Num, Place};
 pub use fuzzy::{
     Alpha, AlphaCut, Axis, Height, Interval, Layer, Layers, Membership, Nt2Number, Nt2Point,
     Nt2Point2, Nt2Point3, Tfn,
 };
+pub use limits::{MAX_MAGNITUDE, MAX_WEIGHT, MIN_WEIGHT};
 pub use nurbs::{BoundingBox, ClosestPoint, Domain, KnotVector, NurbsCurve};
 pub use pipeline::{Distance, FuzzyCurve, Side, Solution};

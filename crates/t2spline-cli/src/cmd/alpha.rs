@@ -1,9 +1,10 @@
 //! The level alpha from the command line or the job file.
 
-use anyhow::bail;
 use std::path::Path;
+
 use t2spline::Alpha;
-use t2spline_io::{Error, Job};
+use t2spline_io::job::locate;
+use t2spline_io::{Error, Job, Problem};
 
 /// Checks `--alpha` against [0, 1].
 pub fn parse_option(value: Option<f64>) -> Result<Option<Alpha>, Error> {
@@ -17,13 +18,14 @@ pub fn parse_option(value: Option<f64>) -> Result<Option<Alpha>, Error> {
         .transpose()
 }
 
-/// `--alpha` if given, else the job's alpha, else an error naming the file.
-pub fn required(option: Option<Alpha>, job: &Job, path: &Path) -> anyhow::Result<Alpha> {
-    let Some(alpha) = option.or(job.alpha) else {
-        bail!(
-            "{}: alpha: missing: give it in the job file or with --alpha",
-            crate::output::job_name(path)
-        );
-    };
-    Ok(alpha)
+/// `--alpha` if given, else the job's alpha, else an error naming the file and
+/// placing the missing key at the job's top-level object in `text`.
+pub fn required(option: Option<Alpha>, job: &Job, path: &Path, text: &str) -> Result<Alpha, Error> {
+    option.or(job.alpha).ok_or_else(|| Error::Invalid {
+        file: crate::output::job_name(path),
+        problems: vec![Problem {
+            line_column: Some(locate(text, "alpha")),
+            message: "alpha: missing: give it in the job file or with --alpha".into(),
+        }],
+    })
 }

@@ -5,12 +5,12 @@ use t2spline_plot::{all_figures, render_files, Format, NumberChoice};
 
 use super::alpha;
 use crate::cli::{AxisArg, FormatArg, PlotArgs};
-use crate::output::{read_job, Outputs};
+use crate::output::{read_job_text, Outputs};
 
 pub fn plot(args: &PlotArgs) -> anyhow::Result<()> {
     let option = alpha::parse_option(args.alpha)?;
-    let job = read_job(&args.job)?;
-    let alpha = alpha::required(option, &job, &args.job)?;
+    let (job, text) = read_job_text(&args.job)?;
+    let alpha = alpha::required(option, &job, &args.job, &text)?;
     let choice = NumberChoice {
         point: args.point,
         axis: match args.axis {

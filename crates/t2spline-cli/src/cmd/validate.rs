@@ -1,7 +1,7 @@
 //! `t2spline validate JOB.json`: report every problem, or a one-line summary.
 
 use crate::cli::ValidateArgs;
-use crate::output::{job_name, read_job, Outputs};
+use crate::output::{job_name, read_job, to_stdout};
 use t2spline_io::JobCurve;
 
 pub fn validate(args: &ValidateArgs) -> anyhow::Result<()> {
@@ -19,7 +19,5 @@ pub fn validate(args: &ValidateArgs) -> anyhow::Result<()> {
         job.curve.dimension(),
         job.samples,
     );
-    let mut out = Outputs::default();
-    out.to(None, line.into_bytes());
-    out.commit()
+    Ok(to_stdout(|w| w.write_all(line.as_bytes()))?)
 }

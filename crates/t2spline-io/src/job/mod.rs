@@ -1,6 +1,16 @@
 //! Job files (SPEC §8): reading, validating every rule at once, and writing back.
 
+pub mod limits;
 pub(crate) mod parse;
+mod position;
+mod read;
+
+pub use limits::{
+    check_samples, DEFAULT_SAMPLES, MAX_ARRAY, MAX_FILE_BYTES, MAX_KEYS, MAX_NESTING, MAX_ORDER,
+    MAX_POINTS, MAX_PROBLEMS, MAX_SAMPLES, MAX_VALUES,
+};
+pub use position::{locate, LineColumn};
+pub use read::{read_text, read_text_from};
 
 use std::path::Path;
 
@@ -8,39 +18,6 @@ use serde_json::{json, Map, Value};
 use t2spline::{Alpha, FuzzyCurve, Layer, Nt2Point};
 
 use crate::Error;
-
-/// The default number of samples (SPEC §8).
-pub const DEFAULT_SAMPLES: usize = 101;
-/// The largest number of samples a job may ask for. Every sample costs about
-/// 16 curves × 3 coordinates × 8 bytes in a result, so 10⁶ samples make a result
-/// of a few hundred megabytes of JSON; more is refused before anything is
-/// allocated.
-pub const MAX_SAMPLES: usize = 1_000_000;
-
-/// Checks a number of samples against SPEC §8 (at least 2) and [`MAX_SAMPLES`].
-///
-/// # Errors
-/// The rule that `n` breaks, as text.
-///
-/// # Examples
-/// ```
-/// # use t2spline_io::job::check_samples;
-/// assert_eq!(check_samples(101), Ok(101));
-/// assert!(check_samples(1).is_err());
-/// ```
-pub fn check_samples(n: u64) -> Result<usize, String> {
-    if n < 2 {
-        Err(format!(
-            "samples = {n}: at least 2 are needed (both ends of the domain)"
-        ))
-    } else if n > MAX_SAMPLES as u64 {
-        Err(format!(
-            "samples = {n} is more than the limit {MAX_SAMPLES}"
-        ))
-    } else {
-        usize::try_from(n).map_err(|_| format!("samples = {n} does not fit this machine"))
-    }
-}
 
 /// A validated job: a fuzzy curve in 2-D or 3-D and how to run it (SPEC §8).
 #[derive(Clone, Debug, PartialEq)]
@@ -80,17 +57,19 @@ impl Job {
     /// messages.
     ///
     /// # Errors
-    /// [`Error::Invalid`] listing every problem found: JSON syntax (with line and
-    /// column), unknown or missing keys, wrong types, and every rule of SPEC §1,
-    /// §6 and §8, each with its place (`points[2].y`, `weights[1]`, `knots`, ...).
+    /// [`Error::Invalid`] listing every problem found: JSON syntax, duplicate,
+    /// unknown or missing keys, wrong types, the limits of [`limits`], and
+    /// every rule of SPEC §1, §6 and §8. Each names its line and column (of the
+    /// key or element concerned; for a missing key, of the object that lacks it)
+    /// and its place (`points[2].y`, `weights[1]`, `knots`, ...).
     ///
     /// # Examples
     /// ```
     /// # use t2spline_io::Job;
     /// let e = Job::parse(r#"{"order": 2, "alhpa": 0.5, "points": []}"#, "job.json").unwrap_err();
     /// assert_eq!(e.lines(), [
-    ///     "job.json: alhpa: unknown key (did you mean `alpha`?)",
-    ///     "job.json: points: a curve of order 2 needs at least 2 control points, got 0",
+    ///     "job.json:1:14: alhpa: unknown key (did you mean `alpha`?)",
+    ///     "job.json:1:28: points: a curve of order 2 needs at least 2 control points, got 0",
     /// ]);
     /// ```
     pub fn parse(text: &str, source: &str) -> Result<Job, Error> {
@@ -103,12 +82,10 @@ impl Job {
     /// Reads and validates a job file.
     ///
     /// # Errors
-    /// [`Error::Read`] if the file cannot be read, and the errors of [`Job::parse`].
+    /// The errors of [`read_text`] (a file that cannot be read, is too large or
+    /// is not UTF-8) and of [`Job::parse`].
     pub fn read(path: &Path) -> Result<Job, Error> {
-        let text = std::fs::read_to_string(path).map_err(|source| Error::Read {
-            path: path.to_owned(),
-            source,
-        })?;
+        let text = read_text(path)?;
         Job::parse(&text, &path.display().to_string())
     }
 

@@ -2,12 +2,21 @@
 //!
 //! Parsing goes through `serde_json::Value` rather than derived structs so that
 //! one pass can report *every* problem (serde stops at the first) and name each
-//! by its place in the file.
+//! by its place in the file. Each problem is found at a JSON path
+//! (`points[2].y.upper[0]`); one scan of the text ([`position`](super::position))
+//! then turns the paths into lines and columns and finds duplicate keys.
+
+use std::collections::HashSet;
 
 use serde_json::{Map, Value};
 use t2spline::{Alpha, Axis, FuzzyCurve, Height, KnotVector, Nt2Number, Nt2Point, Place};
 
-use super::{check_samples, Job, JobCurve, DEFAULT_SAMPLES};
+use super::limits::{
+    check_order, check_samples_written, MAX_ARRAY, MAX_KEYS, MAX_NESTING, MAX_POINTS, MAX_PROBLEMS,
+    MAX_VALUES,
+};
+use super::position::{self, child, element, Oversized};
+use super::{Job, JobCurve, DEFAULT_SAMPLES};
 use crate::fit_data::{DataPoints, FitData};
 use crate::Problem;
 
@@ -36,37 +45,126 @@ const DATA_KEYS: &[&str] = &[
 const POINT_KEYS: &[&str] = &["x", "y", "z"];
 const NUMBER_KEYS: &[&str] = &["crisp", "upper", "primary", "lower", "lower_height"];
 
-/// Parses `text` as a job, or returns every problem found.
+/// Parses `text` as a job, or returns every problem found, each with its line
+/// and column.
 pub(super) fn parse(text: &str) -> Result<Job, Vec<Problem>> {
     walk(text, Walker::job)
 }
 
-/// Parses `text` as a data file for fitting, or returns every problem found.
+/// Parses `text` as a data file for fitting, or returns every problem found,
+/// each with its line and column.
 pub(crate) fn parse_data(text: &str) -> Result<FitData, Vec<Problem>> {
     walk(text, Walker::data)
 }
 
-/// Parses `text` as JSON and reads it with `read`, collecting every problem.
+/// Parses `text` as JSON and reads it with `read`, collecting every problem
+/// (at most [`MAX_PROBLEMS`], then a count) and placing each at its line and
+/// column.
 fn walk<T>(
     text: &str,
     read: impl FnOnce(&mut Walker, &Value) -> Option<T>,
 ) -> Result<T, Vec<Problem>> {
-    let value: Value = serde_json::from_str(text).map_err(|e| vec![syntax_problem(&e)])?;
+    // Spreadsheet programs start UTF-8 files with a byte-order mark; editors
+    // do not show it, so columns are counted without it.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    if let Some(found) = position::oversized(text, MAX_ARRAY, MAX_KEYS, MAX_VALUES) {
+        let (at, message) = match found {
+            Oversized::Array(at) => (
+                at,
+                format!(
+                    "an array of more than {MAX_ARRAY} entries: no job or data file needs more \
+                 ({MAX_POINTS} points, {MAX_ARRAY} knots)"
+                ),
+            ),
+            Oversized::Object(at) => (
+                at,
+                format!(
+                    "an object of more than {MAX_KEYS} keys: no job or data file needs more than 9"
+                ),
+            ),
+            Oversized::Values(at) => (
+                at,
+                format!(
+                    "more than {MAX_VALUES} JSON values: a 3-D job of {MAX_POINTS} points needs \
+                 at most 3.9 million"
+                ),
+            ),
+        };
+        return Err(vec![Problem {
+            line_column: Some(at),
+            message,
+        }]);
+    }
+    let value: Value = serde_json::from_str(text).map_err(|e| vec![syntax_problem(text, &e)])?;
     let mut w = Walker::default();
-    match read(&mut w, &value) {
-        Some(out) if w.problems.is_empty() => Ok(out),
-        _ => Err(w.problems),
+    let out = read(&mut w, &value);
+    let wanted: HashSet<String> = w.problems.iter().map(|(path, _)| path.clone()).collect();
+    let scan = position::scan(text, &wanted);
+    let mut problems: Vec<Problem> = scan
+        .duplicates
+        .iter()
+        .take(MAX_PROBLEMS)
+        .map(|d| Problem {
+            line_column: Some(d.at),
+            message: format!(
+                "{}: duplicate key (first at line {}, column {}); each key may appear once",
+                d.path, d.first.0, d.first.1
+            ),
+        })
+        .collect();
+    let room = MAX_PROBLEMS - problems.len();
+    let more = scan.duplicates.len().saturating_sub(MAX_PROBLEMS)
+        + scan.more_duplicates
+        + w.more
+        + w.problems.len().saturating_sub(room);
+    problems.extend(
+        w.problems
+            .into_iter()
+            .take(room)
+            .map(|(path, message)| Problem {
+                line_column: Some(scan.locate(&path)),
+                message,
+            }),
+    );
+    if more > 0 {
+        problems.push(Problem {
+            line_column: None,
+            message: format!(
+                "… and {more} more problems (only the first {MAX_PROBLEMS} are listed)"
+            ),
+        });
+    }
+    match out {
+        Some(out) if problems.is_empty() => Ok(out),
+        _ => Err(problems),
     }
 }
 
-/// A JSON syntax error with its line and column, without serde's own suffix.
-fn syntax_problem(e: &serde_json::Error) -> Problem {
-    let text = e.to_string();
+/// A JSON syntax error with its line and column (in characters), without
+/// serde's own suffix, and in plain words for the errors a hostile file meets.
+fn syntax_problem(text: &str, e: &serde_json::Error) -> Problem {
+    let full = e.to_string();
     let suffix = format!(" at line {} column {}", e.line(), e.column());
-    let message = text.strip_suffix(&suffix).unwrap_or(&text);
+    let message = full.strip_suffix(&suffix).unwrap_or(&full);
+    let message = match message {
+        "recursion limit exceeded" => {
+            format!("arrays and objects nest deeper than {MAX_NESTING} levels (a job needs 4)")
+        }
+        "number out of range" => {
+            "number out of range: beyond ±1.8e308, the range of a 64-bit float".to_owned()
+        }
+        m => format!("JSON syntax error: {m}"),
+    };
+    // serde_json counts bytes; editors count characters.
+    let line = text
+        .split('\n')
+        .nth(e.line().saturating_sub(1))
+        .unwrap_or("");
+    let bytes = &line.as_bytes()[..e.column().min(line.len())];
+    let column = String::from_utf8_lossy(bytes).chars().count().max(1);
     Problem {
-        line_column: Some((e.line(), e.column())),
-        message: format!("JSON syntax error: {message}"),
+        line_column: Some((e.line().max(1), column)),
+        message,
     }
 }
 
@@ -84,6 +182,10 @@ fn kind(v: &Value) -> &'static str {
 
 /// The known key closest to `key` by edit distance, if it is a likely typo.
 fn suggestion(key: &str, known: &[&'static str]) -> Option<&'static str> {
+    // Edit distance costs len(key)·len(known): a megabyte-long key is no typo.
+    if key.chars().count() > 32 {
+        return None;
+    }
     known
         .iter()
         .map(|k| (edit_distance(key, k), *k))
@@ -120,14 +222,49 @@ fn edit_distance(a: &str, b: &str) -> usize {
 /// The fuzzy numbers of one point, per axis, once parsed.
 type RawPoint = Vec<(Axis, Option<Nt2Number>)>;
 
-#[derive(Default)]
+/// The validator's state: the first [`MAX_PROBLEMS`] problems, as (JSON path,
+/// message), how many more there were, and how messages name the root.
 struct Walker {
-    problems: Vec<Problem>,
+    problems: Vec<(String, String)>,
+    more: usize,
+    /// `"job"` or `"data"`.
+    root: &'static str,
+}
+
+impl Default for Walker {
+    fn default() -> Self {
+        Walker {
+            problems: Vec::new(),
+            more: 0,
+            root: "job",
+        }
+    }
 }
 
 impl Walker {
-    fn report(&mut self, key: &str, rule: impl std::fmt::Display) {
-        self.problems.push(Problem::at(key, rule));
+    /// Whether the list is full; a problem then only counts.
+    fn full(&mut self) -> bool {
+        let full = self.problems.len() >= MAX_PROBLEMS;
+        self.more += usize::from(full);
+        full
+    }
+
+    /// A problem at `path`, shown as `path: rule` (the root as `job` or
+    /// `data`).
+    fn report(&mut self, path: &str, rule: impl std::fmt::Display) {
+        if !self.full() {
+            let shown = if path.is_empty() { self.root } else { path };
+            self.problems
+                .push((path.to_owned(), format!("{shown}: {rule}")));
+        }
+    }
+
+    /// A problem at `path` whose message names its place itself (the errors
+    /// of the core crate).
+    fn located(&mut self, path: &str, message: impl std::fmt::Display) {
+        if !self.full() {
+            self.problems.push((path.to_owned(), message.to_string()));
+        }
     }
 
     fn object<'v>(
@@ -148,15 +285,11 @@ impl Walker {
 
     fn unknown_keys(&mut self, o: &Map<String, Value>, prefix: &str, known: &[&'static str]) {
         for k in o.keys().filter(|k| !known.contains(&k.as_str())) {
-            let key = if prefix.is_empty() {
-                k.clone()
-            } else {
-                format!("{prefix}.{k}")
-            };
+            let path = child(prefix, k);
             match suggestion(k, known) {
-                Some(s) => self.report(&key, format!("unknown key (did you mean `{s}`?)")),
+                Some(s) => self.report(&path, format!("unknown key (did you mean `{s}`?)")),
                 None => self.report(
-                    &key,
+                    &path,
                     format!("unknown key (known keys: {})", known.join(", ")),
                 ),
             }
@@ -171,15 +304,21 @@ impl Walker {
         x
     }
 
-    /// A whole number ≥ 0; `3.0` is accepted as 3, as spreadsheets write it.
+    /// A whole number ≥ 0; `3.0` is accepted as 3, as spreadsheets write it,
+    /// and a whole number beyond `u64` (`1e30`) saturates, to be refused by a
+    /// limit.
     fn whole(&mut self, v: &Value, key: &str) -> Option<u64> {
         if let Some(n) = v.as_u64() {
             return Some(n);
         }
         match v.as_f64() {
-            Some(x) if x >= 0.0 && x.fract() == 0.0 && x < 2f64.powi(53) => Some(x as u64),
+            // `as` saturates at u64::MAX.
+            Some(x) if x >= 0.0 && x.fract() == 0.0 => Some(x as u64),
             Some(x) => {
-                self.report(key, format!("expected a whole number >= 0, got {x}"));
+                self.report(
+                    key,
+                    format!("expected a whole number >= 0, got {}", t2spline::Num(x)),
+                );
                 None
             }
             None => {
@@ -200,7 +339,7 @@ impl Walker {
         let xs: Vec<Option<f64>> = items
             .iter()
             .enumerate()
-            .map(|(i, x)| self.number(x, &format!("{key}[{i}]")))
+            .map(|(i, x)| self.number(x, &element(key, i)))
             .collect();
         xs.into_iter().collect()
     }
@@ -208,8 +347,8 @@ impl Walker {
     fn pair(&mut self, v: &Value, key: &str) -> Option<[f64; 2]> {
         match v.as_array().map(Vec::as_slice) {
             Some([l, r]) => {
-                let l = self.number(l, &format!("{key}[0]"));
-                let r = self.number(r, &format!("{key}[1]"));
+                let l = self.number(l, &element(key, 0));
+                let r = self.number(r, &element(key, 1));
                 Some([l?, r?])
             }
             _ => {
@@ -245,9 +384,7 @@ impl Walker {
         let degree = self.degree(o);
         let alpha = o.get("alpha").and_then(|v| {
             let a = self.number(v, "alpha")?;
-            Alpha::try_new(a)
-                .map_err(|e| self.problems.push(Problem::new(e.to_string())))
-                .ok()
+            Alpha::try_new(a).map_err(|e| self.located("alpha", e)).ok()
         });
         // `Err(())`: a top-level height was given but is invalid (reported here
         // once, not again for every number that inherits it).
@@ -256,7 +393,7 @@ impl Walker {
             Some(v) => match self.number(v, "lower_height").map(Height::try_new) {
                 Some(Ok(h)) => Ok(Some(h.get())),
                 Some(Err(e)) => {
-                    self.problems.push(Problem::new(e.to_string()));
+                    self.located("lower_height", e);
                     Err(())
                 }
                 None => Err(()),
@@ -264,10 +401,12 @@ impl Walker {
         };
         let samples = match o.get("samples") {
             None => Some(None),
-            Some(v) => self
-                .whole(v, "samples")
-                .and_then(|n| self.samples(n))
-                .map(Some),
+            Some(v) => self.whole(v, "samples").and_then(|n| {
+                check_samples_written(n, &written(v))
+                    .map_err(|rule| self.report("samples", rule))
+                    .ok()
+                    .map(Some)
+            }),
         };
         let points = match o.get("points") {
             None => {
@@ -293,7 +432,7 @@ impl Walker {
     }
 
     fn job(&mut self, root: &Value) -> Option<Job> {
-        let o = self.object(root, "job", "the job")?;
+        let o = self.object(root, "", "the job")?;
         let header = self.header(o, TOP_KEYS, "a job needs its fuzzy control points");
         let weights = o.get("weights").and_then(|v| self.numbers(v, "weights"));
         let knots = o.get("knots").and_then(|v| self.numbers(v, "knots"));
@@ -332,7 +471,7 @@ impl Walker {
             Err(e) => {
                 // Every rule FuzzyCurve checks was checked above; keep the
                 // message should the two ever disagree.
-                self.problems.push(Problem::new(e.to_string()));
+                self.located(&curve_error_path(&e), e);
                 None
             }
         }
@@ -341,7 +480,8 @@ impl Walker {
     /// A data file: the keys of a job but `weights` and `knots`, at least
     /// `degree + 1` points, and a degree of at least 1.
     fn data(&mut self, root: &Value) -> Option<FitData> {
-        let o = self.object(root, "data", "the data file")?;
+        self.root = "data";
+        let o = self.object(root, "", "the data file")?;
         for key in ["weights", "knots"] {
             if o.contains_key(key) {
                 self.report(
@@ -357,9 +497,10 @@ impl Walker {
             if degree == 0 {
                 self.report(header.degree_key, t2spline::Error::ZeroDegreeFit);
             } else if count < degree + 1 {
-                self.problems.push(Problem::new(
-                    t2spline::Error::TooFewDataPoints { degree, count }.to_string(),
-                ));
+                self.located(
+                    "points",
+                    t2spline::Error::TooFewDataPoints { degree, count },
+                );
             }
         }
         if !self.problems.is_empty() {
@@ -399,58 +540,39 @@ impl Walker {
             );
             return;
         }
-        if let Some(w) = weights {
-            if w.len() != n {
-                let e = t2spline::Error::WeightCount {
-                    expected: n,
-                    found: w.len(),
-                };
-                self.problems.push(Problem::new(e.to_string()));
-            }
-            for (index, &value) in w.iter().enumerate() {
-                if !(value.is_finite() && value > 0.0) {
-                    let e = t2spline::Error::Weight { index, value };
-                    self.problems.push(Problem::new(e.to_string()));
-                }
-            }
-        }
-        if let Some(u) = knots {
-            for e in KnotVector::problems(u, degree, n) {
-                self.problems.push(Problem::new(e.to_string()));
-            }
+        let weight_problems = weights.map(|w| t2spline::nurbs::weight_problems(w, n));
+        let knot_problems = knots.map(|u| KnotVector::problems(u, degree, n));
+        for e in weight_problems.into_iter().chain(knot_problems).flatten() {
+            self.located(&curve_error_path(&e), e);
         }
     }
 
+    /// The degree, from `order` or `degree`, within [`MAX_ORDER`](super::limits::MAX_ORDER).
     fn degree(&mut self, o: &Map<String, Value>) -> Option<usize> {
-        match (o.get("order"), o.get("degree")) {
+        let (key, v) = match (o.get("order"), o.get("degree")) {
             (Some(_), Some(_)) => {
-                self.report(
-                    "order, degree",
-                    "give exactly one of them (order = degree + 1)",
+                self.located(
+                    "degree",
+                    "order, degree: give exactly one of them (order = degree + 1)",
                 );
-                None
+                return None;
             }
             (None, None) => {
                 self.report("order", "missing: give `order` (k) or `degree` (k - 1)");
-                None
+                return None;
             }
-            (Some(v), None) => match self.whole(v, "order")? {
-                0 => {
-                    self.report("order", "order = 0: the order must be at least 1");
-                    None
-                }
-                k => usize::try_from(k - 1).ok(),
-            },
-            (None, Some(v)) => self
-                .whole(v, "degree")
-                .and_then(|p| usize::try_from(p).ok()),
+            (Some(v), None) => ("order", v),
+            (None, Some(v)) => ("degree", v),
+        };
+        let given = self.whole(v, key)?;
+        if key == "order" && given == 0 {
+            self.report("order", "order = 0: the order must be at least 1");
+            return None;
         }
-    }
-
-    fn samples(&mut self, n: u64) -> Option<usize> {
-        check_samples(n)
-            .map_err(|rule| self.report("samples", rule))
-            .ok()
+        let order = check_order(key, given, &written(v))
+            .map_err(|rule| self.report(key, rule))
+            .ok()?;
+        Some(order - 1)
     }
 
     fn points(&mut self, v: &Value, height: Result<Option<f64>, ()>) -> Option<Points> {
@@ -461,10 +583,17 @@ impl Walker {
             );
             return None;
         };
+        if items.len() > MAX_POINTS {
+            self.report(
+                "points",
+                format!("{} points is more than the limit {MAX_POINTS}", items.len()),
+            );
+            return None;
+        }
         let mut dimension: Option<(usize, Vec<&'static str>)> = None;
         let mut parsed: Vec<Option<RawPoint>> = Vec::with_capacity(items.len());
         for (i, item) in items.iter().enumerate() {
-            let key = format!("points[{i}]");
+            let key = element("points", i);
             let Some(o) = self.object(item, &key, "a point") else {
                 parsed.push(None);
                 continue;
@@ -544,25 +673,25 @@ impl Walker {
         axis: Axis,
         height: Result<Option<f64>, ()>,
     ) -> Option<Nt2Number> {
-        let key = format!("points[{i}].{axis}");
+        let key = child(&element("points", i), axis.name());
         let o = self.object(v, &key, "a fuzzy number")?;
         self.unknown_keys(o, &key, NUMBER_KEYS);
         let mut get = |name: &str| {
             let v = o.get(name);
             if v.is_none() {
-                self.report(&format!("{key}.{name}"), "missing");
+                self.report(&child(&key, name), "missing");
             }
             v
         };
         let (crisp, upper, primary, lower) =
             (get("crisp"), get("upper"), get("primary"), get("lower"));
-        let crisp = crisp.and_then(|v| self.number(v, &format!("{key}.crisp")));
-        let upper = upper.and_then(|v| self.pair(v, &format!("{key}.upper")));
-        let primary = primary.and_then(|v| self.pair(v, &format!("{key}.primary")));
-        let lower = lower.and_then(|v| self.pair(v, &format!("{key}.lower")));
+        let crisp = crisp.and_then(|v| self.number(v, &child(&key, "crisp")));
+        let upper = upper.and_then(|v| self.pair(v, &child(&key, "upper")));
+        let primary = primary.and_then(|v| self.pair(v, &child(&key, "primary")));
+        let lower = lower.and_then(|v| self.pair(v, &child(&key, "lower")));
         let own = o
             .get("lower_height")
-            .map(|v| self.number(v, &format!("{key}.lower_height")));
+            .map(|v| self.number(v, &child(&key, "lower_height")));
         // `stand_in`: there is no valid height (reported, here or at the top
         // level); the order is still checked, with a valid height in its place.
         let (h, stand_in) = match (own, height) {
@@ -578,15 +707,52 @@ impl Walker {
             (None, Err(())) => (1.0, true),
         };
         let (crisp, upper, primary, lower) = (crisp?, upper?, primary?, lower?);
-        let problems = Nt2Number::problems(crisp, upper, primary, lower, h);
-        for e in &problems {
-            self.problems
-                .push(Problem::new(e.clone().at(Place::new(i, axis)).to_string()));
+        for e in Nt2Number::problems(crisp, upper, primary, lower, h) {
+            let path = match &e {
+                t2spline::Error::NotFinite { what, .. }
+                | t2spline::Error::OutOfRange { what, .. } => value_path(&key, what),
+                _ => key.clone(),
+            };
+            self.located(&path, e.at(Place::new(i, axis)));
         }
         if stand_in {
             return None;
         }
         Nt2Number::try_new(crisp, upper, primary, lower, h).ok()
+    }
+}
+
+/// The path of one of the values of the number at `number`, by its SPEC name
+/// (`upper.left` → `upper[0]`, `lower_height` → `lower_height`).
+fn value_path(number: &str, what: &str) -> String {
+    match what.split_once('.') {
+        Some((pair, side)) => element(&child(number, pair), usize::from(side == "right")),
+        None => child(number, what),
+    }
+}
+
+/// The place in the job file of a curve-level error of the core crate.
+fn curve_error_path(e: &t2spline::Error) -> String {
+    use t2spline::Error as E;
+    match *e {
+        E::TooFewControlPoints { .. } => "points".to_owned(),
+        E::WeightCount { .. } => "weights".to_owned(),
+        E::Weight { index, .. } | E::WeightOutOfRange { index, .. } => element("weights", index),
+        E::KnotCount { .. } | E::EmptyDomain { .. } => "knots".to_owned(),
+        E::KnotNotFinite { index, .. }
+        | E::KnotOutOfRange { index, .. }
+        | E::KnotDecreasing { index, .. }
+        | E::KnotMultiplicity { first: index, .. } => element("knots", index),
+        _ => String::new(),
+    }
+}
+
+/// A number as the file wrote it, near enough: `3`, `1e300`.
+fn written(v: &Value) -> String {
+    match (v.as_u64(), v.as_f64()) {
+        (Some(n), _) => n.to_string(),
+        (None, Some(x)) => t2spline::Num(x).to_string(),
+        _ => v.to_string(),
     }
 }
 

@@ -2,6 +2,7 @@
 
 use crate::error::{Error, Place};
 use crate::fuzzy::{Alpha, AlphaCut, Layer, Layers};
+use crate::limits::{within_magnitude, MAGNITUDE_RANGE};
 
 /// A closed interval `[left, right]` of finite numbers with `left ≤ right`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -182,7 +183,8 @@ impl Nt2Number {
     ///
     /// # Errors
     /// The first of [`Nt2Number::problems`]: [`Error::NotFinite`],
-    /// [`Error::Order`] or [`Error::OutOfRange`] (for `h`).
+    /// [`Error::Order`] or [`Error::OutOfRange`] (for `h`, or a value of
+    /// magnitude above [`MAX_MAGNITUDE`](crate::MAX_MAGNITUDE)).
     pub fn try_new(
         crisp: f64,
         upper: [f64; 2],
@@ -222,8 +224,10 @@ impl Nt2Number {
     }
 
     /// Every rule of SPEC §1 that these values break, in order; empty if they
-    /// make a valid number. Non-finite values are reported and left out of the
-    /// order checks.
+    /// make a valid number. A non-finite value is reported as
+    /// [`Error::NotFinite`], a finite one of magnitude above
+    /// [`MAX_MAGNITUDE`](crate::MAX_MAGNITUDE) as [`Error::OutOfRange`]; either
+    /// is left out of the order checks.
     ///
     /// # Examples
     /// ```
@@ -251,11 +255,20 @@ impl Nt2Number {
                     what,
                     value,
                 });
+            } else if !within_magnitude(value) {
+                out.push(Error::OutOfRange {
+                    place: Place::NONE,
+                    what,
+                    value,
+                    range: MAGNITUDE_RANGE,
+                });
             }
         }
         for (i, rule) in RULES.iter().enumerate() {
             let (left, right) = (values[i], values[i + 1]);
-            if left.is_finite() && right.is_finite() && left > right {
+            // A value already reported (not finite, or out of range) is left
+            // out: its order says nothing more.
+            if within_magnitude(left) && within_magnitude(right) && left > right {
                 out.push(Error::Order {
                     place: Place::NONE,
                     rule,

@@ -4,7 +4,11 @@
 //! speed is smooth) by adaptive Gauss–Kronrod quadrature (7-point Gauss,
 //! 15-point Kronrod; Piessens et al., QUADPACK, QK15), bisecting every interval
 //! whose error estimate `|K₁₅ − G₇|` exceeds its share of `10⁻¹¹·L`, so that
-//! the relative error of the whole length stays below `10⁻¹⁰`.
+//! the relative error of the whole length stays below `10⁻¹⁰`. The work is
+//! bounded (1000 bisections plus 64 per knot span): a speed so noisy from
+//! rounding that its error estimate never meets the tolerance (extreme weights
+//! or coordinates) gets an estimate in bounded time rather than 2⁴⁰
+//! bisections.
 
 use crate::error::Error;
 use crate::nurbs::derivatives::norm;
@@ -18,6 +22,14 @@ pub const LENGTH_TOLERANCE: f64 = 1e-10;
 const TARGET: f64 = 1e-11;
 /// Bisections allowed below one knot span (2⁻⁴⁰ of its width).
 const MAX_DEPTH: u32 = 40;
+/// Bisections allowed in one length computation: this many, plus
+/// [`BISECTIONS_PER_SPAN`] per knot span. A smooth span needs a handful; the
+/// bound only stops a speed that rounding makes noisy (extreme weights or
+/// coordinates), where the error estimate never meets the tolerance, from
+/// bisecting 2⁴⁰ times. Pieces left when it runs out keep their K₁₅ value.
+const BISECTIONS: usize = 1000;
+/// See [`BISECTIONS`].
+const BISECTIONS_PER_SPAN: usize = 64;
 
 /// Kronrod nodes on `[−1, 1]` (the positive half; QUADPACK `xgk`).
 const XGK: [f64; 8] = [
@@ -71,21 +83,28 @@ fn gauss_kronrod(f: &impl Fn(f64) -> f64, a: f64, b: f64) -> (f64, f64) {
 }
 
 /// `∫ₐᵇ f` to the absolute tolerance `tol` per unit of parameter, by
-/// bisection until each piece meets `err ≤ tol·width`.
-fn adaptive(f: &impl Fn(f64) -> f64, a: f64, b: f64, tol: f64) -> f64 {
+/// bisection until each piece meets `err ≤ tol·width`, using at most `budget`
+/// bisections (which it counts down).
+fn adaptive(f: &impl Fn(f64) -> f64, a: f64, b: f64, tol: f64, budget: &mut usize) -> f64 {
     let mut total = 0.0;
     let mut stack = vec![(a, b, 0u32)];
     while let Some((lo, hi, depth)) = stack.pop() {
         let (value, err) = gauss_kronrod(f, lo, hi);
-        if err <= tol * (hi - lo) || depth >= MAX_DEPTH {
+        if err <= tol * (hi - lo) || depth >= MAX_DEPTH || *budget == 0 {
             total += value;
         } else {
+            *budget -= 1;
             let mid = (lo + hi) / 2.0;
             stack.push((mid, hi, depth + 1));
             stack.push((lo, mid, depth + 1));
         }
     }
     total
+}
+
+/// The bisections allowed for a length over `spans` knot spans.
+fn bisection_budget(spans: usize) -> usize {
+    BISECTIONS.saturating_add(BISECTIONS_PER_SPAN.saturating_mul(spans))
 }
 
 impl<const D: usize> NurbsCurve<D> {
@@ -144,9 +163,10 @@ impl<const D: usize> NurbsCurve<D> {
     fn length_unchecked(&self, a: f64, b: f64) -> f64 {
         let (pieces, tol) = self.length_pieces(a, b);
         let speed = |t| self.speed(t);
+        let mut budget = bisection_budget(pieces.len());
         pieces
             .iter()
-            .map(|&[lo, hi]| adaptive(&speed, lo, hi, tol))
+            .map(|&[lo, hi]| adaptive(&speed, lo, hi, tol, &mut budget))
             .sum()
     }
 
@@ -193,9 +213,10 @@ impl<const D: usize> NurbsCurve<D> {
         let d = self.domain();
         let (pieces, tol) = self.length_pieces(d.start, d.end);
         let speed = |t| self.speed(t);
+        let mut budget = bisection_budget(pieces.len());
         let lengths: Vec<f64> = pieces
             .iter()
-            .map(|&[lo, hi]| adaptive(&speed, lo, hi, tol))
+            .map(|&[lo, hi]| adaptive(&speed, lo, hi, tol, &mut budget))
             .collect();
         let total: f64 = lengths.iter().sum();
         if !(0.0..=total).contains(&length) {
@@ -223,7 +244,7 @@ impl<const D: usize> NurbsCurve<D> {
         let (mut lo, mut hi) = (a, b);
         let mut t = a + (b - a) * (target / span_length);
         for _ in 0..200 {
-            let g = adaptive(&speed, a, t, tol) - target;
+            let g = adaptive(&speed, a, t, tol, &mut budget) - target;
             if g.abs() <= accuracy {
                 return Ok(t);
             }
@@ -251,6 +272,23 @@ impl<const D: usize> NurbsCurve<D> {
 mod tests {
     use super::*;
     use crate::nurbs::KnotVector;
+
+    #[test]
+    fn issue_6_a_tolerance_never_met_stops_at_the_budget() {
+        // With tolerance 0 no piece is ever accurate enough: without the
+        // budget this would bisect to depth 40 everywhere (2⁴⁰ pieces).
+        let calls = std::cell::Cell::new(0usize);
+        let f = |t: f64| {
+            calls.set(calls.get() + 1);
+            (t * 1e6).sin()
+        };
+        let mut budget = 100;
+        let value = adaptive(&f, 0.0, 1.0, 0.0, &mut budget);
+        assert_eq!(budget, 0);
+        // 100 bisections make 201 pieces of 15 evaluations.
+        assert_eq!(calls.get(), 201 * 15);
+        assert!(value.is_finite() && value.abs() <= 1.0, "{value}");
+    }
 
     #[test]
     fn gauss_kronrod_is_exact_for_polynomials_of_degree_22() {

@@ -32,9 +32,20 @@ pub fn basis_functions(knots: &[f64], degree: usize, span: usize, t: f64, out: &
         right[j] = knots[span + j] - t;
         let mut saved = 0.0;
         for r in 0..j {
-            let temp = out[r] / (right[r + 1] + left[j - r]);
-            out[r] = saved + right[r + 1] * temp;
-            saved = left[j - r] * temp;
+            let sum = right[r + 1] + left[j - r];
+            let temp = out[r] / sum;
+            if temp.is_finite() {
+                out[r] = saved + right[r + 1] * temp;
+                saved = left[j - r] * temp;
+            } else {
+                // A span narrower than about 1e-308 makes `N/sum` overflow
+                // (and then `0·∞` is NaN). `[U[span+1+r−j], U[span+1+r]]`
+                // contains the span, so `right` and `left` are at most `sum`
+                // and both fractions below lie in [0, 1].
+                let n = out[r];
+                out[r] = saved + (right[r + 1] / sum) * n;
+                saved = (left[j - r] / sum) * n;
+            }
         }
         out[j] = saved;
     }

@@ -2,6 +2,7 @@
 
 use crate::error::{Error, Place};
 use crate::fuzzy::Axis;
+use crate::limits::{within_magnitude, MAGNITUDE_RANGE, MAX_WEIGHT, MIN_WEIGHT};
 use crate::nurbs::basis::basis_functions;
 use crate::nurbs::{Domain, KnotVector};
 
@@ -37,9 +38,12 @@ impl<const D: usize> NurbsCurve<D> {
     ///
     /// # Errors
     /// [`Error::KnotCount`] if the knot vector was made for another number of
-    /// control points; [`Error::WeightCount`], [`Error::Weight`] for a wrong
-    /// number of weights or a weight that is not finite and positive;
-    /// [`Error::NotFinite`] for a non-finite coordinate.
+    /// control points; [`Error::WeightCount`], [`Error::Weight`],
+    /// [`Error::WeightOutOfRange`] for a wrong number of weights or a weight
+    /// that is not finite and positive or outside [`MIN_WEIGHT`](crate::MIN_WEIGHT) …
+    /// [`MAX_WEIGHT`](crate::MAX_WEIGHT); [`Error::NotFinite`] for a non-finite
+    /// coordinate and [`Error::OutOfRange`] for one of magnitude above
+    /// [`MAX_MAGNITUDE`](crate::MAX_MAGNITUDE).
     pub fn try_new(
         control_points: Vec<[f64; D]>,
         weights: Vec<f64>,
@@ -60,6 +64,14 @@ impl<const D: usize> NurbsCurve<D> {
                         place: Place::new(i, axis),
                         what: "coordinate",
                         value,
+                    });
+                }
+                if !within_magnitude(value) {
+                    return Err(Error::OutOfRange {
+                        place: Place::new(i, axis),
+                        what: "coordinate",
+                        value,
+                        range: MAGNITUDE_RANGE,
                     });
                 }
             }
@@ -220,28 +232,59 @@ pub(crate) fn rational_basis_span(
         *nj *= w;
         denominator += *nj;
     }
-    // Σ wᵣ Nᵣ > 0: the Nᵣ are non-negative, sum to 1, and every wᵣ > 0.
+    // Σ wᵣ Nᵣ is positive and finite: the Nᵣ are non-negative and sum to 1, so
+    // some Nⱼ ≥ 1/(p + 1), and every weight lies in [MIN_WEIGHT, MAX_WEIGHT] =
+    // [1e-150, 1e150], so the sum lies in [1e-150/(p + 1), 1e150·(p + 1)].
     for nj in &mut n {
         *nj /= denominator;
     }
     (first, n)
 }
 
-/// Checks that there are `n` weights, each finite and greater than 0.
+/// Checks that there are `n` weights, each in [`MIN_WEIGHT`], [`MAX_WEIGHT`]];
+/// returns the first of [`weight_problems`].
 pub(crate) fn check_weights(weights: &[f64], n: usize) -> Result<(), Error> {
-    if weights.len() != n {
-        return Err(Error::WeightCount {
-            expected: n,
+    match weight_problems(weights, n).into_iter().next() {
+        Some(e) => Err(e),
+        None => Ok(()),
+    }
+}
+
+/// Every rule that `weights` break as the weights of a curve with `count`
+/// control points (SPEC §6): one per point ([`Error::WeightCount`]), each of
+/// the first `count` finite and positive ([`Error::Weight`]) and within
+/// [[`MIN_WEIGHT`], [`MAX_WEIGHT`]] ([`Error::WeightOutOfRange`]); empty if none.
+///
+/// # Examples
+/// ```
+/// # use t2spline::nurbs::weight_problems;
+/// let p = weight_problems(&[1.0, 0.0, 1e-200], 4);
+/// let lines: Vec<String> = p.iter().map(ToString::to_string).collect();
+/// assert_eq!(lines, [
+///     "weights: expected 4 (one per control point), got 3",
+///     "weights[1] = 0 must be finite and greater than 0",
+///     "weights[2] = 1e-200 is outside [1e-150, 1e150]",
+/// ]);
+/// ```
+#[must_use]
+pub fn weight_problems(weights: &[f64], count: usize) -> Vec<Error> {
+    let mut out = Vec::new();
+    if weights.len() != count {
+        out.push(Error::WeightCount {
+            expected: count,
             found: weights.len(),
         });
     }
-    match weights.iter().position(|w| !(w.is_finite() && *w > 0.0)) {
-        Some(index) => Err(Error::Weight {
-            index,
-            value: weights[index],
-        }),
-        None => Ok(()),
+    // Beyond `count` weights there are no points to weigh: the count is the
+    // problem, not each extra value.
+    for (index, &value) in weights.iter().enumerate().take(count) {
+        if !(value.is_finite() && value > 0.0) {
+            out.push(Error::Weight { index, value });
+        } else if !(MIN_WEIGHT..=MAX_WEIGHT).contains(&value) {
+            out.push(Error::WeightOutOfRange { index, value });
+        }
     }
+    out
 }
 
 #[cfg(test)]

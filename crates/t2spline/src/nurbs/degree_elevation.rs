@@ -12,8 +12,19 @@ use crate::nurbs::{KnotVector, NurbsCurve};
 /// keeps a nonsense request from asking for unbounded memory.
 pub const MAX_ELEVATED_DEGREE: usize = 64;
 
-/// Checks that degree `p` raised `t` times stays within [`MAX_ELEVATED_DEGREE`].
+/// Checks that degree `p` raised `t` times stays within [`MAX_ELEVATED_DEGREE`],
+/// and that a curve of degree 0 (piecewise constant, jumping at every interior
+/// knot) is not raised: A5.9 needs segments of degree at least 1 and, given
+/// degree 0, builds an invalid knot vector (found by fuzzing, issue 6).
 pub(crate) fn check_elevation(p: usize, t: usize) -> Result<(), Error> {
+    if p == 0 && t > 0 {
+        return Err(Error::OutOfRange {
+            place: Place::NONE,
+            what: "degree of the curve to elevate",
+            value: 0.0,
+            range: "[1, 64]",
+        });
+    }
     let degree = p.saturating_add(t);
     if degree > MAX_ELEVATED_DEGREE {
         return Err(Error::OutOfRange {
@@ -87,6 +98,8 @@ pub(crate) fn elevate(knots: &KnotVector, rows: &[Row], t: usize) -> (KnotVector
     let mut next_bpts: Vec<Row> = vec![zero.clone(); p.saturating_sub(1).max(1)];
     let mut ebpts: Vec<Row> = vec![zero.clone(); ph + 1];
     let mut alfs = vec![0.0; p.max(1)];
+    // 1 − alfs, from the knots (see `net::blend`).
+    let mut bets = vec![0.0; p.max(1)];
     let mut qw: Vec<Row> = vec![rows[0].clone()];
     let mut uh: Vec<f64> = vec![u[0]; ph + 1];
     let mut ua = u[0];
@@ -118,13 +131,14 @@ pub(crate) fn elevate(knots: &KnotVector, rows: &[Row], t: usize) -> (KnotVector
             let numer = ub - ua;
             for k in (mul + 1..=p).rev() {
                 alfs[k - mul - 1] = numer / (u[a + k] - ua);
+                bets[k - mul - 1] = (u[a + k] - ub) / (u[a + k] - ua);
             }
             for j in 1..=r as usize {
                 let save = r as usize - j;
                 let s = mul + j;
                 for k in (s..=p).rev() {
-                    let alpha = alfs[k - s];
-                    bpts[k] = crate::nurbs::net::lerp(alpha, &bpts[k], &bpts[k - 1]);
+                    let (alpha, beta) = (alfs[k - s], bets[k - s]);
+                    bpts[k] = crate::nurbs::net::blend(alpha, beta, &bpts[k], &bpts[k - 1]);
                 }
                 next_bpts[save] = bpts[p].clone();
             }
@@ -223,7 +237,7 @@ impl<const D: usize> NurbsCurve<D> {
     pub fn elevate_degree(&self, times: usize) -> Result<Self, Error> {
         check_elevation(self.degree(), times)?;
         let (knots, rows) = elevate(self.knots(), &self.rows(), times);
-        Ok(Self::from_rows(knots, &rows))
+        Self::try_from_rows(knots, &rows, "degree elevation")
     }
 }
 

@@ -7,7 +7,7 @@
 //! layers of a fuzzy curve stay ordered (see `pipeline/fuzzy_ops.rs`).
 
 use crate::error::Error;
-use crate::nurbs::net::{lerp, Row};
+use crate::nurbs::net::{blend, Row};
 use crate::nurbs::{KnotVector, NurbsCurve};
 
 /// Checks that `u` lies in the domain and may be inserted `times` more times.
@@ -38,21 +38,18 @@ fn insert_once(knots: &[f64], p: usize, rows: &[Row], u: f64) -> (Vec<f64>, Vec<
     let n = rows.len();
     let mut out = Vec::with_capacity(n + 1);
     for i in 0..=n {
-        let alpha = if u >= knots[i + p] {
-            1.0
-        } else if u <= knots[i] {
-            0.0
-        } else {
-            (u - knots[i]) / (knots[i + p] - knots[i])
-        };
         // α = 1 for i = 0 (u ≥ U[p]) and α = 0 for i = n (u ≤ U[n]), since the
-        // multiplicity of u stays at most p + 1.
-        out.push(if alpha == 1.0 {
+        // multiplicity of u stays at most p + 1. Inside, 1 − α is computed from
+        // the knots too (see `blend`).
+        out.push(if u >= knots[i + p] {
             rows[i].clone()
-        } else if alpha == 0.0 {
+        } else if u <= knots[i] {
             rows[i - 1].clone()
         } else {
-            lerp(alpha, &rows[i], &rows[i - 1])
+            let width = knots[i + p] - knots[i];
+            let alpha = (u - knots[i]) / width;
+            let beta = (knots[i + p] - u) / width;
+            blend(alpha, beta, &rows[i], &rows[i - 1])
         });
     }
     let at = knots.partition_point(|&v| v <= u);
@@ -128,8 +125,9 @@ pub(crate) fn refine(
             if alpha == 0.0 {
                 q[ind - 1] = q[ind].clone();
             } else {
-                let alpha = alpha / (ubar[k + l] - u[i - p + l]);
-                q[ind - 1] = lerp(alpha, &q[ind - 1], &q[ind]);
+                let width = ubar[k + l] - u[i - p + l];
+                let beta = (x[j] - u[i - p + l]) / width;
+                q[ind - 1] = blend(alpha / width, beta, &q[ind - 1], &q[ind]);
             }
         }
         ubar[k] = x[j];
@@ -164,7 +162,7 @@ impl<const D: usize> NurbsCurve<D> {
     /// ```
     pub fn insert_knot(&self, u: f64, times: usize) -> Result<Self, Error> {
         let (knots, rows) = insert(self.knots(), &self.rows(), u, times)?;
-        Ok(Self::from_rows(knots, &rows))
+        Self::try_from_rows(knots, &rows, "knot insertion")
     }
 
     /// The same curve with all knots of `new` inserted (knot refinement, The
@@ -186,7 +184,7 @@ impl<const D: usize> NurbsCurve<D> {
     /// ```
     pub fn refine_knots(&self, new: &[f64]) -> Result<Self, Error> {
         let (knots, rows) = refine(self.knots(), &self.rows(), new)?;
-        Ok(Self::from_rows(knots, &rows))
+        Self::try_from_rows(knots, &rows, "knot refinement")
     }
 }
 

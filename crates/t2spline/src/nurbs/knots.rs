@@ -1,6 +1,7 @@
 //! Knot vectors and parameter domains (SPEC §6).
 
 use crate::error::Error;
+use crate::limits::within_magnitude;
 
 /// The parameter interval `[start, end]` of a curve, both ends included.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -67,8 +68,8 @@ impl Domain {
 
 /// A validated knot vector `U` for a curve of degree `p` with `n` control points.
 ///
-/// Invariants (SPEC §6): `n + p + 1` finite, non-decreasing values; no value
-/// repeated more than `k = p + 1` times; a non-empty domain `U[p] < U[n]`.
+/// Invariants (SPEC §6): `n + p + 1` finite, non-decreasing values of magnitude
+/// at most [`MAX_MAGNITUDE`](crate::MAX_MAGNITUDE); no value repeated more than `k = p + 1` times; a non-empty domain `U[p] < U[n]`.
 /// An interior knot of multiplicity `k` is allowed: the curve may jump there,
 /// and its value at the knot is taken from the right.
 #[derive(Clone, Debug, PartialEq)]
@@ -107,7 +108,8 @@ impl KnotVector {
     /// otherwise valid.
     #[must_use]
     pub fn problems(values: &[f64], degree: usize, count: usize) -> Vec<Error> {
-        let order = degree + 1;
+        // A degree of usize::MAX saturates to an order no list can reach.
+        let order = degree.saturating_add(1);
         if count < order {
             return vec![Error::TooFewControlPoints { order, count }];
         }
@@ -120,8 +122,15 @@ impl KnotVector {
         let mut out: Vec<Error> = values
             .iter()
             .enumerate()
-            .filter(|(_, v)| !v.is_finite())
-            .map(|(index, &value)| Error::KnotNotFinite { index, value })
+            .filter_map(|(index, &value)| {
+                if !value.is_finite() {
+                    Some(Error::KnotNotFinite { index, value })
+                } else if !within_magnitude(value) {
+                    Some(Error::KnotOutOfRange { index, value })
+                } else {
+                    None
+                }
+            })
             .collect();
         for (i, w) in values.windows(2).enumerate() {
             if w[1] < w[0] {
@@ -192,7 +201,7 @@ impl KnotVector {
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn clamped_uniform(degree: usize, count: usize) -> Result<Self, Error> {
-        let order = degree + 1;
+        let order = degree.saturating_add(1);
         if count < order {
             return Err(Error::TooFewControlPoints { order, count });
         }

@@ -35,7 +35,7 @@ pub(crate) mod split;
 
 pub use bounding_box::BoundingBox;
 pub use closest_point::ClosestPoint;
-pub use curve::NurbsCurve;
+pub use curve::{weight_problems, NurbsCurve};
 pub use degree_elevation::MAX_ELEVATED_DEGREE;
 pub use derivatives::MAX_DERIVATIVE_ORDER;
 pub use knots::{Domain, KnotVector};

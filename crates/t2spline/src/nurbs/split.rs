@@ -85,7 +85,11 @@ impl<const D: usize> NurbsCurve<D> {
     /// ```
     pub fn split_at(&self, t: f64) -> Result<[Self; 2], Error> {
         let pieces = split(self.knots(), &self.rows(), t)?;
-        Ok(pieces.map(|(knots, rows)| Self::from_rows(knots, &rows)))
+        let [(k1, r1), (k2, r2)] = pieces;
+        Ok([
+            Self::try_from_rows(k1, &r1, "splitting")?,
+            Self::try_from_rows(k2, &r2, "splitting")?,
+        ])
     }
 
     /// The piece of the curve over `[a, b]`, a sub-interval of the domain with
@@ -114,7 +118,7 @@ impl<const D: usize> NurbsCurve<D> {
             });
         }
         let (knots, rows) = segment(self.knots(), &self.rows(), a, b)?;
-        Ok(Self::from_rows(knots, &rows))
+        Self::try_from_rows(knots, &rows, "splitting")
     }
 
     /// The same curve with a clamped knot vector (the first and last `k` knots

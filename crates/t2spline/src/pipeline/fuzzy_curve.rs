@@ -46,7 +46,7 @@ impl<const D: usize> FuzzyCurve<D> {
     ///
     /// # Errors
     /// [`Error::TooFewControlPoints`], [`Error::WeightCount`], [`Error::Weight`],
-    /// and the knot errors of [`KnotVector::try_new`].
+    /// [`Error::WeightOutOfRange`], and the knot errors of [`KnotVector::try_new`].
     pub fn try_new(
         degree: usize,
         points: Vec<Nt2Point<D>>,

@@ -26,7 +26,7 @@ use crate::error::{Error, Place};
 use crate::fuzzy::{Axis, Height, Layer, Layers, Nt2Number, Nt2Point};
 use crate::nurbs::degree_elevation::{check_elevation, elevate};
 use crate::nurbs::knot_insertion::{insert, refine};
-use crate::nurbs::net::Row;
+use crate::nurbs::net::{check_rows, Row};
 use crate::nurbs::split::{segment, split};
 use crate::nurbs::{BoundingBox, ClosestPoint, KnotVector};
 use crate::pipeline::FuzzyCurve;
@@ -79,6 +79,7 @@ impl<const D: usize> FuzzyCurve<D> {
     ) -> Result<(Self, f64), Error> {
         let heights = self.common_heights()?;
         let (knots, rows) = op(self.knots(), &self.stacked_rows())?;
+        check_rows(&rows, "the operation on the fuzzy curve")?;
         Ok(rebuild(knots, &rows, heights))
     }
 

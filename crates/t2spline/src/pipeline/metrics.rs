@@ -36,20 +36,27 @@ const CELLS_PER_SPAN: usize = 4;
 
 impl Distance {
     /// Measures the norm of `difference(t)` over its domain.
+    ///
+    /// The mean square is formed as a weighted mean of `(d(t)/scale)²` with
+    /// weights that are fractions of the domain (each knot span's share of
+    /// `b − a`, times the quadrature weights), where `scale` is the largest
+    /// distance found by the scan. Squaring a distance near 1e-170 directly would
+    /// underflow; dividing by `b − a` at the
+    /// end would lose a domain narrower than about 1e-300.
     pub(crate) fn of_curve<const D: usize>(difference: &NurbsCurve<D>) -> Distance {
         let norm = |t: f64| norm(&difference.eval_unchecked(t));
         let domain = difference.domain();
         let mut max = (norm(domain.start), domain.start);
         let mut bracket = [domain.start, domain.start];
-        let mut integral = 0.0;
-        let (nodes, weights) = gauss_legendre(GAUSS_POINTS);
         for (_, [a, b]) in difference.knots().spans() {
             let step = (b - a) / SCAN_STEPS as f64;
             for j in 0..=SCAN_STEPS {
+                // `min`: in a span a few subnormal units wide the rounded step
+                // can overshoot `b` (found by fuzzing, issue 6).
                 let t = if j == SCAN_STEPS {
                     b
                 } else {
-                    a + step * j as f64
+                    (a + step * j as f64).min(b)
                 };
                 let d = norm(t);
                 if d > max.0 {
@@ -57,29 +64,65 @@ impl Distance {
                     bracket = [(t - step).max(a), (t + step).min(b)];
                 }
             }
-            let cell = (b - a) / CELLS_PER_SPAN as f64;
-            for c in 0..CELLS_PER_SPAN {
-                let (lo, half) = (a + cell * c as f64, cell / 2.0);
-                for (x, w) in nodes.iter().zip(&weights) {
-                    let d = norm(lo + half * (1.0 + x));
-                    integral += w * half * d * d;
-                }
-            }
         }
         let refined = golden_section_max(&norm, bracket);
         if refined.0 > max.0 {
             max = refined;
         }
+        let scale = max.0;
+        let mut mean_square = 0.0;
+        if scale > 0.0 {
+            let (nodes, weights) = gauss_legendre(GAUSS_POINTS);
+            let width = domain.end - domain.start;
+            for (_, [a, b]) in difference.knots().spans() {
+                // This cell's share of the domain; the Gauss weights sum to 2.
+                let share = (b - a) / width / CELLS_PER_SPAN as f64 / 2.0;
+                let cell = (b - a) / CELLS_PER_SPAN as f64;
+                for c in 0..CELLS_PER_SPAN {
+                    let (lo, half) = (a + cell * c as f64, cell / 2.0);
+                    for (x, w) in nodes.iter().zip(&weights) {
+                        let d = norm((lo + half * (1.0 + x)).clamp(a, b)) / scale;
+                        mean_square += share * w * d * d;
+                    }
+                }
+            }
+        }
         Distance {
             max: max.0,
             max_at: max.1,
-            rms: (integral / (domain.end - domain.start)).sqrt(),
+            rms: scale * mean_square.sqrt(),
         }
     }
 }
 
 fn norm<const D: usize>(v: &[f64; D]) -> f64 {
-    v.iter().map(|x| x * x).sum::<f64>().sqrt()
+    euclidean_norm(v)
+}
+
+/// The Euclidean norm `‖v‖₂ = √(Σ vᵢ²)`. Components from 1e-150 to 1e150
+/// are squared as they are; beyond, they are first divided by the largest one,
+/// so that neither the squares of components near 1e300 overflow nor those
+/// near 1e-170 underflow (as `f64::hypot` does for two).
+///
+/// # Examples
+/// ```
+/// # use t2spline::pipeline::euclidean_norm;
+/// assert_eq!(euclidean_norm(&[3.0, 4.0]), 5.0);
+/// assert_eq!(euclidean_norm(&[3e300, 4e300]), 5e300);
+/// assert_eq!(euclidean_norm(&[3e-300, -4e-300, 0.0]), 5e-300);
+/// assert_eq!(euclidean_norm(&[]), 0.0);
+/// ```
+#[must_use]
+pub fn euclidean_norm(v: &[f64]) -> f64 {
+    let largest = v.iter().fold(0.0_f64, |m, x| m.max(x.abs()));
+    if (1e-150..=1e150).contains(&largest) {
+        v.iter().map(|x| x * x).sum::<f64>().sqrt()
+    } else if largest == 0.0 || !largest.is_finite() {
+        largest
+    } else {
+        let scaled: f64 = v.iter().map(|x| (x / largest) * (x / largest)).sum();
+        largest * scaled.sqrt()
+    }
 }
 
 /// The maximum of `f` on `[lo, hi]` by golden-section search, assuming one peak
@@ -87,7 +130,10 @@ fn norm<const D: usize>(v: &[f64; D]) -> f64 {
 fn golden_section_max(f: &impl Fn(f64) -> f64, [mut lo, mut hi]: [f64; 2]) -> (f64, f64) {
     let g = (5f64.sqrt() - 1.0) / 2.0;
     let tol = 1e-13 * (hi - lo).abs().max(f64::MIN_POSITIVE);
-    let (mut x1, mut x2) = (hi - g * (hi - lo), lo + g * (hi - lo));
+    // Rounding must not take a probe outside the bracket (the domain).
+    let (a, b) = (lo, hi);
+    let inside = |x: f64| x.clamp(a, b);
+    let (mut x1, mut x2) = (inside(hi - g * (hi - lo)), inside(lo + g * (hi - lo)));
     let (mut f1, mut f2) = (f(x1), f(x2));
     for _ in 0..200 {
         if hi - lo <= tol {
@@ -96,12 +142,12 @@ fn golden_section_max(f: &impl Fn(f64) -> f64, [mut lo, mut hi]: [f64; 2]) -> (f
         if f1 < f2 {
             lo = x1;
             (x1, f1) = (x2, f2);
-            x2 = lo + g * (hi - lo);
+            x2 = inside(lo + g * (hi - lo));
             f2 = f(x2);
         } else {
             hi = x2;
             (x2, f2) = (x1, f1);
-            x1 = hi - g * (hi - lo);
+            x1 = inside(hi - g * (hi - lo));
             f1 = f(x1);
         }
     }
@@ -152,6 +198,19 @@ mod tests {
         // ∫₋₁¹ t¹⁴ dt = 2/15.
         let i: f64 = x.iter().zip(&w).map(|(x, w)| w * x.powi(14)).sum();
         assert!((i - 2.0 / 15.0).abs() < 1e-14, "{i}");
+    }
+
+    #[test]
+    fn issue_6_a_subnormal_domain_keeps_max_at_inside() {
+        // A domain 274 subnormal units wide: the scan step rounds up, and 31
+        // steps went past the end (found by fuzzing).
+        let end = 1.354e-321;
+        let u = crate::KnotVector::try_new(vec![0.0, 0.0, end, end], 1, 2).unwrap();
+        let c = NurbsCurve::try_new(vec![[0.0, 0.0], [3.0, 4.0]], vec![1.0, 2.0], u).unwrap();
+        let d = Distance::of_curve(&c);
+        assert!((0.0..=end).contains(&d.max_at), "{d:?}");
+        assert_eq!(d.max, 5.0);
+        assert!(d.rms > 0.0 && d.rms <= d.max, "{d:?}");
     }
 
     #[test]

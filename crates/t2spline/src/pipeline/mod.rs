@@ -12,5 +12,5 @@ mod metrics;
 mod stages;
 
 pub use fuzzy_curve::FuzzyCurve;
-pub use metrics::Distance;
+pub use metrics::{euclidean_norm, Distance};
 pub use stages::{Side, Solution};

@@ -1,0 +1,162 @@
+//! The largest job t2spline accepts, and the rules that enforce it.
+//!
+//! Every limit is checked before the memory or time it guards is spent: a file
+//! is measured before it is read, its arrays, objects and values are counted
+//! before it is parsed into a tree, a count before anything of that size is
+//! allocated. The limits are far above what the method needs (the paper's
+//! example has 4 points of order 3) and low enough that the largest accepted
+//! job runs in about a minute and 1.3 GB of memory; the README gives measured
+//! figures.
+//!
+//! Numbers themselves are limited by the core crate: coordinates and knots to
+//! `[-1e150, 1e150]` ([`t2spline::MAX_MAGNITUDE`]) and weights to
+//! `[1e-150, 1e150]`, so that every result is a finite number.
+
+/// The largest job file, in bytes (64 MiB), also for standard input. A
+/// 100 000-point 3-D job written one number per line is about 40 MB.
+pub const MAX_FILE_BYTES: u64 = 64 << 20;
+
+/// The largest number of control points.
+pub const MAX_POINTS: usize = 100_000;
+
+/// The largest order `k` (degree `k − 1`). Evaluating a curve costs about `k²`
+/// operations per parameter, so a very high order makes every sample slow; it
+/// is also far beyond what B-spline modelling uses (orders 2–6, rarely above 10).
+pub const MAX_ORDER: usize = 32;
+
+/// The default number of samples (SPEC §8).
+pub const DEFAULT_SAMPLES: usize = 101;
+
+/// The largest number of samples a job may ask for. A result holds up to 16
+/// curves × 3 coordinates per sample, so at this limit it has 48 million
+/// numbers: about 1 GB of JSON.
+pub const MAX_SAMPLES: usize = 1_000_000;
+
+/// How deeply arrays and objects may nest: `serde_json`'s own recursion limit
+/// (it refuses the 128th level), which stops a hostile file before it can
+/// exhaust the stack. A job needs 4.
+pub const MAX_NESTING: usize = 127;
+
+/// The longest array a job or data file can need: `knots` of a curve with
+/// [`MAX_POINTS`] points of order [`MAX_ORDER`]. A longer array is refused
+/// before the JSON tree is built: a 64 MiB file of `0,` would otherwise make
+/// 33 million values and take about 3 GB.
+pub const MAX_ARRAY: usize = MAX_POINTS + MAX_ORDER;
+
+/// The most members an object may have: no object of a job or data file has
+/// more than 9 keys; unknown keys are errors, but millions of them would only
+/// cost time and memory.
+pub const MAX_KEYS: usize = 64;
+
+/// The most JSON values (numbers, strings, arrays, objects, …) a file may
+/// hold. A 3-D job of [`MAX_POINTS`] points with a height in every number,
+/// weights and knots has 3.9 million (37 per point); each value takes 30 to 80
+/// bytes once parsed, so this bounds the memory of reading any file.
+pub const MAX_VALUES: usize = 4_000_000;
+
+/// The most problems a job's error lists; the rest are counted in one last
+/// line. A 64 MiB file of `0,` could otherwise make eight million messages.
+pub const MAX_PROBLEMS: usize = 1000;
+
+/// Checks a number of samples against SPEC §8 (at least 2) and [`MAX_SAMPLES`].
+///
+/// # Errors
+/// The rule that `n` breaks, as text.
+///
+/// # Examples
+/// ```
+/// # use t2spline_io::job::check_samples;
+/// assert_eq!(check_samples(101), Ok(101));
+/// assert_eq!(
+///     check_samples(1),
+///     Err("samples = 1: at least 2 are needed (both ends of the domain)".to_owned())
+/// );
+/// assert!(check_samples(u64::MAX).is_err());
+/// ```
+pub fn check_samples(n: u64) -> Result<usize, String> {
+    check_samples_written(n, &n.to_string())
+}
+
+/// [`check_samples`] naming the value as the file wrote it (`1e300`, not the
+/// `u64` it saturates to).
+pub(crate) fn check_samples_written(n: u64, written: &str) -> Result<usize, String> {
+    if n < 2 {
+        Err(format!(
+            "samples = {written}: at least 2 are needed (both ends of the domain)"
+        ))
+    } else if n > MAX_SAMPLES as u64 {
+        Err(format!(
+            "samples = {written} is more than the limit {MAX_SAMPLES}"
+        ))
+    } else {
+        usize::try_from(n).map_err(|_| format!("samples = {written} does not fit this machine"))
+    }
+}
+
+/// Checks an order `k` against [`MAX_ORDER`]; `key` is `"order"` or `"degree"`,
+/// `given` its value and `written` the value as the file wrote it.
+pub(crate) fn check_order(key: &str, given: u64, written: &str) -> Result<usize, String> {
+    let order = if key == "degree" {
+        given.saturating_add(1)
+    } else {
+        given
+    };
+    if order > MAX_ORDER as u64 {
+        let (limit, other) = if key == "degree" {
+            (MAX_ORDER - 1, format!("order {MAX_ORDER}"))
+        } else {
+            (MAX_ORDER, format!("degree {}", MAX_ORDER - 1))
+        };
+        Err(format!(
+            "{key} = {written} is more than the limit {limit} ({other})"
+        ))
+    } else {
+        // At most MAX_ORDER, which is a usize.
+        Ok(order as usize)
+    }
+}
+
+/// The rule a file breaks when it is larger than [`MAX_FILE_BYTES`]; `size`
+/// is its size when known (a regular file), `None` when it was noticed while
+/// reading (a pipe, standard input).
+pub(crate) fn file_too_large(size: Option<u64>) -> String {
+    let limit = format!(
+        "the limit of {} MiB ({MAX_FILE_BYTES} bytes)",
+        MAX_FILE_BYTES >> 20
+    );
+    match size {
+        Some(size) => format!("the file has {size} bytes, more than {limit}"),
+        None => format!("the input is larger than {limit}"),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn order_and_degree_limits_name_both() {
+        assert_eq!(check_order("order", 32, "32"), Ok(32));
+        assert_eq!(check_order("degree", 31, "31"), Ok(32));
+        assert_eq!(
+            check_order("order", 33, "33"),
+            Err("order = 33 is more than the limit 32 (degree 31)".to_owned())
+        );
+        assert_eq!(
+            check_order("degree", u64::MAX, "1e30"),
+            Err("degree = 1e30 is more than the limit 31 (order 32)".to_owned())
+        );
+    }
+
+    #[test]
+    fn file_size_message() {
+        assert_eq!(
+            file_too_large(Some(100 << 20)),
+            "the file has 104857600 bytes, more than the limit of 64 MiB (67108864 bytes)"
+        );
+        assert_eq!(
+            file_too_large(None),
+            "the input is larger than the limit of 64 MiB (67108864 bytes)"
+        );
+    }
+}

@@ -1,0 +1,141 @@
+//! The promises of reading and running a job, as one function of arbitrary
+//! bytes: used by the libFuzzer target `fuzz/fuzz_targets/job.rs` (which
+//! includes this file) and by the proptest run over arbitrary and mutated bytes
+//! in `tests/limits.rs` (which runs in CI).
+//!
+//! Every input gets a correct result or a clear error:
+//!
+//! - no panic, anywhere;
+//! - an error is [`Error::Invalid`] with at least one problem; every line
+//!   starts with the file name; a line and column, when given, lie inside the
+//!   text; no message carries a control character (a hostile key cannot write
+//!   escape sequences to a terminal) or a 300-digit number;
+//! - the same holds for the text read as a data file of `t2spline fit`;
+//! - a valid job writes back to canonical JSON that parses to the same job;
+//! - its result has only finite numbers, parameters from the start to exactly
+//!   the end of the domain, seven ordered layers at every sample, and `rms ≤
+//!   max`; its JSON reads back, and its CSV files have one row per sample and
+//!   no `NaN` or `inf`.
+
+#![allow(dead_code)]
+
+use t2spline::{Alpha, Layer};
+use t2spline_io::job::read_text_from;
+use t2spline_io::{check_finite, render_csv, write_json_pretty, Error, FitData, Job, RunResult};
+
+/// The most samples a checked run computes (the job's own count can be up to
+/// a million; the checks do not need that many).
+const SAMPLES: usize = 17;
+
+/// Checks every promise for `data` as the content of a job file.
+pub fn check_job_bytes(data: &[u8]) {
+    let text = match read_text_from(data, "fuzz.json") {
+        Ok(text) => text,
+        Err(e) => return check_error(&e, None),
+    };
+    match Job::parse(&text, "fuzz.json") {
+        Err(e) => check_error(&e, Some(&text)),
+        Ok(job) => check_job(&job),
+    }
+    // The same text as a data file for `t2spline fit` (the same validator).
+    if let Err(e) = FitData::parse(&text, "fuzz.json") {
+        check_error(&e, Some(&text));
+    }
+}
+
+/// Checks the error of an invalid input.
+pub fn check_error(e: &Error, text: Option<&str>) {
+    let Error::Invalid { file, problems } = e else {
+        panic!("reading bytes can only find them invalid: {e:?}");
+    };
+    assert_eq!(file, "fuzz.json");
+    assert!(!problems.is_empty(), "an error without a problem");
+    let text = text.map(|t| t.strip_prefix('\u{feff}').unwrap_or(t));
+    for p in problems {
+        assert!(
+            !p.message.chars().any(char::is_control),
+            "control character in {:?}",
+            p.message
+        );
+        assert!(
+            !without_quoted_keys(&p.message).contains(&"0".repeat(40)),
+            "a number written out in full: {}",
+            p.message
+        );
+        if let (Some((line, column)), Some(text)) = (p.line_column, text) {
+            assert!(line >= 1 && column >= 1, "{p:?}");
+            let lines: Vec<&str> = text.split('\n').collect();
+            let Some(l) = lines.get(line - 1) else {
+                panic!("line {line} of {}: {p:?}", lines.len());
+            };
+            assert!(
+                column <= l.chars().count() + 1,
+                "column {column} of {}: {p:?}",
+                l.chars().count()
+            );
+        }
+    }
+    for line in e.lines() {
+        assert!(line.starts_with("fuzz.json"), "{line}");
+    }
+}
+
+/// The message without its quoted keys (`["…"]`), which show what the file
+/// wrote, digits and all.
+fn without_quoted_keys(message: &str) -> String {
+    let mut out = String::new();
+    let mut rest = message;
+    while let Some(start) = rest.find("[\"") {
+        out.push_str(&rest[..start]);
+        rest = match rest[start..].find("\"]") {
+            Some(end) => &rest[start + end + 2..],
+            None => "",
+        };
+    }
+    out.push_str(rest);
+    out
+}
+
+/// Checks a valid job: canonical round trip, and a run.
+pub fn check_job(job: &Job) {
+    let canonical = job.to_json().to_string();
+    match Job::parse(&canonical, "canonical.json") {
+        Ok(again) => assert_eq!(&again, job, "{canonical}"),
+        Err(e) => panic!("the canonical form does not parse: {e}\n{canonical}"),
+    }
+    let alpha = job
+        .alpha
+        .unwrap_or_else(|| Alpha::try_new(0.5).expect("0.5 is a level"));
+    let samples = job.samples.min(SAMPLES);
+    let result = RunResult::compute(job, alpha, samples);
+    if let Err(e) = check_finite(&result) {
+        panic!("{e}");
+    }
+    let c = &result.curves;
+    assert_eq!(c.params.len(), samples);
+    assert_eq!(c.params.first(), Some(&result.domain[0]));
+    assert_eq!(c.params.last(), Some(&result.domain[1]));
+    for i in 0..samples {
+        for k in 0..result.dimension {
+            let layer = |l: Layer| match c.layers.get(l) {
+                Some(v) => v[i][k],
+                None => c.crisp[i][k],
+            };
+            let v: Vec<f64> = Layer::ALL.iter().map(|&l| layer(l)).collect();
+            assert!(v.windows(2).all(|w| w[0] <= w[1]), "sample {i}: {v:?}");
+        }
+    }
+    let e = &result.error;
+    assert!(e.rms <= e.max * (1.0 + 1e-12), "{e:?}");
+    let mut json = Vec::new();
+    write_json_pretty(&mut json, &result).expect("in memory");
+    let back: serde_json::Value = serde_json::from_slice(&json).expect("the result is JSON");
+    assert!(back.is_object());
+    for (name, csv) in render_csv(&result) {
+        assert_eq!(csv.lines().count(), samples + 1, "{name}");
+        assert!(
+            !csv.contains("NaN") && !csv.contains("inf"),
+            "{name}: {csv}"
+        );
+    }
+}
