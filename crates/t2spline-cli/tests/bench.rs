@@ -116,8 +116,9 @@ fn bad_options_are_one_line_errors() {
     let (code, _, err) = bench(&["--case", "wobbly"]);
     assert_eq!(code, 2);
     assert!(err.contains("wobbly"), "{err}");
+    // A job that cannot be read is exit code 3 (README, "Exit codes").
     let (code, _, err) = bench(&["--curve", "does-not-exist.json"]);
-    assert_eq!(code, 2);
+    assert_eq!(code, 3);
     assert!(
         err.starts_with("t2spline: does-not-exist.json: cannot read"),
         "{err}"

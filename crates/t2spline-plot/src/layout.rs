@@ -68,6 +68,16 @@ impl PanelLayout {
             self.plot.bottom() - (p[1] - y0) / (y1 - y0) * self.plot.h,
         ]
     }
+
+    /// Whether a pixel lies in the plot area (to within 0.01 px): markers are
+    /// not clipped, so that one at the edge shows whole, but one whose centre
+    /// lies outside a zoomed panel is left out.
+    #[must_use]
+    pub fn shows(&self, px: Px) -> bool {
+        let r = &self.plot;
+        (r.x - 0.01..=r.right() + 0.01).contains(&px[0])
+            && (r.y - 0.01..=r.bottom() + 0.01).contains(&px[1])
+    }
 }
 
 /// The placed legend: its box and the top-left corner of each entry.
@@ -447,14 +457,15 @@ pub fn panel_obstacles(panel: &Panel, pl: &PanelLayout) -> Obstacles {
             }
             Mark::Markers { points, marker } => {
                 let r = marker_half(marker.size);
-                o.rects.extend(points.iter().map(|&p| {
-                    let [x, y] = pl.to_px(p);
-                    Rect {
-                        x: x - r,
-                        y: y - r,
-                        w: 2.0 * r,
-                        h: 2.0 * r,
-                    }
+                let shown = points
+                    .iter()
+                    .map(|&p| pl.to_px(p))
+                    .filter(|&px| pl.shows(px));
+                o.rects.extend(shown.map(|[x, y]| Rect {
+                    x: x - r,
+                    y: y - r,
+                    w: 2.0 * r,
+                    h: 2.0 * r,
                 }));
             }
             Mark::Segments { segments, .. } => o

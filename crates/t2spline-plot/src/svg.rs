@@ -344,7 +344,11 @@ fn mark(m: &Mark, pl: &PanelLayout, clip: &str, tolerance: f64) -> String {
             )
         }
         Mark::Markers { points, marker } => {
-            let px: Vec<Px> = points.iter().map(|&p| pl.to_px(p)).collect();
+            let px: Vec<Px> = points
+                .iter()
+                .map(|&p| pl.to_px(p))
+                .filter(|&px| pl.shows(px))
+                .collect();
             markers(&px, marker)
         }
         Mark::Segments { segments, stroke } => {
@@ -378,6 +382,9 @@ fn mark(m: &Mark, pl: &PanelLayout, clip: &str, tolerance: f64) -> String {
 
 /// Markers at pixel positions, in one group.
 fn markers(px: &[Px], m: &Marker) -> String {
+    if px.is_empty() {
+        return String::new();
+    }
     let fill = m.fill.unwrap_or(WHITE);
     let mut s = format!(
         "<g fill=\"{}\" stroke=\"{}\" stroke-width=\"1.2\">",

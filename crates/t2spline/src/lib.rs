@@ -68,6 +68,7 @@
 mod error;
 pub mod fit;
 pub mod fuzzy;
+mod golden_section;
 mod limits;
 pub mod nurbs;
 pub mod pipeline;

@@ -183,6 +183,48 @@ fn high_degrees_stay_within_tolerance() {
     }
 }
 
+/// A cubic with one span `width` wide at 0.5 and extreme coordinates and
+/// weights (issue 6's input ranges).
+fn narrow_span_curve(width: f64) -> NurbsCurve<2> {
+    let points: Vec<[f64; 2]> = (0..6)
+        .map(|i| {
+            let x = [1e150, -3e149, 2e-150, 7e149, -1e150, 5e148][i];
+            [x, -x * 0.5]
+        })
+        .collect();
+    let weights = vec![1e12, 1e-12, 3.0, 1e12, 0.5, 1e-12];
+    let knots = vec![0.0, 0.0, 0.0, 0.0, 0.5, 0.5 + width, 1.0, 1.0, 1.0, 1.0];
+    let u = KnotVector::try_new(knots, 3, 6).unwrap();
+    NurbsCurve::try_new(points, weights, u).unwrap()
+}
+
+#[test]
+fn narrow_and_subnormal_spans_give_finite_samples_equal_to_eval() {
+    // Spans 1e-140 wide overflowed the derivatives of the basis in `t`
+    // (1/width³) and gave NaN and infinite samples; spans below 1e-308 made
+    // 2/width overflow. The derivatives are now taken in the span's local
+    // variable.
+    for width in [1e-10, 1e-140, 1e-250, 1e-300, 1e-310, 1e-320, 5e-324] {
+        let c = narrow_span_curve(width);
+        let mut params = c.domain().uniform(101);
+        params.extend([0.5, 0.5 + width / 3.0, 0.5 + width / 2.0, 0.5 + width]);
+        params.sort_by(f64::total_cmp);
+        let got = c.sample_soa(&params).unwrap();
+        for (i, &t) in params.iter().enumerate() {
+            let want = c.eval(t).unwrap();
+            let a = got.point(i);
+            assert!(
+                a.iter().all(|x| x.is_finite()),
+                "width {width:e}, t = {t}: {a:?}"
+            );
+            assert!(
+                close(a[0], want[0], 1e150) && close(a[1], want[1], 1e150),
+                "width {width:e}, t = {t}: {a:?} vs {want:?}"
+            );
+        }
+    }
+}
+
 #[test]
 fn full_multiplicity_knot_takes_the_value_from_the_right() {
     let u = KnotVector::try_new(vec![0.0, 0.0, 0.5, 0.5, 1.0, 1.0], 1, 4).unwrap();

@@ -1,5 +1,6 @@
 //! The point of a curve closest to a given point (The NURBS Book, §6.1).
 
+use crate::golden_section::golden_section_min;
 use crate::nurbs::derivatives::norm;
 use crate::nurbs::{Domain, NurbsCurve};
 
@@ -134,36 +135,9 @@ impl<const D: usize> NurbsCurve<D> {
             }
             t = next;
         }
-        self.golden_closest(target, lo, hi, span)
-    }
-
-    /// The minimum of the distance on `[lo, hi]` by golden-section search.
-    fn golden_closest(&self, target: &[f64; D], mut lo: f64, mut hi: f64, span: usize) -> f64 {
-        let f = |t: f64| norm(&sub(&self.eval_piece(t, span), target));
-        let g = (5f64.sqrt() - 1.0) / 2.0;
-        let (mut x1, mut x2) = (hi - g * (hi - lo), lo + g * (hi - lo));
-        let (mut f1, mut f2) = (f(x1), f(x2));
-        for _ in 0..200 {
-            if hi - lo <= 4.0 * f64::EPSILON * hi.abs().max(lo.abs()).max(f64::MIN_POSITIVE) {
-                break;
-            }
-            if f1 <= f2 {
-                hi = x2;
-                (x2, f2) = (x1, f1);
-                x1 = hi - g * (hi - lo);
-                f1 = f(x1);
-            } else {
-                lo = x1;
-                (x1, f1) = (x2, f2);
-                x2 = lo + g * (hi - lo);
-                f2 = f(x2);
-            }
-        }
-        if f1 <= f2 {
-            x1
-        } else {
-            x2
-        }
+        let distance = |t: f64| norm(&sub(&self.eval_piece(t, span), target));
+        let tolerance = 4.0 * f64::EPSILON * hi.abs().max(lo.abs()).max(f64::MIN_POSITIVE);
+        golden_section_min(distance, [lo, hi], tolerance).1
     }
 }
 

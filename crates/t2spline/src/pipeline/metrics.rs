@@ -1,5 +1,6 @@
 //! The distance between the crisp and the defuzzified curve (SPEC §7).
 
+use crate::golden_section::golden_section_min;
 use crate::nurbs::NurbsCurve;
 
 /// How far the defuzzified curve `D(t)` lies from the crisp curve `C(t)` at equal
@@ -13,8 +14,8 @@ use crate::nurbs::NurbsCurve;
 /// Both curves share weights and knots, so `D − C` is itself a rational
 /// B-spline whose control points are the differences `Dᵢ − Pᵢ`; `d` is its norm.
 /// Neither figure depends on the job's `samples`: `max` is found by a scan of 32
-/// steps per knot span refined by golden-section search (to about 1e-13 of the
-/// domain in `t`), `rms` by 8-point Gauss–Legendre quadrature on quarters of each
+/// steps per knot span, each local maximum of the scan refined by
+/// golden-section search (to about 1e-13 of the span in `t`), `rms` by 8-point Gauss–Legendre quadrature on quarters of each
 /// knot span. With symmetric spreads both are 0.
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
@@ -47,10 +48,11 @@ impl Distance {
         let norm = |t: f64| norm(&difference.eval_unchecked(t));
         let domain = difference.domain();
         let mut max = (norm(domain.start), domain.start);
-        let mut bracket = [domain.start, domain.start];
+        let mut scan = Vec::with_capacity(SCAN_STEPS + 1);
         for (_, [a, b]) in difference.knots().spans() {
             let step = (b - a) / SCAN_STEPS as f64;
-            for j in 0..=SCAN_STEPS {
+            scan.clear();
+            scan.extend((0..=SCAN_STEPS).map(|j| {
                 // `min`: in a span a few subnormal units wide the rounded step
                 // can overshoot `b` (found by fuzzing, issue 6).
                 let t = if j == SCAN_STEPS {
@@ -58,16 +60,27 @@ impl Distance {
                 } else {
                     (a + step * j as f64).min(b)
                 };
-                let d = norm(t);
+                (norm(t), t)
+            }));
+            for j in 0..=SCAN_STEPS {
+                let (d, t) = scan[j];
                 if d > max.0 {
                     max = (d, t);
-                    bracket = [(t - step).max(a), (t + step).min(b)];
+                }
+                // Every local maximum of the scan is refined, not only the
+                // largest: a peak between scan points can beat a higher scan
+                // point elsewhere.
+                let rises = j == 0 || scan[j - 1].0 < d;
+                let falls = j == SCAN_STEPS || scan[j + 1].0 <= d;
+                if rises && falls {
+                    let bracket = [scan[j.saturating_sub(1)].1, scan[(j + 1).min(SCAN_STEPS)].1];
+                    let tolerance = 1e-13 * (b - a).max(f64::MIN_POSITIVE);
+                    let (d, t) = golden_section_min(|t| -norm(t), bracket, tolerance);
+                    if -d > max.0 {
+                        max = (-d, t);
+                    }
                 }
             }
-        }
-        let refined = golden_section_max(&norm, bracket);
-        if refined.0 > max.0 {
-            max = refined;
         }
         let scale = max.0;
         let mut mean_square = 0.0;
@@ -122,39 +135,6 @@ pub fn euclidean_norm(v: &[f64]) -> f64 {
     } else {
         let scaled: f64 = v.iter().map(|x| (x / largest) * (x / largest)).sum();
         largest * scaled.sqrt()
-    }
-}
-
-/// The maximum of `f` on `[lo, hi]` by golden-section search, assuming one peak
-/// there; returns `(f(t), t)`.
-fn golden_section_max(f: &impl Fn(f64) -> f64, [mut lo, mut hi]: [f64; 2]) -> (f64, f64) {
-    let g = (5f64.sqrt() - 1.0) / 2.0;
-    let tol = 1e-13 * (hi - lo).abs().max(f64::MIN_POSITIVE);
-    // Rounding must not take a probe outside the bracket (the domain).
-    let (a, b) = (lo, hi);
-    let inside = |x: f64| x.clamp(a, b);
-    let (mut x1, mut x2) = (inside(hi - g * (hi - lo)), inside(lo + g * (hi - lo)));
-    let (mut f1, mut f2) = (f(x1), f(x2));
-    for _ in 0..200 {
-        if hi - lo <= tol {
-            break;
-        }
-        if f1 < f2 {
-            lo = x1;
-            (x1, f1) = (x2, f2);
-            x2 = inside(lo + g * (hi - lo));
-            f2 = f(x2);
-        } else {
-            hi = x2;
-            (x2, f2) = (x1, f1);
-            x1 = inside(hi - g * (hi - lo));
-            f1 = f(x1);
-        }
-    }
-    if f1 >= f2 {
-        (f1, x1)
-    } else {
-        (f2, x2)
     }
 }
 
@@ -232,6 +212,50 @@ mod tests {
         let d = Distance::of_curve(&c);
         assert_eq!((d.max, d.max_at), (2.0, 1.0));
         assert!((d.rms - 2.0 / 3f64.sqrt()).abs() < 1e-14, "{d:?}");
+    }
+
+    #[test]
+    fn a_peak_next_to_the_domain_start_is_refined() {
+        // y(t) = (1 − t)² + 2.02·t(1 − t) − 0.5·t²: y' = 0.02 − 3.04·t, a
+        // peak of 1 + 0.02²/6.08 at t = 0.02/3.04, inside the first scan step. The scan's
+        // best point was t = 0 itself, which was never bracketed: the shipped
+        // example reported 0.022423 at t = 0 for a peak of 0.022439 at 0.0074.
+        let c =
+            NurbsCurve::try_clamped(2, vec![[0.0, 1.0], [0.0, 1.01], [0.0, -0.5]], vec![1.0; 3])
+                .unwrap();
+        let d = Distance::of_curve(&c);
+        assert!((d.max - (1.0 + 0.0004 / 6.08)).abs() < 1e-15, "{d:?}");
+        assert!((d.max_at - 0.02 / 3.04).abs() < 1e-7, "{d:?}");
+    }
+
+    #[test]
+    fn two_peaks_never_fall_below_dense_sampling() {
+        // Two bumps of |y| on one span, a cubic with y control values
+        // (0, 1, −r, 0) and a varying weight: whichever peak is higher, the
+        // maximum must not fall below dense sampling, and some shapes must
+        // need the refinement.
+        let mut beaten = 0;
+        for i in 0..40 {
+            let r = 0.5 + i as f64 * 0.025;
+            let w = 1.0 + (i % 7) as f64 * 0.3;
+            let c = NurbsCurve::try_clamped(
+                3,
+                vec![[0.0, 0.0], [0.0, 1.0], [0.0, -r], [0.0, 0.0]],
+                vec![1.0, w, 1.0, 1.0],
+            )
+            .unwrap();
+            let d = Distance::of_curve(&c);
+            let y = |t: f64| c.eval(t).unwrap()[1].abs();
+            let n = 400_000;
+            let dense = (0..=n).map(|k| y(k as f64 / n as f64)).fold(0.0, f64::max);
+            assert!(d.max >= dense - 1e-15, "r {r}, w {w}: {d:?} vs {dense}");
+            assert!((y(d.max_at) - d.max).abs() < 1e-15);
+            let coarse = (0..=SCAN_STEPS)
+                .map(|k| y(k as f64 / SCAN_STEPS as f64))
+                .fold(0.0, f64::max);
+            beaten += usize::from(d.max > coarse + 1e-9);
+        }
+        assert!(beaten > 0, "no shape had a peak between scan points");
     }
 
     #[test]

@@ -121,7 +121,8 @@ fn locate(spans: &[Span], hint: usize, t: f64) -> usize {
 }
 
 /// Evaluates the parameters `t`, all in span `span`, into `out[..][at ..]`;
-/// `s` and `r` are scratch of `t.len()`.
+/// `s` and `r` are scratch of `t.len()`. An ill-conditioned span is evaluated
+/// from the basis instead (`direct.rs`).
 #[inline]
 fn evaluate(
     sampler: &Sampler,
@@ -133,6 +134,10 @@ fn evaluate(
     at: usize,
 ) {
     let sp = sampler.spans()[span];
+    if let (true, Some(direct)) = (sp.direct, sampler.direct()) {
+        direct.evaluate(&sp, t, out, at);
+        return;
+    }
     let table = sampler.span_table(span);
     match sampler.order() {
         1 => evaluate_order::<1>(&sp, table, t, s, r, out, at),
@@ -217,7 +222,7 @@ fn evaluate_with<C>(
 ) {
     let denominator = load(&table[..order]);
     for ((s, r), &t) in s.iter_mut().zip(r.iter_mut()).zip(t) {
-        let x = (t - sp.mid) * sp.inv_half;
+        let x = sp.local(t);
         *s = x;
         // W > 0: the basis is non-negative, sums to 1, and the weights are > 0.
         *r = 1.0 / horner(&denominator, x);

@@ -21,10 +21,14 @@
 //!
 //! The straightforward evaluators ([`NurbsCurve::eval`](crate::NurbsCurve::eval),
 //! [`FuzzyCurve::eval_layers`](crate::FuzzyCurve::eval_layers)) stay as the
-//! reference that the tests hold this engine to (1e-12 relative).
+//! reference that the tests hold this engine to (1e-12 relative). A span whose
+//! power form would lose that accuracy (weights spread over many orders of
+//! magnitude, very high degrees) is evaluated from the basis directly, as they
+//! do, at their speed.
 
 mod benchmark;
 mod curves;
+mod direct;
 mod kernel;
 mod params;
 mod power_form;

@@ -4,6 +4,7 @@
 use crate::error::{Error, Place};
 use crate::nurbs::curve::check_weights;
 use crate::nurbs::{Domain, KnotVector};
+use crate::sampling::direct::Direct;
 use crate::sampling::kernel;
 use crate::sampling::power_form::{PowerBasis, Span};
 use crate::sampling::Params;
@@ -69,6 +70,8 @@ pub struct Sampler {
     /// Per span: `channels + 1` rows of `order` power coefficients, row 0 the
     /// denominator.
     table: Vec<f64>,
+    /// For spans evaluated directly ([`Span::direct`]); `None` if there are none.
+    direct: Option<Direct>,
     bounds: Vec<Bound>,
 }
 
@@ -142,12 +145,18 @@ impl Sampler {
                 }
             }
         }
+        let direct = basis
+            .spans()
+            .iter()
+            .any(|s| s.direct)
+            .then(|| Direct::new(knots.as_slice(), knots.degree(), weights, channels));
         Sampler {
             domain: knots.domain(),
             order,
             spans: basis.spans().to_vec(),
             channels: channels.len(),
             table,
+            direct,
             bounds: Vec::new(),
         }
     }
@@ -331,6 +340,11 @@ impl Sampler {
     }
 
     /// The table rows of one span: denominator, then one per channel.
+    /// The data of the direct evaluation, if a span needs it.
+    pub(crate) fn direct(&self) -> Option<&Direct> {
+        self.direct.as_ref()
+    }
+
     pub(crate) fn span_table(&self, span: usize) -> &[f64] {
         let size = (self.channels + 1) * self.order;
         &self.table[span * size..(span + 1) * size]
