@@ -146,7 +146,9 @@ pub fn check_curve(b: &mut Bytes) -> bool {
         })
         .collect();
     let scale = lo.iter().chain(&hi).fold(0.0f64, |m, x| m.max(x.abs()));
-    for t in parameters(b, &u, domain) {
+    let params = parameters(b, &u, domain);
+    check_sampling(&c, &params, scale);
+    for t in params {
         let inside = domain.contains(t);
         let p = c.eval(t);
         assert_eq!(p.is_ok(), inside, "eval({t:e}) in {domain:?}: {p:?}");
@@ -213,6 +215,35 @@ pub fn check_curve(b: &mut Bytes) -> bool {
         let _ = c.param_at_length(b.f64());
     }
     true
+}
+
+/// The sampling engine against `eval` at the parameters inside the domain,
+/// sorted (walked span by span) and in the given order (searched).
+fn check_sampling(c: &NurbsCurve<2>, params: &[f64], scale: f64) {
+    let domain = c.domain();
+    let given: Vec<f64> = params
+        .iter()
+        .copied()
+        .filter(|&t| domain.contains(t))
+        .collect();
+    let mut sorted = given.clone();
+    sorted.sort_by(f64::total_cmp);
+    // Values below about 1e-308/w lose their digits in `w·P` (as in insertion).
+    let min_weight = c.weights().iter().copied().fold(f64::INFINITY, f64::min);
+    let floor = 4.0 * f64::MIN_POSITIVE / min_weight;
+    for ts in [given, sorted] {
+        let samples = c.sample_soa(&ts).expect("parameters in the domain");
+        for (i, &t) in ts.iter().enumerate() {
+            let e = c.eval(t).expect("in the domain");
+            let a = samples.point(i);
+            for k in 0..2 {
+                assert!(
+                    a[k].is_finite() && (a[k] - e[k]).abs() <= tol(scale) * 16.0 + floor,
+                    "sample at {t:e}: {a:?}, eval {e:?}"
+                );
+            }
+        }
+    }
 }
 
 /// A fuzzy number: seven values (sorted, mostly) and a height.
