@@ -183,45 +183,90 @@ fn high_degrees_stay_within_tolerance() {
     }
 }
 
-/// A cubic with one span `width` wide at 0.5 and extreme coordinates and
-/// weights (issue 6's input ranges).
-fn narrow_span_curve(width: f64) -> NurbsCurve<2> {
-    let points: Vec<[f64; 2]> = (0..6)
-        .map(|i| {
-            let x = [1e150, -3e149, 2e-150, 7e149, -1e150, 5e148][i];
-            [x, -x * 0.5]
-        })
+/// A cubic with one span `width` wide at `left` and extreme coordinates
+/// (issue 6's input ranges).
+fn narrow_span_curve(width: f64, left: f64, weights: &[f64]) -> NurbsCurve<2> {
+    let points: Vec<[f64; 2]> = [1e150, -3e149, 2e-150, 7e149, -1e150, 5e148]
+        .iter()
+        .map(|&x| [x, -x * 0.5])
         .collect();
-    let weights = vec![1e12, 1e-12, 3.0, 1e12, 0.5, 1e-12];
-    let knots = vec![0.0, 0.0, 0.0, 0.0, 0.5, 0.5 + width, 1.0, 1.0, 1.0, 1.0];
+    let knots = vec![0.0, 0.0, 0.0, 0.0, left, left + width, 1.0, 1.0, 1.0, 1.0];
     let u = KnotVector::try_new(knots, 3, 6).unwrap();
-    NurbsCurve::try_new(points, weights, u).unwrap()
+    NurbsCurve::try_new(points, weights.to_vec(), u).unwrap()
 }
 
 #[test]
 fn narrow_and_subnormal_spans_give_finite_samples_equal_to_eval() {
     // Spans 1e-140 wide overflowed the derivatives of the basis in `t`
     // (1/width³) and gave NaN and infinite samples; spans below 1e-308 made
-    // 2/width overflow. The derivatives are now taken in the span's local
-    // variable.
-    for width in [1e-10, 1e-140, 1e-250, 1e-300, 1e-310, 1e-320, 5e-324] {
-        let c = narrow_span_curve(width);
-        let mut params = c.domain().uniform(101);
-        params.extend([0.5, 0.5 + width / 3.0, 0.5 + width / 2.0, 0.5 + width]);
-        params.sort_by(f64::total_cmp);
-        let got = c.sample_soa(&params).unwrap();
-        for (i, &t) in params.iter().enumerate() {
-            let want = c.eval(t).unwrap();
-            let a = got.point(i);
-            assert!(
-                a.iter().all(|x| x.is_finite()),
-                "width {width:e}, t = {t}: {a:?}"
-            );
-            assert!(
-                close(a[0], want[0], 1e150) && close(a[1], want[1], 1e150),
-                "width {width:e}, t = {t}: {a:?} vs {want:?}"
-            );
+    // 2/width overflow; clamping far knots in the local variable changed the
+    // basis when the span was not in the middle (found by fuzzing). Moderate
+    // weights take the power form, extreme ones the direct evaluation.
+    let moderate = [1.0, 0.5, 3.0, 1.0, 0.7, 2.0];
+    let extreme = [1e12, 1e-12, 3.0, 1e12, 0.5, 1e-12];
+    for weights in [&moderate[..], &extreme[..]] {
+        for left in [0.5, 0.1, 0.93] {
+            for width in [1e-10, 1e-140, 1e-250, 1e-300, 1e-310, 1e-320, 5e-324] {
+                let c = narrow_span_curve(width, left, weights);
+                let mut params = c.domain().uniform(101);
+                params.extend([left, left + width / 3.0, left + width / 2.0, left + width]);
+                params.sort_by(f64::total_cmp);
+                let got = c.sample_soa(&params).unwrap();
+                for (i, &t) in params.iter().enumerate() {
+                    let want = c.eval(t).unwrap();
+                    let a = got.point(i);
+                    assert!(
+                        a.iter().all(|x| x.is_finite())
+                            && close(a[0], want[0], 1e150)
+                            && close(a[1], want[1], 1e150),
+                        "weights {weights:?}, span at {left} of width {width:e}, t = {t}: {a:?} vs {want:?}"
+                    );
+                }
+            }
         }
+    }
+}
+
+#[test]
+fn a_narrow_first_span_between_distinct_far_knots_matches_eval() {
+    // Found by fuzzing: an unclamped cubic whose first span is 8.75e-303
+    // wide, with distinct knots far from it on both sides. Their distances
+    // (−5.125, −4 against 0.375) enter one ratio of the basis; mapping the
+    // knots to the span's local variable and clamping them at ±1e300 gave
+    // (1.505, 1.572) instead of (1.916, 2.342) at t = 0.
+    let w = 8.751082007644295e-303;
+    let u = KnotVector::try_new(
+        vec![
+            -6.125, -5.125, -4.0, 0.0, w, 0.375, 0.375, 0.875, 1.0, 2.0, 3.0,
+        ],
+        3,
+        7,
+    )
+    .unwrap();
+    let points = vec![
+        [0.0, 0.0],
+        [1.0, 0.625],
+        [2.0, 2.5],
+        [3.0, 0.625],
+        [4.0, 0.0],
+        [5.0, 0.625],
+        [6.0, 2.5],
+    ];
+    let weights = vec![1.5, 1.53125, 1.5625, 1.59375, 1.625, 1.65625, 1.6875];
+    let c = NurbsCurve::try_new(points, weights, u).unwrap();
+    let params = [0.0, w / 2.0, w, 0.2, 0.375, 0.875];
+    let got = c.sample_soa(&params[..]).unwrap();
+    // The value at t = 0 from exact rational arithmetic (Cox–de Boor with
+    // Python's fractions).
+    let exact = [1.9158557527189468, 2.342229536348025];
+    assert!(close(got.point(0)[0], exact[0], 3.0) && close(got.point(0)[1], exact[1], 3.0));
+    for (i, &t) in params.iter().enumerate() {
+        let want = c.eval(t).unwrap();
+        let a = got.point(i);
+        assert!(
+            close(a[0], want[0], 6.0) && close(a[1], want[1], 6.0),
+            "t = {t}: {a:?} vs {want:?}"
+        );
     }
 }
 

@@ -50,6 +50,27 @@ pub fn basis_derivatives(
     t: f64,
     n: usize,
 ) -> Vec<Vec<f64>> {
+    basis_derivatives_in(knots, degree, span, t, n, |d| d)
+}
+
+/// [`basis_derivatives`] with respect to a local variable `s` with
+/// `ds/dt = local(1)`: every knot difference that divides a derivative is
+/// mapped by `local` (`local(d) = d·ds/dt`), while the basis values, which
+/// are ratios of knot differences, are computed in `t`.
+///
+/// Taken in `s`, the derivatives on a span stay of the size of the basis
+/// however narrow it is; in `t` they grow like `width⁻ᵏ` and overflow for
+/// spans below about 1e-100. A difference that overflows when mapped (a knot
+/// far from a narrow span) becomes infinite and its terms 0, which they are to
+/// within 1e-308 of the result.
+pub(crate) fn basis_derivatives_in(
+    knots: &[f64],
+    degree: usize,
+    span: usize,
+    t: f64,
+    n: usize,
+    local: impl Fn(f64) -> f64,
+) -> Vec<Vec<f64>> {
     let p = degree;
     // ndu[j][r]: basis functions (upper triangle) and knot differences (lower).
     let mut ndu = vec![vec![0.0; p + 1]; p + 1];
@@ -83,18 +104,18 @@ pub fn basis_derivatives(
             let pk = p - k;
             if r >= k {
                 let rk = rk as usize;
-                a[s2][0] = a[s1][0] / ndu[pk + 1][rk];
+                a[s2][0] = a[s1][0] / local(ndu[pk + 1][rk]);
                 d = a[s2][0] * ndu[rk][pk];
             }
             let j1 = if rk >= -1 { 1 } else { (-rk) as usize };
             let j2 = if r <= pk { k - 1 } else { p - r };
             for j in j1..=j2 {
                 let idx = (rk + j as isize) as usize;
-                a[s2][j] = (a[s1][j] - a[s1][j - 1]) / ndu[pk + 1][idx];
+                a[s2][j] = (a[s1][j] - a[s1][j - 1]) / local(ndu[pk + 1][idx]);
                 d += a[s2][j] * ndu[idx][pk];
             }
             if r <= pk {
-                a[s2][k] = -a[s1][k - 1] / ndu[pk + 1][r];
+                a[s2][k] = -a[s1][k - 1] / local(ndu[pk + 1][r]);
                 d += a[s2][k] * ndu[r][pk];
             }
             ders[k][r] = d;

@@ -1,6 +1,6 @@
 //! The weighted B-spline basis in power form, one polynomial per span.
 
-use crate::nurbs::derivatives::basis_derivatives;
+use crate::nurbs::derivatives::basis_derivatives_in;
 use crate::nurbs::KnotVector;
 
 /// One non-empty knot span `[start, end]` and its local variable
@@ -133,28 +133,20 @@ impl PowerBasis {
     }
 }
 
-/// The derivatives in the local variable `s` at `s = 0` of the basis functions
-/// `N_{span−p}, …, N_{span}` (`ders[k][j]`, as
-/// [`basis_derivatives`]), computed on the knots mapped by
-/// `u ↦ s(u)` ([`Span::local`]): the B-spline basis is unchanged by an affine map of
-/// its knots and parameter, so these equal `Nⱼ⁽ᵏ⁾(mid)·halfᵏ`.
+/// The derivatives in the local variable `s` at `s = 0` (`t = mid`) of the
+/// basis functions `N_{index−p}, …, N_{index}` (`ders[k][j]`, as
+/// [`basis_derivatives`](crate::nurbs::derivatives::basis_derivatives)):
+/// `dᵏNⱼ/dsᵏ = Nⱼ⁽ᵏ⁾(mid)·halfᵏ`, with every knot difference that divides a
+/// derivative mapped to `s` units ([`basis_derivatives_in`]).
 ///
-/// In `t` the `k`-th derivative grows like `1/(span width)ᵏ` and overflows for
-/// spans narrower than about 1e-100 (a knot vector with a span of 1e-140 gave
-/// infinite and NaN samples; issue 6). In `s` every knot difference in A2.3 is
-/// at least the span's own width 2, so the values stay of the size of the
-/// basis. Knots far away map to huge values, clamped to ±1e300: their
-/// difference with the span's knots then still exceeds 1e300, and the basis
-/// depends on them only through ratios that change by less than 1e-300.
+/// In `t` the `k`-th derivative grows like `1/(span width)ᵏ` and overflowed for
+/// spans of 1e-140 (infinite and NaN samples; issue 6). Mapping the knots
+/// themselves to `s` and clamping the far ones was wrong: two far knots on
+/// either side of a narrow span enter one ratio, which clamping changed (found
+/// by fuzzing); here the basis values stay ratios in `t`.
 fn local_basis_derivatives(knots: &[f64], p: usize, index: usize, span: &Span) -> Vec<Vec<f64>> {
-    const FAR: f64 = 1e300;
-    // A2.3 reads knots[index + 1 − p ..= index + p] (none for p = 0);
-    // `local[m]` is knot `index + 1 − p + m`, so the span is `p − 1` there.
-    let local: Vec<f64> = knots[index + 1 - p..index + p + 1]
-        .iter()
-        .map(|&u| span.local(u).clamp(-FAR, FAR))
-        .collect();
-    basis_derivatives(&local, p, p.saturating_sub(1), span.local(span.mid), p)
+    let local = |d: f64| (d * span.pre) * span.inv_half;
+    basis_derivatives_in(knots, p, index, span.mid, p, local)
 }
 
 #[cfg(test)]

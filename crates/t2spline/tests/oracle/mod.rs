@@ -239,7 +239,7 @@ fn check_sampling(c: &NurbsCurve<2>, params: &[f64], scale: f64) {
             for k in 0..2 {
                 assert!(
                     a[k].is_finite() && (a[k] - e[k]).abs() <= tol(scale) * 16.0 + floor,
-                    "sample at {t:e}: {a:?}, eval {e:?}"
+                    "sample at {t:e}: {a:?}, eval {e:?}, curve {c:?}"
                 );
             }
         }
