@@ -379,6 +379,34 @@ fn assert_unit_circle(c: &NurbsCurve<2>, tol: f64) {
         let [x, y] = c.eval(t).unwrap();
         assert!((x.hypot(y) - 1.0).abs() <= tol, "t = {t}: ({x}, {y})");
     }
+    // Its length is 2π, and the point at length s lies at the angle s.
+    let tau = std::f64::consts::TAU;
+    let length = c.arc_length();
+    assert!((length / tau - 1.0).abs() < 1e-12, "{length}");
+    for k in 0..=8 {
+        // The whole length as computed (τ itself may exceed it by an ulp).
+        let s = if k == 8 { length } else { tau * k as f64 / 8.0 };
+        let t = c.param_at_length(s).unwrap();
+        let [x, y] = c.eval(t).unwrap();
+        let angle = y.atan2(x).rem_euclid(tau);
+        let expect = (tau * k as f64 / 8.0) % tau;
+        let diff = (angle - expect).abs().min(tau - (angle - expect).abs());
+        assert!(diff < 1e-10, "k = {k}: angle {angle}");
+    }
+    assert!(matches!(
+        c.param_at_length(7.0),
+        Err(t2spline::Error::LengthOutside { .. })
+    ));
+    assert!(matches!(
+        c.param_at_length(f64::NAN),
+        Err(t2spline::Error::LengthOutside { .. })
+    ));
+    // Its length is 2π (adaptive quadrature, relative accuracy 1e-10 asked).
+    let length = c.arc_length();
+    assert!(
+        (length / std::f64::consts::TAU - 1.0).abs() < 1e-12,
+        "{length}"
+    );
     // Interior double knots: the curve is continuous there (C¹ in fact).
     for k in [0.25, 0.5, 0.75, 1.0 / 3.0, 2.0 / 3.0] {
         if c.knots().multiplicity(k) == 2 {
