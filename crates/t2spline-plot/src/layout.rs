@@ -69,14 +69,21 @@ impl PanelLayout {
         ]
     }
 
-    /// Whether a pixel lies in the plot area (to within 0.01 px): markers are
-    /// not clipped, so that one at the edge shows whole, but one whose centre
-    /// lies outside a zoomed panel is left out.
+    /// The pixels of the marker centres that lie in the plot area (to within
+    /// 0.01 px): markers are not clipped, so that one at the edge shows whole,
+    /// but one whose centre lies outside a zoomed panel is left out.
     #[must_use]
-    pub fn shows(&self, px: Px) -> bool {
+    pub fn marker_px(&self, points: &[Xy]) -> Vec<Px> {
         let r = &self.plot;
-        (r.x - 0.01..=r.right() + 0.01).contains(&px[0])
-            && (r.y - 0.01..=r.bottom() + 0.01).contains(&px[1])
+        let shows = |px: &Px| {
+            (r.x - 0.01..=r.right() + 0.01).contains(&px[0])
+                && (r.y - 0.01..=r.bottom() + 0.01).contains(&px[1])
+        };
+        points
+            .iter()
+            .map(|&p| self.to_px(p))
+            .filter(shows)
+            .collect()
     }
 }
 
@@ -457,16 +464,13 @@ pub fn panel_obstacles(panel: &Panel, pl: &PanelLayout) -> Obstacles {
             }
             Mark::Markers { points, marker } => {
                 let r = marker_half(marker.size);
-                let shown = points
-                    .iter()
-                    .map(|&p| pl.to_px(p))
-                    .filter(|&px| pl.shows(px));
-                o.rects.extend(shown.map(|[x, y]| Rect {
-                    x: x - r,
-                    y: y - r,
-                    w: 2.0 * r,
-                    h: 2.0 * r,
-                }));
+                o.rects
+                    .extend(pl.marker_px(points).into_iter().map(|[x, y]| Rect {
+                        x: x - r,
+                        y: y - r,
+                        w: 2.0 * r,
+                        h: 2.0 * r,
+                    }));
             }
             Mark::Segments { segments, .. } => o
                 .segments

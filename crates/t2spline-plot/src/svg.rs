@@ -343,14 +343,7 @@ fn mark(m: &Mark, pl: &PanelLayout, clip: &str, tolerance: f64) -> String {
                 coord(fill.opacity)
             )
         }
-        Mark::Markers { points, marker } => {
-            let px: Vec<Px> = points
-                .iter()
-                .map(|&p| pl.to_px(p))
-                .filter(|&px| pl.shows(px))
-                .collect();
-            markers(&px, marker)
-        }
+        Mark::Markers { points, marker } => markers(&pl.marker_px(points), marker),
         Mark::Segments { segments, stroke } => {
             let mut d = String::new();
             for [a, b] in segments {

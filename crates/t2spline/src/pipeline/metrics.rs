@@ -51,6 +51,7 @@ impl Distance {
         let mut scan = Vec::with_capacity(SCAN_STEPS + 1);
         for (_, [a, b]) in difference.knots().spans() {
             let step = (b - a) / SCAN_STEPS as f64;
+            let tolerance = 1e-13 * (b - a).max(f64::MIN_POSITIVE);
             scan.clear();
             scan.extend((0..=SCAN_STEPS).map(|j| {
                 // `min`: in a span a few subnormal units wide the rounded step
@@ -74,7 +75,6 @@ impl Distance {
                 let falls = j == SCAN_STEPS || scan[j + 1].0 <= d;
                 if rises && falls {
                     let bracket = [scan[j.saturating_sub(1)].1, scan[(j + 1).min(SCAN_STEPS)].1];
-                    let tolerance = 1e-13 * (b - a).max(f64::MIN_POSITIVE);
                     let (d, t) = golden_section_min(|t| -norm(t), bracket, tolerance);
                     if -d > max.0 {
                         max = (-d, t);
