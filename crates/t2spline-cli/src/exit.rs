@@ -64,13 +64,6 @@ mod tests {
                 2,
             ),
             (
-                Error::Option {
-                    option: "--alpha",
-                    message: "m".into(),
-                },
-                2,
-            ),
-            (
                 Error::Read {
                     path: PathBuf::from("j"),
                     source: io(),
@@ -106,5 +99,10 @@ mod tests {
             Exit::of(&anyhow::anyhow!("a bad option of fit")),
             Exit::Invalid
         );
+        let option = crate::cmd::settings::OptionError {
+            option: "--alpha",
+            message: "m".into(),
+        };
+        assert_eq!(Exit::of(&anyhow::Error::new(option)), Exit::Invalid);
     }
 }

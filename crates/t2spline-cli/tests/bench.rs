@@ -99,11 +99,11 @@ fn bad_options_are_one_line_errors() {
     for (args, message) in [
         (
             &["--threads", "0"][..],
-            "t2spline: --threads: 0 must be in 1 ..= 1024\n",
+            "t2spline: --threads: threads = 0: must be in 1 ..= 1024\n",
         ),
         (
             &["--points", "1"][..],
-            "t2spline: --points: 1 must be at least 2\n",
+            "t2spline: --points: points = 1: at least 2 are needed\n",
         ),
     ] {
         let (code, out, err) = bench(args);

@@ -3,7 +3,6 @@
 
 use assert_cmd::Command;
 use serde_json::Value;
-use t2spline_io::Job;
 
 const EXAMPLE: &str = concat!(
     env!("CARGO_MANIFEST_DIR"),
@@ -41,8 +40,8 @@ fn points(v: &Value) -> Vec<Vec<f64>> {
 #[test]
 fn derivatives_and_arc_lengths_match_the_library() {
     let r = run(&["--derivatives", "3", "--samples", "7"]);
-    let job = Job::read(std::path::Path::new(EXAMPLE)).unwrap();
-    let t2spline_io::JobCurve::Planar(curve) = &job.curve else {
+    let job = t2spline_io::read_job(std::path::Path::new(EXAMPLE)).unwrap();
+    let t2spline::job::Model::Planar(curve) = &job.model else {
         panic!("the example is planar")
     };
     let crisp = curve.crisp_curve();
@@ -124,7 +123,7 @@ fn bad_orders_are_one_line_errors_with_exit_code_2_and_no_output() {
         (
             "3",
             "500000",
-            "t2spline: --derivatives: 3 orders at 500000 samples make 1500000 derivative vectors per curve, more than the limit 1000000; lower --derivatives or --samples\n",
+            "t2spline: --derivatives: 3 orders at 500000 samples make 1500000 derivative vectors per curve, more than the limit 1000000; lower the derivative order or the number of samples\n",
         ),
     ] {
         t2spline()

@@ -3,11 +3,11 @@
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
+use t2spline::job::{Points, RunOutput};
 use t2spline::pipeline::euclidean_norm;
 use t2spline::{Layer, Num};
 
 use crate::atomic::Staged;
-use crate::result::{Point, RunResult};
 use crate::Error;
 
 /// The files [`write_csv`] writes, with what each holds.
@@ -31,7 +31,7 @@ pub const CSV_FILES: [(&str, &str); 4] = [
 ];
 
 /// One named column group: a curve sampled at the result's parameters.
-type Family<'a> = Vec<(String, &'a [Point])>;
+type Family<'a> = Vec<(String, &'a Points)>;
 
 /// One CSV file of a result: `t`, then every curve's coordinates, then an
 /// optional extra column.
@@ -56,7 +56,7 @@ impl Table<'_> {
         for (i, t) in self.params.iter().enumerate() {
             let mut row = vec![number(t)];
             for (_, points) in &self.family {
-                row.extend(points[i].iter().map(number));
+                row.extend(points.coords().iter().map(|c| number(&c[i])));
             }
             row.extend(self.extra.as_ref().map(|(_, v)| number(&v[i])));
             w.write_record(&row)?;
@@ -67,14 +67,9 @@ impl Table<'_> {
 
 /// The tables of a result, in the order of [`CSV_FILES`], then
 /// [`DERIVATIVES_CSV`] when the result has derivatives.
-fn tables(result: &RunResult) -> Vec<(&'static str, Table<'_>)> {
+fn tables(result: &RunOutput) -> Vec<(&'static str, Table<'_>)> {
     let c = &result.curves;
-    let layer = |l: Layer| -> &[Point] {
-        match c.layers.get(l) {
-            Some(v) => v,
-            None => &c.crisp,
-        }
-    };
+    let layer = |l: Layer| c.layer(l);
     let stage1: Family = Layer::ALL
         .iter()
         .map(|&l| (l.name().to_owned(), layer(l)))
@@ -82,9 +77,9 @@ fn tables(result: &RunResult) -> Vec<(&'static str, Table<'_>)> {
     let stage2: Family = Layer::ALL
         .iter()
         .filter_map(|&l| match c.alpha_cut.get(l) {
-            Some(Some(v)) => Some((l.name().to_owned(), v.as_slice())),
+            Some(Some(v)) => Some((l.name().to_owned(), v)),
             Some(None) => None,
-            None => Some((l.name().to_owned(), c.crisp.as_slice())),
+            None => Some((l.name().to_owned(), &c.crisp)),
         })
         .collect();
     let stage3: Family = vec![
@@ -97,12 +92,16 @@ fn tables(result: &RunResult) -> Vec<(&'static str, Table<'_>)> {
         ("defuzzified".into(), &c.defuzzified),
     ];
     // Scaled, so that a distance near 1e-170 does not underflow when squared.
-    let distance: Vec<f64> = c
-        .crisp
-        .iter()
-        .zip(&c.defuzzified)
-        .map(|(a, b)| {
-            let d: Vec<f64> = a.iter().zip(b).map(|(x, y)| x - y).collect();
+    let mut d = vec![0.0; result.dimension];
+    let distance: Vec<f64> = (0..c.params.len())
+        .map(|i| {
+            for ((d, a), b) in d
+                .iter_mut()
+                .zip(c.crisp.coords())
+                .zip(c.defuzzified.coords())
+            {
+                *d = a[i] - b[i];
+            }
             euclidean_norm(&d)
         })
         .collect();
@@ -126,7 +125,7 @@ fn tables(result: &RunResult) -> Vec<(&'static str, Table<'_>)> {
                 orders
                     .iter()
                     .enumerate()
-                    .map(move |(k, points)| (format!("{name}_d{}", k + 1), points.as_slice()))
+                    .map(move |(k, points)| (format!("{name}_d{}", k + 1), points))
             })
             .collect();
         files.push((DERIVATIVES_CSV, table(family, None)));
@@ -147,7 +146,7 @@ pub const DERIVATIVES_CSV: &str = "derivatives.csv";
 /// that reads back to the same `f64`, in exponent form beyond 1e16 and below
 /// 1e-6 (`1e300`, not 301 digits).
 #[must_use]
-pub fn render_csv(result: &RunResult) -> Vec<(&'static str, String)> {
+pub fn render_csv(result: &RunOutput) -> Vec<(&'static str, String)> {
     tables(result)
         .into_iter()
         .map(|(name, table)| {
@@ -170,7 +169,7 @@ pub fn render_csv(result: &RunResult) -> Vec<(&'static str, String)> {
 /// # Errors
 /// [`Error::Write`] if the folder cannot be created or a file cannot be
 /// written; then no file in `dir` has changed.
-pub fn write_csv(dir: &Path, result: &RunResult) -> Result<Vec<PathBuf>, Error> {
+pub fn write_csv(dir: &Path, result: &RunOutput) -> Result<Vec<PathBuf>, Error> {
     let mut staged = Staged::default();
     let paths = stage_csv(&mut staged, dir, result)?;
     staged.commit()?;
@@ -187,7 +186,7 @@ pub fn write_csv(dir: &Path, result: &RunResult) -> Result<Vec<PathBuf>, Error> 
 pub fn stage_csv(
     staged: &mut Staged,
     dir: &Path,
-    result: &RunResult,
+    result: &RunOutput,
 ) -> Result<Vec<PathBuf>, Error> {
     std::fs::create_dir_all(dir).map_err(|source| Error::Write {
         path: dir.to_owned(),

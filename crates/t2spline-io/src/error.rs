@@ -67,14 +67,6 @@ pub enum Error {
         #[source]
         source: std::io::Error,
     },
-    /// A value given on the command line breaks a rule.
-    #[error("{option}: {message}")]
-    Option {
-        /// The option, e.g. `--alpha`.
-        option: &'static str,
-        /// The rule.
-        message: String,
-    },
     /// A computed value is NaN or infinite. Valid input never leads here (the
     /// core crate's ranges guarantee finite results); it would be a bug, and
     /// the result is not written rather than written with `null` in its place.

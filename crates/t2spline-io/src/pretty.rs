@@ -34,7 +34,7 @@ pub fn to_json_pretty(value: &Value) -> String {
 /// newline. An array whose first element is a scalar is kept on one line.
 ///
 /// Non-finite floats would be written as `null` by `serde_json`; check values
-/// before writing (see `RunResult::check_finite`).
+/// before writing (see [`check_finite`](crate::check_finite)).
 ///
 /// # Errors
 /// The errors of `writer`, and of `value`'s `Serialize` (e.g. a map with

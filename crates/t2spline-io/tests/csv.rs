@@ -3,9 +3,19 @@
 
 use proptest::prelude::*;
 use serde_json::json;
+use t2spline::job::{Job, Model, Points, RunOutput, Settings};
 use t2spline::{strategies, Alpha, Layer};
-use t2spline_io::result::Point;
-use t2spline_io::{render_csv, write_csv, Job, JobCurve, RunResult, CSV_FILES};
+use t2spline_io::{render_csv, write_csv, CSV_FILES};
+
+/// The job's result at `alpha` and `samples`.
+fn compute(job: &Job, alpha: Alpha, samples: usize) -> RunOutput {
+    job.run(&Settings {
+        alpha,
+        samples,
+        derivatives: None,
+    })
+    .unwrap()
+}
 
 /// A job of order 2 with three points in `dims` dimensions, every number of
 /// height `h`, sampled at `samples` parameters.
@@ -23,7 +33,7 @@ fn job(dims: usize, h: f64, samples: usize) -> Job {
         "order": 2, "lower_height": h, "samples": samples, "weights": [1, 2, 1],
         "points": [point(0), point(1), point(2)]
     });
-    Job::parse(&v.to_string(), "job.json").unwrap()
+    t2spline_io::parse_job(&v.to_string(), "job.json").unwrap()
 }
 
 fn alpha(a: f64) -> Alpha {
@@ -85,7 +95,7 @@ const SEVEN: [&str; 7] = [
 
 #[test]
 fn four_files_in_the_documented_order() {
-    let r = RunResult::compute(&job(2, 0.5, 5), alpha(0.3), 5);
+    let r = compute(&job(2, 0.5, 5), alpha(0.3), 5);
     let names: Vec<_> = render_csv(&r).into_iter().map(|(n, _)| n).collect();
     let documented: Vec<_> = CSV_FILES.iter().map(|(n, _)| *n).collect();
     assert_eq!(names, documented);
@@ -104,7 +114,7 @@ fn four_files_in_the_documented_order() {
 fn headers_and_row_counts_in_two_and_three_dimensions() {
     for dims in [2, 3] {
         let samples = 7;
-        let r = RunResult::compute(&job(dims, 0.5, samples), alpha(0.3), samples);
+        let r = compute(&job(dims, 0.5, samples), alpha(0.3), samples);
         let files = render_csv(&r);
         let expected = [
             ("stage1-layers.csv", columns(&SEVEN, dims)),
@@ -135,7 +145,7 @@ fn headers_and_row_counts_in_two_and_three_dimensions() {
 fn stage2_leaves_out_the_lower_layers_above_the_height() {
     let h = 0.5;
     let names = |a: f64| {
-        let r = RunResult::compute(&job(2, h, 3), alpha(a), 3);
+        let r = compute(&job(2, h, 3), alpha(a), 3);
         table(file(&render_csv(&r), "stage2-alpha-cut.csv")).0
     };
     let without_lower = columns(
@@ -162,11 +172,11 @@ fn stage2_leaves_out_the_lower_layers_above_the_height() {
 #[test]
 fn stage2_with_mixed_heights_has_lower_layers_only_below_every_height() {
     // One number of height 0.25, the rest 0.5 (from the top level).
-    let mut v = job(2, 0.5, 3).to_json();
+    let mut v = t2spline_io::job_json(&job(2, 0.5, 3));
     v["points"][1]["y"]["lower_height"] = json!(0.25);
-    let job = Job::parse(&v.to_string(), "job.json").unwrap();
+    let job = t2spline_io::parse_job(&v.to_string(), "job.json").unwrap();
     let names = |a: f64| {
-        let r = RunResult::compute(&job, alpha(a), 3);
+        let r = compute(&job, alpha(a), 3);
         table(file(&render_csv(&r), "stage2-alpha-cut.csv")).0
     };
     assert_eq!(names(0.25), columns(&SEVEN, 2));
@@ -191,14 +201,14 @@ fn column(header: &[String], rows: &[Vec<String>], name: &str) -> Vec<f64> {
 
 /// Asserts that columns `{name}_x …` hold exactly `points`.
 #[track_caller]
-fn assert_curve(header: &[String], rows: &[Vec<String>], name: &str, points: &[Point]) {
-    for (a, axis) in ["x", "y", "z"][..points[0].len()].iter().enumerate() {
+fn assert_curve(header: &[String], rows: &[Vec<String>], name: &str, points: &Points) {
+    for (a, axis) in ["x", "y", "z"][..points.dimension()].iter().enumerate() {
         let got = column(header, rows, &format!("{name}_{axis}"));
-        let want: Vec<f64> = points.iter().map(|p| p[a]).collect();
+        let want = points.coord(a);
         // Bit for bit: the CSV holds the shortest text that reads back exactly.
         let same = got
             .iter()
-            .zip(&want)
+            .zip(want)
             .all(|(g, w)| g.to_bits() == w.to_bits());
         assert!(
             same && got.len() == want.len(),
@@ -208,7 +218,7 @@ fn assert_curve(header: &[String], rows: &[Vec<String>], name: &str, points: &[P
 }
 
 /// Every number of every file equals the result's value, bit for bit.
-fn check_values(r: &RunResult) {
+fn check_values(r: &RunOutput) {
     let files = render_csv(r);
     let c = &r.curves;
     let params_equal = |header: &[String], rows: &[Vec<String>]| {
@@ -247,10 +257,12 @@ fn check_values(r: &RunResult) {
     assert_curve(&h, &rows, "defuzzified", &c.defuzzified);
     let distance = column(&h, &rows, "distance");
     for (i, d) in distance.iter().enumerate() {
-        let want = c.crisp[i]
+        let want = c
+            .crisp
+            .coords()
             .iter()
-            .zip(&c.defuzzified[i])
-            .map(|(a, b)| (a - b) * (a - b))
+            .zip(c.defuzzified.coords())
+            .map(|(a, b)| (a[i] - b[i]) * (a[i] - b[i]))
             .sum::<f64>()
             .sqrt();
         assert_eq!(d.to_bits(), want.to_bits(), "distance at row {i}");
@@ -266,7 +278,7 @@ fn check_values(r: &RunResult) {
 fn csv_values_read_back_to_the_result_values() {
     for dims in [2, 3] {
         for a in [0.0, 0.3, 0.5, 0.9] {
-            check_values(&RunResult::compute(&job(dims, 0.5, 9), alpha(a), 9));
+            check_values(&compute(&job(dims, 0.5, 9), alpha(a), 9));
         }
     }
 }
@@ -277,14 +289,14 @@ proptest! {
     #[test]
     fn csv_values_read_back_for_random_curves(
         curve in prop_oneof![
-            strategies::fuzzy_curve::<2>().prop_map(JobCurve::Planar),
-            strategies::fuzzy_curve::<3>().prop_map(JobCurve::Spatial),
+            strategies::fuzzy_curve::<2>().prop_map(Model::Planar),
+            strategies::fuzzy_curve::<3>().prop_map(Model::Spatial),
         ],
         a in 0.0..=1.0f64,
         samples in 2usize..30,
     ) {
-        let job = Job { description: None, alpha: None, samples, curve };
-        check_values(&RunResult::compute(&job, alpha(a), samples));
+        let job = Job { description: None, alpha: None, samples, model: curve };
+        check_values(&compute(&job, alpha(a), samples));
     }
 }
 
@@ -292,7 +304,7 @@ proptest! {
 fn write_csv_creates_the_folder_and_the_four_files() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("new/nested");
-    let r = RunResult::compute(&job(3, 1.0, 4), alpha(0.5), 4);
+    let r = compute(&job(3, 1.0, 4), alpha(0.5), 4);
     let written = write_csv(&out, &r).unwrap();
     assert_eq!(written.len(), 4);
     for ((name, text), path) in render_csv(&r).iter().zip(&written) {
@@ -308,7 +320,7 @@ fn write_csv_into_a_file_is_an_error_naming_it() {
     let dir = tempfile::tempdir().unwrap();
     let blocker = dir.path().join("file");
     std::fs::write(&blocker, "x").unwrap();
-    let r = RunResult::compute(&job(2, 1.0, 3), alpha(0.5), 3);
+    let r = compute(&job(2, 1.0, 3), alpha(0.5), 3);
     let e = write_csv(&blocker, &r).unwrap_err();
     let lines = e.lines();
     assert_eq!(lines.len(), 1, "{lines:?}");

@@ -1,12 +1,42 @@
 //! Data files for `t2spline fit`: validation messages, and the job file a fit
-//! writes (it must parse back with `Job::parse`, carry the data file's keys,
+//! writes (it must parse back with `parse_job`, carry the data file's keys,
 //! and hold exactly the fitted numbers).
 
 use proptest::prelude::*;
 use serde_json::{json, Value};
-use t2spline::fit::{fit_fuzzy, FitOptions, FuzzyFitMode, Parametrization};
+use t2spline::fit::{
+    fit_fuzzy, FitOptions, FitSummary, FuzzyData, FuzzyFitMode, OrderViolation, Parametrization,
+};
+use t2spline::job::Model;
 use t2spline::{strategies, Layer, Nt2Point};
-use t2spline_io::{to_json_pretty, DataPoints, FitData, Job, JobCurve};
+use t2spline_io::{to_json_pretty, FitData};
+
+/// What `t2spline fit` makes of a data file: the core's fit at the file's
+/// degree, and the job file written back (or the broken inequalities).
+#[derive(Debug)]
+struct Fitted {
+    summary: FitSummary,
+    job: Result<Value, Vec<OrderViolation>>,
+}
+
+fn fit(
+    data: &FitData,
+    options: &FitOptions,
+    mode: FuzzyFitMode,
+) -> Result<Fitted, t2spline_io::Error> {
+    let options = FitOptions {
+        degree: data.degree,
+        ..*options
+    };
+    let outcome = data
+        .points
+        .fit(&options, mode)
+        .map_err(|e| data.fit_error(&e))?;
+    Ok(Fitted {
+        summary: outcome.summary,
+        job: outcome.model.map(|m| data.job_json(&m)),
+    })
+}
 
 /// A fuzzy number with spreads `s`, `2s`, `3s` on the left and `r`, `2r`, `3r`
 /// on the right.
@@ -42,7 +72,7 @@ fn profile() -> Value {
 }
 
 fn parse(v: &Value) -> Result<FitData, t2spline_io::Error> {
-    FitData::parse(&v.to_string(), "data.json")
+    t2spline_io::parse_data(&v.to_string(), "data.json")
 }
 
 /// The error lines, without the line and column after the file name (the
@@ -65,7 +95,7 @@ fn fitted_job_parses_back_and_carries_the_data_keys() {
     let data = parse(&profile()).unwrap();
     assert_eq!((data.degree, data.degree_key), (3, "order"));
     for mode in [FuzzyFitMode::Valid, FuzzyFitMode::Independent] {
-        let outcome = data.fit(&FitOptions::interpolation(99), mode).unwrap();
+        let outcome = fit(&data, &FitOptions::interpolation(99), mode).unwrap();
         let Ok(job_json) = outcome.job else {
             assert_eq!(mode, FuzzyFitMode::Independent);
             continue;
@@ -96,15 +126,15 @@ fn fitted_job_parses_back_and_carries_the_data_keys() {
         // Every number inherits the top-level height: none repeats it.
         assert!(job_json["points"][0]["x"].get("lower_height").is_none());
         let text = to_json_pretty(&job_json);
-        let job = Job::parse(&text, "job.json").unwrap();
+        let job = t2spline_io::parse_job(&text, "job.json").unwrap();
         assert_eq!(job.samples, 51);
         assert_eq!(job.alpha.map(|a| a.get()), Some(0.7));
         // The numbers read back are exactly the fitted ones.
-        let DataPoints::Planar(points) = &data.points else {
+        let FuzzyData::Planar(points) = &data.points else {
             panic!("2-D data")
         };
         let fit = fit_fuzzy(points, &FitOptions::interpolation(3), mode).unwrap();
-        let JobCurve::Planar(curve) = &job.curve else {
+        let Model::Planar(curve) = &job.model else {
             panic!("2-D job")
         };
         assert_eq!(curve.knots(), fit.knots());
@@ -125,8 +155,7 @@ fn degree_key_samples_and_alpha_are_carried_only_when_given() {
     o.remove("description");
     o.insert("degree".into(), json!(2));
     let data = parse(&v).unwrap();
-    let job = data
-        .fit(&FitOptions::interpolation(2), FuzzyFitMode::Valid)
+    let job = fit(&data, &FitOptions::interpolation(2), FuzzyFitMode::Valid)
         .unwrap()
         .job
         .unwrap();
@@ -148,9 +177,7 @@ fn mixed_heights_give_per_number_heights() {
     let mut v = profile();
     v["points"][2]["x"]["lower_height"] = json!(0.3);
     let data = parse(&v).unwrap();
-    let outcome = data
-        .fit(&FitOptions::interpolation(3), FuzzyFitMode::Valid)
-        .unwrap();
+    let outcome = fit(&data, &FitOptions::interpolation(3), FuzzyFitMode::Valid).unwrap();
     assert_eq!(outcome.summary.mixed_heights.len(), 1);
     assert_eq!(outcome.summary.mixed_heights[0].1.get(), 0.3);
     let job = outcome.job.unwrap();
@@ -158,7 +185,7 @@ fn mixed_heights_give_per_number_heights() {
         assert_eq!(p["x"]["lower_height"], json!(0.3));
         assert!(p["y"].get("lower_height").is_none());
     }
-    assert!(Job::parse(&job.to_string(), "job.json").is_ok());
+    assert!(t2spline_io::parse_job(&job.to_string(), "job.json").is_ok());
 }
 
 #[test]
@@ -174,10 +201,10 @@ fn spatial_data_and_least_squares() {
     let data = parse(&v).unwrap();
     let options =
         FitOptions::approximation(3, 6).with_parametrization(Parametrization::Centripetal);
-    let outcome = data.fit(&options, FuzzyFitMode::Valid).unwrap();
+    let outcome = fit(&data, &options, FuzzyFitMode::Valid).unwrap();
     assert_eq!(outcome.summary.control_points, 6);
-    let job = Job::parse(&outcome.job.unwrap().to_string(), "job.json").unwrap();
-    assert_eq!(job.curve.dimension(), 3);
+    let job = t2spline_io::parse_job(&outcome.job.unwrap().to_string(), "job.json").unwrap();
+    assert_eq!(job.model.dimension(), 3);
 }
 
 #[test]
@@ -216,9 +243,7 @@ fn repeated_data_points_are_refused_with_their_names() {
     let mut v = profile();
     v["points"][3] = v["points"][2].clone();
     let data = parse(&v).unwrap();
-    let e = data
-        .fit(&FitOptions::interpolation(3), FuzzyFitMode::Valid)
-        .unwrap_err();
+    let e = fit(&data, &FitOptions::interpolation(3), FuzzyFitMode::Valid).unwrap_err();
     assert_eq!(
         e.lines(),
         ["data.json: points[2] and points[3]: consecutive data points at the same crisp position get the same parameter; remove or merge the repeat, or use uniform parameters"]
@@ -256,11 +281,11 @@ proptest! {
         parametrization in prop::sample::select(Parametrization::ALL.to_vec()),
     ) {
         let degree = degree.min(points.len() - 1);
-        let data = FitData::parse(&data_json(&points, degree).to_string(), "data.json").unwrap();
+        let data = t2spline_io::parse_data(&data_json(&points, degree).to_string(), "data.json").unwrap();
         let options = FitOptions::interpolation(degree).with_parametrization(parametrization);
-        let outcome = data.fit(&options, FuzzyFitMode::Valid).unwrap();
+        let outcome = fit(&data, &options, FuzzyFitMode::Valid).unwrap();
         let text = to_json_pretty(&outcome.job.unwrap());
-        let job = Job::parse(&text, "job.json");
+        let job = t2spline_io::parse_job(&text, "job.json");
         prop_assert!(job.is_ok(), "{:?}", job.err().map(|e| e.lines()));
     }
 }

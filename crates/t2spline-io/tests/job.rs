@@ -2,8 +2,8 @@
 //! naming the file, the place and the rule, and all problems at once.
 
 use serde_json::{json, Value};
+use t2spline::job::{Job, Model, DEFAULT_SAMPLES, MAX_SAMPLES};
 use t2spline::Alpha;
-use t2spline_io::{Job, JobCurve, MAX_SAMPLES};
 
 // ---------------------------------------------------------------------------
 // Fixtures
@@ -61,13 +61,13 @@ fn at<'v>(v: &'v mut Value, pointer: &str) -> &'v mut Value {
 }
 
 fn parse(v: &Value) -> Result<Job, t2spline_io::Error> {
-    Job::parse(&v.to_string(), "job.json")
+    t2spline_io::parse_job(&v.to_string(), "job.json")
 }
 
 /// The error lines of an invalid job given as text, as printed:
 /// `job.json:LINE:COLUMN: place: rule`.
 fn located_problems(text: &str) -> Vec<String> {
-    match Job::parse(text, "job.json") {
+    match t2spline_io::parse_job(text, "job.json") {
         Ok(job) => panic!("expected problems, the job is valid: {job:?}\n{text}"),
         Err(e) => e.lines(),
     }
@@ -124,10 +124,10 @@ fn defaults_apply_and_three_dimensional_points_are_read() {
         "points": [point3(0.0, 0.0, 0.0), point3(1.0, 1.0, 1.0), point3(2.0, 0.0, 3.0)]
     });
     let job = parse(&v).unwrap();
-    assert_eq!(job.samples, t2spline_io::DEFAULT_SAMPLES);
+    assert_eq!(job.samples, DEFAULT_SAMPLES);
     assert_eq!(job.alpha, None);
     assert_eq!(job.description, None);
-    let JobCurve::Spatial(c) = &job.curve else {
+    let Model::Spatial(c) = &job.model else {
         panic!("expected 3-D: {job:?}")
     };
     assert_eq!(c.order(), 2);
@@ -140,7 +140,7 @@ fn a_number_height_overrides_the_top_level_one() {
     let mut v = base();
     *at(&mut v, "/points/1/y/lower_height") = json!(0.25);
     let job = parse(&v).unwrap();
-    let JobCurve::Planar(c) = &job.curve else {
+    let Model::Planar(c) = &job.model else {
         panic!("expected 2-D")
     };
     assert_eq!(c.points()[1].coords()[1].height().get(), 0.25);
@@ -345,7 +345,7 @@ fn a_whole_number_written_with_a_fraction_is_accepted() {
         o.insert("samples".into(), json!(7.0));
     });
     let job = parse(&v).unwrap();
-    let JobCurve::Planar(c) = &job.curve else {
+    let Model::Planar(c) = &job.model else {
         panic!("expected 2-D")
     };
     assert_eq!(c.order(), 3);
@@ -687,7 +687,7 @@ fn weights_need_one_positive_number_per_point() {
     let v = with(|o| {
         o.insert("weights".into(), json!([1, 3, 0.5]));
     });
-    let JobCurve::Planar(c) = parse(&v).unwrap().curve else {
+    let Model::Planar(c) = parse(&v).unwrap().model else {
         panic!("2-D")
     };
     assert_eq!(c.weights(), &[1.0, 3.0, 0.5]);
@@ -742,7 +742,7 @@ fn knots_follow_the_rules_of_spec_6() {
         let v = with(|o| {
             o.insert("knots".into(), json!(knots));
         });
-        let JobCurve::Planar(c) = parse(&v).unwrap().curve else {
+        let Model::Planar(c) = parse(&v).unwrap().model else {
             panic!("2-D")
         };
         assert_eq!(c.knots().as_slice(), &knots);
@@ -866,7 +866,7 @@ fn curve_rules_are_checked_even_when_other_parts_are_broken() {
 
 #[test]
 fn every_line_names_the_file() {
-    let e = Job::parse("{\"order\": 0, \"x\": 1}", "dir/my job.json").unwrap_err();
+    let e = t2spline_io::parse_job("{\"order\": 0, \"x\": 1}", "dir/my job.json").unwrap_err();
     let lines = e.lines();
     assert_eq!(lines.len(), 3, "{lines:?}");
     assert!(
@@ -881,7 +881,7 @@ fn every_line_names_the_file() {
 fn reading_a_missing_file_names_it_and_the_reason_once() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("absent.json");
-    let e = Job::read(&path).unwrap_err();
+    let e = t2spline_io::read_job(&path).unwrap_err();
     assert!(matches!(e, t2spline_io::Error::Read { .. }), "{e:?}");
     let lines = e.lines();
     assert_eq!(lines.len(), 1, "{lines:?}");

@@ -7,12 +7,13 @@ mod oracle;
 
 use proptest::prelude::*;
 use serde_json::{json, Value};
+use t2spline::job::Settings;
 use t2spline::Alpha;
 use t2spline_io::job::{
     locate, read_text, read_text_from, MAX_ARRAY, MAX_FILE_BYTES, MAX_KEYS, MAX_NESTING, MAX_ORDER,
     MAX_POINTS, MAX_PROBLEMS,
 };
-use t2spline_io::{check_finite, render_csv, write_json_pretty, Error, Job, RunResult};
+use t2spline_io::{check_finite, render_csv, write_json_pretty, Error};
 
 // ---------------------------------------------------------------------------
 // Helpers
@@ -33,7 +34,7 @@ fn at(text: &str, needle: &str, nth: usize) -> String {
 
 /// The lines of the error of an invalid job.
 fn lines(text: &str) -> Vec<String> {
-    match Job::parse(text, "job.json") {
+    match t2spline_io::parse_job(text, "job.json") {
         Ok(_) => panic!("the job is valid:\n{text}"),
         Err(e) => e.lines(),
     }
@@ -206,13 +207,13 @@ fn curve_rules_are_placed_at_their_key() {
 
 #[test]
 fn data_files_for_fit_are_placed_the_same_way() {
-    let e = t2spline_io::FitData::parse("[]", "data.json").unwrap_err();
+    let e = t2spline_io::parse_data("[]", "data.json").unwrap_err();
     assert_eq!(
         e.lines(),
         ["data.json:1:1: data: expected the data file (a JSON object), got an array"]
     );
-    let e = t2spline_io::FitData::parse("{\n \"degree\": 40,\n \"points\": []}", "data.json")
-        .unwrap_err();
+    let e =
+        t2spline_io::parse_data("{\n \"degree\": 40,\n \"points\": []}", "data.json").unwrap_err();
     assert_eq!(
         e.lines()[0],
         "data.json:2:2: degree: degree = 40 is more than the limit 31 (order 32)"
@@ -222,8 +223,8 @@ fn data_files_for_fit_are_placed_the_same_way() {
 #[test]
 fn a_byte_order_mark_is_accepted_and_not_counted() {
     let text = format!("\u{feff}{}", job(3));
-    assert!(Job::parse(&text, "bom.json").is_ok());
-    let e = Job::parse("\u{feff}{\"order\": 2, \"x\": 1}", "bom.json").unwrap_err();
+    assert!(t2spline_io::parse_job(&text, "bom.json").is_ok());
+    let e = t2spline_io::parse_job("\u{feff}{\"order\": 2, \"x\": 1}", "bom.json").unwrap_err();
     assert!(
         e.lines()[0].starts_with("bom.json:1:14: x: unknown key"),
         "{e}"
@@ -354,7 +355,7 @@ fn an_order_beyond_the_limit_is_refused_without_allocating_it() {
     // The largest order is accepted.
     let mut v = job(MAX_ORDER);
     v["order"] = json!(MAX_ORDER);
-    assert!(Job::parse(&v.to_string(), "j").is_ok());
+    assert!(t2spline_io::parse_job(&v.to_string(), "j").is_ok());
 }
 
 #[test]
@@ -482,8 +483,15 @@ fn extreme_jobs_write_only_finite_numbers() {
             v["weights"] = weights.clone();
             v["knots"] = json!([0, 0, 1e-140, 1e-140, 1, 1]);
             for alpha in [0.0, 0.5, 0.7, 1.0] {
-                let job = Job::parse(&v.to_string(), "j").unwrap_or_else(|e| panic!("{e}\n{v}"));
-                let r = RunResult::compute(&job, Alpha::try_new(alpha).unwrap(), 33);
+                let job = t2spline_io::parse_job(&v.to_string(), "j")
+                    .unwrap_or_else(|e| panic!("{e}\n{v}"));
+                let r = job
+                    .run(&Settings {
+                        alpha: Alpha::try_new(alpha).unwrap(),
+                        samples: 33,
+                        derivatives: None,
+                    })
+                    .unwrap();
                 check_finite(&r).unwrap();
                 let mut out = Vec::new();
                 write_json_pretty(&mut out, &r).unwrap();
@@ -505,9 +513,15 @@ fn extreme_jobs_write_only_finite_numbers() {
 /// The last check catches a non-finite number wherever it is, by name.
 #[test]
 fn a_non_finite_result_is_refused_by_name() {
-    let job = Job::parse(&job(3).to_string(), "j").unwrap();
-    let mut r = RunResult::compute(&job, Alpha::try_new(0.5).unwrap(), 5);
-    r.curves.type_reduced.right[3][1] = f64::INFINITY;
+    let job = t2spline_io::parse_job(&job(3).to_string(), "j").unwrap();
+    let mut r = job
+        .run(&Settings {
+            alpha: Alpha::try_new(0.5).unwrap(),
+            samples: 5,
+            derivatives: None,
+        })
+        .unwrap();
+    r.curves.type_reduced.right.coord_mut(1)[3] = f64::INFINITY;
     let e = check_finite(&r).unwrap_err();
     assert!(
         e.to_string().starts_with(
@@ -634,7 +648,7 @@ fn fuzz_regressions_and_seeds_pass() {
 #[test]
 fn the_seeds_pass() {
     for s in seeds() {
-        assert!(Job::parse(&s, "seed").is_ok(), "{s}");
+        assert!(t2spline_io::parse_job(&s, "seed").is_ok(), "{s}");
         oracle::check_job_bytes(s.as_bytes());
     }
 }

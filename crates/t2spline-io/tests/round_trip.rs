@@ -2,8 +2,9 @@
 //! through the validator, and a result through serde; every f64 exactly.
 
 use proptest::prelude::*;
+use t2spline::job::{Job, Model, Settings, MAX_SAMPLES};
 use t2spline::{strategies, Alpha, FuzzyCurve};
-use t2spline_io::{to_json_pretty, Job, JobCurve, RunResult, MAX_SAMPLES};
+use t2spline_io::to_json_pretty;
 
 /// Descriptions with quotes, escapes and non-ASCII text, and arbitrary ones.
 fn description() -> impl Strategy<Value = Option<String>> {
@@ -37,7 +38,7 @@ fn samples() -> impl Strategy<Value = usize> {
 }
 
 /// A valid job whose curve has dimension `D`.
-fn job<const D: usize>(curve: impl Fn(FuzzyCurve<D>) -> JobCurve) -> impl Strategy<Value = Job> {
+fn job<const D: usize>(model: impl Fn(FuzzyCurve<D>) -> Model) -> impl Strategy<Value = Job> {
     (
         strategies::fuzzy_curve::<D>(),
         alpha(),
@@ -48,12 +49,12 @@ fn job<const D: usize>(curve: impl Fn(FuzzyCurve<D>) -> JobCurve) -> impl Strate
             description,
             alpha,
             samples,
-            curve: curve(c),
+            model: model(c),
         })
 }
 
 fn any_job() -> impl Strategy<Value = Job> {
-    prop_oneof![job::<2>(JobCurve::Planar), job::<3>(JobCurve::Spatial)]
+    prop_oneof![job::<2>(Model::Planar), job::<3>(Model::Spatial)]
 }
 
 proptest! {
@@ -61,13 +62,13 @@ proptest! {
 
     #[test]
     fn job_json_round_trips(job in any_job()) {
-        let compact = job.to_json().to_string();
-        let back = Job::parse(&compact, "job.json");
+        let compact = t2spline_io::job_json(&job).to_string();
+        let back = t2spline_io::parse_job(&compact, "job.json");
         prop_assert!(back.is_ok(), "{:?}\n{compact}", back.err().map(|e| e.lines()));
         prop_assert_eq!(back.unwrap(), job.clone(), "{}", compact);
 
-        let pretty = to_json_pretty(&job.to_json());
-        let back = Job::parse(&pretty, "job.json");
+        let pretty = to_json_pretty(&t2spline_io::job_json(&job));
+        let back = t2spline_io::parse_job(&pretty, "job.json");
         prop_assert!(back.is_ok(), "{:?}\n{pretty}", back.err().map(|e| e.lines()));
         prop_assert_eq!(back.unwrap(), job, "{}", pretty);
     }
@@ -78,10 +79,10 @@ proptest! {
         a in 0.0..=1.0f64,
         samples in 2usize..40,
     ) {
-        let result = RunResult::compute(&job, Alpha::try_new(a).unwrap(), samples);
-        let text = to_json_pretty(&serde_json::to_value(&result).unwrap());
-        let back: RunResult = serde_json::from_str(&text).unwrap();
-        prop_assert_eq!(back, result, "{}", text);
+        let alpha = Alpha::try_new(a).unwrap();
+        let result = job.run(&Settings { alpha, samples, derivatives: None }).unwrap();
+        let (text, back) = written(&result);
+        prop_assert_eq!(back, serde_json::to_value(&result).unwrap(), "{}", text);
     }
 }
 
@@ -91,15 +92,33 @@ fn the_example_job_round_trips_and_its_result_too() {
         env!("CARGO_MANIFEST_DIR"),
         "/../../examples/paper-alg-1-1.json"
     );
-    let job = Job::read(std::path::Path::new(path)).unwrap();
-    assert_eq!(job.curve.dimension(), 2);
+    let job = t2spline_io::read_job(std::path::Path::new(path)).unwrap();
+    assert_eq!(job.model.dimension(), 2);
     assert_eq!(job.samples, 101);
     assert_eq!(job.alpha.map(Alpha::get), Some(0.8));
-    assert_eq!(Job::parse(&job.to_json().to_string(), "x").unwrap(), job);
+    assert_eq!(
+        t2spline_io::parse_job(&t2spline_io::job_json(&job).to_string(), "x").unwrap(),
+        job
+    );
 
-    let result = RunResult::compute(&job, job.alpha.unwrap(), job.samples);
-    let text = to_json_pretty(&serde_json::to_value(&result).unwrap());
-    let back: RunResult = serde_json::from_str(&text).unwrap();
-    assert_eq!(back, result);
-    assert_eq!(back.description, job.description);
+    let settings = Settings {
+        alpha: job.alpha.unwrap(),
+        samples: job.samples,
+        derivatives: None,
+    };
+    let result = job.run(&settings).unwrap();
+    let (_, back) = written(&result);
+    assert_eq!(back, serde_json::to_value(&result).unwrap());
+    assert_eq!(back["description"].as_str(), job.description.as_deref());
+}
+
+/// The result file's text, streamed as `t2spline run` writes it, and the JSON
+/// values it reads back to (exactly, as serde_json is built with
+/// `float_roundtrip`).
+fn written(result: &t2spline::job::RunOutput) -> (String, serde_json::Value) {
+    let mut text = Vec::new();
+    t2spline_io::write_json_pretty(&mut text, result).unwrap();
+    let text = String::from_utf8(text).unwrap();
+    let back = serde_json::from_str(&text).unwrap();
+    (text, back)
 }

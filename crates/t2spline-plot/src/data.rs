@@ -1,11 +1,11 @@
 //! The one place figures get their numbers from the library.
 //!
-//! Every figure and the report read a [`RunResult`] computed here, so plotting
-//! never recomputes the method; a different sampling engine only has to change
-//! [`compute`].
+//! Every figure and the report read a [`RunOutput`] computed here by the core
+//! crate's one run path ([`Job::run`]), so plotting never recomputes the
+//! method.
 
-use t2spline::{Alpha, Axis, Nt2Number};
-use t2spline_io::{Job, JobCurve, RunResult};
+use t2spline::job::{Job, Model, ModelVisitor, RunOutput, Settings};
+use t2spline::{Alpha, Axis, FuzzyCurve, Nt2Number};
 
 use crate::Error;
 
@@ -14,9 +14,16 @@ use crate::Error;
 pub const FIGURE_SAMPLES: usize = 241;
 
 /// The result of the job at `alpha`, sampled for figures.
-#[must_use]
-pub fn compute(job: &Job, alpha: Alpha) -> RunResult {
-    RunResult::compute(job, alpha, FIGURE_SAMPLES)
+///
+/// # Errors
+/// [`Error::Core`] if the run fails (it does not for a validated job without
+/// derivatives).
+pub fn compute(job: &Job, alpha: Alpha) -> Result<RunOutput, Error> {
+    Ok(job.run(&Settings {
+        alpha,
+        samples: FIGURE_SAMPLES,
+        derivatives: None,
+    })?)
 }
 
 /// The crisp and the defuzzified curve at parameter `t` (where the distance
@@ -24,70 +31,33 @@ pub fn compute(job: &Job, alpha: Alpha) -> RunResult {
 ///
 /// # Errors
 /// [`Error::Core`] if `t` is outside the domain (it never is for `max_at`).
-pub fn curves_at(job: &Job, alpha: Alpha, t: f64) -> Result<(Vec<f64>, Vec<f64>), Error> {
-    fn at<const D: usize>(
-        c: &t2spline::FuzzyCurve<D>,
-        alpha: Alpha,
-        t: f64,
-    ) -> Result<(Vec<f64>, Vec<f64>), Error> {
-        let s = c.solve(alpha);
-        Ok((
-            s.crisp_curve().eval(t)?.to_vec(),
-            s.defuzzified_curve().eval(t)?.to_vec(),
-        ))
+pub fn curves_at(model: &Model, alpha: Alpha, t: f64) -> Result<(Vec<f64>, Vec<f64>), Error> {
+    struct At(Alpha, f64);
+    impl ModelVisitor for At {
+        type Output = Result<(Vec<f64>, Vec<f64>), Error>;
+        fn curve<const D: usize>(self, c: &FuzzyCurve<D>) -> Self::Output {
+            let s = c.solve(self.0);
+            Ok((
+                s.crisp_curve().eval(self.1)?.to_vec(),
+                s.defuzzified_curve().eval(self.1)?.to_vec(),
+            ))
+        }
     }
-    match &job.curve {
-        JobCurve::Planar(c) => at(c, alpha, t),
-        JobCurve::Spatial(c) => at(c, alpha, t),
-    }
+    model.visit(At(alpha, t))
 }
 
 /// The fuzzy number of one coordinate of one control point.
 ///
 /// # Errors
-/// [`Error::Option`] if the point or the axis does not exist in the job.
-pub fn number(job: &Job, point: usize, axis: Axis) -> Result<Nt2Number, Error> {
-    fn get<const D: usize>(
-        c: &t2spline::FuzzyCurve<D>,
-        point: usize,
-        axis: Axis,
-    ) -> Result<Nt2Number, Error> {
-        let n = c.points().len();
-        let p = c.points().get(point).ok_or_else(|| Error::Option {
-            option: "--point",
-            message: format!(
-                "point {point} does not exist: the job has {n} points, 0 to {}",
-                n - 1
-            ),
-        })?;
-        if axis.index() >= D {
-            return Err(Error::Option {
-                option: "--axis",
-                message: format!("coordinate {axis} does not exist in a {D}-D job"),
-            });
-        }
-        Ok(*p.coord(axis))
+/// [`Error::NoSuchPoint`] or [`Error::NoSuchAxis`] if the point or the axis
+/// does not exist in the model.
+pub fn number(model: &Model, point: usize, axis: Axis) -> Result<Nt2Number, Error> {
+    let count = model.control_point_count();
+    if point >= count {
+        return Err(Error::NoSuchPoint { point, count });
     }
-    match &job.curve {
-        JobCurve::Planar(c) => get(c, point, axis),
-        JobCurve::Spatial(c) => get(c, point, axis),
-    }
-}
-
-/// The distinct lower heights of the job's numbers, ascending.
-#[must_use]
-pub fn heights(job: &Job) -> Vec<f64> {
-    fn all<const D: usize>(c: &t2spline::FuzzyCurve<D>) -> Vec<f64> {
-        c.points()
-            .iter()
-            .flat_map(|p| p.coords().iter().map(|x| x.height().get()))
-            .collect()
-    }
-    let mut h = match &job.curve {
-        JobCurve::Planar(c) => all(c),
-        JobCurve::Spatial(c) => all(c),
-    };
-    h.sort_by(f64::total_cmp);
-    h.dedup();
-    h
+    let dimension = model.dimension();
+    model
+        .number(point, axis)
+        .ok_or(Error::NoSuchAxis { axis, dimension })
 }

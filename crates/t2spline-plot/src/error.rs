@@ -4,13 +4,21 @@
 #[derive(Debug, thiserror::Error)]
 #[non_exhaustive]
 pub enum Error {
-    /// A plotting option breaks a rule (a point or axis the job lacks).
-    #[error("{option}: {message}")]
-    Option {
-        /// The option, e.g. `--point`.
-        option: &'static str,
-        /// The rule.
-        message: String,
+    /// The number asked for belongs to a control point the job lacks.
+    #[error("point {point} does not exist: the job has {count} points, 0 to {}", count.saturating_sub(1))]
+    NoSuchPoint {
+        /// The point asked for.
+        point: usize,
+        /// The job's number of control points.
+        count: usize,
+    },
+    /// The number asked for belongs to a coordinate the job lacks.
+    #[error("coordinate {axis} does not exist in a {dimension}-D job")]
+    NoSuchAxis {
+        /// The coordinate asked for.
+        axis: t2spline::Axis,
+        /// The job's dimension.
+        dimension: usize,
     },
     /// Reading the job or writing a file failed.
     #[error(transparent)]

@@ -4,8 +4,9 @@
 //! 4.1–4.4 and 5.1–5.4, and an alpha sweep) as SVG and PNG, and a
 //! self-contained HTML report with an alpha slider.
 //!
-//! - [`figures`]: one builder per figure, from a [`t2spline_io::RunResult`]
-//!   computed in [`data`] (the only place numbers come from).
+//! - [`figures`]: one builder per figure, from a
+//!   [`RunOutput`](t2spline::job::RunOutput) computed in [`data`] by the core's
+//!   one run path (the only place numbers come from).
 //! - [`scene`] → [`layout`] → [`svg`]: figures in data coordinates, placed on a
 //!   page (equal aspect for curves, legends where they cover nothing, labels
 //!   that avoid each other), written as deterministic SVG text.
@@ -15,7 +16,7 @@
 //!
 //! ```
 //! use t2spline_plot::{all_figures, NumberChoice};
-//! let job = t2spline_io::Job::parse(r#"{
+//! let job = t2spline_io::parse_job(r#"{
 //!   "order": 2, "alpha": 0.5, "lower_height": 0.6,
 //!   "points": [
 //!     {"x": {"crisp": 0, "upper": [-1, 1], "primary": [-0.5, 0.5], "lower": [-0.2, 0.2]},

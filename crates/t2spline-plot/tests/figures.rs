@@ -7,7 +7,6 @@
 use std::path::{Path, PathBuf};
 
 use t2spline::{Alpha, Axis};
-use t2spline_io::Job;
 use t2spline_plot::geometry::Rect;
 use t2spline_plot::scene::{Figure, Mark};
 use t2spline_plot::{all_figures, layout, svg, NumberChoice, FIGURE_NAMES};
@@ -47,7 +46,7 @@ fn cases() -> Vec<(&'static str, &'static str, f64, NumberChoice)> {
 }
 
 fn figures(job: &str, alpha: f64, choice: NumberChoice) -> Vec<Figure> {
-    let job = Job::read(&root().join(job)).unwrap();
+    let job = t2spline_io::read_job(&root().join(job)).unwrap();
     all_figures(&job, Alpha::try_new(alpha).unwrap(), choice).unwrap()
 }
 

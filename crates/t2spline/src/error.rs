@@ -75,6 +75,36 @@ impl fmt::Display for Num {
     }
 }
 
+/// A setting of a run, to name it in messages: each front end spells it its
+/// own way (`--samples` on the command line, `samples=` in Python).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Setting {
+    /// The level alpha.
+    Alpha,
+    /// The number of samples.
+    Samples,
+    /// The highest derivative order.
+    Derivatives,
+    /// The parameters of a benchmark (`crate::bench`).
+    Points,
+    /// The threads of a benchmark.
+    Threads,
+}
+
+impl Setting {
+    /// The name in job files and in the Python API.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Setting::Alpha => "alpha",
+            Setting::Samples => "samples",
+            Setting::Derivatives => "derivatives",
+            Setting::Points => "points",
+            Setting::Threads => "threads",
+        }
+    }
+}
+
 /// Everything that can be wrong with the input of the core crate.
 ///
 /// The library never panics on user input; each validated constructor
@@ -597,6 +627,76 @@ pub enum Error {
         expected: usize,
         /// The length given.
         found: usize,
+    },
+
+    /// A run needs the level alpha, and neither the job nor the front end
+    /// gave it.
+    ///
+    /// ```
+    /// # use t2spline::job::{Job, Model, Overrides};
+    /// # use t2spline::{Error, FuzzyCurve, Nt2Number, Nt2Point};
+    /// # let n = |c: f64| Nt2Number::try_new(c, [c, c], [c, c], [c, c], 0.5);
+    /// # let points = vec![Nt2Point::new([n(0.0)?, n(0.0)?]), Nt2Point::new([n(1.0)?, n(1.0)?])];
+    /// let job = Job::new(Model::Planar(FuzzyCurve::try_new(1, points, vec![1.0, 1.0], None)?));
+    /// let e = job.settings(&Overrides::default()).unwrap_err();
+    /// assert_eq!(e, Error::MissingAlpha);
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("alpha: missing: give it in the job or as a setting of the run")]
+    MissingAlpha,
+
+    /// A setting of a run (alpha, samples, derivative order) breaks its rule;
+    /// front ends name the setting their own way (`--samples`, `samples=`).
+    ///
+    /// ```
+    /// # use t2spline::job::{Job, Model, Overrides, Setting};
+    /// # use t2spline::{Error, FuzzyCurve, Nt2Number, Nt2Point};
+    /// # let n = |c: f64| Nt2Number::try_new(c, [c, c], [c, c], [c, c], 0.5);
+    /// # let points = vec![Nt2Point::new([n(0.0)?, n(0.0)?]), Nt2Point::new([n(1.0)?, n(1.0)?])];
+    /// let job = Job::new(Model::Planar(FuzzyCurve::try_new(1, points, vec![1.0, 1.0], None)?));
+    /// let e = job.settings(&Overrides { alpha: Some(0.5), samples: Some(1), ..Overrides::default() }).unwrap_err();
+    /// assert!(matches!(e, Error::Setting { setting: Setting::Samples, .. }));
+    /// assert_eq!(e.to_string(), "samples = 1: at least 2 are needed (both ends of the domain)");
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("{message}")]
+    Setting {
+        /// Which setting.
+        setting: Setting,
+        /// The value and the rule it breaks.
+        message: String,
+    },
+
+    /// A derivative asked of a run is beyond the range of a float: a
+    /// derivative grows like `(coordinate / knot span)^order`, so narrow knot
+    /// spans or large coordinates can take it there.
+    ///
+    /// ```
+    /// # use t2spline::job::{Job, Model, Overrides};
+    /// # use t2spline::{Error, FuzzyCurve, Nt2Number, Nt2Point};
+    /// let n = |c: f64| Nt2Number::try_new(c, [c, c], [c, c], [c, c], 0.5);
+    /// // A jump of 1e150 over a knot span of 1e-150: the first derivative is 1e300,
+    /// // the second would be about 1e450.
+    /// let points = vec![Nt2Point::new([n(0.0)?, n(0.0)?]), Nt2Point::new([n(1e150)?, n(0.0)?]), Nt2Point::new([n(0.0)?, n(1.0)?])];
+    /// let curve = FuzzyCurve::try_new(2, points, vec![1.0; 3], Some(vec![0.0, 0.0, 0.0, 1e-150, 1e-150, 1e-150]))?;
+    /// let job = Job::new(Model::Planar(curve));
+    /// let s = job.settings(&Overrides { alpha: Some(0.5), samples: Some(2), derivatives: Some(2) })?;
+    /// let e = job.run(&s).unwrap_err();
+    /// assert!(matches!(e, Error::DerivativeOverflow { derivative: 2, .. }), "{e}");
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("curves.derivatives.{curve}[{}][{sample}][{axis}] = {value} is beyond the range of a 64-bit float (about 1.8e308): the knot spans are too narrow or the coordinates too large for derivatives of order {derivative}", derivative - 1)]
+    DerivativeOverflow {
+        /// `"crisp"` or `"defuzzified"`.
+        curve: &'static str,
+        /// The order of the derivative (1 or more).
+        derivative: usize,
+        /// The index of the sample parameter.
+        sample: usize,
+        /// The coordinate (0 is x).
+        axis: usize,
+        /// The value computed.
+        value: f64,
     },
 }
 

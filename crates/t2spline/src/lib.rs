@@ -65,10 +65,12 @@
 //!   `serde` (Serialize for the data types), `proptest` (generators in
 //!   `strategies`).
 
+pub mod bench;
 mod error;
 pub mod fit;
 pub mod fuzzy;
 mod golden_section;
+pub mod job;
 mod limits;
 pub mod nurbs;
 pub mod pipeline;

@@ -2,64 +2,40 @@
 
 use std::io::Write;
 
-use t2spline_io::bench::{default_curve, run_case, BenchCase};
-use t2spline_io::{Error, JobCurve};
+use t2spline::bench::{run_case, BenchCase};
+use t2spline::job::Model;
+use t2spline::sampling::benchmark_curve;
 
+use super::settings::about_option;
 use crate::cli::BenchArgs;
 use crate::output::read_job;
 
-/// A benchmark with every input validated.
-struct Plan {
-    cases: Vec<BenchCase>,
-    points: usize,
-    threads: usize,
-    curve: JobCurve,
-    reuse: bool,
-}
-
-impl Plan {
-    fn new(args: &BenchArgs) -> anyhow::Result<Plan> {
-        let cases = match args.case.as_str() {
-            "all" => BenchCase::ALL.to_vec(),
-            name => BenchCase::ALL
-                .into_iter()
-                .filter(|c| c.name() == name)
-                .collect(),
-        };
-        let points = usize::try_from(args.points)
-            .ok()
-            .filter(|&n| n >= 2)
-            .ok_or_else(|| option("--points", format!("{} must be at least 2", args.points)))?;
-        let threads = match args.threads {
-            Some(t) => usize::try_from(t)
-                .ok()
-                .filter(|&t| (1..=1024).contains(&t))
-                .ok_or_else(|| option("--threads", format!("{t} must be in 1 ..= 1024")))?,
-            None => std::thread::available_parallelism().map_or(1, |n| n.get()),
-        };
-        let curve = match &args.curve {
-            Some(path) => read_job(path)?.curve,
-            None => JobCurve::Planar(default_curve()),
-        };
-        Ok(Plan {
-            cases,
-            points,
-            threads,
-            curve,
-            reuse: args.reuse,
-        })
-    }
-}
-
-fn option(option: &'static str, message: String) -> Error {
-    Error::Option { option, message }
-}
-
 pub fn bench(args: &BenchArgs) -> anyhow::Result<()> {
-    let plan = Plan::new(args)?;
+    let cases = match args.case.as_str() {
+        "all" => BenchCase::ALL.to_vec(),
+        name => BenchCase::ALL
+            .into_iter()
+            .filter(|c| c.name() == name)
+            .collect(),
+    };
+    let threads = match args.threads {
+        // Out of range values are refused by the core with the rule.
+        Some(t) => usize::try_from(t).unwrap_or(usize::MAX),
+        None => std::thread::available_parallelism().map_or(1, |n| n.get()),
+    };
+    let model = match &args.curve {
+        Some(path) => read_job(path)?.model,
+        None => Model::Planar(benchmark_curve()),
+    };
+    // Every case's points are checked before the first is timed.
+    for &case in &cases {
+        t2spline::bench::check_points(args.points, case, model.dimension())
+            .map_err(about_option)?;
+    }
     let mut out = std::io::stdout().lock();
-    for case in plan.cases {
-        let result = run_case(&plan.curve, case, plan.points, plan.threads, plan.reuse)?;
+    for case in cases {
+        let result =
+            run_case(&model, case, args.points, threads, args.reuse).map_err(about_option)?;
         // One line per case as soon as it is measured.
         writeln!(out, "{result}")?;
         out.flush()?;

@@ -4,10 +4,11 @@
 use std::path::PathBuf;
 
 use anyhow::anyhow;
-use t2spline::fit::{Deviation, FitOptions, FuzzyFitMode, Parametrization};
+use t2spline::fit::{Deviation, FitOptions, FitSummary, FuzzyFitMode, Parametrization};
 use t2spline::Layer;
-use t2spline_io::{to_json_pretty, Error, FitData, FitSummary, Job};
+use t2spline_io::{parse_job, to_json_pretty, FitData};
 
+use super::settings::OptionError;
 use crate::cli::FitArgs;
 use crate::output::{job_name, read_data, Outputs};
 
@@ -36,7 +37,7 @@ impl Plan {
         if let Some(m) = args.control_points {
             let (min, max) = (data.degree + 1, data.len());
             if m < min || m > max {
-                return Err(Error::Option {
+                return Err(OptionError {
                     option: "--control-points",
                     message: format!(
                         "{m} is outside [{min}, {max}]: at least degree + 1, at most the {max} data points of {}",
@@ -62,14 +63,18 @@ impl Plan {
 
 pub fn fit(args: FitArgs) -> anyhow::Result<()> {
     let plan = Plan::new(args)?;
-    let outcome = plan.data.fit(&plan.options, plan.mode)?;
+    let outcome = plan
+        .data
+        .points
+        .fit(&plan.options, plan.mode)
+        .map_err(|e| plan.data.fit_error(&e))?;
     if !plan.quiet {
         for line in report(&plan, &outcome.summary) {
             eprintln!("t2spline fit: {line}");
         }
     }
-    let job = match outcome.job {
-        Ok(job) => job,
+    let job = match outcome.model {
+        Ok(model) => plan.data.job_json(&model),
         Err(violations) => {
             return Err(plan
                 .data
@@ -86,7 +91,7 @@ pub fn fit(args: FitArgs) -> anyhow::Result<()> {
         .output
         .as_deref()
         .map_or("<stdout>".to_owned(), job_name);
-    Job::parse(&text, &name)
+    parse_job(&text, &name)
         .map_err(|e| anyhow!("internal error: the fitted job does not validate:\n{e}"))?;
     let mut out = Outputs::default();
     out.to(plan.output.as_deref(), text.into_bytes());

@@ -1,12 +1,12 @@
 //! One module per subcommand: validate the raw arguments into a plan, then call
 //! the libraries.
 
-mod alpha;
 mod bench;
 mod fit;
 mod plot;
 mod report;
 mod run;
+pub mod settings;
 mod validate;
 
 use crate::cli::{Cli, Command};

@@ -1,8 +1,9 @@
 //! `t2spline report JOB.json -o DIR [--alpha A]`: writes `DIR/report.html`.
 
+use t2spline::job::Overrides;
 use t2spline::Alpha;
 
-use super::alpha;
+use super::settings::about_option;
 use crate::cli::ReportArgs;
 use crate::output::{read_job_text, Outputs};
 
@@ -10,11 +11,15 @@ use crate::output::{read_job_text, Outputs};
 const DEFAULT_START: f64 = 0.5;
 
 pub fn report(args: &ReportArgs) -> anyhow::Result<()> {
-    let option = alpha::parse_option(args.alpha)?;
     let (job, text) = read_job_text(&args.job)?;
-    let start = match option.or(job.alpha) {
-        Some(a) => a,
-        None => Alpha::try_new(DEFAULT_START)?,
+    let overrides = Overrides {
+        alpha: args.alpha,
+        ..Overrides::default()
+    };
+    let start = match job.settings(&overrides) {
+        Ok(s) => s.alpha,
+        Err(t2spline::Error::MissingAlpha) => Alpha::try_new(DEFAULT_START)?,
+        Err(e) => return Err(about_option(e)),
     };
     let html = t2spline_plot::report::render(&job, &text, start)?;
     let mut out = Outputs::default();

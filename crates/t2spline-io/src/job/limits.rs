@@ -10,7 +10,8 @@
 //!
 //! Numbers themselves are limited by the core crate: coordinates and knots to
 //! `[-1e150, 1e150]` ([`t2spline::MAX_MAGNITUDE`]) and weights to
-//! `[1e-150, 1e150]`, so that every result is a finite number.
+//! `[1e-150, 1e150]`, so that every result is a finite number; the number of
+//! samples by [`t2spline::job::MAX_SAMPLES`].
 
 /// The largest job file, in bytes (64 MiB), also for standard input. A
 /// 100 000-point 3-D job written one number per line is about 40 MB.
@@ -23,14 +24,6 @@ pub const MAX_POINTS: usize = 100_000;
 /// operations per parameter, so a very high order makes every sample slow; it
 /// is also far beyond what B-spline modelling uses (orders 2–6, rarely above 10).
 pub const MAX_ORDER: usize = 32;
-
-/// The default number of samples (SPEC §8).
-pub const DEFAULT_SAMPLES: usize = 101;
-
-/// The largest number of samples a job may ask for. A result holds up to 16
-/// curves × 3 coordinates per sample, so at this limit it has 48 million
-/// numbers: about 1 GB of JSON.
-pub const MAX_SAMPLES: usize = 1_000_000;
 
 /// How deeply arrays and objects may nest: `serde_json`'s own recursion limit
 /// (it refuses the 128th level), which stops a hostile file before it can
@@ -57,41 +50,6 @@ pub const MAX_VALUES: usize = 4_000_000;
 /// The most problems a job's error lists; the rest are counted in one last
 /// line. A 64 MiB file of `0,` could otherwise make eight million messages.
 pub const MAX_PROBLEMS: usize = 1000;
-
-/// Checks a number of samples against SPEC §8 (at least 2) and [`MAX_SAMPLES`].
-///
-/// # Errors
-/// The rule that `n` breaks, as text.
-///
-/// # Examples
-/// ```
-/// # use t2spline_io::job::check_samples;
-/// assert_eq!(check_samples(101), Ok(101));
-/// assert_eq!(
-///     check_samples(1),
-///     Err("samples = 1: at least 2 are needed (both ends of the domain)".to_owned())
-/// );
-/// assert!(check_samples(u64::MAX).is_err());
-/// ```
-pub fn check_samples(n: u64) -> Result<usize, String> {
-    check_samples_written(n, &n.to_string())
-}
-
-/// [`check_samples`] naming the value as the file wrote it (`1e300`, not the
-/// `u64` it saturates to).
-pub(crate) fn check_samples_written(n: u64, written: &str) -> Result<usize, String> {
-    if n < 2 {
-        Err(format!(
-            "samples = {written}: at least 2 are needed (both ends of the domain)"
-        ))
-    } else if n > MAX_SAMPLES as u64 {
-        Err(format!(
-            "samples = {written} is more than the limit {MAX_SAMPLES}"
-        ))
-    } else {
-        usize::try_from(n).map_err(|_| format!("samples = {written} does not fit this machine"))
-    }
-}
 
 /// Checks an order `k` against [`MAX_ORDER`]; `key` is `"order"` or `"degree"`,
 /// `given` its value and `written` the value as the file wrote it.

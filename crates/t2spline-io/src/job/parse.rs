@@ -9,15 +9,15 @@
 use std::collections::HashSet;
 
 use serde_json::{Map, Value};
+use t2spline::fit::FuzzyData;
+use t2spline::job::{check_samples, Job, Model, DEFAULT_SAMPLES};
 use t2spline::{Alpha, Axis, FuzzyCurve, Height, KnotVector, Nt2Number, Nt2Point, Place};
 
 use super::limits::{
-    check_order, check_samples_written, MAX_ARRAY, MAX_KEYS, MAX_NESTING, MAX_POINTS, MAX_PROBLEMS,
-    MAX_VALUES,
+    check_order, MAX_ARRAY, MAX_KEYS, MAX_NESTING, MAX_POINTS, MAX_PROBLEMS, MAX_VALUES,
 };
 use super::position::{self, child, element, Oversized};
-use super::{Job, JobCurve, DEFAULT_SAMPLES};
-use crate::fit_data::{DataPoints, FitData};
+use crate::fit_data::FitData;
 use crate::Problem;
 
 const TOP_KEYS: &[&str] = &[
@@ -402,7 +402,7 @@ impl Walker {
         let samples = match o.get("samples") {
             None => Some(None),
             Some(v) => self.whole(v, "samples").and_then(|n| {
-                check_samples_written(n, &written(v))
+                check_samples(n, &written(v))
                     .map_err(|rule| self.report("samples", rule))
                     .ok()
                     .map(Some)
@@ -453,20 +453,18 @@ impl Walker {
         }
         let (degree, points, samples, weights) =
             (header.degree?, header.points?, header.samples?, weights?);
-        let curve = match points {
-            Points::Planar(p) => {
-                FuzzyCurve::try_new(degree, p, weights, knots).map(JobCurve::Planar)
-            }
+        let model = match points {
+            Points::Planar(p) => FuzzyCurve::try_new(degree, p, weights, knots).map(Model::Planar),
             Points::Spatial(p) => {
-                FuzzyCurve::try_new(degree, p, weights, knots).map(JobCurve::Spatial)
+                FuzzyCurve::try_new(degree, p, weights, knots).map(Model::Spatial)
             }
         };
-        match curve {
-            Ok(curve) => Some(Job {
+        match model {
+            Ok(model) => Some(Job {
                 description: header.description,
                 alpha: header.alpha,
                 samples: samples.unwrap_or(DEFAULT_SAMPLES),
-                curve,
+                model,
             }),
             Err(e) => {
                 // Every rule FuzzyCurve checks was checked above; keep the
@@ -516,8 +514,8 @@ impl Walker {
             lower_height: header.lower_height,
             samples: header.samples?,
             points: match header.points? {
-                Points::Planar(p) => DataPoints::Planar(p),
-                Points::Spatial(p) => DataPoints::Spatial(p),
+                Points::Planar(p) => FuzzyData::Planar(p),
+                Points::Spatial(p) => FuzzyData::Spatial(p),
             },
         })
     }

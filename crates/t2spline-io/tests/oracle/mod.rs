@@ -19,9 +19,10 @@
 
 #![allow(dead_code)]
 
+use t2spline::job::{Job, Settings};
 use t2spline::{Alpha, Layer};
 use t2spline_io::job::read_text_from;
-use t2spline_io::{check_finite, render_csv, write_json_pretty, Error, FitData, Job, RunResult};
+use t2spline_io::{check_finite, render_csv, write_json_pretty, Error};
 
 /// The most samples a checked run computes (the job's own count can be up to
 /// a million; the checks do not need that many).
@@ -33,12 +34,12 @@ pub fn check_job_bytes(data: &[u8]) {
         Ok(text) => text,
         Err(e) => return check_error(&e, None),
     };
-    match Job::parse(&text, "fuzz.json") {
+    match t2spline_io::parse_job(&text, "fuzz.json") {
         Err(e) => check_error(&e, Some(&text)),
         Ok(job) => check_job(&job),
     }
     // The same text as a data file for `t2spline fit` (the same validator).
-    if let Err(e) = FitData::parse(&text, "fuzz.json") {
+    if let Err(e) = t2spline_io::parse_data(&text, "fuzz.json") {
         check_error(&e, Some(&text));
     }
 }
@@ -98,8 +99,8 @@ fn without_quoted_keys(message: &str) -> String {
 
 /// Checks a valid job: canonical round trip, and a run.
 pub fn check_job(job: &Job) {
-    let canonical = job.to_json().to_string();
-    match Job::parse(&canonical, "canonical.json") {
+    let canonical = t2spline_io::job_json(job).to_string();
+    match t2spline_io::parse_job(&canonical, "canonical.json") {
         Ok(again) => assert_eq!(&again, job, "{canonical}"),
         Err(e) => panic!("the canonical form does not parse: {e}\n{canonical}"),
     }
@@ -107,7 +108,13 @@ pub fn check_job(job: &Job) {
         .alpha
         .unwrap_or_else(|| Alpha::try_new(0.5).expect("0.5 is a level"));
     let samples = job.samples.min(SAMPLES);
-    let result = RunResult::compute(job, alpha, samples);
+    let result = job
+        .run(&Settings {
+            alpha,
+            samples,
+            derivatives: None,
+        })
+        .unwrap();
     if let Err(e) = check_finite(&result) {
         panic!("{e}");
     }
@@ -117,10 +124,7 @@ pub fn check_job(job: &Job) {
     assert_eq!(c.params.last(), Some(&result.domain[1]));
     for i in 0..samples {
         for k in 0..result.dimension {
-            let layer = |l: Layer| match c.layers.get(l) {
-                Some(v) => v[i][k],
-                None => c.crisp[i][k],
-            };
+            let layer = |l: Layer| c.layer(l).coord(k)[i];
             let v: Vec<f64> = Layer::ALL.iter().map(|&l| layer(l)).collect();
             assert!(v.windows(2).all(|w| w[0] <= w[1]), "sample {i}: {v:?}");
         }

@@ -1,5 +1,5 @@
 //! The figures of the method: one builder per figure, each reading a
-//! [`RunResult`] (and, for the fuzzy number, the library's number) and
+//! [`RunOutput`] (and, for the fuzzy number, the library's number) and
 //! returning a [`crate::scene::Figure`] in data coordinates.
 //!
 //! | file stem | shows | paper |
@@ -16,9 +16,9 @@ mod stages;
 pub mod style;
 mod sweep;
 
+use t2spline::job::Points;
+use t2spline::job::{Job, RunOutput};
 use t2spline::{Alpha, Axis};
-use t2spline_io::result::Point;
-use t2spline_io::{Job, RunResult};
 
 pub use number::number_figure;
 pub use stages::{stage1_figure, stage2_figure, stage3_figure, stage4_figure};
@@ -59,21 +59,22 @@ impl Default for NumberChoice {
 /// Every figure of the job at `alpha`, in the order of [`FIGURE_NAMES`].
 ///
 /// # Errors
-/// [`Error::Option`] if `choice` names a point or coordinate the job lacks.
+/// [`Error::NoSuchPoint`] or [`Error::NoSuchAxis`] if `choice` names a
+/// point or coordinate the job lacks.
 pub fn all_figures(
     job: &Job,
     alpha: Alpha,
     choice: NumberChoice,
 ) -> Result<Vec<crate::scene::Figure>, Error> {
     let number = number_figure(job, alpha, choice)?;
-    let result = data::compute(job, alpha);
+    let result = data::compute(job, alpha)?;
     Ok(vec![
         number,
         stage1_figure(&result),
-        stage2_figure(&result, &data::heights(job)),
-        stage3_figure(&result, &data::heights(job)),
+        stage2_figure(&result, &job.model.heights()),
+        stage3_figure(&result, &job.model.heights()),
         stage4_figure(job, &result, true)?,
-        sweep_figure(job),
+        sweep_figure(job)?,
     ])
 }
 
@@ -103,12 +104,17 @@ fn curve_panels(dimension: usize) -> Vec<(Panel, (usize, usize))> {
 }
 
 /// Points projected to the coordinates `(i, j)`.
-fn project(points: &[Point], (i, j): (usize, usize)) -> Vec<Xy> {
-    points.iter().map(|p| [p[i], p[j]]).collect()
+fn project(points: &Points, (i, j): (usize, usize)) -> Vec<Xy> {
+    points
+        .coord(i)
+        .iter()
+        .zip(points.coord(j))
+        .map(|(&x, &y)| [x, y])
+        .collect()
 }
 
 /// The region between two curves: one forwards, the other backwards.
-fn band(a: &[Point], b: &[Point], ij: (usize, usize)) -> Vec<Xy> {
+fn band(a: &Points, b: &Points, ij: (usize, usize)) -> Vec<Xy> {
     let mut poly = project(a, ij);
     poly.extend(project(b, ij).into_iter().rev());
     poly
@@ -126,7 +132,7 @@ fn point_name(i: usize) -> String {
 }
 
 /// "α = 0.8 > h = 0.6" and what it means, for subtitles.
-fn alpha_phrase(result: &RunResult, heights: &[f64]) -> String {
+fn alpha_phrase(result: &RunOutput, heights: &[f64]) -> String {
     let a = short(result.alpha, 4);
     match heights {
         [h] if result.alpha <= *h => format!(

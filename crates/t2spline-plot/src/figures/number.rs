@@ -2,8 +2,8 @@
 //! functions, the footprint of uncertainty, the height h, the cut at alpha and
 //! the type-reduced triangle with its centroid.
 
+use t2spline::job::Job;
 use t2spline::{Alpha, Axis};
-use t2spline_io::Job;
 
 use super::style::{layer_marker, layer_stroke, upper_band};
 use super::NumberChoice;
@@ -16,9 +16,10 @@ use t2spline::Layer;
 /// The `number` figure for one coordinate of one control point at `alpha`.
 ///
 /// # Errors
-/// [`Error::Option`] if the job has no such point or coordinate.
+/// [`Error::NoSuchPoint`] or [`Error::NoSuchAxis`] if the job has no such
+/// point or coordinate.
 pub fn number_figure(job: &Job, alpha: Alpha, choice: NumberChoice) -> Result<Figure, Error> {
-    let x = data::number(job, choice.point, choice.axis)?;
+    let x = data::number(&job.model, choice.point, choice.axis)?;
     let cut = x.alpha_cut(alpha);
     let tfn = cut.type_reduce();
     let d = tfn.defuzzify();

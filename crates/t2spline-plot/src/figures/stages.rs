@@ -1,8 +1,8 @@
 //! The four stages of Algorithm 1.1 as figures (paper Figs. 5.1–5.4).
 
+use t2spline::job::Points;
+use t2spline::job::{Job, RunOutput};
 use t2spline::Layer;
-use t2spline_io::result::Point;
-use t2spline_io::{Job, RunResult};
 
 use super::style::{
     crisp_marker, crisp_stroke, layer_marker, layer_stroke, lower_band, polygon_stroke,
@@ -38,12 +38,7 @@ fn figure(
     }
 }
 
-fn name_labels(
-    p: &mut Panel,
-    points: &[Point],
-    ij: (usize, usize),
-    text: impl Fn(usize) -> String,
-) {
+fn name_labels(p: &mut Panel, points: &Points, ij: (usize, usize), text: impl Fn(usize) -> String) {
     for (k, xy) in project(points, ij).into_iter().enumerate() {
         p.push(
             format!("name-{k}"),
@@ -60,7 +55,7 @@ fn name_labels(
 /// control polygon, the seven layer curves, and the bands between the upper
 /// layers (light) and between the lower layers (darker).
 #[must_use]
-pub fn stage1_figure(r: &RunResult) -> Figure {
+pub fn stage1_figure(r: &RunOutput) -> Figure {
     let (c, cp) = (&r.curves, &r.control_points);
     let layer_curve = |l: Layer| c.layers.get(l).unwrap_or(&c.crisp);
     let layer_points = |l: Layer| cp.layers.get(l).unwrap_or(&cp.crisp);
@@ -94,12 +89,17 @@ pub fn stage1_figure(r: &RunResult) -> Figure {
                     .zip([(BLUE, 1.2), (GREEN, 2.6), (VERMILLION, 4.4)])
             {
                 let (lo, hi, mid) = (layer_points(*left), layer_points(*right), &cp.crisp);
-                let segments = (0..mid.len())
+                let (i, j) = ij;
+                let (lo, hi, mid) = (
+                    [lo.coord(i), lo.coord(j)],
+                    [hi.coord(i), hi.coord(j)],
+                    [mid.coord(i), mid.coord(j)],
+                );
+                let segments = (0..mid[0].len())
                     .flat_map(|k| {
-                        let (i, j) = ij;
                         [
-                            [[lo[k][i], mid[k][j]], [hi[k][i], mid[k][j]]],
-                            [[mid[k][i], lo[k][j]], [mid[k][i], hi[k][j]]],
+                            [[lo[0][k], mid[1][k]], [hi[0][k], mid[1][k]]],
+                            [[mid[0][k], lo[1][k]], [mid[0][k], hi[1][k]]],
                         ]
                     })
                     .collect();
@@ -167,9 +167,9 @@ pub fn stage1_figure(r: &RunResult) -> Figure {
 /// Stage 2 (paper Fig. 5.2): the alpha-cut control points and their curves.
 /// Lower layers are drawn only where every number has a lower cut.
 #[must_use]
-pub fn stage2_figure(r: &RunResult, heights: &[f64]) -> Figure {
+pub fn stage2_figure(r: &RunOutput, heights: &[f64]) -> Figure {
     let (c, cp) = (&r.curves, &r.control_points);
-    let curve = |l: Layer| -> Option<&Vec<Point>> {
+    let curve = |l: Layer| -> Option<&Points> {
         match c.alpha_cut.get(l) {
             None => Some(&c.crisp),
             Some(v) => v.as_ref(),
@@ -208,15 +208,19 @@ pub fn stage2_figure(r: &RunResult, heights: &[f64]) -> Figure {
                 p.push(format!("curve-{}", l.name()), mark);
             }
             for l in Layer::ALL.into_iter().filter(|&l| l != Layer::Crisp) {
-                let cut = cp.alpha_cut.get(l).map(Vec::as_slice).unwrap_or_default();
                 // A cut point exists when every coordinate has its lower cut.
-                let pts: Vec<_> = cut
-                    .iter()
-                    .filter_map(|coords| {
-                        let (i, j) = ij;
-                        Some([coords[i]?, coords[j]?])
+                let (i, j) = ij;
+                let pts: Vec<_> = cp
+                    .alpha_cut
+                    .get(l)
+                    .map(|cut| {
+                        cut.coord(i)
+                            .iter()
+                            .zip(cut.coord(j))
+                            .filter_map(|(x, y)| Some([(*x)?, (*y)?]))
+                            .collect()
                     })
-                    .collect();
+                    .unwrap_or_default();
                 let mark = if pts.is_empty() {
                     Mark::Empty
                 } else {
@@ -271,7 +275,7 @@ pub fn stage2_figure(r: &RunResult, heights: &[f64]) -> Figure {
 /// triangle (left, crisp, right) labelled with its weight — and the curves
 /// through the left and the right values.
 #[must_use]
-pub fn stage3_figure(r: &RunResult, heights: &[f64]) -> Figure {
+pub fn stage3_figure(r: &RunOutput, heights: &[f64]) -> Figure {
     let (c, cp) = (&r.curves, &r.control_points);
     let left_marker = Marker::filled(Shape::Triangle, 7.5, PURPLE);
     let right_marker = Marker::filled(Shape::Diamond, 8.0, PURPLE);
@@ -392,10 +396,10 @@ pub fn stage3_figure(r: &RunResult, heights: &[f64]) -> Figure {
 /// # Errors
 /// Only if the library cannot evaluate a curve at the result's `max_at`, which
 /// lies in the domain by construction.
-pub fn stage4_figure(job: &Job, r: &RunResult, detail: bool) -> Result<Figure, Error> {
+pub fn stage4_figure(job: &Job, r: &RunOutput, detail: bool) -> Result<Figure, Error> {
     let (c, cp, e) = (&r.curves, &r.control_points, &r.error);
     let alpha = t2spline::Alpha::try_new(r.alpha)?;
-    let (at_crisp, at_solution) = data::curves_at(job, alpha, e.max_at)?;
+    let (at_crisp, at_solution) = data::curves_at(&job.model, alpha, e.max_at)?;
     let distance_stroke = Stroke::solid(BLACK, 1.4);
     let end_marker = Marker::open(Shape::Circle, 4.0, BLACK);
     let text = format!(
@@ -406,7 +410,10 @@ pub fn stage4_figure(job: &Job, r: &RunResult, detail: bool) -> Result<Figure, E
     let mut panels: Vec<Panel> = curve_panels(r.dimension)
         .into_iter()
         .map(|(mut p, ij)| {
-            let ends = project(&[at_crisp.clone(), at_solution.clone()], ij);
+            let ends = vec![
+                [at_crisp[ij.0], at_crisp[ij.1]],
+                [at_solution[ij.0], at_solution[ij.1]],
+            ];
             p.push(
                 "polygon",
                 Mark::Line {
@@ -511,7 +518,7 @@ pub fn stage4_figure(job: &Job, r: &RunResult, detail: bool) -> Result<Figure, E
 }
 
 /// A square window around the largest distance, a few times its size.
-fn detail_panel(r: &RunResult, ends: [&Point; 2], stroke: &Stroke, marker: &Marker) -> Panel {
+fn detail_panel(r: &RunOutput, ends: [&[f64]; 2], stroke: &Stroke, marker: &Marker) -> Panel {
     let (c, cp) = (&r.curves, &r.control_points);
     let mid = [
         0.5 * (ends[0][0] + ends[1][0]),
@@ -519,9 +526,10 @@ fn detail_panel(r: &RunResult, ends: [&Point; 2], stroke: &Stroke, marker: &Mark
     ];
     let span = c
         .crisp
+        .coord(0)
         .iter()
-        .fold([f64::INFINITY, f64::NEG_INFINITY], |b, p| {
-            [b[0].min(p[0]), b[1].max(p[0])]
+        .fold([f64::INFINITY, f64::NEG_INFINITY], |b, &x| {
+            [b[0].min(x), b[1].max(x)]
         });
     let half = (4.0 * r.error.max).max(0.01 * (span[1] - span[0]));
     let mut p = Panel::curves("x", "y");

@@ -1,7 +1,7 @@
 //! The defuzzified curve for alpha = 0, 0.1, …, 1, coloured by alpha.
 
+use t2spline::job::Job;
 use t2spline::Alpha;
-use t2spline_io::Job;
 
 use super::style::{crisp_marker, polygon_stroke};
 use super::{curve_panels, project};
@@ -19,17 +19,19 @@ pub fn sweep_alphas() -> Vec<f64> {
 /// The `alpha-sweep` figure: one defuzzified curve per alpha of
 /// `sweep_alphas`, coloured by alpha (viridis) with a colour bar marking the
 /// lower heights, where the solution jumps.
-#[must_use]
-pub fn sweep_figure(job: &Job) -> crate::scene::Figure {
+///
+/// # Errors
+/// [`crate::Error::Core`] if a run fails (never for a validated job).
+pub fn sweep_figure(job: &Job) -> Result<crate::scene::Figure, crate::Error> {
     let alphas = sweep_alphas();
-    let results: Vec<_> = alphas
+    let results = alphas
         .iter()
         // Values in [0, 1] are valid alphas.
         .filter_map(|&a| Alpha::try_new(a).ok())
         .map(|a| data::compute(job, a))
-        .collect();
+        .collect::<Result<Vec<_>, _>>()?;
     let Some(first) = results.first() else {
-        unreachable!("0 is a valid alpha")
+        return Err(crate::Error::Core(t2spline::Error::MissingAlpha));
     };
     let panels = curve_panels(first.dimension)
         .into_iter()
@@ -60,8 +62,8 @@ pub fn sweep_figure(job: &Job) -> crate::scene::Figure {
             p
         })
         .collect();
-    let heights = data::heights(job);
-    Figure {
+    let heights = job.model.heights();
+    Ok(Figure {
         name: "alpha-sweep",
         title: "Defuzzified curve as alpha varies".into(),
         subtitle: format!(
@@ -89,5 +91,5 @@ pub fn sweep_figure(job: &Job) -> crate::scene::Figure {
             stops: alphas.iter().map(|&a| (a, viridis(a))).collect(),
             marks: heights.iter().map(|&h| (h, "h".to_owned())).collect(),
         }),
-    }
+    })
 }

@@ -16,8 +16,8 @@ pub mod tables;
 use std::fmt::Write as _;
 
 use serde_json::{json, Value};
+use t2spline::job::{Job, RunOutput};
 use t2spline::{Alpha, Axis, Layer};
-use t2spline_io::{Job, RunResult};
 
 use crate::figures::{
     number_figure, stage1_figure, stage2_figure, stage3_figure, stage4_figure, sweep_figure,
@@ -36,7 +36,7 @@ pub const STEP: f64 = 0.01;
 ///
 /// # Examples
 /// ```
-/// let job = t2spline_io::Job::read("../../examples/paper-alg-1-1.json".as_ref())?;
+/// let job = t2spline_io::read_job("../../examples/paper-alg-1-1.json".as_ref())?;
 /// let stops = t2spline_plot::report::stops(&job, t2spline::Alpha::try_new(0.8)?);
 /// assert_eq!(stops.len(), 101); // 0.6 and 0.8 are already on the grid
 /// assert_eq!(stops[60], 0.6);
@@ -47,7 +47,7 @@ pub fn stops(job: &Job, start: Alpha) -> Vec<f64> {
     // i / 100 is the correctly rounded double nearest to the decimal, which is
     // what `--alpha 0.37` parses to.
     let mut v: Vec<f64> = (0..=100).map(|i| f64::from(i) / 100.0).collect();
-    v.extend(data::heights(job));
+    v.extend(job.model.heights());
     v.push(start.get());
     v.sort_by(f64::total_cmp);
     v.dedup();
@@ -63,12 +63,12 @@ pub fn stops(job: &Job, start: Alpha) -> Vec<f64> {
 pub fn render(job: &Job, job_text: &str, start: Alpha) -> Result<String, Error> {
     let alphas = stops(job, start);
     let initial = alphas.iter().position(|&a| a == start.get()).unwrap_or(0);
-    let heights = data::heights(job);
+    let heights = job.model.heights();
     let mut results = Vec::with_capacity(alphas.len());
     for &a in &alphas {
         // Stops lie in [0, 1].
         let alpha = Alpha::try_new(a)?;
-        results.push((alpha, data::compute(job, alpha)));
+        results.push((alpha, data::compute(job, alpha)?));
     }
     let choice = NumberChoice::default();
     let mut strings = Strings::default();
@@ -113,7 +113,7 @@ pub fn render(job: &Job, job_text: &str, start: Alpha) -> Result<String, Error> 
         "strings": strings.into_json(),
     });
     let stage1 = svg::render(&stage1_figure(start_result));
-    let sweep = svg::render(&sweep_figure(job));
+    let sweep = svg::render(&sweep_figure(job)?);
     let mut page = Page::default();
     page.header(job, start_result, &heights);
     page.controls(&alphas, initial, &heights);
@@ -186,7 +186,7 @@ fn captioned(caption: &str, table: &str) -> String {
 }
 
 /// The stage-1 table: every number's seven values and height.
-fn fuzzy_points_table(job: &Job, r: &RunResult) -> String {
+fn fuzzy_points_table(job: &Job, r: &RunOutput) -> String {
     let mut s = String::from("<table id=\"table-fuzzy\"><caption>Fuzzy control points (the job)</caption><thead><tr><th>point</th><th>coord.</th><th>weight</th>");
     for l in Layer::ALL {
         let _ = write!(s, "<th>{}</th>", l.name().replace('_', "."));
@@ -209,10 +209,12 @@ fn fuzzy_points_table(job: &Job, r: &RunResult) -> String {
                 let _ = write!(
                     s,
                     "<td>{}</td>",
-                    tables::number_text(points[k].get(a).copied())
+                    tables::number_text(points.coord(a).get(k).copied())
                 );
             }
-            let h = data::number(job, k, *axis).ok().map(|x| x.height().get());
+            let h = data::number(&job.model, k, *axis)
+                .ok()
+                .map(|x| x.height().get());
             let _ = writeln!(s, "<td>{}</td></tr>", tables::number_text(h));
         }
     }
@@ -227,7 +229,7 @@ struct Page {
 }
 
 impl Page {
-    fn header(&mut self, job: &Job, r: &RunResult, heights: &[f64]) {
+    fn header(&mut self, job: &Job, r: &RunOutput, heights: &[f64]) {
         let title = "Normal type-2 fuzzy rational B-spline curve";
         let _ = write!(
             self.html,
@@ -325,7 +327,7 @@ mod tests {
         let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
             .join("../../examples/paper-alg-1-1.json");
         let text = std::fs::read_to_string(&path).unwrap();
-        (Job::parse(&text, "example").unwrap(), text)
+        (t2spline_io::parse_job(&text, "example").unwrap(), text)
     }
 
     #[test]
@@ -333,8 +335,14 @@ mod tests {
         let (job, _) = example();
         for a in stops(&job, Alpha::try_new(0.8).unwrap()) {
             let alpha = Alpha::try_new(a).unwrap();
-            let figure_result = data::compute(&job, alpha);
-            let run_result = RunResult::compute(&job, alpha, job.samples);
+            let figure_result = data::compute(&job, alpha).unwrap();
+            let run_result = job
+                .run(&t2spline::job::Settings {
+                    alpha,
+                    samples: job.samples,
+                    derivatives: None,
+                })
+                .unwrap();
             for t in tables::tables(&run_result) {
                 assert_eq!(
                     tables::cells(&t, &figure_result),

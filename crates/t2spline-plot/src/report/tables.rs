@@ -5,8 +5,8 @@
 
 use std::fmt::Write as _;
 
+use t2spline::job::RunOutput;
 use t2spline::Layer;
-use t2spline_io::RunResult;
 
 use crate::svg::escape;
 
@@ -35,7 +35,7 @@ const AXES: [&str; 3] = ["x", "y", "z"];
 
 /// The tables of a result, in report order.
 #[must_use]
-pub fn tables(r: &RunResult) -> Vec<Table> {
+pub fn tables(r: &RunOutput) -> Vec<Table> {
     let n = r.control_points.crisp.len();
     let d = r.dimension;
     let layers: Vec<Layer> = Layer::ALL.to_vec();
@@ -108,7 +108,7 @@ pub fn tables(r: &RunResult) -> Vec<Table> {
 
 /// The value at a cell key: `error.*` or a path into `control_points`.
 #[must_use]
-pub fn value(r: &RunResult, key: &str) -> Option<f64> {
+pub fn value(r: &RunOutput, key: &str) -> Option<f64> {
     let parts: Vec<&str> = key.split('.').collect();
     let cp = &r.control_points;
     let idx = |s: &str| s.parse::<usize>().ok();
@@ -125,11 +125,11 @@ pub fn value(r: &RunResult, key: &str) -> Option<f64> {
                 "defuzzified" => &cp.defuzzified,
                 _ => return None,
             };
-            points.get(k)?.get(a).copied()
+            points.coord(a).get(k).copied()
         }
         ["alpha_cut", layer, k, a] => {
             let l = Layer::ALL.into_iter().find(|l| l.name() == *layer)?;
-            *cp.alpha_cut.get(l)?.get(idx(k)?)?.get(idx(a)?)?
+            *cp.alpha_cut.get(l)?.coord(idx(a)?).get(idx(k)?)?
         }
         _ => None,
     }
@@ -137,7 +137,7 @@ pub fn value(r: &RunResult, key: &str) -> Option<f64> {
 
 /// The cell texts of a table for one result, in row order.
 #[must_use]
-pub fn cells(t: &Table, r: &RunResult) -> Vec<String> {
+pub fn cells(t: &Table, r: &RunOutput) -> Vec<String> {
     t.rows
         .iter()
         .flat_map(|(_, keys)| keys.iter().map(|k| number_text(value(r, k))))
@@ -146,7 +146,7 @@ pub fn cells(t: &Table, r: &RunResult) -> Vec<String> {
 
 /// The table as HTML with the texts of `r`.
 #[must_use]
-pub fn html(t: &Table, r: &RunResult) -> String {
+pub fn html(t: &Table, r: &RunOutput) -> String {
     let mut s = format!("<table id=\"{}\"><thead><tr>", t.id);
     for h in &t.header {
         let _ = write!(s, "<th>{}</th>", escape(h));

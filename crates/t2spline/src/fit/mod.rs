@@ -25,6 +25,7 @@
 
 pub(crate) mod banded;
 mod curve;
+mod data;
 mod design;
 mod fuzzy;
 mod knots;
@@ -32,6 +33,7 @@ mod nnls;
 mod parametrization;
 
 pub use curve::{fit_curve, CurveFit, FitOptions};
+pub use data::{FitOutcome, FitSummary, FuzzyData};
 pub use fuzzy::{fit_fuzzy, Deviation, FuzzyFit, FuzzyFitMode, OrderViolation};
 pub use knots::{approximation_knots, averaging_knots};
 pub use parametrization::Parametrization;

@@ -1,0 +1,89 @@
+//! The settings of a run from the command line: the core's checks, with
+//! messages that name the option (`--alpha`, `--samples`, `--derivatives`).
+
+use std::path::Path;
+
+use t2spline::job::{Job, Overrides, Setting, Settings};
+use t2spline_io::job::locate;
+use t2spline_io::{Error, Problem};
+
+use crate::output::job_name;
+
+/// A command-line option whose value breaks a rule: `--alpha: …`. Exit code 2.
+#[derive(Debug)]
+pub struct OptionError {
+    /// The option, e.g. `--alpha`.
+    pub option: &'static str,
+    /// The value and the rule.
+    pub message: String,
+}
+
+impl std::fmt::Display for OptionError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}: {}", self.option, self.message)
+    }
+}
+
+impl std::error::Error for OptionError {}
+
+/// The option that sets `setting`.
+pub fn option_name(setting: Setting) -> &'static str {
+    match setting {
+        Setting::Alpha => "--alpha",
+        Setting::Samples => "--samples",
+        Setting::Derivatives => "--derivatives",
+        Setting::Points => "--points",
+        Setting::Threads => "--threads",
+    }
+}
+
+/// A core error about a setting, as an error about its option; other errors
+/// unchanged.
+pub fn about_option(e: t2spline::Error) -> anyhow::Error {
+    match e {
+        t2spline::Error::Setting { setting, message } => OptionError {
+            option: option_name(setting),
+            message,
+        }
+        .into(),
+        other => other.into(),
+    }
+}
+
+/// The settings of a run of `job` (read from `path`, whose `text` places a
+/// missing `alpha` at the job's top-level object) with the options given.
+pub fn settings(
+    job: &Job,
+    overrides: &Overrides,
+    path: &Path,
+    text: &str,
+) -> anyhow::Result<Settings> {
+    job.settings(overrides).map_err(|e| match e {
+        t2spline::Error::MissingAlpha => Error::Invalid {
+            file: job_name(path),
+            problems: vec![Problem {
+                line_column: Some(locate(text, "alpha")),
+                message: "alpha: missing: give it in the job file or with --alpha".into(),
+            }],
+        }
+        .into(),
+        other => about_option(other),
+    })
+}
+
+/// A derivative beyond the range of a float is the input's doing, not a bug:
+/// an error about `--derivatives`. Other errors unchanged.
+pub fn about_derivatives(e: t2spline::Error) -> anyhow::Error {
+    match e {
+        t2spline::Error::DerivativeOverflow { .. }
+        | t2spline::Error::NotFinite {
+            what: "curves.arc_length.crisp" | "curves.arc_length.defuzzified",
+            ..
+        } => OptionError {
+            option: "--derivatives",
+            message: e.to_string(),
+        }
+        .into(),
+        other => other.into(),
+    }
+}

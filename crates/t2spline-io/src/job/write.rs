@@ -1,0 +1,75 @@
+//! Jobs written back as job files (SPEC §8).
+
+use serde_json::{json, Map, Value};
+use t2spline::job::{Job, Model, ModelVisitor};
+use t2spline::{Axis, FuzzyCurve, Layer, Nt2Point};
+
+/// The job as JSON in canonical form: explicit weights and knots, and every
+/// number with its own `lower_height`. Parsing it gives back an equal job.
+///
+/// # Examples
+/// ```
+/// # let text = std::fs::read_to_string("../../examples/paper-alg-1-1.json")?;
+/// let job = t2spline_io::parse_job(&text, "paper-alg-1-1.json")?;
+/// let json = t2spline_io::job_json(&job);
+/// assert_eq!(json["knots"], serde_json::json!([0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0]));
+/// assert_eq!(t2spline_io::parse_job(&json.to_string(), "again")?, job);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[must_use]
+pub fn job_json(job: &Job) -> Value {
+    let mut out = Map::new();
+    if let Some(d) = &job.description {
+        out.insert("description".into(), json!(d));
+    }
+    for (key, value) in model_json(&job.model, None) {
+        if key == "points" {
+            if let Some(a) = job.alpha {
+                out.insert("alpha".into(), json!(a.get()));
+            }
+            out.insert("samples".into(), json!(job.samples));
+        }
+        out.insert(key, value);
+    }
+    Value::Object(out)
+}
+
+/// The model's keys of a job file, in the order of SPEC §8: `degree`,
+/// `weights`, `knots`, `points`; a number's `lower_height` is left out when it
+/// equals `top_height`.
+pub(crate) fn model_json(model: &Model, top_height: Option<f64>) -> Map<String, Value> {
+    struct Keys(Option<f64>);
+    impl ModelVisitor for Keys {
+        type Output = Map<String, Value>;
+        fn curve<const D: usize>(self, c: &FuzzyCurve<D>) -> Map<String, Value> {
+            let mut out = Map::new();
+            out.insert("degree".into(), json!(c.degree()));
+            out.insert("weights".into(), json!(c.weights()));
+            out.insert("knots".into(), json!(c.knots().as_slice()));
+            let points = c.points().iter().map(|p| point_json(p, self.0)).collect();
+            out.insert("points".into(), Value::Array(points));
+            out
+        }
+    }
+    model.visit(Keys(top_height))
+}
+
+/// A point as in a job file; a number's `lower_height` is left out when it
+/// equals `top_height`, the job's top-level default.
+pub(crate) fn point_json<const D: usize>(p: &Nt2Point<D>, top_height: Option<f64>) -> Value {
+    let mut out = Map::new();
+    for (axis, x) in Axis::first::<D>().iter().zip(p.coords()) {
+        let pair = |l: Layer, r: Layer| json!([x.layer(l), x.layer(r)]);
+        let mut number = json!({
+            "crisp": x.crisp(),
+            "upper": pair(Layer::UpperLeft, Layer::UpperRight),
+            "primary": pair(Layer::PrimaryLeft, Layer::PrimaryRight),
+            "lower": pair(Layer::LowerLeft, Layer::LowerRight),
+        });
+        if top_height != Some(x.height().get()) {
+            number["lower_height"] = json!(x.height().get());
+        }
+        out.insert(axis.name().into(), number);
+    }
+    Value::Object(out)
+}

@@ -1,0 +1,199 @@
+//! What a run computes (SPEC §7–§8), in the shape of the result file.
+//!
+//! The field names and their order are those of the result file's keys (the
+//! I/O crate writes these types with serde, feature `serde`); SPEC §8 requires
+//! `alpha`, `control_points.{crisp, type_reduced_left, type_reduced_right,
+//! defuzzified}`, `curves.{params, crisp, defuzzified}`, `curves.layers.*` and
+//! `error.{max, rms}`; the others add the curve's definition and the curves
+//! of stages 2 and 3.
+
+use std::fmt;
+
+use crate::fuzzy::Layer;
+use crate::pipeline::Distance;
+
+use super::Points;
+
+/// Everything a run computes: the stages' control points, every curve sampled
+/// at uniform parameters, and the distance between the crisp and the
+/// defuzzified curve.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct RunOutput {
+    /// The job's description, if any.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub description: Option<String>,
+    /// 2 or 3.
+    pub dimension: usize,
+    /// The order `k`.
+    pub order: usize,
+    /// The degree `p = k − 1`.
+    pub degree: usize,
+    /// The weights.
+    pub weights: Vec<f64>,
+    /// The knot vector actually used (the default made explicit).
+    pub knots: Vec<f64>,
+    /// The parameter domain `[U[p], U[n]]`.
+    pub domain: [f64; 2],
+    /// The level alpha.
+    pub alpha: f64,
+    /// Which type-reduction rule applied (SPEC §3).
+    pub regime: Regime,
+    /// Control points of every stage.
+    pub control_points: ControlPoints,
+    /// Curves sampled at `curves.params`.
+    pub curves: Curves,
+    /// Distance between the crisp and the defuzzified curve.
+    pub error: Distance,
+}
+
+/// Which rule of SPEC §3 reduced the numbers at the run's alpha.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Regime {
+    /// `alpha <= h` for every number: three-term averages.
+    AtOrBelow,
+    /// `alpha > h` for every number: two-term averages (no lower cut).
+    Above,
+    /// The numbers' heights put them on both sides.
+    Mixed,
+}
+
+impl Regime {
+    /// The text in result files: `"alpha <= h"`, `"alpha > h"` or `"mixed"`.
+    #[must_use]
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Regime::AtOrBelow => "alpha <= h",
+            Regime::Above => "alpha > h",
+            Regime::Mixed => "mixed",
+        }
+    }
+}
+
+impl fmt::Display for Regime {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.as_str())
+    }
+}
+
+#[cfg(feature = "serde")]
+impl serde::Serialize for Regime {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.as_str())
+    }
+}
+
+/// The control points of every stage.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct ControlPoints {
+    /// The crisp control points.
+    pub crisp: Points,
+    /// Stage 1: the six non-crisp values of every point.
+    pub layers: SixLayers<Points>,
+    /// Stage 2: the alpha-cut ends of every point; a lower end is absent where
+    /// the level is above that number's lower height.
+    pub alpha_cut: SixLayers<Points<Option<f64>>>,
+    /// Stage 3: left type-reduced control points.
+    pub type_reduced_left: Points,
+    /// Stage 3: right type-reduced control points.
+    pub type_reduced_right: Points,
+    /// Stage 4: defuzzified control points.
+    pub defuzzified: Points,
+}
+
+/// The sampled curves.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct Curves {
+    /// The parameters `tᵢ = a + (b − a)·i/(samples − 1)`.
+    pub params: Vec<f64>,
+    /// The crisp curve.
+    pub crisp: Points,
+    /// The crisp type-2 solution (stage 4).
+    pub defuzzified: Points,
+    /// Stage 1: the six non-crisp layer curves, before the cut.
+    pub layers: SixLayers<Points>,
+    /// Stage 2: the alpha-cut layer curves; a lower layer is absent unless
+    /// every number has a lower cut at this level.
+    pub alpha_cut: SixLayers<Option<Points>>,
+    /// Stage 3: the type-reduced left and right curves.
+    pub type_reduced: LeftRight<Points>,
+    /// With a derivative order `K`: for each order `1 ..= K`, the derivative
+    /// vectors of the crisp and the defuzzified curve at `params`.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub derivatives: Option<CrispDefuzzified<Vec<Points>>>,
+    /// With a derivative order: the arc lengths of the crisp and the
+    /// defuzzified curve.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub arc_length: Option<CrispDefuzzified<f64>>,
+}
+
+impl Curves {
+    /// The sampled curve of one stage-1 layer (the crisp curve for
+    /// [`Layer::Crisp`]).
+    #[must_use]
+    pub fn layer(&self, layer: Layer) -> &Points {
+        self.layers.get(layer).unwrap_or(&self.crisp)
+    }
+}
+
+/// One value per non-crisp layer, with the layer names of SPEC §8.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[allow(missing_docs)]
+pub struct SixLayers<T> {
+    pub upper_left: T,
+    pub primary_left: T,
+    pub lower_left: T,
+    pub lower_right: T,
+    pub primary_right: T,
+    pub upper_right: T,
+}
+
+impl<T> SixLayers<T> {
+    /// The six values from a function of the layer.
+    pub fn from_fn(mut f: impl FnMut(Layer) -> T) -> Self {
+        SixLayers {
+            upper_left: f(Layer::UpperLeft),
+            primary_left: f(Layer::PrimaryLeft),
+            lower_left: f(Layer::LowerLeft),
+            lower_right: f(Layer::LowerRight),
+            primary_right: f(Layer::PrimaryRight),
+            upper_right: f(Layer::UpperRight),
+        }
+    }
+
+    /// The value of a non-crisp layer; `None` for [`Layer::Crisp`].
+    #[must_use]
+    pub fn get(&self, layer: Layer) -> Option<&T> {
+        match layer {
+            Layer::UpperLeft => Some(&self.upper_left),
+            Layer::PrimaryLeft => Some(&self.primary_left),
+            Layer::LowerLeft => Some(&self.lower_left),
+            Layer::Crisp => None,
+            Layer::LowerRight => Some(&self.lower_right),
+            Layer::PrimaryRight => Some(&self.primary_right),
+            Layer::UpperRight => Some(&self.upper_right),
+        }
+    }
+}
+
+/// A left and a right value.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+#[allow(missing_docs)]
+pub struct LeftRight<T> {
+    pub left: T,
+    pub right: T,
+}
+
+/// One value for the crisp and one for the defuzzified curve.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct CrispDefuzzified<T> {
+    /// For the crisp curve (through the crisp control points).
+    pub crisp: T,
+    /// For the defuzzified curve (the crisp type-2 solution, stage 4).
+    pub defuzzified: T,
+}

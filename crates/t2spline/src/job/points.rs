@@ -1,0 +1,150 @@
+//! Points of a run's output as structure of arrays, whatever their dimension.
+
+use crate::sampling::CurveSamples;
+
+/// Points of one dimension stored as one vector per coordinate (structure of
+/// arrays): `coord(0)[i]` is the x coordinate of the i-th point.
+///
+/// This is the form in which a run hands control points and samples to the
+/// writers (JSON, CSV), the figures and the Python bindings: the sampling
+/// engine produces it without copies, columnar formats write it as it is, and
+/// a point at a time is one index per coordinate.
+///
+/// `T` is `f64`, or `Option<f64>` for the alpha-cut control points, whose lower
+/// ends are absent above a number's lower height (SPEC §2.2).
+///
+/// # Examples
+/// ```
+/// # use t2spline::job::Points;
+/// let p = Points::from_points(&[[0.0, 1.0], [2.0, 3.0]]);
+/// assert_eq!((p.len(), p.dimension()), (2, 2));
+/// assert_eq!(p.coord(1), &[1.0, 3.0]);
+/// assert_eq!(p.point(1), Some(vec![2.0, 3.0]));
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct Points<T = f64> {
+    coords: Vec<Vec<T>>,
+}
+
+impl<T: Copy> Points<T> {
+    /// Points from one vector per coordinate, all of one length (checked in
+    /// debug builds: only the crate builds them).
+    pub(crate) fn from_coords(coords: Vec<Vec<T>>) -> Self {
+        debug_assert!(coords.iter().all(|c| c.len() == coords[0].len()));
+        Points { coords }
+    }
+
+    /// Points from a list of fixed-size points.
+    #[must_use]
+    pub fn from_points<const D: usize>(points: &[[T; D]]) -> Self {
+        Points {
+            coords: (0..D)
+                .map(|d| points.iter().map(|p| p[d]).collect())
+                .collect(),
+        }
+    }
+
+    /// The number of points.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        self.coords.first().map_or(0, Vec::len)
+    }
+
+    /// Whether there are no points.
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The number of coordinates of each point.
+    #[must_use]
+    pub fn dimension(&self) -> usize {
+        self.coords.len()
+    }
+
+    /// The values of one coordinate (`0` is x); empty for an axis the points
+    /// do not have.
+    #[must_use]
+    pub fn coord(&self, axis: usize) -> &[T] {
+        self.coords.get(axis).map_or(&[], Vec::as_slice)
+    }
+
+    /// The values of one coordinate, to change in place; empty for an axis the
+    /// points do not have.
+    pub fn coord_mut(&mut self, axis: usize) -> &mut [T] {
+        self.coords.get_mut(axis).map_or(&mut [], Vec::as_mut_slice)
+    }
+
+    /// The vectors of all coordinates.
+    #[must_use]
+    pub fn coords(&self) -> &[Vec<T>] {
+        &self.coords
+    }
+
+    /// The i-th point, or `None` past the end.
+    #[must_use]
+    pub fn point(&self, i: usize) -> Option<Vec<T>> {
+        self.coords.iter().map(|c| c.get(i).copied()).collect()
+    }
+
+    /// The points in order, each as a vector of coordinates.
+    pub fn rows(&self) -> impl ExactSizeIterator<Item = Vec<T>> + '_ {
+        (0..self.len()).map(|i| self.coords.iter().map(|c| c[i]).collect())
+    }
+}
+
+impl<const D: usize> From<CurveSamples<D>> for Points {
+    /// Takes the sampling engine's vectors without copying them.
+    fn from(samples: CurveSamples<D>) -> Self {
+        Points::from_coords(samples.into_coords().into())
+    }
+}
+
+#[cfg(feature = "serde")]
+impl<T: serde::Serialize + Copy> serde::Serialize for Points<T> {
+    /// A list of points, each a list of coordinates (`[[x, y], …]`), written
+    /// straight from the columns.
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        use serde::ser::SerializeSeq;
+        struct Row<'a, T>(&'a [Vec<T>], usize);
+        impl<T: serde::Serialize> serde::Serialize for Row<'_, T> {
+            fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+                let mut seq = s.serialize_seq(Some(self.0.len()))?;
+                for c in self.0 {
+                    seq.serialize_element(&c[self.1])?;
+                }
+                seq.end()
+            }
+        }
+        let mut seq = s.serialize_seq(Some(self.len()))?;
+        for i in 0..self.len() {
+            seq.serialize_element(&Row(&self.coords, i))?;
+        }
+        seq.end()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn rows_and_columns_agree() {
+        let p = Points::from_points(&[[1.0, 2.0, 3.0], [4.0, 5.0, 6.0]]);
+        assert_eq!(p.dimension(), 3);
+        assert_eq!(
+            p.rows().collect::<Vec<_>>(),
+            [vec![1.0, 2.0, 3.0], vec![4.0, 5.0, 6.0]]
+        );
+        assert_eq!(p.coord(2), &[3.0, 6.0]);
+        assert!(p.coord(3).is_empty());
+        assert_eq!(p.point(2), None);
+    }
+
+    #[test]
+    fn empty_points() {
+        let p = Points::<f64>::from_points::<2>(&[]);
+        assert!(p.is_empty());
+        assert_eq!(p.rows().count(), 0);
+    }
+}

@@ -1,0 +1,178 @@
+//! How a job runs: the level alpha, the number of samples and the derivative
+//! order, from the job and from what a front end overrides, every value checked.
+
+use crate::error::{Error, Setting};
+use crate::fuzzy::Alpha;
+
+use super::Job;
+
+/// The number of samples when a job gives none (SPEC §8).
+pub const DEFAULT_SAMPLES: usize = 101;
+
+/// The largest number of samples a run may ask for. A result holds up to 16
+/// curves × 3 coordinates per sample, so at this limit it has 48 million
+/// numbers: about 1 GB of JSON.
+pub const MAX_SAMPLES: usize = 1_000_000;
+
+/// The highest derivative order a run computes. Above it the numbers of a
+/// rational curve grow like `K!` and say little; the bound also keeps a
+/// result's size in proportion.
+pub const MAX_DERIVATIVE_ORDER: usize = 16;
+
+/// What a front end may set in place of the job's own values; `None` keeps the
+/// job's. Values are taken as given (a negative derivative order, a sample
+/// count beyond the machine's) and checked by [`Job::settings`].
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Overrides {
+    /// The level alpha.
+    pub alpha: Option<f64>,
+    /// The number of uniform parameters.
+    pub samples: Option<u64>,
+    /// The highest derivative order to compute (none without it).
+    pub derivatives: Option<i64>,
+}
+
+/// How a job runs, every value checked: build it with [`Job::settings`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Settings {
+    /// The level alpha of stages 2–4.
+    pub alpha: Alpha,
+    /// Uniform parameters at which every curve is sampled (2 ..= [`MAX_SAMPLES`]).
+    pub samples: usize,
+    /// With `Some(K)`, the derivatives of orders `1 ..= K` of the crisp and the
+    /// defuzzified curve and their arc lengths.
+    pub derivatives: Option<usize>,
+}
+
+impl Job {
+    /// The settings of a run of this job: each override if given, else the
+    /// job's value.
+    ///
+    /// # Errors
+    /// [`Error::MissingAlpha`] when neither gives alpha; [`Error::Setting`]
+    /// naming the setting whose value breaks its rule: alpha outside [0, 1],
+    /// samples outside `2 ..= MAX_SAMPLES`, a derivative order outside
+    /// `1 ..= MAX_DERIVATIVE_ORDER` or with more than [`MAX_SAMPLES`]
+    /// derivative vectors per curve.
+    ///
+    /// # Examples
+    /// ```
+    /// # use t2spline::job::{Overrides, Setting};
+    /// # use t2spline::Error;
+    /// # use t2spline::{Alpha, FuzzyCurve, Nt2Number, Nt2Point};
+    /// # use t2spline::job::{Job, Model};
+    /// # let n = |c: f64| Nt2Number::try_new(c, [c - 1.0, c + 1.0], [c - 0.5, c + 0.5], [c - 0.2, c + 0.2], 0.5);
+    /// # let points = vec![Nt2Point::new([n(0.0)?, n(0.0)?]), Nt2Point::new([n(1.0)?, n(1.0)?])];
+    /// # let curve = FuzzyCurve::try_new(1, points, vec![1.0, 1.0], None)?;
+    /// let job = Job { alpha: Some(Alpha::try_new(0.8)?), ..Job::new(Model::Planar(curve)) };
+    /// let s = job.settings(&Overrides { samples: Some(5), ..Overrides::default() })?;
+    /// assert_eq!((s.alpha.get(), s.samples, s.derivatives), (0.8, 5, None));
+    /// let e = job.settings(&Overrides { alpha: Some(1.5), ..Overrides::default() }).unwrap_err();
+    /// assert!(matches!(e, Error::Setting { setting: Setting::Alpha, .. }));
+    /// assert_eq!(e.to_string(), "alpha = 1.5 is outside [0, 1]");
+    /// # Ok::<(), t2spline::Error>(())
+    /// ```
+    pub fn settings(&self, overrides: &Overrides) -> Result<Settings, Error> {
+        let alpha = match overrides.alpha {
+            Some(a) => Alpha::try_new(a).map_err(|e| Error::Setting {
+                setting: Setting::Alpha,
+                message: e.to_string(),
+            })?,
+            None => self.alpha.ok_or(Error::MissingAlpha)?,
+        };
+        let samples = match overrides.samples {
+            Some(n) => check_samples(n, &n.to_string()).map_err(|message| Error::Setting {
+                setting: Setting::Samples,
+                message,
+            })?,
+            None => check_samples(self.samples as u64, &self.samples.to_string()).map_err(
+                |message| Error::Setting {
+                    setting: Setting::Samples,
+                    message,
+                },
+            )?,
+        };
+        let derivatives = overrides
+            .derivatives
+            .map(|k| {
+                check_derivative_order(k, samples).map_err(|message| Error::Setting {
+                    setting: Setting::Derivatives,
+                    message,
+                })
+            })
+            .transpose()?;
+        Ok(Settings {
+            alpha,
+            samples,
+            derivatives,
+        })
+    }
+}
+
+/// Checks a number of samples against SPEC §8 (at least 2) and
+/// [`MAX_SAMPLES`]; `written` is the value as its source wrote it (`1e300`,
+/// not the `u64` it saturates to).
+///
+/// # Errors
+/// The rule that `n` breaks, as text.
+///
+/// # Examples
+/// ```
+/// # use t2spline::job::check_samples;
+/// assert_eq!(check_samples(101, "101"), Ok(101));
+/// assert_eq!(
+///     check_samples(1, "1"),
+///     Err("samples = 1: at least 2 are needed (both ends of the domain)".to_owned())
+/// );
+/// assert!(check_samples(u64::MAX, "1e30").is_err());
+/// ```
+pub fn check_samples(n: u64, written: &str) -> Result<usize, String> {
+    if n < 2 {
+        Err(format!(
+            "samples = {written}: at least 2 are needed (both ends of the domain)"
+        ))
+    } else if n > MAX_SAMPLES as u64 {
+        Err(format!(
+            "samples = {written} is more than the limit {MAX_SAMPLES}"
+        ))
+    } else {
+        usize::try_from(n).map_err(|_| format!("samples = {written} does not fit this machine"))
+    }
+}
+
+/// Checks a derivative order `K` for a run with `samples` samples: at least 1,
+/// at most [`MAX_DERIVATIVE_ORDER`], and `K·samples` derivative vectors per
+/// curve at most [`MAX_SAMPLES`] (the bound of the samples themselves).
+///
+/// # Errors
+/// The rule that `k` breaks, as text.
+///
+/// # Examples
+/// ```
+/// # use t2spline::job::check_derivative_order;
+/// assert_eq!(check_derivative_order(2, 101), Ok(2));
+/// assert!(check_derivative_order(0, 101).is_err());
+/// assert!(check_derivative_order(-1, 101).is_err());
+/// assert!(check_derivative_order(17, 101).is_err());
+/// assert!(check_derivative_order(2, 1_000_000).is_err());
+/// ```
+pub fn check_derivative_order(k: i64, samples: usize) -> Result<usize, String> {
+    if k < 1 {
+        return Err(format!(
+            "{k}: the highest derivative order must be at least 1"
+        ));
+    }
+    if k > MAX_DERIVATIVE_ORDER as i64 {
+        return Err(format!(
+            "{k} is more than the highest order offered, {MAX_DERIVATIVE_ORDER}"
+        ));
+    }
+    let vectors = k.saturating_mul(i64::try_from(samples).unwrap_or(i64::MAX));
+    if vectors > MAX_SAMPLES as i64 {
+        return Err(format!(
+            "{k} orders at {samples} samples make {vectors} derivative vectors per curve, more than the limit {MAX_SAMPLES}; lower the derivative order or the number of samples"
+        ));
+    }
+    // 1 ..= MAX_DERIVATIVE_ORDER fits a usize.
+    Ok(k as usize)
+}
