@@ -82,5 +82,5 @@ pub use fuzzy::{
     Nt2Point2, Nt2Point3, Tfn,
 };
 pub use limits::{MAX_MAGNITUDE, MAX_WEIGHT, MIN_WEIGHT};
-pub use nurbs::{BoundingBox, ClosestPoint, Domain, KnotVector, NurbsCurve};
+pub use nurbs::{BoundingBox, ClosestPoint, Direction, Domain, KnotVector, NurbsCurve, NurbsSurface};
 pub use pipeline::{Distance, FuzzyCurve, Side, Solution};

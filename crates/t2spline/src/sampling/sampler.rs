@@ -112,7 +112,7 @@ impl Sampler {
                 return Err(Error::NotFinite {
                     place: Place {
                         point: Some(i),
-                        axis: None,
+                        ..Place::NONE
                     },
                     what: "channel value",
                     value,
