@@ -67,7 +67,8 @@ impl<const D: usize> NurbsSurface<D> {
                 for (i, n) in nk.iter().enumerate() {
                     let base = (fu + i) * nv + fv;
                     for (j, m) in ml.iter().enumerate() {
-                        let (pij, wij) = (self.control_points()[base + j], self.weights()[base + j]);
+                        let (pij, wij) =
+                            (self.control_points()[base + j], self.weights()[base + j]);
                         let c = n * m * wij;
                         w[k][l] += c;
                         for (x, y) in a[k][l].iter_mut().zip(pij) {

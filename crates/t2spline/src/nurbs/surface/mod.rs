@@ -232,7 +232,10 @@ impl<const D: usize> NurbsSurface<D> {
     #[must_use]
     pub fn control_point(&self, i: usize, j: usize) -> [f64; D] {
         let [nu, nv] = self.shape();
-        assert!(i < nu && j < nv, "control point ({i}, {j}) of a {nu} × {nv} net");
+        assert!(
+            i < nu && j < nv,
+            "control point ({i}, {j}) of a {nu} × {nv} net"
+        );
         self.points[i * nv + j]
     }
 
@@ -275,7 +278,25 @@ impl<const D: usize> NurbsSurface<D> {
 
     /// `S(u, v)` for `(u, v)` in the domain.
     pub(crate) fn eval_unchecked(&self, u: f64, v: f64) -> [f64; D] {
-        let basis = TensorBasis::new(&self.knots, &self.weights, u, v);
+        self.combine(&TensorBasis::new(&self.knots, &self.weights, u, v))
+    }
+
+    /// The polynomial piece of the non-empty span rectangle `spans` at
+    /// `(u, v)` in its closure: on its right or upper border this is the
+    /// one-sided limit from inside, which differs from [`NurbsSurface::eval`]
+    /// only at a knot of full multiplicity.
+    pub(crate) fn eval_in_spans(&self, spans: [usize; 2], u: f64, v: f64) -> [f64; D] {
+        self.combine(&TensorBasis::in_spans(
+            &self.knots,
+            &self.weights,
+            spans,
+            u,
+            v,
+        ))
+    }
+
+    /// `Σ Rᵢⱼ Pᵢⱼ` for a basis of this surface.
+    fn combine(&self, basis: &TensorBasis) -> [f64; D] {
         let mut out = [0.0; D];
         basis.for_each(self.shape()[1], |k, r| {
             for (o, x) in out.iter_mut().zip(&self.points[k]) {
@@ -329,7 +350,10 @@ pub(crate) fn check_params(knots: &[KnotVector; 2], u: f64, v: f64) -> Result<()
 }
 
 /// The clamped uniform knot vectors of degrees `[p, q]` for a net of `shape`.
-pub(crate) fn default_knots(degree: [usize; 2], shape: [usize; 2]) -> Result<[KnotVector; 2], Error> {
+pub(crate) fn default_knots(
+    degree: [usize; 2],
+    shape: [usize; 2],
+) -> Result<[KnotVector; 2], Error> {
     let make = |d: Direction| {
         KnotVector::clamped_uniform(degree[d.index()], shape[d.index()])
             .map_err(|e| e.in_direction(d))
@@ -433,10 +457,22 @@ impl TensorBasis {
     /// [`KnotVector::find_span`]: from the right at an interior knot, the last
     /// non-empty span at the end).
     pub(crate) fn new(knots: &[KnotVector; 2], weights: &[f64], u: f64, v: f64) -> Self {
+        let spans = [knots[0].find_span(u), knots[1].find_span(v)];
+        Self::in_spans(knots, weights, spans, u, v)
+    }
+
+    /// The rational basis of the polynomial piece on the non-empty spans
+    /// `[su, sv]` at `(u, v)` in (or on the border of) that span rectangle.
+    pub(crate) fn in_spans(
+        knots: &[KnotVector; 2],
+        weights: &[f64],
+        [su, sv]: [usize; 2],
+        u: f64,
+        v: f64,
+    ) -> Self {
         let [ku, kv] = knots;
         let (p, q) = (ku.degree(), kv.degree());
         let nv = kv.count();
-        let (su, sv) = (ku.find_span(u), kv.find_span(v));
         let mut bu = vec![0.0; p + 1];
         let mut bv = vec![0.0; q + 1];
         basis_functions(ku.as_slice(), p, su, u, &mut bu);

@@ -32,9 +32,15 @@ pub(crate) type RowNet = ([KnotVector; 2], Vec<Row>);
 fn stack(rows: &[Row], shape: [usize; 2], direction: Direction) -> Vec<Row> {
     let [nu, nv] = shape;
     match direction {
-        Direction::U => (0..nu).map(|i| rows[i * nv..(i + 1) * nv].concat()).collect(),
+        Direction::U => (0..nu)
+            .map(|i| rows[i * nv..(i + 1) * nv].concat())
+            .collect(),
         Direction::V => (0..nv)
-            .map(|j| (0..nu).flat_map(|i| rows[i * nv + j].iter().copied()).collect())
+            .map(|j| {
+                (0..nu)
+                    .flat_map(|i| rows[i * nv + j].iter().copied())
+                    .collect()
+            })
             .collect(),
     }
 }
@@ -255,7 +261,9 @@ impl<const D: usize> NurbsSurface<D> {
     pub fn elevate_degree(&self, direction: Direction, times: usize) -> Result<Self, Error> {
         check_elevation(self.degree()[direction.index()], times)
             .map_err(|e| e.in_direction(direction))?;
-        self.map(direction, "degree elevation", |k, r| Ok(elevate(k, r, times)))
+        self.map(direction, "degree elevation", |k, r| {
+            Ok(elevate(k, r, times))
+        })
     }
 
     /// The two surfaces on either side of `t` in `direction` (The NURBS Book

@@ -25,13 +25,21 @@ pub(crate) fn wavy() -> NurbsSurface<3> {
             (0..nv)
                 .map(|j| {
                     let (x, y) = (i as f64, j as f64);
-                    [x + 0.3 * y, y - 0.2 * x, (1.3 * x).sin() + (0.7 * y).cos() * x]
+                    [
+                        x + 0.3 * y,
+                        y - 0.2 * x,
+                        (1.3 * x).sin() + (0.7 * y).cos() * x,
+                    ]
                 })
                 .collect()
         })
         .collect();
     let weights = (0..nu)
-        .map(|i| (0..nv).map(|j| 0.4 + ((i * 3 + j * 5) % 7) as f64 * 0.5).collect())
+        .map(|i| {
+            (0..nv)
+                .map(|j| 0.4 + ((i * 3 + j * 5) % 7) as f64 * 0.5)
+                .collect()
+        })
         .collect();
     let ku = KnotVector::try_new(vec![0.0, 0.0, 0.0, 0.0, 0.4, 1.0, 1.0, 1.0, 1.0], 3, 5).unwrap();
     let kv = KnotVector::try_new(vec![-1.0, -1.0, -1.0, 0.5, 2.0, 2.0, 2.0], 2, 4).unwrap();
@@ -87,7 +95,8 @@ fn full_multiplicity_knot_takes_the_value_from_the_right() {
     let kv = KnotVector::try_new(vec![0.0, 0.0, 0.5, 0.5, 1.0, 1.0], 1, 4).unwrap();
     let ku = KnotVector::clamped_uniform(1, 2).unwrap();
     let row = |x: f64| vec![[x, 0.0, 0.0], [x, 1.0, 0.0], [x, 5.0, 5.0], [x, 6.0, 5.0]];
-    let s = NurbsSurface::try_new(vec![row(0.0), row(1.0)], vec![vec![1.0; 4]; 2], [ku, kv]).unwrap();
+    let s =
+        NurbsSurface::try_new(vec![row(0.0), row(1.0)], vec![vec![1.0; 4]; 2], [ku, kv]).unwrap();
     assert_eq!(s.eval(0.5, 0.5).unwrap(), [0.5, 5.0, 5.0]);
     assert_eq!(s.eval(1.0, 1.0).unwrap(), [1.0, 6.0, 5.0]);
     let before = s.eval(0.5, 0.5 - 1e-12).unwrap();
@@ -101,25 +110,49 @@ fn full_multiplicity_knot_takes_the_value_from_the_right() {
 fn errors_name_the_direction_and_the_net_place() {
     let s = wavy();
     let e = s.eval(0.5, 2.5).unwrap_err();
-    assert_eq!(e.to_string(), "parameter v = 2.5 is outside the domain [-1, 2]");
-    assert!(matches!(s.eval(f64::NAN, 0.0), Err(Error::InDirection { direction: Direction::U, .. })));
+    assert_eq!(
+        e.to_string(),
+        "parameter v = 2.5 is outside the domain [-1, 2]"
+    );
+    assert!(matches!(
+        s.eval(f64::NAN, 0.0),
+        Err(Error::InDirection {
+            direction: Direction::U,
+            ..
+        })
+    ));
     let mut net = vec![vec![[0.0; 3]; 2]; 2];
     net[1][0][1] = f64::INFINITY;
     let e = NurbsSurface::try_clamped([1, 1], net.clone(), vec![vec![1.0; 2]; 2]).unwrap_err();
-    assert_eq!(e.to_string(), "points[1][0].y: coordinate = inf is not a finite number");
+    assert_eq!(
+        e.to_string(),
+        "points[1][0].y: coordinate = inf is not a finite number"
+    );
     net[1][0][1] = 2e150;
     let e = NurbsSurface::try_clamped([1, 1], net.clone(), vec![vec![1.0; 2]; 2]).unwrap_err();
-    assert_eq!(e.to_string(), "points[1][0].y: coordinate = 2e150 is outside [-1e150, 1e150]");
+    assert_eq!(
+        e.to_string(),
+        "points[1][0].y: coordinate = 2e150 is outside [-1e150, 1e150]"
+    );
     net[1][0][1] = 0.0;
     let e = NurbsSurface::try_clamped([1, 1], net.clone(), vec![vec![1.0; 2]; 2 + 1]).unwrap_err();
-    assert_eq!(e.to_string(), "weights[2]: expected 2 entries (as points), got 3");
+    assert_eq!(
+        e.to_string(),
+        "weights[2]: expected 2 entries (as points), got 3"
+    );
     let e = NurbsSurface::try_clamped([1, 1], net.clone(), vec![vec![1.0; 2], vec![1e-151, 1.0]])
         .unwrap_err();
-    assert_eq!(e.to_string(), "weights[1][0] = 1e-151 is outside [1e-150, 1e150]");
+    assert_eq!(
+        e.to_string(),
+        "weights[1][0] = 1e-151 is outside [1e-150, 1e150]"
+    );
     let ku = KnotVector::clamped_uniform(1, 3).unwrap();
     let kv = KnotVector::clamped_uniform(1, 2).unwrap();
     let e = NurbsSurface::try_new(net, vec![vec![1.0; 2]; 2], [ku, kv]).unwrap_err();
-    assert_eq!(e.to_string(), "knots.u: knots: expected 4 values (control points + order), got 5");
+    assert_eq!(
+        e.to_string(),
+        "knots.u: knots: expected 4 values (control points + order), got 5"
+    );
 }
 
 #[test]
@@ -128,17 +161,34 @@ fn derivatives_match_the_isocurves_and_central_differences() {
     for (u, v) in [(0.1, -0.5), (0.55, 0.7), (0.9, 1.8), (0.4, 0.5)] {
         let d = s.derivatives(u, v, 3).unwrap();
         let p = s.eval(u, v).unwrap();
-        assert!(d[0][0].iter().zip(&p).all(|(x, y)| (x - y).abs() < 1e-14), "{d:?} {p:?}");
+        assert!(
+            d[0][0].iter().zip(&p).all(|(x, y)| (x - y).abs() < 1e-14),
+            "{d:?} {p:?}"
+        );
         // Pure derivatives in v are those of the isocurve at u, and in u those
         // of the isocurve at v (an independent path: curve A3.2 + A4.2).
-        let cv = s.isocurve(Direction::U, u).unwrap().derivatives(v, 3).unwrap();
-        let cu = s.isocurve(Direction::V, v).unwrap().derivatives(u, 3).unwrap();
+        let cv = s
+            .isocurve(Direction::U, u)
+            .unwrap()
+            .derivatives(v, 3)
+            .unwrap();
+        let cu = s
+            .isocurve(Direction::V, v)
+            .unwrap()
+            .derivatives(u, 3)
+            .unwrap();
         for k in 0..=3 {
             for c in 0..3 {
                 let scale = 1.0 + cv[k][c].abs();
-                assert!((d[0][k][c] - cv[k][c]).abs() < 1e-11 * scale, "S_v^{k} at ({u}, {v})");
+                assert!(
+                    (d[0][k][c] - cv[k][c]).abs() < 1e-11 * scale,
+                    "S_v^{k} at ({u}, {v})"
+                );
                 let scale = 1.0 + cu[k][c].abs();
-                assert!((d[k][0][c] - cu[k][c]).abs() < 1e-11 * scale, "S_u^{k} at ({u}, {v})");
+                assert!(
+                    (d[k][0][c] - cu[k][c]).abs() < 1e-11 * scale,
+                    "S_u^{k} at ({u}, {v})"
+                );
             }
         }
         // Mixed derivatives by central differences of the u-derivative in v.
@@ -149,10 +199,18 @@ fn derivatives_match_the_isocurves_and_central_differences() {
         );
         for c in 0..3 {
             let fd = (b[1][0][c] - a[1][0][c]) / (2.0 * h);
-            assert!((d[1][1][c] - fd).abs() < 1e-5 * (1.0 + fd.abs()), "S_uv {fd} {:?}", d[1][1]);
+            assert!(
+                (d[1][1][c] - fd).abs() < 1e-5 * (1.0 + fd.abs()),
+                "S_uv {fd} {:?}",
+                d[1][1]
+            );
             // S_uvv jumps at the knot v = 0.5 (degree 2, C¹ there).
             let fd = (b[1][1][c] - a[1][1][c]) / (2.0 * h);
-            assert!(v == 0.5 || (d[1][2][c] - fd).abs() < 1e-4 * (1.0 + fd.abs()), "S_uvv {fd} {:?}", d[1][2]);
+            assert!(
+                v == 0.5 || (d[1][2][c] - fd).abs() < 1e-4 * (1.0 + fd.abs()),
+                "S_uvv {fd} {:?}",
+                d[1][2]
+            );
         }
     }
 }
@@ -164,14 +222,20 @@ fn isocurves_equal_the_surface() {
         let c: NurbsCurve<3> = s.isocurve(Direction::U, t).unwrap();
         for v in s.domain(Direction::V).uniform(31) {
             let (a, b) = (c.eval(v).unwrap(), s.eval(t, v).unwrap());
-            assert!(a.iter().zip(&b).all(|(x, y)| (x - y).abs() < 1e-13), "{t} {v}");
+            assert!(
+                a.iter().zip(&b).all(|(x, y)| (x - y).abs() < 1e-13),
+                "{t} {v}"
+            );
         }
     }
     for t in [-1.0, 0.5, 1.3, 2.0] {
         let c = s.isocurve(Direction::V, t).unwrap();
         for u in s.domain(Direction::U).uniform(31) {
             let (a, b) = (c.eval(u).unwrap(), s.eval(u, t).unwrap());
-            assert!(a.iter().zip(&b).all(|(x, y)| (x - y).abs() < 1e-13), "{u} {t}");
+            assert!(
+                a.iter().zip(&b).all(|(x, y)| (x - y).abs() < 1e-13),
+                "{u} {t}"
+            );
         }
     }
 }
@@ -185,7 +249,9 @@ fn operations_keep_the_surface() {
         let inserted = s.insert_knot(d, mid, 2).unwrap();
         assert_eq!(inserted.shape()[d.index()], s.shape()[d.index()] + 2);
         assert_same_surface(&s, &inserted, 1e-13);
-        let refined = s.refine_knots(d, &[dom.lerp(0.1), mid, mid, dom.lerp(0.9)]).unwrap();
+        let refined = s
+            .refine_knots(d, &[dom.lerp(0.1), mid, mid, dom.lerp(0.9)])
+            .unwrap();
         assert_same_surface(&s, &refined, 1e-13);
         for times in 1..=2 {
             let e = s.elevate_degree(d, times).unwrap();
@@ -198,7 +264,10 @@ fn operations_keep_the_surface() {
             let t = [u, v][d.index()];
             let piece = if t <= mid { &a } else { &b };
             let (p, q) = (s.eval(u, v).unwrap(), piece.eval(u, v).unwrap());
-            assert!(p.iter().zip(&q).all(|(x, y)| (x - y).abs() < 1e-13), "({u}, {v})");
+            assert!(
+                p.iter().zip(&q).all(|(x, y)| (x - y).abs() < 1e-13),
+                "({u}, {v})"
+            );
         }
         assert!(matches!(
             s.split_at(d, dom.end),
@@ -209,7 +278,10 @@ fn operations_keep_the_surface() {
     for u in [0.2, 0.45, 0.7] {
         for v in [0.0, 0.5, 1.5] {
             let (p, q) = (s.eval(u, v).unwrap(), piece.eval(u, v).unwrap());
-            assert!(p.iter().zip(&q).all(|(x, y)| (x - y).abs() < 1e-13), "({u}, {v})");
+            assert!(
+                p.iter().zip(&q).all(|(x, y)| (x - y).abs() < 1e-13),
+                "({u}, {v})"
+            );
         }
     }
     assert!(s.segment([0.7, 0.2], [0.0, 1.5]).is_err());
