@@ -22,7 +22,7 @@ use crate::pipeline::euclidean_norm;
 ///
 /// - **max**: each span rectangle is scanned on a 17 × 17 grid, and every
 ///   local maximum of the scan (edges and corners included) is refined by
-///   Nelder–Mead on the patch (restarted once), to a simplex of `10⁻¹⁰` of
+///   Nelder–Mead on the patch (restarted once; the rectangle made unconstrained by a change of variables), to a simplex of `10⁻¹⁰` of
 ///   the rectangle. The value of a smooth maximum found so is within about
 ///   `10⁻¹⁶` of the true one (the error is quadratic in the position); the
 ///   result is never below any scan value. As for curves, a peak that is
@@ -129,34 +129,20 @@ fn patch_max<const D: usize>(
         }
         if d > 0.0 && is_local_max(&values, n, k) {
             let minus = |x: [f64; 2]| -norm(x);
-            let (v, x) =
+            // Started again from its result with a small simplex, as is
+            // usual for Nelder–Mead, which can stop on a flattened simplex.
+            let first =
                 nelder_mead_min(minus, grid[k], steps, bounds, tolerance, REFINE_EVALUATIONS);
-            // A restart from the result with a small simplex: Nelder–Mead can
-            // stop early on a flattened simplex.
             let small = [steps[0] / 8.0, steps[1] / 8.0];
-            let (v, x) = nelder_mead_min(minus, x, small, bounds, tolerance, REFINE_EVALUATIONS)
-                .min_by_value((v, x));
+            let again =
+                nelder_mead_min(minus, first.1, small, bounds, tolerance, REFINE_EVALUATIONS);
+            let (v, x) = if again.0 < first.0 { again } else { first };
             if -v > best.0 {
                 best = (-v, x);
             }
         }
     }
     best
-}
-
-/// The better (smaller value) of two results of a minimisation.
-trait MinByValue {
-    fn min_by_value(self, other: Self) -> Self;
-}
-
-impl MinByValue for (f64, [f64; 2]) {
-    fn min_by_value(self, other: Self) -> Self {
-        if other.0 < self.0 {
-            other
-        } else {
-            self
-        }
-    }
 }
 
 /// Whether scan value `k` of an `n × n` grid is a local maximum: above its
