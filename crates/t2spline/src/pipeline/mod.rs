@@ -12,7 +12,7 @@ mod fuzzy_curve;
 mod fuzzy_ops;
 mod fuzzy_surface;
 mod metrics;
-mod point_stages;
+pub(crate) mod point_stages;
 mod stages;
 mod surface_metrics;
 mod surface_stages;

@@ -411,35 +411,50 @@ pub(crate) fn net_weights(weights: &[Vec<f64>], shape: [usize; 2]) -> Result<Vec
             found: weights.len(),
         });
     }
-    let mut out = Vec::with_capacity(shape[0] * shape[1]);
-    for (row, r) in weights.iter().enumerate() {
-        if r.len() != shape[1] {
-            return Err(Error::NetShape {
-                what: "weights",
-                row,
-                reference: "points",
-                expected: shape[1],
-                found: r.len(),
-            });
-        }
-        for (column, &value) in r.iter().enumerate() {
-            let rule = if !(value.is_finite() && value > 0.0) {
-                "must be finite and greater than 0"
-            } else if !(MIN_WEIGHT..=MAX_WEIGHT).contains(&value) {
-                "is outside [1e-150, 1e150]"
-            } else {
-                out.push(value);
-                continue;
-            };
-            return Err(Error::NetWeight {
-                row,
-                column,
-                value,
-                rule,
-            });
-        }
+    if let Some(row) = weights.iter().position(|r| r.len() != shape[1]) {
+        return Err(Error::NetShape {
+            what: "weights",
+            row,
+            reference: "points",
+            expected: shape[1],
+            found: weights[row].len(),
+        });
     }
-    Ok(out)
+    let flat: Vec<f64> = weights.concat();
+    net_weights_flat(&flat, shape)?;
+    Ok(flat)
+}
+
+/// Checks the weights of a net of `shape` given row by row in one list.
+///
+/// # Errors
+/// [`Error::Length`] for a wrong number of weights; [`Error::NetWeight`] for
+/// the first weight that is not finite and positive or outside
+/// [[`MIN_WEIGHT`], [`MAX_WEIGHT`]].
+pub(crate) fn net_weights_flat(weights: &[f64], shape: [usize; 2]) -> Result<(), Error> {
+    if weights.len() != shape[0] * shape[1] {
+        return Err(Error::Length {
+            what: "weights (one per control point of the net)",
+            expected: shape[0] * shape[1],
+            found: weights.len(),
+        });
+    }
+    for (k, &value) in weights.iter().enumerate() {
+        let rule = if !(value.is_finite() && value > 0.0) {
+            "must be finite and greater than 0"
+        } else if !(MIN_WEIGHT..=MAX_WEIGHT).contains(&value) {
+            "is outside [1e-150, 1e150]"
+        } else {
+            continue;
+        };
+        return Err(Error::NetWeight {
+            row: k / shape[1],
+            column: k % shape[1],
+            value,
+            rule,
+        });
+    }
+    Ok(())
 }
 
 /// The non-zero rational basis functions of a surface at `(u, v)`: the
