@@ -1,5 +1,5 @@
 """Runs the peer suite: t2spline against geomdl 5.4.0 and scipy on random
-curves. Prints one line per topic (cases, comparisons, largest relative error
+curves, and against geomdl 5.4.0 and splipy on random surfaces. Prints one line per topic (cases, comparisons, largest relative error
 per peer), every failure, and a closing line `N passed, M failed` (cases).
 Exits with 1 on any mismatch above the tolerance (1e-9 relative).
 
@@ -13,7 +13,18 @@ import sys
 
 from common import build_ours, TOLERANCE
 
-TOPICS = ["test_evaluation", "test_derivatives", "test_knot_insertion", "test_degree_elevation", "test_split"]
+TOPICS = [
+    "test_evaluation",
+    "test_derivatives",
+    "test_knot_insertion",
+    "test_degree_elevation",
+    "test_split",
+    "test_surface_closed_forms",
+    "test_surface_evaluation",
+    "test_surface_derivatives",
+    "test_surface_knot_insertion",
+    "test_surface_degree_elevation",
+]
 
 
 def main():
@@ -27,6 +38,8 @@ def main():
     for name in args.topics:
         topic = importlib.import_module(name).run(random.Random(f"{args.seed}/{name}"), binary)
         print(topic.summary())
+        if getattr(topic, "note", None):
+            print("  note: " + topic.note)
         for line in topic.failures[:20]:
             print("  FAIL " + line)
         failed += len(topic.failed_cases)

@@ -14,25 +14,29 @@ use crate::sampling::Params;
 /// (SPEC §9). A *channel* is one coordinate of one surface: its values `xᵢⱼ`
 /// at the control points, row by row.
 ///
-/// The tensor product is contracted one direction at a time, with the rational
-/// basis in both:
+/// The tensor product is contracted one direction at a time, in homogeneous
+/// form (The NURBS Book Eq. 4.15):
 ///
 /// ```text
-/// per u_a (once per grid row):    Wⱼ = Σᵢ Nᵢ(u_a) wᵢⱼ,   Xᶜⱼ = Σᵢ (Nᵢ(u_a) wᵢⱼ / Wⱼ) xᶜᵢⱼ
+/// per u_a (once per grid row):    Wⱼ = Σᵢ Nᵢ(u_a) wᵢⱼ,   Hᶜⱼ = Σᵢ Nᵢ(u_a) wᵢⱼ xᶜᵢⱼ
 /// per v_b (once per grid column): Mⱼ(v_b)
-/// per (a, b):                     rⱼ = Mⱼ(v_b) Wⱼ / Σₗ Mₗ(v_b) Wₗ,   Sᶜ(u_a, v_b) = Σⱼ rⱼ Xᶜⱼ
+/// per (a, b):                     Sᶜ(u_a, v_b) = Σⱼ Mⱼ(v_b) Hᶜⱼ · 1/Σⱼ Mⱼ(v_b) Wⱼ
 /// ```
-/// The first line is the isoparametric curve at `u_a` (its weights `Wⱼ` and
-/// Cartesian control values `Xᶜⱼ`), the last evaluates it at `v_b`. The basis
-/// in u is computed once per grid row and the basis in v once per grid column,
-/// for all channels; a grid point costs `q + 1` products, a sum and one
-/// division for `rⱼ`, then `q + 1` multiply-adds per channel. Every
-/// coefficient is non-negative and shared by all channels, so channels whose
-/// control values are ordered give ordered values, exactly (no clamping is
-/// needed), and no sum cancels beyond what the control values do (the
-/// accuracy of [`NurbsSurface::eval`](crate::NurbsSurface::eval), whatever the
-/// weights). Spans follow `eval`: from the right at an interior knot, the last
-/// non-empty span at the end of a domain.
+/// The first line is the isoparametric curve at `u_a` (homogeneous control
+/// points `(Hⱼ, Wⱼ)`), the last evaluates it at `v_b`. The basis in u is
+/// computed once per grid row and the basis in v once per grid column, for all
+/// channels; a grid point costs `q + 1` multiply-adds and one division for the
+/// denominator, then `q + 1` multiply-adds and one product per channel. Every
+/// coefficient `Nᵢ wᵢⱼ Mⱼ` is non-negative and shared by all channels, so
+/// channels whose control values are ordered give ordered values, exactly (no
+/// clamping is needed), and no sum cancels beyond what the control values do:
+/// the relative accuracy of [`NurbsSurface::eval`](crate::NurbsSurface::eval)
+/// whatever the weights (tested with weights from 1e-12 to 1e12). As for the
+/// operations on homogeneous coordinates (see `limits.rs`), a coordinate below
+/// 1e-150 multiplied by a weight below 1 keeps an absolute accuracy of about
+/// `1e-308 / weight` rather than its relative one. Spans follow `eval`: from
+/// the right at an interior knot, the last non-empty span at the end of a
+/// domain.
 ///
 /// Output is one vector per channel of `su·sv` values, `[a·sv + b]` for
 /// `(u_a, v_b)` (structure of arrays). With the `parallel` feature, large jobs
@@ -273,29 +277,25 @@ impl GridSampler {
         let (ku, kv) = (&self.knots[0], &self.knots[1]);
         let (p, q) = (ku.degree(), kv.degree());
         let nv = kv.count();
-        let channels = self.channels();
         let mut n = vec![0.0; p + 1];
         let mut w = vec![0.0; nv];
-        let mut x = vec![0.0; channels * nv];
-        let mut r = vec![0.0; (q + 1) * BLOCK];
+        let mut h = vec![0.0; self.channels() * nv];
+        let mut inverse = vec![0.0; BLOCK];
         for (a, &t) in u.iter().enumerate() {
-            // The isoparametric curve at u_a: weights Wⱼ, control values Xᶜⱼ.
+            // The isoparametric curve at u_a in homogeneous form: weights Wⱼ
+            // and Hᶜⱼ = Σᵢ Nᵢ wᵢⱼ xᶜᵢⱼ.
             let span = ku.find_span(t);
             basis_functions(ku.as_slice(), p, span, t, &mut n);
             let first = span - p;
             w.fill(0.0);
-            x.fill(0.0);
-            for (i, ni) in n.iter().enumerate() {
-                for (wj, wij) in w.iter_mut().zip(&self.weights[(first + i) * nv..][..nv]) {
-                    *wj += ni * wij;
-                }
-            }
+            h.fill(0.0);
             for (i, ni) in n.iter().enumerate() {
                 let row = (first + i) * nv;
-                for j in 0..nv {
-                    let c = ni * self.weights[row + j] / w[j];
-                    for (xc, values) in x.chunks_exact_mut(nv).zip(&self.values) {
-                        xc[j] += c * values[row + j];
+                for (j, wj) in w.iter_mut().enumerate() {
+                    let c = ni * self.weights[row + j];
+                    *wj += c;
+                    for (hc, values) in h.chunks_exact_mut(nv).zip(&self.values) {
+                        hc[j] += c * values[row + j];
                     }
                 }
             }
@@ -308,22 +308,23 @@ impl GridSampler {
                     .iter()
                     .take_while(|&&g| g == f)
                     .count();
-                for j in 0..=q {
-                    let m = &columns.basis[j * sv + b..][..len];
-                    for (rj, mj) in r[j * BLOCK..][..len].iter_mut().zip(m) {
-                        *rj = mj * w[f + j];
-                    }
-                }
-                for k in 0..len {
-                    let total: f64 = (0..=q).map(|j| r[j * BLOCK + k]).sum();
-                    let inverse = 1.0 / total;
-                    for j in 0..=q {
-                        r[j * BLOCK + k] *= inverse;
-                    }
+                let basis: Vec<&[f64]> = (0..=q)
+                    .map(|j| &columns.basis[j * sv + b..][..len])
+                    .collect();
+                let inverse = &mut inverse[..len];
+                combine(&basis, &w[f..f + q + 1], inverse);
+                for r in inverse.iter_mut() {
+                    // Σⱼ Mⱼ Wⱼ > 0: as for evaluation, some Mⱼ ≥ 1/(q + 1) and
+                    // every Wⱼ is at least the least weight.
+                    *r = 1.0 / *r;
                 }
                 let at = a * sv + b;
-                for (xc, o) in x.chunks_exact(nv).zip(out.iter_mut()) {
-                    combine(q + 1, &r, &xc[f..f + q + 1], &mut o[at..at + len]);
+                for (hc, o) in h.chunks_exact(nv).zip(out.iter_mut()) {
+                    let o = &mut o[at..at + len];
+                    combine(&basis, &hc[f..f + q + 1], o);
+                    for (o, r) in o.iter_mut().zip(inverse.iter()) {
+                        *o *= r;
+                    }
                 }
                 b += len;
             }
@@ -331,34 +332,34 @@ impl GridSampler {
     }
 }
 
-/// `o[k] = Σⱼ r[j·BLOCK + k]·x[j]` for every `k`, with the number of terms
-/// `order` fixed at compile time for orders 1–8 (so that the loop over `k`
-/// vectorises) and the same operations in the same order otherwise.
-fn combine(order: usize, r: &[f64], x: &[f64], o: &mut [f64]) {
-    match order {
-        1 => combine_fixed::<1>(r, x, o),
-        2 => combine_fixed::<2>(r, x, o),
-        3 => combine_fixed::<3>(r, x, o),
-        4 => combine_fixed::<4>(r, x, o),
-        5 => combine_fixed::<5>(r, x, o),
-        6 => combine_fixed::<6>(r, x, o),
-        7 => combine_fixed::<7>(r, x, o),
-        8 => combine_fixed::<8>(r, x, o),
+/// `o[k] = Σⱼ basis[j][k]·x[j]` for every `k`, with the number of terms fixed
+/// at compile time for orders 1–8 (so that the loop over `k` vectorises) and
+/// the same operations in the same order otherwise.
+fn combine(basis: &[&[f64]], x: &[f64], o: &mut [f64]) {
+    match basis.len() {
+        1 => combine_fixed::<1>(basis, x, o),
+        2 => combine_fixed::<2>(basis, x, o),
+        3 => combine_fixed::<3>(basis, x, o),
+        4 => combine_fixed::<4>(basis, x, o),
+        5 => combine_fixed::<5>(basis, x, o),
+        6 => combine_fixed::<6>(basis, x, o),
+        7 => combine_fixed::<7>(basis, x, o),
+        8 => combine_fixed::<8>(basis, x, o),
         _ => {
             for (k, o) in o.iter_mut().enumerate() {
-                *o = x
+                *o = basis
                     .iter()
-                    .enumerate()
-                    .fold(0.0, |acc, (j, xj)| acc + r[j * BLOCK + k] * xj);
+                    .zip(x)
+                    .fold(0.0, |acc, (m, xj)| acc + m[k] * xj);
             }
         }
     }
 }
 
 #[inline(always)]
-fn combine_fixed<const K: usize>(r: &[f64], x: &[f64], o: &mut [f64]) {
+fn combine_fixed<const K: usize>(basis: &[&[f64]], x: &[f64], o: &mut [f64]) {
     let x: [f64; K] = std::array::from_fn(|j| x[j]);
-    let rows: [&[f64]; K] = std::array::from_fn(|j| &r[j * BLOCK..][..o.len()]);
+    let rows: [&[f64]; K] = std::array::from_fn(|j| &basis[j][..o.len()]);
     for (k, o) in o.iter_mut().enumerate() {
         let mut acc = 0.0;
         for j in 0..K {
