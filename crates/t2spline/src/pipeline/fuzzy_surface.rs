@@ -343,3 +343,41 @@ fn rebuild<const D: usize>(
         worst,
     ))
 }
+
+#[cfg(test)]
+mod tests {
+    use proptest::prelude::*;
+
+    use super::*;
+    use crate::strategies;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        /// Insertion and splitting keep the seven values ordered bit for bit
+        /// (nothing to repair); elevation repairs at most rounding (the bound
+        /// of `strategies::elevation_tolerance`), as for curves.
+        #[test]
+        fn the_order_needs_no_repair_beyond_rounding(
+            s in strategies::fuzzy_surface_common_height::<3>(), d in 0usize..2, at in 0.05..0.95f64,
+        ) {
+            let direction = Direction::BOTH[d];
+            let k = s.knots(direction).clone();
+            let t = k.domain().lerp(at);
+            let room = k.degree() + 1 - k.multiplicity(t);
+            let (_, worst) = s.map_rows(direction, |k, r| insert(k, r, t, room.min(2))).unwrap();
+            prop_assert_eq!(worst, 0.0);
+            let (a, b) = (k.domain().start, k.domain().end);
+            let (_, worst) = s.map_rows(direction, |k, r| segment(k, r, a, t.max(a + (b - a) / 4.0))).unwrap();
+            prop_assert_eq!(worst, 0.0);
+            let scale = s
+                .points()
+                .iter()
+                .flat_map(|p| Layer::ALL.map(|l| p.layer(l)))
+                .flatten()
+                .fold(1.0, |m: f64, x| m.max(x.abs()));
+            let (_, worst) = s.map_rows(direction, |k, r| Ok(elevate(k, r, 1))).unwrap();
+            prop_assert!(worst <= strategies::elevation_tolerance(&k, s.weights(), scale), "{}", worst);
+        }
+    }
+}

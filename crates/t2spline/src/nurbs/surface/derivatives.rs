@@ -153,7 +153,9 @@ impl NurbsSurface<3> {
         };
         let (hu, hv) = (span(Direction::U, u), span(Direction::V, v));
         let size = self.net_size();
-        if !(length * hu * hv > 1e-14 * size * size) {
+        // NaN (never expected) counts as singular too.
+        let ok = length * hu * hv > 1e-14 * size * size;
+        if !ok {
             return Err(Error::SingularNormal { u, v });
         }
         Ok(cross.map(|x| x / length))
