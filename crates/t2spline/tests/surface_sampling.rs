@@ -10,14 +10,8 @@ use t2spline::{strategies, Alpha, Direction, KnotVector, Layer, NurbsSurface, Si
 
 const TOL: f64 = 1e-12;
 
-fn probes(knots: &KnotVector, fractions: &[f64]) -> Vec<f64> {
-    let d = knots.domain();
-    let mut t: Vec<f64> = fractions.iter().map(|&s| d.lerp(s)).collect();
-    t.extend([d.start, d.end]);
-    t.extend(knots.as_slice().iter().filter(|&&u| d.contains(u)));
-    t.sort_by(f64::total_cmp);
-    t
-}
+mod probes;
+use probes::probes;
 
 fn fractions() -> impl Strategy<Value = Vec<f64>> {
     proptest::collection::vec(0.0..=1.0f64, 0..12)

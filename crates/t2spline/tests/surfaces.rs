@@ -4,21 +4,11 @@
 
 use proptest::prelude::*;
 use t2spline::{
-    strategies, Alpha, Direction, FuzzySurface, KnotVector, Layer, Nt2Number, Nt2Point,
-    NurbsSurface, Side,
+    strategies, Alpha, Direction, FuzzySurface, Layer, Nt2Number, Nt2Point, NurbsSurface, Side,
 };
 
-/// Parameters of one direction that probe a surface: both ends, every knot in
-/// the domain, and fractions of it.
-fn probes(knots: &KnotVector, fractions: &[f64]) -> Vec<f64> {
-    let d = knots.domain();
-    let mut t: Vec<f64> = fractions.iter().map(|&s| d.lerp(s)).collect();
-    t.extend([d.start, d.end]);
-    t.extend(knots.as_slice().iter().filter(|&&u| d.contains(u)));
-    t.sort_by(f64::total_cmp);
-    t.dedup();
-    t
-}
+mod probes;
+use probes::probes;
 
 fn fractions() -> impl Strategy<Value = Vec<f64>> {
     proptest::collection::vec(0.0..=1.0f64, 1..5)

@@ -7,8 +7,7 @@ use crate::fuzzy::{Alpha, Height, Layer, Layers, Nt2Number, Nt2Point};
 use crate::nurbs::degree_elevation::{check_elevation, elevate};
 use crate::nurbs::knot_insertion::{insert, refine};
 use crate::nurbs::net::{check_rows, Row};
-use crate::nurbs::split::segment;
-use crate::nurbs::surface::operations::{check_piece, isocurve_rows, map_net, split_net, RowNet};
+use crate::nurbs::surface::operations::{isocurve_rows, map_net, segment_net, split_net, RowNet};
 use crate::nurbs::surface::{check_params, knots_in, net_shape, net_weights, TensorBasis};
 use crate::nurbs::{Direction, Domain, KnotVector, NurbsSurface};
 use crate::pipeline::fuzzy_ops::{common_heights, from_stacked_rows, stacked_rows};
@@ -312,17 +311,9 @@ impl<const D: usize> FuzzySurface<D> {
     /// # Errors
     /// As `NurbsSurface::segment`, and [`Error::MixedHeights`].
     pub fn segment(&self, u: [f64; 2], v: [f64; 2]) -> Result<Self, Error> {
-        for (direction, range) in Direction::BOTH.into_iter().zip([u, v]) {
-            check_piece(self.knots(direction), range, direction)?;
-        }
         let heights = self.common_heights()?;
         let rows = stacked_rows(&self.points, &self.weights);
-        let net = map_net((&self.knots, &rows), Direction::U, |k, r| {
-            segment(k, r, u[0], u[1])
-        })?;
-        let net = map_net((&net.0, &net.1), Direction::V, |k, r| {
-            segment(k, r, v[0], v[1])
-        })?;
+        let net = segment_net((&self.knots, &rows), u, v)?;
         Ok(rebuild(net, heights)?.0)
     }
 }
@@ -349,6 +340,7 @@ mod tests {
     use proptest::prelude::*;
 
     use super::*;
+    use crate::nurbs::split::segment;
     use crate::strategies;
 
     proptest! {

@@ -6,6 +6,7 @@ use crate::nurbs::basis::basis_functions;
 use crate::nurbs::surface::net_weights_flat;
 use crate::nurbs::{Direction, KnotVector};
 use crate::sampling::kernel::BLOCK;
+use crate::sampling::sampler::{check_outputs, outputs};
 use crate::sampling::Params;
 
 /// Evaluates many rational B-spline surfaces that share knots `[U, V]` and a
@@ -164,15 +165,7 @@ impl GridSampler {
         let (u, v) = (u.into(), v.into());
         self.check(u, v)?;
         let n = u.len() * v.len();
-        let mut out: Vec<Vec<f64>> = (0..self.channels())
-            .map(|_| match buffers.pop() {
-                Some(mut b) => {
-                    b.resize(n, 0.0);
-                    b
-                }
-                None => vec![0.0; n],
-            })
-            .collect();
+        let mut out = outputs(self.channels(), n, buffers);
         let mut slices: Vec<&mut [f64]> = out.iter_mut().map(Vec::as_mut_slice).collect();
         self.run(u, v, &mut slices);
         Ok(out)
@@ -191,21 +184,13 @@ impl GridSampler {
         out: &mut [&mut [f64]],
     ) -> Result<(), Error> {
         let (u, v) = (u.into(), v.into());
-        if out.len() != self.channels() {
-            return Err(Error::Length {
-                what: "output slices (one per channel)",
-                expected: self.channels(),
-                found: out.len(),
-            });
-        }
         let n = u.len() * v.len();
-        if let Some(o) = out.iter().find(|o| o.len() != n) {
-            return Err(Error::Length {
-                what: "output values (one per grid point)",
-                expected: n,
-                found: o.len(),
-            });
-        }
+        check_outputs(
+            out,
+            self.channels(),
+            n,
+            "output values (one per grid point)",
+        )?;
         self.check(u, v)?;
         self.run(u, v, out);
         Ok(())

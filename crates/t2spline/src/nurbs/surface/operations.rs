@@ -106,11 +106,7 @@ pub(crate) fn isocurve_rows(
 }
 
 /// Checks `a < b`, both in the domain of `knots`, for a piece in `direction`.
-pub(crate) fn check_piece(
-    knots: &KnotVector,
-    [a, b]: [f64; 2],
-    direction: Direction,
-) -> Result<(), Error> {
+fn check_piece(knots: &KnotVector, [a, b]: [f64; 2], direction: Direction) -> Result<(), Error> {
     let domain = knots.domain();
     let check = || {
         domain.check(a)?;
@@ -125,6 +121,27 @@ pub(crate) fn check_piece(
         Ok(())
     };
     check().map_err(|e| e.in_direction(direction))
+}
+
+/// The piece of a net over `[u₀, u₁] × [v₀, v₁]`, clamped in both directions.
+///
+/// # Errors
+/// [`Error::InDirection`] wrapping [`Error::OutOfDomain`] or
+/// [`Error::SplitOutside`] for a bad range.
+pub(crate) fn segment_net(
+    (knots, rows): (&[KnotVector; 2], &[Row]),
+    u: [f64; 2],
+    v: [f64; 2],
+) -> Result<RowNet, Error> {
+    for (direction, range) in Direction::BOTH.into_iter().zip([u, v]) {
+        check_piece(&knots[direction.index()], range, direction)?;
+    }
+    let net = map_net((knots, rows), Direction::U, |k, r| {
+        segment(k, r, u[0], u[1])
+    })?;
+    map_net((&net.0, &net.1), Direction::V, |k, r| {
+        segment(k, r, v[0], v[1])
+    })
 }
 
 /// The two nets of a net split at `t` in `direction`.
@@ -316,16 +333,7 @@ impl<const D: usize> NurbsSurface<D> {
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn segment(&self, u: [f64; 2], v: [f64; 2]) -> Result<Self, Error> {
-        for (direction, range) in Direction::BOTH.into_iter().zip([u, v]) {
-            check_piece(self.knots(direction), range, direction)?;
-        }
-        let rows = self.rows();
-        let net = map_net((&self.knots, &rows), Direction::U, |k, r| {
-            segment(k, r, u[0], u[1])
-        })?;
-        let net = map_net((&net.0, &net.1), Direction::V, |k, r| {
-            segment(k, r, v[0], v[1])
-        })?;
+        let net = segment_net((&self.knots, &self.rows()), u, v)?;
         Self::try_from_net(net, "splitting")
     }
 }
