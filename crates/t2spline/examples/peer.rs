@@ -15,14 +15,27 @@
 //! | `elevate` | `times` | `curve` |
 //! | `split` | `t` | `pieces`: two curves |
 //!
-//! A curve is `{"degree", "knots", "points", "weights"}`. A case that fails
-//! gives `{"error": message}`. To add an operation, add an arm to `run` and a
-//! script in `peer/`.
+//! A curve is `{"degree", "knots", "points", "weights"}`.
+//!
+//! Surface cases (3-D) have `"degree": [p, q]`, `"knots": [U, V]`,
+//! `"points": [[[x, y, z], …], …]` (`points[i][j]`, `i` along u) and
+//! `"weights"` of the same shape, and the operations
+//!
+//! | op | extra keys | result keys |
+//! |---|---|---|
+//! | `surface_derivatives` | `params` (pairs `[u, v]`), `order` | `derivatives`: per pair, `d[k][l]` for `k + l ≤ order` |
+//! | `surface_insert` | `direction` (`"u"`/`"v"`), `knot`, `times` | `surface` |
+//! | `surface_refine` | `direction`, `new_knots` | `surface` |
+//! | `surface_elevate` | `direction`, `times` | `surface` |
+//! | `surface_split` | `direction`, `t` | `pieces`: two surfaces |
+//!
+//! A case that fails gives `{"error": message}`. To add an operation, add an
+//! arm to `run` (or `run_surface`) and a script in `peer/`.
 
 use std::io::Read;
 
 use serde_json::{json, Value};
-use t2spline::{KnotVector, NurbsCurve};
+use t2spline::{Direction, KnotVector, NurbsCurve, NurbsSurface};
 
 type Outcome = Result<Value, String>;
 
@@ -124,6 +137,128 @@ fn run<const D: usize>(case: &Value) -> Outcome {
     })
 }
 
+fn pair(v: &Value, key: &str) -> Result<[usize; 2], String> {
+    let a = v
+        .as_array()
+        .ok_or_else(|| format!("`{key}` is not a pair"))?;
+    let get = |k: usize| a.get(k).and_then(Value::as_u64).map(|x| x as usize);
+    match (a.len(), get(0), get(1)) {
+        (2, Some(p), Some(q)) => Ok([p, q]),
+        _ => Err(format!("`{key}` is not a pair of counts")),
+    }
+}
+
+fn surface(case: &Value) -> Result<NurbsSurface<3>, String> {
+    let degree = pair(field(case, "degree")?, "degree")?;
+    let rows = |key: &str| -> Result<Vec<Vec<Value>>, String> {
+        field(case, key)?
+            .as_array()
+            .ok_or_else(|| format!("`{key}` is not a list"))?
+            .iter()
+            .map(|r| {
+                r.as_array()
+                    .cloned()
+                    .ok_or_else(|| format!("`{key}` holds a non-list"))
+            })
+            .collect()
+    };
+    let points = rows("points")?
+        .iter()
+        .map(|r| {
+            r.iter()
+                .map(|p| {
+                    let v = numbers(p, "points[i][j]")?;
+                    <[f64; 3]>::try_from(v)
+                        .map_err(|_| "a point does not have 3 coordinates".to_owned())
+                })
+                .collect::<Result<Vec<_>, _>>()
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    let weights = rows("weights")?
+        .iter()
+        .map(|r| numbers(&Value::Array(r.clone()), "weights[i]"))
+        .collect::<Result<Vec<_>, _>>()?;
+    let knots = field(case, "knots")?
+        .as_array()
+        .ok_or("`knots` is not a list")?;
+    if knots.len() != 2 {
+        return Err("`knots` needs two lists".to_owned());
+    }
+    let shape = [points.len(), points.first().map_or(0, Vec::len)];
+    let make = |k: usize| {
+        KnotVector::try_new(numbers(&knots[k], "knots")?, degree[k], shape[k])
+            .map_err(|e| e.to_string())
+    };
+    NurbsSurface::try_new(points, weights, [make(0)?, make(1)?]).map_err(|e| e.to_string())
+}
+
+fn surface_json(s: &NurbsSurface<3>) -> Value {
+    let [_, nv] = s.shape();
+    json!({
+        "degree": s.degree(),
+        "knots": [s.knots(Direction::U).as_slice(), s.knots(Direction::V).as_slice()],
+        "points": s.control_points().chunks(nv).map(lists).collect::<Vec<_>>(),
+        "weights": s.weights().chunks(nv).collect::<Vec<_>>(),
+    })
+}
+
+fn direction(case: &Value) -> Result<Direction, String> {
+    match field(case, "direction")?.as_str() {
+        Some("u") => Ok(Direction::U),
+        Some("v") => Ok(Direction::V),
+        _ => Err("`direction` is not \"u\" or \"v\"".to_owned()),
+    }
+}
+
+fn run_surface(case: &Value, op: &str) -> Outcome {
+    let s = surface(case)?;
+    let error = |e: t2spline::Error| e.to_string();
+    Ok(match op {
+        "surface_derivatives" => {
+            let order = usize_field(case, "order")?;
+            let params = field(case, "params")?
+                .as_array()
+                .ok_or("`params` is not a list")?;
+            let ders = params
+                .iter()
+                .map(|uv| {
+                    let uv = numbers(uv, "params[i]")?;
+                    let d = s.derivatives(uv[0], uv[1], order).map_err(error)?;
+                    Ok(d.iter().map(|row| lists(row)).collect::<Vec<_>>())
+                })
+                .collect::<Result<Vec<_>, String>>()?;
+            json!({ "derivatives": ders })
+        }
+        "surface_insert" => {
+            let d = s
+                .insert_knot(
+                    direction(case)?,
+                    f64_field(case, "knot")?,
+                    usize_field(case, "times")?,
+                )
+                .map_err(error)?;
+            json!({ "surface": surface_json(&d) })
+        }
+        "surface_refine" => {
+            let new = numbers(field(case, "new_knots")?, "new_knots")?;
+            json!({ "surface": surface_json(&s.refine_knots(direction(case)?, &new).map_err(error)?) })
+        }
+        "surface_elevate" => {
+            let d = s
+                .elevate_degree(direction(case)?, usize_field(case, "times")?)
+                .map_err(error)?;
+            json!({ "surface": surface_json(&d) })
+        }
+        "surface_split" => {
+            let [a, b] = s
+                .split_at(direction(case)?, f64_field(case, "t")?)
+                .map_err(error)?;
+            json!({ "pieces": [surface_json(&a), surface_json(&b)] })
+        }
+        other => return Err(format!("unknown op `{other}`")),
+    })
+}
+
 fn dimension(case: &Value) -> Option<usize> {
     case.get("points")?.get(0)?.as_array().map(Vec::len)
 }
@@ -139,7 +274,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let results: Vec<Value> = cases
         .iter()
         .map(|case| {
+            let op = case.get("op").and_then(Value::as_str).unwrap_or("");
             let outcome = match dimension(case) {
+                _ if op.starts_with("surface_") => run_surface(case, op),
                 Some(2) => run::<2>(case),
                 Some(3) => run::<3>(case),
                 _ => Err("points must have 2 or 3 coordinates".to_owned()),

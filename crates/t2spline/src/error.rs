@@ -8,15 +8,18 @@ use std::fmt;
 
 use crate::fuzzy::Axis;
 
-/// Where in a list of fuzzy points a fault was found.
+/// Where in a list (or a net) of fuzzy points a fault was found.
 ///
-/// Displayed as a JSON-like path with a trailing `": "`, e.g. `points[2].y: `, or
-/// as nothing at all when the place is unknown. Indices are 0-based, as in the
-/// `points` array of a job file.
+/// Displayed as a JSON-like path with a trailing `": "`, e.g. `points[2].y: `
+/// for a curve, `points[2][1].y: ` for the net of a surface (row `2` along u,
+/// column `1` along v), or as nothing at all when the place is unknown.
+/// Indices are 0-based, as in the `points` array of a job file.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Place {
-    /// Index of the point (0-based), if known.
+    /// Index of the point (0-based), if known; in a net, the row.
     pub point: Option<usize>,
+    /// In a net of a surface, the column within the row.
+    pub column: Option<usize>,
     /// Coordinate within the point, if known.
     pub axis: Option<Axis>,
 }
@@ -25,6 +28,7 @@ impl Place {
     /// No place known.
     pub const NONE: Place = Place {
         point: None,
+        column: None,
         axis: None,
     };
 
@@ -33,6 +37,22 @@ impl Place {
     pub fn new(point: usize, axis: Axis) -> Self {
         Place {
             point: Some(point),
+            column: None,
+            axis: Some(axis),
+        }
+    }
+
+    /// The place `points[row][column].axis` in the net of a surface.
+    ///
+    /// ```
+    /// # use t2spline::{Axis, Place};
+    /// assert_eq!(Place::in_net(2, 1, Axis::Y).to_string(), "points[2][1].y: ");
+    /// ```
+    #[must_use]
+    pub fn in_net(row: usize, column: usize, axis: Axis) -> Self {
+        Place {
+            point: Some(row),
+            column: Some(column),
             axis: Some(axis),
         }
     }
@@ -40,11 +60,19 @@ impl Place {
 
 impl fmt::Display for Place {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match (self.point, self.axis) {
-            (Some(i), Some(a)) => write!(f, "points[{i}].{a}: "),
-            (Some(i), None) => write!(f, "points[{i}]: "),
-            (None, Some(a)) => write!(f, "{a}: "),
-            (None, None) => Ok(()),
+        if let Some(i) = self.point {
+            write!(f, "points[{i}]")?;
+            if let Some(j) = self.column {
+                write!(f, "[{j}]")?;
+            }
+            return match self.axis {
+                Some(a) => write!(f, ".{a}: "),
+                None => write!(f, ": "),
+            };
+        }
+        match self.axis {
+            Some(a) => write!(f, "{a}: "),
+            None => Ok(()),
         }
     }
 }
@@ -698,9 +726,129 @@ pub enum Error {
         /// The value computed.
         value: f64,
     },
+    /// A rule of one parameter direction of a surface is broken (SPEC §9):
+    /// `inner` is the error the same rule gives for a curve, `direction` says
+    /// whether it concerns `u` (rows of the net, `knots.u`) or `v` (columns,
+    /// `knots.v`). The message names the place in the surface's terms.
+    ///
+    /// ```
+    /// # use t2spline::{Direction, Error, NurbsSurface};
+    /// let net = vec![vec![[0.0, 0.0, 0.0], [0.0, 1.0, 0.0]], vec![[1.0, 0.0, 0.0], [1.0, 1.0, 1.0]]];
+    /// let e = NurbsSurface::try_clamped([1, 2], net, vec![vec![1.0; 2]; 2]).unwrap_err();
+    /// assert!(matches!(&e, Error::InDirection { direction: Direction::V, .. }));
+    /// assert_eq!(e.to_string(), "points: a surface of order 3 in v needs at least 3 control points along v, got 2");
+    /// ```
+    #[error("{}", in_direction(*direction, inner))]
+    InDirection {
+        /// The parameter direction.
+        direction: crate::nurbs::Direction,
+        /// The rule broken, as for a curve in that direction.
+        inner: Box<Error>,
+    },
+
+    /// The rows of a surface's net (of points or of weights) differ in length.
+    ///
+    /// ```
+    /// # use t2spline::{Error, NurbsSurface};
+    /// let net = vec![vec![[0.0, 0.0, 0.0], [0.0, 1.0, 0.0]], vec![[1.0, 0.0, 0.0]]];
+    /// let e = NurbsSurface::try_clamped([1, 1], net, vec![vec![1.0; 2]; 2]).unwrap_err();
+    /// assert_eq!(e.to_string(), "points[1]: expected 2 entries (as points[0]), got 1");
+    /// ```
+    #[error("{what}[{row}]: expected {expected} entries (as {reference}), got {found}")]
+    NetShape {
+        /// `"points"` or `"weights"`.
+        what: &'static str,
+        /// The row (0-based, along u).
+        row: usize,
+        /// What it is measured against (`"points[0]"`, `"points"`).
+        reference: &'static str,
+        /// The length needed.
+        expected: usize,
+        /// The length given.
+        found: usize,
+    },
+
+    /// A weight of a surface's net is not finite and positive, or outside
+    /// [[`MIN_WEIGHT`](crate::MIN_WEIGHT), [`MAX_WEIGHT`](crate::MAX_WEIGHT)].
+    ///
+    /// ```
+    /// # use t2spline::{Error, NurbsSurface};
+    /// let net = vec![vec![[0.0, 0.0, 0.0], [0.0, 1.0, 0.0]], vec![[1.0, 0.0, 0.0], [1.0, 1.0, 1.0]]];
+    /// let e = NurbsSurface::try_clamped([1, 1], net, vec![vec![1.0, 1.0], vec![1.0, -2.0]]).unwrap_err();
+    /// assert_eq!(e.to_string(), "weights[1][1] = -2 must be finite and greater than 0");
+    /// ```
+    #[error("weights[{row}][{column}] = {} {rule}", Num(*value))]
+    NetWeight {
+        /// The row (0-based, along u).
+        row: usize,
+        /// The column (0-based, along v).
+        column: usize,
+        /// The offending value.
+        value: f64,
+        /// The rule broken, as text.
+        rule: &'static str,
+    },
+
+    /// A surface has no normal here: its partial derivatives `S_u` and `S_v`
+    /// are parallel or zero (at a pole, a cusp or a degenerate edge).
+    ///
+    /// ```
+    /// # use t2spline::{Error, NurbsSurface};
+    /// // A bilinear patch with one edge collapsed to a point: S_v = 0 along u = 0.
+    /// let net = vec![vec![[0.0, 0.0, 0.0], [0.0, 0.0, 0.0]], vec![[1.0, 0.0, 0.0], [1.0, 1.0, 0.0]]];
+    /// let s = NurbsSurface::try_clamped([1, 1], net, vec![vec![1.0; 2]; 2])?;
+    /// assert!(matches!(s.normal(0.0, 0.5), Err(Error::SingularNormal { .. })));
+    /// assert!(s.normal(0.5, 0.5).is_ok());
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("the normal at (u, v) = ({}, {}) is undefined: the partial derivatives are parallel or zero there", Num(*u), Num(*v))]
+    SingularNormal {
+        /// The parameter u.
+        u: f64,
+        /// The parameter v.
+        v: f64,
+    },
+}
+
+/// The message of [`Error::InDirection`]: the curve rule in the surface's words.
+fn in_direction(direction: crate::nurbs::Direction, inner: &Error) -> String {
+    let d = direction;
+    match inner {
+        Error::TooFewControlPoints { order, count } => format!(
+            "points: a surface of order {order} in {d} needs at least {order} control points along {d}, got {count}"
+        ),
+        Error::KnotCount { .. }
+        | Error::KnotNotFinite { .. }
+        | Error::KnotOutOfRange { .. }
+        | Error::KnotDecreasing { .. }
+        | Error::KnotMultiplicity { .. }
+        | Error::EmptyDomain { .. } => format!("knots.{d}: {inner}"),
+        Error::OutOfDomain { t, start, end } => format!(
+            "parameter {d} = {} is outside the domain [{}, {}]",
+            Num(*t),
+            Num(*start),
+            Num(*end)
+        ),
+        Error::SplitOutside { t, start, end } => format!(
+            "cannot split at {d} = {}: it must lie strictly inside the domain ({}, {})",
+            Num(*t),
+            Num(*start),
+            Num(*end)
+        ),
+        other => format!("in {d}: {other}"),
+    }
 }
 
 impl Error {
+    /// The same error as a rule of `direction` of a surface
+    /// ([`Error::InDirection`]).
+    pub(crate) fn in_direction(self, direction: crate::nurbs::Direction) -> Self {
+        Error::InDirection {
+            direction,
+            inner: Box::new(self),
+        }
+    }
+
     /// Returns the same error, located at `place` if it carries a place.
     #[must_use]
     pub fn at(self, place: Place) -> Self {

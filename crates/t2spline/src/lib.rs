@@ -66,12 +66,14 @@
 //!   `strategies`).
 
 pub mod bench;
+mod cubature;
 mod error;
 pub mod fit;
 pub mod fuzzy;
 mod golden_section;
 pub mod job;
 mod limits;
+mod nelder_mead;
 pub mod nurbs;
 pub mod pipeline;
 pub mod sampling;
@@ -84,5 +86,9 @@ pub use fuzzy::{
     Nt2Point2, Nt2Point3, Tfn,
 };
 pub use limits::{MAX_MAGNITUDE, MAX_WEIGHT, MIN_WEIGHT};
-pub use nurbs::{BoundingBox, ClosestPoint, Domain, KnotVector, NurbsCurve};
-pub use pipeline::{Distance, FuzzyCurve, Side, Solution};
+pub use nurbs::{
+    BoundingBox, ClosestPoint, Direction, Domain, KnotVector, NurbsCurve, NurbsSurface,
+};
+pub use pipeline::{
+    Distance, FuzzyCurve, FuzzySurface, Side, Solution, SurfaceDistance, SurfaceSolution,
+};

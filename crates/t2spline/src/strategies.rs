@@ -3,7 +3,7 @@
 
 use proptest::prelude::*;
 
-use crate::{FuzzyCurve, KnotVector, Nt2Number, Nt2Point, NurbsCurve};
+use crate::{FuzzyCurve, FuzzySurface, KnotVector, Nt2Number, Nt2Point, NurbsCurve, NurbsSurface};
 
 /// A lower height: often 1 or a round value, otherwise anything in `(0, 1]`.
 pub fn height() -> impl Strategy<Value = f64> + Clone {
@@ -266,4 +266,76 @@ pub fn elevation_tolerance(knots: &KnotVector, weights: &[f64], scale: f64) -> f
             (lo.min(w), hi.max(w))
         });
     64.0 * f64::EPSILON * scale * (w_max / w_min) * (d.end - d.start) / min_gap
+}
+
+/// The shape of one direction of a surface: degree 1–4, `degree + 1` to
+/// `degree + 4` control points, and knots as [`knots`] (clamped or not,
+/// repeated up to full multiplicity).
+fn direction_shape() -> impl Strategy<Value = (usize, usize, Vec<f64>)> {
+    (1usize..=4, 0usize..=3).prop_flat_map(|(degree, extra)| {
+        let count = degree + 1 + extra;
+        (Just(degree), Just(count), knots(degree, count))
+    })
+}
+
+/// Degrees, shape, weights in `[0.2, 5]` (row by row) and knots of a surface.
+#[allow(clippy::type_complexity)]
+fn surface_shape() -> impl Strategy<Value = ([usize; 2], [usize; 2], Vec<Vec<f64>>, [Vec<f64>; 2])>
+{
+    (direction_shape(), direction_shape()).prop_flat_map(|((p, nu, ku), (q, nv, kv))| {
+        (
+            Just([p, q]),
+            Just([nu, nv]),
+            proptest::collection::vec(proptest::collection::vec(0.2..5.0f64, nv), nu),
+            Just([ku, kv]),
+        )
+    })
+}
+
+/// A crisp rational B-spline surface of degrees 1–4 in each direction with
+/// coordinates in `[-10, 10]`.
+pub fn surface<const D: usize>() -> impl Strategy<Value = NurbsSurface<D>> {
+    surface_shape().prop_flat_map(|(degree, [nu, nv], weights, [ku, kv])| {
+        proptest::collection::vec(
+            proptest::collection::vec(proptest::array::uniform(-10.0..10.0f64), nv),
+            nu,
+        )
+        .prop_map(move |points| {
+            let knots = [
+                KnotVector::try_new(ku.clone(), degree[0], nu).expect("filtered"),
+                KnotVector::try_new(kv.clone(), degree[1], nv).expect("filtered"),
+            ];
+            NurbsSurface::try_new(points, weights.clone(), knots).expect("valid parts")
+        })
+    })
+}
+
+/// A fuzzy surface whose numbers have independent heights.
+pub fn fuzzy_surface<const D: usize>() -> impl Strategy<Value = FuzzySurface<D>> {
+    fuzzy_surface_from(point::<D>())
+}
+
+/// A fuzzy surface whose numbers all share one lower height.
+pub fn fuzzy_surface_common_height<const D: usize>() -> impl Strategy<Value = FuzzySurface<D>> {
+    height().prop_flat_map(|h| {
+        fuzzy_surface_from(proptest::array::uniform(number_with_height(h)).prop_map(Nt2Point::new))
+    })
+}
+
+fn fuzzy_surface_from<const D: usize>(
+    point: impl Strategy<Value = Nt2Point<D>> + Clone,
+) -> impl Strategy<Value = FuzzySurface<D>> {
+    surface_shape().prop_flat_map(move |(degree, [nu, nv], weights, [ku, kv])| {
+        proptest::collection::vec(proptest::collection::vec(point.clone(), nv), nu).prop_map(
+            move |points| {
+                FuzzySurface::try_new(
+                    degree,
+                    points,
+                    weights.clone(),
+                    [Some(ku.clone()), Some(kv.clone())],
+                )
+                .expect("valid parts")
+            },
+        )
+    })
 }

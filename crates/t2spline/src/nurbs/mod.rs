@@ -15,6 +15,10 @@
 //! | closest point | [`NurbsCurve::closest_point`] | §6.1 |
 //! | bounding box | [`NurbsCurve::bounding_box`] | — |
 //!
+//! [`NurbsSurface`] is the tensor product of two such curves (SPEC §9), with
+//! the same operations in either [`Direction`], run by the same row
+//! algorithms (`surface/operations.rs`).
+//!
 //! Fuzzy curves apply the same operations to their seven layers with shared
 //! knots and weights (`FuzzyCurve`, in [`crate::pipeline`]).
 
@@ -32,6 +36,7 @@ pub(crate) mod knot_insertion;
 mod knots;
 pub(crate) mod net;
 pub(crate) mod split;
+pub(crate) mod surface;
 
 pub use bounding_box::BoundingBox;
 pub use closest_point::ClosestPoint;
@@ -39,3 +44,4 @@ pub use curve::{weight_problems, NurbsCurve};
 pub use degree_elevation::MAX_ELEVATED_DEGREE;
 pub use derivatives::MAX_DERIVATIVE_ORDER;
 pub use knots::{Domain, KnotVector};
+pub use surface::{Direction, NurbsSurface};

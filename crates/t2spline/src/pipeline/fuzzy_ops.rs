@@ -31,6 +31,49 @@ use crate::nurbs::split::{segment, split};
 use crate::nurbs::{BoundingBox, ClosestPoint, KnotVector};
 use crate::pipeline::FuzzyCurve;
 
+/// The lower height of each coordinate, shared by every point; `place(k, axis)`
+/// names the number of `points[k]` in an error.
+///
+/// # Errors
+/// [`Error::MixedHeights`] naming the first number whose height differs
+/// from the first point's.
+pub(crate) fn common_heights<const D: usize>(
+    points: &[Nt2Point<D>],
+    place: impl Fn(usize, Axis) -> Place,
+) -> Result<[Height; D], Error> {
+    let first = points[0].coords().map(|x| x.height());
+    for (i, p) in points.iter().enumerate() {
+        for (axis, (x, h)) in Axis::first::<D>()
+            .into_iter()
+            .zip(p.coords().iter().zip(&first))
+        {
+            if x.height() != *h {
+                return Err(Error::MixedHeights {
+                    place: place(i, axis),
+                    height: x.height().get(),
+                    expected: h.get(),
+                });
+            }
+        }
+    }
+    Ok(first)
+}
+
+/// One homogeneous row per control point: the seven layers, then the weight.
+pub(crate) fn stacked_rows<const D: usize>(points: &[Nt2Point<D>], weights: &[f64]) -> Vec<Row> {
+    points
+        .iter()
+        .zip(weights)
+        .map(|(p, &w)| {
+            Layer::ALL
+                .iter()
+                .flat_map(|&l| p.layer(l).map(|x| w * x))
+                .chain([w])
+                .collect()
+        })
+        .collect()
+}
+
 impl<const D: usize> FuzzyCurve<D> {
     /// The lower height of each coordinate, shared by every point.
     ///
@@ -38,37 +81,12 @@ impl<const D: usize> FuzzyCurve<D> {
     /// [`Error::MixedHeights`] naming the first number whose height differs
     /// from the first point's.
     fn common_heights(&self) -> Result<[Height; D], Error> {
-        let first = self.points()[0].coords().map(|x| x.height());
-        for (i, p) in self.points().iter().enumerate() {
-            for (axis, (x, h)) in Axis::first::<D>()
-                .into_iter()
-                .zip(p.coords().iter().zip(&first))
-            {
-                if x.height() != *h {
-                    return Err(Error::MixedHeights {
-                        place: Place::new(i, axis),
-                        height: x.height().get(),
-                        expected: h.get(),
-                    });
-                }
-            }
-        }
-        Ok(first)
+        common_heights(self.points(), Place::new)
     }
 
     /// One homogeneous row per control point: the seven layers, then the weight.
     fn stacked_rows(&self) -> Vec<Row> {
-        self.points()
-            .iter()
-            .zip(self.weights())
-            .map(|(p, &w)| {
-                Layer::ALL
-                    .iter()
-                    .flat_map(|&l| p.layer(l).map(|x| w * x))
-                    .chain([w])
-                    .collect()
-            })
-            .collect()
+        stacked_rows(self.points(), self.weights())
     }
 
     /// Runs an operation on the stacked rows and rebuilds the fuzzy curve; also
@@ -258,6 +276,20 @@ fn rebuild<const D: usize>(
     rows: &[Row],
     heights: [Height; D],
 ) -> (FuzzyCurve<D>, f64) {
+    let (points, weights, worst) = from_stacked_rows(rows, heights);
+    (
+        FuzzyCurve::from_parts_unchecked(points, weights, knots),
+        worst,
+    )
+}
+
+/// Fuzzy points and weights from stacked homogeneous rows (see
+/// [`stacked_rows`]), the order of every number repaired against rounding;
+/// also the largest repair made.
+pub(crate) fn from_stacked_rows<const D: usize>(
+    rows: &[Row],
+    heights: [Height; D],
+) -> (Vec<Nt2Point<D>>, Vec<f64>, f64) {
     let mut worst: f64 = 0.0;
     let mut weights = Vec::with_capacity(rows.len());
     let points = rows
@@ -272,10 +304,7 @@ fn rebuild<const D: usize>(
             }))
         })
         .collect();
-    (
-        FuzzyCurve::from_parts_unchecked(points, weights, knots),
-        worst,
-    )
+    (points, weights, worst)
 }
 
 /// Clamps the seven values outward from the crisp one so that they are

@@ -4,13 +4,23 @@
 //! Stage 1 is a [`FuzzyCurve`] (control points, weights, knots) with its seven
 //! layer curves; [`FuzzyCurve::solve`] runs stages 2–4 on the control points and
 //! returns a [`Solution`], which also measures the [`Distance`] between the crisp
-//! and the defuzzified curve.
+//! and the defuzzified curve. [`FuzzySurface`] and [`SurfaceSolution`] do the
+//! same for surfaces (SPEC §9), with the same per-number stages, and measure
+//! the [`SurfaceDistance`].
 
 mod fuzzy_curve;
 mod fuzzy_ops;
+mod fuzzy_surface;
 mod metrics;
+pub(crate) mod point_stages;
 mod stages;
+mod surface_metrics;
+mod surface_stages;
 
 pub use fuzzy_curve::FuzzyCurve;
+pub use fuzzy_surface::FuzzySurface;
 pub use metrics::{euclidean_norm, Distance};
-pub use stages::{Side, Solution};
+pub use point_stages::Side;
+pub use stages::Solution;
+pub use surface_metrics::SurfaceDistance;
+pub use surface_stages::SurfaceSolution;

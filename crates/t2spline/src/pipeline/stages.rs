@@ -3,16 +3,8 @@
 
 use crate::fuzzy::{Alpha, AlphaCut, Layer, Tfn};
 use crate::nurbs::NurbsCurve;
+use crate::pipeline::point_stages::{PointStages, Side};
 use crate::pipeline::{Distance, FuzzyCurve};
-
-/// A side of a type-reduced number `(left, crisp, right)`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Side {
-    /// The left foot.
-    Left,
-    /// The right foot.
-    Right,
-}
 
 /// The four stages of Algorithm 1.1 at one level alpha (SPEC §7):
 ///
@@ -41,38 +33,25 @@ pub enum Side {
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct Solution<const D: usize> {
-    alpha: Alpha,
     curve: FuzzyCurve<D>,
-    alpha_cut: Vec<[AlphaCut; D]>,
-    type_reduced: Vec<[Tfn; D]>,
-    defuzzified: Vec<[f64; D]>,
+    stages: PointStages<D>,
 }
 
 impl<const D: usize> Solution<D> {
     pub(crate) fn new(curve: FuzzyCurve<D>, alpha: Alpha) -> Self {
-        let alpha_cut: Vec<[AlphaCut; D]> =
-            curve.points().iter().map(|p| p.alpha_cut(alpha)).collect();
-        let type_reduced: Vec<[Tfn; D]> = alpha_cut
-            .iter()
-            .map(|cuts| cuts.map(|c| c.type_reduce()))
-            .collect();
-        let defuzzified = type_reduced
-            .iter()
-            .map(|tfns| tfns.map(|t| t.defuzzify()))
-            .collect();
-        Solution {
-            alpha,
-            curve,
-            alpha_cut,
-            type_reduced,
-            defuzzified,
-        }
+        let stages = PointStages::new(curve.points(), alpha);
+        Solution { curve, stages }
+    }
+
+    /// The per-number stages of the control points.
+    pub(crate) fn stages(&self) -> &PointStages<D> {
+        &self.stages
     }
 
     /// The level alpha.
     #[must_use]
     pub fn alpha(&self) -> Alpha {
-        self.alpha
+        self.stages.alpha()
     }
 
     /// Stage 1: the fuzzy curve.
@@ -84,23 +63,14 @@ impl<const D: usize> Solution<D> {
     /// Stage 2: the alpha-cut of every control point, per coordinate.
     #[must_use]
     pub fn alpha_cut_points(&self) -> &[[AlphaCut; D]] {
-        &self.alpha_cut
+        self.stages.alpha_cut_points()
     }
 
     /// Stage 2: the control points of one alpha-cut layer; `None` for a lower
     /// layer when some number is cut above its lower height (SPEC §2.2).
     #[must_use]
     pub fn alpha_cut_layer(&self, layer: Layer) -> Option<Vec<[f64; D]>> {
-        self.alpha_cut
-            .iter()
-            .map(|cuts| {
-                let mut p = [0.0; D];
-                for (x, c) in p.iter_mut().zip(cuts) {
-                    *x = c.layer(layer)?;
-                }
-                Some(p)
-            })
-            .collect()
+        self.stages.alpha_cut_layer(layer)
     }
 
     /// Stage 2: the curve through one alpha-cut layer, when that layer exists
@@ -114,21 +84,13 @@ impl<const D: usize> Solution<D> {
     /// Stage 3: the type-reduced number of every control point, per coordinate.
     #[must_use]
     pub fn type_reduced_points(&self) -> &[[Tfn; D]] {
-        &self.type_reduced
+        self.stages.type_reduced_points()
     }
 
     /// Stage 3: the left or right type-reduced control points.
     #[must_use]
     pub fn type_reduced_side(&self, side: Side) -> Vec<[f64; D]> {
-        self.type_reduced
-            .iter()
-            .map(|tfns| {
-                tfns.map(|t| match side {
-                    Side::Left => t.left(),
-                    Side::Right => t.right(),
-                })
-            })
-            .collect()
+        self.stages.type_reduced_side(side)
     }
 
     /// Stage 3: the curve through the left or right type-reduced control points.
@@ -140,13 +102,14 @@ impl<const D: usize> Solution<D> {
     /// Stage 4: the defuzzified control points.
     #[must_use]
     pub fn defuzzified_points(&self) -> &[[f64; D]] {
-        &self.defuzzified
+        self.stages.defuzzified_points()
     }
 
     /// Stage 4: the crisp type-2 solution curve through the defuzzified points.
     #[must_use]
     pub fn defuzzified_curve(&self) -> NurbsCurve<D> {
-        self.curve.with_control_points(self.defuzzified.clone())
+        self.curve
+            .with_control_points(self.stages.defuzzified_points().to_vec())
     }
 
     /// The crisp curve through the crisp control points.
@@ -159,15 +122,7 @@ impl<const D: usize> Solution<D> {
     /// over the whole domain (SPEC §7); see [`Distance`].
     #[must_use]
     pub fn distance(&self) -> Distance {
-        let difference = self
-            .defuzzified
-            .iter()
-            .zip(self.curve.points())
-            .map(|(d, p)| {
-                let c = p.crisp();
-                std::array::from_fn(|i| d[i] - c[i])
-            })
-            .collect();
+        let difference = self.stages.offsets(self.curve.points());
         Distance::of_curve(&self.curve.with_control_points(difference))
     }
 }

@@ -2,7 +2,7 @@
 //! both measure the same thing.
 
 use crate::fuzzy::{Alpha, Nt2Number, Nt2Point};
-use crate::pipeline::FuzzyCurve;
+use crate::pipeline::{FuzzyCurve, FuzzySurface};
 
 /// The benchmark curve: degree 3, ten control points
 /// (0,0), (1,2), (2,−1), (3,3), (4,0), (5,2.5), (6,−2), (7,1), (8,3), (9,0),
@@ -32,21 +32,60 @@ pub fn benchmark_curve() -> FuzzyCurve<2> {
         [9.0, 0.0],
     ];
     const WEIGHTS: [f64; 10] = [1.0, 0.5, 2.0, 1.0, 3.0, 0.7, 1.0, 1.5, 0.8, 1.0];
-    let number = |c: f64| {
-        Nt2Number::try_new(
-            c,
-            [c - 0.3, c + 0.45],
-            [c - 0.2, c + 0.3],
-            [c - 0.1, c + 0.15],
-            0.6,
-        )
-        .expect("the spreads are ordered and finite")
-    };
     let points = POINTS
         .iter()
-        .map(|p| Nt2Point::new(p.map(number)))
+        .map(|p| Nt2Point::new(p.map(benchmark_number)))
         .collect();
     FuzzyCurve::try_new(3, points, WEIGHTS.to_vec(), None).expect("a valid curve")
+}
+
+/// The fuzzy number of every benchmark coordinate `c`: upper feet
+/// `c − 0.3, c + 0.45`, primary feet `c − 0.2, c + 0.3`, lower feet
+/// `c − 0.1, c + 0.15`, lower height 0.6.
+fn benchmark_number(c: f64) -> Nt2Number {
+    Nt2Number::try_new(
+        c,
+        [c - 0.3, c + 0.45],
+        [c - 0.2, c + 0.3],
+        [c - 0.1, c + 0.15],
+        0.6,
+    )
+    .expect("the spreads are ordered and finite")
+}
+
+/// The benchmark surface: bicubic, an 8 × 8 net with clamped uniform knots in
+/// both directions, control points `Pᵢⱼ = (i, j, sin(1.1·i)·cos(0.7·j) + 0.1·i·j)`,
+/// weights `wᵢⱼ = 0.5 + ((3i + 5j) mod 7)/4` (0.5 to 2), and every coordinate
+/// the fuzzy number of [`benchmark_curve`] (unequal spreads, lower height 0.6).
+///
+/// # Examples
+/// ```
+/// let s = t2spline::sampling::benchmark_surface();
+/// assert_eq!((s.degree(), s.shape()), ([3, 3], [8, 8]));
+/// assert_eq!(s.weights()[1], 1.75);
+/// ```
+#[must_use]
+pub fn benchmark_surface() -> FuzzySurface<3> {
+    let n = 8;
+    let points = (0..n)
+        .map(|i| {
+            (0..n)
+                .map(|j| {
+                    let (x, y) = (f64::from(i), f64::from(j));
+                    let z = (1.1 * x).sin() * (0.7 * y).cos() + 0.1 * x * y;
+                    Nt2Point::new([x, y, z].map(benchmark_number))
+                })
+                .collect()
+        })
+        .collect();
+    let weights = (0..n)
+        .map(|i| {
+            (0..n)
+                .map(|j| 0.5 + f64::from((3 * i + 5 * j) % 7) / 4.0)
+                .collect()
+        })
+        .collect();
+    FuzzySurface::try_new([3, 3], points, weights, [None, None]).expect("a valid surface")
 }
 
 /// The 11 levels of the benchmark sweep: 0, 0.1, …, 1.

@@ -2,12 +2,12 @@
 //! `sample_sweep` and `sample_stages`.
 
 use crate::error::Error;
-use crate::fuzzy::{Alpha, Layer, Layers};
+use crate::fuzzy::Alpha;
 use crate::nurbs::NurbsCurve;
-use crate::pipeline::{FuzzyCurve, Side, Solution};
-use crate::sampling::{
-    Bound, CurveSamples, LayerSamples, Params, Sampler, StageSamples, SweepSamples,
-};
+use crate::pipeline::point_stages::PointStages;
+use crate::pipeline::{FuzzyCurve, Solution};
+use crate::sampling::plan::Plan;
+use crate::sampling::{CurveSamples, LayerSamples, Params, Sampler, StageSamples, SweepSamples};
 
 impl<const D: usize> NurbsCurve<D> {
     /// A [`Sampler`] for this curve: one channel per coordinate.
@@ -192,56 +192,6 @@ impl<const D: usize> Solution<D> {
     }
 }
 
-/// The channels of a sampling job, D per curve, and the bounds that keep them
-/// in order.
-struct Channels<const D: usize> {
-    values: Vec<Vec<f64>>,
-    bounds: Vec<Bound>,
-}
-
-impl<const D: usize> Channels<D> {
-    /// Adds a curve through `points`; returns the channel of its x coordinate.
-    fn push(&mut self, points: &[[f64; D]]) -> usize {
-        let base = self.values.len();
-        for d in 0..D {
-            self.values.push(points.iter().map(|p| p[d]).collect());
-        }
-        base
-    }
-
-    /// Bounds curve `curve` (per coordinate) from below by `at_least` and from
-    /// above by `at_most`.
-    fn bound(&mut self, curve: usize, at_least: Option<usize>, at_most: Option<usize>) {
-        for d in 0..D {
-            self.bounds.push(Bound {
-                channel: curve + d,
-                at_least: at_least.map(|c| c + d),
-                at_most: at_most.map(|c| c + d),
-            });
-        }
-    }
-
-    /// Bounds a chain of layer curves outwards from the crisp one: each left
-    /// layer at most its inner neighbour, each right layer at least its inner
-    /// neighbour (SPEC §1 order). `curves[layer]` is `None` for a missing layer.
-    fn bound_layers(&mut self, curves: &Layers<Option<usize>>, crisp: usize) {
-        let mut inner = crisp;
-        for layer in [Layer::LowerLeft, Layer::PrimaryLeft, Layer::UpperLeft] {
-            if let Some(c) = curves[layer] {
-                self.bound(c, None, Some(inner));
-                inner = c;
-            }
-        }
-        inner = crisp;
-        for layer in [Layer::LowerRight, Layer::PrimaryRight, Layer::UpperRight] {
-            if let Some(c) = curves[layer] {
-                self.bound(c, Some(inner), None);
-                inner = c;
-            }
-        }
-    }
-}
-
 /// Samples the crisp curve, the six other layers if `layers`, and the curves of
 /// stages 2–4 of every solution, with one sampler, into vectors taken from
 /// `buffers` where it has them.
@@ -252,70 +202,11 @@ fn sweep<const D: usize>(
     layers: bool,
     mut buffers: Vec<Vec<f64>>,
 ) -> Result<SweepSamples<D>, Error> {
-    let mut ch = Channels::<D> {
-        values: Vec::new(),
-        bounds: Vec::new(),
-    };
-    let layer_of = |l: Layer| {
-        curve
-            .points()
-            .iter()
-            .map(|p| p.layer(l))
-            .collect::<Vec<_>>()
-    };
-    let crisp = ch.push(&layer_of(Layer::Crisp));
-    let stage1: Layers<Option<usize>> = Layers::from_fn(|l| match l {
-        Layer::Crisp => Some(crisp),
-        _ if layers => Some(ch.push(&layer_of(l))),
-        _ => None,
-    });
-    ch.bound_layers(&stage1, crisp);
-    let mut level_channels = Vec::with_capacity(solutions.len());
-    for s in solutions {
-        let cut: Layers<Option<usize>> = Layers::from_fn(|l| match l {
-            Layer::Crisp => None,
-            _ => s.alpha_cut_layer(l).map(|points| ch.push(&points)),
-        });
-        ch.bound_layers(&cut, crisp);
-        let left = ch.push(&s.type_reduced_side(Side::Left));
-        let right = ch.push(&s.type_reduced_side(Side::Right));
-        let defuzzified = ch.push(s.defuzzified_points());
-        ch.bound(left, None, Some(crisp));
-        ch.bound(right, Some(crisp), None);
-        ch.bound(defuzzified, Some(left), Some(right));
-        level_channels.push((s.alpha(), cut, left, right, defuzzified));
-    }
-    let sampler = Sampler::new_unchecked(curve.knots(), curve.weights(), &ch.values)
-        .with_bounds(&ch.bounds)
+    let stages: Vec<&PointStages<D>> = solutions.iter().map(Solution::stages).collect();
+    let plan = Plan::new(curve.points(), &stages, layers);
+    let sampler = Sampler::new_unchecked(curve.knots(), curve.weights(), plan.values())
+        .with_bounds(plan.bounds())
         .expect("the bounds name channels just made");
-    let mut out: Vec<Option<Vec<f64>>> = sampler
-        .sample_reusing(params, &mut buffers)?
-        .into_iter()
-        .map(Some)
-        .collect();
-    let mut take = |base: usize| {
-        CurveSamples::from_coords(std::array::from_fn(|d| {
-            out[base + d].take().expect("each channel is taken once")
-        }))
-    };
-    let layers = LayerSamples {
-        layers: Layers::from_fn(|l| {
-            // Without `layers`, only the crisp curve was sampled; the others stay
-            // empty and are dropped by `Solution::sample_stages`.
-            stage1[l].map_or_else(
-                || CurveSamples::from_coords(std::array::from_fn(|_| Vec::new())),
-                &mut take,
-            )
-        }),
-    };
-    let levels = level_channels
-        .into_iter()
-        .map(|(alpha, cut, left, right, defuzzified)| StageSamples {
-            alpha,
-            alpha_cut: cut.map(|c| c.map(&mut take)),
-            type_reduced: [take(left), take(right)],
-            defuzzified: take(defuzzified),
-        })
-        .collect();
-    Ok(SweepSamples { layers, levels })
+    let out = sampler.sample_reusing(params, &mut buffers)?;
+    Ok(plan.assemble(out))
 }

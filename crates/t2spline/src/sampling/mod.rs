@@ -19,6 +19,17 @@
 //! | [`FuzzyCurve::sample_sweep`](crate::FuzzyCurve::sample_sweep) | stage 1 and stages 2–4 at many alpha levels |
 //! | [`Solution::sample_stages`](crate::Solution::sample_stages) | stages 2–4 at one level |
 //!
+//! Surfaces (SPEC §9) are sampled on grids `u_a × v_b` by the [`GridSampler`],
+//! which evaluates the basis in u once per grid row and in v once per grid
+//! column for all channels, into the same containers wrapped in a [`Grid`]:
+//!
+//! | call | samples |
+//! |---|---|
+//! | [`NurbsSurface::sample_grid`](crate::NurbsSurface::sample_grid) | one crisp surface |
+//! | [`FuzzySurface::sample_layers`](crate::FuzzySurface::sample_layers) | the seven layer surfaces |
+//! | [`FuzzySurface::sample_sweep`](crate::FuzzySurface::sample_sweep) | stage 1 and stages 2–4 at many alpha levels |
+//! | [`SurfaceSolution::sample_stages`](crate::SurfaceSolution::sample_stages) | stages 2–4 at one level |
+//!
 //! The straightforward evaluators ([`NurbsCurve::eval`](crate::NurbsCurve::eval),
 //! [`FuzzyCurve::eval_layers`](crate::FuzzyCurve::eval_layers)) stay as the
 //! reference that the tests hold this engine to (1e-12 relative). A span whose
@@ -29,13 +40,17 @@
 mod benchmark;
 mod curves;
 mod direct;
+mod grid;
 mod kernel;
 mod params;
+mod plan;
 mod power_form;
 mod sampler;
 mod samples;
+mod surfaces;
 
-pub use benchmark::{benchmark_curve, benchmark_levels};
+pub use benchmark::{benchmark_curve, benchmark_levels, benchmark_surface};
+pub use grid::GridSampler;
 pub use params::Params;
 pub use sampler::{Bound, Sampler};
-pub use samples::{CurveSamples, LayerSamples, StageSamples, SweepSamples};
+pub use samples::{CurveSamples, Grid, LayerSamples, StageSamples, SweepSamples};

@@ -112,7 +112,7 @@ impl Sampler {
                 return Err(Error::NotFinite {
                     place: Place {
                         point: Some(i),
-                        axis: None,
+                        ..Place::NONE
                     },
                     what: "channel value",
                     value,
@@ -225,17 +225,7 @@ impl Sampler {
         let params = params.into();
         let sorted = params.check(self.domain)?;
         let n = params.len();
-        let mut out: Vec<Vec<f64>> = (0..self.channels)
-            .map(|_| match buffers.pop() {
-                Some(mut v) => {
-                    v.resize(n, 0.0);
-                    v
-                }
-                // A zeroed allocation: fresh pages from the system are zero
-                // already, so nothing is written twice.
-                None => vec![0.0; n],
-            })
-            .collect();
+        let mut out = outputs(self.channels, n, buffers);
         let mut slices: Vec<&mut [f64]> = out.iter_mut().map(Vec::as_mut_slice).collect();
         self.run(params, sorted, &mut slices);
         Ok(out)
@@ -253,20 +243,12 @@ impl Sampler {
         out: &mut [&mut [f64]],
     ) -> Result<(), Error> {
         let params = params.into();
-        if out.len() != self.channels {
-            return Err(Error::Length {
-                what: "output slices (one per channel)",
-                expected: self.channels,
-                found: out.len(),
-            });
-        }
-        if let Some(o) = out.iter().find(|o| o.len() != params.len()) {
-            return Err(Error::Length {
-                what: "output values (one per parameter)",
-                expected: params.len(),
-                found: o.len(),
-            });
-        }
+        check_outputs(
+            out,
+            self.channels,
+            params.len(),
+            "output values (one per parameter)",
+        )?;
         let sorted = params.check(self.domain)?;
         self.run(params, sorted, out);
         Ok(())
@@ -349,4 +331,48 @@ impl Sampler {
         let size = (self.channels + 1) * self.order;
         &self.table[span * size..(span + 1) * size]
     }
+}
+
+/// `channels` output vectors of `n` values, taken from `buffers` (resized)
+/// while it has them, else new.
+pub(crate) fn outputs(channels: usize, n: usize, buffers: &mut Vec<Vec<f64>>) -> Vec<Vec<f64>> {
+    (0..channels)
+        .map(|_| match buffers.pop() {
+            Some(mut v) => {
+                v.resize(n, 0.0);
+                v
+            }
+            // A zeroed allocation: fresh pages from the system are zero
+            // already, so nothing is written twice.
+            None => vec![0.0; n],
+        })
+        .collect()
+}
+
+/// Checks caller-given outputs: one slice per channel, each of `n` values.
+///
+/// # Errors
+/// [`Error::Length`] naming what is wrong (`values` says what the `n` values
+/// are).
+pub(crate) fn check_outputs(
+    out: &[&mut [f64]],
+    channels: usize,
+    n: usize,
+    values: &'static str,
+) -> Result<(), Error> {
+    if out.len() != channels {
+        return Err(Error::Length {
+            what: "output slices (one per channel)",
+            expected: channels,
+            found: out.len(),
+        });
+    }
+    if let Some(o) = out.iter().find(|o| o.len() != n) {
+        return Err(Error::Length {
+            what: values,
+            expected: n,
+            found: o.len(),
+        });
+    }
+    Ok(())
 }

@@ -235,3 +235,66 @@ impl<const D: usize> SweepSamples<D> {
         (self.layers, self.levels)
     }
 }
+
+/// Samples on a grid `u_a × v_b` of a surface (SPEC §9): `T` holds one vector
+/// per coordinate of each sampled surface, as for curves ([`CurveSamples`],
+/// [`LayerSamples`], [`StageSamples`], [`SweepSamples`]), with the grid point
+/// `(u_a, v_b)` at index [`Grid::index`]`(a, b) = a·sv + b` (`a` along u).
+///
+/// # Examples
+/// ```
+/// # use t2spline::NurbsSurface;
+/// # use t2spline::sampling::Params;
+/// let net = vec![vec![[0.0, 0.0, 0.0], [0.0, 1.0, 0.0]], vec![[1.0, 0.0, 0.0], [1.0, 1.0, 1.0]]];
+/// let s = NurbsSurface::try_clamped([1, 1], net, vec![vec![1.0; 2]; 2])?;
+/// let g = s.sample_grid(Params::Uniform(3), Params::Uniform(5))?;
+/// assert_eq!(g.shape(), [3, 5]);
+/// assert_eq!(g.samples().point(g.index(1, 2)), [0.5, 0.5, 0.25]);
+/// # Ok::<(), t2spline::Error>(())
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct Grid<T> {
+    pub(crate) shape: [usize; 2],
+    pub(crate) samples: T,
+}
+
+impl<T> Grid<T> {
+    /// An empty grid around `samples` (a buffer for the `_into` sampling
+    /// functions, e.g. `Grid::buffer(LayerSamples::empty())`).
+    #[must_use]
+    pub fn buffer(samples: T) -> Self {
+        Grid {
+            shape: [0, 0],
+            samples,
+        }
+    }
+
+    /// `[su, sv]`: parameters along u and along v.
+    #[must_use]
+    pub fn shape(&self) -> [usize; 2] {
+        self.shape
+    }
+
+    /// The index of the grid point `(u_a, v_b)` in every sample vector.
+    ///
+    /// # Panics
+    /// If `a ≥ su` or `b ≥ sv`.
+    #[must_use]
+    pub fn index(&self, a: usize, b: usize) -> usize {
+        let [su, sv] = self.shape;
+        assert!(a < su && b < sv, "grid point ({a}, {b}) of {su} × {sv}");
+        a * sv + b
+    }
+
+    /// The samples.
+    #[must_use]
+    pub fn samples(&self) -> &T {
+        &self.samples
+    }
+
+    /// The samples, by value.
+    #[must_use]
+    pub fn into_samples(self) -> T {
+        self.samples
+    }
+}

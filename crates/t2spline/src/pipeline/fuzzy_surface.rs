@@ -1,0 +1,375 @@
+//! The normal type-2 fuzzy rational B-spline surface (SPEC §9): a net of fuzzy
+//! control points, its seven layer surfaces, and the surface operations on all
+//! seven layers at once.
+
+use crate::error::{Error, Place};
+use crate::fuzzy::{Alpha, Height, Layer, Layers, Nt2Number, Nt2Point};
+use crate::nurbs::degree_elevation::{check_elevation, elevate};
+use crate::nurbs::knot_insertion::{insert, refine};
+use crate::nurbs::net::{check_rows, Row};
+use crate::nurbs::surface::operations::{isocurve_rows, map_net, segment_net, split_net, RowNet};
+use crate::nurbs::surface::{check_params, knots_in, net_shape, net_weights, TensorBasis};
+use crate::nurbs::{Direction, Domain, KnotVector, NurbsSurface};
+use crate::pipeline::fuzzy_ops::{common_heights, from_stacked_rows, stacked_rows};
+use crate::pipeline::{FuzzyCurve, SurfaceSolution};
+
+/// A rational B-spline surface whose control points are normal type-2 fuzzy
+/// points (SPEC §9, the paper's §6 "extended for surface design by the
+/// tensor product"):
+///
+/// ```text
+/// S̃(u, v) = Σᵢ Σⱼ wᵢⱼ Nᵢ,ₚ(u) Mⱼ,q(v) P̃ᵢⱼ / Σᵢ Σⱼ wᵢⱼ Nᵢ,ₚ(u) Mⱼ,q(v)
+/// ```
+/// evaluated layer by layer: one rational B-spline surface through each of the
+/// seven values of every control point, all with the same weights and knots.
+/// The rational basis is non-negative and sums to 1, so the seven layer
+/// surfaces keep the order of SPEC §1 at every `(u, v)`. `points[i][j]`: the
+/// outer index runs along u, the inner along v.
+///
+/// # Examples
+/// ```
+/// # use t2spline::{FuzzySurface, Layer, Nt2Number, Nt2Point};
+/// let n = |c: f64| Nt2Number::try_new(c, [c - 1.0, c + 2.0], [c - 0.5, c + 1.0], [c - 0.2, c + 0.3], 0.5);
+/// let p = |x: f64, y: f64, z: f64| Ok::<_, t2spline::Error>(Nt2Point::new([n(x)?, n(y)?, n(z)?]));
+/// let net = vec![
+///     vec![p(0.0, 0.0, 0.0)?, p(0.0, 1.0, 0.0)?],
+///     vec![p(1.0, 0.0, 0.0)?, p(1.0, 1.0, 1.0)?],
+/// ];
+/// let s = FuzzySurface::try_new([1, 1], net, vec![vec![1.0; 2]; 2], [None, None])?;
+/// let at = s.eval_layers(0.5, 0.5)?;
+/// assert_eq!(at[Layer::Crisp], [0.5, 0.5, 0.25]);
+/// assert_eq!(at[Layer::UpperRight], [2.5, 2.5, 2.25]);
+/// # Ok::<(), t2spline::Error>(())
+/// ```
+#[derive(Clone, Debug, PartialEq)]
+pub struct FuzzySurface<const D: usize> {
+    /// Row-major: `points[i·nv + j]` is `P̃ᵢⱼ`.
+    points: Vec<Nt2Point<D>>,
+    weights: Vec<f64>,
+    knots: [KnotVector; 2],
+}
+
+impl<const D: usize> FuzzySurface<D> {
+    /// Makes a fuzzy surface of degrees `[p, q]` from a net of fuzzy points
+    /// (`points[i][j]`, `i` along u), a net of weights of the same shape, and
+    /// the knot values `[U, V]`; `None` selects the clamped uniform default of
+    /// that direction (SPEC §6, §9).
+    ///
+    /// # Errors
+    /// [`Error::NetShape`] for rows of unequal length or weights of another
+    /// shape; [`Error::InDirection`] wrapping the knot errors of
+    /// [`KnotVector::try_new`] (and [`Error::TooFewControlPoints`]) of a
+    /// direction; [`Error::NetWeight`] for a bad weight.
+    pub fn try_new(
+        degree: [usize; 2],
+        points: Vec<Vec<Nt2Point<D>>>,
+        weights: Vec<Vec<f64>>,
+        knots: [Option<Vec<f64>>; 2],
+    ) -> Result<Self, Error> {
+        let shape = net_shape(&points, "points")?;
+        let [ku, kv] = knots;
+        let knots = [
+            knots_in(Direction::U, ku, degree[0], shape[0])?,
+            knots_in(Direction::V, kv, degree[1], shape[1])?,
+        ];
+        let weights = net_weights(&weights, shape)?;
+        Ok(FuzzySurface {
+            points: points.into_iter().flatten().collect(),
+            weights,
+            knots,
+        })
+    }
+
+    /// A fuzzy surface from parts an exact algorithm derived from a valid one.
+    pub(crate) fn from_parts_unchecked(
+        points: Vec<Nt2Point<D>>,
+        weights: Vec<f64>,
+        knots: [KnotVector; 2],
+    ) -> Self {
+        debug_assert_eq!(points.len(), knots[0].count() * knots[1].count());
+        debug_assert_eq!(weights.len(), points.len());
+        FuzzySurface {
+            points,
+            weights,
+            knots,
+        }
+    }
+
+    /// The fuzzy control points, row by row (`points()[i·nv + j]` is `P̃ᵢⱼ`).
+    #[must_use]
+    pub fn points(&self) -> &[Nt2Point<D>] {
+        &self.points
+    }
+
+    /// The weights, row by row.
+    #[must_use]
+    pub fn weights(&self) -> &[f64] {
+        &self.weights
+    }
+
+    /// The knot vector of one direction.
+    #[must_use]
+    pub fn knots(&self, direction: Direction) -> &KnotVector {
+        &self.knots[direction.index()]
+    }
+
+    /// The degrees `[p, q]`.
+    #[must_use]
+    pub fn degree(&self) -> [usize; 2] {
+        self.knots.each_ref().map(KnotVector::degree)
+    }
+
+    /// The shape of the net `[nu, nv]`.
+    #[must_use]
+    pub fn shape(&self) -> [usize; 2] {
+        self.knots.each_ref().map(KnotVector::count)
+    }
+
+    /// The parameter domain of one direction.
+    #[must_use]
+    pub fn domain(&self, direction: Direction) -> Domain {
+        self.knots(direction).domain()
+    }
+
+    /// A crisp surface with this surface's weights and knots through
+    /// `control_points` (one per fuzzy control point, row by row).
+    pub(crate) fn with_control_points(&self, control_points: Vec<[f64; D]>) -> NurbsSurface<D> {
+        NurbsSurface::from_parts_unchecked(control_points, self.weights.clone(), self.knots.clone())
+    }
+
+    /// The layer surface through one value of every control point (SPEC §9).
+    #[must_use]
+    pub fn layer_surface(&self, layer: Layer) -> NurbsSurface<D> {
+        self.with_control_points(self.points.iter().map(|p| p.layer(layer)).collect())
+    }
+
+    /// The surface through the crisp values: the crisp rational B-spline surface.
+    #[must_use]
+    pub fn crisp_surface(&self) -> NurbsSurface<D> {
+        self.layer_surface(Layer::Crisp)
+    }
+
+    /// The seven layer surfaces at `(u, v)`, from one evaluation of the
+    /// rational basis; their values keep the SPEC §1 order exactly.
+    ///
+    /// # Errors
+    /// [`Error::InDirection`] wrapping [`Error::OutOfDomain`] if `u` or `v` is
+    /// NaN or outside its domain.
+    pub fn eval_layers(&self, u: f64, v: f64) -> Result<Layers<[f64; D]>, Error> {
+        check_params(&self.knots, u, v)?;
+        let basis = TensorBasis::new(&self.knots, &self.weights, u, v);
+        let mut out = Layers::from_fn(|_| [0.0; D]);
+        basis.for_each(self.shape()[1], |k, r| {
+            let p = &self.points[k];
+            for layer in Layer::ALL {
+                for (o, x) in out[layer].iter_mut().zip(p.layer(layer)) {
+                    *o += r * x;
+                }
+            }
+        });
+        Ok(out)
+    }
+
+    /// The lower height shared by every number of each coordinate, or `None`
+    /// if some coordinate mixes heights.
+    #[must_use]
+    pub fn coordinate_heights(&self) -> Option<[Height; D]> {
+        common_heights(&self.points, |_, _| Place::NONE).ok()
+    }
+
+    /// The fuzzy surface at `(u, v)` as a fuzzy point when each coordinate has
+    /// one lower height for all control points; `Ok(None)` otherwise (SPEC §6).
+    ///
+    /// # Errors
+    /// As [`FuzzySurface::eval_layers`].
+    pub fn eval(&self, u: f64, v: f64) -> Result<Option<Nt2Point<D>>, Error> {
+        let layers = self.eval_layers(u, v)?;
+        Ok(self.coordinate_heights().map(|heights| {
+            Nt2Point::new(std::array::from_fn(|d| {
+                Nt2Number::from_layers_unchecked(&layers.map(|p| p[d]), heights[d])
+            }))
+        }))
+    }
+
+    /// Runs stages 2–4 of Algorithm 1.1 on the control net at level `alpha`
+    /// (SPEC §7, §9).
+    #[must_use]
+    pub fn solve(&self, alpha: Alpha) -> SurfaceSolution<D> {
+        SurfaceSolution::new(self.clone(), alpha)
+    }
+
+    /// The place `points[i][j].axis` of the `k`-th point of the net.
+    fn place(&self, k: usize, axis: crate::fuzzy::Axis) -> Place {
+        let nv = self.shape()[1];
+        Place::in_net(k / nv, k % nv, axis)
+    }
+
+    /// The lower height of each coordinate, shared by every point.
+    fn common_heights(&self) -> Result<[Height; D], Error> {
+        common_heights(&self.points, |k, axis| self.place(k, axis))
+    }
+
+    /// Runs a curve operation in `direction` on the seven stacked layers of
+    /// the net (see `nurbs/surface/operations.rs`) and rebuilds the fuzzy
+    /// surface; also returns the largest order repair made (see
+    /// `pipeline/fuzzy_ops.rs`).
+    pub(crate) fn map_rows(
+        &self,
+        direction: Direction,
+        op: impl FnOnce(&KnotVector, &[Row]) -> Result<(KnotVector, Vec<Row>), Error>,
+    ) -> Result<(Self, f64), Error> {
+        let heights = self.common_heights()?;
+        let rows = stacked_rows(&self.points, &self.weights);
+        rebuild(map_net((&self.knots, &rows), direction, op)?, heights)
+    }
+
+    /// The fuzzy isoparametric curve at `t` in `direction` (see
+    /// [`NurbsSurface::isocurve`]): every layer of it is the isocurve of the
+    /// layer surface.
+    ///
+    /// # Errors
+    /// [`Error::InDirection`] wrapping [`Error::OutOfDomain`];
+    /// [`Error::MixedHeights`] if a coordinate mixes lower heights.
+    pub fn isocurve(&self, direction: Direction, t: f64) -> Result<FuzzyCurve<D>, Error> {
+        self.domain(direction)
+            .check(t)
+            .map_err(|e| e.in_direction(direction))?;
+        let heights = self.common_heights()?;
+        let rows = isocurve_rows(
+            (&self.knots, &stacked_rows(&self.points, &self.weights)),
+            direction,
+            t,
+        );
+        let (points, weights, _) = from_stacked_rows(&rows, heights);
+        let knots = self.knots(direction.other()).clone();
+        Ok(FuzzyCurve::from_parts_unchecked(points, weights, knots))
+    }
+
+    /// The same fuzzy surface with the knot `t` inserted `times` times in
+    /// `direction`, in every layer (see [`NurbsSurface::insert_knot`]); the
+    /// layer surfaces are unchanged, and so are the surfaces of every stage.
+    ///
+    /// # Errors
+    /// Those of `NurbsSurface::insert_knot`, and [`Error::MixedHeights`] if a
+    /// coordinate mixes lower heights.
+    pub fn insert_knot(&self, direction: Direction, t: f64, times: usize) -> Result<Self, Error> {
+        Ok(self.map_rows(direction, |k, r| insert(k, r, t, times))?.0)
+    }
+
+    /// The same fuzzy surface with all knots of `new` inserted in `direction`,
+    /// in every layer (see [`NurbsSurface::refine_knots`]).
+    ///
+    /// # Errors
+    /// As [`FuzzySurface::insert_knot`].
+    pub fn refine_knots(&self, direction: Direction, new: &[f64]) -> Result<Self, Error> {
+        Ok(self.map_rows(direction, |k, r| refine(k, r, new))?.0)
+    }
+
+    /// The same fuzzy surface with the degree in `direction` raised by
+    /// `times`, in every layer (see [`NurbsSurface::elevate_degree`]).
+    ///
+    /// # Errors
+    /// As `NurbsSurface::elevate_degree`, and [`Error::MixedHeights`].
+    pub fn elevate_degree(&self, direction: Direction, times: usize) -> Result<Self, Error> {
+        check_elevation(self.degree()[direction.index()], times)
+            .map_err(|e| e.in_direction(direction))?;
+        Ok(self.map_rows(direction, |k, r| Ok(elevate(k, r, times)))?.0)
+    }
+
+    /// The two fuzzy surfaces on either side of `t` in `direction`, every
+    /// layer split there (see [`NurbsSurface::split_at`]).
+    ///
+    /// # Errors
+    /// As `NurbsSurface::split_at`, and [`Error::MixedHeights`].
+    ///
+    /// # Examples
+    /// ```
+    /// # use t2spline::{Direction, FuzzySurface, Layer, Nt2Number, Nt2Point};
+    /// let n = |c: f64| Nt2Number::try_new(c, [c - 1.0, c + 2.0], [c - 0.5, c + 1.0], [c - 0.2, c + 0.3], 0.5);
+    /// let p = |x: f64, y: f64, z: f64| Ok::<_, t2spline::Error>(Nt2Point::new([n(x)?, n(y)?, n(z)?]));
+    /// let net = vec![
+    ///     vec![p(0.0, 0.0, 0.0)?, p(0.0, 1.0, 0.0)?, p(0.0, 2.0, 1.0)?],
+    ///     vec![p(1.0, 0.0, 0.0)?, p(1.0, 1.0, 1.0)?, p(1.0, 2.0, 0.0)?],
+    /// ];
+    /// let s = FuzzySurface::try_new([1, 2], net, vec![vec![1.0, 2.0, 1.0]; 2], [None, None])?;
+    /// let [low, high] = s.split_at(Direction::V, 0.3)?;
+    /// let (a, b) = (s.eval_layers(0.4, 0.2)?, low.eval_layers(0.4, 0.2)?);
+    /// assert!((a[Layer::UpperLeft][2] - b[Layer::UpperLeft][2]).abs() < 1e-15);
+    /// assert_eq!(high.domain(Direction::V).start, 0.3);
+    /// # Ok::<(), t2spline::Error>(())
+    /// ```
+    pub fn split_at(&self, direction: Direction, t: f64) -> Result<[Self; 2], Error> {
+        let heights = self.common_heights()?;
+        let rows = stacked_rows(&self.points, &self.weights);
+        let [a, b] = split_net((&self.knots, &rows), direction, t)?;
+        Ok([rebuild(a, heights)?.0, rebuild(b, heights)?.0])
+    }
+
+    /// The fuzzy surface over the rectangle `[u₀, u₁] × [v₀, v₁]`, clamped in
+    /// both directions (see [`NurbsSurface::segment`]).
+    ///
+    /// # Errors
+    /// As `NurbsSurface::segment`, and [`Error::MixedHeights`].
+    pub fn segment(&self, u: [f64; 2], v: [f64; 2]) -> Result<Self, Error> {
+        let heights = self.common_heights()?;
+        let rows = stacked_rows(&self.points, &self.weights);
+        let net = segment_net((&self.knots, &rows), u, v)?;
+        Ok(rebuild(net, heights)?.0)
+    }
+}
+
+/// The fuzzy surface from a net of stacked homogeneous rows, with the order
+/// repaired; also the largest repair made.
+///
+/// # Errors
+/// [`Error::IllConditioned`] if the rows are outside the input ranges.
+fn rebuild<const D: usize>(
+    (knots, rows): RowNet,
+    heights: [Height; D],
+) -> Result<(FuzzySurface<D>, f64), Error> {
+    check_rows(&rows, "the operation on the fuzzy surface")?;
+    let (points, weights, worst) = from_stacked_rows(&rows, heights);
+    Ok((
+        FuzzySurface::from_parts_unchecked(points, weights, knots),
+        worst,
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use proptest::prelude::*;
+
+    use super::*;
+    use crate::nurbs::split::segment;
+    use crate::strategies;
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        /// Insertion and splitting keep the seven values ordered bit for bit
+        /// (nothing to repair); elevation repairs at most rounding (the bound
+        /// of `strategies::elevation_tolerance`), as for curves.
+        #[test]
+        fn the_order_needs_no_repair_beyond_rounding(
+            s in strategies::fuzzy_surface_common_height::<3>(), d in 0usize..2, at in 0.05..0.95f64,
+        ) {
+            let direction = Direction::BOTH[d];
+            let k = s.knots(direction).clone();
+            let t = k.domain().lerp(at);
+            let room = k.degree() + 1 - k.multiplicity(t);
+            let (_, worst) = s.map_rows(direction, |k, r| insert(k, r, t, room.min(2))).unwrap();
+            prop_assert_eq!(worst, 0.0);
+            let (a, b) = (k.domain().start, k.domain().end);
+            let (_, worst) = s.map_rows(direction, |k, r| segment(k, r, a, t.max(a + (b - a) / 4.0))).unwrap();
+            prop_assert_eq!(worst, 0.0);
+            let scale = s
+                .points()
+                .iter()
+                .flat_map(|p| Layer::ALL.map(|l| p.layer(l)))
+                .flatten()
+                .fold(1.0, |m: f64, x| m.max(x.abs()));
+            let (_, worst) = s.map_rows(direction, |k, r| Ok(elevate(k, r, 1))).unwrap();
+            prop_assert!(worst <= strategies::elevation_tolerance(&k, s.weights(), scale), "{}", worst);
+        }
+    }
+}

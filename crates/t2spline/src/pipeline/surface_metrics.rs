@@ -1,0 +1,199 @@
+//! The distance between the crisp and the defuzzified surface over the whole
+//! domain (SPEC §9).
+
+use crate::cubature::Cubature;
+use crate::nelder_mead::nelder_mead_min;
+use crate::nurbs::{Direction, NurbsSurface};
+use crate::pipeline::euclidean_norm;
+
+/// How far the defuzzified surface `D(u, v)` lies from the crisp surface
+/// `C(u, v)` at equal parameters over the whole domain `[a, b] × [c, d]`
+/// (SPEC §9):
+///
+/// ```text
+/// d(u, v) = ‖D(u, v) − C(u, v)‖₂
+/// max     = max over the domain of d,     max_at = a (u, v) where it is reached
+/// rms     = √( 1/((b − a)(d − c)) · ∫∫ d(u, v)² du dv )
+/// ```
+/// Both surfaces share weights and knots, so `D − C` is itself a rational
+/// surface whose control points are the differences `Dᵢⱼ − Pᵢⱼ`; on each span
+/// rectangle `d` is the norm of one smooth rational patch. Neither figure
+/// depends on a sampling grid:
+///
+/// - **max**: each span rectangle is scanned on a 17 × 17 grid, and every
+///   local maximum of the scan (edges and corners included) is refined by
+///   Nelder–Mead on the patch (restarted once; the rectangle made unconstrained by a change of variables), to a simplex of `10⁻¹⁰` of
+///   the rectangle. The value of a smooth maximum found so is within about
+///   `10⁻¹⁶` of the true one (the error is quadratic in the position); the
+///   result is never below any scan value. As for curves, a peak that is
+///   narrower than a scan cell and lower than some scan value elsewhere at its
+///   own scan points can be missed; patches of the low degrees in use have no
+///   such peaks. Along a knot of full multiplicity, where the surfaces may
+///   jump, each patch counts with its border (both one-sided limits).
+/// - **rms**: the mean of `(d/max)²` over each span rectangle by adaptive
+///   tensor Gauss–Legendre cubature (8 × 8 points per cell, a cell split in
+///   four until it agrees with its quarters to `10⁻¹³` of the mean square's
+///   size); polynomial patches of degree up to 7 are integrated exactly at
+///   once. The relative error of `rms` is below `10⁻¹²` unless the budget of
+///   20 000 subdivisions runs out (extreme weights over very many patches).
+///
+/// With symmetric spreads both are 0.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct SurfaceDistance {
+    /// The largest distance.
+    pub max: f64,
+    /// A parameter pair `[u, v]` where the largest distance is reached.
+    pub max_at: [f64; 2],
+    /// The root mean square distance over the domain.
+    pub rms: f64,
+}
+
+/// Scan steps per span, in each direction.
+const SCAN_STEPS: usize = 16;
+/// The simplex size at which the refinement stops, relative to the rectangle.
+const REFINE_TOLERANCE: f64 = 1e-10;
+/// Evaluations per Nelder–Mead run.
+const REFINE_EVALUATIONS: usize = 2000;
+/// The cubature's tolerance relative to the mean square.
+const CUBATURE_TOLERANCE: f64 = 1e-13;
+/// Cell subdivisions of the cubature over the whole domain.
+const SUBDIVISIONS: usize = 20_000;
+
+/// A span rectangle: its span indices and its ranges in u and v.
+type Patch = ([usize; 2], [[f64; 2]; 2]);
+
+impl SurfaceDistance {
+    /// Measures the norm of `difference(u, v)` over its domain.
+    pub(crate) fn of_surface<const D: usize>(difference: &NurbsSurface<D>) -> SurfaceDistance {
+        let spans: Vec<Vec<(usize, [f64; 2])>> = Direction::BOTH
+            .iter()
+            .map(|&d| difference.knots(d).spans().collect())
+            .collect();
+        let patches: Vec<Patch> = spans[0]
+            .iter()
+            .flat_map(|&(su, ru)| spans[1].iter().map(move |&(sv, rv)| ([su, sv], [ru, rv])))
+            .collect();
+        let mut best = (
+            0.0,
+            [
+                difference.domain(Direction::U).start,
+                difference.domain(Direction::V).start,
+            ],
+        );
+        for patch in &patches {
+            let found = patch_max(difference, patch);
+            if found.0 > best.0 {
+                best = found;
+            }
+        }
+        let rms = if best.0 > 0.0 {
+            best.0 * mean_square(difference, &patches, best.0).sqrt()
+        } else {
+            0.0
+        };
+        SurfaceDistance {
+            max: best.0,
+            max_at: best.1,
+            rms,
+        }
+    }
+}
+
+/// The largest distance on one patch and where it is reached.
+fn patch_max<const D: usize>(
+    s: &NurbsSurface<D>,
+    &(spans, [[a0, b0], [a1, b1]]): &Patch,
+) -> (f64, [f64; 2]) {
+    let norm = |[u, v]: [f64; 2]| euclidean_norm(&s.eval_in_spans(spans, u, v));
+    let at = |k: usize, a: f64, b: f64| {
+        if k == SCAN_STEPS {
+            b
+        } else {
+            (a + (b - a) * (k as f64 / SCAN_STEPS as f64)).min(b)
+        }
+    };
+    let n = SCAN_STEPS + 1;
+    let grid: Vec<[f64; 2]> = (0..n * n)
+        .map(|k| [at(k / n, a0, b0), at(k % n, a1, b1)])
+        .collect();
+    let values: Vec<f64> = grid.iter().map(|&x| norm(x)).collect();
+    let mut best = (values[0], grid[0]);
+    let steps = [(b0 - a0) / SCAN_STEPS as f64, (b1 - a1) / SCAN_STEPS as f64];
+    let tolerance = [REFINE_TOLERANCE * (b0 - a0), REFINE_TOLERANCE * (b1 - a1)];
+    let bounds = [[a0, a1], [b0, b1]];
+    for k in 0..n * n {
+        let d = values[k];
+        if d > best.0 {
+            best = (d, grid[k]);
+        }
+        if d > 0.0 && is_local_max(&values, n, k) {
+            let minus = |x: [f64; 2]| -norm(x);
+            // Started again from its result with a small simplex, as is
+            // usual for Nelder–Mead, which can stop on a flattened simplex.
+            let first =
+                nelder_mead_min(minus, grid[k], steps, bounds, tolerance, REFINE_EVALUATIONS);
+            let small = [steps[0] / 8.0, steps[1] / 8.0];
+            let again =
+                nelder_mead_min(minus, first.1, small, bounds, tolerance, REFINE_EVALUATIONS);
+            let (v, x) = if again.0 < first.0 { again } else { first };
+            if -v > best.0 {
+                best = (-v, x);
+            }
+        }
+    }
+    best
+}
+
+/// Whether scan value `k` of an `n × n` grid is a local maximum: above its
+/// neighbours that come before it and not below those after it, so that a
+/// flat region counts once.
+fn is_local_max(values: &[f64], n: usize, k: usize) -> bool {
+    let (i, j) = ((k / n) as isize, (k % n) as isize);
+    let d = values[k];
+    for di in -1..=1isize {
+        for dj in -1..=1isize {
+            let (a, b) = (i + di, j + dj);
+            if (di, dj) == (0, 0) || a < 0 || b < 0 || a >= n as isize || b >= n as isize {
+                continue;
+            }
+            let m = a as usize * n + b as usize;
+            let other = values[m];
+            if (m < k && other >= d) || (m > k && other > d) {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+/// The mean of `(d/scale)²` over the domain: per patch, its share of the
+/// domain's area times the patch's own mean (in patch coordinates, so that
+/// neither a tiny domain nor a tiny patch underflows).
+fn mean_square<const D: usize>(s: &NurbsSurface<D>, patches: &[Patch], scale: f64) -> f64 {
+    let (du, dv) = (s.domain(Direction::U), s.domain(Direction::V));
+    let cubature = Cubature::new();
+    let integrand = |&(spans, [[a0, b0], [a1, b1]]): &Patch| {
+        move |x: f64, y: f64| {
+            let u = (a0 + (b0 - a0) * x).min(b0);
+            let v = (a1 + (b1 - a1) * y).min(b1);
+            let d = euclidean_norm(&s.eval_in_spans(spans, u, v)) / scale;
+            d * d
+        }
+    };
+    let share = |&(_, [[a0, b0], [a1, b1]]): &Patch| {
+        ((b0 - a0) / (du.end - du.start)) * ((b1 - a1) / (dv.end - dv.start))
+    };
+    // A first estimate of the mean square sets the absolute tolerance.
+    let mut none = 0;
+    let rough: f64 = patches
+        .iter()
+        .map(|p| share(p) * cubature.mean(&integrand(p), f64::INFINITY, &mut none))
+        .sum();
+    let tolerance = CUBATURE_TOLERANCE * rough;
+    let mut budget = SUBDIVISIONS;
+    patches
+        .iter()
+        .map(|p| share(p) * cubature.mean(&integrand(p), tolerance, &mut budget))
+        .sum()
+}
