@@ -127,7 +127,7 @@ fn fitted_job_parses_back_and_carries_the_data_keys() {
         assert!(job_json["points"][0]["x"].get("lower_height").is_none());
         let text = to_json_pretty(&job_json);
         let job = t2spline_io::parse_job(&text, "job.json").unwrap();
-        assert_eq!(job.samples, 51);
+        assert_eq!(job.samples, t2spline::job::Samples::Along(51));
         assert_eq!(job.alpha.map(|a| a.get()), Some(0.7));
         // The numbers read back are exactly the fitted ones.
         let FuzzyData::Planar(points) = &data.points else {

@@ -682,7 +682,7 @@ pub enum Error {
     /// # let n = |c: f64| Nt2Number::try_new(c, [c, c], [c, c], [c, c], 0.5);
     /// # let points = vec![Nt2Point::new([n(0.0)?, n(0.0)?]), Nt2Point::new([n(1.0)?, n(1.0)?])];
     /// let job = Job::new(Model::Planar(FuzzyCurve::try_new(1, points, vec![1.0, 1.0], None)?));
-    /// let e = job.settings(&Overrides { alpha: Some(0.5), samples: Some(1), ..Overrides::default() }).unwrap_err();
+    /// let e = job.settings(&Overrides { alpha: Some(0.5), samples: Some(vec![1]), ..Overrides::default() }).unwrap_err();
     /// assert!(matches!(e, Error::Setting { setting: Setting::Samples, .. }));
     /// assert_eq!(e.to_string(), "samples = 1: at least 2 are needed (both ends of the domain)");
     /// # Ok::<(), Error>(())
@@ -708,7 +708,7 @@ pub enum Error {
     /// let points = vec![Nt2Point::new([n(0.0)?, n(0.0)?]), Nt2Point::new([n(1e150)?, n(0.0)?]), Nt2Point::new([n(0.0)?, n(1.0)?])];
     /// let curve = FuzzyCurve::try_new(2, points, vec![1.0; 3], Some(vec![0.0, 0.0, 0.0, 1e-150, 1e-150, 1e-150]))?;
     /// let job = Job::new(Model::Planar(curve));
-    /// let s = job.settings(&Overrides { alpha: Some(0.5), samples: Some(2), derivatives: Some(2) })?;
+    /// let s = job.settings(&Overrides { alpha: Some(0.5), samples: Some(vec![2]), derivatives: Some(2) })?;
     /// let e = job.run(&s).unwrap_err();
     /// assert!(matches!(e, Error::DerivativeOverflow { derivative: 2, .. }), "{e}");
     /// # Ok::<(), Error>(())

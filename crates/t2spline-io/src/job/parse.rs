@@ -10,7 +10,7 @@ use std::collections::HashSet;
 
 use serde_json::{Map, Value};
 use t2spline::fit::FuzzyData;
-use t2spline::job::{check_samples, Job, Model, DEFAULT_SAMPLES};
+use t2spline::job::{check_samples, Job, Model, Samples, DEFAULT_SAMPLES};
 use t2spline::{Alpha, Axis, FuzzyCurve, Height, KnotVector, Nt2Number, Nt2Point, Place};
 
 use super::limits::{
@@ -463,7 +463,7 @@ impl Walker {
             Ok(model) => Some(Job {
                 description: header.description,
                 alpha: header.alpha,
-                samples: samples.unwrap_or(DEFAULT_SAMPLES),
+                samples: Samples::Along(samples.unwrap_or(DEFAULT_SAMPLES)),
                 model,
             }),
             Err(e) => {
