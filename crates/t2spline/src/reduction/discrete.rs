@@ -228,8 +228,9 @@ impl SampledSet<'_> {
     /// // The footprint is symmetric about 2: the centroid is too.
     /// let set = SampledSet::try_new(&[1.0, 2.0, 3.0], &[0.2, 0.5, 0.2], &[0.6, 1.0, 0.6])?;
     /// let c = set.km();
-    /// // c_l: umf on x = 1, 2 and lmf on x = 3, y = (0.6 + 2 + 0.6)/1.8 = 16/9.
-    /// assert!((c.left() - 16.0 / 9.0).abs() < 1e-15 && (c.right() - 20.0 / 9.0).abs() < 1e-15);
+    /// // c_l: umf on the first m samples, lmf on the rest:
+    /// // m = 0: 1.8/0.9 = 2, m = 1: 2.2/1.3 = 22/13, m = 2: 3.2/1.8 = 16/9, m = 3: 4.4/2.2 = 2.
+    /// assert!((c.left() - 22.0 / 13.0).abs() < 1e-15 && (c.right() - 30.0 / 13.0).abs() < 1e-15);
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     #[must_use]
