@@ -32,12 +32,21 @@ fn mirror(x: &Nt2Number) -> Nt2Number {
 
 /// A number with equal left and right spreads.
 fn symmetric() -> impl Strategy<Value = Nt2Number> {
-    (-10.0..10.0f64, [0.0..3.0f64, 0.0..3.0, 0.0..3.0], strategies::height()).prop_map(
-        |(c, mut s, h)| {
-            s.sort_by(f64::total_cmp);
-            n(c, [c - s[2], c + s[2]], [c - s[1], c + s[1]], [c - s[0], c + s[0]], h)
-        },
+    (
+        -10.0..10.0f64,
+        [0.0..3.0f64, 0.0..3.0, 0.0..3.0],
+        strategies::height(),
     )
+        .prop_map(|(c, mut s, h)| {
+            s.sort_by(f64::total_cmp);
+            n(
+                c,
+                [c - s[2], c + s[2]],
+                [c - s[1], c + s[1]],
+                [c - s[0], c + s[0]],
+                h,
+            )
+        })
 }
 
 proptest! {
@@ -133,14 +142,29 @@ fn reductions_commute_with_translation_and_scale() {
         (0.0, [-1.0, 1.0], [-1.0, 1.0], [-1.0, 1.0], 1.0), // no uncertainty
         (0.0, [-1.0, 1.0], [-0.5, 0.5], [-0.5, 0.5], 1e-300), // vanishing LMF
     ];
-    let maps = [(0.0, 1e-300), (3.0, 1e-300), (0.0, 1e149), (-5e149, 5e149), (1e6, 1.0)];
+    let maps = [
+        (0.0, 1e-300),
+        (3.0, 1e-300),
+        (0.0, 1e149),
+        (-5e149, 5e149),
+        (1e6, 1.0),
+    ];
     for (c, u, p, l, h) in shapes {
         let base = n(c, u, p, l, h);
         for (shift, s) in maps {
             let m = |v: f64| shift + s * v;
-            let x = n(m(c), [m(u[0]), m(u[1])], [m(p[0]), m(p[1])], [m(l[0]), m(l[1])], h);
+            let x = n(
+                m(c),
+                [m(u[0]), m(u[1])],
+                [m(p[0]), m(p[1])],
+                [m(l[0]), m(l[1])],
+                h,
+            );
             for method in TypeReduction::ALL {
-                let (r, q) = (base.reduce(method, level(0.7)), x.reduce(method, level(0.7)));
+                let (r, q) = (
+                    base.reduce(method, level(0.7)),
+                    x.reduce(method, level(0.7)),
+                );
                 let tol = 4e-14 * s + 4.0 * f64::EPSILON * shift.abs();
                 for (a, b) in [
                     (r.left(), q.left()),
@@ -148,7 +172,10 @@ fn reductions_commute_with_translation_and_scale() {
                     (r.defuzzified(), q.defuzzified()),
                 ] {
                     assert!(b.is_finite(), "{method} of {x:?}: {q:?}");
-                    assert!((m(a) - b).abs() <= tol, "{method}, map ({shift}, {s}) of {base:?}: {q:?} vs {r:?}");
+                    assert!(
+                        (m(a) - b).abs() <= tol,
+                        "{method}, map ({shift}, {s}) of {base:?}: {q:?} vs {r:?}"
+                    );
                 }
             }
         }
@@ -156,16 +183,27 @@ fn reductions_commute_with_translation_and_scale() {
     let crisp = Nt2Number::try_crisp(1e150).unwrap();
     for method in TypeReduction::ALL {
         let r = crisp.reduce(method, level(0.3));
-        assert_eq!((r.left(), r.defuzzified(), r.right()), (1e150, 1e150, 1e150));
+        assert_eq!(
+            (r.left(), r.defuzzified(), r.right()),
+            (1e150, 1e150, 1e150)
+        );
     }
 }
 
 /// Samples of a number's UMF and LMF at `count` uniform points of its support.
 fn sampled(x: &Nt2Number, count: usize) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
     let (a, w) = (x.upper().left(), width(x));
-    let xs: Vec<f64> = (0..count).map(|i| a + w * i as f64 / (count - 1) as f64).collect();
-    let lmf = xs.iter().map(|&v| x.membership(Membership::Lower, v)).collect();
-    let umf = xs.iter().map(|&v| x.membership(Membership::Upper, v)).collect();
+    let xs: Vec<f64> = (0..count)
+        .map(|i| a + w * i as f64 / (count - 1) as f64)
+        .collect();
+    let lmf = xs
+        .iter()
+        .map(|&v| x.membership(Membership::Lower, v))
+        .collect();
+    let umf = xs
+        .iter()
+        .map(|&v| x.membership(Membership::Upper, v))
+        .collect();
     (xs, lmf, umf)
 }
 
@@ -186,13 +224,25 @@ fn continuous_centroid_is_the_limit_of_the_discrete_algorithms() {
             let set = SampledSet::try_new(&xs, &lmf, &umf).unwrap();
             let (km, ekm, eiasc) = (set.km(), set.ekm(), set.eiasc());
             for other in [ekm, eiasc] {
-                assert!((other.left() - km.left()).abs() < 1e-13 && (other.right() - km.right()).abs() < 1e-13);
+                assert!(
+                    (other.left() - km.left()).abs() < 1e-13
+                        && (other.right() - km.right()).abs() < 1e-13
+                );
             }
-            let error = (km.left() - exact.left()).abs().max((km.right() - exact.right()).abs()) / width(&x);
+            let error = (km.left() - exact.left())
+                .abs()
+                .max((km.right() - exact.right()).abs())
+                / width(&x);
             let h = 1.0 / intervals as f64;
-            assert!(error < 2.0 * h * h, "{intervals} intervals: error {error:e} of {x:?}");
+            assert!(
+                error < 2.0 * h * h,
+                "{intervals} intervals: error {error:e} of {x:?}"
+            );
             if let Some(p) = previous {
-                assert!(error < p / 8.0, "{intervals} intervals: error {error:e} after {p:e}");
+                assert!(
+                    error < p / 8.0,
+                    "{intervals} intervals: error {error:e} after {p:e}"
+                );
             }
             previous = Some(error);
         }
@@ -211,7 +261,11 @@ fn z_moment(x: &Nt2Number, right: bool) -> f64 {
         // Just below 1: a primary of zero width makes the plane at z = 1 (a
         // set of measure zero) jump to crisp.
         let i = x.alpha_plane_centroid(level(z.clamp(0.0, 1.0 - f64::EPSILON)));
-        if right { i.right() } else { i.left() }
+        if right {
+            i.right()
+        } else {
+            i.left()
+        }
     };
     let (c0, c1) = (c(0.0), c(1.0));
     let mut cuts = vec![0.0, 1.0];
@@ -221,7 +275,11 @@ fn z_moment(x: &Nt2Number, right: bool) -> f64 {
             let (mut lo, mut hi) = (0.0, 1.0);
             for _ in 0..60 {
                 let mid = 0.5 * (lo + hi);
-                if (c(mid) - b) * (c0 - b) > 0.0 { lo = mid } else { hi = mid }
+                if (c(mid) - b) * (c0 - b) > 0.0 {
+                    lo = mid
+                } else {
+                    hi = mid
+                }
             }
             cuts.push(0.5 * (lo + hi));
         }
@@ -291,7 +349,10 @@ fn alpha_planes_meet_their_tolerance() {
     // at z = 0): 6e-13 was its worst in 1000 cases, and the 40-digit values
     // below show ours right to 1e-16 in such cases.
     let worst = worst.get();
-    assert!(worst <= ALPHA_PLANES_TOLERANCE, "worst relative error {worst:e}");
+    assert!(
+        worst <= ALPHA_PLANES_TOLERANCE,
+        "worst relative error {worst:e}"
+    );
 }
 
 #[test]
@@ -301,22 +362,59 @@ fn alpha_planes_match_a_40_digit_reference() {
     // for numbers whose LMF has no width, where the z integral is hardest:
     // a thin primary triangle beside a wide UMF, and sloped feet on both sides.
     let cases = [
-        ((0.0, [-2.8020844161605702, 0.0], [-0.2813499005777582, 0.0], 1.0), -0.556318408825194337044582),
-        ((0.0, [-2.117781412259731, 0.0], [-0.05905963521054436, 0.0], 1.0), -0.542514874439022782779873),
-        ((0.0, [-0.8916860121703957, 0.0], [-0.7678094374417652, 0.0], 1.0), -0.267481755984551509145162),
         (
-            (1.8821325995629397, [-0.2016875954291626, 4.311408304581184], [0.996697488773335, 4.279394259846468], 1.0),
+            (
+                0.0,
+                [-2.8020844161605702, 0.0],
+                [-0.2813499005777582, 0.0],
+                1.0,
+            ),
+            -0.556318408825194337044582,
+        ),
+        (
+            (
+                0.0,
+                [-2.117781412259731, 0.0],
+                [-0.05905963521054436, 0.0],
+                1.0,
+            ),
+            -0.542514874439022782779873,
+        ),
+        (
+            (
+                0.0,
+                [-0.8916860121703957, 0.0],
+                [-0.7678094374417652, 0.0],
+                1.0,
+            ),
+            -0.267481755984551509145162,
+        ),
+        (
+            (
+                1.8821325995629397,
+                [-0.2016875954291626, 4.311408304581184],
+                [0.996697488773335, 4.279394259846468],
+                1.0,
+            ),
             2.299722343813135563287647,
         ),
         (
-            (4.744588534688821, [1.780121307875583, 7.653385036605039], [2.0855238224458006, 7.57622993786973], 0.5),
+            (
+                4.744588534688821,
+                [1.780121307875583, 7.653385036605039],
+                [2.0855238224458006, 7.57622993786973],
+                0.5,
+            ),
             4.786679982301639789009184,
         ),
     ];
     for ((c, upper, primary, h), exact) in cases {
         let x = n(c, upper, primary, [c, c], h);
         let d = x.alpha_planes().defuzzified();
-        assert!((d - exact).abs() <= 2e-15 * width(&x), "{x:?}: {d} vs {exact}");
+        assert!(
+            (d - exact).abs() <= 2e-15 * width(&x),
+            "{x:?}: {d} vs {exact}"
+        );
     }
 }
 
@@ -333,13 +431,20 @@ fn exhaustive(x: &[f64], lmf: &[f64], umf: &[f64]) -> (f64, f64) {
     };
     let lefts = (0..=x.len()).filter_map(|m| y(m, true));
     let rights = (0..=x.len()).filter_map(|m| y(m, false));
-    (lefts.fold(f64::INFINITY, f64::min), rights.fold(f64::NEG_INFINITY, f64::max))
+    (
+        lefts.fold(f64::INFINITY, f64::min),
+        rights.fold(f64::NEG_INFINITY, f64::max),
+    )
 }
 
 /// A sampled set: ascending x (repeats allowed), 0 ≤ lmf ≤ umf with zeros.
 fn sampled_set() -> impl Strategy<Value = (Vec<f64>, Vec<f64>, Vec<f64>)> {
     proptest::collection::vec(
-        (prop_oneof![1 => Just(0.0), 6 => 0.0..2.0f64], prop_oneof![1 => Just(0.0), 4 => 0.0..1.0f64], 0.0..=1.0f64),
+        (
+            prop_oneof![1 => Just(0.0), 6 => 0.0..2.0f64],
+            prop_oneof![1 => Just(0.0), 4 => 0.0..1.0f64],
+            0.0..=1.0f64,
+        ),
         1..40,
     )
     .prop_map(|samples| {
@@ -400,7 +505,15 @@ fn mendel_example_9_4_uncertain_mean() {
         let x: Vec<f64> = (0..=100).map(|i| f64::from(i) / 10.0).collect();
         let umf: Vec<f64> = x
             .iter()
-            .map(|&v| if v < m1 { gauss(v, m1) } else if v > m2 { gauss(v, m2) } else { 1.0 })
+            .map(|&v| {
+                if v < m1 {
+                    gauss(v, m1)
+                } else if v > m2 {
+                    gauss(v, m2)
+                } else {
+                    1.0
+                }
+            })
             .collect();
         let lmf: Vec<f64> = x.iter().map(|&v| gauss(v, m1).min(gauss(v, m2))).collect();
         let set = SampledSet::try_new(&x, &lmf, &umf).unwrap();

@@ -184,13 +184,7 @@ impl Nt2Number {
 
 /// `∫_{from}^{to} ζ(c)² dc` with `ζ(c) = −F₀(c) / (−F₀(c) + A_P·(c_P − c))`,
 /// `to = c_P`, split at the breakpoints inside.
-fn squared_level_integral(
-    km: &KmFunction,
-    b: &[f64; 7],
-    from: f64,
-    c_p: f64,
-    a_p: f64,
-) -> f64 {
+fn squared_level_integral(km: &KmFunction, b: &[f64; 7], from: f64, c_p: f64, a_p: f64) -> f64 {
     if from >= c_p {
         return 0.0;
     }
@@ -265,8 +259,14 @@ mod tests {
         // Primary and lower collapse to crisp: every plane below z = 1 is a
         // scaled UMF over a zero LMF, with centroid [upper.left, upper.right].
         let x = n(0.0, [-1.0, 3.0], [0.0, 0.0], [0.0, 0.0], 0.5);
-        assert_eq!(x.alpha_plane_centroid(z(0.7)), Interval::new_unchecked(-1.0, 3.0));
-        assert_eq!(x.alpha_plane_centroid(z(1.0)), Interval::new_unchecked(0.0, 0.0));
+        assert_eq!(
+            x.alpha_plane_centroid(z(0.7)),
+            Interval::new_unchecked(-1.0, 3.0)
+        );
+        assert_eq!(
+            x.alpha_plane_centroid(z(1.0)),
+            Interval::new_unchecked(0.0, 0.0)
+        );
         let d = x.alpha_planes().defuzzified();
         assert!((d - 1.0).abs() < 1e-15, "{d}");
     }

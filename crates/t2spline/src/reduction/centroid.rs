@@ -122,7 +122,11 @@ mod tests {
         let c = x.centroid();
         let u = (1.0 + 2f64.sqrt()).cbrt() - (2f64.sqrt() - 1.0).cbrt();
         assert!((c.left() - (2.0 - 3f64.sqrt())).abs() < 2e-16, "{c:?}");
-        assert!((c.right() - (1.0 - u)).abs() < 2e-16, "{c:?} vs {}", 1.0 - u);
+        assert!(
+            (c.right() - (1.0 - u)).abs() < 2e-16,
+            "{c:?} vs {}",
+            1.0 - u
+        );
     }
 
     #[test]
@@ -140,8 +144,14 @@ mod tests {
             );
             let d = x.centroid();
             let tol = 1e-15 * (shift.abs() + 1.5 * scale);
-            assert!((d.left() - m(c.left())).abs() <= tol, "{shift} {scale}: {d:?}");
-            assert!((d.right() - m(c.right())).abs() <= tol, "{shift} {scale}: {d:?}");
+            assert!(
+                (d.left() - m(c.left())).abs() <= tol,
+                "{shift} {scale}: {d:?}"
+            );
+            assert!(
+                (d.right() - m(c.right())).abs() <= tol,
+                "{shift} {scale}: {d:?}"
+            );
         }
     }
 }

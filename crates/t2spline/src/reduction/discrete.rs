@@ -144,13 +144,24 @@ impl<'a> SampledSet<'a> {
                 return fail("x", i, x[i], "is outside [-1e150, 1e150]");
             }
             if i > 0 && x[i] < x[i - 1] {
-                return fail("x", i, x[i], "is less than the x before it; x must not decrease");
+                return fail(
+                    "x",
+                    i,
+                    x[i],
+                    "is less than the x before it; x must not decrease",
+                );
             }
             if lmf[i] < 0.0 {
-                return fail("lmf", i, lmf[i], "is negative; a sampled set needs 0 <= lmf <= umf");
+                return fail(
+                    "lmf",
+                    i,
+                    lmf[i],
+                    "is negative; a sampled set needs 0 <= lmf <= umf",
+                );
             }
             if lmf[i] > umf[i] {
-                let rule = "is greater than the umf at that index; a sampled set needs 0 <= lmf <= umf";
+                let rule =
+                    "is greater than the umf at that index; a sampled set needs 0 <= lmf <= umf";
                 return fail("lmf", i, lmf[i], rule);
             }
             if umf[i] > MAX_WEIGHT {
@@ -436,11 +447,31 @@ mod tests {
             }
         );
         let e = SampledSet::try_new(&[0.0, 1.0], &[0.0, -0.1], &[1.0, 1.0]).unwrap_err();
-        assert!(matches!(e, Error::Sample { what: "lmf", index: 1, .. }), "{e}");
+        assert!(
+            matches!(
+                e,
+                Error::Sample {
+                    what: "lmf",
+                    index: 1,
+                    ..
+                }
+            ),
+            "{e}"
+        );
         let e = SampledSet::try_new(&[0.0, f64::NAN], &[0.0, 0.0], &[1.0, 1.0]).unwrap_err();
         assert_eq!(e.to_string(), "x[1] = NaN is not a finite number");
         let e = SampledSet::try_new(&[0.0, 2e150], &[0.0, 0.0], &[1.0, 1.0]).unwrap_err();
-        assert!(matches!(e, Error::Sample { what: "x", index: 1, .. }), "{e}");
+        assert!(
+            matches!(
+                e,
+                Error::Sample {
+                    what: "x",
+                    index: 1,
+                    ..
+                }
+            ),
+            "{e}"
+        );
         let e = SampledSet::try_new(&[], &[], &[]).unwrap_err();
         assert_eq!(e, Error::ZeroUpperMembership);
     }

@@ -65,45 +65,61 @@ impl Frame {
 /// around the apex 0, and the height.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Triangles {
-    upper: [f64; 2],
-    primary: [f64; 2],
-    lower: [f64; 2],
-    height: f64,
+    upper: Side2,
+    primary: Side2,
+    lower: Side2,
+    primary_feet: [f64; 2],
+}
+
+/// One triangle `T(x; a, 0, b, top)` as the slopes of its two sides, so that
+/// a value costs a multiplication: `top·(x − a)/(−a)` left of the apex,
+/// `top·(b − x)/b` right of it. A side of zero width is a vertical edge, 0 on
+/// its outer side (slope 0 here: every piece on that side has zero width or
+/// lies outside the triangle).
+#[derive(Clone, Copy, Debug)]
+struct Side2 {
+    feet: [f64; 2],
+    slope: [f64; 2],
+}
+
+impl Side2 {
+    fn new(feet: [f64; 2], top: f64) -> Self {
+        let [a, b] = feet;
+        let left = if a < 0.0 { top / -a } else { 0.0 };
+        let right = if b > 0.0 { top / b } else { 0.0 };
+        Side2 {
+            feet,
+            slope: [left, right],
+        }
+    }
+
+    /// The value at `x`, as the limit from inside a piece on the `right` side
+    /// of the apex or not.
+    fn at(&self, x: f64, right: bool) -> f64 {
+        let [a, b] = self.feet;
+        if right {
+            (self.slope[1] * (b - x)).max(0.0)
+        } else {
+            (self.slope[0] * (x - a)).max(0.0)
+        }
+    }
 }
 
 impl Triangles {
     pub(crate) fn new(b: &[f64; 7], height: f64) -> Self {
         Triangles {
-            upper: [b[0], b[6]],
-            primary: [b[1], b[5]],
-            lower: [b[2], b[4]],
-            height,
+            upper: Side2::new([b[0], b[6]], 1.0),
+            primary: Side2::new([b[1], b[5]], 1.0),
+            lower: Side2::new([b[2], b[4]], height),
+            primary_feet: [b[1], b[5]],
         }
     }
 
     /// The primary triangle's centroid `(primary.left + 0 + primary.right) / 3`
     /// and area `(primary.right − primary.left) / 2`.
     pub(crate) fn primary_centroid_and_area(&self) -> (f64, f64) {
-        let [a, b] = self.primary;
+        let [a, b] = self.primary_feet;
         ((a + b) / 3.0, (b - a) / 2.0)
-    }
-}
-
-/// `T(x; feet[0], 0, feet[1], top)` at `x`, as the limit from inside a piece
-/// that lies on the `right` side of the apex or not: a side of zero width is a
-/// vertical edge, 0 on its outer side.
-fn triangle(feet: [f64; 2], top: f64, x: f64, right: bool) -> f64 {
-    let [a, b] = feet;
-    if right {
-        if b > 0.0 {
-            top * ((b - x) / b).clamp(0.0, 1.0)
-        } else {
-            0.0
-        }
-    } else if a < 0.0 {
-        top * ((x - a) / -a).clamp(0.0, 1.0)
-    } else {
-        0.0
     }
 }
 
@@ -131,9 +147,9 @@ impl Footprint {
             let right = k >= 3;
             for end in 0..2 {
                 let x = b[k + end];
-                let p = triangle(t.primary, 1.0, x, right);
-                let u = triangle(t.upper, 1.0, x, right);
-                let l = triangle(t.lower, t.height, x, right);
+                let p = t.primary.at(x, right);
+                let u = t.upper.at(x, right);
+                let l = t.lower.at(x, right);
                 if z == 0.0 {
                     upper[k][end] = u;
                     lower[k][end] = l;
@@ -386,7 +402,10 @@ mod tests {
             for i in 0..=40 {
                 let c = b[0] + (b[6] - b[0]) * f64::from(i) / 40.0;
                 let (ours, direct) = (km.eval(c), km_by_quadrature(&fp, c));
-                assert!((ours - direct).abs() < 1e-15, "z {z}, c {c}: {ours} vs {direct}");
+                assert!(
+                    (ours - direct).abs() < 1e-15,
+                    "z {z}, c {c}: {ours} vs {direct}"
+                );
             }
         }
     }

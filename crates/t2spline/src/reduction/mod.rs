@@ -93,7 +93,9 @@ impl FromStr for TypeReduction {
             .into_iter()
             .find(|r| r.name() == s)
             .ok_or_else(|| {
-                format!("unknown type reduction `{s}` (known: paper, centroid, nie-tan, alpha-planes)")
+                format!(
+                    "unknown type reduction `{s}` (known: paper, centroid, nie-tan, alpha-planes)"
+                )
             })
     }
 }
