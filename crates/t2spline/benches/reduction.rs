@@ -15,8 +15,8 @@
 use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use t2spline::reduction::discrete::SampledSet;
-use t2spline::{Alpha, Membership, Nt2Number, TypeReduction};
+use t2spline::reduction::discrete::{sample, SampledSet};
+use t2spline::{Alpha, Nt2Number, TypeReduction};
 
 /// 64 numbers with spreads from a fixed xorshift sequence (no RNG crate).
 fn numbers() -> Vec<Nt2Number> {
@@ -47,23 +47,6 @@ fn numbers() -> Vec<Nt2Number> {
         .collect()
 }
 
-/// `count` uniform samples of a number's support with its LMF and UMF.
-fn sampled(x: &Nt2Number, count: usize) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
-    let (a, w) = (x.upper().left(), x.upper().width());
-    let xs: Vec<f64> = (0..count)
-        .map(|i| a + w * i as f64 / (count - 1) as f64)
-        .collect();
-    let lmf = xs
-        .iter()
-        .map(|&v| x.membership(Membership::Lower, v))
-        .collect();
-    let umf = xs
-        .iter()
-        .map(|&v| x.membership(Membership::Upper, v))
-        .collect();
-    (xs, lmf, umf)
-}
-
 fn exact(c: &mut Criterion) {
     let xs = numbers();
     let alpha = Alpha::try_new(0.5).unwrap();
@@ -91,7 +74,7 @@ fn exact(c: &mut Criterion) {
 
 fn discrete(c: &mut Criterion) {
     const N: usize = 1000;
-    let sets: Vec<_> = numbers().iter().map(|x| (*x, sampled(x, N))).collect();
+    let sets: Vec<_> = numbers().iter().map(|x| (*x, sample(x, N))).collect();
     let (mut km, mut ekm, mut eiasc) = ([0usize; 2], [0usize; 2], [0usize; 2]);
     for (x, (xs, lmf, umf)) in &sets {
         let set = SampledSet::try_new(xs, lmf, umf).unwrap();

@@ -2,9 +2,9 @@
 //! properties, limits and independent references.
 
 use proptest::prelude::*;
-use t2spline::reduction::discrete::SampledSet;
+use t2spline::reduction::discrete::{sample, SampledSet};
 use t2spline::reduction::ALPHA_PLANES_TOLERANCE;
-use t2spline::{strategies, Alpha, Membership, Nt2Number, TypeReduction};
+use t2spline::{strategies, Alpha, Nt2Number, TypeReduction};
 
 fn n(crisp: f64, upper: [f64; 2], primary: [f64; 2], lower: [f64; 2], h: f64) -> Nt2Number {
     Nt2Number::try_new(crisp, upper, primary, lower, h).unwrap()
@@ -190,23 +190,6 @@ fn reductions_commute_with_translation_and_scale() {
     }
 }
 
-/// Samples of a number's UMF and LMF at `count` uniform points of its support.
-fn sampled(x: &Nt2Number, count: usize) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
-    let (a, w) = (x.upper().left(), width(x));
-    let xs: Vec<f64> = (0..count)
-        .map(|i| a + w * i as f64 / (count - 1) as f64)
-        .collect();
-    let lmf = xs
-        .iter()
-        .map(|&v| x.membership(Membership::Lower, v))
-        .collect();
-    let umf = xs
-        .iter()
-        .map(|&v| x.membership(Membership::Upper, v))
-        .collect();
-    (xs, lmf, umf)
-}
-
 #[test]
 fn continuous_centroid_is_the_limit_of_the_discrete_algorithms() {
     // Without vertical edges the discrete centroids are trapezoid-rule
@@ -220,7 +203,7 @@ fn continuous_centroid_is_the_limit_of_the_discrete_algorithms() {
         let exact = x.centroid();
         let mut previous: Option<f64> = None;
         for intervals in [100, 400, 1600, 6400] {
-            let (xs, lmf, umf) = sampled(&x, intervals + 1);
+            let (xs, lmf, umf) = sample(&x, intervals + 1);
             let set = SampledSet::try_new(&xs, &lmf, &umf).unwrap();
             let (km, ekm, eiasc) = (set.km(), set.ekm(), set.eiasc());
             for other in [ekm, eiasc] {
@@ -357,7 +340,8 @@ fn alpha_planes_meet_their_tolerance() {
 
 #[test]
 fn alpha_planes_match_a_40_digit_reference() {
-    // Values of `peer/alpha_planes_reference.py` (mpmath, 40 digits, from the
+    // Values of `peer/alpha_planes_reference.py` (mpmath at 40 digits, here
+    // rounded to 17 significant digits; from the
     // definition: bisection for c_l(z), c_r(z), tanh-sinh quadrature over z),
     // for numbers whose LMF has no width, where the z integral is hardest:
     // a thin primary triangle beside a wide UMF, and sloped feet on both sides.
@@ -369,7 +353,7 @@ fn alpha_planes_match_a_40_digit_reference() {
                 [-0.2813499005777582, 0.0],
                 1.0,
             ),
-            -0.556318408825194337044582,
+            -0.556_318_408_825_194_3,
         ),
         (
             (
@@ -378,7 +362,7 @@ fn alpha_planes_match_a_40_digit_reference() {
                 [-0.05905963521054436, 0.0],
                 1.0,
             ),
-            -0.542514874439022782779873,
+            -0.542_514_874_439_022_8,
         ),
         (
             (
@@ -387,7 +371,7 @@ fn alpha_planes_match_a_40_digit_reference() {
                 [-0.7678094374417652, 0.0],
                 1.0,
             ),
-            -0.267481755984551509145162,
+            -0.267_481_755_984_551_5,
         ),
         (
             (
@@ -396,7 +380,7 @@ fn alpha_planes_match_a_40_digit_reference() {
                 [0.996697488773335, 4.279394259846468],
                 1.0,
             ),
-            2.299722343813135563287647,
+            2.299_722_343_813_136,
         ),
         (
             (
@@ -405,7 +389,7 @@ fn alpha_planes_match_a_40_digit_reference() {
                 [2.0855238224458006, 7.57622993786973],
                 0.5,
             ),
-            4.786679982301639789009184,
+            4.786_679_982_301_639_5,
         ),
     ];
     for ((c, upper, primary, h), exact) in cases {
