@@ -808,6 +808,43 @@ pub enum Error {
         /// The parameter v.
         v: f64,
     },
+
+    /// A sample of a sampled interval type-2 set breaks a rule of
+    /// [`SampledSet::try_new`](crate::reduction::discrete::SampledSet::try_new):
+    /// finite values, `x` within [`MAX_MAGNITUDE`](crate::MAX_MAGNITUDE) and not
+    /// decreasing, `0 ≤ lmf ≤ umf ≤ 1e150`.
+    ///
+    /// ```
+    /// # use t2spline::Error;
+    /// # use t2spline::reduction::discrete::SampledSet;
+    /// let e = SampledSet::try_new(&[0.0, 1.0, 2.0], &[0.0, 0.7, 0.0], &[0.5, 0.5, 0.2]).unwrap_err();
+    /// assert_eq!(e.to_string(), "lmf[1] = 0.7 is greater than the umf at that index; a sampled set needs 0 <= lmf <= umf");
+    /// let e = SampledSet::try_new(&[0.0, 2.0, 1.0], &[0.0; 3], &[1.0; 3]).unwrap_err();
+    /// assert!(matches!(e, Error::Sample { what: "x", index: 2, .. }));
+    /// ```
+    #[error("{what}[{index}] = {} {rule}", Num(*value))]
+    Sample {
+        /// `"x"`, `"lmf"` or `"umf"`.
+        what: &'static str,
+        /// Index of the sample (0-based).
+        index: usize,
+        /// The offending value.
+        value: f64,
+        /// The rule it breaks, as the end of the message.
+        rule: &'static str,
+    },
+
+    /// No upper membership of a sampled set is greater than 0 (or there are no
+    /// samples): the set has no centroid.
+    ///
+    /// ```
+    /// # use t2spline::Error;
+    /// # use t2spline::reduction::discrete::SampledSet;
+    /// let e = SampledSet::try_new(&[0.0, 1.0], &[0.0, 0.0], &[0.0, 0.0]).unwrap_err();
+    /// assert_eq!(e, Error::ZeroUpperMembership);
+    /// ```
+    #[error("umf: no sample is greater than 0, so the set has no centroid")]
+    ZeroUpperMembership,
 }
 
 /// The message of [`Error::InDirection`]: the curve rule in the surface's words.
