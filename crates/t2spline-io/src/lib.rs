@@ -43,6 +43,7 @@ mod finite;
 mod fit_data;
 pub mod job;
 mod pretty;
+mod printable;
 
 pub use crate::atomic::{write_all_atomic, write_atomic, Staged};
 pub use crate::csv::{render_csv, stage_csv, write_csv, CSV_FILES, DERIVATIVES_CSV};
@@ -51,3 +52,4 @@ pub use finite::check_finite;
 pub use fit_data::FitData;
 pub use job::{job_json, parse_data, parse_job, read_data, read_job};
 pub use pretty::{to_json_pretty, write_json_pretty};
+pub use printable::printable;

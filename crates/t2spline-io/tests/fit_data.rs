@@ -289,3 +289,24 @@ proptest! {
         prop_assert!(job.is_ok(), "{:?}", job.err().map(|e| e.lines()));
     }
 }
+
+#[test]
+fn order_errors_list_at_most_the_problem_limit() {
+    let data = parse(&profile()).unwrap();
+    let violations: Vec<OrderViolation> = (0..1500)
+        .map(|k| OrderViolation {
+            control_point: k,
+            axis: t2spline::Axis::X,
+            rule: "primary.left <= lower.left",
+            left: 1.0,
+            right: 0.5,
+        })
+        .collect();
+    let lines = data.order_error(&violations, "advice").lines();
+    let limit = t2spline_io::job::MAX_PROBLEMS;
+    // The count, `limit` violations, the rest counted, the advice.
+    assert_eq!(lines.len(), limit + 3, "{:?}", &lines[..3]);
+    assert!(lines[0].contains("at 1500 place(s)"), "{}", lines[0]);
+    assert_eq!(lines[limit + 1], "data.json: … and 500 more place(s)");
+    assert_eq!(lines[limit + 2], "data.json: advice");
+}
