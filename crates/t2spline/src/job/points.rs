@@ -100,10 +100,30 @@ impl<const D: usize> From<CurveSamples<D>> for Points {
     }
 }
 
+impl Points {
+    /// The name under which [`Points`] serialize as a newtype struct (feature
+    /// `serde`). JSON writers treat a newtype as its content, so result files
+    /// are unchanged; a serializer that builds arrays (the Python bindings
+    /// build numpy arrays) recognises point lists by this name.
+    pub const SERDE_NAME: &'static str = "t2spline::Points";
+}
+
 #[cfg(feature = "serde")]
 impl<T: serde::Serialize + Copy> serde::Serialize for Points<T> {
     /// A list of points, each a list of coordinates (`[[x, y], …]`), written
-    /// straight from the columns.
+    /// straight from the columns, as the newtype struct
+    /// [`Points::SERDE_NAME`].
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_newtype_struct(Points::SERDE_NAME, &Rows(&self.coords))
+    }
+}
+
+/// The rows of points given as columns: `[[x₀, y₀], [x₁, y₁], …]`.
+#[cfg(feature = "serde")]
+struct Rows<'a, T>(&'a [Vec<T>]);
+
+#[cfg(feature = "serde")]
+impl<T: serde::Serialize> serde::Serialize for Rows<'_, T> {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         use serde::ser::SerializeSeq;
         struct Row<'a, T>(&'a [Vec<T>], usize);
@@ -116,9 +136,10 @@ impl<T: serde::Serialize + Copy> serde::Serialize for Points<T> {
                 seq.end()
             }
         }
-        let mut seq = s.serialize_seq(Some(self.len()))?;
-        for i in 0..self.len() {
-            seq.serialize_element(&Row(&self.coords, i))?;
+        let len = self.0.first().map_or(0, Vec::len);
+        let mut seq = s.serialize_seq(Some(len))?;
+        for i in 0..len {
+            seq.serialize_element(&Row(self.0, i))?;
         }
         seq.end()
     }

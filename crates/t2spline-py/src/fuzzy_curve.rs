@@ -1,0 +1,295 @@
+//! `FuzzyCurve`: stage 1 of Algorithm 1.1 (SPEC §6–§7), a rational B-spline
+//! whose control points are fuzzy points; its seven layer curves sampled by
+//! the engine straight into one numpy buffer, its operations on all layers
+//! at once, and `solve` for stages 2–4.
+
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyTuple};
+use t2spline::{FuzzyCurve, Layer, Nt2Point};
+
+use crate::arrays::{array, optional_vector, rows_array, transposed};
+use crate::construct::{count, degree, FuzzyArrays};
+use crate::dim::{by_dim, ByDim, Fuzzy};
+use crate::errors::compute;
+use crate::number::{alpha, PyFuzzyNumber};
+use crate::nurbs_curve::{uniform_params, PyNurbsCurve};
+use crate::run::{job_text, parse};
+use crate::sample::{at_params, channels, output_buffer, ParamsArg};
+use crate::solution::PySolution;
+
+/// A fuzzy rational B-spline curve (see the stub for the docs).
+#[pyclass(frozen, eq, module = "t2spline", name = "FuzzyCurve")]
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct PyFuzzyCurve(pub(crate) ByDim<Fuzzy>);
+
+impl From<FuzzyCurve<2>> for PyFuzzyCurve {
+    fn from(curve: FuzzyCurve<2>) -> Self {
+        PyFuzzyCurve(curve.into())
+    }
+}
+
+impl From<FuzzyCurve<3>> for PyFuzzyCurve {
+    fn from(curve: FuzzyCurve<3>) -> Self {
+        PyFuzzyCurve(curve.into())
+    }
+}
+
+/// A layer from its name (`"upper_left"`, …, `"crisp"`, …, `"upper_right"`).
+///
+/// # Errors
+/// `ValueError` naming the argument and the names offered.
+pub(crate) fn layer(name: &str, arg: &str) -> PyResult<Layer> {
+    Layer::ALL
+        .into_iter()
+        .find(|l| l.name() == name)
+        .ok_or_else(|| {
+            let names: Vec<&str> = Layer::ALL.iter().map(|l| l.name()).collect();
+            PyValueError::new_err(format!(
+                "{arg}: expected one of {}, got {name:?}",
+                names.join(", ")
+            ))
+        })
+}
+
+/// One value per control point and coordinate, `f(number)` each, as an
+/// array of shape `(n, d)` followed by `tail`.
+fn per_number<'py, const D: usize>(
+    py: Python<'py>,
+    points: &[Nt2Point<D>],
+    tail: &[usize],
+    f: impl Fn(&t2spline::Nt2Number, &mut Vec<f64>),
+) -> PyResult<Bound<'py, PyAny>> {
+    let mut values = Vec::new();
+    for number in points.iter().flat_map(|p| p.coords()) {
+        f(number, &mut values);
+    }
+    let shape: Vec<usize> = [points.len(), D].iter().chain(tail).copied().collect();
+    array(py, values, &shape)
+}
+
+#[pymethods]
+impl PyFuzzyCurve {
+    #[new]
+    #[pyo3(signature = (crisp, upper, primary, lower, lower_height, weights=None, knots=None, *, degree=None, order=None))]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        py: Python<'_>,
+        crisp: &Bound<'_, PyAny>,
+        upper: &Bound<'_, PyAny>,
+        primary: &Bound<'_, PyAny>,
+        lower: &Bound<'_, PyAny>,
+        lower_height: &Bound<'_, PyAny>,
+        weights: Option<&Bound<'_, PyAny>>,
+        knots: Option<&Bound<'_, PyAny>>,
+        degree: Option<i64>,
+        order: Option<i64>,
+    ) -> PyResult<Self> {
+        let data = FuzzyArrays::read(crisp, upper, primary, lower, lower_height)?;
+        let weights = optional_vector(weights, "weights")?.unwrap_or_else(|| vec![1.0; data.n]);
+        let knots = optional_vector(knots, "knots")?;
+        let degree = self::degree(degree, order, knots.as_ref().map(Vec::len), data.n)?;
+        compute(py, move || {
+            Ok(match data.d {
+                2 => FuzzyCurve::try_new(degree, data.points::<2>()?, weights, knots)?.into(),
+                _ => FuzzyCurve::try_new(degree, data.points::<3>()?, weights, knots)?.into(),
+            })
+        })
+    }
+
+    #[staticmethod]
+    fn from_job(py: Python<'_>, job: &Bound<'_, PyAny>) -> PyResult<Self> {
+        let (text, source) = job_text(job)?;
+        let job = parse(py, &text, &source)?;
+        ByDim::from_model(job.model)
+            .map(PyFuzzyCurve)
+            .ok_or_else(|| PyValueError::new_err(format!("{source}: the job is not a curve")))
+    }
+
+    #[getter]
+    fn dimension(&self) -> usize {
+        self.0.dimension()
+    }
+
+    #[getter]
+    fn degree(&self) -> usize {
+        by_dim!(&self.0, |c| c.degree())
+    }
+
+    #[getter]
+    fn order(&self) -> usize {
+        by_dim!(&self.0, |c| c.order())
+    }
+
+    #[getter]
+    fn weights<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let w = by_dim!(&self.0, |c| c.weights().to_vec());
+        let n = w.len();
+        array(py, w, &[n])
+    }
+
+    #[getter]
+    fn knots<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let k = by_dim!(&self.0, |c| c.knots().as_slice().to_vec());
+        let n = k.len();
+        array(py, k, &[n])
+    }
+
+    #[getter]
+    fn domain(&self) -> (f64, f64) {
+        let d = by_dim!(&self.0, |c| c.domain());
+        (d.start, d.end)
+    }
+
+    #[getter]
+    fn crisp<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        by_dim!(&self.0, |c| per_number(py, c.points(), &[], |x, v| v.push(x.crisp())))
+    }
+
+    #[getter]
+    fn upper<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        by_dim!(&self.0, |c| per_number(py, c.points(), &[2], |x, v| {
+            v.extend([x.upper().left(), x.upper().right()]);
+        }))
+    }
+
+    #[getter]
+    fn primary<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        by_dim!(&self.0, |c| per_number(py, c.points(), &[2], |x, v| {
+            v.extend([x.primary().left(), x.primary().right()]);
+        }))
+    }
+
+    #[getter]
+    fn lower<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        by_dim!(&self.0, |c| per_number(py, c.points(), &[2], |x, v| {
+            v.extend([x.lower().left(), x.lower().right()]);
+        }))
+    }
+
+    #[getter]
+    fn lower_height<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        by_dim!(&self.0, |c| per_number(py, c.points(), &[], |x, v| v.push(x.height().get())))
+    }
+
+    fn point<'py>(&self, py: Python<'py>, index: i64) -> PyResult<Bound<'py, PyTuple>> {
+        let n = by_dim!(&self.0, |c| c.points().len());
+        let i = usize::try_from(index)
+            .ok()
+            .filter(|&i| i < n)
+            .ok_or_else(|| {
+                PyValueError::new_err(format!("index: {index} is outside [0, {}]", n - 1))
+            })?;
+        let numbers: Vec<PyFuzzyNumber> =
+            by_dim!(&self.0, |c| c.points()[i].coords().iter().map(|&x| PyFuzzyNumber(x)).collect());
+        PyTuple::new(py, numbers)
+    }
+
+    fn layer_control_points<'py>(
+        &self,
+        py: Python<'py>,
+        layer: &str,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let l = self::layer(layer, "layer")?;
+        by_dim!(&self.0, |c| rows_array(
+            py,
+            c.points().iter().map(|p| p.layer(l)).collect()
+        ))
+    }
+
+    fn layer_curve(&self, layer: &str) -> PyResult<PyNurbsCurve> {
+        let l = self::layer(layer, "layer")?;
+        Ok(by_dim!(&self.0, |c| c.layer_curve(l).into()))
+    }
+
+    fn crisp_curve(&self) -> PyNurbsCurve {
+        by_dim!(&self.0, |c| c.crisp_curve().into())
+    }
+
+    fn uniform_params<'py>(&self, py: Python<'py>, count: i64) -> PyResult<Bound<'py, PyAny>> {
+        uniform_params(py, by_dim!(&self.0, |c| c.domain()), count)
+    }
+
+    fn eval_layers<'py>(
+        &self,
+        py: Python<'py>,
+        t: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let d = self.dimension();
+        by_dim!(&self.0, |c| at_params(py, t, &[7, d], |v, out| {
+            out.extend(c.eval_layers(v)?.as_array().iter().flatten());
+            Ok(())
+        }))
+    }
+
+    fn sample<'py>(
+        &self,
+        py: Python<'py>,
+        params: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let params = ParamsArg::extract(params, "params")?;
+        let (n, d) = (params.len(), self.dimension());
+        let mut buffer = output_buffer(n, 7 * d, "params")?;
+        let domain = by_dim!(&self.0, |c| c.domain());
+        by_dim!(&self.0, |c| compute(py, || {
+            c.sample_layers_into_slices(params.params(), &mut channels(&mut buffer, 7 * d, n))
+        }))?;
+        let out = PyDict::new(py);
+        let t = match &params {
+            ParamsArg::Count(n) => domain.uniform(*n),
+            ParamsArg::Given(t) => t.clone(),
+        };
+        out.set_item("params", array(py, t, &[n])?)?;
+        // (layer, coordinate, parameter) seen as (layer, parameter, coordinate).
+        let layers = transposed(&array(py, buffer, &[7, d, n])?, &[0, 2, 1])?;
+        for l in Layer::ALL {
+            out.set_item(l.name(), layers.get_item(l.index())?)?;
+        }
+        Ok(out)
+    }
+
+    fn solve(&self, py: Python<'_>, alpha: f64) -> PyResult<PySolution> {
+        let a = self::alpha(alpha)?;
+        by_dim!(&self.0, |c| compute(py, || Ok(PySolution(c.solve(a).into()))))
+    }
+
+    #[pyo3(signature = (u, times=1))]
+    fn insert_knot(&self, py: Python<'_>, u: f64, times: i64) -> PyResult<Self> {
+        let times = count(times, "times", 1)?;
+        by_dim!(&self.0, |c| compute(py, || Ok(c.insert_knot(u, times)?.into())))
+    }
+
+    fn refine_knots(&self, py: Python<'_>, knots: &Bound<'_, PyAny>) -> PyResult<Self> {
+        let new = optional_vector(Some(knots), "knots")?.unwrap_or_default();
+        by_dim!(&self.0, |c| compute(py, || Ok(c.refine_knots(&new)?.into())))
+    }
+
+    #[pyo3(signature = (times=1))]
+    fn elevate_degree(&self, py: Python<'_>, times: i64) -> PyResult<Self> {
+        let times = count(times, "times", 1)?;
+        by_dim!(&self.0, |c| compute(py, || Ok(c.elevate_degree(times)?.into())))
+    }
+
+    fn split_at(&self, py: Python<'_>, t: f64) -> PyResult<(Self, Self)> {
+        by_dim!(&self.0, |c| compute(py, || {
+            let [a, b] = c.split_at(t)?;
+            Ok((a.into(), b.into()))
+        }))
+    }
+
+    fn segment(&self, py: Python<'_>, a: f64, b: f64) -> PyResult<Self> {
+        by_dim!(&self.0, |c| compute(py, || Ok(c.segment(a, b)?.into())))
+    }
+
+    fn __repr__(&self) -> String {
+        let (a, b) = self.domain();
+        by_dim!(&self.0, |c| format!(
+            "FuzzyCurve(dimension={}, degree={}, order={}, control_points=({}, {}), domain=({a:?}, {b:?}))",
+            self.dimension(),
+            c.degree(),
+            c.order(),
+            c.points().len(),
+            self.dimension(),
+        ))
+    }
+}

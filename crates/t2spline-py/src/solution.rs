@@ -1,0 +1,159 @@
+//! `Solution`: stages 2–4 of Algorithm 1.1 at one level alpha (SPEC §7) —
+//! the alpha-cut, type-reduced and defuzzified control points, their curves,
+//! their samples and the distance between the crisp and the defuzzified
+//! curve.
+
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use t2spline::{Layer, Side};
+
+use crate::arrays::{array, columns_array, rows_array};
+use crate::dim::{by_dim, ByDim, Solved};
+use crate::errors::compute;
+use crate::fuzzy_curve::{layer, PyFuzzyCurve};
+use crate::nurbs_curve::PyNurbsCurve;
+use crate::sample::ParamsArg;
+
+/// Stages 2–4 of a fuzzy curve at one level (see the stub for the docs).
+#[pyclass(frozen, eq, module = "t2spline", name = "Solution")]
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct PySolution(pub(crate) ByDim<Solved>);
+
+/// A side from its name.
+fn side(name: &str) -> PyResult<Side> {
+    match name {
+        "left" => Ok(Side::Left),
+        "right" => Ok(Side::Right),
+        other => Err(pyo3::exceptions::PyValueError::new_err(format!(
+            "side: expected 'left' or 'right', got {other:?}"
+        ))),
+    }
+}
+
+/// The six non-crisp layers, in SPEC order.
+fn six_layers() -> impl Iterator<Item = Layer> {
+    Layer::ALL.into_iter().filter(|&l| l != Layer::Crisp)
+}
+
+#[pymethods]
+impl PySolution {
+    #[getter]
+    fn alpha(&self) -> f64 {
+        by_dim!(&self.0, |s| s.alpha().get())
+    }
+
+    #[getter]
+    fn fuzzy_curve(&self) -> PyFuzzyCurve {
+        by_dim!(&self.0, |s| s.fuzzy_curve().clone().into())
+    }
+
+    #[getter]
+    fn crisp<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        by_dim!(&self.0, |s| rows_array(
+            py,
+            s.fuzzy_curve().points().iter().map(|p| p.crisp()).collect()
+        ))
+    }
+
+    #[getter]
+    fn alpha_cut<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let out = PyDict::new(py);
+        for l in six_layers() {
+            // An absent lower cut (alpha above that number's height) is NaN.
+            let rows = by_dim!(&self.0, |s| s
+                .alpha_cut_points()
+                .iter()
+                .flat_map(|cuts| cuts.iter().map(|c| c.layer(l).unwrap_or(f64::NAN)))
+                .collect::<Vec<_>>());
+            let n = by_dim!(&self.0, |s| s.alpha_cut_points().len());
+            out.set_item(l.name(), array(py, rows, &[n, self.0.dimension()])?)?;
+        }
+        Ok(out)
+    }
+
+    #[getter]
+    fn type_reduced_left<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        by_dim!(&self.0, |s| rows_array(py, s.type_reduced_side(Side::Left)))
+    }
+
+    #[getter]
+    fn type_reduced_right<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        by_dim!(&self.0, |s| rows_array(py, s.type_reduced_side(Side::Right)))
+    }
+
+    #[getter]
+    fn defuzzified<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        by_dim!(&self.0, |s| rows_array(py, s.defuzzified_points().to_vec()))
+    }
+
+    fn alpha_cut_curve(&self, layer: &str) -> PyResult<Option<PyNurbsCurve>> {
+        let l = self::layer(layer, "layer")?;
+        Ok(by_dim!(&self.0, |s| s.alpha_cut_curve(l).map(Into::into)))
+    }
+
+    fn type_reduced_curve(&self, side: &str) -> PyResult<PyNurbsCurve> {
+        let side = self::side(side)?;
+        Ok(by_dim!(&self.0, |s| s.type_reduced_curve(side).into()))
+    }
+
+    fn defuzzified_curve(&self) -> PyNurbsCurve {
+        by_dim!(&self.0, |s| s.defuzzified_curve().into())
+    }
+
+    fn crisp_curve(&self) -> PyNurbsCurve {
+        by_dim!(&self.0, |s| s.crisp_curve().into())
+    }
+
+    fn distance<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = by_dim!(&self.0, |s| compute(py, || Ok(s.distance())))?;
+        let out = PyDict::new(py);
+        out.set_item("max", d.max)?;
+        out.set_item("max_at", d.max_at)?;
+        out.set_item("rms", d.rms)?;
+        Ok(out)
+    }
+
+    fn sample<'py>(
+        &self,
+        py: Python<'py>,
+        params: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let params = ParamsArg::extract(params, "params")?;
+        crate::sample::output_buffer(params.len(), 9 * self.0.dimension(), "params")?;
+        let out = PyDict::new(py);
+        let domain = by_dim!(&self.0, |s| s.fuzzy_curve().domain());
+        let t = match &params {
+            ParamsArg::Count(n) => domain.uniform(*n),
+            ParamsArg::Given(t) => t.clone(),
+        };
+        by_dim!(&self.0, |s| {
+            let stages = compute(py, || s.sample_stages(params.params()))?;
+            out.set_item("params", array(py, t, &[params.len()])?)?;
+            let cuts = PyDict::new(py);
+            for l in six_layers() {
+                match stages.alpha_cut(l) {
+                    Some(c) => cuts.set_item(l.name(), columns_array(py, c.coords())?)?,
+                    None => cuts.set_item(l.name(), py.None())?,
+                }
+            }
+            out.set_item("alpha_cut", cuts)?;
+            let left = stages.type_reduced(Side::Left);
+            let right = stages.type_reduced(Side::Right);
+            out.set_item("type_reduced_left", columns_array(py, left.coords())?)?;
+            out.set_item("type_reduced_right", columns_array(py, right.coords())?)?;
+            out.set_item("defuzzified", columns_array(py, stages.defuzzified().coords())?)?;
+            PyResult::Ok(())
+        })?;
+        Ok(out)
+    }
+
+    fn __repr__(&self) -> String {
+        by_dim!(&self.0, |s| format!(
+            "Solution(alpha={:?}, control_points=({}, {}), degree={})",
+            s.alpha().get(),
+            s.fuzzy_curve().points().len(),
+            self.0.dimension(),
+            s.fuzzy_curve().degree(),
+        ))
+    }
+}
