@@ -67,9 +67,13 @@ pub(crate) fn floats(arg: &Bound<'_, PyAny>, name: &str) -> PyResult<Floats> {
         .map_err(|e| PyValueError::new_err(format!("{name}: {e}")))?
         .to_vec();
     if let Some((i, value)) = data.iter().enumerate().find(|(_, v)| !v.is_finite()) {
+        let place = if shape.is_empty() {
+            name.to_owned()
+        } else {
+            format!("{name}[{}]", index_text(i, &shape))
+        };
         return Err(PyValueError::new_err(format!(
-            "{name}[{}] = {value} is not a finite number (NaN and infinity are refused)",
-            index_text(i, &shape)
+            "{place} = {value} is not a finite number (NaN and infinity are refused)"
         )));
     }
     Ok(Floats { shape, data })
@@ -212,6 +216,5 @@ mod tests {
         assert_eq!(shape_text(&[5]), "(5,)");
         assert_eq!(shape_text(&[]), "()");
         assert_eq!(index_text(7, &[4, 2, 2]), "1, 1, 1");
-        assert_eq!(index_text(0, &[]), "");
     }
 }

@@ -18,9 +18,19 @@ pyo3::create_exception!(
     t2spline,
     JobError,
     PyValueError,
-    "A job (a dict or a job file) that breaks the rules of the job file.\n\n\
-     The message holds one line per problem, as `t2spline run` prints them\n\
-     (`file:line:column: place: rule`); `problems` is the list of those lines."
+    "A job (a dict or a job file) that breaks the rules of the job file\n\
+     (SPEC §8); a ValueError.\n\n\
+     The message holds one line per problem, as ``t2spline run`` prints them\n\
+     (``file:line:column: place: rule``); ``problems`` is the list of those\n\
+     lines. Every problem is reported, not only the first.\n\n\
+     Examples\n\
+     --------\n\
+     >>> try:\n\
+     ...     run({\"order\": 2, \"alhpa\": 0.5, \"points\": []})\n\
+     ... except JobError as e:\n\
+     ...     print(*e.problems, sep=\"\\n\")\n\
+     <dict>:3:3: alhpa: unknown key (did you mean `alpha`?)\n\
+     <dict>:4:3: points: a curve of order 2 needs at least 2 control points, got 0\n"
 );
 
 /// A [`JobError`] whose message is `lines`, one per problem, and whose

@@ -18,7 +18,54 @@ use crate::run::{job_text, parse};
 use crate::sample::{at_params, channels, output_buffer, ParamsArg};
 use crate::solution::PySolution;
 
-/// A fuzzy rational B-spline curve (see the stub for the docs).
+/// A normal type-2 fuzzy rational B-spline curve: stage 1 of Algorithm 1.1
+/// (SPEC §6–§7, paper Def. 5.1 and Fig. 5.1).
+///
+/// The control points are fuzzy points, one fuzzy number (``FuzzyNumber``)
+/// per coordinate. The seven *layer curves* go through one value of every
+/// number, with the curve's weights and knots::
+///
+///     C_L(t) = Σᵢ wᵢ Nᵢ,ₚ(t) Pᵢ,L / Σᵢ wᵢ Nᵢ,ₚ(t),
+///     L in upper_left, primary_left, lower_left, crisp, lower_right, primary_right, upper_right
+///
+/// and since the rational basis is non-negative and sums to 1, they keep the
+/// order of the values at every ``t``.
+///
+/// Parameters
+/// ----------
+/// crisp : array_like, shape (n, d)
+///     The crisp control points, ``d`` = 2 or 3.
+/// upper, primary, lower : array_like, shape (n, d, 2)
+///     The ``[left, right]`` feet of each number's triangles.
+/// lower_height : float or array_like of shape (n, d)
+///     ``h`` of every number, or one for all.
+/// weights : array_like, shape (n,), optional
+///     Default: all 1.
+/// knots : array_like, shape (n + degree + 1,), optional
+///     Default: clamped uniform.
+/// degree, order : int, optional
+///     Exactly one of them; when both are left out, the degree follows from
+///     the number of knots.
+///
+/// Raises
+/// ------
+/// TypeError, ValueError
+///     For a wrong dtype or shape (naming the argument and the shape
+///     expected), NaN or infinity, and every rule of SPEC §1 and §6, naming
+///     the place: ``points[2].y: the order lower.left <= crisp is broken: 2.1 > 2``.
+///
+/// Examples
+/// --------
+/// >>> import numpy as np
+/// >>> c = np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]])
+/// >>> spread = np.array([-0.6, 0.9])          # [left, right] offsets
+/// >>> curve = FuzzyCurve(c, c[..., None] + spread, c[..., None] + 0.6 * spread,
+/// ...                    c[..., None] + 0.3 * spread, lower_height=0.6, degree=2)
+/// >>> curve.upper.shape, curve.lower_height.shape
+/// ((4, 2, 2), (4, 2))
+/// >>> s = curve.sample(5)
+/// >>> s["upper_right"][2] - s["crisp"][2]     # the upper right spread at t = 0.5
+/// array([0.9, 0.9])
 #[pyclass(frozen, eq, module = "t2spline", name = "FuzzyCurve")]
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct PyFuzzyCurve(pub(crate) ByDim<Fuzzy>);
@@ -97,6 +144,14 @@ impl PyFuzzyCurve {
         })
     }
 
+    /// The fuzzy curve of a job: a dict with the keys of a job file, or the
+    /// path of one (validated as by ``t2spline run``).
+    ///
+    /// Raises
+    /// ------
+    /// JobError
+    ///     For a job that breaks the rules; ``ValueError`` for a job that is not
+    ///     a curve.
     #[staticmethod]
     fn from_job(py: Python<'_>, job: &Bound<'_, PyAny>) -> PyResult<Self> {
         let (text, source) = job_text(job)?;
@@ -106,21 +161,25 @@ impl PyFuzzyCurve {
             .ok_or_else(|| PyValueError::new_err(format!("{source}: the job is not a curve")))
     }
 
+    /// The number of coordinates of a point: 2 or 3.
     #[getter]
     fn dimension(&self) -> usize {
         self.0.dimension()
     }
 
+    /// The degree ``p``.
     #[getter]
     fn degree(&self) -> usize {
         by_dim!(&self.0, |c| c.degree())
     }
 
+    /// The order ``k = p + 1``.
     #[getter]
     fn order(&self) -> usize {
         by_dim!(&self.0, |c| c.order())
     }
 
+    /// The weights, shape ``(n,)``.
     #[getter]
     fn weights<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         let w = by_dim!(&self.0, |c| c.weights().to_vec());
@@ -128,6 +187,7 @@ impl PyFuzzyCurve {
         array(py, w, &[n])
     }
 
+    /// The knot vector, shape ``(n + order,)``.
     #[getter]
     fn knots<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         let k = by_dim!(&self.0, |c| c.knots().as_slice().to_vec());
@@ -135,17 +195,20 @@ impl PyFuzzyCurve {
         array(py, k, &[n])
     }
 
+    /// The parameter domain ``(U[p], U[n])``.
     #[getter]
     fn domain(&self) -> (f64, f64) {
         let d = by_dim!(&self.0, |c| c.domain());
         (d.start, d.end)
     }
 
+    /// The crisp values, shape ``(n, d)``.
     #[getter]
     fn crisp<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         by_dim!(&self.0, |c| per_number(py, c.points(), &[], |x, v| v.push(x.crisp())))
     }
 
+    /// The upper feet ``[left, right]``, shape ``(n, d, 2)``.
     #[getter]
     fn upper<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         by_dim!(&self.0, |c| per_number(py, c.points(), &[2], |x, v| {
@@ -153,6 +216,7 @@ impl PyFuzzyCurve {
         }))
     }
 
+    /// The primary feet ``[left, right]``, shape ``(n, d, 2)``.
     #[getter]
     fn primary<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         by_dim!(&self.0, |c| per_number(py, c.points(), &[2], |x, v| {
@@ -160,6 +224,7 @@ impl PyFuzzyCurve {
         }))
     }
 
+    /// The lower feet ``[left, right]``, shape ``(n, d, 2)``.
     #[getter]
     fn lower<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         by_dim!(&self.0, |c| per_number(py, c.points(), &[2], |x, v| {
@@ -167,11 +232,13 @@ impl PyFuzzyCurve {
         }))
     }
 
+    /// The lower height of every number, shape ``(n, d)``.
     #[getter]
     fn lower_height<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         by_dim!(&self.0, |c| per_number(py, c.points(), &[], |x, v| v.push(x.height().get())))
     }
 
+    /// The fuzzy control point ``index``: one ``FuzzyNumber`` per coordinate.
     fn point<'py>(&self, py: Python<'py>, index: i64) -> PyResult<Bound<'py, PyTuple>> {
         let n = by_dim!(&self.0, |c| c.points().len());
         let i = usize::try_from(index)
@@ -185,6 +252,7 @@ impl PyFuzzyCurve {
         PyTuple::new(py, numbers)
     }
 
+    /// The values of one layer at every control point, shape ``(n, d)``.
     fn layer_control_points<'py>(
         &self,
         py: Python<'py>,
@@ -197,19 +265,33 @@ impl PyFuzzyCurve {
         ))
     }
 
+    /// The layer curve through one value of every control point, as a
+    /// ``NurbsCurve`` (``"crisp"``: the crisp curve).
     fn layer_curve(&self, layer: &str) -> PyResult<PyNurbsCurve> {
         let l = self::layer(layer, "layer")?;
         Ok(by_dim!(&self.0, |c| c.layer_curve(l).into()))
     }
 
+    /// The crisp rational B-spline through the crisp values.
     fn crisp_curve(&self) -> PyNurbsCurve {
         by_dim!(&self.0, |c| c.crisp_curve().into())
     }
 
+    /// ``count`` uniform parameters over the domain (SPEC §8), the
+    /// parameters of ``sample(count)``.
     fn uniform_params<'py>(&self, py: Python<'py>, count: i64) -> PyResult<Bound<'py, PyAny>> {
         uniform_params(py, by_dim!(&self.0, |c| c.domain()), count)
     }
 
+    /// The seven layer curves at every value of ``t`` by the straightforward
+    /// evaluator (one rational basis for all layers); the reference that
+    /// ``sample`` is tested against.
+    ///
+    /// Returns
+    /// -------
+    /// numpy.ndarray
+    ///     Shape ``t.shape + (7, d)``, layers in SPEC order (``upper_left`` …
+    ///     ``upper_right``, ``crisp`` at index 3).
     fn eval_layers<'py>(
         &self,
         py: Python<'py>,
@@ -222,6 +304,23 @@ impl PyFuzzyCurve {
         }))
     }
 
+    /// The seven layer curves at many parameters by the sampling engine: one
+    /// power form of the rational basis per knot span for all layers, written
+    /// straight into one numpy buffer (no per-point work in Python), the SPEC
+    /// §1 order of the layers kept exactly, multi-threaded for large jobs.
+    ///
+    /// Parameters
+    /// ----------
+    /// params : int or array_like
+    ///     A count of uniform parameters, or a 1-D array of parameters in the
+    ///     domain, in any order.
+    ///
+    /// Returns
+    /// -------
+    /// dict
+    ///     ``"params"``: the parameters, shape ``(m,)``; and for each layer name
+    ///     (``"upper_left"`` … ``"upper_right"``) the points, shape ``(m, d)``.
+    ///     The layers are views of one ``(7, d, m)`` array.
     fn sample<'py>(
         &self,
         py: Python<'py>,
@@ -248,28 +347,48 @@ impl PyFuzzyCurve {
         Ok(out)
     }
 
+    /// Stages 2–4 at level ``alpha`` (SPEC §7): alpha-cut, type reduction and
+    /// defuzzification of every control point; see ``Solution``.
+    ///
+    /// Raises
+    /// ------
+    /// ValueError
+    ///     If ``alpha`` is NaN or outside ``[0, 1]``.
     fn solve(&self, py: Python<'_>, alpha: f64) -> PyResult<PySolution> {
         let a = self::alpha(alpha)?;
         by_dim!(&self.0, |c| compute(py, || Ok(PySolution(c.solve(a).into()))))
     }
 
+    /// The same fuzzy curve with the knot ``u`` inserted ``times`` times, on all
+    /// seven layers at once (see ``NurbsCurve.insert_knot``); the order of the
+    /// layers holds exactly.
     #[pyo3(signature = (u, times=1))]
     fn insert_knot(&self, py: Python<'_>, u: f64, times: i64) -> PyResult<Self> {
         let times = count(times, "times", 1)?;
         by_dim!(&self.0, |c| compute(py, || Ok(c.insert_knot(u, times)?.into())))
     }
 
+    /// The same fuzzy curve with all of ``knots`` inserted, on all layers.
     fn refine_knots(&self, py: Python<'_>, knots: &Bound<'_, PyAny>) -> PyResult<Self> {
         let new = optional_vector(Some(knots), "knots")?.unwrap_or_default();
         by_dim!(&self.0, |c| compute(py, || Ok(c.refine_knots(&new)?.into())))
     }
 
+    /// The same fuzzy curve of degree ``degree + times``, on all layers.
+    ///
+    /// Raises
+    /// ------
+    /// ValueError
+    ///     When a coordinate mixes lower heights (new control points need one
+    ///     height per coordinate).
     #[pyo3(signature = (times=1))]
     fn elevate_degree(&self, py: Python<'_>, times: i64) -> PyResult<Self> {
         let times = count(times, "times", 1)?;
         by_dim!(&self.0, |c| compute(py, || Ok(c.elevate_degree(times)?.into())))
     }
 
+    /// The two fuzzy curves left and right of ``t`` (strictly inside the
+    /// domain).
     fn split_at(&self, py: Python<'_>, t: f64) -> PyResult<(Self, Self)> {
         by_dim!(&self.0, |c| compute(py, || {
             let [a, b] = c.split_at(t)?;
@@ -277,6 +396,7 @@ impl PyFuzzyCurve {
         }))
     }
 
+    /// The piece of the fuzzy curve over ``[a, b]``.
     fn segment(&self, py: Python<'_>, a: f64, b: f64) -> PyResult<Self> {
         by_dim!(&self.0, |c| compute(py, || Ok(c.segment(a, b)?.into())))
     }

@@ -12,7 +12,48 @@ use crate::dim::{by_dim, ByDim, Nurbs};
 use crate::errors::compute;
 use crate::sample::{at_params, channels, output_buffer, ParamsArg};
 
-/// A rational B-spline curve (see the stub for the docs).
+/// A rational B-spline curve in the plane or in space (SPEC §6, paper
+/// Def. 5.1)::
+///
+///     C(t) = Σᵢ wᵢ Nᵢ,ₚ(t) Pᵢ / Σᵢ wᵢ Nᵢ,ₚ(t),   t in [U[p], U[n]]
+///
+/// with ``n`` control points ``Pᵢ``, weights ``wᵢ > 0``, degree ``p`` (order
+/// ``k = p + 1``) and a knot vector ``U`` of ``n + k`` non-decreasing values
+/// (default: clamped uniform). At an interior knot of full multiplicity the
+/// value from the right is taken; at the right end of the domain the last
+/// non-empty span is used.
+///
+/// Parameters
+/// ----------
+/// control_points : array_like, shape (n, 2) or (n, 3)
+/// weights : array_like, shape (n,), optional
+///     Default: all 1.
+/// knots : array_like, shape (n + degree + 1,), optional
+///     Default: clamped uniform.
+/// degree, order : int, optional
+///     Exactly one of them (``order = degree + 1``); when both are left out,
+///     the degree follows from the number of knots.
+///
+/// Raises
+/// ------
+/// TypeError, ValueError
+///     For an argument of the wrong dtype or shape (named), NaN or infinity,
+///     and every rule of SPEC §6 (too few control points, a weight that is not
+///     positive, decreasing knots, ...), naming the place.
+///
+/// Examples
+/// --------
+/// The rational quarter circle, weights ``1, √2/2, 1``:
+///
+/// >>> import numpy as np
+/// >>> arc = NurbsCurve([[1, 0], [1, 1], [0, 1]], weights=[1, np.sqrt(0.5), 1], degree=2)
+/// >>> arc
+/// NurbsCurve(dimension=2, degree=2, order=3, control_points=(3, 2), knots=(6,), domain=(0.0, 1.0))
+/// >>> points = arc.sample(101)                       # (101, 2), by the sampling engine
+/// >>> bool(np.allclose(np.hypot(points[:, 0], points[:, 1]), 1.0, rtol=0, atol=1e-14))
+/// True
+/// >>> round(arc.arc_length(), 12) == round(np.pi / 2, 12)
+/// True
 #[pyclass(frozen, eq, module = "t2spline", name = "NurbsCurve")]
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct PyNurbsCurve(pub(crate) ByDim<Nurbs>);
@@ -84,26 +125,31 @@ impl PyNurbsCurve {
         })
     }
 
+    /// The number of coordinates of a point: 2 or 3.
     #[getter]
     fn dimension(&self) -> usize {
         self.0.dimension()
     }
 
+    /// The degree ``p``.
     #[getter]
     fn degree(&self) -> usize {
         by_dim!(&self.0, |c| c.degree())
     }
 
+    /// The order ``k = p + 1``.
     #[getter]
     fn order(&self) -> usize {
         by_dim!(&self.0, |c| c.order())
     }
 
+    /// The control points, shape ``(n, dimension)``.
     #[getter]
     fn control_points<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         by_dim!(&self.0, |c| rows_array(py, c.control_points().to_vec()))
     }
 
+    /// The weights, shape ``(n,)``.
     #[getter]
     fn weights<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         let w = by_dim!(&self.0, |c| c.weights().to_vec());
@@ -111,6 +157,7 @@ impl PyNurbsCurve {
         array(py, w, &[n])
     }
 
+    /// The knot vector, shape ``(n + order,)`` (the default made explicit).
     #[getter]
     fn knots<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         let k = by_dim!(&self.0, |c| c.knots().as_slice().to_vec());
@@ -118,16 +165,41 @@ impl PyNurbsCurve {
         array(py, k, &[n])
     }
 
+    /// The parameter domain ``(U[p], U[n])``.
     #[getter]
     fn domain(&self) -> (f64, f64) {
         let d = by_dim!(&self.0, |c| c.domain());
         (d.start, d.end)
     }
 
+    /// ``count`` uniform parameters over the domain (SPEC §8)::
+    ///
+    ///     tᵢ = a + (b − a)·i/(count − 1),   i = 0 … count − 1, the last exactly b
+    ///
+    /// the parameters of ``sample(count)``.
     fn uniform_params<'py>(&self, py: Python<'py>, count: i64) -> PyResult<Bound<'py, PyAny>> {
         uniform_params(py, by_dim!(&self.0, |c| c.domain()), count)
     }
 
+    /// The point ``C(t)`` at every value of ``t``, by the straightforward
+    /// evaluator (the rational basis at ``t``); ``sample`` is the fast
+    /// engine for many parameters.
+    ///
+    /// Parameters
+    /// ----------
+    /// t : float or array_like
+    ///     Parameters in the domain, any shape.
+    ///
+    /// Returns
+    /// -------
+    /// numpy.ndarray
+    ///     Shape ``t.shape + (dimension,)``.
+    ///
+    /// Raises
+    /// ------
+    /// ValueError
+    ///     For a parameter outside the domain (``parameter t = 2 is outside
+    ///     the domain [0, 1]``), NaN or infinity.
     fn eval<'py>(&self, py: Python<'py>, t: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
         let d = self.dimension();
         by_dim!(&self.0, |c| at_params(py, t, &[d], |v, out| {
@@ -136,6 +208,21 @@ impl PyNurbsCurve {
         }))
     }
 
+    /// The curve at many parameters by the sampling engine (one power form of
+    /// the rational basis per knot span, multi-threaded for large jobs); agrees
+    /// with ``eval`` to rounding.
+    ///
+    /// Parameters
+    /// ----------
+    /// params : int or array_like
+    ///     A count of uniform parameters (``uniform_params(count)``), or a 1-D
+    ///     array of parameters in any order (sorted ones are fastest).
+    ///
+    /// Returns
+    /// -------
+    /// numpy.ndarray
+    ///     Shape ``(len(params), dimension)``; each coordinate is contiguous
+    ///     (the engine's structure of arrays, seen through a transpose).
     fn sample<'py>(
         &self,
         py: Python<'py>,
@@ -152,6 +239,20 @@ impl PyNurbsCurve {
         transposed(&array(py, buffer, &[d, n])?, &[1, 0])
     }
 
+    /// The derivatives ``C⁽ʲ⁾(t)``, ``j = 0 … order``, at every value of ``t``
+    /// (The NURBS Book A3.2 and A4.2); one-sided at knots, as ``eval``.
+    ///
+    /// Returns
+    /// -------
+    /// numpy.ndarray
+    ///     Shape ``t.shape + (order + 1, dimension)``; ``[..., 0, :]`` is the
+    ///     point itself.
+    ///
+    /// Examples
+    /// --------
+    /// >>> line = NurbsCurve([[0, 0], [3, 4]], degree=1)
+    /// >>> line.derivatives(0.5, order=2).tolist()
+    /// [[1.5, 2.0], [3.0, 4.0], [0.0, 0.0]]
     #[pyo3(signature = (t, order=1))]
     fn derivatives<'py>(
         &self,
@@ -169,6 +270,13 @@ impl PyNurbsCurve {
         }))
     }
 
+    /// The unit tangent ``C'(t)/|C'(t)|`` at every value of ``t``; shape
+    /// ``t.shape + (dimension,)``.
+    ///
+    /// Raises
+    /// ------
+    /// ValueError
+    ///     Where the curve has zero speed.
     fn tangent<'py>(&self, py: Python<'py>, t: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
         let d = self.dimension();
         by_dim!(&self.0, |c| at_params(py, t, &[d], |v, out| {
@@ -177,6 +285,15 @@ impl PyNurbsCurve {
         }))
     }
 
+    /// The curvature ``|C' × C''| / |C'|³`` at every value of ``t``: a float for
+    /// a number, else an array of the shape of ``t``.
+    ///
+    /// Examples
+    /// --------
+    /// >>> import numpy as np
+    /// >>> arc = NurbsCurve([[1, 0], [1, 1], [0, 1]], weights=[1, np.sqrt(0.5), 1], degree=2)
+    /// >>> bool(np.allclose(arc.curvature([0.0, 0.3, 1.0]), 1.0))   # the unit circle
+    /// True
     fn curvature<'py>(
         &self,
         py: Python<'py>,
@@ -188,6 +305,9 @@ impl PyNurbsCurve {
         }))
     }
 
+    /// The rational basis ``Rᵢ(t) = wᵢNᵢ,ₚ(t) / Σⱼ wⱼNⱼ,ₚ(t)`` of every control
+    /// point at every value of ``t``: non-negative, summing to 1; shape
+    /// ``t.shape + (n,)``.
     fn rational_basis<'py>(
         &self,
         py: Python<'py>,
@@ -200,23 +320,44 @@ impl PyNurbsCurve {
         }))
     }
 
+    /// The same curve with the knot ``u`` inserted ``times`` times (Boehm,
+    /// The NURBS Book A5.1).
+    ///
+    /// Raises
+    /// ------
+    /// ValueError
+    ///     If ``u`` is outside the domain or would repeat more than ``order``
+    ///     times.
+    ///
+    /// Examples
+    /// --------
+    /// >>> c = NurbsCurve([[0, 0], [1, 2], [3, 2], [4, 0]], degree=2)
+    /// >>> d = c.insert_knot(0.3)
+    /// >>> d.control_points.shape, bool(abs(d.eval(0.7) - c.eval(0.7)).max() < 1e-14)
+    /// ((5, 2), True)
     #[pyo3(signature = (u, times=1))]
     fn insert_knot(&self, py: Python<'_>, u: f64, times: i64) -> PyResult<Self> {
         let times = count(times, "times", 1)?;
         by_dim!(&self.0, |c| compute(py, || Ok(c.insert_knot(u, times)?.into())))
     }
 
+    /// The same curve with all of ``knots`` inserted (knot refinement, The
+    /// NURBS Book A5.4).
     fn refine_knots(&self, py: Python<'_>, knots: &Bound<'_, PyAny>) -> PyResult<Self> {
         let new = optional_vector(Some(knots), "knots")?.unwrap_or_default();
         by_dim!(&self.0, |c| compute(py, || Ok(c.refine_knots(&new)?.into())))
     }
 
+    /// The same curve of degree ``degree + times`` (The NURBS Book A5.9; an
+    /// unclamped curve is first cut to its domain).
     #[pyo3(signature = (times=1))]
     fn elevate_degree(&self, py: Python<'_>, times: i64) -> PyResult<Self> {
         let times = count(times, "times", 1)?;
         by_dim!(&self.0, |c| compute(py, || Ok(c.elevate_degree(times)?.into())))
     }
 
+    /// The two curves left and right of ``t``, strictly inside the domain,
+    /// with domains ``(a, t)`` and ``(t, b)``.
     fn split_at(&self, py: Python<'_>, t: f64) -> PyResult<(Self, Self)> {
         by_dim!(&self.0, |c| compute(py, || {
             let [a, b] = c.split_at(t)?;
@@ -224,14 +365,20 @@ impl PyNurbsCurve {
         }))
     }
 
+    /// The piece of the curve over ``[a, b]``, as a curve of its own.
     fn segment(&self, py: Python<'_>, a: f64, b: f64) -> PyResult<Self> {
         by_dim!(&self.0, |c| compute(py, || Ok(c.segment(a, b)?.into())))
     }
 
+    /// The same curve with a clamped knot vector (end knots repeated
+    /// ``order`` times), so that it starts and ends at control points.
     fn clamped(&self, py: Python<'_>) -> PyResult<Self> {
         by_dim!(&self.0, |c| compute(py, || Ok(c.clamped().into())))
     }
 
+    /// The length of the curve between ``a`` and ``b`` (default: the whole
+    /// domain), by adaptive Gauss–Kronrod 7/15 quadrature of ``|C'(t)|`` per
+    /// knot span (tolerance 1e-10 relative).
     #[pyo3(signature = (a=None, b=None))]
     fn arc_length(&self, py: Python<'_>, a: Option<f64>, b: Option<f64>) -> PyResult<f64> {
         by_dim!(&self.0, |c| compute(py, || match (a, b) {
@@ -243,10 +390,25 @@ impl PyNurbsCurve {
         }))
     }
 
+    /// The parameter at which the arc length from the start of the domain is
+    /// ``length`` (Newton's method safeguarded by bisection).
     fn param_at_length(&self, py: Python<'_>, length: f64) -> PyResult<f64> {
         by_dim!(&self.0, |c| compute(py, || c.param_at_length(length)))
     }
 
+    /// The point of the curve closest to ``point`` (The NURBS Book §6.1:
+    /// sampling per span, Newton's method, golden-section search as a
+    /// fallback).
+    ///
+    /// Parameters
+    /// ----------
+    /// point : array_like, shape (dimension,) or (m, dimension)
+    ///
+    /// Returns
+    /// -------
+    /// (t, point, distance)
+    ///     For one point: a float, an array ``(dimension,)`` and a float; for
+    ///     ``m`` points: arrays ``(m,)``, ``(m, dimension)`` and ``(m,)``.
     fn closest_point<'py>(
         &self,
         py: Python<'py>,
@@ -288,6 +450,8 @@ impl PyNurbsCurve {
         }
     }
 
+    /// The tight axis-aligned box of the curve ``(min, max)``, each of shape
+    /// ``(dimension,)`` (from the roots of each coordinate's derivative).
     fn bounding_box<'py>(
         &self,
         py: Python<'py>,

@@ -111,9 +111,75 @@ fn settings(
     })
 }
 
-/// Runs a job as `t2spline run` does and returns its result as a dict with
-/// the keys of the result file, every array of numbers a `float64` numpy
-/// array (see the module's docs in `t2spline/_t2spline.pyi`).
+/// Runs a job as ``t2spline run`` does: every stage of Algorithm 1.1 at
+/// level alpha, every curve sampled at uniform parameters, and the distance
+/// between the crisp and the defuzzified curve (SPEC §7–§8).
+///
+/// The job goes through the same validator as job files
+/// (``t2spline_io::parse_job``) and the same ``Job.run`` as the command-line
+/// tool, so the numbers are those of ``t2spline run`` bit for bit.
+///
+/// Parameters
+/// ----------
+/// job : dict or str or os.PathLike
+///     A dict with the keys of a job file (SPEC §8; numpy arrays and numbers
+///     are accepted as values), or the path of a job file.
+/// alpha : float, optional
+///     The level alpha in ``[0, 1]``, in place of the job's.
+/// samples : int, optional
+///     The number of uniform parameters (2 … 1 000 000), in place of the
+///     job's (default 101).
+/// derivatives : int, optional
+///     With ``K``, also the derivatives of orders ``1 … K`` of the crisp and the
+///     defuzzified curve, and their arc lengths.
+///
+/// Returns
+/// -------
+/// dict
+///     Exactly the keys of ``t2spline run``'s JSON, in its order, with every
+///     array of numbers a ``float64`` numpy array: ``curves.params`` of shape
+///     ``(samples,)``, ``curves.crisp`` and every other curve of shape
+///     ``(samples, d)``, ``control_points.*`` of shape ``(n, d)``,
+///     ``curves.derivatives.*`` of shape ``(K, samples, d)``. Scalars are
+///     floats (``alpha``, ``error.max``) or ints (``order``). Where the JSON
+///     has ``null`` the dict has ``None`` (an alpha-cut curve of a lower layer
+///     when some number has no lower cut), and inside
+///     ``control_points.alpha_cut.*`` an absent lower end is NaN.
+///
+/// Raises
+/// ------
+/// JobError
+///     For a job that breaks the rules, with the lines ``t2spline run``
+///     prints (``file:line:column: place: rule``; a dict is named ``<dict>``
+///     and placed in its ``json.dumps(job, indent=2)`` text).
+/// ValueError
+///     For a keyword out of range, named: ``samples: samples = 1: at least 2
+///     are needed (both ends of the domain)``.
+/// OSError
+///     For a job file that cannot be read.
+///
+/// Examples
+/// --------
+/// >>> job = {
+/// ...     "degree": 1, "alpha": 0.5, "lower_height": 0.5, "samples": 3,
+/// ...     "points": [
+/// ...         {"x": {"crisp": 0, "upper": [-1, 2], "primary": [-0.5, 1], "lower": [-0.2, 0.3]},
+/// ...          "y": {"crisp": 0, "upper": [-1, 1], "primary": [-0.5, 0.5], "lower": [-0.2, 0.2]}},
+/// ...         {"x": {"crisp": 4, "upper": [3, 6], "primary": [3.5, 5], "lower": [3.8, 4.3]},
+/// ...          "y": {"crisp": 2, "upper": [1, 3], "primary": [1.5, 2.5], "lower": [1.8, 2.2]}},
+/// ...     ],
+/// ... }
+/// >>> result = run(job)
+/// >>> result["curves"]["params"]
+/// array([0. , 0.5, 1. ])
+/// >>> result["curves"]["crisp"].shape, result["curves"]["crisp"].dtype
+/// ((3, 2), dtype('float64'))
+/// >>> result["regime"]
+/// 'alpha <= h'
+/// >>> run(job, samples=1)
+/// Traceback (most recent call last):
+///     ...
+/// ValueError: samples: samples = 1: at least 2 are needed (both ends of the domain)
 #[pyfunction]
 #[pyo3(signature = (job, alpha=None, samples=None, derivatives=None))]
 pub(crate) fn run<'py>(

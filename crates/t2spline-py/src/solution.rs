@@ -14,7 +14,33 @@ use crate::fuzzy_curve::{layer, PyFuzzyCurve};
 use crate::nurbs_curve::PyNurbsCurve;
 use crate::sample::ParamsArg;
 
-/// Stages 2–4 of a fuzzy curve at one level (see the stub for the docs).
+/// Stages 2–4 of Algorithm 1.1 at one level alpha (SPEC §7, paper Figs.
+/// 5.2–5.4), from ``FuzzyCurve.solve(alpha)``.
+///
+/// 2. alpha-cut control points (``alpha_cut``) and their curves;
+/// 3. type-reduced control points ``(left, crisp, right)``
+///    (``type_reduced_left``, ``type_reduced_right``) and the curves through
+///    the left and the right values;
+/// 4. defuzzified control points ``(left + crisp + right)/3``
+///    (``defuzzified``), the crisp type-2 solution curve through them, and its
+///    distance to the crisp curve (``distance``).
+///
+/// The stages act on the control points, number by number, as Algorithm 1.1
+/// does; with one lower height for every number this equals applying them to
+/// the curve (SPEC §6).
+///
+/// Examples
+/// --------
+/// >>> import numpy as np
+/// >>> c = np.array([[0.0, 0.0], [1.0, 2.0], [3.0, 2.0], [4.0, 0.0]])
+/// >>> s = np.array([-1.0, 1.0])               # symmetric spreads
+/// >>> curve = FuzzyCurve(c, c[..., None] + s, c[..., None] + 0.5 * s, c[..., None] + 0.2 * s,
+/// ...                    lower_height=0.5, degree=2)
+/// >>> sol = curve.solve(0.3)
+/// >>> bool(np.array_equal(sol.defuzzified, sol.crisp))   # symmetric: no shift
+/// True
+/// >>> sol.distance()["max"]
+/// 0.0
 #[pyclass(frozen, eq, module = "t2spline", name = "Solution")]
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct PySolution(pub(crate) ByDim<Solved>);
@@ -37,16 +63,19 @@ fn six_layers() -> impl Iterator<Item = Layer> {
 
 #[pymethods]
 impl PySolution {
+    /// The level alpha.
     #[getter]
     fn alpha(&self) -> f64 {
         by_dim!(&self.0, |s| s.alpha().get())
     }
 
+    /// The fuzzy curve (stage 1) this solves.
     #[getter]
     fn fuzzy_curve(&self) -> PyFuzzyCurve {
         by_dim!(&self.0, |s| s.fuzzy_curve().clone().into())
     }
 
+    /// The crisp control points, shape ``(n, d)``.
     #[getter]
     fn crisp<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         by_dim!(&self.0, |s| rows_array(
@@ -55,6 +84,10 @@ impl PySolution {
         ))
     }
 
+    /// Stage 2: the alpha-cut ends of every control point, a dict of the six
+    /// non-crisp layer names to arrays of shape ``(n, d)``. A lower end is NaN
+    /// where alpha is above that number's lower height (the cut is absent,
+    /// SPEC §2.2).
     #[getter]
     fn alpha_cut<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let out = PyDict::new(py);
@@ -71,39 +104,56 @@ impl PySolution {
         Ok(out)
     }
 
+    /// Stage 3: the left type-reduced control points, shape ``(n, d)``.
     #[getter]
     fn type_reduced_left<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         by_dim!(&self.0, |s| rows_array(py, s.type_reduced_side(Side::Left)))
     }
 
+    /// Stage 3: the right type-reduced control points, shape ``(n, d)``.
     #[getter]
     fn type_reduced_right<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         by_dim!(&self.0, |s| rows_array(py, s.type_reduced_side(Side::Right)))
     }
 
+    /// Stage 4: the defuzzified control points, shape ``(n, d)``.
     #[getter]
     fn defuzzified<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         by_dim!(&self.0, |s| rows_array(py, s.defuzzified_points().to_vec()))
     }
 
+    /// The curve through one alpha-cut layer; ``None`` for a lower layer when
+    /// some number has no lower cut at this level.
     fn alpha_cut_curve(&self, layer: &str) -> PyResult<Option<PyNurbsCurve>> {
         let l = self::layer(layer, "layer")?;
         Ok(by_dim!(&self.0, |s| s.alpha_cut_curve(l).map(Into::into)))
     }
 
+    /// The curve through the left or the right type-reduced values.
     fn type_reduced_curve(&self, side: &str) -> PyResult<PyNurbsCurve> {
         let side = self::side(side)?;
         Ok(by_dim!(&self.0, |s| s.type_reduced_curve(side).into()))
     }
 
+    /// The crisp type-2 solution: the curve through the defuzzified control
+    /// points.
     fn defuzzified_curve(&self) -> PyNurbsCurve {
         by_dim!(&self.0, |s| s.defuzzified_curve().into())
     }
 
+    /// The crisp curve, through the crisp control points.
     fn crisp_curve(&self) -> PyNurbsCurve {
         by_dim!(&self.0, |s| s.crisp_curve().into())
     }
 
+    /// The distance ``d(t) = |D(t) − C(t)|`` between the defuzzified curve
+    /// ``D`` and the crisp curve ``C`` at equal ``t`` (SPEC §7)::
+    ///
+    ///     max = max_t d(t)   (at t = max_at),   rms = sqrt( 1/(b − a) ∫ d(t)² dt )
+    ///
+    /// properties of the curves, not of a sampling: a scan per knot span
+    /// refined by golden-section search, and Gauss–Legendre quadrature per
+    /// span. Zero for symmetric spreads.
     fn distance<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
         let d = by_dim!(&self.0, |s| compute(py, || Ok(s.distance())))?;
         let out = PyDict::new(py);
@@ -113,6 +163,15 @@ impl PySolution {
         Ok(out)
     }
 
+    /// The curves of stages 2–4 at many parameters by the sampling engine.
+    ///
+    /// Returns
+    /// -------
+    /// dict
+    ///     ``"params"`` (shape ``(m,)``); ``"alpha_cut"``: the six alpha-cut
+    ///     layer curves (shape ``(m, d)``, ``None`` for an absent lower layer);
+    ///     ``"type_reduced_left"``, ``"type_reduced_right"`` and
+    ///     ``"defuzzified"`` (shape ``(m, d)``).
     fn sample<'py>(
         &self,
         py: Python<'py>,
