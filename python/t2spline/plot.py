@@ -29,7 +29,7 @@ Examples
 
 from __future__ import annotations
 
-from typing import Any, Mapping, Optional, Sequence, Tuple
+from typing import Any, Literal, Mapping, Optional, Tuple
 
 import numpy as np
 from numpy.typing import NDArray
@@ -52,7 +52,8 @@ Coords = Tuple[int, int]
 #: Colours of the three membership functions (Okabe–Ito), as ``t2spline plot``.
 UPPER, PRIMARY, LOWER = "#0072B2", "#009E73", "#D55E00"
 CRISP, SOLUTION, GREY = "black", "#CC79A7", "#999999"
-_FUNCTIONS = (("upper", UPPER, 1.2), ("primary", PRIMARY, 2.6), ("lower", LOWER, 4.4))
+_FUNCTIONS: Tuple[Tuple[Literal["upper", "primary", "lower"], str, float], ...] = (
+    ("upper", UPPER, 1.2), ("primary", PRIMARY, 2.6), ("lower", LOWER, 4.4))
 
 # A small job for the examples of this module's docstrings.
 _EXAMPLE_JOB = {
@@ -209,10 +210,11 @@ def _curve(result: Result, control_points: NDArray[np.float64]) -> NurbsCurve:
     return NurbsCurve(control_points, result["weights"], result["knots"], degree=result["degree"])
 
 
-def stages(result: Result, *, coords: Coords = (0, 1), figsize: Sequence[float] = (11, 9)) -> Figure:
+def stages(result: Result, *, coords: Coords = (0, 1),
+           figsize: Tuple[float, float] = (11, 9)) -> Figure:
     """All four stages in a 2 × 2 ``matplotlib.figure.Figure`` (no pyplot
     needed: save it with ``fig.savefig``, or show it in a notebook)."""
-    fig = Figure(figsize=tuple(figsize), layout="constrained")
+    fig = Figure(figsize=figsize, layout="constrained")
     axes = fig.subplots(2, 2)
     for ax, draw in zip(axes.flat, (stage1, stage2, stage3, stage4)):
         draw(ax, result, coords=coords)

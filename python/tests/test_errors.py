@@ -201,8 +201,10 @@ def fuzzy(**changes: Any) -> t2spline.FuzzyCurve:
         ({"upper": C}, ValueError,
          "upper: expected shape (4, 2, 2): [left, right] per coordinate of crisp, got (4, 2)"),
         ({"lower": np.zeros((3, 2, 2))}, ValueError, "lower: expected shape (4, 2, 2)"),
-        ({"lower_height": [0.5, 0.6]}, ValueError,
-         "lower_height: expected a number or shape (4, 2): one per coordinate of crisp, got (2,)"),
+        ({"lower_height": [0.5, 0.6, 0.7]}, ValueError,
+         "lower_height: expected a number or an array that broadcasts to shape (4, 2): "
+         "one per coordinate of crisp, got (3,)"),
+        ({"lower_height": np.ones((4, 2, 1))}, ValueError, "lower_height: expected a number"),
         ({"crisp": C.astype(str)}, TypeError,
          "crisp: expected real numbers (float64), got an array of dtype <U32"),
         ({"crisp": C.astype(complex)}, TypeError, "crisp: expected real numbers"),

@@ -94,11 +94,6 @@ fn index_text(mut flat: usize, shape: &[usize]) -> String {
 }
 
 impl Floats {
-    /// The value of a 0-d array (a number).
-    pub(crate) fn scalar(&self) -> Option<f64> {
-        self.shape.is_empty().then(|| self.data[0])
-    }
-
     /// `Ok` if the shape is `want`.
     ///
     /// # Errors

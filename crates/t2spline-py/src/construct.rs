@@ -66,6 +66,28 @@ pub(crate) fn count(value: i64, name: &str, min: usize) -> PyResult<usize> {
         })
 }
 
+/// The values of `f` broadcast to `shape` by numpy's rule (trailing
+/// dimensions equal or 1, missing leading ones added): a number for all, a
+/// row `(d,)` per coordinate, a column `(n, 1)` per point. `None` if they do
+/// not broadcast.
+fn broadcast(f: &Floats, shape: [usize; 2]) -> Option<Vec<f64>> {
+    if f.shape.len() > 2 {
+        return None;
+    }
+    let mut dims = [1, 1];
+    dims[2 - f.shape.len()..].copy_from_slice(&f.shape);
+    if dims.iter().zip(shape).any(|(&g, s)| g != s && g != 1) {
+        return None;
+    }
+    let at = |i: usize, j: usize| f.data[(i % dims[0]) * dims[1] + j % dims[1]];
+    Some(
+        (0..shape[0])
+            .flat_map(|i| (0..shape[1]).map(move |j| (i, j)))
+            .map(|(i, j)| at(i, j))
+            .collect(),
+    )
+}
+
 /// Fuzzy points given as arrays, their shapes checked against each other.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct FuzzyArrays {
@@ -107,19 +129,13 @@ impl FuzzyArrays {
             feet(lower, "lower")?,
         );
         let h = floats(lower_height, "lower_height")?;
-        let heights = match h.scalar() {
-            Some(h) => vec![h; n * d],
-            None => {
-                if h.shape != [n, d] {
-                    return Err(PyValueError::new_err(format!(
-                        "lower_height: expected a number or shape {}: one per coordinate of crisp, got {}",
-                        shape_text(&[n, d]),
-                        shape_text(&h.shape)
-                    )));
-                }
-                h.data
-            }
-        };
+        let heights = broadcast(&h, [n, d]).ok_or_else(|| {
+            PyValueError::new_err(format!(
+                "lower_height: expected a number or an array that broadcasts to shape {}: one per coordinate of crisp, got {}",
+                shape_text(&[n, d]),
+                shape_text(&h.shape)
+            ))
+        })?;
         Ok(FuzzyArrays {
             n,
             d,

@@ -37,8 +37,10 @@ use crate::solution::PySolution;
 ///     The crisp control points, ``d`` = 2 or 3.
 /// upper, primary, lower : array_like, shape (n, d, 2)
 ///     The ``[left, right]`` feet of each number's triangles.
-/// lower_height : float or array_like of shape (n, d)
-///     ``h`` of every number, or one for all.
+/// lower_height : float or array_like
+///     ``h`` of every number: shape ``(n, d)``, or anything that broadcasts
+///     to it (one number for all, ``(d,)`` one per coordinate, ``(n, 1)``
+///     one per point).
 /// weights : array_like, shape (n,), optional
 ///     Default: all 1.
 /// knots : array_like, shape (n + degree + 1,), optional
