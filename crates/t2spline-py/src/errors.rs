@@ -63,7 +63,10 @@ pub(crate) fn setting_error(setting: Setting, message: &str) -> PyErr {
 pub(crate) fn io_error(py: Python<'_>, e: t2spline_io::Error) -> PyErr {
     match e {
         t2spline_io::Error::Invalid { .. } => job_error(py, e.lines()),
-        t2spline_io::Error::Read { ref path, ref source } => match source.raw_os_error() {
+        t2spline_io::Error::Read {
+            ref path,
+            ref source,
+        } => match source.raw_os_error() {
             // As Python's own: `[Errno 2] No such file or directory: 'job.json'`.
             Some(errno) => {
                 let text = source.to_string();

@@ -207,7 +207,8 @@ impl PyFuzzyCurve {
     /// The crisp values, shape ``(n, d)``.
     #[getter]
     fn crisp<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        by_dim!(&self.0, |c| per_number(py, c.points(), &[], |x, v| v.push(x.crisp())))
+        by_dim!(&self.0, |c| per_number(py, c.points(), &[], |x, v| v
+            .push(x.crisp())))
     }
 
     /// The upper feet ``[left, right]``, shape ``(n, d, 2)``.
@@ -237,7 +238,8 @@ impl PyFuzzyCurve {
     /// The lower height of every number, shape ``(n, d)``.
     #[getter]
     fn lower_height<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        by_dim!(&self.0, |c| per_number(py, c.points(), &[], |x, v| v.push(x.height().get())))
+        by_dim!(&self.0, |c| per_number(py, c.points(), &[], |x, v| v
+            .push(x.height().get())))
     }
 
     /// The fuzzy control point ``index``: one ``FuzzyNumber`` per coordinate.
@@ -249,8 +251,11 @@ impl PyFuzzyCurve {
             .ok_or_else(|| {
                 PyValueError::new_err(format!("index: {index} is outside [0, {}]", n - 1))
             })?;
-        let numbers: Vec<PyFuzzyNumber> =
-            by_dim!(&self.0, |c| c.points()[i].coords().iter().map(|&x| PyFuzzyNumber(x)).collect());
+        let numbers: Vec<PyFuzzyNumber> = by_dim!(&self.0, |c| c.points()[i]
+            .coords()
+            .iter()
+            .map(|&x| PyFuzzyNumber(x))
+            .collect());
         PyTuple::new(py, numbers)
     }
 
@@ -358,7 +363,9 @@ impl PyFuzzyCurve {
     ///     If ``alpha`` is NaN or outside ``[0, 1]``.
     fn solve(&self, py: Python<'_>, alpha: f64) -> PyResult<PySolution> {
         let a = self::alpha(alpha)?;
-        by_dim!(&self.0, |c| compute(py, || Ok(PySolution(c.solve(a).into()))))
+        by_dim!(&self.0, |c| compute(py, || Ok(PySolution(
+            c.solve(a).into()
+        ))))
     }
 
     /// The same fuzzy curve with the knot ``u`` inserted ``times`` times, on all
@@ -367,13 +374,17 @@ impl PyFuzzyCurve {
     #[pyo3(signature = (u, times=1))]
     fn insert_knot(&self, py: Python<'_>, u: f64, times: i64) -> PyResult<Self> {
         let times = count(times, "times", 1)?;
-        by_dim!(&self.0, |c| compute(py, || Ok(c.insert_knot(u, times)?.into())))
+        by_dim!(&self.0, |c| compute(py, || Ok(c
+            .insert_knot(u, times)?
+            .into())))
     }
 
     /// The same fuzzy curve with all of ``knots`` inserted, on all layers.
     fn refine_knots(&self, py: Python<'_>, knots: &Bound<'_, PyAny>) -> PyResult<Self> {
         let new = optional_vector(Some(knots), "knots")?.unwrap_or_default();
-        by_dim!(&self.0, |c| compute(py, || Ok(c.refine_knots(&new)?.into())))
+        by_dim!(&self.0, |c| compute(py, || Ok(c
+            .refine_knots(&new)?
+            .into())))
     }
 
     /// The same fuzzy curve of degree ``degree + times``, on all layers.
@@ -386,7 +397,9 @@ impl PyFuzzyCurve {
     #[pyo3(signature = (times=1))]
     fn elevate_degree(&self, py: Python<'_>, times: i64) -> PyResult<Self> {
         let times = count(times, "times", 1)?;
-        by_dim!(&self.0, |c| compute(py, || Ok(c.elevate_degree(times)?.into())))
+        by_dim!(&self.0, |c| compute(py, || Ok(c
+            .elevate_degree(times)?
+            .into())))
     }
 
     /// The two fuzzy curves left and right of ``t`` (strictly inside the
@@ -405,13 +418,15 @@ impl PyFuzzyCurve {
 
     fn __repr__(&self) -> String {
         let (a, b) = self.domain();
-        by_dim!(&self.0, |c| format!(
+        by_dim!(&self.0, |c| {
+            format!(
             "FuzzyCurve(dimension={}, degree={}, order={}, control_points=({}, {}), domain=({a:?}, {b:?}))",
             self.dimension(),
             c.degree(),
             c.order(),
             c.points().len(),
             self.dimension(),
-        ))
+        )
+        })
     }
 }

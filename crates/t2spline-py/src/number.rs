@@ -218,7 +218,11 @@ impl PyFuzzyNumber {
             }
         };
         let x = floats(x, "x")?;
-        let values = x.data.iter().map(|&v| self.0.membership(which, v)).collect();
+        let values = x
+            .data
+            .iter()
+            .map(|&v| self.0.membership(which, v))
+            .collect();
         array(py, values, &x.shape)
     }
 

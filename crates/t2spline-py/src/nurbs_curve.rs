@@ -338,14 +338,18 @@ impl PyNurbsCurve {
     #[pyo3(signature = (u, times=1))]
     fn insert_knot(&self, py: Python<'_>, u: f64, times: i64) -> PyResult<Self> {
         let times = count(times, "times", 1)?;
-        by_dim!(&self.0, |c| compute(py, || Ok(c.insert_knot(u, times)?.into())))
+        by_dim!(&self.0, |c| compute(py, || Ok(c
+            .insert_knot(u, times)?
+            .into())))
     }
 
     /// The same curve with all of ``knots`` inserted (knot refinement, The
     /// NURBS Book A5.4).
     fn refine_knots(&self, py: Python<'_>, knots: &Bound<'_, PyAny>) -> PyResult<Self> {
         let new = optional_vector(Some(knots), "knots")?.unwrap_or_default();
-        by_dim!(&self.0, |c| compute(py, || Ok(c.refine_knots(&new)?.into())))
+        by_dim!(&self.0, |c| compute(py, || Ok(c
+            .refine_knots(&new)?
+            .into())))
     }
 
     /// The same curve of degree ``degree + times`` (The NURBS Book A5.9; an
@@ -353,7 +357,9 @@ impl PyNurbsCurve {
     #[pyo3(signature = (times=1))]
     fn elevate_degree(&self, py: Python<'_>, times: i64) -> PyResult<Self> {
         let times = count(times, "times", 1)?;
-        by_dim!(&self.0, |c| compute(py, || Ok(c.elevate_degree(times)?.into())))
+        by_dim!(&self.0, |c| compute(py, || Ok(c
+            .elevate_degree(times)?
+            .into())))
     }
 
     /// The two curves left and right of ``t``, strictly inside the domain,
@@ -440,7 +446,11 @@ impl PyNurbsCurve {
         }))?;
         if many {
             let m = t.len();
-            Ok((array(py, t, &[m])?, array(py, points, &[m, d])?, array(py, distances, &[m])?))
+            Ok((
+                array(py, t, &[m])?,
+                array(py, points, &[m, d])?,
+                array(py, distances, &[m])?,
+            ))
         } else {
             Ok((
                 t[0].into_pyobject(py)?.into_any(),
@@ -466,7 +476,8 @@ impl PyNurbsCurve {
 
     fn __repr__(&self) -> String {
         let (a, b) = self.domain();
-        by_dim!(&self.0, |c| format!(
+        by_dim!(&self.0, |c| {
+            format!(
             "NurbsCurve(dimension={}, degree={}, order={}, control_points=({}, {}), knots=({},), domain=({a:?}, {b:?}))",
             self.dimension(),
             c.degree(),
@@ -474,6 +485,7 @@ impl PyNurbsCurve {
             c.control_points().len(),
             self.dimension(),
             c.knots().as_slice().len(),
-        ))
+        )
+        })
     }
 }

@@ -30,7 +30,9 @@ pub(crate) fn job_text(job: &Bound<'_, PyAny>) -> PyResult<(String, String)> {
         let kwargs = PyDict::new(py);
         kwargs.set_item("indent", 2)?;
         kwargs.set_item("default", wrap_pyfunction!(json_default, py)?)?;
-        let text: String = json.call_method("dumps", (job,), Some(&kwargs))?.extract()?;
+        let text: String = json
+            .call_method("dumps", (job,), Some(&kwargs))?
+            .extract()?;
         return Ok((text, DICT_SOURCE.to_owned()));
     }
     let is_path = job.is_instance_of::<PyString>() || job.hasattr("__fspath__")?;
@@ -41,8 +43,8 @@ pub(crate) fn job_text(job: &Bound<'_, PyAny>) -> PyResult<(String, String)> {
         )));
     }
     let path: PathBuf = py.import("os")?.call_method1("fspath", (job,))?.extract()?;
-    let text = without_gil(py, || t2spline_io::job::read_text(&path))?
-        .map_err(|e| io_error(py, e))?;
+    let text =
+        without_gil(py, || t2spline_io::job::read_text(&path))?.map_err(|e| io_error(py, e))?;
     Ok((text, path.display().to_string()))
 }
 
@@ -84,8 +86,7 @@ fn settings(
         // The core takes counts as u64; a negative count gets its rule here,
         // written as given.
         Some(n) if n < 0 => {
-            let message = check_samples(0, &n.to_string())
-                .expect_err("0 samples are refused");
+            let message = check_samples(0, &n.to_string()).expect_err("0 samples are refused");
             return Err(setting_error(Setting::Samples, &message));
         }
         other => other.map(i64::unsigned_abs),
@@ -191,14 +192,7 @@ pub(crate) fn run<'py>(
 ) -> PyResult<Bound<'py, PyAny>> {
     let (text, source) = job_text(job)?;
     let parsed = parse(py, &text, &source)?;
-    let settings = settings(
-        py,
-        &parsed,
-        (&text, &source),
-        alpha,
-        samples,
-        derivatives,
-    )?;
+    let settings = settings(py, &parsed, (&text, &source), alpha, samples, derivatives)?;
     let tree = without_gil(py, move || {
         let output = parsed.run(&settings).map_err(Failure::from)?;
         // The CLI's last guard before writing: every number finite.

@@ -113,7 +113,10 @@ impl PySolution {
     /// Stage 3: the right type-reduced control points, shape ``(n, d)``.
     #[getter]
     fn type_reduced_right<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        by_dim!(&self.0, |s| rows_array(py, s.type_reduced_side(Side::Right)))
+        by_dim!(&self.0, |s| rows_array(
+            py,
+            s.type_reduced_side(Side::Right)
+        ))
     }
 
     /// Stage 4: the defuzzified control points, shape ``(n, d)``.
@@ -200,7 +203,10 @@ impl PySolution {
             let right = stages.type_reduced(Side::Right);
             out.set_item("type_reduced_left", columns_array(py, left.coords())?)?;
             out.set_item("type_reduced_right", columns_array(py, right.coords())?)?;
-            out.set_item("defuzzified", columns_array(py, stages.defuzzified().coords())?)?;
+            out.set_item(
+                "defuzzified",
+                columns_array(py, stages.defuzzified().coords())?,
+            )?;
             PyResult::Ok(())
         })?;
         Ok(out)

@@ -137,17 +137,9 @@ impl Items {
                     data,
                 };
             }
-            (
-                Items::Arrays {
-                    shape,
-                    count,
-                    data,
-                },
-                Value::Array {
-                    shape: s,
-                    data: d,
-                },
-            ) if *shape == s => {
+            (Items::Arrays { shape, count, data }, Value::Array { shape: s, data: d })
+                if *shape == s =>
+            {
                 *count += 1;
                 data.extend_from_slice(&d);
             }
@@ -163,10 +155,8 @@ impl Items {
     fn into_values(self) -> Vec<Value> {
         match self {
             Items::Floats(floats) => floats.into_iter().map(Value::Float).collect(),
-            Items::Arrays { shape, data, .. } => {
+            Items::Arrays { shape, count, data } => {
                 let size = shape.iter().product::<usize>();
-                // An array of size 0 has no data to split: one per count.
-                let count = if size == 0 { 0 } else { data.len() / size };
                 (0..count)
                     .map(|k| Value::Array {
                         shape: shape.clone(),

@@ -149,7 +149,12 @@ impl<const D: usize> FuzzyCurve<D> {
         out: &mut [&mut [f64]],
     ) -> Result<(), Error> {
         let params = params.into();
-        check_outputs(out, 7 * D, params.len(), "output values (one per parameter)")?;
+        check_outputs(
+            out,
+            7 * D,
+            params.len(),
+            "output values (one per parameter)",
+        )?;
         let plan = Plan::new(self.points(), &[], true);
         // The plan's channels are in its own order; hand each its slice.
         let mut slots: Vec<Option<&mut [f64]>> = out.iter_mut().map(|o| Some(&mut **o)).collect();
