@@ -47,6 +47,8 @@ benchmark_curve
     The curve that ``t2spline bench`` times.
 t2spline.plot
     Drawing the stages into matplotlib axes (``pip install t2spline[plot]``).
+t2spline.types
+    ``TypedDict``s of the returned dicts and other names for annotations.
 
 Examples
 --------
@@ -76,6 +78,7 @@ array([[0.016, 0.016],
 0.022627
 """
 
+from . import types
 from ._t2spline import (
     AlphaCut,
     FuzzyCurve,
@@ -100,4 +103,5 @@ __all__ = [
     "benchmark_curve",
     "fit",
     "run",
+    "types",
 ]

@@ -1,22 +1,38 @@
 # Types of the extension module `t2spline._t2spline` (Rust, crates/t2spline-py).
 # The full documentation, with formulas and examples, is in the docstrings of
 # the compiled objects: `help(t2spline.FuzzyCurve)`.
-import os
-from typing import Any, Literal, Optional, Sequence, Tuple, TypedDict, Union, overload
+from typing import Any, Literal, Optional, Sequence, Tuple, Union, final, overload
 
-import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import ArrayLike
 
-__version__: str
+from .types import (
+    AlphaCutCurves,
+    AlphaCuts,
+    Distance,
+    FitSummary,
+    Floats,
+    Job,
+    LayerName,
+    LayerSamples,
+    SideName,
+    StageSamples,
+    Which,
+)
 
-Floats = NDArray[np.float64]
-LayerName = Literal[
-    "upper_left", "primary_left", "lower_left", "crisp",
-    "lower_right", "primary_right", "upper_right",
+__all__ = [
+    "AlphaCut",
+    "FuzzyCurve",
+    "FuzzyNumber",
+    "JobError",
+    "NurbsCurve",
+    "Solution",
+    "__version__",
+    "_panic_for_tests",
+    "benchmark_curve",
+    "fit",
+    "run",
 ]
-Which = Literal["upper", "primary", "lower"]
-SideName = Literal["left", "right"]
-Job = Union[dict[str, Any], str, "os.PathLike[str]"]
+__version__: str
 
 class JobError(ValueError):
     """A job that breaks the rules of the job file; one problem per line."""
@@ -30,68 +46,7 @@ def run(
 ) -> dict[str, Any]:
     """Runs a job as `t2spline run` does; the result file's keys, numpy arrays."""
 
-class LayerSamples(TypedDict):
-    params: Floats
-    upper_left: Floats
-    primary_left: Floats
-    lower_left: Floats
-    crisp: Floats
-    lower_right: Floats
-    primary_right: Floats
-    upper_right: Floats
-
-class AlphaCuts(TypedDict):
-    upper_left: Floats
-    primary_left: Floats
-    lower_left: Floats
-    lower_right: Floats
-    primary_right: Floats
-    upper_right: Floats
-
-class AlphaCutCurves(TypedDict):
-    upper_left: Floats
-    primary_left: Floats
-    lower_left: Optional[Floats]
-    lower_right: Optional[Floats]
-    primary_right: Floats
-    upper_right: Floats
-
-class StageSamples(TypedDict):
-    params: Floats
-    alpha_cut: AlphaCutCurves
-    type_reduced_left: Floats
-    type_reduced_right: Floats
-    defuzzified: Floats
-
-class Distance(TypedDict):
-    max: float
-    max_at: float
-    rms: float
-
-class Deviation(TypedDict):
-    max: float
-    point: int
-    axis: str
-
-class LayerDeviations(TypedDict):
-    upper_left: Deviation
-    primary_left: Deviation
-    lower_left: Deviation
-    crisp: Deviation
-    lower_right: Deviation
-    primary_right: Deviation
-    upper_right: Deviation
-
-class FitSummary(TypedDict):
-    data_points: int
-    control_points: int
-    mode: str
-    condition: float
-    deviations: LayerDeviations
-    spread_deviations: LayerDeviations
-    independent_violations: list[str]
-    mixed_heights: dict[str, float]
-
+@final
 class AlphaCut:
     """The alpha-cut of a fuzzy number (SPEC §2)."""
     @property
@@ -106,16 +61,17 @@ class AlphaCut:
     def lower(self) -> Optional[Tuple[float, float]]: ...
     def type_reduce(self) -> Tuple[float, float, float]: ...
 
+@final
 class FuzzyNumber:
     """A normal triangular type-2 fuzzy number (SPEC §1)."""
-    def __init__(
-        self,
+    def __new__(
+        cls,
         crisp: float,
         upper: Sequence[float],
         primary: Sequence[float],
         lower: Sequence[float],
         lower_height: float,
-    ) -> None: ...
+    ) -> FuzzyNumber: ...
     @property
     def crisp(self) -> float: ...
     @property
@@ -131,17 +87,18 @@ class FuzzyNumber:
     def defuzzify(self, alpha: float) -> float: ...
     def membership(self, x: ArrayLike, which: Which = "upper") -> Floats: ...
 
+@final
 class NurbsCurve:
     """A rational B-spline curve in the plane or in space (SPEC §6)."""
-    def __init__(
-        self,
+    def __new__(
+        cls,
         control_points: ArrayLike,
         weights: Optional[ArrayLike] = None,
         knots: Optional[ArrayLike] = None,
         *,
         degree: Optional[int] = None,
         order: Optional[int] = None,
-    ) -> None: ...
+    ) -> NurbsCurve: ...
     @property
     def dimension(self) -> int: ...
     @property
@@ -180,10 +137,11 @@ class NurbsCurve:
     def closest_point(self, point: ArrayLike) -> Tuple[Any, Floats, Any]: ...
     def bounding_box(self) -> Tuple[Floats, Floats]: ...
 
+@final
 class FuzzyCurve:
     """A rational B-spline curve with fuzzy control points: stage 1 (SPEC §6-§7)."""
-    def __init__(
-        self,
+    def __new__(
+        cls,
         crisp: ArrayLike,
         upper: ArrayLike,
         primary: ArrayLike,
@@ -194,7 +152,7 @@ class FuzzyCurve:
         *,
         degree: Optional[int] = None,
         order: Optional[int] = None,
-    ) -> None: ...
+    ) -> FuzzyCurve: ...
     @staticmethod
     def from_job(job: Job) -> FuzzyCurve: ...
     @property
@@ -233,6 +191,7 @@ class FuzzyCurve:
     def split_at(self, t: float) -> Tuple[FuzzyCurve, FuzzyCurve]: ...
     def segment(self, a: float, b: float) -> FuzzyCurve: ...
 
+@final
 class Solution:
     """Stages 2-4 of Algorithm 1.1 at one level alpha (SPEC §7)."""
     @property

@@ -37,10 +37,10 @@ from numpy.typing import NDArray
 try:
     from matplotlib.axes import Axes
     from matplotlib.figure import Figure
-except ImportError as e:  # pragma: no cover - exercised without matplotlib only
+except ImportError:  # pragma: no cover - exercised without matplotlib only
     raise ImportError(
         "t2spline.plot needs matplotlib: pip install 't2spline[plot]'"
-    ) from e
+    ) from None
 
 from ._t2spline import FuzzyNumber, NurbsCurve
 

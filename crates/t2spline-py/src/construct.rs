@@ -9,6 +9,7 @@ use t2spline::{Axis, Nt2Number, Nt2Point, Place};
 use t2spline_io::job::MAX_ORDER;
 
 use crate::arrays::{floats, shape_text, Floats};
+use crate::dim::{ByDim, PointList};
 
 /// The degree `p` from exactly one of `degree` and `order` (`p = k − 1`), or
 /// when neither is given from the number of knots (`p = len(knots) − n − 1`).
@@ -147,11 +148,18 @@ impl FuzzyArrays {
         })
     }
 
-    /// The points, every number checked (SPEC §1).
+    /// The points in their dimension, every number checked (SPEC §1).
     ///
     /// # Errors
     /// The first broken rule, naming its place (`points[2].y: the order …`).
-    pub(crate) fn points<const D: usize>(&self) -> Result<Vec<Nt2Point<D>>, t2spline::Error> {
+    pub(crate) fn points(&self) -> Result<ByDim<PointList>, t2spline::Error> {
+        Ok(match self.d {
+            2 => ByDim::Planar(self.points_of()?),
+            _ => ByDim::Spatial(self.points_of()?),
+        })
+    }
+
+    fn points_of<const D: usize>(&self) -> Result<Vec<Nt2Point<D>>, t2spline::Error> {
         debug_assert_eq!(D, self.d);
         let feet = |f: &Floats, k: usize| [f.data[2 * k], f.data[2 * k + 1]];
         (0..self.n)

@@ -5,7 +5,7 @@
 //! any `D` runs on both.
 
 use t2spline::job::Model;
-use t2spline::{FuzzyCurve, NurbsCurve, Solution};
+use t2spline::{FuzzyCurve, Nt2Point, NurbsCurve, Solution};
 
 /// A family of core types indexed by dimension.
 pub(crate) trait Family {
@@ -34,6 +34,13 @@ impl Family for Nurbs {
 pub(crate) struct Fuzzy;
 impl Family for Fuzzy {
     type Of<const D: usize> = FuzzyCurve<D>;
+}
+
+/// Lists of fuzzy points.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct PointList;
+impl Family for PointList {
+    type Of<const D: usize> = Vec<Nt2Point<D>>;
 }
 
 /// [`Solution`]s.

@@ -89,9 +89,9 @@ pub(crate) fn fit<'py>(
         .parse()
         .map_err(|e| PyValueError::new_err(format!("mode: {e}")))?;
     let outcome = compute(py, move || {
-        let points = match data.d {
-            2 => FuzzyData::Planar(data.points()?),
-            _ => FuzzyData::Spatial(data.points()?),
+        let points = match data.points()? {
+            ByDim::Planar(p) => FuzzyData::Planar(p),
+            ByDim::Spatial(p) => FuzzyData::Spatial(p),
         };
         points.fit(&options, mode)
     })?;

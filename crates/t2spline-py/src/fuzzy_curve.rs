@@ -9,11 +9,12 @@ use pyo3::types::{PyDict, PyTuple};
 use t2spline::{FuzzyCurve, Layer, Nt2Point};
 
 use crate::arrays::{array, optional_vector, rows_array, transposed};
-use crate::construct::{count, degree, FuzzyArrays};
+use crate::construct::{degree, FuzzyArrays};
+use crate::curve_methods::curve_methods;
 use crate::dim::{by_dim, ByDim, Fuzzy};
 use crate::errors::compute;
 use crate::number::{alpha, PyFuzzyNumber};
-use crate::nurbs_curve::{uniform_params, PyNurbsCurve};
+use crate::nurbs_curve::PyNurbsCurve;
 use crate::run::{job_text, parse};
 use crate::sample::{at_params, channels, output_buffer, ParamsArg};
 use crate::solution::PySolution;
@@ -117,8 +118,7 @@ fn per_number<'py, const D: usize>(
     array(py, values, &shape)
 }
 
-#[pymethods]
-impl PyFuzzyCurve {
+curve_methods!(PyFuzzyCurve {
     #[new]
     #[pyo3(signature = (crisp, upper, primary, lower, lower_height, weights=None, knots=None, *, degree=None, order=None))]
     #[allow(clippy::too_many_arguments)]
@@ -139,10 +139,10 @@ impl PyFuzzyCurve {
         let knots = optional_vector(knots, "knots")?;
         let degree = self::degree(degree, order, knots.as_ref().map(Vec::len), data.n)?;
         compute(py, move || {
-            Ok(match data.d {
-                2 => FuzzyCurve::try_new(degree, data.points::<2>()?, weights, knots)?.into(),
-                _ => FuzzyCurve::try_new(degree, data.points::<3>()?, weights, knots)?.into(),
-            })
+            Ok(by_dim!(data.points()?, |p| FuzzyCurve::try_new(
+                degree, p, weights, knots
+            )?
+            .into()))
         })
     }
 
@@ -161,47 +161,6 @@ impl PyFuzzyCurve {
         ByDim::from_model(job.model)
             .map(PyFuzzyCurve)
             .ok_or_else(|| PyValueError::new_err(format!("{source}: the job is not a curve")))
-    }
-
-    /// The number of coordinates of a point: 2 or 3.
-    #[getter]
-    fn dimension(&self) -> usize {
-        self.0.dimension()
-    }
-
-    /// The degree ``p``.
-    #[getter]
-    fn degree(&self) -> usize {
-        by_dim!(&self.0, |c| c.degree())
-    }
-
-    /// The order ``k = p + 1``.
-    #[getter]
-    fn order(&self) -> usize {
-        by_dim!(&self.0, |c| c.order())
-    }
-
-    /// The weights, shape ``(n,)``.
-    #[getter]
-    fn weights<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        let w = by_dim!(&self.0, |c| c.weights().to_vec());
-        let n = w.len();
-        array(py, w, &[n])
-    }
-
-    /// The knot vector, shape ``(n + order,)``.
-    #[getter]
-    fn knots<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        let k = by_dim!(&self.0, |c| c.knots().as_slice().to_vec());
-        let n = k.len();
-        array(py, k, &[n])
-    }
-
-    /// The parameter domain ``(U[p], U[n])``.
-    #[getter]
-    fn domain(&self) -> (f64, f64) {
-        let d = by_dim!(&self.0, |c| c.domain());
-        (d.start, d.end)
     }
 
     /// The crisp values, shape ``(n, d)``.
@@ -284,12 +243,6 @@ impl PyFuzzyCurve {
         by_dim!(&self.0, |c| c.crisp_curve().into())
     }
 
-    /// ``count`` uniform parameters over the domain (SPEC §8), the
-    /// parameters of ``sample(count)``.
-    fn uniform_params<'py>(&self, py: Python<'py>, count: i64) -> PyResult<Bound<'py, PyAny>> {
-        uniform_params(py, by_dim!(&self.0, |c| c.domain()), count)
-    }
-
     /// The seven layer curves at every value of ``t`` by the straightforward
     /// evaluator (one rational basis for all layers); the reference that
     /// ``sample`` is tested against.
@@ -341,11 +294,7 @@ impl PyFuzzyCurve {
             c.sample_layers_into_slices(params.params(), &mut channels(&mut buffer, 7 * d, n))
         }))?;
         let out = PyDict::new(py);
-        let t = match &params {
-            ParamsArg::Count(n) => domain.uniform(*n),
-            ParamsArg::Given(t) => t.clone(),
-        };
-        out.set_item("params", array(py, t, &[n])?)?;
+        out.set_item("params", array(py, params.values(domain), &[n])?)?;
         // (layer, coordinate, parameter) seen as (layer, parameter, coordinate).
         let layers = transposed(&array(py, buffer, &[7, d, n])?, &[0, 2, 1])?;
         for l in Layer::ALL {
@@ -368,54 +317,6 @@ impl PyFuzzyCurve {
         ))))
     }
 
-    /// The same fuzzy curve with the knot ``u`` inserted ``times`` times, on all
-    /// seven layers at once (see ``NurbsCurve.insert_knot``); the order of the
-    /// layers holds exactly.
-    #[pyo3(signature = (u, times=1))]
-    fn insert_knot(&self, py: Python<'_>, u: f64, times: i64) -> PyResult<Self> {
-        let times = count(times, "times", 1)?;
-        by_dim!(&self.0, |c| compute(py, || Ok(c
-            .insert_knot(u, times)?
-            .into())))
-    }
-
-    /// The same fuzzy curve with all of ``knots`` inserted, on all layers.
-    fn refine_knots(&self, py: Python<'_>, knots: &Bound<'_, PyAny>) -> PyResult<Self> {
-        let new = optional_vector(Some(knots), "knots")?.unwrap_or_default();
-        by_dim!(&self.0, |c| compute(py, || Ok(c
-            .refine_knots(&new)?
-            .into())))
-    }
-
-    /// The same fuzzy curve of degree ``degree + times``, on all layers.
-    ///
-    /// Raises
-    /// ------
-    /// ValueError
-    ///     When a coordinate mixes lower heights (new control points need one
-    ///     height per coordinate).
-    #[pyo3(signature = (times=1))]
-    fn elevate_degree(&self, py: Python<'_>, times: i64) -> PyResult<Self> {
-        let times = count(times, "times", 1)?;
-        by_dim!(&self.0, |c| compute(py, || Ok(c
-            .elevate_degree(times)?
-            .into())))
-    }
-
-    /// The two fuzzy curves left and right of ``t`` (strictly inside the
-    /// domain).
-    fn split_at(&self, py: Python<'_>, t: f64) -> PyResult<(Self, Self)> {
-        by_dim!(&self.0, |c| compute(py, || {
-            let [a, b] = c.split_at(t)?;
-            Ok((a.into(), b.into()))
-        }))
-    }
-
-    /// The piece of the fuzzy curve over ``[a, b]``.
-    fn segment(&self, py: Python<'_>, a: f64, b: f64) -> PyResult<Self> {
-        by_dim!(&self.0, |c| compute(py, || Ok(c.segment(a, b)?.into())))
-    }
-
     fn __repr__(&self) -> String {
         let (a, b) = self.domain();
         by_dim!(&self.0, |c| {
@@ -429,4 +330,4 @@ impl PyFuzzyCurve {
         )
         })
     }
-}
+});

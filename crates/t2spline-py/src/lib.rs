@@ -25,6 +25,7 @@
 
 mod arrays;
 mod construct;
+mod curve_methods;
 mod dim;
 mod errors;
 mod fit;

@@ -8,6 +8,7 @@ use t2spline::{KnotVector, NurbsCurve};
 
 use crate::arrays::{array, floats, optional_vector, rows_array, transposed, Floats};
 use crate::construct::{count, degree};
+use crate::curve_methods::curve_methods;
 use crate::dim::{by_dim, ByDim, Nurbs};
 use crate::errors::compute;
 use crate::sample::{at_params, channels, output_buffer, ParamsArg};
@@ -87,21 +88,7 @@ fn build<const D: usize>(
     }
 }
 
-/// The uniform parameters `tᵢ = a + (b − a)·i/(count − 1)` of a domain.
-pub(crate) fn uniform_params<'py>(
-    py: Python<'py>,
-    domain: t2spline::Domain,
-    count: i64,
-) -> PyResult<Bound<'py, PyAny>> {
-    let n = self::count(count, "count", 0)?;
-    // The same bound as any sampling output, before allocating.
-    let buffer = output_buffer(n, 1, "count")?;
-    drop(buffer);
-    array(py, domain.uniform(n), &[n])
-}
-
-#[pymethods]
-impl PyNurbsCurve {
+curve_methods!(PyNurbsCurve {
     #[new]
     #[pyo3(signature = (control_points, weights=None, knots=None, *, degree=None, order=None))]
     fn new(
@@ -125,60 +112,10 @@ impl PyNurbsCurve {
         })
     }
 
-    /// The number of coordinates of a point: 2 or 3.
-    #[getter]
-    fn dimension(&self) -> usize {
-        self.0.dimension()
-    }
-
-    /// The degree ``p``.
-    #[getter]
-    fn degree(&self) -> usize {
-        by_dim!(&self.0, |c| c.degree())
-    }
-
-    /// The order ``k = p + 1``.
-    #[getter]
-    fn order(&self) -> usize {
-        by_dim!(&self.0, |c| c.order())
-    }
-
     /// The control points, shape ``(n, dimension)``.
     #[getter]
     fn control_points<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         by_dim!(&self.0, |c| rows_array(py, c.control_points().to_vec()))
-    }
-
-    /// The weights, shape ``(n,)``.
-    #[getter]
-    fn weights<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        let w = by_dim!(&self.0, |c| c.weights().to_vec());
-        let n = w.len();
-        array(py, w, &[n])
-    }
-
-    /// The knot vector, shape ``(n + order,)`` (the default made explicit).
-    #[getter]
-    fn knots<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
-        let k = by_dim!(&self.0, |c| c.knots().as_slice().to_vec());
-        let n = k.len();
-        array(py, k, &[n])
-    }
-
-    /// The parameter domain ``(U[p], U[n])``.
-    #[getter]
-    fn domain(&self) -> (f64, f64) {
-        let d = by_dim!(&self.0, |c| c.domain());
-        (d.start, d.end)
-    }
-
-    /// ``count`` uniform parameters over the domain (SPEC §8)::
-    ///
-    ///     tᵢ = a + (b − a)·i/(count − 1),   i = 0 … count − 1, the last exactly b
-    ///
-    /// the parameters of ``sample(count)``.
-    fn uniform_params<'py>(&self, py: Python<'py>, count: i64) -> PyResult<Bound<'py, PyAny>> {
-        uniform_params(py, by_dim!(&self.0, |c| c.domain()), count)
     }
 
     /// The point ``C(t)`` at every value of ``t``, by the straightforward
@@ -320,62 +257,6 @@ impl PyNurbsCurve {
         }))
     }
 
-    /// The same curve with the knot ``u`` inserted ``times`` times (Boehm,
-    /// The NURBS Book A5.1).
-    ///
-    /// Raises
-    /// ------
-    /// ValueError
-    ///     If ``u`` is outside the domain or would repeat more than ``order``
-    ///     times.
-    ///
-    /// Examples
-    /// --------
-    /// >>> c = NurbsCurve([[0, 0], [1, 2], [3, 2], [4, 0]], degree=2)
-    /// >>> d = c.insert_knot(0.3)
-    /// >>> d.control_points.shape, bool(abs(d.eval(0.7) - c.eval(0.7)).max() < 1e-14)
-    /// ((5, 2), True)
-    #[pyo3(signature = (u, times=1))]
-    fn insert_knot(&self, py: Python<'_>, u: f64, times: i64) -> PyResult<Self> {
-        let times = count(times, "times", 1)?;
-        by_dim!(&self.0, |c| compute(py, || Ok(c
-            .insert_knot(u, times)?
-            .into())))
-    }
-
-    /// The same curve with all of ``knots`` inserted (knot refinement, The
-    /// NURBS Book A5.4).
-    fn refine_knots(&self, py: Python<'_>, knots: &Bound<'_, PyAny>) -> PyResult<Self> {
-        let new = optional_vector(Some(knots), "knots")?.unwrap_or_default();
-        by_dim!(&self.0, |c| compute(py, || Ok(c
-            .refine_knots(&new)?
-            .into())))
-    }
-
-    /// The same curve of degree ``degree + times`` (The NURBS Book A5.9; an
-    /// unclamped curve is first cut to its domain).
-    #[pyo3(signature = (times=1))]
-    fn elevate_degree(&self, py: Python<'_>, times: i64) -> PyResult<Self> {
-        let times = count(times, "times", 1)?;
-        by_dim!(&self.0, |c| compute(py, || Ok(c
-            .elevate_degree(times)?
-            .into())))
-    }
-
-    /// The two curves left and right of ``t``, strictly inside the domain,
-    /// with domains ``(a, t)`` and ``(t, b)``.
-    fn split_at(&self, py: Python<'_>, t: f64) -> PyResult<(Self, Self)> {
-        by_dim!(&self.0, |c| compute(py, || {
-            let [a, b] = c.split_at(t)?;
-            Ok((a.into(), b.into()))
-        }))
-    }
-
-    /// The piece of the curve over ``[a, b]``, as a curve of its own.
-    fn segment(&self, py: Python<'_>, a: f64, b: f64) -> PyResult<Self> {
-        by_dim!(&self.0, |c| compute(py, || Ok(c.segment(a, b)?.into())))
-    }
-
     /// The same curve with a clamped knot vector (end knots repeated
     /// ``order`` times), so that it starts and ends at control points.
     fn clamped(&self, py: Python<'_>) -> PyResult<Self> {
@@ -488,4 +369,4 @@ impl PyNurbsCurve {
         )
         })
     }
-}
+});

@@ -59,19 +59,27 @@ impl ParamsArg {
         }
     }
 
+    /// The parameters themselves: the uniform ones over `domain` for a count.
+    pub(crate) fn values(&self, domain: t2spline::Domain) -> Vec<f64> {
+        match self {
+            ParamsArg::Count(n) => domain.uniform(*n),
+            ParamsArg::Given(t) => t.clone(),
+        }
+    }
+
     /// The number of parameters.
     pub(crate) fn len(&self) -> usize {
         self.params().len()
     }
 }
 
-/// A zeroed buffer of `params × per_param` values for the engine to write
-/// into, refused when it would exceed [`MAX_OUTPUT_BYTES`] (a request beyond
-/// the machine must be an error, not an abort).
+/// Refuses an output of `params × per_param` values beyond
+/// [`MAX_OUTPUT_BYTES`], before anything is allocated: a request beyond the
+/// machine must be an error, not an abort.
 ///
 /// # Errors
 /// `ValueError` naming `name` and the size.
-pub(crate) fn output_buffer(params: usize, per_param: usize, name: &str) -> PyResult<Vec<f64>> {
+pub(crate) fn check_output(params: usize, per_param: usize, name: &str) -> PyResult<()> {
     let bytes = (params as u128) * (per_param as u128) * 8;
     if bytes > u128::from(MAX_OUTPUT_BYTES) {
         return Err(PyValueError::new_err(format!(
@@ -80,6 +88,16 @@ pub(crate) fn output_buffer(params: usize, per_param: usize, name: &str) -> PyRe
             MAX_OUTPUT_BYTES as f64 / 1e9
         )));
     }
+    Ok(())
+}
+
+/// A zeroed buffer of `params × per_param` values for the engine to write
+/// into, within [`check_output`]'s limit.
+///
+/// # Errors
+/// The error of [`check_output`].
+pub(crate) fn output_buffer(params: usize, per_param: usize, name: &str) -> PyResult<Vec<f64>> {
+    check_output(params, per_param, name)?;
     // Zeroed memory comes from the system untouched (calloc), so the engine's
     // writes are the first: no extra pass over the output.
     Ok(vec![0.0; params * per_param])

@@ -181,16 +181,12 @@ impl PySolution {
         params: &Bound<'py, PyAny>,
     ) -> PyResult<Bound<'py, PyDict>> {
         let params = ParamsArg::extract(params, "params")?;
-        crate::sample::output_buffer(params.len(), 9 * self.0.dimension(), "params")?;
+        crate::sample::check_output(params.len(), 9 * self.0.dimension(), "params")?;
         let out = PyDict::new(py);
         let domain = by_dim!(&self.0, |s| s.fuzzy_curve().domain());
-        let t = match &params {
-            ParamsArg::Count(n) => domain.uniform(*n),
-            ParamsArg::Given(t) => t.clone(),
-        };
         by_dim!(&self.0, |s| {
             let stages = compute(py, || s.sample_stages(params.params()))?;
-            out.set_item("params", array(py, t, &[params.len()])?)?;
+            out.set_item("params", array(py, params.values(domain), &[params.len()])?)?;
             let cuts = PyDict::new(py);
             for l in six_layers() {
                 match stages.alpha_cut(l) {

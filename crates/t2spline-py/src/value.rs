@@ -368,49 +368,30 @@ impl SeqBuilder {
     }
 }
 
-impl ser::SerializeSeq for SeqBuilder {
-    type Ok = Value;
-    type Error = Unsupported;
-    fn serialize_element<T: Serialize + ?Sized>(&mut self, value: &T) -> Result<(), Unsupported> {
-        self.push(value)
-    }
-    fn end(self) -> Result<Value, Unsupported> {
-        Ok(self.finish())
-    }
+/// The serde traits of sequences, each pushing its elements into the builder.
+macro_rules! seq_traits {
+    ($($name:ident: $method:ident),*) => {
+        $(
+            impl ser::$name for SeqBuilder {
+                type Ok = Value;
+                type Error = Unsupported;
+                fn $method<T: Serialize + ?Sized>(&mut self, value: &T) -> Result<(), Unsupported> {
+                    self.push(value)
+                }
+                fn end(self) -> Result<Value, Unsupported> {
+                    Ok(self.finish())
+                }
+            }
+        )*
+    };
 }
 
-impl ser::SerializeTuple for SeqBuilder {
-    type Ok = Value;
-    type Error = Unsupported;
-    fn serialize_element<T: Serialize + ?Sized>(&mut self, value: &T) -> Result<(), Unsupported> {
-        self.push(value)
-    }
-    fn end(self) -> Result<Value, Unsupported> {
-        Ok(self.finish())
-    }
-}
-
-impl ser::SerializeTupleStruct for SeqBuilder {
-    type Ok = Value;
-    type Error = Unsupported;
-    fn serialize_field<T: Serialize + ?Sized>(&mut self, value: &T) -> Result<(), Unsupported> {
-        self.push(value)
-    }
-    fn end(self) -> Result<Value, Unsupported> {
-        Ok(self.finish())
-    }
-}
-
-impl ser::SerializeTupleVariant for SeqBuilder {
-    type Ok = Value;
-    type Error = Unsupported;
-    fn serialize_field<T: Serialize + ?Sized>(&mut self, value: &T) -> Result<(), Unsupported> {
-        self.push(value)
-    }
-    fn end(self) -> Result<Value, Unsupported> {
-        Ok(self.finish())
-    }
-}
+seq_traits!(
+    SerializeSeq: serialize_element,
+    SerializeTuple: serialize_element,
+    SerializeTupleStruct: serialize_field,
+    SerializeTupleVariant: serialize_field
+);
 
 impl MapBuilder {
     fn field<T: Serialize + ?Sized>(
@@ -453,35 +434,29 @@ impl ser::SerializeMap for MapBuilder {
     }
 }
 
-impl ser::SerializeStruct for MapBuilder {
-    type Ok = Value;
-    type Error = Unsupported;
-    fn serialize_field<T: Serialize + ?Sized>(
-        &mut self,
-        key: &'static str,
-        value: &T,
-    ) -> Result<(), Unsupported> {
-        self.field(key, value)
-    }
-    fn end(self) -> Result<Value, Unsupported> {
-        Ok(self.finish())
-    }
+/// The serde traits of structs, each adding its fields to the object.
+macro_rules! struct_traits {
+    ($($name:ident),*) => {
+        $(
+            impl ser::$name for MapBuilder {
+                type Ok = Value;
+                type Error = Unsupported;
+                fn serialize_field<T: Serialize + ?Sized>(
+                    &mut self,
+                    key: &'static str,
+                    value: &T,
+                ) -> Result<(), Unsupported> {
+                    self.field(key, value)
+                }
+                fn end(self) -> Result<Value, Unsupported> {
+                    Ok(self.finish())
+                }
+            }
+        )*
+    };
 }
 
-impl ser::SerializeStructVariant for MapBuilder {
-    type Ok = Value;
-    type Error = Unsupported;
-    fn serialize_field<T: Serialize + ?Sized>(
-        &mut self,
-        key: &'static str,
-        value: &T,
-    ) -> Result<(), Unsupported> {
-        self.field(key, value)
-    }
-    fn end(self) -> Result<Value, Unsupported> {
-        Ok(self.finish())
-    }
-}
+struct_traits!(SerializeStruct, SerializeStructVariant);
 
 mod points;
 use points::PointsSerializer;

@@ -7,7 +7,6 @@ use crate::nurbs::NurbsCurve;
 use crate::pipeline::point_stages::PointStages;
 use crate::pipeline::{FuzzyCurve, Solution};
 use crate::sampling::plan::Plan;
-use crate::sampling::sampler::check_outputs;
 use crate::sampling::{CurveSamples, LayerSamples, Params, Sampler, StageSamples, SweepSamples};
 
 impl<const D: usize> NurbsCurve<D> {
@@ -148,28 +147,24 @@ impl<const D: usize> FuzzyCurve<D> {
         params: impl Into<Params<'a>>,
         out: &mut [&mut [f64]],
     ) -> Result<(), Error> {
-        let params = params.into();
-        check_outputs(
-            out,
-            7 * D,
-            params.len(),
-            "output values (one per parameter)",
-        )?;
+        if out.len() != 7 * D {
+            return Err(Error::Length {
+                what: "output slices (one per coordinate of each layer)",
+                expected: 7 * D,
+                found: out.len(),
+            });
+        }
         let plan = Plan::new(self.points(), &[], true);
-        // The plan's channels are in its own order; hand each its slice.
-        let mut slots: Vec<Option<&mut [f64]>> = out.iter_mut().map(|o| Some(&mut **o)).collect();
-        let mut by_channel: Vec<(usize, &mut [f64])> = Vec::with_capacity(7 * D);
-        for layer in Layer::ALL {
+        // The plan orders its channels its own way: `out[k·D + d]` is channel
+        // `layer_channel(Layer::ALL[k]) + d`.
+        let channels = Layer::ALL.into_iter().flat_map(|layer| {
             let first = plan
                 .layer_channel(layer)
                 .expect("a plan with layers has every layer");
-            for d in 0..D {
-                let slot = slots[layer.index() * D + d]
-                    .take()
-                    .expect("each slot is taken once");
-                by_channel.push((first + d, slot));
-            }
-        }
+            (0..D).map(move |d| first + d)
+        });
+        let mut by_channel: Vec<(usize, &mut [f64])> =
+            channels.zip(out.iter_mut().map(|o| &mut **o)).collect();
         by_channel.sort_by_key(|(channel, _)| *channel);
         let mut ordered: Vec<&mut [f64]> = by_channel.into_iter().map(|(_, o)| o).collect();
         Sampler::new_unchecked(self.knots(), self.weights(), plan.values())
