@@ -66,11 +66,21 @@ impl PyFuzzyNumber {
     #[pyo3(signature = (crisp, upper, primary, lower, lower_height))]
     fn new(
         crisp: f64,
-        upper: [f64; 2],
-        primary: [f64; 2],
-        lower: [f64; 2],
+        upper: &Bound<'_, PyAny>,
+        primary: &Bound<'_, PyAny>,
+        lower: &Bound<'_, PyAny>,
         lower_height: f64,
     ) -> PyResult<Self> {
+        let feet = |arg, name| -> PyResult<[f64; 2]> {
+            let f = floats(arg, name)?;
+            f.expect_shape(name, &[2], ": (left, right)")?;
+            Ok([f.data[0], f.data[1]])
+        };
+        let (upper, primary, lower) = (
+            feet(upper, "upper")?,
+            feet(primary, "primary")?,
+            feet(lower, "lower")?,
+        );
         Nt2Number::try_new(crisp, upper, primary, lower, lower_height)
             .map(PyFuzzyNumber)
             .map_err(core_error)
