@@ -97,6 +97,31 @@ proptest! {
     }
 
     #[test]
+    fn layers_into_slices_are_sample_layers_bit_for_bit(
+        c in strategies::fuzzy_curve::<3>(), s in fractions(), uniform in 2usize..40,
+    ) {
+        let params = probe_params(c.knots(), &s);
+        for p in [Params::Given(&params), Params::Uniform(uniform)] {
+            let want = c.sample_layers(p).unwrap();
+            let n = p.len();
+            let mut buffer = vec![f64::NAN; 7 * 3 * n];
+            let mut out: Vec<&mut [f64]> = buffer.chunks_mut(n.max(1)).collect();
+            out.resize_with(21, || &mut []);
+            c.sample_layers_into_slices(p, &mut out).unwrap();
+            for layer in Layer::ALL {
+                for d in 0..3 {
+                    let got = &buffer[(layer.index() * 3 + d) * n..][..n];
+                    let want = want[layer].coord(d);
+                    prop_assert!(
+                        got.iter().zip(want).all(|(a, b)| a.to_bits() == b.to_bits()),
+                        "{layer} coordinate {d}: {got:?} != {want:?}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
     fn sweep_matches_the_curves_of_every_stage(
         c in strategies::fuzzy_curve::<3>(),
         s in fractions(),
@@ -324,6 +349,33 @@ fn bad_parameters_and_outputs_are_errors() {
     assert!(matches!(
         Sampler::try_new(&knots, &[1.0, -1.0], &[[0.0, 1.0]]),
         Err(Error::Weight { index: 1, .. })
+    ));
+}
+
+#[test]
+fn layers_into_slices_refuse_wrong_outputs_and_parameters() {
+    let c = paper_like_curve();
+    let mut buffer = vec![0.0; 14 * 3];
+    let mut out: Vec<&mut [f64]> = buffer.chunks_mut(3).collect();
+    assert!(matches!(
+        c.sample_layers_into_slices(Params::Uniform(3), &mut out[..13]),
+        Err(Error::Length {
+            expected: 14,
+            found: 13,
+            ..
+        })
+    ));
+    assert!(matches!(
+        c.sample_layers_into_slices(Params::Uniform(4), &mut out),
+        Err(Error::Length {
+            expected: 4,
+            found: 3,
+            ..
+        })
+    ));
+    assert!(matches!(
+        c.sample_layers_into_slices(&[0.0, 0.5, 2.0], &mut out),
+        Err(Error::OutOfDomain { t, .. }) if t == 2.0
     ));
 }
 

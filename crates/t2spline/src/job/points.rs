@@ -134,11 +134,30 @@ impl<T> Points<T> {
     }
 }
 
+impl Points {
+    /// The name under which [`Points`] serialize as a newtype struct (feature
+    /// `serde`). JSON writers treat a newtype as its content, so result files
+    /// are unchanged; a serializer that builds arrays (the Python bindings
+    /// build numpy arrays) recognises point lists by this name.
+    pub const SERDE_NAME: &'static str = "t2spline::Points";
+}
+
 #[cfg(feature = "serde")]
 impl<T: serde::Serialize + Copy> serde::Serialize for Points<T> {
     /// A list of points, each a list of coordinates (`[[x, y], …]`), or for a
     /// grid a list of rows of points (`[[[x, y, z], …], …]`), written straight
-    /// from the columns.
+    /// from the columns, as the newtype struct [`Points::SERDE_NAME`].
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_newtype_struct(Points::SERDE_NAME, &Shaped(self))
+    }
+}
+
+/// The points as nested lists: of points, or of rows of points.
+#[cfg(feature = "serde")]
+struct Shaped<'a, T>(&'a Points<T>);
+
+#[cfg(feature = "serde")]
+impl<T: serde::Serialize + Copy> serde::Serialize for Shaped<'_, T> {
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         use serde::ser::SerializeSeq;
         /// One point: its coordinates.
@@ -163,12 +182,12 @@ impl<T: serde::Serialize + Copy> serde::Serialize for Points<T> {
                 seq.end()
             }
         }
-        match self.grid {
-            None => Run(&self.coords, self.row_range(0)).serialize(s),
+        match self.0.grid {
+            None => Run(&self.0.coords, self.0.row_range(0)).serialize(s),
             Some([rows, _]) => {
                 let mut seq = s.serialize_seq(Some(rows))?;
                 for a in 0..rows {
-                    seq.serialize_element(&Run(&self.coords, self.row_range(a)))?;
+                    seq.serialize_element(&Run(&self.0.coords, self.0.row_range(a)))?;
                 }
                 seq.end()
             }

@@ -2,7 +2,7 @@
 //! `sample_sweep` and `sample_stages`.
 
 use crate::error::Error;
-use crate::fuzzy::Alpha;
+use crate::fuzzy::{Alpha, Layer};
 use crate::nurbs::NurbsCurve;
 use crate::pipeline::point_stages::PointStages;
 use crate::pipeline::{FuzzyCurve, Solution};
@@ -114,6 +114,63 @@ impl<const D: usize> FuzzyCurve<D> {
             .collect();
         *out = sweep(self, params.into(), &[], true, buffers)?.layers;
         Ok(())
+    }
+
+    /// [`FuzzyCurve::sample_layers`] into memory the caller owns: `out` holds
+    /// `7·D` slices, each as long as `params`, and `out[k·D + d]` receives
+    /// coordinate `d` of the layer [`Layer::ALL`]`[k]` (SPEC order, from
+    /// `upper_left` to `upper_right`). Front ends that keep their own arrays
+    /// (the Python bindings write into one numpy buffer) get the engine's
+    /// output without a copy. The values are those of `sample_layers`, bit
+    /// for bit.
+    ///
+    /// # Errors
+    /// [`Error::Length`] if `out` has the wrong number or length of slices;
+    /// [`Error::OutOfDomain`] for the first parameter outside the domain.
+    ///
+    /// # Examples
+    /// ```
+    /// # use t2spline::{FuzzyCurve, Layer, Nt2Number, Nt2Point};
+    /// # use t2spline::sampling::Params;
+    /// let n = |c: f64| Nt2Number::try_new(c, [c - 1.0, c + 2.0], [c - 0.5, c + 1.0], [c - 0.2, c + 0.3], 0.5);
+    /// let points = vec![Nt2Point::new([n(0.0)?, n(0.0)?]), Nt2Point::new([n(2.0)?, n(4.0)?])];
+    /// let c = FuzzyCurve::try_new(1, points, vec![1.0, 1.0], None)?;
+    /// let mut buffer = vec![0.0; 7 * 2 * 3]; // layer, coordinate, parameter
+    /// let mut out: Vec<&mut [f64]> = buffer.chunks_mut(3).collect();
+    /// c.sample_layers_into_slices(Params::Uniform(3), &mut out)?;
+    /// let k = Layer::UpperRight.index();
+    /// assert_eq!(&buffer[(k * 2 + 1) * 3..][..3], [2.0, 4.0, 6.0]); // y of upper_right
+    /// # Ok::<(), t2spline::Error>(())
+    /// ```
+    pub fn sample_layers_into_slices<'a>(
+        &self,
+        params: impl Into<Params<'a>>,
+        out: &mut [&mut [f64]],
+    ) -> Result<(), Error> {
+        if out.len() != 7 * D {
+            return Err(Error::Length {
+                what: "output slices (one per coordinate of each layer)",
+                expected: 7 * D,
+                found: out.len(),
+            });
+        }
+        let plan = Plan::new(self.points(), &[], true);
+        // The plan orders its channels its own way: `out[k·D + d]` is channel
+        // `layer_channel(Layer::ALL[k]) + d`.
+        let channels = Layer::ALL.into_iter().flat_map(|layer| {
+            let first = plan
+                .layer_channel(layer)
+                .expect("a plan with layers has every layer");
+            (0..D).map(move |d| first + d)
+        });
+        let mut by_channel: Vec<(usize, &mut [f64])> =
+            channels.zip(out.iter_mut().map(|o| &mut **o)).collect();
+        by_channel.sort_by_key(|(channel, _)| *channel);
+        let mut ordered: Vec<&mut [f64]> = by_channel.into_iter().map(|(_, o)| o).collect();
+        Sampler::new_unchecked(self.knots(), self.weights(), plan.values())
+            .with_bounds(plan.bounds())
+            .expect("the bounds name channels just made")
+            .sample_into(params, &mut ordered)
     }
 
     /// Runs stages 2–4 at every level of `alphas` and samples, at `params`, the

@@ -66,6 +66,12 @@ impl<const D: usize> Plan<D> {
         plan
     }
 
+    /// The channel of the first coordinate of a stage-1 layer curve, if
+    /// planned.
+    pub(crate) fn layer_channel(&self, layer: Layer) -> Option<usize> {
+        self.stage1[layer]
+    }
+
     /// Every channel's control values.
     pub(crate) fn values(&self) -> &[Vec<f64>] {
         &self.values

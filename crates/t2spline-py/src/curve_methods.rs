@@ -1,0 +1,156 @@
+//! The methods that `NurbsCurve` and `FuzzyCurve` share, written once: the
+//! core's `NurbsCurve<D>` and `FuzzyCurve<D>` have the same accessors and the
+//! same operations (a fuzzy curve applies them to its seven layers at once),
+//! so one body serves both classes.
+
+use pyo3::prelude::*;
+use t2spline::Domain;
+
+use crate::arrays::array;
+use crate::construct::count;
+use crate::sample::check_output;
+
+/// The uniform parameters `tᵢ = a + (b − a)·i/(count − 1)` of a domain.
+pub(crate) fn uniform_params<'py>(
+    py: Python<'py>,
+    domain: Domain,
+    count: i64,
+) -> PyResult<Bound<'py, PyAny>> {
+    let n = self::count(count, "count", 0)?;
+    check_output(n, 1, "count")?;
+    array(py, domain.uniform(n), &[n])
+}
+
+/// `curve_methods!(Class { methods })`: the `#[pymethods]` block of `Class`
+/// (a wrapper of a `ByDim` of curves) with its own `methods` and the shared
+/// ones: `dimension`, `degree`, `order`, `weights`, `knots`, `domain`,
+/// `uniform_params`, `insert_knot`, `refine_knots`, `elevate_degree`,
+/// `split_at`, `segment`.
+macro_rules! curve_methods {
+    ($class:ident { $($own:tt)* }) => {
+        #[pyo3::pymethods]
+        impl $class {
+            $($own)*
+
+            /// The number of coordinates of a point: 2 or 3.
+            #[getter]
+            fn dimension(&self) -> usize {
+                self.0.dimension()
+            }
+
+            /// The degree ``p``.
+            #[getter]
+            fn degree(&self) -> usize {
+                $crate::dim::by_dim!(&self.0, |c| c.degree())
+            }
+
+            /// The order ``k = p + 1``.
+            #[getter]
+            fn order(&self) -> usize {
+                $crate::dim::by_dim!(&self.0, |c| c.order())
+            }
+
+            /// The weights, shape ``(n,)``.
+            #[getter]
+            fn weights<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+                let w = $crate::dim::by_dim!(&self.0, |c| c.weights().to_vec());
+                let n = w.len();
+                $crate::arrays::array(py, w, &[n])
+            }
+
+            /// The knot vector, shape ``(n + order,)`` (the default made explicit).
+            #[getter]
+            fn knots<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+                let k = $crate::dim::by_dim!(&self.0, |c| c.knots().as_slice().to_vec());
+                let n = k.len();
+                $crate::arrays::array(py, k, &[n])
+            }
+
+            /// The parameter domain ``(U[p], U[n])``.
+            #[getter]
+            fn domain(&self) -> (f64, f64) {
+                let d = $crate::dim::by_dim!(&self.0, |c| c.domain());
+                (d.start, d.end)
+            }
+
+            /// ``count`` uniform parameters over the domain (SPEC §8)::
+            ///
+            ///     tᵢ = a + (b − a)·i/(count − 1),   i = 0 … count − 1, the last exactly b
+            ///
+            /// the parameters of ``sample(count)``.
+            fn uniform_params<'py>(
+                &self,
+                py: Python<'py>,
+                count: i64,
+            ) -> PyResult<Bound<'py, PyAny>> {
+                let domain = $crate::dim::by_dim!(&self.0, |c| c.domain());
+                $crate::curve_methods::uniform_params(py, domain, count)
+            }
+
+            /// The same curve with the knot ``u`` inserted ``times`` times
+            /// (Boehm, The NURBS Book A5.1). A fuzzy curve inserts it into
+            /// all seven layers at once; their order holds exactly.
+            ///
+            /// Raises
+            /// ------
+            /// ValueError
+            ///     If ``u`` is outside the domain or would repeat more than
+            ///     ``order`` times; for a fuzzy curve, when a coordinate mixes
+            ///     lower heights (new control points need one height per
+            ///     coordinate).
+            ///
+            /// Examples
+            /// --------
+            /// >>> c = NurbsCurve([[0, 0], [1, 2], [3, 2], [4, 0]], degree=2)
+            /// >>> d = c.insert_knot(0.3)
+            /// >>> d.control_points.shape, bool(abs(d.eval(0.7) - c.eval(0.7)).max() < 1e-14)
+            /// ((5, 2), True)
+            #[pyo3(signature = (u, times=1))]
+            fn insert_knot(&self, py: Python<'_>, u: f64, times: i64) -> PyResult<Self> {
+                let times = $crate::construct::count(times, "times", 1)?;
+                $crate::dim::by_dim!(&self.0, |c| $crate::errors::compute(py, || Ok(c
+                    .insert_knot(u, times)?
+                    .into())))
+            }
+
+            /// The same curve with all of ``knots`` inserted (knot
+            /// refinement, The NURBS Book A5.4); a fuzzy curve on all layers.
+            fn refine_knots(&self, py: Python<'_>, knots: &Bound<'_, PyAny>) -> PyResult<Self> {
+                let new = $crate::arrays::optional_vector(Some(knots), "knots")?
+                    .unwrap_or_default();
+                $crate::dim::by_dim!(&self.0, |c| $crate::errors::compute(py, || Ok(c
+                    .refine_knots(&new)?
+                    .into())))
+            }
+
+            /// The same curve of degree ``degree + times`` (The NURBS Book
+            /// A5.9; an unclamped curve is first cut to its domain); a fuzzy
+            /// curve on all layers.
+            #[pyo3(signature = (times=1))]
+            fn elevate_degree(&self, py: Python<'_>, times: i64) -> PyResult<Self> {
+                let times = $crate::construct::count(times, "times", 1)?;
+                $crate::dim::by_dim!(&self.0, |c| $crate::errors::compute(py, || Ok(c
+                    .elevate_degree(times)?
+                    .into())))
+            }
+
+            /// The two curves left and right of ``t``, strictly inside the
+            /// domain, with domains ``(a, t)`` and ``(t, b)``.
+            fn split_at(&self, py: Python<'_>, t: f64) -> PyResult<(Self, Self)> {
+                $crate::dim::by_dim!(&self.0, |c| $crate::errors::compute(py, || {
+                    let [a, b] = c.split_at(t)?;
+                    Ok((a.into(), b.into()))
+                }))
+            }
+
+            /// The piece of the curve over ``[a, b]``, as a curve of its own.
+            fn segment(&self, py: Python<'_>, a: f64, b: f64) -> PyResult<Self> {
+                $crate::dim::by_dim!(&self.0, |c| $crate::errors::compute(py, || Ok(c
+                    .segment(a, b)?
+                    .into())))
+            }
+        }
+    };
+}
+
+pub(crate) use curve_methods;

@@ -1,0 +1,108 @@
+//! One dispatch over the dimension: Python sees one `NurbsCurve`, one
+//! `FuzzyCurve`, one `Solution` class, while the core's types carry their
+//! dimension `D` (2 or 3) in the type. [`ByDim`] holds either, and the two
+//! macros are the only places that tell them apart: code written once for
+//! any `D` runs on both.
+
+use t2spline::job::Model;
+use t2spline::{FuzzyCurve, Nt2Point, NurbsCurve, Solution};
+
+/// A family of core types indexed by dimension.
+pub(crate) trait Family {
+    /// The type of dimension `D`.
+    type Of<const D: usize>: Clone + std::fmt::Debug + PartialEq + Send + Sync;
+}
+
+/// A value of dimension 2 (`x`, `y`) or 3 (`x`, `y`, `z`).
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum ByDim<F: Family> {
+    /// In the plane.
+    Planar(F::Of<2>),
+    /// In space.
+    Spatial(F::Of<3>),
+}
+
+/// [`NurbsCurve`]s.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Nurbs;
+impl Family for Nurbs {
+    type Of<const D: usize> = NurbsCurve<D>;
+}
+
+/// [`FuzzyCurve`]s.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Fuzzy;
+impl Family for Fuzzy {
+    type Of<const D: usize> = FuzzyCurve<D>;
+}
+
+/// Lists of fuzzy points.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct PointList;
+impl Family for PointList {
+    type Of<const D: usize> = Vec<Nt2Point<D>>;
+}
+
+/// [`Solution`]s.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Solved;
+impl Family for Solved {
+    type Of<const D: usize> = Solution<D>;
+}
+
+/// `by_dim!(value, |c| body)`: `body` with `c` bound to the value inside a
+/// [`ByDim`] of either dimension. The body is compiled once per dimension, so
+/// inside it `c` has a concrete type (`NurbsCurve<2>`, then `NurbsCurve<3>`)
+/// and `ByDim::from` wraps results of that dimension.
+macro_rules! by_dim {
+    ($value:expr, |$c:ident| $body:expr) => {
+        match $value {
+            $crate::dim::ByDim::Planar($c) => $body,
+            $crate::dim::ByDim::Spatial($c) => $body,
+        }
+    };
+}
+
+pub(crate) use by_dim;
+
+/// `ByDim::from` for each family's type of either dimension.
+macro_rules! from_dims {
+    ($($family:ident: $ty:ident),*) => {
+        $(
+            impl From<$ty<2>> for ByDim<$family> {
+                fn from(value: $ty<2>) -> Self {
+                    ByDim::Planar(value)
+                }
+            }
+            impl From<$ty<3>> for ByDim<$family> {
+                fn from(value: $ty<3>) -> Self {
+                    ByDim::Spatial(value)
+                }
+            }
+        )*
+    };
+}
+
+from_dims!(Nurbs: NurbsCurve, Fuzzy: FuzzyCurve, Solved: Solution);
+
+impl<F: Family> ByDim<F> {
+    /// The number of coordinates: 2 or 3.
+    pub(crate) fn dimension(&self) -> usize {
+        match self {
+            ByDim::Planar(_) => 2,
+            ByDim::Spatial(_) => 3,
+        }
+    }
+}
+
+impl ByDim<Fuzzy> {
+    /// The fuzzy curve of a job's model; `None` for a model that is not a
+    /// curve.
+    pub(crate) fn from_model(model: Model) -> Option<Self> {
+        match model {
+            Model::Planar(c) => Some(ByDim::Planar(c)),
+            Model::Spatial(c) => Some(ByDim::Spatial(c)),
+            _ => None,
+        }
+    }
+}

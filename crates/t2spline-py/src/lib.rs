@@ -1,0 +1,74 @@
+//! # t2spline-py — the Python module `t2spline`
+//!
+//! Bindings (PyO3, numpy) of the t2spline libraries for people who model
+//! uncertain data in Python: `import t2spline`, numpy arrays in and out, the
+//! Rust engine underneath. Every number comes from the libraries' public API;
+//! this crate converts arguments and results and computes nothing itself.
+//!
+//! | Python | Rust |
+//! |---|---|
+//! | `t2spline.run(job, alpha=, samples=, derivatives=)` | `t2spline_io::parse_job` → `Job::settings` → `Job::run`, the path of `t2spline run` |
+//! | `t2spline.JobError` | `t2spline_io::Error::Invalid`: the CLI's problem lines |
+//! | `FuzzyNumber`, `AlphaCut` | `Nt2Number`, `AlphaCut` (SPEC §1–§4) |
+//! | `NurbsCurve` | `NurbsCurve<2 or 3>` and its operations |
+//! | `FuzzyCurve`, `Solution` | `FuzzyCurve<2 or 3>` (stage 1, sampling engine), `Solution` (stages 2–4) |
+//! | `fit` | `t2spline::fit::FuzzyData::fit` |
+//! | `benchmark_curve` | `t2spline::sampling::benchmark_curve` |
+//!
+//! The Python package (`python/t2spline/`) adds the plotting helpers, the
+//! type stubs and the documentation of every function.
+//!
+//! Build with maturin (`pip install .` at the repository root); the
+//! `extension-module` feature, which leaves libpython to the interpreter, is
+//! turned on by maturin only, so `cargo test` links libpython as a program
+//! would.
+
+mod arrays;
+mod construct;
+mod curve_methods;
+mod dim;
+mod errors;
+mod fit;
+mod fuzzy_curve;
+mod number;
+mod nurbs_curve;
+mod run;
+mod sample;
+mod solution;
+mod value;
+
+use pyo3::prelude::*;
+
+/// The fuzzy curve that ``t2spline bench`` and the Rust benchmarks time:
+/// degree 3, ten control points (0,0), (1,2), (2,−1), (3,3), (4,0), (5,2.5),
+/// (6,−2), (7,1), (8,3), (9,0), weights 1, 0.5, 2, 1, 3, 0.7, 1, 1.5, 0.8, 1,
+/// clamped uniform knots, every number with feet ``c − 0.3, c + 0.45``
+/// (upper), ``c − 0.2, c + 0.3`` (primary), ``c − 0.1, c + 0.15`` (lower) and
+/// height 0.6.
+///
+/// Examples
+/// --------
+/// >>> benchmark_curve()
+/// FuzzyCurve(dimension=2, degree=3, order=4, control_points=(10, 2), domain=(0.0, 1.0))
+#[pyfunction]
+fn benchmark_curve() -> fuzzy_curve::PyFuzzyCurve {
+    t2spline::sampling::benchmark_curve().into()
+}
+
+/// The extension module `t2spline._t2spline`; `t2spline/__init__.py`
+/// re-exports it.
+#[pymodule]
+fn _t2spline(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    m.add("JobError", m.py().get_type::<errors::JobError>())?;
+    m.add_class::<number::PyFuzzyNumber>()?;
+    m.add_class::<number::PyAlphaCut>()?;
+    m.add_class::<nurbs_curve::PyNurbsCurve>()?;
+    m.add_class::<fuzzy_curve::PyFuzzyCurve>()?;
+    m.add_class::<solution::PySolution>()?;
+    m.add_function(wrap_pyfunction!(run::run, m)?)?;
+    m.add_function(wrap_pyfunction!(fit::fit, m)?)?;
+    m.add_function(wrap_pyfunction!(benchmark_curve, m)?)?;
+    m.add_function(wrap_pyfunction!(errors::_panic_for_tests, m)?)?;
+    Ok(())
+}

@@ -1,0 +1,372 @@
+//! `NurbsCurve`: a rational B-spline curve in the plane or in space (SPEC §6)
+//! with the operations of the core: evaluation, derivatives, knot insertion,
+//! degree elevation, splitting, arc length, closest point.
+
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use t2spline::{KnotVector, NurbsCurve};
+
+use crate::arrays::{array, floats, optional_vector, rows_array, transposed, Floats};
+use crate::construct::{count, degree};
+use crate::curve_methods::curve_methods;
+use crate::dim::{by_dim, ByDim, Nurbs};
+use crate::errors::compute;
+use crate::sample::{at_params, channels, output_buffer, ParamsArg};
+
+/// A rational B-spline curve in the plane or in space (SPEC §6, paper
+/// Def. 5.1)::
+///
+///     C(t) = Σᵢ wᵢ Nᵢ,ₚ(t) Pᵢ / Σᵢ wᵢ Nᵢ,ₚ(t),   t in [U[p], U[n]]
+///
+/// with ``n`` control points ``Pᵢ``, weights ``wᵢ > 0``, degree ``p`` (order
+/// ``k = p + 1``) and a knot vector ``U`` of ``n + k`` non-decreasing values
+/// (default: clamped uniform). At an interior knot of full multiplicity the
+/// value from the right is taken; at the right end of the domain the last
+/// non-empty span is used.
+///
+/// Parameters
+/// ----------
+/// control_points : array_like, shape (n, 2) or (n, 3)
+/// weights : array_like, shape (n,), optional
+///     Default: all 1.
+/// knots : array_like, shape (n + degree + 1,), optional
+///     Default: clamped uniform.
+/// degree, order : int, optional
+///     Exactly one of them (``order = degree + 1``); when both are left out,
+///     the degree follows from the number of knots.
+///
+/// Raises
+/// ------
+/// TypeError, ValueError
+///     For an argument of the wrong dtype or shape (named), NaN or infinity,
+///     and every rule of SPEC §6 (too few control points, a weight that is not
+///     positive, decreasing knots, ...), naming the place.
+///
+/// Examples
+/// --------
+/// The rational quarter circle, weights ``1, √2/2, 1``:
+///
+/// >>> import numpy as np
+/// >>> arc = NurbsCurve([[1, 0], [1, 1], [0, 1]], weights=[1, np.sqrt(0.5), 1], degree=2)
+/// >>> arc
+/// NurbsCurve(dimension=2, degree=2, order=3, control_points=(3, 2), knots=(6,), domain=(0.0, 1.0))
+/// >>> points = arc.sample(101)                       # (101, 2), by the sampling engine
+/// >>> bool(np.allclose(np.hypot(points[:, 0], points[:, 1]), 1.0, rtol=0, atol=1e-14))
+/// True
+/// >>> round(arc.arc_length(), 12) == round(np.pi / 2, 12)
+/// True
+#[pyclass(frozen, eq, module = "t2spline", name = "NurbsCurve")]
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct PyNurbsCurve(pub(crate) ByDim<Nurbs>);
+
+impl From<NurbsCurve<2>> for PyNurbsCurve {
+    fn from(curve: NurbsCurve<2>) -> Self {
+        PyNurbsCurve(curve.into())
+    }
+}
+
+impl From<NurbsCurve<3>> for PyNurbsCurve {
+    fn from(curve: NurbsCurve<3>) -> Self {
+        PyNurbsCurve(curve.into())
+    }
+}
+
+/// A curve of dimension `D` through the rows of `points`.
+fn build<const D: usize>(
+    points: &Floats,
+    weights: Vec<f64>,
+    knots: Option<Vec<f64>>,
+    degree: usize,
+) -> Result<NurbsCurve<D>, t2spline::Error> {
+    let rows = points.rows::<D>();
+    match knots {
+        Some(k) => {
+            let knots = KnotVector::try_new(k, degree, rows.len())?;
+            NurbsCurve::try_new(rows, weights, knots)
+        }
+        None => NurbsCurve::try_clamped(degree, rows, weights),
+    }
+}
+
+curve_methods!(PyNurbsCurve {
+    #[new]
+    #[pyo3(signature = (control_points, weights=None, knots=None, *, degree=None, order=None))]
+    fn new(
+        py: Python<'_>,
+        control_points: &Bound<'_, PyAny>,
+        weights: Option<&Bound<'_, PyAny>>,
+        knots: Option<&Bound<'_, PyAny>>,
+        degree: Option<i64>,
+        order: Option<i64>,
+    ) -> PyResult<Self> {
+        let points = floats(control_points, "control_points")?;
+        let (n, d) = points.points_shape("control_points")?;
+        let weights = optional_vector(weights, "weights")?.unwrap_or_else(|| vec![1.0; n]);
+        let knots = optional_vector(knots, "knots")?;
+        let degree = self::degree(degree, order, knots.as_ref().map(Vec::len), n)?;
+        compute(py, move || {
+            Ok(match d {
+                2 => build::<2>(&points, weights, knots, degree)?.into(),
+                _ => build::<3>(&points, weights, knots, degree)?.into(),
+            })
+        })
+    }
+
+    /// The control points, shape ``(n, dimension)``.
+    #[getter]
+    fn control_points<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        by_dim!(&self.0, |c| rows_array(py, c.control_points().to_vec()))
+    }
+
+    /// The point ``C(t)`` at every value of ``t``, by the straightforward
+    /// evaluator (the rational basis at ``t``); ``sample`` is the fast
+    /// engine for many parameters.
+    ///
+    /// Parameters
+    /// ----------
+    /// t : float or array_like
+    ///     Parameters in the domain, any shape.
+    ///
+    /// Returns
+    /// -------
+    /// numpy.ndarray
+    ///     Shape ``t.shape + (dimension,)``.
+    ///
+    /// Raises
+    /// ------
+    /// ValueError
+    ///     For a parameter outside the domain (``parameter t = 2 is outside
+    ///     the domain [0, 1]``), NaN or infinity.
+    fn eval<'py>(&self, py: Python<'py>, t: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+        let d = self.dimension();
+        by_dim!(&self.0, |c| at_params(py, t, &[d], |v, out| {
+            out.extend(c.eval(v)?);
+            Ok(())
+        }))
+    }
+
+    /// The curve at many parameters by the sampling engine (one power form of
+    /// the rational basis per knot span, multi-threaded for large jobs); agrees
+    /// with ``eval`` to rounding.
+    ///
+    /// Parameters
+    /// ----------
+    /// params : int or array_like
+    ///     A count of uniform parameters (``uniform_params(count)``), or a 1-D
+    ///     array of parameters in any order (sorted ones are fastest).
+    ///
+    /// Returns
+    /// -------
+    /// numpy.ndarray
+    ///     Shape ``(len(params), dimension)``; each coordinate is contiguous
+    ///     (the engine's structure of arrays, seen through a transpose).
+    fn sample<'py>(
+        &self,
+        py: Python<'py>,
+        params: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let params = ParamsArg::extract(params, "params")?;
+        let (n, d) = (params.len(), self.dimension());
+        let mut buffer = output_buffer(n, d, "params")?;
+        by_dim!(&self.0, |c| compute(py, || {
+            c.sampler()
+                .sample_into(params.params(), &mut channels(&mut buffer, d, n))
+        }))?;
+        // One row per coordinate: the (d, n) buffer seen as (n, d).
+        transposed(&array(py, buffer, &[d, n])?, &[1, 0])
+    }
+
+    /// The derivatives ``C⁽ʲ⁾(t)``, ``j = 0 … order``, at every value of ``t``
+    /// (The NURBS Book A3.2 and A4.2); one-sided at knots, as ``eval``.
+    ///
+    /// Returns
+    /// -------
+    /// numpy.ndarray
+    ///     Shape ``t.shape + (order + 1, dimension)``; ``[..., 0, :]`` is the
+    ///     point itself.
+    ///
+    /// Examples
+    /// --------
+    /// >>> line = NurbsCurve([[0, 0], [3, 4]], degree=1)
+    /// >>> line.derivatives(0.5, order=2).tolist()
+    /// [[1.5, 2.0], [3.0, 4.0], [0.0, 0.0]]
+    #[pyo3(signature = (t, order=1))]
+    fn derivatives<'py>(
+        &self,
+        py: Python<'py>,
+        t: &Bound<'py, PyAny>,
+        order: i64,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let order = count(order, "order", 0)?;
+        let d = self.dimension();
+        // The order is checked by the core before anything is computed.
+        let rows = order.min(t2spline::nurbs::MAX_DERIVATIVE_ORDER) + 1;
+        by_dim!(&self.0, |c| at_params(py, t, &[rows, d], |v, out| {
+            out.extend(c.derivatives(v, order)?.into_iter().flatten());
+            Ok(())
+        }))
+    }
+
+    /// The unit tangent ``C'(t)/|C'(t)|`` at every value of ``t``; shape
+    /// ``t.shape + (dimension,)``.
+    ///
+    /// Raises
+    /// ------
+    /// ValueError
+    ///     Where the curve has zero speed.
+    fn tangent<'py>(&self, py: Python<'py>, t: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+        let d = self.dimension();
+        by_dim!(&self.0, |c| at_params(py, t, &[d], |v, out| {
+            out.extend(c.tangent(v)?);
+            Ok(())
+        }))
+    }
+
+    /// The curvature ``|C' × C''| / |C'|³`` at every value of ``t``: a float for
+    /// a number, else an array of the shape of ``t``.
+    ///
+    /// Examples
+    /// --------
+    /// >>> import numpy as np
+    /// >>> arc = NurbsCurve([[1, 0], [1, 1], [0, 1]], weights=[1, np.sqrt(0.5), 1], degree=2)
+    /// >>> bool(np.allclose(arc.curvature([0.0, 0.3, 1.0]), 1.0))   # the unit circle
+    /// True
+    fn curvature<'py>(
+        &self,
+        py: Python<'py>,
+        t: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        by_dim!(&self.0, |c| at_params(py, t, &[], |v, out| {
+            out.push(c.curvature(v)?);
+            Ok(())
+        }))
+    }
+
+    /// The rational basis ``Rᵢ(t) = wᵢNᵢ,ₚ(t) / Σⱼ wⱼNⱼ,ₚ(t)`` of every control
+    /// point at every value of ``t``: non-negative, summing to 1; shape
+    /// ``t.shape + (n,)``.
+    fn rational_basis<'py>(
+        &self,
+        py: Python<'py>,
+        t: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let n = by_dim!(&self.0, |c| c.control_points().len());
+        by_dim!(&self.0, |c| at_params(py, t, &[n], |v, out| {
+            out.extend(c.rational_basis(v)?);
+            Ok(())
+        }))
+    }
+
+    /// The same curve with a clamped knot vector (end knots repeated
+    /// ``order`` times), so that it starts and ends at control points.
+    fn clamped(&self, py: Python<'_>) -> PyResult<Self> {
+        by_dim!(&self.0, |c| compute(py, || Ok(c.clamped().into())))
+    }
+
+    /// The length of the curve between ``a`` and ``b`` (default: the whole
+    /// domain), by adaptive Gauss–Kronrod 7/15 quadrature of ``|C'(t)|`` per
+    /// knot span (tolerance 1e-10 relative).
+    #[pyo3(signature = (a=None, b=None))]
+    fn arc_length(&self, py: Python<'_>, a: Option<f64>, b: Option<f64>) -> PyResult<f64> {
+        by_dim!(&self.0, |c| compute(py, || match (a, b) {
+            (None, None) => Ok(c.arc_length()),
+            _ => {
+                let d = c.domain();
+                c.arc_length_between(a.unwrap_or(d.start), b.unwrap_or(d.end))
+            }
+        }))
+    }
+
+    /// The parameter at which the arc length from the start of the domain is
+    /// ``length`` (Newton's method safeguarded by bisection).
+    fn param_at_length(&self, py: Python<'_>, length: f64) -> PyResult<f64> {
+        by_dim!(&self.0, |c| compute(py, || c.param_at_length(length)))
+    }
+
+    /// The point of the curve closest to ``point`` (The NURBS Book §6.1:
+    /// sampling per span, Newton's method, golden-section search as a
+    /// fallback).
+    ///
+    /// Parameters
+    /// ----------
+    /// point : array_like, shape (dimension,) or (m, dimension)
+    ///
+    /// Returns
+    /// -------
+    /// (t, point, distance)
+    ///     For one point: a float, an array ``(dimension,)`` and a float; for
+    ///     ``m`` points: arrays ``(m,)``, ``(m, dimension)`` and ``(m,)``.
+    fn closest_point<'py>(
+        &self,
+        py: Python<'py>,
+        point: &Bound<'py, PyAny>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+        let d = self.dimension();
+        let target = floats(point, "point")?;
+        let many = match target.shape[..] {
+            [k] if k == d => false,
+            [_, k] if k == d => true,
+            _ => {
+                return Err(PyValueError::new_err(format!(
+                    "point: expected shape ({d},) or (m, {d}), got {}",
+                    crate::arrays::shape_text(&target.shape)
+                )))
+            }
+        };
+        let (t, points, distances) = by_dim!(&self.0, |c| compute(py, || {
+            let found: Vec<_> = target
+                .rows()
+                .into_iter()
+                .map(|p| c.closest_point(p))
+                .collect();
+            Ok((
+                found.iter().map(|f| f.t).collect::<Vec<_>>(),
+                found.iter().flat_map(|f| f.point).collect::<Vec<_>>(),
+                found.iter().map(|f| f.distance).collect::<Vec<_>>(),
+            ))
+        }))?;
+        if many {
+            let m = t.len();
+            Ok((
+                array(py, t, &[m])?,
+                array(py, points, &[m, d])?,
+                array(py, distances, &[m])?,
+            ))
+        } else {
+            Ok((
+                t[0].into_pyobject(py)?.into_any(),
+                array(py, points, &[d])?,
+                distances[0].into_pyobject(py)?.into_any(),
+            ))
+        }
+    }
+
+    /// The tight axis-aligned box of the curve ``(min, max)``, each of shape
+    /// ``(dimension,)`` (from the roots of each coordinate's derivative).
+    fn bounding_box<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+        let d = self.dimension();
+        let (lo, hi) = by_dim!(&self.0, |c| compute(py, || {
+            let b = c.bounding_box();
+            Ok((b.min.to_vec(), b.max.to_vec()))
+        }))?;
+        Ok((array(py, lo, &[d])?, array(py, hi, &[d])?))
+    }
+
+    fn __repr__(&self) -> String {
+        let (a, b) = self.domain();
+        by_dim!(&self.0, |c| {
+            format!(
+            "NurbsCurve(dimension={}, degree={}, order={}, control_points=({}, {}), knots=({},), domain=({a:?}, {b:?}))",
+            self.dimension(),
+            c.degree(),
+            c.order(),
+            c.control_points().len(),
+            self.dimension(),
+            c.knots().as_slice().len(),
+        )
+        })
+    }
+});

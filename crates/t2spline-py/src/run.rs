@@ -1,0 +1,232 @@
+//! `t2spline.run`: a job (a dict or a job file) through the same validator
+//! and the same `Job::run` as `t2spline run`, its result as a dict of numpy
+//! arrays.
+
+use std::path::PathBuf;
+
+use pyo3::exceptions::PyTypeError;
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyString};
+use t2spline::job::{check_samples, Job, Overrides, Setting, Settings};
+use t2spline_io::job::locate;
+use t2spline_io::Problem;
+
+use crate::errors::{core_error, internal_error, io_error, job_error, setting_error, without_gil};
+use crate::value::to_value;
+
+/// How messages name a job given as a dict.
+pub(crate) const DICT_SOURCE: &str = "<dict>";
+
+/// A job's text and how messages name it: a dict is written as JSON with
+/// `json.dumps(job, indent=2)` (numpy arrays and numbers as lists and
+/// numbers), a path is read as `t2spline run` reads it.
+///
+/// # Errors
+/// `TypeError` for anything else; the errors of reading a file.
+pub(crate) fn job_text(job: &Bound<'_, PyAny>) -> PyResult<(String, String)> {
+    let py = job.py();
+    if job.is_instance_of::<PyDict>() {
+        let json = py.import("json")?;
+        let kwargs = PyDict::new(py);
+        kwargs.set_item("indent", 2)?;
+        kwargs.set_item("default", wrap_pyfunction!(json_default, py)?)?;
+        let text: String = json
+            .call_method("dumps", (job,), Some(&kwargs))?
+            .extract()?;
+        return Ok((text, DICT_SOURCE.to_owned()));
+    }
+    let is_path = job.is_instance_of::<PyString>() || job.hasattr("__fspath__")?;
+    if !is_path {
+        return Err(PyTypeError::new_err(format!(
+            "job: expected a dict with the keys of a job file, or the path of a job file (str or os.PathLike), got {}",
+            job.get_type().name()?
+        )));
+    }
+    let path: PathBuf = py.import("os")?.call_method1("fspath", (job,))?.extract()?;
+    let text =
+        without_gil(py, || t2spline_io::job::read_text(&path))?.map_err(|e| io_error(py, e))?;
+    Ok((text, path.display().to_string()))
+}
+
+/// The JSON form of what `json` cannot write by itself: numpy arrays and
+/// numpy numbers (by their `tolist`).
+#[pyfunction]
+fn json_default<'py>(value: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+    if value.hasattr("tolist")? {
+        value.call_method0("tolist")
+    } else {
+        Err(PyTypeError::new_err(format!(
+            "job: a value of type {} has no form in a job file",
+            value.get_type().name()?
+        )))
+    }
+}
+
+/// A validated job from its text, with the problems of the job file as a
+/// `JobError`.
+pub(crate) fn parse(py: Python<'_>, text: &str, source: &str) -> PyResult<Job> {
+    without_gil(py, || t2spline_io::parse_job(text, source))?.map_err(|e| io_error(py, e))
+}
+
+/// The settings of a run, each from its keyword or else from the job.
+///
+/// # Errors
+/// `JobError` when neither gives alpha (placed at the job's top level, as
+/// `t2spline run` places it); `ValueError` naming the keyword whose value
+/// breaks its rule.
+fn settings(
+    py: Python<'_>,
+    job: &Job,
+    (text, source): (&str, &str),
+    alpha: Option<f64>,
+    samples: Option<i64>,
+    derivatives: Option<i64>,
+) -> PyResult<Settings> {
+    let samples = match samples {
+        // The core takes counts as u64; a negative count gets its rule here,
+        // written as given.
+        Some(n) if n < 0 => {
+            let message = check_samples(0, &n.to_string()).expect_err("0 samples are refused");
+            return Err(setting_error(Setting::Samples, &message));
+        }
+        other => other.map(i64::unsigned_abs),
+    };
+    let overrides = Overrides {
+        alpha,
+        samples,
+        derivatives,
+    };
+    job.settings(&overrides).map_err(|e| match e {
+        t2spline::Error::MissingAlpha => job_error(
+            py,
+            t2spline_io::Error::Invalid {
+                file: source.to_owned(),
+                problems: vec![Problem {
+                    line_column: Some(locate(text, "alpha")),
+                    message: "alpha: missing: give it in the job or as alpha=".to_owned(),
+                }],
+            }
+            .lines(),
+        ),
+        other => core_error(other),
+    })
+}
+
+/// Runs a job as ``t2spline run`` does: every stage of Algorithm 1.1 at
+/// level alpha, every curve sampled at uniform parameters, and the distance
+/// between the crisp and the defuzzified curve (SPEC §7–§8).
+///
+/// The job goes through the same validator as job files
+/// (``t2spline_io::parse_job``) and the same ``Job.run`` as the command-line
+/// tool, so the numbers are those of ``t2spline run`` bit for bit.
+///
+/// Parameters
+/// ----------
+/// job : dict or str or os.PathLike
+///     A dict with the keys of a job file (SPEC §8; numpy arrays and numbers
+///     are accepted as values), or the path of a job file.
+/// alpha : float, optional
+///     The level alpha in ``[0, 1]``, in place of the job's.
+/// samples : int, optional
+///     The number of uniform parameters (2 … 1 000 000), in place of the
+///     job's (default 101).
+/// derivatives : int, optional
+///     With ``K``, also the derivatives of orders ``1 … K`` of the crisp and the
+///     defuzzified curve, and their arc lengths.
+///
+/// Returns
+/// -------
+/// dict
+///     Exactly the keys of ``t2spline run``'s JSON, in its order, with every
+///     array of numbers a ``float64`` numpy array: ``curves.params`` of shape
+///     ``(samples,)``, ``curves.crisp`` and every other curve of shape
+///     ``(samples, d)``, ``control_points.*`` of shape ``(n, d)``,
+///     ``curves.derivatives.*`` of shape ``(K, samples, d)``. Scalars are
+///     floats (``alpha``, ``error.max``) or ints (``order``). Where the JSON
+///     has ``null`` the dict has ``None`` (an alpha-cut curve of a lower layer
+///     when some number has no lower cut), and inside
+///     ``control_points.alpha_cut.*`` an absent lower end is NaN.
+///
+/// Raises
+/// ------
+/// JobError
+///     For a job that breaks the rules, with the lines ``t2spline run``
+///     prints (``file:line:column: place: rule``; a dict is named ``<dict>``
+///     and placed in its ``json.dumps(job, indent=2)`` text).
+/// ValueError
+///     For a keyword out of range, named: ``samples: samples = 1: at least 2
+///     are needed (both ends of the domain)``.
+/// OSError
+///     For a job file that cannot be read.
+///
+/// Examples
+/// --------
+/// >>> job = {
+/// ...     "degree": 1, "alpha": 0.5, "lower_height": 0.5, "samples": 3,
+/// ...     "points": [
+/// ...         {"x": {"crisp": 0, "upper": [-1, 2], "primary": [-0.5, 1], "lower": [-0.2, 0.3]},
+/// ...          "y": {"crisp": 0, "upper": [-1, 1], "primary": [-0.5, 0.5], "lower": [-0.2, 0.2]}},
+/// ...         {"x": {"crisp": 4, "upper": [3, 6], "primary": [3.5, 5], "lower": [3.8, 4.3]},
+/// ...          "y": {"crisp": 2, "upper": [1, 3], "primary": [1.5, 2.5], "lower": [1.8, 2.2]}},
+/// ...     ],
+/// ... }
+/// >>> result = run(job)
+/// >>> result["curves"]["params"]
+/// array([0. , 0.5, 1. ])
+/// >>> result["curves"]["crisp"].shape, result["curves"]["crisp"].dtype
+/// ((3, 2), dtype('float64'))
+/// >>> result["regime"]
+/// 'alpha <= h'
+/// >>> run(job, samples=1)
+/// Traceback (most recent call last):
+///     ...
+/// ValueError: samples: samples = 1: at least 2 are needed (both ends of the domain)
+#[pyfunction]
+#[pyo3(signature = (job, alpha=None, samples=None, derivatives=None))]
+pub(crate) fn run<'py>(
+    py: Python<'py>,
+    job: &Bound<'py, PyAny>,
+    alpha: Option<f64>,
+    samples: Option<i64>,
+    derivatives: Option<i64>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let (text, source) = job_text(job)?;
+    let parsed = parse(py, &text, &source)?;
+    let settings = settings(py, &parsed, (&text, &source), alpha, samples, derivatives)?;
+    let tree = without_gil(py, move || {
+        let output = parsed.run(&settings).map_err(Failure::from)?;
+        // The CLI's last guard before writing: every number finite.
+        t2spline_io::check_finite(&output).map_err(|e| Failure::Internal(e.to_string()))?;
+        to_value(&output).map_err(|e| Failure::Internal(e.to_string()))
+    })?;
+    match tree {
+        Ok(tree) => tree.into_py(py),
+        Err(Failure::Derivatives(message)) => Err(setting_error(Setting::Derivatives, &message)),
+        Err(Failure::Core(e)) => Err(core_error(e)),
+        Err(Failure::Internal(message)) => Err(internal_error(&message)),
+    }
+}
+
+/// Why a run gave no result.
+enum Failure {
+    /// Derivatives beyond the range of a float: the input and the order
+    /// asked for, so an error about `derivatives`.
+    Derivatives(String),
+    /// Another error of the core.
+    Core(t2spline::Error),
+    /// What a valid job never causes.
+    Internal(String),
+}
+
+impl From<t2spline::Error> for Failure {
+    fn from(e: t2spline::Error) -> Self {
+        match e {
+            t2spline::Error::DerivativeOverflow { .. }
+            | t2spline::Error::NotFinite {
+                what: "curves.arc_length.crisp" | "curves.arc_length.defuzzified",
+                ..
+            } => Failure::Derivatives(e.to_string()),
+            other => Failure::Core(other),
+        }
+    }
+}

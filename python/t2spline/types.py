@@ -1,0 +1,147 @@
+"""Types for annotating code that uses t2spline.
+
+The dicts that t2spline returns are plain dicts; these ``TypedDict``s name
+their keys for type checkers::
+
+    from t2spline.types import LayerSamples
+
+    def widest(samples: LayerSamples) -> float:
+        return float((samples["upper_right"] - samples["upper_left"]).max())
+
+Every array is a ``float64`` numpy array (``Floats``).
+"""
+
+from __future__ import annotations
+
+import os
+from typing import Any, Dict, List, Literal, Optional, TypedDict, Union
+
+import numpy as np
+from numpy.typing import NDArray
+
+__all__ = [
+    "AlphaCutCurves",
+    "AlphaCuts",
+    "Deviation",
+    "Distance",
+    "FitSummary",
+    "Floats",
+    "Job",
+    "LayerDeviations",
+    "LayerName",
+    "LayerSamples",
+    "SideName",
+    "StageSamples",
+    "Which",
+]
+
+#: A ``float64`` numpy array.
+Floats = NDArray[np.float64]
+
+# The choices are written as unions of one-value literals: the same type as
+# one literal of several values, and a union at run time too (which the stub
+# checker, mypy's stubtest, compares).
+
+#: The seven layers of SPEC §1, in order.
+LayerName = Union[
+    Literal["upper_left"], Literal["primary_left"], Literal["lower_left"], Literal["crisp"],
+    Literal["lower_right"], Literal["primary_right"], Literal["upper_right"],
+]
+
+#: A membership function of a fuzzy number.
+Which = Union[Literal["upper"], Literal["primary"], Literal["lower"]]
+
+#: A side of a type-reduced number.
+SideName = Union[Literal["left"], Literal["right"]]
+
+#: A job: a dict with the keys of a job file, or the path of one.
+Job = Union[Dict[str, Any], str, "os.PathLike[str]"]
+
+
+class LayerSamples(TypedDict):
+    """``FuzzyCurve.sample``: the parameters ``(m,)`` and each layer ``(m, d)``."""
+
+    params: Floats
+    upper_left: Floats
+    primary_left: Floats
+    lower_left: Floats
+    crisp: Floats
+    lower_right: Floats
+    primary_right: Floats
+    upper_right: Floats
+
+
+class AlphaCuts(TypedDict):
+    """``Solution.alpha_cut``: each layer's cut control points ``(n, d)``, NaN
+    where a lower cut is absent."""
+
+    upper_left: Floats
+    primary_left: Floats
+    lower_left: Floats
+    lower_right: Floats
+    primary_right: Floats
+    upper_right: Floats
+
+
+class AlphaCutCurves(TypedDict):
+    """The sampled alpha-cut curves ``(m, d)``; ``None`` for a lower layer that
+    some number does not have at this alpha."""
+
+    upper_left: Floats
+    primary_left: Floats
+    lower_left: Optional[Floats]
+    lower_right: Optional[Floats]
+    primary_right: Floats
+    upper_right: Floats
+
+
+class StageSamples(TypedDict):
+    """``Solution.sample``: the curves of stages 2–4 at the parameters."""
+
+    params: Floats
+    alpha_cut: AlphaCutCurves
+    type_reduced_left: Floats
+    type_reduced_right: Floats
+    defuzzified: Floats
+
+
+class Distance(TypedDict):
+    """``Solution.distance``: the largest distance (and its ``t``) and the root
+    mean square distance between the crisp and the defuzzified curve."""
+
+    max: float
+    max_at: float
+    rms: float
+
+
+class Deviation(TypedDict):
+    """The largest deviation of a fitted layer from its data, and where."""
+
+    max: float
+    point: int
+    axis: str
+
+
+class LayerDeviations(TypedDict):
+    """One ``Deviation`` per layer."""
+
+    upper_left: Deviation
+    primary_left: Deviation
+    lower_left: Deviation
+    crisp: Deviation
+    lower_right: Deviation
+    primary_right: Deviation
+    upper_right: Deviation
+
+
+class FitSummary(TypedDict):
+    """The summary of ``fit``."""
+
+    data_points: int
+    control_points: int
+    mode: str
+    condition: float
+    deviations: LayerDeviations
+    spread_deviations: LayerDeviations
+    independent_violations: List[str]
+    mixed_heights: Dict[str, float]
