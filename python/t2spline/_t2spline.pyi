@@ -41,7 +41,7 @@ class JobError(ValueError):
 def run(
     job: Job,
     alpha: Optional[float] = None,
-    samples: Optional[int] = None,
+    samples: Optional[Union[int, tuple[int, int]]] = None,
     derivatives: Optional[int] = None,
 ) -> dict[str, Any]:
     """Runs a job as `t2spline run` does; the result file's keys, numpy arrays."""

@@ -62,6 +62,15 @@ fn json_default<'py>(value: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
     }
 }
 
+/// `samples=`: one count, or `(u, v)` for a surface's grid.
+#[derive(Clone, Copy, Debug, FromPyObject)]
+pub(crate) enum SampleCounts {
+    /// One count (along a curve; both directions of a surface).
+    One(i64),
+    /// Counts along u and v.
+    Two(i64, i64),
+}
+
 /// A validated job from its text, with the problems of the job file as a
 /// `JobError`.
 pub(crate) fn parse(py: Python<'_>, text: &str, source: &str) -> PyResult<Job> {
@@ -79,17 +88,27 @@ fn settings(
     job: &Job,
     (text, source): (&str, &str),
     alpha: Option<f64>,
-    samples: Option<i64>,
+    samples: Option<SampleCounts>,
     derivatives: Option<i64>,
 ) -> PyResult<Settings> {
     let samples = match samples {
-        // The core takes counts as u64; a negative count gets its rule here,
-        // written as given.
-        Some(n) if n < 0 => {
-            let message = check_samples(0, &n.to_string()).expect_err("0 samples are refused");
-            return Err(setting_error(Setting::Samples, &message));
+        None => None,
+        Some(counts) => {
+            let counts = match counts {
+                SampleCounts::One(n) => vec![n],
+                SampleCounts::Two(u, v) => vec![u, v],
+            };
+            // The core takes counts as u64; a negative count gets its rule
+            // here, written as given.
+            if let Some(n) = counts.iter().find(|&&n| n < 0) {
+                let message = match check_samples(0, &n.to_string()) {
+                    Err(message) => message,
+                    Ok(_) => format!("samples = {n}: at least 2 are needed"),
+                };
+                return Err(setting_error(Setting::Samples, &message));
+            }
+            Some(counts.into_iter().map(i64::unsigned_abs).collect())
         }
-        other => other.map(i64::unsigned_abs),
     };
     let overrides = Overrides {
         alpha,
@@ -127,9 +146,10 @@ fn settings(
 ///     are accepted as values), or the path of a job file.
 /// alpha : float, optional
 ///     The level alpha in ``[0, 1]``, in place of the job's.
-/// samples : int, optional
+/// samples : int or (int, int), optional
 ///     The number of uniform parameters (2 … 1 000 000), in place of the
-///     job's (default 101).
+///     job's (default 101); for a surface job one count for both directions
+///     or ``(u, v)`` (default ``(21, 21)``, at most 1 000 000 grid points).
 /// derivatives : int, optional
 ///     With ``K``, also the derivatives of orders ``1 … K`` of the crisp and the
 ///     defuzzified curve, and their arc lengths.
@@ -187,7 +207,7 @@ pub(crate) fn run<'py>(
     py: Python<'py>,
     job: &Bound<'py, PyAny>,
     alpha: Option<f64>,
-    samples: Option<i64>,
+    samples: Option<SampleCounts>,
     derivatives: Option<i64>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let (text, source) = job_text(job)?;

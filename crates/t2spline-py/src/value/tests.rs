@@ -59,7 +59,7 @@ fn example_output(alpha: f64, derivatives: Option<i64>) -> t2spline::job::RunOut
     let job = t2spline_io::read_job(std::path::Path::new(path)).unwrap();
     let overrides = Overrides {
         alpha: Some(alpha),
-        samples: Some(11),
+        samples: Some(vec![11]),
         derivatives,
     };
     job.run(&job.settings(&overrides).unwrap()).unwrap()

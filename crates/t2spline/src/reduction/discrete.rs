@@ -148,7 +148,7 @@ impl<'a> SampledSet<'a> {
     /// [`Error::Sample`] for the first sample that is not finite, has `|x|`
     /// above [`MAX_MAGNITUDE`](crate::MAX_MAGNITUDE), an `x` less than the one
     /// before it, `lmf < 0`, `lmf > umf` or `umf` above
-    /// [`MAX_WEIGHT`](crate::MAX_WEIGHT); [`Error::ZeroUpperMembership`] if no
+    /// [`MAX_WEIGHT`]; [`Error::ZeroUpperMembership`] if no
     /// `umf` is greater than 0.
     ///
     /// # Examples
