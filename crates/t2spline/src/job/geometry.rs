@@ -1,0 +1,254 @@
+//! The exact curves of a run, named: what CAD files carry.
+//!
+//! A run samples its curves ([`Job::run`]); a CAD program wants the curves
+//! themselves. [`Job::geometry`] gives them as rational B-splines with their
+//! knots, weights and control points, exactly those whose samples `run`
+//! writes:
+//!
+//! | name | curve | source |
+//! |---|---|---|
+//! | `crisp` | the crisp curve | SPEC §7 stage 1 |
+//! | `defuzzified` | the crisp type-2 solution at the run's alpha | SPEC §7 stage 4 |
+//! | `upper_left`, …, `upper_right` | the six other layer curves, before the cut | SPEC §7 stage 1 |
+//!
+//! Points are lifted to three coordinates (`z = 0` for planar jobs), as every
+//! CAD format stores them. A curve whose knot vector has an interior knot of
+//! full multiplicity (order `k`) jumps there (SPEC §6); CAD formats allow at
+//! most degree `p = k − 1` inside the knot vector (ISO 10303-42's rule for
+//! `B_SPLINE_CURVE_WITH_KNOTS`), so such a curve is given as its continuous
+//! pieces, cut at the jumps without arithmetic: each piece keeps its control
+//! points, weights and knots bit for bit, and its parameters. At a jump the
+//! run's value is the right piece's (SPEC §6: from the right).
+
+use crate::error::Error;
+use crate::fuzzy::{Alpha, Layer};
+use crate::nurbs::{KnotVector, NurbsCurve};
+use crate::pipeline::FuzzyCurve;
+
+use super::{Job, ModelVisitor, Settings};
+
+/// One named curve of a run, as continuous pieces in parameter order.
+#[derive(Clone, Debug, PartialEq)]
+pub struct NamedCurve {
+    /// `crisp`, `defuzzified`, or a layer's name (`upper_left`, …).
+    pub name: &'static str,
+    /// The curve, cut at interior knots of full multiplicity; one piece when
+    /// it has none. Each piece keeps the curve's parameters.
+    pub pieces: Vec<NurbsCurve<3>>,
+}
+
+/// The exact geometry of a run: every curve, named, in 3-D.
+///
+/// Models with surfaces will add their named surfaces beside the curves; the
+/// struct is `non_exhaustive` so that this is no breaking change.
+#[derive(Clone, Debug, PartialEq)]
+#[non_exhaustive]
+pub struct Geometry {
+    /// The dimension of the job's points (2 or 3); planar jobs have `z = 0`.
+    pub dimension: usize,
+    /// `crisp`, `defuzzified`, then the six non-crisp layers in SPEC §1 order.
+    pub curves: Vec<NamedCurve>,
+}
+
+impl Geometry {
+    /// The same geometry with every piece clamped
+    /// ([`NurbsCurve::clamped`]: knot insertion at the ends of the domain,
+    /// so each piece starts and ends at its first and last control point);
+    /// the curves are unchanged to rounding.
+    #[must_use]
+    pub fn clamped(&self) -> Geometry {
+        Geometry {
+            dimension: self.dimension,
+            curves: self
+                .curves
+                .iter()
+                .map(|c| NamedCurve {
+                    name: c.name,
+                    pieces: c.pieces.iter().map(NurbsCurve::clamped).collect(),
+                })
+                .collect(),
+        }
+    }
+
+    /// The degree of the curves (all share it).
+    #[must_use]
+    pub fn degree(&self) -> usize {
+        self.curves
+            .first()
+            .and_then(|c| c.pieces.first())
+            .map_or(0, NurbsCurve::degree)
+    }
+}
+
+impl Job {
+    /// The exact curves of a run at `settings.alpha`: the crisp, the
+    /// defuzzified and the six other layer curves, named (see the module
+    /// docs). Their samples are the curves of [`Job::run`] with the same
+    /// settings.
+    ///
+    /// # Errors
+    /// None for a valid job (the pieces are cut from valid knot vectors);
+    /// the `Result` guards the construction of each piece.
+    ///
+    /// # Examples
+    /// ```
+    /// # use t2spline::job::{Job, Model, Overrides};
+    /// # use t2spline::{FuzzyCurve, Nt2Number, Nt2Point};
+    /// let n = |c: f64| Nt2Number::try_new(c, [c - 1.0, c + 2.0], [c - 0.5, c + 1.0], [c - 0.2, c + 0.3], 0.5);
+    /// let points = vec![Nt2Point::new([n(0.0)?, n(0.0)?]), Nt2Point::new([n(3.0)?, n(4.0)?])];
+    /// let job = Job::new(Model::Planar(FuzzyCurve::try_new(1, points, vec![1.0, 1.0], None)?));
+    /// let settings = job.settings(&Overrides { alpha: Some(0.5), ..Overrides::default() })?;
+    /// let g = job.geometry(&settings)?;
+    /// let names: Vec<_> = g.curves.iter().map(|c| c.name).collect();
+    /// assert_eq!(names, ["crisp", "defuzzified", "upper_left", "primary_left", "lower_left",
+    ///                    "lower_right", "primary_right", "upper_right"]);
+    /// assert_eq!(g.curves[0].pieces[0].eval(0.5)?, [1.5, 2.0, 0.0]);
+    /// # Ok::<(), t2spline::Error>(())
+    /// ```
+    pub fn geometry(&self, settings: &Settings) -> Result<Geometry, Error> {
+        self.model.visit(Exact(settings.alpha))
+    }
+}
+
+/// [`Job::geometry`] for one kind of model.
+struct Exact(Alpha);
+
+impl ModelVisitor for Exact {
+    type Output = Result<Geometry, Error>;
+
+    fn curve<const D: usize>(self, curve: &FuzzyCurve<D>) -> Self::Output {
+        let mut named = vec![
+            ("crisp", curve.crisp_curve()),
+            ("defuzzified", curve.solve(self.0).defuzzified_curve()),
+        ];
+        named.extend(
+            Layer::ALL
+                .into_iter()
+                .filter(|&l| l != Layer::Crisp)
+                .map(|l| (l.name(), curve.layer_curve(l))),
+        );
+        let curves = named
+            .into_iter()
+            .map(|(name, c)| {
+                Ok(NamedCurve {
+                    name,
+                    pieces: continuous_pieces(&lift(&c)?)?,
+                })
+            })
+            .collect::<Result<_, Error>>()?;
+        Ok(Geometry {
+            dimension: D,
+            curves,
+        })
+    }
+}
+
+/// The curve with three coordinates: its own, then zeros.
+fn lift<const D: usize>(c: &NurbsCurve<D>) -> Result<NurbsCurve<3>, Error> {
+    let points = c
+        .control_points()
+        .iter()
+        .map(|p| std::array::from_fn(|i| p.get(i).copied().unwrap_or(0.0)))
+        .collect();
+    NurbsCurve::try_new(points, c.weights().to_vec(), c.knots().clone())
+}
+
+/// The curve cut at every interior knot of full multiplicity `k`.
+///
+/// ```text
+/// U = (u₀ … u_f−1, u, …, u (k times), u_f+k …),  P₀ … Pₙ₋₁
+/// left:  U[0 .. f + k],  P₀ … P_f−1      (clamped at its right end u)
+/// right: U[f ..],        P_f …           (clamped at its left end u)
+/// ```
+/// The basis functions of the left piece are those of the curve that vanish
+/// right of `u`, and conversely: no coefficient changes.
+fn continuous_pieces(c: &NurbsCurve<3>) -> Result<Vec<NurbsCurve<3>>, Error> {
+    let k = c.order();
+    let u = c.knots().as_slice();
+    let domain = c.domain();
+    let mut cuts = Vec::new();
+    let mut f = 0;
+    while f < u.len() {
+        let run = u[f..].iter().take_while(|&&v| v == u[f]).count();
+        if run == k && domain.start < u[f] && u[f] < domain.end {
+            cuts.push(f);
+        }
+        f += run;
+    }
+    if cuts.is_empty() {
+        return Ok(vec![c.clone()]);
+    }
+    let n = c.control_points().len();
+    let mut pieces = Vec::with_capacity(cuts.len() + 1);
+    let mut start = 0;
+    for end in cuts.into_iter().chain([n]) {
+        let knots = KnotVector::try_new(u[start..end + k].to_vec(), k - 1, end - start)?;
+        pieces.push(NurbsCurve::try_new(
+            c.control_points()[start..end].to_vec(),
+            c.weights()[start..end].to_vec(),
+            knots,
+        )?);
+        start = end;
+    }
+    Ok(pieces)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn curve(knots: Vec<f64>, degree: usize) -> NurbsCurve<3> {
+        let n = knots.len() - degree - 1;
+        let points = (0..n)
+            .map(|i| [i as f64, (i * i) as f64 * 0.5, -(i as f64)])
+            .collect();
+        let weights = (0..n).map(|i| 1.0 + (i % 3) as f64).collect();
+        NurbsCurve::try_new(
+            points,
+            weights,
+            KnotVector::try_new(knots, degree, n).unwrap(),
+        )
+        .unwrap()
+    }
+
+    #[test]
+    fn a_curve_without_jumps_is_one_piece_unchanged() {
+        let c = curve(vec![0.0, 0.5, 1.0, 2.0, 2.0, 3.0, 4.0, 5.0], 2);
+        assert_eq!(continuous_pieces(&c).unwrap(), vec![c]);
+    }
+
+    #[test]
+    fn jumps_cut_the_curve_into_pieces_that_agree_with_it() {
+        // Degree 2, unclamped, full multiplicity (3) at 2 and at 3.
+        let c = curve(
+            vec![0.0, 0.5, 1.0, 2.0, 2.0, 2.0, 2.5, 3.0, 3.0, 3.0, 3.5, 4.0, 4.5],
+            2,
+        );
+        let pieces = continuous_pieces(&c).unwrap();
+        assert_eq!(pieces.len(), 3);
+        let domains: Vec<_> = pieces
+            .iter()
+            .map(|p| (p.domain().start, p.domain().end))
+            .collect();
+        assert_eq!(domains, [(1.0, 2.0), (2.0, 3.0), (3.0, 3.5)]);
+        // Unclamped outer ends stay as they were.
+        assert_eq!(pieces[0].knots().as_slice()[..3], [0.0, 0.5, 1.0]);
+        for (i, piece) in pieces.iter().enumerate() {
+            let d = piece.domain();
+            for s in 0..=20 {
+                let t = d.lerp(f64::from(s) / 20.0);
+                // At a jump the curve takes the right piece's value.
+                if t == d.end && i + 1 < pieces.len() {
+                    continue;
+                }
+                assert_eq!(piece.eval(t).unwrap(), c.eval(t).unwrap(), "piece {i}, t = {t}");
+            }
+        }
+    }
+
+    #[test]
+    fn full_multiplicity_at_the_domain_ends_is_no_jump() {
+        let c = curve(vec![0.0, 0.0, 0.0, 1.0, 2.0, 2.0, 2.0], 2);
+        assert_eq!(continuous_pieces(&c).unwrap().len(), 1);
+    }
+}
