@@ -345,9 +345,15 @@ mod tests {
 
     #[test]
     fn bad_readings_name_their_station_and_coordinate() {
-        let stations = vec![vec![[0.0, 1.0], [1.0, 2.0]], vec![[0.0, f64::NAN], [1.0, 2.0]]];
+        let stations = vec![
+            vec![[0.0, 1.0], [1.0, 2.0]],
+            vec![[0.0, f64::NAN], [1.0, 2.0]],
+        ];
         let e = fuzzify(&stations, &FuzzifyRule::try_new(0.0, 0.5).unwrap()).unwrap_err();
-        assert_eq!(e.to_string(), "points[1].y: reading = NaN is not a finite number");
+        assert_eq!(
+            e.to_string(),
+            "points[1].y: reading = NaN is not a finite number"
+        );
         let stations = vec![vec![[0.0, 1.0], [1.0, 2.0]], vec![[0.0, 1.0]]];
         let e = fuzzify(&stations, &FuzzifyRule::try_new(0.0, 0.5).unwrap()).unwrap_err();
         assert_eq!(

@@ -221,7 +221,9 @@ mod tests {
     fn jumps_cut_the_curve_into_pieces_that_agree_with_it() {
         // Degree 2, unclamped, full multiplicity (3) at 2 and at 3.
         let c = curve(
-            vec![0.0, 0.5, 1.0, 2.0, 2.0, 2.0, 2.5, 3.0, 3.0, 3.0, 3.5, 4.0, 4.5],
+            vec![
+                0.0, 0.5, 1.0, 2.0, 2.0, 2.0, 2.5, 3.0, 3.0, 3.0, 3.5, 4.0, 4.5,
+            ],
             2,
         );
         let pieces = continuous_pieces(&c).unwrap();
@@ -241,7 +243,11 @@ mod tests {
                 if t == d.end && i + 1 < pieces.len() {
                     continue;
                 }
-                assert_eq!(piece.eval(t).unwrap(), c.eval(t).unwrap(), "piece {i}, t = {t}");
+                assert_eq!(
+                    piece.eval(t).unwrap(),
+                    c.eval(t).unwrap(),
+                    "piece {i}, t = {t}"
+                );
             }
         }
     }
