@@ -308,10 +308,15 @@ mod tests {
         let text = s.text();
         assert!(text.lines().all(|l| l.len() == 80), "{text}");
         assert!(text.contains("15H20260102.030405"), "{text}");
-        assert!(text
-            .lines()
-            .last()
-            .unwrap()
-            .starts_with("S      1G      1D      2P      1"));
+        let count = |letter: u8| text.lines().filter(|l| l.as_bytes()[72] == letter).count();
+        let terminate = format!(
+            "S{:>7}G{:>7}D{:>7}P{:>7}",
+            count(b'S'),
+            count(b'G'),
+            count(b'D'),
+            count(b'P')
+        );
+        assert_eq!((count(b'S'), count(b'D'), count(b'P')), (1, 2, 1));
+        assert!(text.lines().last().unwrap().starts_with(&terminate), "{text}");
     }
 }
