@@ -59,4 +59,4 @@ pub use finite::check_finite;
 pub use fit_data::FitData;
 pub use job::{job_json, parse_data, parse_job, read_data, read_job};
 pub use pretty::{to_json_pretty, write_json_pretty};
-pub use readings::{is_readings, parse_readings, read_readings, ReadingsFile, MAX_ROWS};
+pub use readings::{data_json, is_readings, parse_readings, read_readings, ReadingsFile, MAX_ROWS};

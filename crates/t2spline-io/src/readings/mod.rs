@@ -28,7 +28,10 @@
 //! The statistics that turn readings into fuzzy numbers are the core's
 //! ([`t2spline::fit::fuzzify`]); this module only reads.
 
+mod data;
 mod tokens;
+
+pub use data::data_json;
 
 use std::collections::HashMap;
 use std::path::Path;
@@ -51,6 +54,8 @@ pub struct ReadingsFile {
     pub source: String,
     /// The station names, in the order of their first row.
     pub stations: Vec<String>,
+    /// The line of each station's first row.
+    pub first_lines: Vec<usize>,
     /// The readings of every station, in that order.
     pub readings: Readings,
 }
@@ -178,9 +183,10 @@ pub fn parse_readings(text: &str, source: &str) -> Result<ReadingsFile, Error> {
     reader
         .finish()
         .map_err(invalid)
-        .map(|(stations, readings)| ReadingsFile {
+        .map(|(stations, first_lines, readings)| ReadingsFile {
             source: source.to_owned(),
             stations,
+            first_lines,
             readings,
         })
 }
@@ -341,7 +347,7 @@ impl Rows {
     }
 
     /// The stations and their readings, or every problem.
-    fn finish(mut self) -> Result<(Vec<String>, Readings), Vec<Problem>> {
+    fn finish(mut self) -> Result<(Vec<String>, Vec<usize>, Readings), Vec<Problem>> {
         for s in 0..self.names.len() {
             let count = self.rows[s];
             if count < MIN_READINGS && self.problems.len() <= MAX_PROBLEMS {
@@ -376,7 +382,7 @@ impl Rows {
         } else {
             Readings::Spatial(self.values)
         };
-        Ok((self.names, readings))
+        Ok((self.names, self.first_line, readings))
     }
 }
 
