@@ -1,0 +1,302 @@
+"""Reads `t2spline export` files back with software that is not ours and
+compares every curve with `t2spline run`'s samples.
+
+DXF is read by ezdxf, STEP and IGES by OpenCASCADE (cadquery-ocp), OBJ by the
+small reader below, written from the OBJ specification ("Free-form
+curve/surface attributes": `cstype rat bspline`, `deg`, `curv`, `parm u`).
+Every exported curve (crisp, defuzzified, six layers; each piece of a curve
+that jumps) is evaluated at the parameters of `t2spline run` and must agree
+with the run's sampled curve to 1e-9, relative to the largest coordinate of
+the job's curves. Names are checked too: DXF layers, STEP entity names, IGES
+name properties, OBJ groups.
+
+    python peer/cad/check_cad.py --bin target/release/t2spline --cases 60
+
+Cases: the shipped examples, and random jobs in 2-D and 3-D of degree 1-5
+with clamped, unclamped and repeated knots (interior multiplicities up to
+the degree, and of full multiplicity, where the curve jumps).
+"""
+
+import argparse
+import json
+import math
+import os
+import random
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+import ezdxf
+from OCP.BRepAdaptor import BRepAdaptor_Curve
+from OCP.GeomAbs import GeomAbs_BSplineCurve
+from OCP.IFSelect import IFSelect_RetDone
+from OCP.IGESControl import IGESControl_Reader
+from OCP.STEPControl import STEPControl_Reader
+from OCP.StepToGeom import StepToGeom
+from OCP.TopAbs import TopAbs_EDGE
+from OCP.TopExp import TopExp_Explorer
+from OCP.TopoDS import TopoDS
+
+NAMES = ["crisp", "defuzzified", "upper_left", "primary_left", "lower_left",
+         "lower_right", "primary_right", "upper_right"]
+TOLERANCE = 1e-9
+ROOT = Path(__file__).resolve().parents[2]
+
+
+# ---- evaluation: a piece is (start, end, f) with f(t) -> (x, y, z) ----------
+
+def pick(pieces, t):
+    """The piece whose domain holds t; at a jump the right one (t2spline's rule)."""
+    pieces = sorted(pieces, key=lambda p: p[0])
+    for i, (a, b, f) in enumerate(pieces):
+        if a <= t < b or (i == len(pieces) - 1 and a <= t <= b):
+            return f
+    raise AssertionError(f"no piece holds t = {t}: {[(a, b) for a, b, _ in pieces]}")
+
+
+def read_dxf(path):
+    doc = ezdxf.readfile(path)
+    auditor = doc.audit()
+    assert not auditor.has_errors, [e.message for e in auditor.errors]
+    curves = {}
+    for e in doc.modelspace():
+        assert e.dxftype() == "SPLINE", e.dxftype()
+        spline = e.construction_tool()
+        p = spline.degree
+        # The file's knots give the domain; ezdxf evaluates on its own
+        # (normalized) knots, an affine map of them, which leaves the curve
+        # unchanged.
+        raw, own = list(e.knots), list(spline.knots())
+        assert len(raw) == len(own)
+        a, b = raw[p], raw[len(raw) - p - 1]
+        lo, hi = own[p], own[len(own) - p - 1]
+        f = (lambda s, a, b, lo, hi: lambda t: tuple(s.point(lo + (t - a) * (hi - lo) / (b - a))))(
+            spline, a, b, lo, hi)
+        curves.setdefault(e.dxf.layer, []).append((a, b, f))
+    return curves
+
+
+def ocp_edges(shape):
+    out = []
+    explorer = TopExp_Explorer(shape, TopAbs_EDGE)
+    while explorer.More():
+        edge = TopoDS.Edge(explorer.Current())
+        # The edge as a CAD program sees it: its curve, range and placement.
+        curve = BRepAdaptor_Curve(edge)
+        assert curve.GetType() == GeomAbs_BSplineCurve, curve.GetType()
+        assert curve.BSpline().IsRational() or curve.BSpline().Weight(1) == 1.0
+        f = (lambda c: lambda t: (lambda q: (q.X(), q.Y(), q.Z()))(c.Value(t)))(curve)
+        out.append((curve.FirstParameter(), curve.LastParameter(), f))
+        explorer.Next()
+    return out
+
+
+def read_step(path):
+    reader = STEPControl_Reader()
+    assert reader.ReadFile(str(path)) == IFSelect_RetDone
+    # The file as a CAD program opens it: one product, a wire frame of curves.
+    assert reader.TransferRoots() == 1
+    edges = len(ocp_edges(reader.OneShape()))
+    model = reader.Model()
+    curves = {}
+    for i in range(1, model.NbEntities() + 1):
+        entity = model.Value(i)
+        if entity.DynamicType().Name() != "StepGeom_BSplineCurveWithKnotsAndRationalBSplineCurve":
+            continue
+        # OCCT's own translation of the entity (the one its reader uses).
+        curve = StepToGeom.MakeBSplineCurve_s(entity)
+        f = (lambda c: lambda t: (lambda q: (q.X(), q.Y(), q.Z()))(c.Value(t)))(curve)
+        curves.setdefault(entity.Name().ToCString(), []).append(
+            (curve.FirstParameter(), curve.LastParameter(), f))
+    # OCCT may cut a curve at C0 knots into several edges, never fewer.
+    assert edges >= sum(map(len, curves.values())), edges
+    return curves
+
+
+def read_iges(path):
+    reader = IGESControl_Reader()
+    assert reader.ReadFile(str(path)) == IFSelect_RetDone
+    curves = {}
+    for i in range(1, reader.NbRootsForTransfer() + 1):
+        entity = reader.RootForTransfer(i)
+        assert entity.TypeNumber() == 126, entity.TypeNumber()
+        assert entity.HasName(), "no name property"
+        assert reader.TransferOneRoot(i)
+        # OCCT cuts a curve at C0 knots into several edges of one curve.
+        curves.setdefault(entity.NameValue().ToCString(), []).extend(
+            ocp_edges(reader.Shape(reader.NbShapes())))
+    return curves
+
+
+def read_obj(path):
+    """OBJ free-form curves: v x y z w; cstype rat bspline; deg p; curv u0 u1 i...; parm u ...; end."""
+    vertices, curves = [], {}
+    group, state = "default", {}
+    for raw in Path(path).read_text().splitlines():
+        words = raw.split("#", 1)[0].split()
+        if not words:
+            continue
+        key, args = words[0], words[1:]
+        if key == "v":
+            x, y, z = map(float, args[:3])
+            vertices.append((x, y, z, float(args[3]) if len(args) > 3 else 1.0))
+        elif key == "g":
+            group = args[0]
+        elif key == "cstype":
+            assert args == ["rat", "bspline"], args
+        elif key == "deg":
+            state["deg"] = int(args[0])
+        elif key == "curv":
+            state["range"] = (float(args[0]), float(args[1]))
+            state["points"] = [vertices[int(i) - 1 if int(i) > 0 else int(i)] for i in args[2:]]
+        elif key == "parm":
+            assert args[0] == "u"
+            state["knots"] = list(map(float, args[1:]))
+        elif key == "end":
+            p, knots, points = state["deg"], state["knots"], state["points"]
+            assert len(knots) == len(points) + p + 1
+            a, b = state["range"]
+            curves.setdefault(group, []).append(
+                (a, b, (lambda k, q, d: lambda t: de_boor(k, q, d, t))(knots, points, p)))
+            state = {}
+    return curves
+
+
+def de_boor(knots, points, p, t):
+    """A rational B-spline at t by de Boor's algorithm on (w·x, w·y, w·z, w)."""
+    n = len(points)
+    span = p
+    while span < n - 1 and knots[span + 1] <= t:
+        span += 1
+    while span > p and knots[span] == knots[span + 1]:
+        span -= 1
+    d = [[w * x, w * y, w * z, w] for x, y, z, w in points[span - p:span + 1]]
+    for r in range(1, p + 1):
+        for j in range(p, r - 1, -1):
+            i = span - p + j
+            den = knots[i + p - r + 1] - knots[i]
+            a = 0.0 if den == 0 else (t - knots[i]) / den
+            d[j] = [(1 - a) * u + a * v for u, v in zip(d[j - 1], d[j])]
+    x, y, z, w = d[p]
+    return (x / w, y / w, z / w)
+
+
+READERS = {"dxf": read_dxf, "step": read_step, "iges": read_iges, "obj": read_obj}
+
+
+# ---- jobs --------------------------------------------------------------------
+
+def number(rng, c):
+    left = sorted(rng.uniform(0, 1.5) * rng.choice([0, 1, 1]) for _ in range(3))
+    right = sorted(rng.uniform(0, 1.5) * rng.choice([0, 1, 1]) for _ in range(3))
+    return {"crisp": c, "upper": [c - left[2], c + right[2]],
+            "primary": [c - left[1], c + right[1]], "lower": [c - left[0], c + right[0]],
+            "lower_height": rng.choice([1.0, rng.uniform(0.2, 1.0)])}
+
+
+def knots(rng, n, p, kind):
+    """None (the default, clamped uniform) or a knot vector of the kind asked."""
+    k = p + 1
+    if kind == "clamped":
+        return None
+    if kind == "unclamped":
+        return sorted(rng.uniform(-3, 5) for _ in range(n + k))
+    # Interior multiplicities up to p; a "jump" adds one knot of full
+    # multiplicity k at 0.5, a sample parameter.
+    interior = n - k
+    values = [0.5] * k if kind == "jump" else []
+    used = {0.5}
+    while len(values) < interior:
+        v = round(rng.uniform(0.05, 0.95), 3)
+        if v in used:
+            continue
+        used.add(v)
+        values.extend([v] * min(rng.randint(1, p), interior - len(values)))
+    return [0.0] * k + sorted(values) + [1.0] * k
+
+
+def random_job(rng, case):
+    dim = 2 + case % 2
+    p = 1 + (case // 2) % 5
+    kind = ["clamped", "unclamped", "repeated", "jump"][(case // 10) % 4]
+    n = p + 1 + rng.randint(0, 6) + (p + 1 if kind == "jump" else 0)
+    axes = "xyz"[:dim]
+    walk = [0.0] * dim
+    points = []
+    for _ in range(n):
+        walk = [w + rng.uniform(-3, 3) for w in walk]
+        points.append({a: number(rng, walk[i]) for i, a in enumerate(axes)})
+    job = {"degree": p, "alpha": rng.uniform(0, 1), "samples": 201,
+           "weights": [rng.uniform(0.2, 5) for _ in range(n)], "points": points}
+    u = knots(rng, n, p, kind)
+    if u is not None:
+        job["knots"] = u
+    return job, f"random {dim}-D degree {p} {kind}"
+
+
+# ---- the check ---------------------------------------------------------------
+
+def check(binary, job_path, label, folder, worst):
+    run = json.loads(subprocess.run([binary, "run", job_path, "--samples", "201"],
+                                    check=True, capture_output=True, text=True).stdout)
+    curves = run["curves"]
+    reference = {"crisp": curves["crisp"], "defuzzified": curves["defuzzified"],
+                 **curves["layers"]}
+    scale = max(1.0, max(abs(x) for pts in reference.values() for pt in pts for x in pt))
+    dim = run["dimension"]
+    for fmt, reader in READERS.items():
+        out = Path(folder) / f"curves.{fmt}"
+        subprocess.run([binary, "export", job_path, "-o", str(out)], check=True,
+                       capture_output=True, env={**os.environ, "SOURCE_DATE_EPOCH": "0"})
+        exported = reader(out)
+        assert sorted(exported) == sorted(NAMES), (label, fmt, sorted(exported))
+        for name in NAMES:
+            for t, want in zip(curves["params"], reference[name]):
+                got = pick(exported[name], t)(t)
+                want = list(want) + [0.0] * (3 - dim)
+                error = math.dist(got, want) / scale
+                if error > worst[fmt][0]:
+                    worst[fmt] = (error, f"{label}: {name} at t = {t}")
+                assert error <= TOLERANCE, f"{label}, {fmt}, {name}, t = {t}: {got} vs {want}"
+        worst[fmt + " files"] = (worst.get(fmt + " files", (0, ""))[0] + 1, "")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--bin", required=True)
+    parser.add_argument("--cases", type=int, default=60)
+    parser.add_argument("--seed", type=int, default=20261201)
+    args = parser.parse_args()
+    rng = random.Random(args.seed)
+    worst = {fmt: (0.0, "") for fmt in READERS}
+    passed = failed = 0
+    with tempfile.TemporaryDirectory() as folder:
+        jobs = [(str(ROOT / "examples/paper-alg-1-1.json"), "examples/paper-alg-1-1.json"),
+                (str(ROOT / "fixtures/spiral-3d.json"), "fixtures/spiral-3d.json")]
+        beach = ROOT / "docs/fit-example/beach-job.json"
+        if beach.exists():
+            jobs.append((str(beach), "docs/fit-example/beach-job.json"))
+        for case in range(args.cases):
+            job, label = random_job(rng, case)
+            path = Path(folder) / f"job{case}.json"
+            path.write_text(json.dumps(job))
+            jobs.append((str(path), f"case {case} ({label})"))
+        for path, label in jobs:
+            try:
+                check(args.bin, path, label, folder, worst)
+                passed += 1
+            except (AssertionError, subprocess.CalledProcessError) as e:
+                failed += 1
+                detail = e.stderr if isinstance(e, subprocess.CalledProcessError) else repr(e)
+                print(f"FAIL {label}: {detail}", file=sys.stderr)
+    for fmt in READERS:
+        error, where = worst[fmt]
+        files = worst.get(fmt + " files", (0, ""))[0]
+        print(f"{fmt}: {files} files read back, largest relative difference {error:.2e} ({where})")
+    print(f"{passed} passed, {failed} failed")
+    sys.exit(1 if failed else 0)
+
+
+if __name__ == "__main__":
+    main()
