@@ -176,7 +176,7 @@ pub fn parse_readings(text: &str, source: &str) -> Result<ReadingsFile, Error> {
     let mut reader = Rows::new(delimiter, dimension);
     for row in rows {
         reader.row(row);
-        if reader.problems.len() > MAX_PROBLEMS {
+        if reader.problems.len() > MAX_PROBLEMS || reader.over_limit {
             break;
         }
     }
@@ -205,6 +205,8 @@ struct Rows {
     rows: Vec<usize>,
     current: Option<usize>,
     problems: Vec<Problem>,
+    /// Too many stations: reading stops there.
+    over_limit: bool,
 }
 
 impl Rows {
@@ -220,6 +222,7 @@ impl Rows {
             rows: Vec::new(),
             current: None,
             problems: Vec::new(),
+            over_limit: false,
         }
     }
 
@@ -311,6 +314,7 @@ impl Rows {
                                 shorten(name)
                             ),
                         );
+                        self.over_limit = true;
                         return;
                     }
                     self.index.insert(name.to_owned(), self.names.len());
