@@ -33,7 +33,8 @@ fn geometry(n: usize, degree: usize, knots: Option<Vec<f64>>) -> Geometry {
         job["knots"] = json!(u);
     }
     let job = parse_job(&job.to_string(), "job.json").unwrap();
-    job.geometry(&job.settings(&Overrides::default()).unwrap()).unwrap()
+    job.geometry(&job.settings(&Overrides::default()).unwrap())
+        .unwrap()
 }
 
 fn render(format: CadFormat, g: &Geometry) -> String {
@@ -56,7 +57,9 @@ fn dxf_has_a_spline_per_curve_on_its_layer() {
         .map(|p| (p[0].trim().parse().expect("a group code"), p[1]))
         .collect();
     assert_eq!(pairs.last(), Some(&(0, "EOF")));
-    let splines: Vec<usize> = (0..pairs.len()).filter(|&i| pairs[i] == (0, "SPLINE")).collect();
+    let splines: Vec<usize> = (0..pairs.len())
+        .filter(|&i| pairs[i] == (0, "SPLINE"))
+        .collect();
     assert_eq!(splines.len(), 8);
     for (&at, name) in splines.iter().zip(NAMES) {
         let entity: Vec<_> = pairs[at + 1..].iter().take_while(|p| p.0 != 0).collect();
@@ -66,14 +69,21 @@ fn dxf_has_a_spline_per_curve_on_its_layer() {
         assert_eq!(value(71), Some("2"));
         assert_eq!(value(72), Some("8"));
         assert_eq!(value(73), Some("5"));
-        assert_eq!(entity.iter().filter(|p| p.0 == 41).count(), 5, "a weight per control point");
+        assert_eq!(
+            entity.iter().filter(|p| p.0 == 41).count(),
+            5,
+            "a weight per control point"
+        );
         assert_eq!(entity.iter().filter(|p| p.0 == 40).count(), 8);
     }
     // Full precision: 0.1 + 0.2 is 0.30000000000000004.
     assert!(text.contains("\n 10\n0.30000000000000004\n"), "{text}");
     // Each curve has its layer in the LAYER table.
     for name in NAMES {
-        assert!(text.contains(&format!("\n  2\n{name}\n 70\n0\n 62\n")), "{name}");
+        assert!(
+            text.contains(&format!("\n  2\n{name}\n 70\n0\n 62\n")),
+            "{name}"
+        );
     }
 }
 
@@ -87,8 +97,15 @@ fn step_has_named_rational_curves_in_one_product() {
     assert!(text.contains("FILE_SCHEMA(('AUTOMOTIVE_DESIGN { 1 0 10303 214 1 1 1 1 }'));"));
     assert!(text.contains("'a beach''s profile, caf\\X2\\00E9\\X0\\'"));
     for name in NAMES {
-        assert_eq!(text.matches(&format!("REPRESENTATION_ITEM('{name}'))")).count(), 1, "{name}");
-        assert!(text.contains(&format!("PRESENTATION_LAYER_ASSIGNMENT('{name}','{name}',(#")));
+        assert_eq!(
+            text.matches(&format!("REPRESENTATION_ITEM('{name}'))"))
+                .count(),
+            1,
+            "{name}"
+        );
+        assert!(text.contains(&format!(
+            "PRESENTATION_LAYER_ASSIGNMENT('{name}','{name}',(#"
+        )));
     }
     assert!(text.contains("B_SPLINE_CURVE_WITH_KNOTS((3,1,1,3),(0.0,0.3333333333333333,0.6666666666666666,1.0),.UNSPECIFIED.)"));
     assert!(text.contains("CARTESIAN_POINT('',(0.30000000000000004,"));
@@ -121,7 +138,10 @@ fn iges_has_80_column_records_and_named_entities_126() {
     assert_eq!(types.iter().filter(|t| **t == "126").count(), 8);
     assert_eq!(types.iter().filter(|t| **t == "406").count(), 8);
     for name in NAMES {
-        assert!(text.contains(&format!("406,1,{}H{name};", name.len())), "{name}");
+        assert!(
+            text.contains(&format!("406,1,{}H{name};", name.len())),
+            "{name}"
+        );
     }
     // Sequence numbers count up in every section.
     for letter in ["S", "G", "D", "P"] {
@@ -153,15 +173,28 @@ fn unclamped_curves_are_kept_where_the_format_allows() {
     let u = vec![-1.0, -0.5, 0.0, 0.25, 1.0, 1.5, 2.0, 3.0];
     let g = geometry(5, 2, Some(u));
     let step = render(CadFormat::Step, &g);
-    assert!(step.contains("B_SPLINE_CURVE_WITH_KNOTS((1,1,1,1,1,1,1,1),(-1.0,-0.5,0.0,0.25,1.0,1.5,2.0,3.0),"));
+    assert!(step.contains(
+        "B_SPLINE_CURVE_WITH_KNOTS((1,1,1,1,1,1,1,1),(-1.0,-0.5,0.0,0.25,1.0,1.5,2.0,3.0),"
+    ));
     let obj = render(CadFormat::Obj, &g);
-    assert!(obj.contains("curv 0.0 1.5 ") && obj.contains("parm u -1.0 -0.5 0.0 0.25 1.0 1.5 2.0 3.0\n"));
+    assert!(
+        obj.contains("curv 0.0 1.5 ")
+            && obj.contains("parm u -1.0 -0.5 0.0 0.25 1.0 1.5 2.0 3.0\n")
+    );
     let iges = render(CadFormat::Iges, &g);
-    assert!(iges.contains("-1.0,-0.5,0.0,0.25,1.0,1.5,2.0,3.0,"), "{iges}");
+    assert!(
+        iges.contains("-1.0,-0.5,0.0,0.25,1.0,1.5,2.0,3.0,"),
+        "{iges}"
+    );
     // DXF gets the same curve clamped to its domain [0, 1.5].
     assert!(CadFormat::Dxf.clamps());
     let dxf = render(CadFormat::Dxf, &g.clamped());
-    assert!(dxf.contains(" 40\n0.0\n 40\n0.0\n 40\n0.0\n 40\n0.25\n 40\n1.0\n 40\n1.5\n 40\n1.5\n 40\n1.5\n"), "{dxf}");
+    assert!(
+        dxf.contains(
+            " 40\n0.0\n 40\n0.0\n 40\n0.0\n 40\n0.25\n 40\n1.0\n 40\n1.5\n 40\n1.5\n 40\n1.5\n"
+        ),
+        "{dxf}"
+    );
 }
 
 #[test]
@@ -182,7 +215,11 @@ fn jumps_make_pieces_under_one_name() {
 #[test]
 fn degree_0_is_refused() {
     let g = geometry(3, 0, None);
-    let meta = CadMeta { name: "a.step".into(), description: None, timestamp: "2026-01-01T00:00:00".into() };
+    let meta = CadMeta {
+        name: "a.step".into(),
+        description: None,
+        timestamp: "2026-01-01T00:00:00".into(),
+    };
     let e = render_cad(CadFormat::Step, &g, &meta, "job.json").unwrap_err();
     assert_eq!(
         e.to_string(),

@@ -57,14 +57,19 @@ fn headers_are_checked() {
 #[test]
 fn spreadsheet_dialects_read_the_same() {
     let plain = "station,x,y\nA,1.5,2\nA,2.5,-3\nB,4,5\nB,6,7\n";
-    let excel = "\u{feff}\"station\";\"x\";\"y\"\r\n\"A\";1,5;2\r\nA;\"2,5\";-3\r\n\r\nB;4;5\r\nB;6;7\r\n";
+    let excel =
+        "\u{feff}\"station\";\"x\";\"y\"\r\n\"A\";1,5;2\r\nA;\"2,5\";-3\r\n\r\nB;4;5\r\nB;6;7\r\n";
     let a = parse_readings(plain, "a.csv").unwrap();
     let b = parse_readings(excel, "b.csv").unwrap();
     assert_eq!(a.readings, b.readings);
     assert_eq!(a.stations, ["A", "B"]);
     assert_eq!(b.first_lines, [2, 5]);
     // A station name may hold the separator when quoted.
-    let q = parse_readings("station,x,y\n\"dune, crest\",0,1\n\"dune, crest\",1,2\n", "q.csv").unwrap();
+    let q = parse_readings(
+        "station,x,y\n\"dune, crest\",0,1\n\"dune, crest\",1,2\n",
+        "q.csv",
+    )
+    .unwrap();
     assert_eq!(q.stations, ["dune, crest"]);
     assert_eq!(
         lines("station,x,y\n\"A,1,2\n"),
@@ -78,7 +83,10 @@ fn limits_are_checked_before_rows_are_stored() {
     let text = "\n".repeat(MAX_ROWS + 2);
     assert_eq!(
         lines(&text),
-        [format!("r.csv: {} lines: more than the limit of {MAX_ROWS} readings", MAX_ROWS + 2)]
+        [format!(
+            "r.csv: {} lines: more than the limit of {MAX_ROWS} readings",
+            MAX_ROWS + 2
+        )]
     );
     // Stations: at most as many as control points.
     let mut text = String::from("station,x,y\n");
@@ -108,7 +116,10 @@ fn problems_are_capped() {
 /// (printed with `repr`).
 #[test]
 fn the_shipped_example_matches_numpy() {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/beach-readings.csv");
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../examples/beach-readings.csv"
+    );
     let file = t2spline_io::read_readings(std::path::Path::new(path)).unwrap();
     assert_eq!((file.stations.len(), file.readings.readings()), (13, 260));
     let rule = FuzzifyRule::try_new(0.02, 0.5).unwrap();
@@ -117,14 +128,32 @@ fn the_shipped_example_matches_numpy() {
     };
     let x = points[0].coords()[0];
     let y = points[0].coords()[1];
-    let numpy_x = [-0.18109999999999998, -0.11775000000000001, 0.026500000000000003, 0.0695, 0.16640000000000013];
+    let numpy_x = [
+        -0.18109999999999998,
+        -0.11775000000000001,
+        0.026500000000000003,
+        0.0695,
+        0.16640000000000013,
+    ];
     let numpy_y = [5.8955, 5.92775, 5.9885, 6.04025, 6.049200000000001];
     for (n, numpy) in [(x, numpy_x), (y, numpy_y)] {
         assert_eq!(
-            [n.primary().left(), n.lower().left(), n.crisp(), n.lower().right(), n.primary().right()],
+            [
+                n.primary().left(),
+                n.lower().left(),
+                n.crisp(),
+                n.lower().right(),
+                n.primary().right()
+            ],
             numpy
         );
     }
-    assert_eq!((x.upper().left(), x.upper().right()), (-0.365, 0.40900000000000003));
-    assert_eq!((y.upper().left(), y.upper().right()), (5.688000000000001, 6.116));
+    assert_eq!(
+        (x.upper().left(), x.upper().right()),
+        (-0.365, 0.40900000000000003)
+    );
+    assert_eq!(
+        (y.upper().left(), y.upper().right()),
+        (5.688000000000001, 6.116)
+    );
 }

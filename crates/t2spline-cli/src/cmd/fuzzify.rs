@@ -30,7 +30,10 @@ pub(super) fn readings_data(
         options.lower_height.unwrap_or(DEFAULT_LOWER_HEIGHT),
     )
     .map_err(|e| OptionError {
-        option: if options.tolerance.is_some_and(|t| !(t >= 0.0 && t <= t2spline::MAX_MAGNITUDE)) {
+        option: if options
+            .tolerance
+            .is_some_and(|t| !(t >= 0.0 && t <= t2spline::MAX_MAGNITUDE))
+        {
             "--tolerance"
         } else {
             "--lower-height"

@@ -317,6 +317,9 @@ mod tests {
             count(b'P')
         );
         assert_eq!((count(b'S'), count(b'D'), count(b'P')), (1, 2, 1));
-        assert!(text.lines().last().unwrap().starts_with(&terminate), "{text}");
+        assert!(
+            text.lines().last().unwrap().starts_with(&terminate),
+            "{text}"
+        );
     }
 }
