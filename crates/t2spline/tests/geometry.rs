@@ -60,14 +60,13 @@ fn agrees(job: &Job, geometry: &Geometry, tolerance: f64) -> Result<(), TestCase
         }
         for (i, &t) in curves.params.iter().enumerate() {
             let got = eval(&curve.pieces, t);
-            for axis in 0..3 {
+            for (axis, &value) in got.iter().enumerate() {
                 let expected = want.coord(axis).get(i).copied().unwrap_or(0.0);
                 let scale = 1.0 + expected.abs();
                 prop_assert!(
-                    (got[axis] - expected).abs() <= tolerance * scale,
-                    "{} at t = {t}, axis {axis}: {} vs {expected}",
-                    curve.name,
-                    got[axis]
+                    (value - expected).abs() <= tolerance * scale,
+                    "{} at t = {t}, axis {axis}: {value} vs {expected}",
+                    curve.name
                 );
             }
         }

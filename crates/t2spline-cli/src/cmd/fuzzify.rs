@@ -30,13 +30,11 @@ pub(super) fn readings_data(
         options.lower_height.unwrap_or(DEFAULT_LOWER_HEIGHT),
     )
     .map_err(|e| OptionError {
-        option: if options
-            .tolerance
-            .is_some_and(|t| !(t >= 0.0 && t <= t2spline::MAX_MAGNITUDE))
-        {
-            "--tolerance"
-        } else {
-            "--lower-height"
+        option: match e {
+            t2spline::Error::OutOfRange {
+                what: "tolerance", ..
+            } => "--tolerance",
+            _ => "--lower-height",
         },
         message: e.to_string(),
     })?;
