@@ -51,10 +51,10 @@ pub struct RunArgs {
     /// The level alpha in [0, 1]; overrides the job file.
     #[arg(long, value_name = "A", allow_negative_numbers = true)]
     pub alpha: Option<f64>,
-    /// Number of uniform parameters to sample the curves at (at least 2);
-    /// overrides the job file.
-    #[arg(long, value_name = "N")]
-    pub samples: Option<u64>,
+    /// Number of uniform parameters to sample the curves at (at least 2); for
+    /// a surface `U,V` (or `N` for both directions); overrides the job file.
+    #[arg(long, value_name = "N|U,V", value_delimiter = ',', num_args = 1)]
+    pub samples: Option<Vec<u64>>,
     /// Also write the sampled curves as CSV files (one per curve family) into
     /// this folder, creating it if needed.
     #[arg(long, value_name = "DIR")]
@@ -241,8 +241,10 @@ pub struct ExportArgs {
 #[derive(Debug, Args)]
 pub struct BenchArgs {
     /// What to time: `crisp` (the crisp curve), `fuzzy` (all seven layer
-    /// curves), `sweep` (stages 1–4 at 11 alpha levels, every curve), or `all`.
-    #[arg(long, value_name = "CASE", default_value = "all", value_parser = ["crisp", "fuzzy", "sweep", "all"])]
+    /// curves), `sweep` (stages 1–4 at 11 alpha levels, every curve),
+    /// `surface` (the crisp surface on a √N × √N grid), `surface-fuzzy` (all
+    /// seven layer surfaces on that grid), or `all`.
+    #[arg(long, value_name = "CASE", default_value = "all", value_parser = ["crisp", "fuzzy", "sweep", "surface", "surface-fuzzy", "all"])]
     pub case: String,
     /// Parameter values per run (uniform over the domain).
     #[arg(long, value_name = "N", default_value_t = 1_000_000)]
@@ -250,8 +252,10 @@ pub struct BenchArgs {
     /// Threads the sampling engine may use (default: one per core).
     #[arg(long, value_name = "T")]
     pub threads: Option<u64>,
-    /// Time this job's curve instead of the built-in one (degree 3, ten points).
-    #[arg(long, value_name = "JOB.json")]
+    /// Time this job's curve or surface instead of the built-in ones (a
+    /// curve of degree 3 with ten points; a bicubic 8 × 8 surface); with
+    /// `all`, only the cases of the job's kind run.
+    #[arg(long, visible_alias = "job", value_name = "JOB.json")]
     pub curve: Option<PathBuf>,
     /// Write every run into the output arrays of the previous one instead of
     /// fresh ones (times evaluation and stores without the page faults of new

@@ -56,9 +56,13 @@ fn all_cases_print_one_line_each() {
     let (code, out, err) = bench(&["--points", "2000", "--threads", "1"]);
     assert_eq!((code, err.as_str()), (0, ""));
     let lines: Vec<&str> = out.lines().collect();
-    assert_eq!(lines.len(), 3, "{out}");
+    assert_eq!(lines.len(), 5, "{out}");
     for (line, case) in lines.iter().zip(["crisp", "fuzzy", "sweep"]) {
         check_line(line, case, 2000, 1);
+    }
+    // Surfaces on the square grid nearest 2000 points: 45 × 45.
+    for (line, case) in lines[3..].iter().zip(["surface", "surface-fuzzy"]) {
+        check_line(line, case, 2025, 1);
     }
 }
 

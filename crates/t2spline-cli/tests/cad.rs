@@ -282,6 +282,6 @@ fn export_failures_name_their_place_and_write_nothing() {
         .arg(&old)
         .assert()
         .code(2)
-        .stderr(predicate::str::contains("the curves have degree 0 (piecewise constant: a set of points), which DXF cannot hold as curves"));
+        .stderr(predicate::str::contains("the curves have degree 0 (piecewise constant: a set of points), which DXF cannot hold; export needs degree 1 or more"));
     assert_eq!(std::fs::read_to_string(&old).unwrap(), "old");
 }

@@ -88,7 +88,7 @@ fn library_result(job_file: &Path, alpha: Option<f64>, samples: Option<u64>) -> 
     let job = t2spline_io::read_job(job_file).unwrap();
     let overrides = Overrides {
         alpha,
-        samples,
+        samples: samples.map(|n| vec![n]),
         derivatives: None,
     };
     let result = job.run(&job.settings(&overrides).unwrap()).unwrap();
@@ -559,7 +559,7 @@ fn validate_a_good_file_says_ok() {
         .success()
         .stdout(predicate::str::contains("ok").and(predicate::str::ends_with("\n")))
         .stdout(predicate::str::contains(
-            "2-D, 4 points, order 3, alpha 0.8, 101 samples",
+            "2-D curve, 4 control points, order 3, alpha 0.8, 101 samples",
         ))
         .stderr("");
     let dir = tempfile::tempdir().unwrap();
@@ -569,7 +569,7 @@ fn validate_a_good_file_says_ok() {
         .assert()
         .success()
         .stdout(format!(
-            "{}: ok: 2-D, 3 points, order 2, alpha not set, 5 samples\n",
+            "{}: ok: 2-D curve, 3 control points, order 2, alpha not set, 5 samples\n",
             job.display()
         ));
 }
@@ -718,7 +718,7 @@ fn stdin_can_be_written_by_a_pipe_too() {
     assert_eq!(out.status.code(), Some(0));
     assert_eq!(
         String::from_utf8(out.stdout).unwrap(),
-        "<stdin>: ok: 2-D, 4 points, order 3, alpha 0.8, 101 samples\n"
+        "<stdin>: ok: 2-D curve, 4 control points, order 3, alpha 0.8, 101 samples\n"
     );
 }
 

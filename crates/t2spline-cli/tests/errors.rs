@@ -346,3 +346,48 @@ fn a_missing_alpha_is_placed_at_the_top_level_object() {
         "t2spline: <stdin>:3:3: alpha: missing: give it in the job file or with --alpha\n"
     );
 }
+
+#[test]
+fn hostile_file_names_are_printed_escaped() {
+    let dir = tempfile::tempdir().unwrap();
+    // A name that would set the terminal's title and clear the screen.
+    let name = dir.path().join("\u{1b}]0;pwned\u{7}\u{1b}[2J.json");
+    let (code, _, stderr) = run(&["run", s(&name)]);
+    assert_eq!(code, 3, "{stderr}");
+    assert!(
+        stderr.contains("\\u001b]0;pwned\\u0007\\u001b[2J.json: cannot read"),
+        "{stderr}"
+    );
+    assert!(
+        !stderr.contains('\u{1b}') && !stderr.contains('\u{7}'),
+        "{stderr:?}"
+    );
+    // The same name for a file that exists but is invalid.
+    std::fs::write(&name, "{\"order\": 2}").unwrap();
+    let (code, _, stderr) = run(&["validate", s(&name)]);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(!stderr.contains('\u{1b}'), "{stderr:?}");
+    assert!(stderr.contains("\\u001b]0;pwned"), "{stderr}");
+}
+
+#[test]
+fn a_csv_file_given_for_a_job_is_named_as_csv() {
+    let dir = tempfile::tempdir().unwrap();
+    let csv = write(
+        dir.path(),
+        "readings.csv",
+        "station,x,y\n1,0.5,2.0\n1,0.6,2.1\n",
+    );
+    let (code, _, stderr) = run(&["run", s(&csv)]);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(
+        stderr.contains("readings.csv:1:1: JSON syntax error"),
+        "{stderr}"
+    );
+    assert!(stderr.contains("this looks like CSV"), "{stderr}");
+    assert!(stderr.contains("t2spline fuzzify READINGS.csv"), "{stderr}");
+    // A JSON file with a plain syntax error gets no such hint.
+    let broken = write(dir.path(), "broken.json", "{\"order\": 2,, }");
+    let (_, _, stderr) = run(&["run", s(&broken)]);
+    assert!(!stderr.contains("CSV"), "{stderr}");
+}

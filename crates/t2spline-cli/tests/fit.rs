@@ -58,7 +58,7 @@ fn fits_the_example_into_a_job_that_runs() {
         .assert()
         .code(0)
         .stdout(predicate::str::contains(
-            "ok: 2-D, 13 points, order 4, alpha 0.5, 101 samples",
+            "ok: 2-D curve, 13 control points, order 4, alpha 0.5, 101 samples",
         ));
     t2spline().arg("run").arg(&job).assert().code(0);
 }

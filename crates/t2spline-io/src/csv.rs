@@ -3,7 +3,7 @@
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
-use t2spline::job::{Points, RunOutput};
+use t2spline::job::{Parameters, Points, RunOutput};
 use t2spline::pipeline::euclidean_norm;
 use t2spline::{Layer, Num};
 
@@ -33,10 +33,11 @@ pub const CSV_FILES: [(&str, &str); 4] = [
 /// One named column group: a curve sampled at the result's parameters.
 type Family<'a> = Vec<(String, &'a Points)>;
 
-/// One CSV file of a result: `t`, then every curve's coordinates, then an
-/// optional extra column.
+/// One CSV file of a result: `t` (a surface: `u, v`, one row per grid point,
+/// `v` fastest), then every curve's coordinates, then an optional extra
+/// column.
 struct Table<'a> {
-    params: &'a [f64],
+    params: &'a Parameters,
     family: Family<'a>,
     dims: usize,
     extra: Option<(&'static str, Vec<f64>)>,
@@ -46,15 +47,25 @@ impl Table<'_> {
     fn write(&self, out: &mut dyn Write) -> std::io::Result<()> {
         let axes = ["x", "y", "z"];
         let mut w = csv::Writer::from_writer(out);
-        let mut header = vec!["t".to_owned()];
+        let mut header: Vec<String> = match self.params {
+            Parameters::Along(_) => vec!["t".to_owned()],
+            Parameters::Grid { .. } => vec!["u".to_owned(), "v".to_owned()],
+        };
         for (name, _) in &self.family {
             header.extend(axes[..self.dims].iter().map(|a| format!("{name}_{a}")));
         }
         header.extend(self.extra.as_ref().map(|(name, _)| (*name).to_owned()));
         w.write_record(&header)?;
         let number = |x: &f64| Num(*x).to_string();
-        for (i, t) in self.params.iter().enumerate() {
-            let mut row = vec![number(t)];
+        let index: Box<dyn Iterator<Item = Vec<&f64>>> = match self.params {
+            Parameters::Along(t) => Box::new(t.iter().map(|t| vec![t])),
+            Parameters::Grid { u, v } => Box::new(
+                u.iter()
+                    .flat_map(move |a| v.iter().map(move |b| vec![a, b])),
+            ),
+        };
+        for (i, at) in index.enumerate() {
+            let mut row: Vec<String> = at.into_iter().map(number).collect();
             for (_, points) in &self.family {
                 row.extend(points.coords().iter().map(|c| number(&c[i])));
             }
@@ -68,7 +79,7 @@ impl Table<'_> {
 /// The tables of a result, in the order of [`CSV_FILES`], then
 /// [`DERIVATIVES_CSV`] when the result has derivatives.
 fn tables(result: &RunOutput) -> Vec<(&'static str, Table<'_>)> {
-    let c = &result.curves;
+    let c = &result.samples;
     let layer = |l: Layer| c.layer(l);
     let stage1: Family = Layer::ALL
         .iter()
@@ -93,7 +104,7 @@ fn tables(result: &RunOutput) -> Vec<(&'static str, Table<'_>)> {
     ];
     // Scaled, so that a distance near 1e-170 does not underflow when squared.
     let mut d = vec![0.0; result.dimension];
-    let distance: Vec<f64> = (0..c.params.len())
+    let distance: Vec<f64> = (0..c.params.count())
         .map(|i| {
             for ((d, a), b) in d
                 .iter_mut()

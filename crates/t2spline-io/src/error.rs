@@ -1,5 +1,7 @@
 //! The one error type of the I/O crate.
 
+use crate::printable;
+
 use std::fmt;
 use std::path::PathBuf;
 
@@ -41,7 +43,7 @@ impl fmt::Display for Problem {
 #[non_exhaustive]
 pub enum Error {
     /// The job file could not be read.
-    #[error("{}: cannot read", path.display())]
+    #[error("{}: cannot read", printable(&path.display().to_string()))]
     Read {
         /// The file.
         path: PathBuf,
@@ -59,7 +61,7 @@ pub enum Error {
     },
     /// An output file or folder could not be written; nothing was left
     /// half-written.
-    #[error("{}: cannot write", path.display())]
+    #[error("{}: cannot write", printable(&path.display().to_string()))]
     Write {
         /// The file or folder.
         path: PathBuf,
@@ -84,6 +86,7 @@ struct Invalid;
 
 impl Invalid {
     fn lines(file: &str, problems: &[Problem]) -> String {
+        let file = printable(file);
         problems
             .iter()
             .map(|p| match p.line_column {

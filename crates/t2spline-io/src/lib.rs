@@ -49,6 +49,7 @@ mod finite;
 mod fit_data;
 pub mod job;
 mod pretty;
+mod printable;
 mod readings;
 
 pub use crate::atomic::{write_all_atomic, write_atomic, Staged};
@@ -59,4 +60,5 @@ pub use finite::check_finite;
 pub use fit_data::FitData;
 pub use job::{job_json, parse_data, parse_job, read_data, read_job};
 pub use pretty::{to_json_pretty, write_json_pretty};
+pub use printable::printable;
 pub use readings::{data_json, is_readings, parse_readings, read_readings, ReadingsFile, MAX_ROWS};

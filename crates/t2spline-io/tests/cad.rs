@@ -223,6 +223,6 @@ fn degree_0_is_refused() {
     let e = render_cad(CadFormat::Step, &g, &meta, "job.json").unwrap_err();
     assert_eq!(
         e.to_string(),
-        "job.json: the curves have degree 0 (piecewise constant: a set of points), which STEP cannot hold as curves; export needs degree 1 or more"
+        "job.json: the curves have degree 0 (piecewise constant: a set of points), which STEP cannot hold; export needs degree 1 or more"
     );
 }

@@ -3,7 +3,7 @@
 
 use proptest::prelude::*;
 use serde_json::json;
-use t2spline::job::{Job, Model, Points, RunOutput, Settings};
+use t2spline::job::{Job, Model, Points, RunOutput, Samples, Settings};
 use t2spline::{strategies, Alpha, Layer};
 use t2spline_io::{render_csv, write_csv, CSV_FILES};
 
@@ -11,7 +11,7 @@ use t2spline_io::{render_csv, write_csv, CSV_FILES};
 fn compute(job: &Job, alpha: Alpha, samples: usize) -> RunOutput {
     job.run(&Settings {
         alpha,
-        samples,
+        samples: Samples::Along(samples),
         derivatives: None,
     })
     .unwrap()
@@ -220,11 +220,11 @@ fn assert_curve(header: &[String], rows: &[Vec<String>], name: &str, points: &Po
 /// Every number of every file equals the result's value, bit for bit.
 fn check_values(r: &RunOutput) {
     let files = render_csv(r);
-    let c = &r.curves;
+    let c = &r.samples;
     let params_equal = |header: &[String], rows: &[Vec<String>]| {
         let t = column(header, rows, "t");
         t.iter()
-            .zip(&c.params)
+            .zip(c.params.along())
             .all(|(a, b)| a.to_bits() == b.to_bits())
     };
 
@@ -295,7 +295,7 @@ proptest! {
         a in 0.0..=1.0f64,
         samples in 2usize..30,
     ) {
-        let job = Job { description: None, alpha: None, samples, model: curve };
+        let job = Job { description: None, alpha: None, samples: Samples::Along(samples), model: curve };
         check_values(&compute(&job, alpha(a), samples));
     }
 }

@@ -127,7 +127,7 @@ fn fitted_job_parses_back_and_carries_the_data_keys() {
         assert!(job_json["points"][0]["x"].get("lower_height").is_none());
         let text = to_json_pretty(&job_json);
         let job = t2spline_io::parse_job(&text, "job.json").unwrap();
-        assert_eq!(job.samples, 51);
+        assert_eq!(job.samples, t2spline::job::Samples::Along(51));
         assert_eq!(job.alpha.map(|a| a.get()), Some(0.7));
         // The numbers read back are exactly the fitted ones.
         let FuzzyData::Planar(points) = &data.points else {
@@ -288,4 +288,25 @@ proptest! {
         let job = t2spline_io::parse_job(&text, "job.json");
         prop_assert!(job.is_ok(), "{:?}", job.err().map(|e| e.lines()));
     }
+}
+
+#[test]
+fn order_errors_list_at_most_the_problem_limit() {
+    let data = parse(&profile()).unwrap();
+    let violations: Vec<OrderViolation> = (0..1500)
+        .map(|k| OrderViolation {
+            control_point: k,
+            axis: t2spline::Axis::X,
+            rule: "primary.left <= lower.left",
+            left: 1.0,
+            right: 0.5,
+        })
+        .collect();
+    let lines = data.order_error(&violations, "advice").lines();
+    let limit = t2spline_io::job::MAX_PROBLEMS;
+    // The count, `limit` violations, the rest counted, the advice.
+    assert_eq!(lines.len(), limit + 3, "{:?}", &lines[..3]);
+    assert!(lines[0].contains("at 1500 place(s)"), "{}", lines[0]);
+    assert_eq!(lines[limit + 1], "data.json: … and 500 more place(s)");
+    assert_eq!(lines[limit + 2], "data.json: advice");
 }

@@ -2,7 +2,7 @@
 //! naming the file, the place and the rule, and all problems at once.
 
 use serde_json::{json, Value};
-use t2spline::job::{Job, Model, DEFAULT_SAMPLES, MAX_SAMPLES};
+use t2spline::job::{Job, Model, Samples, DEFAULT_SAMPLES, MAX_SAMPLES};
 use t2spline::Alpha;
 
 // ---------------------------------------------------------------------------
@@ -124,7 +124,7 @@ fn defaults_apply_and_three_dimensional_points_are_read() {
         "points": [point3(0.0, 0.0, 0.0), point3(1.0, 1.0, 1.0), point3(2.0, 0.0, 3.0)]
     });
     let job = parse(&v).unwrap();
-    assert_eq!(job.samples, DEFAULT_SAMPLES);
+    assert_eq!(job.samples, Samples::Along(DEFAULT_SAMPLES));
     assert_eq!(job.alpha, None);
     assert_eq!(job.description, None);
     let Model::Spatial(c) = &job.model else {
@@ -349,7 +349,7 @@ fn a_whole_number_written_with_a_fraction_is_accepted() {
         panic!("expected 2-D")
     };
     assert_eq!(c.order(), 3);
-    assert_eq!(job.samples, 7);
+    assert_eq!(job.samples, Samples::Along(7));
 }
 
 #[test]
@@ -796,7 +796,7 @@ fn samples_are_a_whole_number_from_two_to_the_limit() {
         let v = with(|o| {
             o.insert("samples".into(), json!(n));
         });
-        assert_eq!(parse(&v).unwrap().samples, n);
+        assert_eq!(parse(&v).unwrap().samples, Samples::Along(n));
     }
 }
 

@@ -7,7 +7,7 @@ mod oracle;
 
 use proptest::prelude::*;
 use serde_json::{json, Value};
-use t2spline::job::Settings;
+use t2spline::job::{Samples, Settings};
 use t2spline::Alpha;
 use t2spline_io::job::{
     locate, read_text, read_text_from, MAX_ARRAY, MAX_FILE_BYTES, MAX_KEYS, MAX_NESTING, MAX_ORDER,
@@ -488,7 +488,7 @@ fn extreme_jobs_write_only_finite_numbers() {
                 let r = job
                     .run(&Settings {
                         alpha: Alpha::try_new(alpha).unwrap(),
-                        samples: 33,
+                        samples: Samples::Along(33),
                         derivatives: None,
                     })
                     .unwrap();
@@ -517,11 +517,11 @@ fn a_non_finite_result_is_refused_by_name() {
     let mut r = job
         .run(&Settings {
             alpha: Alpha::try_new(0.5).unwrap(),
-            samples: 5,
+            samples: Samples::Along(5),
             derivatives: None,
         })
         .unwrap();
-    r.curves.type_reduced.right.coord_mut(1)[3] = f64::INFINITY;
+    r.samples.type_reduced.right.coord_mut(1)[3] = f64::INFINITY;
     let e = check_finite(&r).unwrap_err();
     assert!(
         e.to_string().starts_with(

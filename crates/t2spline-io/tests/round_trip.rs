@@ -2,7 +2,7 @@
 //! through the validator, and a result through serde; every f64 exactly.
 
 use proptest::prelude::*;
-use t2spline::job::{Job, Model, Settings, MAX_SAMPLES};
+use t2spline::job::{Job, Model, Samples, Settings, MAX_SAMPLES};
 use t2spline::{strategies, Alpha, FuzzyCurve};
 use t2spline_io::to_json_pretty;
 
@@ -48,7 +48,7 @@ fn job<const D: usize>(model: impl Fn(FuzzyCurve<D>) -> Model) -> impl Strategy<
         .prop_map(move |(c, alpha, samples, description)| Job {
             description,
             alpha,
-            samples,
+            samples: Samples::Along(samples),
             model: model(c),
         })
 }
@@ -80,6 +80,7 @@ proptest! {
         samples in 2usize..40,
     ) {
         let alpha = Alpha::try_new(a).unwrap();
+        let samples = Samples::Along(samples);
         let result = job.run(&Settings { alpha, samples, derivatives: None }).unwrap();
         let (text, back) = written(&result);
         prop_assert_eq!(back, serde_json::to_value(&result).unwrap(), "{}", text);
@@ -94,7 +95,7 @@ fn the_example_job_round_trips_and_its_result_too() {
     );
     let job = t2spline_io::read_job(std::path::Path::new(path)).unwrap();
     assert_eq!(job.model.dimension(), 2);
-    assert_eq!(job.samples, 101);
+    assert_eq!(job.samples, Samples::Along(101));
     assert_eq!(job.alpha.map(Alpha::get), Some(0.8));
     assert_eq!(
         t2spline_io::parse_job(&t2spline_io::job_json(&job).to_string(), "x").unwrap(),

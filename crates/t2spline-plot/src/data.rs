@@ -4,8 +4,8 @@
 //! crate's one run path ([`Job::run`]), so plotting never recomputes the
 //! method.
 
-use t2spline::job::{Job, Model, ModelVisitor, RunOutput, Settings};
-use t2spline::{Alpha, Axis, FuzzyCurve, Nt2Number};
+use t2spline::job::{Job, Model, ModelVisitor, RunOutput, Samples, Settings};
+use t2spline::{Alpha, Axis, FuzzyCurve, FuzzySurface, Nt2Number};
 
 use crate::Error;
 
@@ -16,14 +16,24 @@ pub const FIGURE_SAMPLES: usize = 241;
 /// The result of the job at `alpha`, sampled for figures.
 ///
 /// # Errors
-/// [`Error::Core`] if the run fails (it does not for a validated job without
-/// derivatives).
+/// [`Error::Surface`] for a surface job; [`Error::Core`] if the run fails (it
+/// does not for a validated curve job without derivatives).
 pub fn compute(job: &Job, alpha: Alpha) -> Result<RunOutput, Error> {
+    if job.model.is_surface() {
+        return Err(Error::Surface);
+    }
     Ok(job.run(&Settings {
         alpha,
-        samples: FIGURE_SAMPLES,
+        samples: Samples::Along(FIGURE_SAMPLES),
         derivatives: None,
     })?)
+}
+
+/// The parameter where a curve's distance is largest (results of [`compute`]
+/// are curves).
+#[must_use]
+pub fn max_at(r: &RunOutput) -> f64 {
+    r.error.max_at.t().unwrap_or(f64::NAN)
 }
 
 /// The crisp and the defuzzified curve at parameter `t` (where the distance
@@ -41,6 +51,9 @@ pub fn curves_at(model: &Model, alpha: Alpha, t: f64) -> Result<(Vec<f64>, Vec<f
                 s.crisp_curve().eval(self.1)?.to_vec(),
                 s.defuzzified_curve().eval(self.1)?.to_vec(),
             ))
+        }
+        fn surface<const D: usize>(self, _: &FuzzySurface<D>) -> Self::Output {
+            Err(Error::Surface)
         }
     }
     model.visit(At(alpha, t))

@@ -20,6 +20,9 @@ pub enum Error {
         /// The job's dimension.
         dimension: usize,
     },
+    /// The figures of surface jobs are not drawn by this version.
+    #[error("figures of surface jobs are not available yet; `t2spline run` computes them")]
+    Surface,
     /// Reading the job or writing a file failed.
     #[error(transparent)]
     Io(#[from] t2spline_io::Error),

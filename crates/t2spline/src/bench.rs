@@ -11,8 +11,13 @@ use std::time::Instant;
 
 use crate::error::{Error, Setting};
 use crate::job::{Model, ModelVisitor};
-use crate::pipeline::FuzzyCurve;
-use crate::sampling::{benchmark_levels, CurveSamples, LayerSamples, Params, SweepSamples};
+use crate::pipeline::{FuzzyCurve, FuzzySurface};
+use crate::sampling::{benchmark_levels, CurveSamples, Grid, LayerSamples, Params, SweepSamples};
+
+/// The side of the square grid of about `points` parameter values.
+fn grid_side(points: usize) -> usize {
+    ((points as f64).sqrt().round() as usize).max(2)
+}
 
 /// Timed runs per case; the median is reported.
 pub const RUNS: usize = 5;
@@ -35,11 +40,22 @@ pub enum BenchCase {
     /// Stages 1–4 at the 11 levels 0, 0.1, …, 1 ([`benchmark_levels`]) and
     /// every resulting curve ([`FuzzyCurve::sample_sweep`]).
     Sweep,
+    /// The crisp surface on a `√N × √N` grid ([`crate::NurbsSurface::sample_grid`]).
+    Surface,
+    /// All seven layer surfaces on a `√N × √N` grid
+    /// ([`FuzzySurface::sample_layers`]).
+    SurfaceFuzzy,
 }
 
 impl BenchCase {
     /// Every case, in the order `all` runs them.
-    pub const ALL: [BenchCase; 3] = [BenchCase::Crisp, BenchCase::Fuzzy, BenchCase::Sweep];
+    pub const ALL: [BenchCase; 5] = [
+        BenchCase::Crisp,
+        BenchCase::Fuzzy,
+        BenchCase::Sweep,
+        BenchCase::Surface,
+        BenchCase::SurfaceFuzzy,
+    ];
 
     /// The name used on the command line and in the output.
     #[must_use]
@@ -48,6 +64,27 @@ impl BenchCase {
             BenchCase::Crisp => "crisp",
             BenchCase::Fuzzy => "fuzzy",
             BenchCase::Sweep => "sweep",
+            BenchCase::Surface => "surface",
+            BenchCase::SurfaceFuzzy => "surface-fuzzy",
+        }
+    }
+
+    /// Whether the case samples a surface (else a curve).
+    #[must_use]
+    pub fn is_surface(self) -> bool {
+        matches!(self, BenchCase::Surface | BenchCase::SurfaceFuzzy)
+    }
+
+    /// The parameter values a run of this case samples when `points` are
+    /// asked for: `points` along a curve, `s²` on the `s × s` grid of a
+    /// surface with `s = round(√points)`.
+    #[must_use]
+    pub fn points(self, points: usize) -> usize {
+        if self.is_surface() {
+            let side = grid_side(points);
+            side * side
+        } else {
+            points
         }
     }
 
@@ -57,8 +94,8 @@ impl BenchCase {
     #[must_use]
     pub fn curves(self) -> usize {
         match self {
-            BenchCase::Crisp => 1,
-            BenchCase::Fuzzy => 7,
+            BenchCase::Crisp | BenchCase::Surface => 1,
+            BenchCase::Fuzzy | BenchCase::SurfaceFuzzy => 7,
             BenchCase::Sweep => 7 + 9 * benchmark_levels().len(),
         }
     }
@@ -177,6 +214,24 @@ pub fn run_case(
     reuse: bool,
 ) -> Result<BenchResult, Error> {
     let points = check_points(points, case, model.dimension())?;
+    if case.is_surface() != model.is_surface() {
+        return Err(Error::Setting {
+            setting: Setting::Points,
+            message: format!(
+                "case {case} samples a {}, and the model is a {}",
+                if case.is_surface() {
+                    "surface"
+                } else {
+                    "curve"
+                },
+                if model.is_surface() {
+                    "surface"
+                } else {
+                    "curve"
+                }
+            ),
+        });
+    }
     if !(1..=MAX_THREADS).contains(&threads) {
         return Err(Error::Setting {
             setting: Setting::Threads,
@@ -192,7 +247,7 @@ pub fn run_case(
     })?;
     Ok(BenchResult {
         case,
-        points,
+        points: case.points(points),
         threads,
         reuse,
         seconds,
@@ -244,13 +299,17 @@ impl ModelVisitor for Time {
         // the results are checked by the tests); a fresh output is dropped
         // inside the timed region, as a caller's would be eventually.
         let mut once = || match (case, reuse) {
-            (BenchCase::Crisp, false) => drop(black_box(crisp.sample_soa(params))),
-            (BenchCase::Fuzzy, false) => drop(black_box(curve.sample_layers(params))),
+            (BenchCase::Crisp | BenchCase::Surface, false) => {
+                drop(black_box(crisp.sample_soa(params)));
+            }
+            (BenchCase::Fuzzy | BenchCase::SurfaceFuzzy, false) => {
+                drop(black_box(curve.sample_layers(params)));
+            }
             (BenchCase::Sweep, false) => drop(black_box(curve.sample_sweep(params, &levels))),
-            (BenchCase::Crisp, true) => {
+            (BenchCase::Crisp | BenchCase::Surface, true) => {
                 drop(black_box(crisp.sample_soa_into(params, &mut crisp_out)));
             }
-            (BenchCase::Fuzzy, true) => {
+            (BenchCase::Fuzzy | BenchCase::SurfaceFuzzy, true) => {
                 drop(black_box(curve.sample_layers_into(params, &mut layers_out)));
             }
             (BenchCase::Sweep, true) => {
@@ -261,17 +320,52 @@ impl ModelVisitor for Time {
                 )));
             }
         };
-        once();
-        let mut times: Vec<f64> = (0..RUNS)
-            .map(|_| {
-                let start = Instant::now();
-                once();
-                start.elapsed().as_secs_f64()
-            })
-            .collect();
-        times.sort_by(f64::total_cmp);
-        times[RUNS / 2]
+        median_time(&mut once)
     }
+
+    fn surface<const D: usize>(self, surface: &FuzzySurface<D>) -> f64 {
+        let Time {
+            case,
+            points,
+            reuse,
+        } = self;
+        let side = Params::Uniform(grid_side(points));
+        let crisp = surface.crisp_surface();
+        let mut crisp_out = Grid::buffer(CurveSamples::empty());
+        let mut layers_out = Grid::buffer(LayerSamples::empty());
+        // As for curves: uniform parameters lie in the domain.
+        let mut once = || match (case, reuse) {
+            (BenchCase::SurfaceFuzzy, false) => drop(black_box(surface.sample_layers(side, side))),
+            (BenchCase::SurfaceFuzzy, true) => {
+                drop(black_box(surface.sample_layers_into(
+                    side,
+                    side,
+                    &mut layers_out,
+                )));
+            }
+            (_, false) => drop(black_box(crisp.sample_grid(side, side))),
+            (_, true) => drop(black_box(crisp.sample_grid_into(
+                side,
+                side,
+                &mut crisp_out,
+            ))),
+        };
+        median_time(&mut once)
+    }
+}
+
+/// One warm-up run of `once`, then the median wall time of [`RUNS`] runs.
+fn median_time(once: &mut dyn FnMut()) -> f64 {
+    once();
+    let mut times: Vec<f64> = (0..RUNS)
+        .map(|_| {
+            let start = Instant::now();
+            once();
+            start.elapsed().as_secs_f64()
+        })
+        .collect();
+    times.sort_by(f64::total_cmp);
+    times[RUNS / 2]
 }
 
 #[cfg(test)]
@@ -281,23 +375,41 @@ mod tests {
 
     #[test]
     fn every_case_runs_and_reports_in_the_documented_format() {
-        let model = Model::Planar(benchmark_curve());
-        for (case, reuse) in BenchCase::ALL.into_iter().zip([false, true, false]) {
-            let r = run_case(&model, case, 1000, 2, reuse).unwrap();
+        let curve = Model::Planar(benchmark_curve());
+        let surface = Model::Surface(crate::sampling::benchmark_surface());
+        for (case, reuse) in BenchCase::ALL
+            .into_iter()
+            .zip([false, true, false, true, false])
+        {
+            let model = if case.is_surface() { &surface } else { &curve };
+            // 1000 points: a 32 × 32 grid of 1024 for surfaces.
+            let r = run_case(
+                model,
+                case,
+                if case.is_surface() { 1024 } else { 1000 },
+                2,
+                reuse,
+            )
+            .unwrap();
             assert!(r.seconds > 0.0 && r.seconds.is_finite(), "{r:?}");
             let line = r.to_string();
             let fields: Vec<&str> = line.split(' ').collect();
-            assert_eq!(
-                fields[..4],
-                ["bench", case.name(), "points=1000", "threads=2"]
-            );
+            let points = if case.is_surface() {
+                "points=1024"
+            } else {
+                "points=1000"
+            };
+            assert_eq!(fields[..4], ["bench", case.name(), points, "threads=2"]);
             assert!(fields[4].starts_with("seconds="), "{line}");
             let rate: f64 = fields[5]
                 .strip_prefix("points_per_second=")
                 .unwrap()
                 .parse()
                 .unwrap();
-            assert!((rate - 1000.0 / r.seconds).abs() <= 1e-3 * rate, "{line}");
+            assert!(
+                (rate - r.points as f64 / r.seconds).abs() <= 1e-3 * rate,
+                "{line}"
+            );
             assert_eq!(fields.get(6), reuse.then_some(&"output=reused"), "{line}");
         }
     }
@@ -305,6 +417,11 @@ mod tests {
     #[test]
     fn bad_threads_and_points_are_errors_before_any_work() {
         let model = Model::Planar(benchmark_curve());
+        let e = run_case(&model, BenchCase::Surface, 100, 1, false).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "case surface samples a surface, and the model is a curve"
+        );
         let e = run_case(&model, BenchCase::Crisp, 10, 0, false).unwrap_err();
         assert_eq!(e.to_string(), "threads = 0: must be in 1 ..= 1024");
         let e = run_case(&model, BenchCase::Crisp, 1, 1, false).unwrap_err();

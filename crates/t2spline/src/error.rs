@@ -701,7 +701,7 @@ pub enum Error {
     /// # let n = |c: f64| Nt2Number::try_new(c, [c, c], [c, c], [c, c], 0.5);
     /// # let points = vec![Nt2Point::new([n(0.0)?, n(0.0)?]), Nt2Point::new([n(1.0)?, n(1.0)?])];
     /// let job = Job::new(Model::Planar(FuzzyCurve::try_new(1, points, vec![1.0, 1.0], None)?));
-    /// let e = job.settings(&Overrides { alpha: Some(0.5), samples: Some(1), ..Overrides::default() }).unwrap_err();
+    /// let e = job.settings(&Overrides { alpha: Some(0.5), samples: Some(vec![1]), ..Overrides::default() }).unwrap_err();
     /// assert!(matches!(e, Error::Setting { setting: Setting::Samples, .. }));
     /// assert_eq!(e.to_string(), "samples = 1: at least 2 are needed (both ends of the domain)");
     /// # Ok::<(), Error>(())
@@ -727,7 +727,7 @@ pub enum Error {
     /// let points = vec![Nt2Point::new([n(0.0)?, n(0.0)?]), Nt2Point::new([n(1e150)?, n(0.0)?]), Nt2Point::new([n(0.0)?, n(1.0)?])];
     /// let curve = FuzzyCurve::try_new(2, points, vec![1.0; 3], Some(vec![0.0, 0.0, 0.0, 1e-150, 1e-150, 1e-150]))?;
     /// let job = Job::new(Model::Planar(curve));
-    /// let s = job.settings(&Overrides { alpha: Some(0.5), samples: Some(2), derivatives: Some(2) })?;
+    /// let s = job.settings(&Overrides { alpha: Some(0.5), samples: Some(vec![2]), derivatives: Some(2) })?;
     /// let e = job.run(&s).unwrap_err();
     /// assert!(matches!(e, Error::DerivativeOverflow { derivative: 2, .. }), "{e}");
     /// # Ok::<(), Error>(())
@@ -827,6 +827,43 @@ pub enum Error {
         /// The parameter v.
         v: f64,
     },
+
+    /// A sample of a sampled interval type-2 set breaks a rule of
+    /// [`SampledSet::try_new`](crate::reduction::discrete::SampledSet::try_new):
+    /// finite values, `x` within [`MAX_MAGNITUDE`](crate::MAX_MAGNITUDE) and not
+    /// decreasing, `0 ≤ lmf ≤ umf ≤ 1e150`.
+    ///
+    /// ```
+    /// # use t2spline::Error;
+    /// # use t2spline::reduction::discrete::SampledSet;
+    /// let e = SampledSet::try_new(&[0.0, 1.0, 2.0], &[0.0, 0.7, 0.0], &[0.5, 0.5, 0.2]).unwrap_err();
+    /// assert_eq!(e.to_string(), "lmf[1] = 0.7 is greater than the umf at that index; a sampled set needs 0 <= lmf <= umf");
+    /// let e = SampledSet::try_new(&[0.0, 2.0, 1.0], &[0.0; 3], &[1.0; 3]).unwrap_err();
+    /// assert!(matches!(e, Error::Sample { what: "x", index: 2, .. }));
+    /// ```
+    #[error("{what}[{index}] = {} {rule}", Num(*value))]
+    Sample {
+        /// `"x"`, `"lmf"` or `"umf"`.
+        what: &'static str,
+        /// Index of the sample (0-based).
+        index: usize,
+        /// The offending value.
+        value: f64,
+        /// The rule it breaks, as the end of the message.
+        rule: &'static str,
+    },
+
+    /// No upper membership of a sampled set is greater than 0 (or there are no
+    /// samples): the set has no centroid.
+    ///
+    /// ```
+    /// # use t2spline::Error;
+    /// # use t2spline::reduction::discrete::SampledSet;
+    /// let e = SampledSet::try_new(&[0.0, 1.0], &[0.0, 0.0], &[0.0, 0.0]).unwrap_err();
+    /// assert_eq!(e, Error::ZeroUpperMembership);
+    /// ```
+    #[error("umf: no sample is greater than 0, so the set has no centroid")]
+    ZeroUpperMembership,
 }
 
 /// The message of [`Error::InDirection`]: the curve rule in the surface's words.

@@ -45,6 +45,11 @@
 //! - [`fuzzy`]: [`Nt2Number`] (SPEC §1), [`Alpha`] and [`AlphaCut`] (§2), type
 //!   reduction to a [`Tfn`] (§3), defuzzification (§4), [`Nt2Point`] (§5), and the
 //!   seven [`Layer`]s.
+//! - [`reduction`]: the type-2 literature's reductions of one number, exact
+//!   (§10): the interval type-2 [`Nt2Number::centroid`] (Karnik–Mendel),
+//!   [`Nt2Number::nie_tan`], the general type-2 [`Nt2Number::alpha_planes`],
+//!   and [`Nt2Number::reduce`] by any [`TypeReduction`]; the discrete KM, EKM,
+//!   EIASC and Nie–Tan algorithms on sampled sets ([`reduction::discrete`]).
 //! - [`nurbs`]: [`KnotVector`], basis functions and [`NurbsCurve`] of any order
 //!   (§6), with the curve operations of The NURBS Book: derivatives of any
 //!   order, tangent, curvature, knot insertion and refinement, degree
@@ -76,6 +81,8 @@ mod limits;
 mod nelder_mead;
 pub mod nurbs;
 pub mod pipeline;
+mod quadrature;
+pub mod reduction;
 pub mod sampling;
 #[cfg(any(test, feature = "proptest"))]
 pub mod strategies;
@@ -92,3 +99,4 @@ pub use nurbs::{
 pub use pipeline::{
     Distance, FuzzyCurve, FuzzySurface, Side, Solution, SurfaceDistance, SurfaceSolution,
 };
+pub use reduction::{AlphaPlanes, Reduced, TypeReduction};

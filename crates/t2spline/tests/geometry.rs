@@ -1,73 +1,138 @@
-//! `Job::geometry` (the exact curves that CAD files carry) against `Job::run`'s
-//! samples, and `fuzzify` (readings into fuzzy numbers) on any readings.
+//! `Job::geometry` (the exact curves and surfaces that CAD files carry)
+//! against `Job::run`'s samples, and `fuzzify` (readings into fuzzy numbers) on any readings.
 
 use proptest::prelude::*;
 use t2spline::fit::{fuzzify, percentile, FuzzifyRule};
-use t2spline::job::{Geometry, Job, Model, Overrides, Points};
-use t2spline::strategies::fuzzy_curve;
-use t2spline::NurbsCurve;
+use t2spline::job::{Geometry, Job, Model, Overrides, Parameters, Points, Sampled};
+use t2spline::strategies::{fuzzy_curve, fuzzy_surface};
+use t2spline::{Direction, NurbsCurve, NurbsSurface};
 
-/// The value of a curve given as pieces at `t`: the piece whose domain holds
-/// `t`, the right one at a jump (SPEC §6).
-fn eval(pieces: &[NurbsCurve<3>], t: f64) -> [f64; 3] {
-    let last = pieces.len() - 1;
-    let piece = pieces
+/// The piece among `domains` that holds `t`: the right one at a shared end
+/// (a jump is taken from the right, SPEC §6), the last one at the end.
+fn holding(domains: &[(f64, f64)], t: f64) -> usize {
+    let last = domains.len() - 1;
+    domains
         .iter()
         .enumerate()
-        .find(|(i, p)| {
-            let d = p.domain();
-            d.start <= t && (t < d.end || (*i == last && t <= d.end))
-        })
-        .map(|(_, p)| p)
-        .unwrap_or_else(|| panic!("no piece holds t = {t}"));
-    piece.eval(t).unwrap()
+        .position(|(i, &(a, b))| a <= t && (t < b || (i == last && t <= b)))
+        .unwrap_or_else(|| panic!("no piece holds {t} in {domains:?}"))
 }
 
-/// Every curve of the geometry at every sample parameter, against the run.
+/// The value of a curve given as pieces at `t`.
+fn eval(pieces: &[NurbsCurve<3>], t: f64) -> [f64; 3] {
+    let domains: Vec<_> = pieces
+        .iter()
+        .map(|p| (p.domain().start, p.domain().end))
+        .collect();
+    pieces[holding(&domains, t)].eval(t).unwrap()
+}
+
+/// The value of a surface given as patches (rows along u, each along v).
+fn eval_surface(patches: &[NurbsSurface<3>], u: f64, v: f64) -> [f64; 3] {
+    let mut us: Vec<(f64, f64)> = patches
+        .iter()
+        .map(|p| (p.domain(Direction::U).start, p.domain(Direction::U).end))
+        .collect();
+    us.dedup();
+    let mut vs: Vec<(f64, f64)> = patches
+        .iter()
+        .map(|p| (p.domain(Direction::V).start, p.domain(Direction::V).end))
+        .collect();
+    vs.sort_by(|a, b| a.0.total_cmp(&b.0));
+    vs.dedup();
+    let (i, j) = (holding(&us, u), holding(&vs, v));
+    patches[i * vs.len() + j].eval(u, v).unwrap()
+}
+
+/// The run's sampled points of one named curve or surface.
+fn reference<'a>(s: &'a Sampled, name: &str) -> &'a Points {
+    match name {
+        "crisp" => &s.crisp,
+        "defuzzified" => &s.defuzzified,
+        "upper_left" => &s.layers.upper_left,
+        "primary_left" => &s.layers.primary_left,
+        "lower_left" => &s.layers.lower_left,
+        "lower_right" => &s.layers.lower_right,
+        "primary_right" => &s.layers.primary_right,
+        "upper_right" => &s.layers.upper_right,
+        other => panic!("unexpected name {other}"),
+    }
+}
+
+fn close(
+    got: [f64; 3],
+    want: &Points,
+    i: usize,
+    tolerance: f64,
+    what: &str,
+) -> Result<(), TestCaseError> {
+    for (axis, &value) in got.iter().enumerate() {
+        let expected: f64 = want.coord(axis).get(i).copied().unwrap_or(0.0);
+        let scale = 1.0 + expected.abs();
+        prop_assert!(
+            (value - expected).abs() <= tolerance * scale,
+            "{what}, axis {axis}: {value} vs {expected}"
+        );
+    }
+    Ok(())
+}
+
+/// Every curve or surface of the geometry at every sample, against the run.
 fn agrees(job: &Job, geometry: &Geometry, tolerance: f64) -> Result<(), TestCaseError> {
+    let samples = if job.model.is_surface() {
+        vec![9, 7]
+    } else {
+        vec![41]
+    };
     let settings = job
         .settings(&Overrides {
             alpha: Some(0.3),
-            samples: Some(41),
+            samples: Some(samples),
             ..Overrides::default()
         })
         .unwrap();
     let out = job.run(&settings).unwrap();
-    let curves = &out.curves;
-    let reference = |name: &str| -> &Points {
-        match name {
-            "crisp" => &curves.crisp,
-            "defuzzified" => &curves.defuzzified,
-            "upper_left" => &curves.layers.upper_left,
-            "primary_left" => &curves.layers.primary_left,
-            "lower_left" => &curves.layers.lower_left,
-            "lower_right" => &curves.layers.lower_right,
-            "primary_right" => &curves.layers.primary_right,
-            "upper_right" => &curves.layers.upper_right,
-            other => panic!("unexpected curve {other}"),
-        }
-    };
-    prop_assert_eq!(geometry.curves.len(), 8);
+    let sampled = &out.samples;
+    prop_assert_eq!(geometry.curves.len() + geometry.surfaces.len(), 8);
     for curve in &geometry.curves {
-        let want = reference(curve.name);
         // Pieces are continuous: no interior knot of full multiplicity.
         for piece in &curve.pieces {
-            let u = piece.knots().as_slice();
             let d = piece.domain();
-            for &v in u.iter().filter(|&&v| d.start < v && v < d.end) {
+            for &v in piece
+                .knots()
+                .as_slice()
+                .iter()
+                .filter(|&&v| d.start < v && v < d.end)
+            {
                 prop_assert!(piece.knots().multiplicity(v) <= piece.degree());
             }
         }
-        for (i, &t) in curves.params.iter().enumerate() {
-            let got = eval(&curve.pieces, t);
-            for (axis, &value) in got.iter().enumerate() {
-                let expected = want.coord(axis).get(i).copied().unwrap_or(0.0);
-                let scale = 1.0 + expected.abs();
-                prop_assert!(
-                    (value - expected).abs() <= tolerance * scale,
-                    "{} at t = {t}, axis {axis}: {value} vs {expected}",
-                    curve.name
-                );
+        let want = reference(sampled, curve.name);
+        for (i, &t) in sampled.params.along().iter().enumerate() {
+            close(
+                eval(&curve.pieces, t),
+                want,
+                i,
+                tolerance,
+                &format!("{} at t = {t}", curve.name),
+            )?;
+        }
+    }
+    for surface in &geometry.surfaces {
+        let Parameters::Grid { u, v } = &sampled.params else {
+            panic!("a surface is sampled on a grid")
+        };
+        let want = reference(sampled, surface.name);
+        for (a, &ua) in u.iter().enumerate() {
+            for (b, &vb) in v.iter().enumerate() {
+                let got = eval_surface(&surface.patches, ua, vb);
+                close(
+                    got,
+                    want,
+                    a * v.len() + b,
+                    tolerance,
+                    &format!("{} at ({ua}, {vb})", surface.name),
+                )?;
             }
         }
     }
@@ -98,6 +163,15 @@ proptest! {
         let g = job.geometry(&settings).unwrap();
         agrees(&job, &g, 1e-12)?;
         agrees(&job, &g.clamped(), 1e-11)?;
+    }
+
+    #[test]
+    fn exact_surfaces_are_the_run_s_surfaces(s in fuzzy_surface::<3>()) {
+        let job = Job::new(Model::Surface(s));
+        let settings = job.settings(&Overrides { alpha: Some(0.3), ..Overrides::default() }).unwrap();
+        let g = job.geometry(&settings).unwrap();
+        prop_assert!(g.curves.is_empty());
+        agrees(&job, &g, 1e-12)?;
     }
 
     #[test]

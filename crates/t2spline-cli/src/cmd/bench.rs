@@ -1,10 +1,11 @@
-//! `t2spline bench [--case crisp|fuzzy|sweep|all] [--points N] [--threads T] [--curve JOB.json] [--reuse]`.
+//! `t2spline bench [--case crisp|fuzzy|sweep|surface|surface-fuzzy|all] [--points N]
+//! [--threads T] [--curve JOB.json] [--reuse]`.
 
 use std::io::Write;
 
 use t2spline::bench::{run_case, BenchCase};
 use t2spline::job::Model;
-use t2spline::sampling::benchmark_curve;
+use t2spline::sampling::{benchmark_curve, benchmark_surface};
 
 use super::settings::about_option;
 use crate::cli::BenchArgs;
@@ -23,19 +24,31 @@ pub fn bench(args: &BenchArgs) -> anyhow::Result<()> {
         Some(t) => usize::try_from(t).unwrap_or(usize::MAX),
         None => std::thread::available_parallelism().map_or(1, |n| n.get()),
     };
-    let model = match &args.curve {
-        Some(path) => read_job(path)?.model,
-        None => Model::Planar(benchmark_curve()),
-    };
+    // A job's model, or the built-in curve and surface; with `all`, a job
+    // runs only the cases of its kind.
+    let job = args.curve.as_deref().map(read_job).transpose()?;
+    let (curve, surface) = (
+        Model::Planar(benchmark_curve()),
+        Model::Surface(benchmark_surface()),
+    );
+    let plan: Vec<(BenchCase, &Model)> = cases
+        .into_iter()
+        .filter_map(|case| match &job {
+            Some(job) if args.case == "all" && case.is_surface() != job.model.is_surface() => None,
+            Some(job) => Some((case, &job.model)),
+            None if case.is_surface() => Some((case, &surface)),
+            None => Some((case, &curve)),
+        })
+        .collect();
     // Every case's points are checked before the first is timed.
-    for &case in &cases {
+    for &(case, model) in &plan {
         t2spline::bench::check_points(args.points, case, model.dimension())
             .map_err(about_option)?;
     }
     let mut out = std::io::stdout().lock();
-    for case in cases {
+    for (case, model) in plan {
         let result =
-            run_case(&model, case, args.points, threads, args.reuse).map_err(about_option)?;
+            run_case(model, case, args.points, threads, args.reuse).map_err(about_option)?;
         // One line per case as soon as it is measured.
         writeln!(out, "{result}")?;
         out.flush()?;

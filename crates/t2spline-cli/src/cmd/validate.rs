@@ -9,11 +9,9 @@ pub fn validate(args: &ValidateArgs) -> anyhow::Result<()> {
         .alpha
         .map_or("not set".to_owned(), |a| a.get().to_string());
     let line = format!(
-        "{}: ok: {}-D, {} points, order {}, alpha {alpha}, {} samples\n",
+        "{}: ok: {}, alpha {alpha}, {} samples\n",
         job_name(&args.job),
-        job.model.dimension(),
-        job.model.control_point_count(),
-        job.model.order(),
+        job.model.summary(),
         job.samples,
     );
     Ok(to_stdout(|w| w.write_all(line.as_bytes()))?)

@@ -18,11 +18,12 @@
 //! ```
 //! `V(0)`, `V(1)` are the domain `[U[p], U[n]]`, so unclamped knot vectors are
 //! written as they are. The normal of planar (2-D) curves is `(0, 0, 1)`.
+//! Surfaces are entity 128 (rational B-spline surface), named the same way.
 
 use std::fmt::Write as _;
 
 use t2spline::job::Geometry;
-use t2spline::NurbsCurve;
+use t2spline::{Direction, NurbsCurve, NurbsSurface};
 
 use super::{real, CadMeta};
 
@@ -57,7 +58,66 @@ pub(super) fn render(geometry: &Geometry, meta: &CadMeta) -> String {
             file.entity(126, 0, &params, &label, i + 1, "00000000");
         }
     }
+    for surface in &geometry.surfaces {
+        for (i, patch) in surface.patches.iter().enumerate() {
+            let name_de = file.entity(
+                406,
+                15,
+                &format!("406,1,{};", hollerith(surface.name)),
+                "NAME",
+                0,
+                "00010200",
+            );
+            let params = surface_parameters(patch, name_de);
+            let label: String = surface.name.chars().take(8).collect();
+            file.entity(128, 0, &params, &label, i + 1, "00000000");
+        }
+    }
     file.text()
+}
+
+/// The parameters of entity 128 (IGES 5.3 §4.24), ending with the pointer to
+/// its name:
+///
+/// ```text
+/// 128, K1, K2, M1, M2, PROP1 … PROP5 (closed u, closed v, polynomial, periodic u, periodic v),
+///      S(−M1) … S(N1+M1), T(−M2) … T(N2+M2),
+///      W(0,0), W(1,0), … W(K1,K2)            (the u index varying fastest)
+///      X(0,0), Y(0,0), Z(0,0), …             (the same order)
+///      U(0), U(1), V(0), V(1)
+/// ```
+fn surface_parameters(s: &NurbsSurface<3>, name_de: usize) -> String {
+    let r = |x: f64| real(x, 'D');
+    let [nu, nv] = s.shape();
+    let [p, q] = s.degree();
+    let w = s.weights();
+    let polynomial = w.iter().all(|&x| x == w[0]);
+    let mut params = vec![
+        "128".to_owned(),
+        (nu - 1).to_string(),
+        (nv - 1).to_string(),
+        p.to_string(),
+        q.to_string(),
+        "0".into(),
+        "0".into(),
+        u8::from(polynomial).to_string(),
+        "0".into(),
+        "0".into(),
+    ];
+    for direction in [Direction::U, Direction::V] {
+        params.extend(s.knots(direction).as_slice().iter().map(|&u| r(u)));
+    }
+    let order: Vec<(usize, usize)> = (0..nv).flat_map(|j| (0..nu).map(move |i| (i, j))).collect();
+    params.extend(order.iter().map(|&(i, j)| r(w[i * nv + j])));
+    for &(i, j) in &order {
+        params.extend(s.control_point(i, j).iter().map(|&x| r(x)));
+    }
+    for direction in [Direction::U, Direction::V] {
+        let d = s.domain(direction);
+        params.extend([r(d.start), r(d.end)]);
+    }
+    params.extend(["0".into(), "1".into(), name_de.to_string()]);
+    params.join(",") + ";"
 }
 
 /// The parameters of entity 126, ending with the pointer to its name.

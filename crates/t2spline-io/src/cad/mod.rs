@@ -12,6 +12,11 @@
 //! | IGES 5.3 | entity 126 (rational B-spline curve) with a name property (406 form 15) | name property, label | as they are (`V(0)`, `V(1)` give the domain) | millimetres |
 //! | OBJ | `cstype rat bspline`, `deg`, `curv`, `parm u` | group | as they are (`curv u0 u1`) | none |
 //!
+//! Surface jobs (SPEC §9) export their eight surfaces, named the same way:
+//! STEP `B_SPLINE_SURFACE_WITH_KNOTS` + `RATIONAL_B_SPLINE_SURFACE`, IGES
+//! entity 128, OBJ `surf` with `parm u` and `parm v`; DXF has no NURBS
+//! surface entity and refuses them.
+//!
 //! Numbers are written in the shortest form that reads back to the same
 //! 64-bit float, so nothing is rounded. A curve that jumps at a knot of full
 //! multiplicity is written as its continuous pieces, all with the curve's
@@ -118,11 +123,20 @@ pub fn render_cad(
     meta: &CadMeta,
     source: &str,
 ) -> Result<String, Error> {
+    if format == CadFormat::Dxf && !geometry.surfaces.is_empty() {
+        return Err(Error::Invalid {
+            file: source.to_owned(),
+            problems: vec![Problem::new(
+                "DXF holds NURBS curves (SPLINE) but no NURBS surfaces (only ACIS solids); export surfaces as STEP, IGES or OBJ",
+            )],
+        });
+    }
     if geometry.degree() == 0 {
         return Err(Error::Invalid {
             file: source.to_owned(),
             problems: vec![Problem::new(format!(
-                "the curves have degree 0 (piecewise constant: a set of points), which {} cannot hold as curves; export needs degree 1 or more",
+                "the {} have degree 0 (piecewise constant: a set of points), which {} cannot hold; export needs degree 1 or more",
+                if geometry.surfaces.is_empty() { "curves" } else { "surfaces" },
                 format.name().to_uppercase()
             ))],
         });
@@ -169,11 +183,11 @@ pub(crate) fn real(x: f64, exponent: char) -> String {
 pub(crate) fn extents(geometry: &Geometry) -> ([f64; 3], [f64; 3]) {
     let mut lo = [f64::INFINITY; 3];
     let mut hi = [f64::NEG_INFINITY; 3];
-    for p in geometry
-        .curves
-        .iter()
-        .flat_map(|c| &c.pieces)
+    let curves = geometry.curves.iter().flat_map(|c| &c.pieces);
+    let surfaces = geometry.surfaces.iter().flat_map(|s| &s.patches);
+    for p in curves
         .flat_map(|p| p.control_points())
+        .chain(surfaces.flat_map(|s| s.control_points()))
     {
         for i in 0..3 {
             lo[i] = lo[i].min(p[i]);

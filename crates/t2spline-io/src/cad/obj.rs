@@ -10,11 +10,14 @@
 //! parm u U₀ … Uₙ₊ₚ             the whole knot vector
 //! end
 //! ```
-//! OBJ has no units; coordinates are the job's.
+//! Surfaces are `deg p q`, `surf u0 u1 v0 v1 …` (control points with the u
+//! index varying fastest, as the specification orders them) and `parm u`,
+//! `parm v`. OBJ has no units; coordinates are the job's.
 
 use std::fmt::Write as _;
 
 use t2spline::job::Geometry;
+use t2spline::Direction;
 
 use super::{real, CadMeta};
 
@@ -51,6 +54,43 @@ pub(super) fn render(geometry: &Geometry, meta: &CadMeta) -> String {
             out.push_str("\nparm u");
             for &u in piece.knots().as_slice() {
                 let _ = write!(out, " {}", r(u));
+            }
+            out.push_str("\nend\n");
+        }
+    }
+    for surface in &geometry.surfaces {
+        let _ = writeln!(out, "g {}", surface.name);
+        for patch in &surface.patches {
+            let [nu, nv] = patch.shape();
+            let [p, q] = patch.degree();
+            // The specification's order: i = 0 … K1 for j = 0, then for j = 1, …
+            // (the u index varying fastest).
+            for j in 0..nv {
+                for i in 0..nu {
+                    let c = patch.control_point(i, j);
+                    let w = patch.weights()[i * nv + j];
+                    let _ = writeln!(out, "v {} {} {} {}", r(c[0]), r(c[1]), r(c[2]), r(w));
+                }
+            }
+            let (du, dv) = (patch.domain(Direction::U), patch.domain(Direction::V));
+            let _ = writeln!(out, "cstype rat bspline\ndeg {p} {q}");
+            let _ = write!(
+                out,
+                "surf {} {} {} {}",
+                r(du.start),
+                r(du.end),
+                r(dv.start),
+                r(dv.end)
+            );
+            for index in next..next + nu * nv {
+                let _ = write!(out, " {index}");
+            }
+            next += nu * nv;
+            for (name, direction) in [("u", Direction::U), ("v", Direction::V)] {
+                let _ = write!(out, "\nparm {name}");
+                for &u in patch.knots(direction).as_slice() {
+                    let _ = write!(out, " {}", r(u));
+                }
             }
             out.push_str("\nend\n");
         }

@@ -18,11 +18,14 @@
 //! ISO 10303-42 allows interior multiplicities up to `p` (curves that jump
 //! arrive here as continuous pieces) and any end multiplicity up to `p + 1`,
 //! so unclamped curves are written as they are; the domain is `[U[p], U[n]]`.
+//! Surfaces are the complex entity of `B_SPLINE_SURFACE_WITH_KNOTS` and
+//! `RATIONAL_B_SPLINE_SURFACE` in a `GEOMETRIC_SET` of a
+//! `GEOMETRICALLY_BOUNDED_SURFACE_SHAPE_REPRESENTATION`, named the same way.
 
 use std::fmt::Write as _;
 
 use t2spline::job::Geometry;
-use t2spline::NurbsCurve;
+use t2spline::{Direction, KnotVector, NurbsCurve, NurbsSurface};
 
 use super::{real, CadMeta};
 
@@ -75,10 +78,26 @@ pub(super) fn render(geometry: &Geometry, meta: &CadMeta) -> String {
         all.extend(items.iter().cloned());
         layers.push((curve.name, items));
     }
-    let set = data.add(&format!("GEOMETRIC_CURVE_SET('',({}))", all.join(",")));
-    let representation = data.add(&format!(
-        "GEOMETRICALLY_BOUNDED_WIREFRAME_SHAPE_REPRESENTATION({title},({placement},{set}),{units})"
-    ));
+    for surface in &geometry.surfaces {
+        let items: Vec<String> = surface
+            .patches
+            .iter()
+            .map(|patch| surface_entity(&mut data, surface.name, patch))
+            .collect();
+        all.extend(items.iter().cloned());
+        layers.push((surface.name, items));
+    }
+    let representation = if geometry.surfaces.is_empty() {
+        let set = data.add(&format!("GEOMETRIC_CURVE_SET('',({}))", all.join(",")));
+        data.add(&format!(
+            "GEOMETRICALLY_BOUNDED_WIREFRAME_SHAPE_REPRESENTATION({title},({placement},{set}),{units})"
+        ))
+    } else {
+        let set = data.add(&format!("GEOMETRIC_SET('',({}))", all.join(",")));
+        data.add(&format!(
+            "GEOMETRICALLY_BOUNDED_SURFACE_SHAPE_REPRESENTATION({title},({placement},{set}),{units})"
+        ))
+    };
     data.add(&format!(
         "SHAPE_DEFINITION_REPRESENTATION({shape},{representation})"
     ));
@@ -122,42 +141,80 @@ impl Data {
     }
 }
 
-/// Adds a curve's control points and its complex entity; returns its
-/// reference.
-fn spline(data: &mut Data, name: &str, c: &NurbsCurve<3>) -> String {
-    let r = |x: f64| real(x, 'E');
-    let points: Vec<String> = c
-        .control_points()
-        .iter()
-        .map(|p| {
-            data.add(&format!(
-                "CARTESIAN_POINT('',({},{},{}))",
-                r(p[0]),
-                r(p[1]),
-                r(p[2])
-            ))
-        })
-        .collect();
-    let mut knots: Vec<f64> = Vec::new();
+/// A real in STEP's form.
+fn r(x: f64) -> String {
+    real(x, 'E')
+}
+
+/// Adds a `CARTESIAN_POINT`; returns its reference.
+fn point(data: &mut Data, p: [f64; 3]) -> String {
+    data.add(&format!(
+        "CARTESIAN_POINT('',({},{},{}))",
+        r(p[0]),
+        r(p[1]),
+        r(p[2])
+    ))
+}
+
+/// A knot vector as STEP writes it: the multiplicities and the distinct
+/// knots, each a list `(…)`.
+fn knots_with_multiplicities(knots: &KnotVector) -> (String, String) {
+    let mut values: Vec<f64> = Vec::new();
     let mut multiplicities: Vec<usize> = Vec::new();
-    for &u in c.knots().as_slice() {
-        if knots.last() == Some(&u) {
+    for &u in knots.as_slice() {
+        if values.last() == Some(&u) {
             if let Some(m) = multiplicities.last_mut() {
                 *m += 1;
             }
         } else {
-            knots.push(u);
+            values.push(u);
             multiplicities.push(1);
         }
     }
-    let list = |v: Vec<String>| v.join(",");
+    let m: Vec<String> = multiplicities.iter().map(ToString::to_string).collect();
+    let v: Vec<String> = values.iter().map(|&u| r(u)).collect();
+    (format!("({})", m.join(",")), format!("({})", v.join(",")))
+}
+
+/// Adds a curve's control points and its complex entity; returns its
+/// reference.
+fn spline(data: &mut Data, name: &str, c: &NurbsCurve<3>) -> String {
+    let points: Vec<String> = c.control_points().iter().map(|&p| point(data, p)).collect();
+    let weights: Vec<String> = c.weights().iter().map(|&w| r(w)).collect();
+    let (m, u) = knots_with_multiplicities(c.knots());
     data.add(&format!(
-        "(BOUNDED_CURVE() B_SPLINE_CURVE({},({}),.UNSPECIFIED.,.F.,.F.) B_SPLINE_CURVE_WITH_KNOTS(({}),({}),.UNSPECIFIED.) CURVE() GEOMETRIC_REPRESENTATION_ITEM() RATIONAL_B_SPLINE_CURVE(({})) REPRESENTATION_ITEM('{name}'))",
+        "(BOUNDED_CURVE() B_SPLINE_CURVE({},({}),.UNSPECIFIED.,.F.,.F.) B_SPLINE_CURVE_WITH_KNOTS({m},{u},.UNSPECIFIED.) CURVE() GEOMETRIC_REPRESENTATION_ITEM() RATIONAL_B_SPLINE_CURVE(({})) REPRESENTATION_ITEM('{name}'))",
         c.degree(),
         points.join(","),
-        list(multiplicities.iter().map(ToString::to_string).collect()),
-        list(knots.iter().map(|&u| r(u)).collect()),
-        list(c.weights().iter().map(|&w| r(w)).collect()),
+        weights.join(","),
+    ))
+}
+
+/// Adds a surface's control points and its complex entity (ISO 10303-42
+/// `B_SPLINE_SURFACE_WITH_KNOTS` and `RATIONAL_B_SPLINE_SURFACE`: lists of
+/// rows along u, each row along v); returns its reference.
+fn surface_entity(data: &mut Data, name: &str, s: &NurbsSurface<3>) -> String {
+    let [nu, nv] = s.shape();
+    let [p, q] = s.degree();
+    let mut rows = Vec::with_capacity(nu);
+    let mut weight_rows = Vec::with_capacity(nu);
+    for i in 0..nu {
+        let row: Vec<String> = (0..nv)
+            .map(|j| point(data, s.control_point(i, j)))
+            .collect();
+        rows.push(format!("({})", row.join(",")));
+        let w: Vec<String> = s.weights()[i * nv..(i + 1) * nv]
+            .iter()
+            .map(|&w| r(w))
+            .collect();
+        weight_rows.push(format!("({})", w.join(",")));
+    }
+    let (mu, ku) = knots_with_multiplicities(s.knots(Direction::U));
+    let (mv, kv) = knots_with_multiplicities(s.knots(Direction::V));
+    data.add(&format!(
+        "(BOUNDED_SURFACE() B_SPLINE_SURFACE({p},{q},({}),.UNSPECIFIED.,.F.,.F.,.F.) B_SPLINE_SURFACE_WITH_KNOTS({mu},{mv},{ku},{kv},.UNSPECIFIED.) GEOMETRIC_REPRESENTATION_ITEM() RATIONAL_B_SPLINE_SURFACE(({})) REPRESENTATION_ITEM('{name}') SURFACE())",
+        rows.join(","),
+        weight_rows.join(","),
     ))
 }
 

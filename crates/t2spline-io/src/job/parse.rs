@@ -10,7 +10,7 @@ use std::collections::HashSet;
 
 use serde_json::{Map, Value};
 use t2spline::fit::FuzzyData;
-use t2spline::job::{check_samples, Job, Model, DEFAULT_SAMPLES};
+use t2spline::job::{check_samples, Job, Model, Samples, DEFAULT_SAMPLES};
 use t2spline::{Alpha, Axis, FuzzyCurve, Height, KnotVector, Nt2Number, Nt2Point, Place};
 
 use super::limits::{
@@ -153,6 +153,9 @@ fn syntax_problem(text: &str, e: &serde_json::Error) -> Problem {
         "number out of range" => {
             "number out of range: beyond ±1.8e308, the range of a 64-bit float".to_owned()
         }
+        m if looks_like_csv(text) => format!(
+            "JSON syntax error: {m}; this looks like CSV (comma- or semicolon-separated values), not a JSON file: `t2spline fuzzify READINGS.csv -o DATA.json` turns repeated readings into a data file, and `t2spline fit READINGS.csv` fits them"
+        ),
         m => format!("JSON syntax error: {m}"),
     };
     // serde_json counts bytes; editors count characters.
@@ -166,6 +169,28 @@ fn syntax_problem(text: &str, e: &serde_json::Error) -> Problem {
         line_column: Some((e.line().max(1), column)),
         message,
     }
+}
+
+/// Whether `text` looks like a table of comma- or semicolon-separated values:
+/// its first line is not JSON's `{` or `[` and has a separator, and the second
+/// line (if any) has as many.
+fn looks_like_csv(text: &str) -> bool {
+    let mut lines = text.lines().map(str::trim).filter(|l| !l.is_empty());
+    let Some(first) = lines.next() else {
+        return false;
+    };
+    if first.starts_with(['{', '[']) {
+        return false;
+    }
+    let count = |line: &str, sep: char| line.matches(sep).count();
+    [',', ';'].into_iter().any(|sep| {
+        let n = count(first, sep);
+        n > 0
+            && lines
+                .clone()
+                .next()
+                .is_none_or(|second| count(second, sep) == n)
+    })
 }
 
 /// What kind of JSON value `v` is, for messages.
@@ -463,7 +488,7 @@ impl Walker {
             Ok(model) => Some(Job {
                 description: header.description,
                 alpha: header.alpha,
-                samples: samples.unwrap_or(DEFAULT_SAMPLES),
+                samples: Samples::Along(samples.unwrap_or(DEFAULT_SAMPLES)),
                 model,
             }),
             Err(e) => {

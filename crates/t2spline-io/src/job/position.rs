@@ -15,6 +15,7 @@ use std::collections::{HashMap, HashSet};
 use std::fmt::Write;
 
 use super::limits::MAX_PROBLEMS;
+use crate::printable::push_escaped;
 
 /// A line and a column, both from 1.
 pub type LineColumn = (usize, usize);
@@ -56,20 +57,11 @@ pub(crate) fn quote(key: &str) -> String {
         match c {
             '"' => out.push_str("\\\""),
             '\\' => out.push_str("\\\\"),
-            c if c.is_control() || is_bidi_control(c) => {
-                // Writing to a String cannot fail.
-                let _ = write!(out, "\\u{:04x}", u32::from(c));
-            }
-            c => out.push(c),
+            c => push_escaped(&mut out, c),
         }
     }
     out.push('"');
     out
-}
-
-/// Characters that reorder the text around them on display (Trojan Source).
-fn is_bidi_control(c: char) -> bool {
-    matches!(c, '\u{061c}' | '\u{200e}' | '\u{200f}' | '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}')
 }
 
 /// A key that appears twice in one object.

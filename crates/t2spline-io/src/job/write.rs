@@ -1,8 +1,8 @@
 //! Jobs written back as job files (SPEC §8).
 
 use serde_json::{json, Map, Value};
-use t2spline::job::{Job, Model, ModelVisitor};
-use t2spline::{Axis, FuzzyCurve, Layer, Nt2Point};
+use t2spline::job::{Job, Model, ModelVisitor, Samples};
+use t2spline::{Axis, Direction, FuzzyCurve, FuzzySurface, Layer, Nt2Point};
 
 /// The job as JSON in canonical form: explicit weights and knots, and every
 /// number with its own `lower_height`. Parsing it gives back an equal job.
@@ -27,7 +27,11 @@ pub fn job_json(job: &Job) -> Value {
             if let Some(a) = job.alpha {
                 out.insert("alpha".into(), json!(a.get()));
             }
-            out.insert("samples".into(), json!(job.samples));
+            let samples = match job.samples {
+                Samples::Along(n) => json!(n),
+                Samples::Grid(pair) => json!(pair),
+            };
+            out.insert("samples".into(), samples);
         }
         out.insert(key, value);
     }
@@ -35,8 +39,9 @@ pub fn job_json(job: &Job) -> Value {
 }
 
 /// The model's keys of a job file, in the order of SPEC §8: `degree`,
-/// `weights`, `knots`, `points`; a number's `lower_height` is left out when it
-/// equals `top_height`.
+/// `weights`, `knots`, `points` (for a surface, SPEC §9: `degree` a pair,
+/// `weights` and `points` rows of the net, `knots` an object with `u` and
+/// `v`); a number's `lower_height` is left out when it equals `top_height`.
 pub(crate) fn model_json(model: &Model, top_height: Option<f64>) -> Map<String, Value> {
     struct Keys(Option<f64>);
     impl ModelVisitor for Keys {
@@ -48,6 +53,33 @@ pub(crate) fn model_json(model: &Model, top_height: Option<f64>) -> Map<String, 
             out.insert("knots".into(), json!(c.knots().as_slice()));
             let points = c.points().iter().map(|p| point_json(p, self.0)).collect();
             out.insert("points".into(), Value::Array(points));
+            out
+        }
+        fn surface<const D: usize>(self, s: &FuzzySurface<D>) -> Map<String, Value> {
+            let [_, nv] = s.shape();
+            let rows = |values: Vec<Value>| -> Value {
+                Value::Array(
+                    values
+                        .chunks(nv.max(1))
+                        .map(|r| Value::Array(r.to_vec()))
+                        .collect(),
+                )
+            };
+            let mut out = Map::new();
+            out.insert("degree".into(), json!(s.degree()));
+            out.insert(
+                "weights".into(),
+                rows(s.weights().iter().map(|w| json!(w)).collect()),
+            );
+            out.insert(
+                "knots".into(),
+                json!({
+                    "u": s.knots(Direction::U).as_slice(),
+                    "v": s.knots(Direction::V).as_slice(),
+                }),
+            );
+            let points = s.points().iter().map(|p| point_json(p, self.0)).collect();
+            out.insert("points".into(), rows(points));
             out
         }
     }

@@ -19,7 +19,7 @@
 
 #![allow(dead_code)]
 
-use t2spline::job::{Job, Settings};
+use t2spline::job::{Job, Parameters, Samples, Settings, Spline};
 use t2spline::{Alpha, Layer};
 use t2spline_io::job::read_text_from;
 use t2spline_io::{check_finite, render_csv, write_json_pretty, Error};
@@ -107,7 +107,10 @@ pub fn check_job(job: &Job) {
     let alpha = job
         .alpha
         .unwrap_or_else(|| Alpha::try_new(0.5).expect("0.5 is a level"));
-    let samples = job.samples.min(SAMPLES);
+    let samples = match job.samples {
+        Samples::Along(n) => Samples::Along(n.min(SAMPLES)),
+        Samples::Grid([u, v]) => Samples::Grid([u.min(SAMPLES), v.min(SAMPLES)]),
+    };
     let result = job
         .run(&Settings {
             alpha,
@@ -118,11 +121,22 @@ pub fn check_job(job: &Job) {
     if let Err(e) = check_finite(&result) {
         panic!("{e}");
     }
-    let c = &result.curves;
-    assert_eq!(c.params.len(), samples);
-    assert_eq!(c.params.first(), Some(&result.domain[0]));
-    assert_eq!(c.params.last(), Some(&result.domain[1]));
-    for i in 0..samples {
+    let c = &result.samples;
+    let count = samples.count();
+    assert_eq!(c.params.count(), count);
+    // Parameters from the start to exactly the end of the domain.
+    let ranges: Vec<(&[f64], [f64; 2])> = match (&c.params, &result.spline) {
+        (Parameters::Along(t), Spline::Curve { domain, .. }) => vec![(t, *domain)],
+        (Parameters::Grid { u, v }, Spline::Surface { domain, .. }) => {
+            vec![(u, domain[0]), (v, domain[1])]
+        }
+        _ => panic!("parameters of another kind than the spline"),
+    };
+    for (params, [a, b]) in ranges {
+        assert_eq!(params.first(), Some(&a));
+        assert_eq!(params.last(), Some(&b));
+    }
+    for i in 0..count {
         for k in 0..result.dimension {
             let layer = |l: Layer| c.layer(l).coord(k)[i];
             let v: Vec<f64> = Layer::ALL.iter().map(|&l| layer(l)).collect();
@@ -136,7 +150,7 @@ pub fn check_job(job: &Job) {
     let back: serde_json::Value = serde_json::from_slice(&json).expect("the result is JSON");
     assert!(back.is_object());
     for (name, csv) in render_csv(&result) {
-        assert_eq!(csv.lines().count(), samples + 1, "{name}");
+        assert_eq!(csv.lines().count(), count + 1, "{name}");
         assert!(
             !csv.contains("NaN") && !csv.contains("inf"),
             "{name}: {csv}"

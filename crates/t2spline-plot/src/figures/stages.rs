@@ -56,7 +56,7 @@ fn name_labels(p: &mut Panel, points: &Points, ij: (usize, usize), text: impl Fn
 /// layers (light) and between the lower layers (darker).
 #[must_use]
 pub fn stage1_figure(r: &RunOutput) -> Figure {
-    let (c, cp) = (&r.curves, &r.control_points);
+    let (c, cp) = (&r.samples, &r.control_points);
     let layer_curve = |l: Layer| c.layers.get(l).unwrap_or(&c.crisp);
     let layer_points = |l: Layer| cp.layers.get(l).unwrap_or(&cp.crisp);
     let panels = curve_panels(r.dimension)
@@ -152,8 +152,9 @@ pub fn stage1_figure(r: &RunOutput) -> Figure {
         "Stage 1: normal type-2 fuzzy rational B-spline curve",
         format!(
             "order {}, weights ({}); bars: upper ⊃ primary ⊃ lower interval of each coordinate",
-            r.order,
-            r.weights
+            r.spline.orders()[0],
+            r.spline
+                .weights()
                 .iter()
                 .map(|w| short(*w, 4))
                 .collect::<Vec<_>>()
@@ -168,7 +169,7 @@ pub fn stage1_figure(r: &RunOutput) -> Figure {
 /// Lower layers are drawn only where every number has a lower cut.
 #[must_use]
 pub fn stage2_figure(r: &RunOutput, heights: &[f64]) -> Figure {
-    let (c, cp) = (&r.curves, &r.control_points);
+    let (c, cp) = (&r.samples, &r.control_points);
     let curve = |l: Layer| -> Option<&Points> {
         match c.alpha_cut.get(l) {
             None => Some(&c.crisp),
@@ -276,7 +277,7 @@ pub fn stage2_figure(r: &RunOutput, heights: &[f64]) -> Figure {
 /// through the left and the right values.
 #[must_use]
 pub fn stage3_figure(r: &RunOutput, heights: &[f64]) -> Figure {
-    let (c, cp) = (&r.curves, &r.control_points);
+    let (c, cp) = (&r.samples, &r.control_points);
     let left_marker = Marker::filled(Shape::Triangle, 7.5, PURPLE);
     let right_marker = Marker::filled(Shape::Diamond, 8.0, PURPLE);
     let spread = Stroke::solid(GREY, 1.0);
@@ -355,7 +356,7 @@ pub fn stage3_figure(r: &RunOutput, heights: &[f64]) -> Figure {
                 },
             );
             name_labels(&mut p, &cp.crisp, ij, |k| {
-                format!("{}, w = {}", point_name(k), short(r.weights[k], 4))
+                format!("{}, w = {}", point_name(k), short(r.spline.weights()[k], 4))
             });
             p
         })
@@ -397,15 +398,15 @@ pub fn stage3_figure(r: &RunOutput, heights: &[f64]) -> Figure {
 /// Only if the library cannot evaluate a curve at the result's `max_at`, which
 /// lies in the domain by construction.
 pub fn stage4_figure(job: &Job, r: &RunOutput, detail: bool) -> Result<Figure, Error> {
-    let (c, cp, e) = (&r.curves, &r.control_points, &r.error);
+    let (c, cp, e) = (&r.samples, &r.control_points, &r.error);
     let alpha = t2spline::Alpha::try_new(r.alpha)?;
-    let (at_crisp, at_solution) = data::curves_at(&job.model, alpha, e.max_at)?;
+    let (at_crisp, at_solution) = data::curves_at(&job.model, alpha, data::max_at(r))?;
     let distance_stroke = Stroke::solid(BLACK, 1.4);
     let end_marker = Marker::open(Shape::Circle, 4.0, BLACK);
     let text = format!(
         "max distance {} at t = {}",
         short(e.max, 4),
-        short(e.max_at, 4)
+        short(data::max_at(r), 4)
     );
     let mut panels: Vec<Panel> = curve_panels(r.dimension)
         .into_iter()
@@ -509,7 +510,7 @@ pub fn stage4_figure(job: &Job, r: &RunOutput, detail: bool) -> Result<Figure, E
             "α = {}: max distance {} at t = {}, rms distance {}",
             short(r.alpha, 4),
             short(e.max, 4),
-            short(e.max_at, 4),
+            short(data::max_at(r), 4),
             short(e.rms, 4)
         ),
         panels,
@@ -519,7 +520,7 @@ pub fn stage4_figure(job: &Job, r: &RunOutput, detail: bool) -> Result<Figure, E
 
 /// A square window around the largest distance, a few times its size.
 fn detail_panel(r: &RunOutput, ends: [&[f64]; 2], stroke: &Stroke, marker: &Marker) -> Panel {
-    let (c, cp) = (&r.curves, &r.control_points);
+    let (c, cp) = (&r.samples, &r.control_points);
     let mid = [
         0.5 * (ends[0][0] + ends[1][0]),
         0.5 * (ends[0][1] + ends[1][1]),
@@ -533,7 +534,7 @@ fn detail_panel(r: &RunOutput, ends: [&[f64]; 2], stroke: &Stroke, marker: &Mark
         });
     let half = (4.0 * r.error.max).max(0.01 * (span[1] - span[0]));
     let mut p = Panel::curves("x", "y");
-    p.title = Some(format!("detail around t = {}", short(r.error.max_at, 4)));
+    p.title = Some(format!("detail around t = {}", short(data::max_at(r), 4)));
     p.x_range = Some([mid[0] - half, mid[0] + half]);
     p.y_range = Some([mid[1] - half, mid[1] + half]);
     let ij = (0, 1);

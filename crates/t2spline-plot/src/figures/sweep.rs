@@ -47,7 +47,7 @@ pub fn sweep_figure(job: &Job) -> Result<crate::scene::Figure, crate::Error> {
                 p.push(
                     format!("curve-{}", short(*a, 2)),
                     Mark::Line {
-                        points: project(&r.curves.defuzzified, ij),
+                        points: project(&r.samples.defuzzified, ij),
                         stroke: Stroke::solid(viridis(*a), 1.5),
                     },
                 );

@@ -16,7 +16,7 @@ pub mod tables;
 use std::fmt::Write as _;
 
 use serde_json::{json, Value};
-use t2spline::job::{Job, RunOutput};
+use t2spline::job::{Job, RunOutput, Spline};
 use t2spline::{Alpha, Axis, Layer};
 
 use crate::figures::{
@@ -198,7 +198,7 @@ fn fuzzy_points_table(job: &Job, r: &RunOutput) -> String {
                 s,
                 "<tr><th scope=\"row\">{k}</th><th scope=\"row\">{}</th><td>{}</td>",
                 axis.name(),
-                tables::number_text(r.weights.get(k).copied())
+                tables::number_text(r.spline.weights().get(k).copied())
             );
             for l in Layer::ALL {
                 let points = r
@@ -231,6 +231,15 @@ struct Page {
 impl Page {
     fn header(&mut self, job: &Job, r: &RunOutput, heights: &[f64]) {
         let title = "Normal type-2 fuzzy rational B-spline curve";
+        let curve = match &r.spline {
+            Spline::Curve {
+                order,
+                degree,
+                knots,
+                ..
+            } => (*order, *degree, knots.as_slice()),
+            Spline::Surface { .. } => (0, 0, &[][..]),
+        };
         let _ = write!(
             self.html,
             "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>t2spline report: {}</title>\n<style>\n{}</style>\n</head>\n<body>\n<header>\n<h1>{title}</h1>\n",
@@ -245,10 +254,10 @@ impl Page {
             "<p class=\"facts\">{}-D, {} control points, order {} (degree {}), weights ({}), knots ({}), lower heights h: {}.</p>\n</header>",
             r.dimension,
             r.control_points.crisp.len(),
-            r.order,
-            r.degree,
-            join(&r.weights),
-            join(&r.knots),
+            curve.0,
+            curve.1,
+            join(&r.spline.weights()),
+            join(curve.2),
             join(heights)
         );
     }

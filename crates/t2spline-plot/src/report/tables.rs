@@ -114,7 +114,7 @@ pub fn value(r: &RunOutput, key: &str) -> Option<f64> {
     let idx = |s: &str| s.parse::<usize>().ok();
     match parts.as_slice() {
         ["error", "max"] => Some(r.error.max),
-        ["error", "max_at"] => Some(r.error.max_at),
+        ["error", "max_at"] => r.error.max_at.t(),
         ["error", "rms"] => Some(r.error.rms),
         [name, k, a] => {
             let (k, a) = (idx(k)?, idx(a)?);

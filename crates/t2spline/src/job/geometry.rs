@@ -11,19 +11,21 @@
 //! | `defuzzified` | the crisp type-2 solution at the run's alpha | SPEC §7 stage 4 |
 //! | `upper_left`, …, `upper_right` | the six other layer curves, before the cut | SPEC §7 stage 1 |
 //!
-//! Points are lifted to three coordinates (`z = 0` for planar jobs), as every
-//! CAD format stores them. A curve whose knot vector has an interior knot of
+//! A surface job (SPEC §9) gives the same names to its surfaces: the crisp,
+//! the defuzzified and the six layer surfaces. Points are lifted to three
+//! coordinates (`z = 0` for planar jobs), as every CAD format stores them. A curve whose knot vector has an interior knot of
 //! full multiplicity (order `k`) jumps there (SPEC §6); CAD formats allow at
 //! most degree `p = k − 1` inside the knot vector (ISO 10303-42's rule for
 //! `B_SPLINE_CURVE_WITH_KNOTS`), so such a curve is given as its continuous
 //! pieces, cut at the jumps without arithmetic: each piece keeps its control
 //! points, weights and knots bit for bit, and its parameters. At a jump the
-//! run's value is the right piece's (SPEC §6: from the right).
+//! run's value is the right piece's (SPEC §6: from the right). Surfaces are
+//! cut the same way in each direction, into patches.
 
 use crate::error::Error;
 use crate::fuzzy::{Alpha, Layer};
-use crate::nurbs::{KnotVector, NurbsCurve};
-use crate::pipeline::FuzzyCurve;
+use crate::nurbs::{Direction, KnotVector, NurbsCurve, NurbsSurface};
+use crate::pipeline::{FuzzyCurve, FuzzySurface};
 
 use super::{Job, ModelVisitor, Settings};
 
@@ -37,24 +39,37 @@ pub struct NamedCurve {
     pub pieces: Vec<NurbsCurve<3>>,
 }
 
-/// The exact geometry of a run: every curve, named, in 3-D.
-///
-/// Models with surfaces will add their named surfaces beside the curves; the
-/// struct is `non_exhaustive` so that this is no breaking change.
+/// One named surface of a run, as patches without jumps.
+#[derive(Clone, Debug, PartialEq)]
+pub struct NamedSurface {
+    /// `crisp`, `defuzzified`, or a layer's name (`upper_left`, …).
+    pub name: &'static str,
+    /// The surface, cut at interior knots of full multiplicity in either
+    /// direction, row by row of patches (along u, then v); one patch when it
+    /// has none. Each patch keeps the surface's parameters.
+    pub patches: Vec<NurbsSurface<3>>,
+}
+
+/// The exact geometry of a run: every curve (of a curve job) or surface (of
+/// a surface job), named, in 3-D.
 #[derive(Clone, Debug, PartialEq)]
 #[non_exhaustive]
 pub struct Geometry {
     /// The dimension of the job's points (2 or 3); planar jobs have `z = 0`.
     pub dimension: usize,
-    /// `crisp`, `defuzzified`, then the six non-crisp layers in SPEC §1 order.
+    /// `crisp`, `defuzzified`, then the six non-crisp layers in SPEC §1 order;
+    /// empty for a surface job.
     pub curves: Vec<NamedCurve>,
+    /// The same names for the surfaces of a surface job; empty for a curve
+    /// job.
+    pub surfaces: Vec<NamedSurface>,
 }
 
 impl Geometry {
-    /// The same geometry with every piece clamped
+    /// The same geometry with every curve piece clamped
     /// ([`NurbsCurve::clamped`]: knot insertion at the ends of the domain,
     /// so each piece starts and ends at its first and last control point);
-    /// the curves are unchanged to rounding.
+    /// the curves are unchanged to rounding, surfaces are left as they are.
     #[must_use]
     pub fn clamped(&self) -> Geometry {
         Geometry {
@@ -67,16 +82,25 @@ impl Geometry {
                     pieces: c.pieces.iter().map(NurbsCurve::clamped).collect(),
                 })
                 .collect(),
+            surfaces: self.surfaces.clone(),
         }
     }
 
-    /// The degree of the curves (all share it).
+    /// The smallest degree of the curves or of the surfaces in either
+    /// direction (all curves, and all surfaces, share their degrees).
     #[must_use]
     pub fn degree(&self) -> usize {
-        self.curves
+        let curve = self
+            .curves
             .first()
             .and_then(|c| c.pieces.first())
-            .map_or(0, NurbsCurve::degree)
+            .map(NurbsCurve::degree);
+        let surface = self
+            .surfaces
+            .first()
+            .and_then(|s| s.patches.first())
+            .map(|s| s.degree().into_iter().min().unwrap_or(0));
+        curve.or(surface).unwrap_or(0)
     }
 }
 
@@ -117,7 +141,7 @@ impl ModelVisitor for Exact {
     type Output = Result<Geometry, Error>;
 
     fn curve<const D: usize>(self, curve: &FuzzyCurve<D>) -> Self::Output {
-        let mut named = vec![
+        let mut named: Vec<(&'static str, NurbsCurve<D>)> = vec![
             ("crisp", curve.crisp_curve()),
             ("defuzzified", curve.solve(self.0).defuzzified_curve()),
         ];
@@ -139,17 +163,127 @@ impl ModelVisitor for Exact {
         Ok(Geometry {
             dimension: D,
             curves,
+            surfaces: Vec::new(),
+        })
+    }
+
+    fn surface<const D: usize>(self, surface: &FuzzySurface<D>) -> Self::Output {
+        let mut named: Vec<(&'static str, NurbsSurface<D>)> = vec![
+            ("crisp", surface.crisp_surface()),
+            ("defuzzified", surface.solve(self.0).defuzzified_surface()),
+        ];
+        named.extend(
+            Layer::ALL
+                .into_iter()
+                .filter(|&l| l != Layer::Crisp)
+                .map(|l| (l.name(), surface.layer_surface(l))),
+        );
+        let surfaces = named
+            .into_iter()
+            .map(|(name, s)| {
+                Ok(NamedSurface {
+                    name,
+                    patches: continuous_patches(&lift_surface(&s)?)?,
+                })
+            })
+            .collect::<Result<_, Error>>()?;
+        Ok(Geometry {
+            dimension: D,
+            curves: Vec::new(),
+            surfaces,
         })
     }
 }
 
+/// A point with three coordinates: its own, then zeros.
+fn lift_point<const D: usize>(p: &[f64; D]) -> [f64; 3] {
+    std::array::from_fn(|i| p.get(i).copied().unwrap_or(0.0))
+}
+
+/// The surface with three coordinates.
+fn lift_surface<const D: usize>(s: &NurbsSurface<D>) -> Result<NurbsSurface<3>, Error> {
+    let [nu, nv] = s.shape();
+    let points = (0..nu)
+        .map(|i| {
+            (0..nv)
+                .map(|j| lift_point(&s.control_point(i, j)))
+                .collect()
+        })
+        .collect();
+    let weights = s.weights().chunks(nv).map(<[f64]>::to_vec).collect();
+    NurbsSurface::try_new(
+        points,
+        weights,
+        [s.knots(Direction::U).clone(), s.knots(Direction::V).clone()],
+    )
+}
+
+/// The index ranges of control points of the continuous pieces of a knot
+/// vector: cut at every interior knot of full multiplicity (see
+/// [`continuous_pieces`]).
+fn piece_ranges(knots: &KnotVector) -> Vec<(usize, usize)> {
+    let k = knots.degree() + 1;
+    let u = knots.as_slice();
+    let domain = knots.domain();
+    let mut cuts = Vec::new();
+    let mut f = 0;
+    while f < u.len() {
+        let run = u[f..].iter().take_while(|&&v| v == u[f]).count();
+        if run == k && domain.start < u[f] && u[f] < domain.end {
+            cuts.push(f);
+        }
+        f += run;
+    }
+    let mut ranges = Vec::with_capacity(cuts.len() + 1);
+    let mut start = 0;
+    for end in cuts.into_iter().chain([knots.count()]) {
+        ranges.push((start, end));
+        start = end;
+    }
+    ranges
+}
+
+/// The knot vector of the piece whose control points are `start..end`.
+fn piece_knots(knots: &KnotVector, (start, end): (usize, usize)) -> Result<KnotVector, Error> {
+    let k = knots.degree() + 1;
+    KnotVector::try_new(
+        knots.as_slice()[start..end + k].to_vec(),
+        k - 1,
+        end - start,
+    )
+}
+
+/// The surface cut at every interior knot of full multiplicity in u and in
+/// v: the patches of the product of both directions' pieces, row by row.
+fn continuous_patches(s: &NurbsSurface<3>) -> Result<Vec<NurbsSurface<3>>, Error> {
+    let (ku, kv) = (s.knots(Direction::U), s.knots(Direction::V));
+    let (ru, rv) = (piece_ranges(ku), piece_ranges(kv));
+    if ru.len() == 1 && rv.len() == 1 {
+        return Ok(vec![s.clone()]);
+    }
+    let nv = s.shape()[1];
+    let mut patches = Vec::with_capacity(ru.len() * rv.len());
+    for &(u0, u1) in &ru {
+        for &(v0, v1) in &rv {
+            let points = (u0..u1)
+                .map(|i| (v0..v1).map(|j| s.control_point(i, j)).collect())
+                .collect();
+            let weights = (u0..u1)
+                .map(|i| s.weights()[i * nv + v0..i * nv + v1].to_vec())
+                .collect();
+            patches.push(NurbsSurface::try_new(
+                points,
+                weights,
+                [piece_knots(ku, (u0, u1))?, piece_knots(kv, (v0, v1))?],
+            )?);
+        }
+    }
+    Ok(patches)
+}
+
 /// The curve with three coordinates: its own, then zeros.
 fn lift<const D: usize>(c: &NurbsCurve<D>) -> Result<NurbsCurve<3>, Error> {
-    let points = c
-        .control_points()
-        .iter()
-        .map(|p| std::array::from_fn(|i| p.get(i).copied().unwrap_or(0.0)))
-        .collect();
+    let points = c.control_points().iter().map(lift_point).collect();
     NurbsCurve::try_new(points, c.weights().to_vec(), c.knots().clone())
 }
 
@@ -163,34 +297,20 @@ fn lift<const D: usize>(c: &NurbsCurve<D>) -> Result<NurbsCurve<3>, Error> {
 /// The basis functions of the left piece are those of the curve that vanish
 /// right of `u`, and conversely: no coefficient changes.
 fn continuous_pieces(c: &NurbsCurve<3>) -> Result<Vec<NurbsCurve<3>>, Error> {
-    let k = c.order();
-    let u = c.knots().as_slice();
-    let domain = c.domain();
-    let mut cuts = Vec::new();
-    let mut f = 0;
-    while f < u.len() {
-        let run = u[f..].iter().take_while(|&&v| v == u[f]).count();
-        if run == k && domain.start < u[f] && u[f] < domain.end {
-            cuts.push(f);
-        }
-        f += run;
-    }
-    if cuts.is_empty() {
+    let ranges = piece_ranges(c.knots());
+    if ranges.len() == 1 {
         return Ok(vec![c.clone()]);
     }
-    let n = c.control_points().len();
-    let mut pieces = Vec::with_capacity(cuts.len() + 1);
-    let mut start = 0;
-    for end in cuts.into_iter().chain([n]) {
-        let knots = KnotVector::try_new(u[start..end + k].to_vec(), k - 1, end - start)?;
-        pieces.push(NurbsCurve::try_new(
-            c.control_points()[start..end].to_vec(),
-            c.weights()[start..end].to_vec(),
-            knots,
-        )?);
-        start = end;
-    }
-    Ok(pieces)
+    ranges
+        .into_iter()
+        .map(|(start, end)| {
+            NurbsCurve::try_new(
+                c.control_points()[start..end].to_vec(),
+                c.weights()[start..end].to_vec(),
+                piece_knots(c.knots(), (start, end))?,
+            )
+        })
+        .collect()
 }
 
 #[cfg(test)]

@@ -19,12 +19,12 @@
 //!     alpha: Some(Alpha::try_new(0.5)?),
 //!     ..Job::new(Model::Planar(FuzzyCurve::try_new(1, points, vec![1.0, 1.0], None)?))
 //! };
-//! let settings = job.settings(&Overrides { samples: Some(3), ..Overrides::default() })?;
+//! let settings = job.settings(&Overrides { samples: Some(vec![3]), ..Overrides::default() })?;
 //! let out = job.run(&settings)?;
-//! assert_eq!(out.curves.params, [0.0, 0.5, 1.0]);
-//! assert_eq!(out.curves.crisp.point(1), Some(vec![1.5, 2.0]));
+//! assert_eq!(out.samples.params.along(), [0.0, 0.5, 1.0]);
+//! assert_eq!(out.samples.crisp.point(1), Some(vec![1.5, 2.0]));
 //! // Right spreads exceed left spreads: the solution lies right of the crisp curve.
-//! assert!(out.curves.defuzzified.coord(0)[1] > 1.5);
+//! assert!(out.samples.defuzzified.coord(0)[1] > 1.5);
 //! # Ok::<(), t2spline::Error>(())
 //! ```
 
@@ -32,21 +32,24 @@ mod geometry;
 mod output;
 mod points;
 mod run;
+#[cfg(feature = "serde")]
+mod serialize;
 mod settings;
 
 pub use crate::error::Setting;
 pub use geometry::{Geometry, NamedCurve};
 pub use output::{
-    ControlPoints, CrispDefuzzified, Curves, LeftRight, Regime, RunOutput, SixLayers,
+    ControlPoints, CrispDefuzzified, Distance, LeftRight, Parameter, Parameters, Regime, RunOutput,
+    Sampled, SixLayers, Spline,
 };
 pub use points::Points;
 pub use settings::{
-    check_derivative_order, check_samples, Overrides, Settings, DEFAULT_SAMPLES,
-    MAX_DERIVATIVE_ORDER, MAX_SAMPLES,
+    check_derivative_order, check_samples, Overrides, Samples, Settings, DEFAULT_SAMPLES,
+    DEFAULT_SURFACE_SAMPLES, MAX_DERIVATIVE_ORDER, MAX_SAMPLES,
 };
 
-use crate::fuzzy::{Alpha, Axis, Nt2Number};
-use crate::pipeline::FuzzyCurve;
+use crate::fuzzy::{Alpha, Axis, Nt2Number, Nt2Point};
+use crate::pipeline::{FuzzyCurve, FuzzySurface};
 
 /// A validated job (SPEC §8): the fuzzy model and how to run it.
 #[derive(Clone, Debug, PartialEq)]
@@ -55,28 +58,33 @@ pub struct Job {
     pub description: Option<String>,
     /// The level alpha; may be left to the front end ([`Overrides::alpha`]).
     pub alpha: Option<Alpha>,
-    /// Number of uniform parameters at which curves are sampled (2 ..=
-    /// [`MAX_SAMPLES`], checked by [`Job::settings`]).
-    pub samples: usize,
+    /// Uniform parameters at which curves or surfaces are sampled (checked by
+    /// [`Job::settings`]).
+    pub samples: Samples,
     /// The fuzzy model.
     pub model: Model,
 }
 
 impl Job {
-    /// A job of `model` with the defaults of SPEC §8: no description, alpha
-    /// left to the front end, [`DEFAULT_SAMPLES`] samples.
+    /// A job of `model` with the defaults of SPEC §8 and §9: no description,
+    /// alpha left to the front end, [`DEFAULT_SAMPLES`] samples along a curve
+    /// or a grid of [`DEFAULT_SURFACE_SAMPLES`]² over a surface.
     #[must_use]
     pub fn new(model: Model) -> Job {
+        let samples = match model {
+            Model::Surface(_) => Samples::Grid([DEFAULT_SURFACE_SAMPLES; 2]),
+            _ => Samples::Along(DEFAULT_SAMPLES),
+        };
         Job {
             description: None,
             alpha: None,
-            samples: DEFAULT_SAMPLES,
+            samples,
             model,
         }
     }
 }
 
-/// The fuzzy model of a job: a curve in the plane or in space.
+/// The fuzzy model of a job: a curve in the plane or in space, or a surface.
 ///
 /// Code that works for every kind of model is written once, as a
 /// [`ModelVisitor`], and [`Model::visit`] is the one place that tells the
@@ -88,6 +96,8 @@ pub enum Model {
     Planar(FuzzyCurve<2>),
     /// A curve through points with coordinates `x`, `y`, `z`.
     Spatial(FuzzyCurve<3>),
+    /// A surface over a net of points with coordinates `x`, `y`, `z` (SPEC §9).
+    Surface(FuzzySurface<3>),
 }
 
 /// Work done on any [`Model`]: one generic method per kind of model.
@@ -96,6 +106,8 @@ pub trait ModelVisitor {
     type Output;
     /// The work on a fuzzy curve of `D` dimensions.
     fn curve<const D: usize>(self, curve: &FuzzyCurve<D>) -> Self::Output;
+    /// The work on a fuzzy surface of `D` dimensions.
+    fn surface<const D: usize>(self, surface: &FuzzySurface<D>) -> Self::Output;
 }
 
 impl Model {
@@ -104,83 +116,111 @@ impl Model {
         match self {
             Model::Planar(c) => work.curve(c),
             Model::Spatial(c) => work.curve(c),
+            Model::Surface(s) => work.surface(s),
         }
+    }
+
+    /// The numbers of every fuzzy control point (a surface's net row by row),
+    /// one per coordinate.
+    #[must_use]
+    pub fn numbers(&self) -> Vec<Vec<Nt2Number>> {
+        self.visit(Numbers)
+    }
+
+    /// Whether the model is a surface.
+    #[must_use]
+    pub fn is_surface(&self) -> bool {
+        matches!(self, Model::Surface(_))
+    }
+
+    /// One line on the model: `2-D curve, 4 control points, order 3` or
+    /// `surface, 5 × 4 control points, orders 3 × 2`.
+    #[must_use]
+    pub fn summary(&self) -> String {
+        struct Summary;
+        impl ModelVisitor for Summary {
+            type Output = String;
+            fn curve<const D: usize>(self, c: &FuzzyCurve<D>) -> String {
+                format!(
+                    "{D}-D curve, {} control points, order {}",
+                    c.points().len(),
+                    c.order()
+                )
+            }
+            fn surface<const D: usize>(self, s: &FuzzySurface<D>) -> String {
+                let ([nu, nv], [p, q]) = (s.shape(), s.degree());
+                format!(
+                    "{D}-D surface, {nu} × {nv} control points, orders {} × {}",
+                    p + 1,
+                    q + 1
+                )
+            }
+        }
+        self.visit(Summary)
     }
 
     /// The number of coordinates of a point (2 or 3).
     #[must_use]
     pub fn dimension(&self) -> usize {
-        struct Dimension;
-        impl ModelVisitor for Dimension {
-            type Output = usize;
-            fn curve<const D: usize>(self, _: &FuzzyCurve<D>) -> usize {
-                D
-            }
-        }
         self.visit(Dimension)
     }
 
-    /// The number of fuzzy control points.
+    /// The number of fuzzy control points (of a surface: `nu · nv`).
     #[must_use]
     pub fn control_point_count(&self) -> usize {
-        struct Count;
-        impl ModelVisitor for Count {
-            type Output = usize;
-            fn curve<const D: usize>(self, c: &FuzzyCurve<D>) -> usize {
-                c.points().len()
-            }
-        }
-        self.visit(Count)
+        self.numbers().len()
     }
 
-    /// The order `k` (degree + 1).
-    #[must_use]
-    pub fn order(&self) -> usize {
-        struct Order;
-        impl ModelVisitor for Order {
-            type Output = usize;
-            fn curve<const D: usize>(self, c: &FuzzyCurve<D>) -> usize {
-                c.order()
-            }
-        }
-        self.visit(Order)
-    }
-
-    /// The fuzzy number of one coordinate of one control point; `None` if the
-    /// model has no such point or axis.
+    /// The fuzzy number of one coordinate of one control point (of a
+    /// surface: point `i·nv + j` of the net, row by row); `None` if the model
+    /// has no such point or axis.
     #[must_use]
     pub fn number(&self, point: usize, axis: Axis) -> Option<Nt2Number> {
-        struct Number(usize, Axis);
-        impl ModelVisitor for Number {
-            type Output = Option<Nt2Number>;
-            fn curve<const D: usize>(self, c: &FuzzyCurve<D>) -> Option<Nt2Number> {
-                c.points()
-                    .get(self.0)?
-                    .coords()
-                    .get(self.1.index())
-                    .copied()
-            }
-        }
-        self.visit(Number(point, axis))
+        self.numbers().get(point)?.get(axis.index()).copied()
     }
 
     /// The distinct lower heights of the model's numbers, ascending: the
     /// levels where the solution jumps (SPEC §3).
     #[must_use]
     pub fn heights(&self) -> Vec<f64> {
-        struct Heights;
-        impl ModelVisitor for Heights {
-            type Output = Vec<f64>;
-            fn curve<const D: usize>(self, c: &FuzzyCurve<D>) -> Vec<f64> {
-                c.points()
-                    .iter()
-                    .flat_map(|p| p.coords().iter().map(|x| x.height().get()))
-                    .collect()
-            }
-        }
-        let mut h = self.visit(Heights);
+        let mut h: Vec<f64> = self
+            .numbers()
+            .iter()
+            .flatten()
+            .map(|x| x.height().get())
+            .collect();
         h.sort_by(f64::total_cmp);
         h.dedup();
         h
+    }
+}
+
+/// [`Model::numbers`].
+struct Numbers;
+
+impl ModelVisitor for Numbers {
+    type Output = Vec<Vec<Nt2Number>>;
+    fn curve<const D: usize>(self, c: &FuzzyCurve<D>) -> Self::Output {
+        numbers_of(c.points())
+    }
+    fn surface<const D: usize>(self, s: &FuzzySurface<D>) -> Self::Output {
+        numbers_of(s.points())
+    }
+}
+
+fn numbers_of<const D: usize>(points: &[Nt2Point<D>]) -> Vec<Vec<Nt2Number>> {
+    points.iter().map(|p| p.coords().to_vec()).collect()
+}
+
+/// [`Model::dimension`].
+struct Dimension;
+
+impl ModelVisitor for Dimension {
+    type Output = usize;
+    fn curve<const D: usize>(self, _: &FuzzyCurve<D>) -> usize {
+        D
+    }
+    fn surface<const D: usize>(self, _: &FuzzySurface<D>) -> usize {
+        D
     }
 }

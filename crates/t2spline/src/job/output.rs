@@ -10,41 +10,155 @@
 use std::fmt;
 
 use crate::fuzzy::Layer;
-use crate::pipeline::Distance;
 
 use super::Points;
 
-/// Everything a run computes: the stages' control points, every curve sampled
-/// at uniform parameters, and the distance between the crisp and the
-/// defuzzified curve.
+/// Everything a run computes: the stages' control points, every curve (or
+/// surface) sampled at uniform parameters, and the distance between the crisp
+/// and the defuzzified one.
+///
+/// Curves and surfaces share every stage's containers ([`Points`], lists for
+/// a curve, grids for a surface); they differ in the spline's definition
+/// ([`Spline`]), the parameters ([`Parameters`]) and where the distance is
+/// largest ([`Parameter`]). The result file names the samples `curves` or
+/// `surfaces` accordingly (SPEC §8, §9).
 #[derive(Clone, Debug, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct RunOutput {
     /// The job's description, if any.
-    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
     pub description: Option<String>,
     /// 2 or 3.
     pub dimension: usize,
-    /// The order `k`.
-    pub order: usize,
-    /// The degree `p = k − 1`.
-    pub degree: usize,
-    /// The weights.
-    pub weights: Vec<f64>,
-    /// The knot vector actually used (the default made explicit).
-    pub knots: Vec<f64>,
-    /// The parameter domain `[U[p], U[n]]`.
-    pub domain: [f64; 2],
+    /// Orders, degrees, weights, knots and domain of the spline.
+    pub spline: Spline,
     /// The level alpha.
     pub alpha: f64,
     /// Which type-reduction rule applied (SPEC §3).
     pub regime: Regime,
     /// Control points of every stage.
     pub control_points: ControlPoints,
-    /// Curves sampled at `curves.params`.
-    pub curves: Curves,
-    /// Distance between the crisp and the defuzzified curve.
+    /// Curves or surfaces sampled at `samples.params`.
+    pub samples: Sampled,
+    /// Distance between the crisp and the defuzzified curve or surface.
     pub error: Distance,
+}
+
+/// The definition of the spline that a run sampled (SPEC §6, §9).
+#[derive(Clone, Debug, PartialEq)]
+pub enum Spline {
+    /// A curve.
+    Curve {
+        /// The order `k`.
+        order: usize,
+        /// The degree `p = k − 1`.
+        degree: usize,
+        /// The weights.
+        weights: Vec<f64>,
+        /// The knot vector actually used (the default made explicit).
+        knots: Vec<f64>,
+        /// The parameter domain `[U[p], U[n]]`.
+        domain: [f64; 2],
+    },
+    /// A surface.
+    Surface {
+        /// The orders `[ku, kv]`.
+        order: [usize; 2],
+        /// The degrees `[p, q]`.
+        degree: [usize; 2],
+        /// The weights, `[row][column]`.
+        weights: Vec<Vec<f64>>,
+        /// The knot vectors `U` and `V` actually used.
+        knots: [Vec<f64>; 2],
+        /// The domain `[U[p], U[nu]] × [V[q], V[nv]]`.
+        domain: [[f64; 2]; 2],
+    },
+}
+
+impl Spline {
+    /// The weights, a surface's row by row.
+    #[must_use]
+    pub fn weights(&self) -> Vec<f64> {
+        match self {
+            Spline::Curve { weights, .. } => weights.clone(),
+            Spline::Surface { weights, .. } => weights.concat(),
+        }
+    }
+
+    /// The order (of a curve), or the orders in u and v (of a surface).
+    #[must_use]
+    pub fn orders(&self) -> Vec<usize> {
+        match self {
+            Spline::Curve { order, .. } => vec![*order],
+            Spline::Surface { order, .. } => order.to_vec(),
+        }
+    }
+}
+
+/// The sample parameters: uniform `t` along a curve, or the uniform `u` and
+/// `v` of a surface's grid.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Parameters {
+    /// `tᵢ = a + (b − a)·i/(samples − 1)`.
+    Along(Vec<f64>),
+    /// `u_a` and `v_b`, each uniform as along a curve.
+    Grid {
+        /// The parameters along u.
+        u: Vec<f64>,
+        /// The parameters along v.
+        v: Vec<f64>,
+    },
+}
+
+impl Parameters {
+    /// The parameters along a curve; empty for a grid.
+    #[must_use]
+    pub fn along(&self) -> &[f64] {
+        match self {
+            Parameters::Along(t) => t,
+            Parameters::Grid { .. } => &[],
+        }
+    }
+
+    /// The number of sampled points (`su · sv` for a grid).
+    #[must_use]
+    pub fn count(&self) -> usize {
+        match self {
+            Parameters::Along(t) => t.len(),
+            Parameters::Grid { u, v } => u.len() * v.len(),
+        }
+    }
+}
+
+/// A point of the parameter domain: `t`, or `(u, v)`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Parameter {
+    /// A curve's parameter.
+    T(f64),
+    /// A surface's parameters.
+    Uv([f64; 2]),
+}
+
+impl Parameter {
+    /// The curve parameter; `None` for a surface's.
+    #[must_use]
+    pub fn t(self) -> Option<f64> {
+        match self {
+            Parameter::T(t) => Some(t),
+            Parameter::Uv(_) => None,
+        }
+    }
+}
+
+/// The distance between the crisp and the defuzzified curve or surface over
+/// the whole domain ([`crate::Distance`], [`crate::SurfaceDistance`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct Distance {
+    /// The largest distance at equal parameters.
+    pub max: f64,
+    /// A parameter where it is reached.
+    pub max_at: Parameter,
+    /// The root mean square distance over the domain.
+    pub rms: f64,
 }
 
 /// Which rule of SPEC §3 reduced the numbers at the run's alpha.
@@ -102,12 +216,12 @@ pub struct ControlPoints {
     pub defuzzified: Points,
 }
 
-/// The sampled curves.
+/// The sampled curves or surfaces (lists or grids of points).
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
-pub struct Curves {
-    /// The parameters `tᵢ = a + (b − a)·i/(samples − 1)`.
-    pub params: Vec<f64>,
+pub struct Sampled {
+    /// The parameters.
+    pub params: Parameters,
     /// The crisp curve.
     pub crisp: Points,
     /// The crisp type-2 solution (stage 4).
@@ -129,7 +243,7 @@ pub struct Curves {
     pub arc_length: Option<CrispDefuzzified<f64>>,
 }
 
-impl Curves {
+impl Sampled {
     /// The sampled curve of one stage-1 layer (the crisp curve for
     /// [`Layer::Crisp`]).
     #[must_use]

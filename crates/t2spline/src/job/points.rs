@@ -24,6 +24,9 @@ use crate::sampling::CurveSamples;
 #[derive(Clone, Debug, PartialEq)]
 pub struct Points<T = f64> {
     coords: Vec<Vec<T>>,
+    /// `Some([rows, columns])` when the points form a grid (a surface's net
+    /// or samples), stored row by row: point `(a, b)` is at `a·columns + b`.
+    grid: Option<[usize; 2]>,
 }
 
 impl<T: Copy> Points<T> {
@@ -31,7 +34,17 @@ impl<T: Copy> Points<T> {
     /// debug builds: only the crate builds them).
     pub(crate) fn from_coords(coords: Vec<Vec<T>>) -> Self {
         debug_assert!(coords.iter().all(|c| c.len() == coords[0].len()));
-        Points { coords }
+        Points { coords, grid: None }
+    }
+
+    /// The same points seen as a grid of `rows × columns`, stored row by row
+    /// (only the crate builds grids, from samples of that shape).
+    pub(crate) fn into_grid(self, [rows, columns]: [usize; 2]) -> Self {
+        debug_assert_eq!(rows * columns, self.len());
+        Points {
+            grid: Some([rows, columns]),
+            ..self
+        }
     }
 
     /// Points from a list of fixed-size points.
@@ -41,7 +54,16 @@ impl<T: Copy> Points<T> {
             coords: (0..D)
                 .map(|d| points.iter().map(|p| p[d]).collect())
                 .collect(),
+            grid: None,
         }
+    }
+
+    /// `Some([rows, columns])` when the points form a grid (the control net or
+    /// the samples of a surface, point `(a, b)` at index `a·columns + b`),
+    /// `None` for a list.
+    #[must_use]
+    pub fn grid(&self) -> Option<[usize; 2]> {
+        self.grid
     }
 
     /// The number of points.
@@ -100,14 +122,28 @@ impl<const D: usize> From<CurveSamples<D>> for Points {
     }
 }
 
+impl<T> Points<T> {
+    /// The index range of row `a` of a grid: point `(a, b)` is at index
+    /// `start + b`; all points for a list.
+    #[must_use]
+    pub fn row_range(&self, a: usize) -> std::ops::Range<usize> {
+        match self.grid {
+            Some([_, columns]) => a * columns..(a + 1) * columns,
+            None => 0..self.coords.first().map_or(0, Vec::len),
+        }
+    }
+}
+
 #[cfg(feature = "serde")]
 impl<T: serde::Serialize + Copy> serde::Serialize for Points<T> {
-    /// A list of points, each a list of coordinates (`[[x, y], …]`), written
-    /// straight from the columns.
+    /// A list of points, each a list of coordinates (`[[x, y], …]`), or for a
+    /// grid a list of rows of points (`[[[x, y, z], …], …]`), written straight
+    /// from the columns.
     fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
         use serde::ser::SerializeSeq;
-        struct Row<'a, T>(&'a [Vec<T>], usize);
-        impl<T: serde::Serialize> serde::Serialize for Row<'_, T> {
+        /// One point: its coordinates.
+        struct Point<'a, T>(&'a [Vec<T>], usize);
+        impl<T: serde::Serialize> serde::Serialize for Point<'_, T> {
             fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
                 let mut seq = s.serialize_seq(Some(self.0.len()))?;
                 for c in self.0 {
@@ -116,11 +152,27 @@ impl<T: serde::Serialize + Copy> serde::Serialize for Points<T> {
                 seq.end()
             }
         }
-        let mut seq = s.serialize_seq(Some(self.len()))?;
-        for i in 0..self.len() {
-            seq.serialize_element(&Row(&self.coords, i))?;
+        /// The points of an index range.
+        struct Run<'a, T>(&'a [Vec<T>], std::ops::Range<usize>);
+        impl<T: serde::Serialize> serde::Serialize for Run<'_, T> {
+            fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+                let mut seq = s.serialize_seq(Some(self.1.len()))?;
+                for i in self.1.clone() {
+                    seq.serialize_element(&Point(self.0, i))?;
+                }
+                seq.end()
+            }
         }
-        seq.end()
+        match self.grid {
+            None => Run(&self.coords, self.row_range(0)).serialize(s),
+            Some([rows, _]) => {
+                let mut seq = s.serialize_seq(Some(rows))?;
+                for a in 0..rows {
+                    seq.serialize_element(&Run(&self.coords, self.row_range(a)))?;
+                }
+                seq.end()
+            }
+        }
     }
 }
 
@@ -139,6 +191,22 @@ mod tests {
         assert_eq!(p.coord(2), &[3.0, 6.0]);
         assert!(p.coord(3).is_empty());
         assert_eq!(p.point(2), None);
+    }
+
+    #[test]
+    fn a_grid_keeps_its_rows() {
+        let p = Points::from_points(&[
+            [1.0, 2.0],
+            [3.0, 4.0],
+            [5.0, 6.0],
+            [7.0, 8.0],
+            [9.0, 0.0],
+            [1.0, 1.0],
+        ])
+        .into_grid([2, 3]);
+        assert_eq!(p.grid(), Some([2, 3]));
+        assert_eq!(p.row_range(1), 3..6);
+        assert_eq!(p.point(4), Some(vec![9.0, 0.0]));
     }
 
     #[test]

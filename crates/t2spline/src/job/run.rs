@@ -1,14 +1,18 @@
 //! Running a job: every stage of Algorithm 1.1 on the control points, every
 //! curve sampled, the distance, and the derivatives when asked for.
 
-use crate::error::{Error, Place};
-use crate::fuzzy::{Alpha, Layer};
-use crate::nurbs::NurbsCurve;
-use crate::pipeline::{FuzzyCurve, Side};
-use crate::sampling::{CurveSamples, Params};
+use crate::error::{Error, Place, Setting};
+use crate::fuzzy::{Alpha, Layer, Nt2Point};
+use crate::nurbs::{Direction, NurbsCurve};
+use crate::pipeline::point_stages::PointStages;
+use crate::pipeline::{FuzzyCurve, FuzzySurface, Side};
+use crate::sampling::{CurveSamples, Params, SweepSamples};
 
-use super::output::{ControlPoints, CrispDefuzzified, Curves, LeftRight, Regime, SixLayers};
-use super::{Job, ModelVisitor, Points, RunOutput, Settings};
+use super::output::{
+    ControlPoints, CrispDefuzzified, Distance, LeftRight, Parameter, Parameters, Regime, Sampled,
+    SixLayers, Spline,
+};
+use super::{Job, ModelVisitor, Points, RunOutput, Samples, Settings};
 
 impl Job {
     /// Runs stages 1–4 at `settings.alpha` and samples every curve at
@@ -33,12 +37,12 @@ impl Job {
     /// let n = |c: f64| Nt2Number::try_new(c, [c, c], [c, c], [c, c], 0.5);
     /// let points = vec![Nt2Point::new([n(0.0)?, n(0.0)?]), Nt2Point::new([n(3.0)?, n(4.0)?])];
     /// let job = Job::new(Model::Planar(FuzzyCurve::try_new(1, points, vec![1.0, 1.0], None)?));
-    /// let s = job.settings(&Overrides { alpha: Some(0.5), samples: Some(2), derivatives: Some(2) })?;
+    /// let s = job.settings(&Overrides { alpha: Some(0.5), samples: Some(vec![2]), derivatives: Some(2) })?;
     /// let out = job.run(&s)?;
-    /// let d = out.curves.derivatives.as_ref().unwrap();
+    /// let d = out.samples.derivatives.as_ref().unwrap();
     /// assert_eq!(d.crisp[0].point(1), Some(vec![3.0, 4.0]));
     /// assert_eq!(d.crisp[1].point(1), Some(vec![0.0, 0.0]));
-    /// assert!((out.curves.arc_length.unwrap().crisp - 5.0).abs() < 1e-14);
+    /// assert!((out.samples.arc_length.unwrap().crisp - 5.0).abs() < 1e-14);
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn run(&self, settings: &Settings) -> Result<RunOutput, Error> {
@@ -60,97 +64,198 @@ impl ModelVisitor for Run<'_> {
             samples,
             derivatives,
         } = *self.0;
-        let mut out = run_curve(curve, alpha, samples)?;
+        let Samples::Along(samples) = samples else {
+            return Err(wrong_samples("a grid of samples", "a curve"));
+        };
+        let solution = curve.solve(alpha);
+        // Every curve of every stage from one power form of the rational basis.
+        let sweep = curve.sample_sweep(Params::Uniform(samples), &[alpha])?;
+        let d = solution.distance();
+        let mut out = RunOutput {
+            description: None,
+            dimension: D,
+            spline: Spline::Curve {
+                order: curve.order(),
+                degree: curve.degree(),
+                weights: curve.weights().to_vec(),
+                knots: curve.knots().as_slice().to_vec(),
+                domain: [curve.domain().start, curve.domain().end],
+            },
+            alpha: alpha.get(),
+            regime: regime(solution.stages()),
+            control_points: control_points(curve.points(), solution.stages(), None),
+            samples: sampled(
+                sweep,
+                Parameters::Along(curve.domain().uniform(samples)),
+                None,
+            )?,
+            error: Distance {
+                max: d.max,
+                max_at: Parameter::T(d.max_at),
+                rms: d.rms,
+            },
+        };
         if let Some(order) = derivatives {
-            let (d, lengths) = derivative_curves(curve, alpha, &out.curves.params, order)?;
-            out.curves.derivatives = Some(d);
-            out.curves.arc_length = Some(lengths);
+            let params = out.samples.params.along();
+            let (d, lengths) = derivative_curves(curve, alpha, params, order)?;
+            out.samples.derivatives = Some(d);
+            out.samples.arc_length = Some(lengths);
         }
         Ok(out)
     }
+
+    fn surface<const D: usize>(self, surface: &FuzzySurface<D>) -> Self::Output {
+        let Settings {
+            alpha,
+            samples,
+            derivatives,
+        } = *self.0;
+        let Samples::Grid([su, sv]) = samples else {
+            return Err(wrong_samples("one number of samples", "a surface"));
+        };
+        if derivatives.is_some() {
+            return Err(Error::Setting {
+                setting: Setting::Derivatives,
+                message: "derivatives are offered for curves; this job is a surface".into(),
+            });
+        }
+        let solution = surface.solve(alpha);
+        let grid = surface.sample_sweep(Params::Uniform(su), Params::Uniform(sv), &[alpha])?;
+        let d = solution.distance();
+        let [du, dv] = Direction::BOTH.map(|dir| surface.domain(dir));
+        let [nu, nv] = surface.shape();
+        let [p, q] = surface.degree();
+        Ok(RunOutput {
+            description: None,
+            dimension: D,
+            spline: Spline::Surface {
+                order: [p + 1, q + 1],
+                degree: [p, q],
+                weights: surface
+                    .weights()
+                    .chunks(nv.max(1))
+                    .map(<[f64]>::to_vec)
+                    .collect(),
+                knots: Direction::BOTH.map(|dir| surface.knots(dir).as_slice().to_vec()),
+                domain: [[du.start, du.end], [dv.start, dv.end]],
+            },
+            alpha: alpha.get(),
+            regime: regime(solution.stages()),
+            control_points: control_points(surface.points(), solution.stages(), Some([nu, nv])),
+            samples: sampled(
+                grid.into_samples(),
+                Parameters::Grid {
+                    u: du.uniform(su),
+                    v: dv.uniform(sv),
+                },
+                Some([su, sv]),
+            )?,
+            error: Distance {
+                max: d.max,
+                max_at: Parameter::Uv(d.max_at),
+                rms: d.rms,
+            },
+        })
+    }
 }
 
-fn run_curve<const D: usize>(
-    curve: &FuzzyCurve<D>,
-    alpha: Alpha,
-    samples: usize,
-) -> Result<RunOutput, Error> {
-    let solution = curve.solve(alpha);
-    let params = curve.domain().uniform(samples);
-    // Every curve of every stage from one power form of the rational basis.
-    let sweep = curve.sample_sweep(Params::Uniform(samples), &[alpha])?;
-    let mut layer_curves = sweep.layers.layers.map(Some);
-    let level = match sweep.levels.into_iter().next() {
-        Some(level) => level,
-        // A sweep of one level gives one level; should it not, the stages
-        // are sampled on their own.
-        None => solution.sample_stages(Params::Uniform(samples))?,
-    };
-    let mut take =
-        |l: Layer| Points::from(layer_curves[l].take().unwrap_or_else(CurveSamples::empty));
-    let cut_points = solution.alpha_cut_points();
+/// The error for settings made for another kind of model (a caller's slip:
+/// [`Job::settings`] makes them to fit the job).
+fn wrong_samples(given: &str, model: &str) -> Error {
+    Error::Setting {
+        setting: Setting::Samples,
+        message: format!("{given} does not fit {model}"),
+    }
+}
+
+/// Which rule of SPEC §3 reduced the numbers.
+fn regime<const D: usize>(stages: &PointStages<D>) -> Regime {
+    let cut_points = stages.alpha_cut_points();
     let below = cut_points
         .iter()
         .flatten()
         .filter(|c| c.lower().is_some())
         .count();
-    let regime = match below {
+    match below {
         0 => Regime::Above,
         n if n == cut_points.len() * D => Regime::AtOrBelow,
         _ => Regime::Mixed,
+    }
+}
+
+/// Points as a list, or as a grid of `grid`'s shape.
+fn shaped<T: Copy>(points: Points<T>, grid: Option<[usize; 2]>) -> Points<T> {
+    match grid {
+        Some(shape) => points.into_grid(shape),
+        None => points,
+    }
+}
+
+/// The control points of every stage, as a list or (for a net) a grid.
+fn control_points<const D: usize>(
+    points: &[Nt2Point<D>],
+    stages: &PointStages<D>,
+    grid: Option<[usize; 2]>,
+) -> ControlPoints {
+    let of = |f: &dyn Fn(&Nt2Point<D>) -> [f64; D]| {
+        shaped(
+            Points::from_points(&points.iter().map(f).collect::<Vec<_>>()),
+            grid,
+        )
     };
-    let mut cut_curves = level.alpha_cut;
+    let cut_points = stages.alpha_cut_points();
+    ControlPoints {
+        crisp: of(&|p| p.crisp()),
+        layers: SixLayers::from_fn(|l| of(&|p| p.layer(l))),
+        alpha_cut: SixLayers::from_fn(|l| {
+            let cut: Vec<[Option<f64>; D]> = cut_points
+                .iter()
+                .map(|cuts| std::array::from_fn(|d| cuts[d].layer(l)))
+                .collect();
+            shaped(Points::from_points(&cut), grid)
+        }),
+        type_reduced_left: shaped(
+            Points::from_points(&stages.type_reduced_side(Side::Left)),
+            grid,
+        ),
+        type_reduced_right: shaped(
+            Points::from_points(&stages.type_reduced_side(Side::Right)),
+            grid,
+        ),
+        defuzzified: shaped(Points::from_points(stages.defuzzified_points()), grid),
+    }
+}
+
+/// The sampled stages of a sweep at one level, as lists or (for a surface) as
+/// grids of `grid`'s shape.
+fn sampled<const D: usize>(
+    sweep: SweepSamples<D>,
+    params: Parameters,
+    grid: Option<[usize; 2]>,
+) -> Result<Sampled, Error> {
+    let points = |samples: CurveSamples<D>| shaped(Points::from(samples), grid);
+    let mut layers = sweep.layers.layers.map(Some);
+    let mut take = |l: Layer| points(layers[l].take().unwrap_or_else(CurveSamples::empty));
+    // A sweep of one level gives one level.
+    let level = sweep
+        .levels
+        .into_iter()
+        .next()
+        .ok_or_else(|| wrong_samples("a sweep without levels", "a run"))?;
+    let mut cuts = level.alpha_cut;
     let [left, right] = level.type_reduced;
-    let d = solution.distance();
-    Ok(RunOutput {
-        description: None,
-        dimension: D,
-        order: curve.order(),
-        degree: curve.degree(),
-        weights: curve.weights().to_vec(),
-        knots: curve.knots().as_slice().to_vec(),
-        domain: [curve.domain().start, curve.domain().end],
-        alpha: alpha.get(),
-        regime,
-        control_points: ControlPoints {
-            crisp: Points::from_points(
-                &curve.points().iter().map(|p| p.crisp()).collect::<Vec<_>>(),
-            ),
-            layers: SixLayers::from_fn(|l| {
-                Points::from_points(
-                    &curve
-                        .points()
-                        .iter()
-                        .map(|p| p.layer(l))
-                        .collect::<Vec<_>>(),
-                )
-            }),
-            alpha_cut: SixLayers::from_fn(|l| {
-                Points::from_points(
-                    &cut_points
-                        .iter()
-                        .map(|cuts| std::array::from_fn::<_, D, _>(|d| cuts[d].layer(l)))
-                        .collect::<Vec<_>>(),
-                )
-            }),
-            type_reduced_left: Points::from_points(&solution.type_reduced_side(Side::Left)),
-            type_reduced_right: Points::from_points(&solution.type_reduced_side(Side::Right)),
-            defuzzified: Points::from_points(solution.defuzzified_points()),
+    Ok(Sampled {
+        params,
+        crisp: take(Layer::Crisp),
+        layers: SixLayers::from_fn(&mut take),
+        defuzzified: points(level.defuzzified),
+        alpha_cut: SixLayers::from_fn(|l| cuts[l].take().map(points)),
+        type_reduced: LeftRight {
+            left: points(left),
+            right: points(right),
         },
-        curves: Curves {
-            crisp: take(Layer::Crisp),
-            layers: SixLayers::from_fn(&mut take),
-            defuzzified: level.defuzzified.into(),
-            alpha_cut: SixLayers::from_fn(|l| cut_curves[l].take().map(Points::from)),
-            type_reduced: LeftRight {
-                left: left.into(),
-                right: right.into(),
-            },
-            params,
-            derivatives: None,
-            arc_length: None,
-        },
-        error: d,
+        derivatives: None,
+        arc_length: None,
     })
 }
 

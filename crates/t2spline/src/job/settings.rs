@@ -19,16 +19,52 @@ pub const MAX_SAMPLES: usize = 1_000_000;
 /// result's size in proportion.
 pub const MAX_DERIVATIVE_ORDER: usize = 16;
 
+/// The number of surface samples per direction when a surface job gives none
+/// (SPEC §9: a grid of 21 × 21).
+pub const DEFAULT_SURFACE_SAMPLES: usize = 21;
+
+/// How many uniform parameters a run samples: along a curve, or a grid
+/// `u_a × v_b` over a surface's domain (SPEC §8, §9).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Samples {
+    /// `n` parameters along a curve.
+    Along(usize),
+    /// `[su, sv]` parameters in u and in v.
+    Grid([usize; 2]),
+}
+
+impl Samples {
+    /// The number of sampled points: `n`, or `su · sv`.
+    #[must_use]
+    pub fn count(self) -> usize {
+        match self {
+            Samples::Along(n) => n,
+            Samples::Grid([u, v]) => u * v,
+        }
+    }
+}
+
+impl std::fmt::Display for Samples {
+    /// `101`, or `41 × 21` for a grid.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Samples::Along(n) => write!(f, "{n}"),
+            Samples::Grid([u, v]) => write!(f, "{u} × {v}"),
+        }
+    }
+}
+
 /// What a front end may set in place of the job's own values; `None` keeps the
 /// job's. Values are taken as given (a negative derivative order, a sample
 /// count beyond the machine's) and checked by [`Job::settings`].
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[derive(Clone, Debug, Default, PartialEq)]
 pub struct Overrides {
     /// The level alpha.
     pub alpha: Option<f64>,
-    /// The number of uniform parameters.
-    pub samples: Option<u64>,
-    /// The highest derivative order to compute (none without it).
+    /// The number of uniform parameters: one count, or for a surface one
+    /// count for both directions or two (`[su, sv]`).
+    pub samples: Option<Vec<u64>>,
+    /// The highest derivative order to compute (none without it; curves only).
     pub derivatives: Option<i64>,
 }
 
@@ -37,8 +73,9 @@ pub struct Overrides {
 pub struct Settings {
     /// The level alpha of stages 2–4.
     pub alpha: Alpha,
-    /// Uniform parameters at which every curve is sampled (2 ..= [`MAX_SAMPLES`]).
-    pub samples: usize,
+    /// Uniform parameters at which every curve or surface is sampled (at
+    /// least 2 in each direction, at most [`MAX_SAMPLES`] points).
+    pub samples: Samples,
     /// With `Some(K)`, the derivatives of orders `1 ..= K` of the crisp and the
     /// defuzzified curve and their arc lengths.
     pub derivatives: Option<usize>,
@@ -51,13 +88,15 @@ impl Job {
     /// # Errors
     /// [`Error::MissingAlpha`] when neither gives alpha; [`Error::Setting`]
     /// naming the setting whose value breaks its rule: alpha outside [0, 1],
-    /// samples outside `2 ..= MAX_SAMPLES`, a derivative order outside
-    /// `1 ..= MAX_DERIVATIVE_ORDER` or with more than [`MAX_SAMPLES`]
-    /// derivative vectors per curve.
+    /// samples outside `2 ..= MAX_SAMPLES` (for a surface: two counts of at
+    /// least 2 whose product is at most `MAX_SAMPLES`; for a curve: one
+    /// count), a derivative order outside `1 ..= MAX_DERIVATIVE_ORDER` or with
+    /// more than [`MAX_SAMPLES`] derivative vectors per curve, or asked of a
+    /// surface.
     ///
     /// # Examples
     /// ```
-    /// # use t2spline::job::{Overrides, Setting};
+    /// # use t2spline::job::{Overrides, Samples, Setting};
     /// # use t2spline::Error;
     /// # use t2spline::{Alpha, FuzzyCurve, Nt2Number, Nt2Point};
     /// # use t2spline::job::{Job, Model};
@@ -65,14 +104,15 @@ impl Job {
     /// # let points = vec![Nt2Point::new([n(0.0)?, n(0.0)?]), Nt2Point::new([n(1.0)?, n(1.0)?])];
     /// # let curve = FuzzyCurve::try_new(1, points, vec![1.0, 1.0], None)?;
     /// let job = Job { alpha: Some(Alpha::try_new(0.8)?), ..Job::new(Model::Planar(curve)) };
-    /// let s = job.settings(&Overrides { samples: Some(5), ..Overrides::default() })?;
-    /// assert_eq!((s.alpha.get(), s.samples, s.derivatives), (0.8, 5, None));
+    /// let s = job.settings(&Overrides { samples: Some(vec![5]), ..Overrides::default() })?;
+    /// assert_eq!((s.alpha.get(), s.samples, s.derivatives), (0.8, Samples::Along(5), None));
     /// let e = job.settings(&Overrides { alpha: Some(1.5), ..Overrides::default() }).unwrap_err();
     /// assert!(matches!(e, Error::Setting { setting: Setting::Alpha, .. }));
     /// assert_eq!(e.to_string(), "alpha = 1.5 is outside [0, 1]");
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn settings(&self, overrides: &Overrides) -> Result<Settings, Error> {
+        let setting = |setting| move |message| Error::Setting { setting, message };
         let alpha = match overrides.alpha {
             Some(a) => Alpha::try_new(a).map_err(|e| Error::Setting {
                 setting: Setting::Alpha,
@@ -80,32 +120,61 @@ impl Job {
             })?,
             None => self.alpha.ok_or(Error::MissingAlpha)?,
         };
-        let samples = match overrides.samples {
-            Some(n) => check_samples(n, &n.to_string()).map_err(|message| Error::Setting {
-                setting: Setting::Samples,
-                message,
-            })?,
-            None => check_samples(self.samples as u64, &self.samples.to_string()).map_err(
-                |message| Error::Setting {
-                    setting: Setting::Samples,
-                    message,
-                },
-            )?,
-        };
-        let derivatives = overrides
-            .derivatives
-            .map(|k| {
-                check_derivative_order(k, samples).map_err(|message| Error::Setting {
+        let surface = matches!(self.samples, Samples::Grid(_));
+        let samples = match &overrides.samples {
+            Some(counts) => samples_of(counts, surface),
+            None => match self.samples {
+                Samples::Along(n) => samples_of(&[n as u64], false),
+                Samples::Grid([u, v]) => samples_of(&[u as u64, v as u64], true),
+            },
+        }
+        .map_err(setting(Setting::Samples))?;
+        let derivatives = match (overrides.derivatives, samples) {
+            (None, _) => None,
+            (Some(k), Samples::Along(n)) => {
+                Some(check_derivative_order(k, n).map_err(setting(Setting::Derivatives))?)
+            }
+            (Some(_), Samples::Grid(_)) => {
+                return Err(Error::Setting {
                     setting: Setting::Derivatives,
-                    message,
+                    message: "derivatives are offered for curves; this job is a surface".into(),
                 })
-            })
-            .transpose()?;
+            }
+        };
         Ok(Settings {
             alpha,
             samples,
             derivatives,
         })
+    }
+}
+
+/// The samples of `counts` as given: one count for a curve; one (both
+/// directions) or two counts for a surface, whose product is at most
+/// [`MAX_SAMPLES`].
+fn samples_of(counts: &[u64], surface: bool) -> Result<Samples, String> {
+    match (counts, surface) {
+        (&[n], false) => Ok(Samples::Along(check_samples(n, &n.to_string())?)),
+        (&[n], true) => samples_of(&[n, n], true),
+        (&[u, v], true) => {
+            let [u, v] = [u, v].map(|n| check_samples(n, &n.to_string()));
+            let [u, v] = [u?, v?];
+            if u.saturating_mul(v) > MAX_SAMPLES {
+                return Err(format!(
+                    "samples = {u} × {v} = {} grid points is more than the limit {MAX_SAMPLES}",
+                    u.saturating_mul(v)
+                ));
+            }
+            Ok(Samples::Grid([u, v]))
+        }
+        (_, false) => Err(format!(
+            "a curve is sampled at one number of parameters, got {} numbers",
+            counts.len()
+        )),
+        (_, true) => Err(format!(
+            "a surface is sampled at one number of parameters for both directions, or two (u, v), got {} numbers",
+            counts.len()
+        )),
     }
 }
 
