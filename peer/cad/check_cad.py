@@ -31,13 +31,13 @@ import tempfile
 from pathlib import Path
 
 import ezdxf
-from OCP.BRepAdaptor import BRepAdaptor_Curve
-from OCP.GeomAbs import GeomAbs_BSplineCurve
+from OCP.BRepAdaptor import BRepAdaptor_Curve, BRepAdaptor_Surface
+from OCP.GeomAbs import GeomAbs_BSplineCurve, GeomAbs_BSplineSurface
 from OCP.IFSelect import IFSelect_RetDone
 from OCP.IGESControl import IGESControl_Reader
 from OCP.STEPControl import STEPControl_Reader
 from OCP.StepToGeom import StepToGeom
-from OCP.TopAbs import TopAbs_EDGE
+from OCP.TopAbs import TopAbs_EDGE, TopAbs_FACE
 from OCP.TopExp import TopExp_Explorer
 from OCP.TopoDS import TopoDS
 
@@ -165,12 +165,28 @@ def read_obj(path):
             assert args == ["rat", "bspline"], args
         elif key == "deg":
             state["deg"] = int(args[0])
+            state["deg2"] = int(args[1]) if len(args) > 1 else None
+        elif key == "surf":
+            state["range"] = tuple(map(float, args[:4]))
+            state["points"] = [vertices[int(i) - 1 if int(i) > 0 else int(i)] for i in args[4:]]
         elif key == "curv":
             state["range"] = (float(args[0]), float(args[1]))
             state["points"] = [vertices[int(i) - 1 if int(i) > 0 else int(i)] for i in args[2:]]
         elif key == "parm":
-            assert args[0] == "u"
-            state["knots"] = list(map(float, args[1:]))
+            state["knots" if args[0] == "u" else "knots_v"] = list(map(float, args[1:]))
+        elif key == "end" and "knots_v" in state:
+            # A surface: control points with the u index varying fastest.
+            p, q, ku, kv = state["deg"], state["deg2"], state["knots"], state["knots_v"]
+            nu, nv = len(ku) - p - 1, len(kv) - q - 1
+            flat = state["points"]
+            assert len(flat) == nu * nv, (len(flat), nu, nv)
+            net = [[flat[j * nu + i] for j in range(nv)] for i in range(nu)]
+            u0, u1, v0, v1 = state["range"]
+            curves.setdefault(group, []).append(
+                (u0, u1, v0, v1,
+                 (lambda a, b, n_, p_, q_: lambda u, v: de_boor_surface(a, b, n_, p_, q_, u, v))(
+                     ku, kv, net, p, q)))
+            state = {}
         elif key == "end":
             p, knots, points = state["deg"], state["knots"], state["points"]
             assert len(knots) == len(points) + p + 1
@@ -181,23 +197,107 @@ def read_obj(path):
     return curves
 
 
-def de_boor(knots, points, p, t):
-    """A rational B-spline at t by de Boor's algorithm on (w·x, w·y, w·z, w)."""
-    n = len(points)
+def de_boor_h(knots, hpoints, p, t):
+    """A B-spline of homogeneous points (w·x, w·y, w·z, w) at t by de Boor's
+    algorithm; at an interior knot the span to the right, at the end of the
+    domain the last non-empty span."""
+    n = len(hpoints)
     span = p
     while span < n - 1 and knots[span + 1] <= t:
         span += 1
     while span > p and knots[span] == knots[span + 1]:
         span -= 1
-    d = [[w * x, w * y, w * z, w] for x, y, z, w in points[span - p:span + 1]]
+    d = [list(q) for q in hpoints[span - p:span + 1]]
     for r in range(1, p + 1):
         for j in range(p, r - 1, -1):
             i = span - p + j
             den = knots[i + p - r + 1] - knots[i]
             a = 0.0 if den == 0 else (t - knots[i]) / den
             d[j] = [(1 - a) * u + a * v for u, v in zip(d[j - 1], d[j])]
-    x, y, z, w = d[p]
+    return d[p]
+
+
+def homogeneous(x, y, z, w):
+    return (w * x, w * y, w * z, w)
+
+
+def de_boor(knots, points, p, t):
+    """A rational B-spline curve of points (x, y, z, w) at t."""
+    x, y, z, w = de_boor_h(knots, [homogeneous(*q) for q in points], p, t)
     return (x / w, y / w, z / w)
+
+
+def de_boor_surface(ku, kv, net, p, q, u, v):
+    """A rational tensor-product surface of net[i][j] = (x, y, z, w) at (u, v):
+    each column along u first, then the results along v."""
+    columns = [de_boor_h(ku, [homogeneous(*net[i][j]) for i in range(len(net))], p, u)
+               for j in range(len(net[0]))]
+    x, y, z, w = de_boor_h(kv, columns, q, v)
+    return (x / w, y / w, z / w)
+
+
+def ocp_faces(shape):
+    """The faces of a shape as (u0, u1, v0, v1, f): the face's parameter
+    bounds and its surface."""
+    out = []
+    explorer = TopExp_Explorer(shape, TopAbs_FACE)
+    while explorer.More():
+        surface = BRepAdaptor_Surface(TopoDS.Face(explorer.Current()), True)
+        assert surface.GetType() == GeomAbs_BSplineSurface, surface.GetType()
+        f = (lambda s_: lambda u, v: (lambda q: (q.X(), q.Y(), q.Z()))(s_.Value(u, v)))(surface)
+        out.append((surface.FirstUParameter(), surface.LastUParameter(),
+                    surface.FirstVParameter(), surface.LastVParameter(), f))
+        explorer.Next()
+    return out
+
+
+def read_step_surfaces(path):
+    reader = STEPControl_Reader()
+    assert reader.ReadFile(str(path)) == IFSelect_RetDone
+    assert reader.TransferRoots() == 1
+    faces = len(ocp_faces(reader.OneShape()))
+    model = reader.Model()
+    surfaces = {}
+    for i in range(1, model.NbEntities() + 1):
+        entity = model.Value(i)
+        if entity.DynamicType().Name() != "StepGeom_BSplineSurfaceWithKnotsAndRationalBSplineSurface":
+            continue
+        surface = StepToGeom.MakeBSplineSurface_s(entity)
+        u0, u1, v0, v1 = surface.Bounds()
+        f = (lambda s_: lambda u, v: (lambda q: (q.X(), q.Y(), q.Z()))(s_.Value(u, v)))(surface)
+        surfaces.setdefault(entity.Name().ToCString(), []).append((u0, u1, v0, v1, f))
+    assert faces >= sum(map(len, surfaces.values())), faces
+    return surfaces
+
+
+def read_iges_surfaces(path):
+    reader = IGESControl_Reader()
+    assert reader.ReadFile(str(path)) == IFSelect_RetDone
+    surfaces = {}
+    for i in range(1, reader.NbRootsForTransfer() + 1):
+        entity = reader.RootForTransfer(i)
+        assert entity.TypeNumber() == 128, entity.TypeNumber()
+        assert entity.HasName(), "no name property"
+        assert reader.TransferOneRoot(i)
+        surfaces.setdefault(entity.NameValue().ToCString(), []).extend(
+            ocp_faces(reader.Shape(reader.NbShapes())))
+    return surfaces
+
+
+def pick_patch(patches, u, v):
+    """The patch that holds (u, v); at a shared edge the one to the right
+    (larger parameter), as for curves."""
+    def holds(a, b, t, last):
+        return a <= t < b or (last and a <= t <= b)
+    u_last = max(p[1] for p in patches)
+    v_last = max(p[3] for p in patches)
+    for u0, u1, v0, v1, f in patches:
+        if holds(u0, u1, u, u1 == u_last) and holds(v0, v1, v, v1 == v_last):
+            return f
+    raise AssertionError(f"no patch holds {(u, v)}: {[p[:4] for p in patches]}")
+
+
+SURFACE_READERS = {"step": read_step_surfaces, "iges": read_iges_surfaces, "obj": read_obj}
 
 
 READERS = {"dxf": read_dxf, "dxf-data": read_dxf_data, "step": read_step, "iges": read_iges,
@@ -254,6 +354,47 @@ def random_job(rng, case):
     return job, f"random {dim}-D degree {p} {kind}"
 
 
+def random_surface(rng, case, folder):
+    """A fuzzy surface (SPEC §9) of degrees 1-4 in each direction, knots of
+    one kind per direction, for the surface example."""
+    degree = [1 + case % 4, 1 + (case // 4) % 4]
+    every = ["clamped", "unclamped", "repeated", "jump"]
+    kinds = [every[(case // 4) % 4], every[(case // 4 + 1 + case % 2) % 4]]
+    shape = [p + 1 + rng.randint(0, 3) + (p + 1 if kind == "jump" else 0)
+             for p, kind in zip(degree, kinds)]
+    points = [[{a: number(rng, base) for a, base in zip("xyz", (i + rng.uniform(-0.3, 0.3),
+                                                                j + rng.uniform(-0.3, 0.3),
+                                                                rng.uniform(-1, 1)))}
+               for j in range(shape[1])] for i in range(shape[0])]
+    job = {"degree": degree, "knots": [knots(rng, n, p, k) for n, p, k in zip(shape, degree, kinds)],
+           "weights": [[rng.uniform(0.2, 5) for _ in range(shape[1])] for _ in range(shape[0])],
+           "points": points, "alpha": rng.uniform(0, 1), "samples": [23, 19], "folder": str(folder)}
+    return job, f"surface degree {degree}, knots {kinds[0]} × {kinds[1]}"
+
+
+def check_surfaces(example, job, label, worst):
+    """Our surface files read back, against our run's samples."""
+    out = json.loads(subprocess.run([example], input=json.dumps(job), check=True,
+                                    capture_output=True, text=True).stdout)
+    reference = out["surfaces"]
+    scale = max(1.0, max(abs(x) for grid in reference.values() for row in grid
+                         for pt in row for x in pt))
+    for fmt, reader in SURFACE_READERS.items():
+        exported = reader(Path(job["folder"]) / f"surfaces.{fmt}")
+        assert sorted(exported) == sorted(NAMES), (label, fmt, sorted(exported))
+        key = f"{fmt} surfaces"
+        for name in NAMES:
+            for a, u in enumerate(out["u"]):
+                for b, v in enumerate(out["v"]):
+                    got = pick_patch(exported[name], u, v)(u, v)
+                    want = reference[name][a][b]
+                    error = math.dist(got, want) / scale
+                    if error > worst.get(key, (0.0, ""))[0]:
+                        worst[key] = (error, f"{label}: {name} at ({u}, {v})")
+                    assert error <= TOLERANCE, f"{label}, {fmt}, {name}, ({u}, {v}): {got} vs {want}"
+        worst[key + " files"] = (worst.get(key + " files", (0, ""))[0] + 1, "")
+
+
 # ---- the check ---------------------------------------------------------------
 
 def check(binary, job_path, label, folder, worst):
@@ -287,6 +428,9 @@ def main():
     parser.add_argument("--bin", required=True)
     parser.add_argument("--cases", type=int, default=60)
     parser.add_argument("--seed", type=int, default=20261201)
+    parser.add_argument("--surface-example",
+                        help="the example program that exports fuzzy surfaces (until t2spline reads surface jobs)")
+    parser.add_argument("--surface-cases", type=int, default=32)
     args = parser.parse_args()
     rng = random.Random(args.seed)
     worst = {fmt: (0.0, "") for fmt in READERS}
@@ -318,7 +462,20 @@ def main():
                 failed += 1
                 detail = e.stderr if isinstance(e, subprocess.CalledProcessError) else repr(e)
                 print(f"FAIL {label}: {detail}", file=sys.stderr)
-    for fmt in READERS:
+        if args.surface_example:
+            for case in range(args.surface_cases):
+                job, label = random_surface(rng, case, folder)
+                try:
+                    check_surfaces(args.surface_example, job, f"surface case {case} ({label})", worst)
+                    passed += 1
+                    kinds["surface"] = kinds.get("surface", 0) + 1
+                except (AssertionError, subprocess.CalledProcessError) as e:
+                    failed += 1
+                    detail = e.stderr if isinstance(e, subprocess.CalledProcessError) else repr(e)
+                    print(f"FAIL surface case {case} ({label}): {detail}", file=sys.stderr)
+    for fmt in list(READERS) + [f"{f} surfaces" for f in SURFACE_READERS]:
+        if fmt not in worst:
+            continue
         error, where = worst[fmt]
         files = worst.get(fmt + " files", (0, ""))[0]
         print(f"{fmt}: {files} files read back, largest relative difference {error:.2e} ({where})")

@@ -200,7 +200,7 @@ fn export_writes_every_format() {
     for (file, start) in [
         ("c.dxf", "  0\nSECTION\n  2\nHEADER\n"),
         ("c.step", "ISO-10303-21;\n"),
-        ("c.igs", "t2spline: the exact curves"),
+        ("c.igs", "t2spline: a run's curves or surfaces"),
         ("c.obj", "# t2spline"),
     ] {
         let path = dir.path().join(file);

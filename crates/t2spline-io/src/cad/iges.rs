@@ -31,7 +31,7 @@ use super::{real, CadMeta};
 pub(super) fn render(geometry: &Geometry, meta: &CadMeta) -> String {
     let mut file = Sections::default();
     let mut start =
-        String::from("t2spline: the exact curves of a run as rational B-splines (entity 126).");
+        String::from("t2spline: a run's curves or surfaces as exact rational B-splines (entities 126 and 128).");
     if let Some(d) = &meta.description {
         start.push(' ');
         start.push_str(d);

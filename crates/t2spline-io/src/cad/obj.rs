@@ -25,7 +25,7 @@ use super::{real, CadMeta};
 pub(super) fn render(geometry: &Geometry, meta: &CadMeta) -> String {
     let r = |x: f64| real(x, 'e');
     let mut out = String::new();
-    out.push_str("# t2spline: the exact curves of a run as rational B-splines\n");
+    out.push_str("# t2spline: a run's curves or surfaces as exact rational B-splines\n");
     if let Some(d) = &meta.description {
         for line in d.lines() {
             let _ = writeln!(out, "# {line}");

@@ -111,7 +111,7 @@ pub(super) fn render(geometry: &Geometry, meta: &CadMeta) -> String {
     let _ = writeln!(
         out,
         "FILE_DESCRIPTION(({}),'2;1');",
-        string("t2spline: the exact curves of a run as rational B-splines")
+        string("t2spline: a run's curves or surfaces as exact rational B-splines")
     );
     let version = concat!("'t2spline ", env!("CARGO_PKG_VERSION"), "'");
     let _ = writeln!(
