@@ -48,7 +48,13 @@ fn main() -> Result<(), String> {
         .map(|row| {
             list(row)?
                 .iter()
-                .map(|p| Ok(Nt2Point::new([number(&p["x"])?, number(&p["y"])?, number(&p["z"])?])))
+                .map(|p| {
+                    Ok(Nt2Point::new([
+                        number(&p["x"])?,
+                        number(&p["y"])?,
+                        number(&p["z"])?,
+                    ]))
+                })
                 .collect::<Result<Vec<_>, String>>()
         })
         .collect::<Result<Vec<_>, String>>()?;
@@ -61,7 +67,8 @@ fn main() -> Result<(), String> {
             .as_array()
             .map(|k| k.iter().filter_map(Value::as_f64).collect())
     });
-    let surface = FuzzySurface::try_new(degree, points, weights, knots).map_err(|e| e.to_string())?;
+    let surface =
+        FuzzySurface::try_new(degree, points, weights, knots).map_err(|e| e.to_string())?;
     let job = Job::new(Model::Surface(surface));
     let samples = vec![
         input["samples"][0].as_u64().ok_or("samples")?,
@@ -76,14 +83,19 @@ fn main() -> Result<(), String> {
         .map_err(|e| e.to_string())?;
     let geometry = job.geometry(&settings).map_err(|e| e.to_string())?;
     let folder = std::path::PathBuf::from(input["folder"].as_str().ok_or("folder")?);
-    for (format, extension) in [(CadFormat::Step, "step"), (CadFormat::Iges, "iges"), (CadFormat::Obj, "obj")] {
+    for (format, extension) in [
+        (CadFormat::Step, "step"),
+        (CadFormat::Iges, "iges"),
+        (CadFormat::Obj, "obj"),
+    ] {
         let meta = CadMeta {
             name: format!("surfaces.{extension}"),
             description: None,
             timestamp: "1970-01-01T00:00:00".into(),
         };
         let text = render_cad(format, &geometry, &meta, "<stdin>").map_err(|e| e.to_string())?;
-        std::fs::write(folder.join(format!("surfaces.{extension}")), text).map_err(|e| e.to_string())?;
+        std::fs::write(folder.join(format!("surfaces.{extension}")), text)
+            .map_err(|e| e.to_string())?;
     }
     let out = job.run(&settings).map_err(|e| e.to_string())?;
     let Parameters::Grid { u, v } = &out.samples.params else {

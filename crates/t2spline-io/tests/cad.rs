@@ -226,3 +226,111 @@ fn degree_0_is_refused() {
         "job.json: the curves have degree 0 (piecewise constant: a set of points), which STEP cannot hold; export needs degree 1 or more"
     );
 }
+
+/// A surface job of degrees [2, 1] over a 3 × `nv` net, `v` knots given.
+fn surface_geometry(nv: usize, v_knots: Option<Vec<f64>>) -> Geometry {
+    use t2spline::job::{Job, Model};
+    use t2spline::{FuzzySurface, Nt2Number, Nt2Point};
+    let n = |c: f64| {
+        Nt2Number::try_new(
+            c,
+            [c - 1.0, c + 2.0],
+            [c - 0.5, c + 1.0],
+            [c - 0.25, c + 0.5],
+            0.5,
+        )
+        .unwrap()
+    };
+    let points = (0..3)
+        .map(|i| {
+            (0..nv)
+                .map(|j| Nt2Point::new([n(i as f64), n(j as f64), n((i * j) as f64 / 4.0)]))
+                .collect()
+        })
+        .collect();
+    let weights = (0..3)
+        .map(|i| (0..nv).map(|j| 1.0 + (i + j) as f64 / 5.0).collect())
+        .collect();
+    let surface = FuzzySurface::try_new([2, 1], points, weights, [None, v_knots]).unwrap();
+    let job = Job::new(Model::Surface(surface));
+    job.geometry(
+        &job.settings(&Overrides {
+            alpha: Some(0.5),
+            ..Overrides::default()
+        })
+        .unwrap(),
+    )
+    .unwrap()
+}
+
+#[test]
+fn surfaces_are_written_as_nurbs_surfaces_except_in_dxf() {
+    let g = surface_geometry(2, None);
+    assert_eq!((g.curves.len(), g.surfaces.len()), (0, 8));
+    let step = render(CadFormat::Step, &g);
+    assert!(step.contains("GEOMETRICALLY_BOUNDED_SURFACE_SHAPE_REPRESENTATION('curves.step',("));
+    for name in NAMES {
+        assert_eq!(
+            step.matches(&format!("REPRESENTATION_ITEM('{name}') SURFACE())"))
+                .count(),
+            1,
+            "{name}"
+        );
+    }
+    assert!(
+        step.contains("B_SPLINE_SURFACE_WITH_KNOTS((3,3),(2,2),(0.0,1.0),(0.0,1.0),.UNSPECIFIED.)")
+    );
+    assert!(
+        step.contains("RATIONAL_B_SPLINE_SURFACE(((1.0,1.2),(1.2,1.4),(1.4,1.6)))"),
+        "{step}"
+    );
+    let iges = render(CadFormat::Iges, &g);
+    let types: Vec<&str> = iges
+        .lines()
+        .filter(|l| &l[72..73] == "D")
+        .step_by(2)
+        .map(|l| l[..8].trim())
+        .collect();
+    assert_eq!(types.iter().filter(|t| **t == "128").count(), 8);
+    // 128, K1, K2, M1, M2, five flags (rational: not polynomial).
+    assert!(
+        iges.contains("128,2,1,2,1,0,0,0,0,0,0.0,0.0,0.0,1.0,1.0,1.0,0.0,0.0,1.0,1.0,"),
+        "{iges}"
+    );
+    let obj = render(CadFormat::Obj, &g);
+    assert_eq!(
+        obj.matches("cstype rat bspline\ndeg 2 1\nsurf 0.0 1.0 0.0 1.0 ")
+            .count(),
+        8
+    );
+    // The u index varies fastest: the second vertex is P(1, 0) = (1, 0, 0).
+    assert!(
+        obj.contains("g crisp\nv 0.0 0.0 0.0 1.0\nv 1.0 0.0 0.0 1.2\n"),
+        "{obj}"
+    );
+    let meta = CadMeta {
+        name: "s.dxf".into(),
+        description: None,
+        timestamp: "2026-01-01T00:00:00".into(),
+    };
+    let e = render_cad(CadFormat::Dxf, &g, &meta, "job.json").unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "job.json: DXF holds NURBS curves (SPLINE) but no NURBS surfaces (only ACIS solids); export surfaces as STEP, IGES or OBJ"
+    );
+}
+
+#[test]
+fn surfaces_that_jump_are_written_as_patches() {
+    // Degree 1 in v with the knot 0.5 twice (full multiplicity): two patches.
+    let g = surface_geometry(4, Some(vec![0.0, 0.0, 0.5, 0.5, 1.0, 1.0]));
+    assert!(g.surfaces.iter().all(|s| s.patches.len() == 2));
+    let step = render(CadFormat::Step, &g);
+    assert_eq!(
+        step.matches("REPRESENTATION_ITEM('crisp') SURFACE())")
+            .count(),
+        2
+    );
+    let obj = render(CadFormat::Obj, &g);
+    assert_eq!(obj.matches("\nsurf ").count(), 16);
+}

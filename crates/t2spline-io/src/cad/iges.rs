@@ -30,8 +30,9 @@ use super::{real, CadMeta};
 /// The IGES text of `geometry`.
 pub(super) fn render(geometry: &Geometry, meta: &CadMeta) -> String {
     let mut file = Sections::default();
-    let mut start =
-        String::from("t2spline: a run's curves or surfaces as exact rational B-splines (entities 126 and 128).");
+    let mut start = String::from(
+        "t2spline: a run's curves or surfaces as exact rational B-splines (entities 126 and 128).",
+    );
     if let Some(d) = &meta.description {
         start.push(' ');
         start.push_str(d);
