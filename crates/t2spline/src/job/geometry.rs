@@ -141,17 +141,8 @@ impl ModelVisitor for Exact {
     type Output = Result<Geometry, Error>;
 
     fn curve<const D: usize>(self, curve: &FuzzyCurve<D>) -> Self::Output {
-        let mut named: Vec<(&'static str, NurbsCurve<D>)> = vec![
-            ("crisp", curve.crisp_curve()),
-            ("defuzzified", curve.solve(self.0).defuzzified_curve()),
-        ];
-        named.extend(
-            Layer::ALL
-                .into_iter()
-                .filter(|&l| l != Layer::Crisp)
-                .map(|l| (l.name(), curve.layer_curve(l))),
-        );
-        let curves = named
+        let defuzzified = curve.solve(self.0).defuzzified_curve();
+        let curves = named(curve.crisp_curve(), defuzzified, |l| curve.layer_curve(l))
             .into_iter()
             .map(|(name, c)| {
                 Ok(NamedCurve {
@@ -168,31 +159,37 @@ impl ModelVisitor for Exact {
     }
 
     fn surface<const D: usize>(self, surface: &FuzzySurface<D>) -> Self::Output {
-        let mut named: Vec<(&'static str, NurbsSurface<D>)> = vec![
-            ("crisp", surface.crisp_surface()),
-            ("defuzzified", surface.solve(self.0).defuzzified_surface()),
-        ];
-        named.extend(
-            Layer::ALL
-                .into_iter()
-                .filter(|&l| l != Layer::Crisp)
-                .map(|l| (l.name(), surface.layer_surface(l))),
-        );
-        let surfaces = named
-            .into_iter()
-            .map(|(name, s)| {
-                Ok(NamedSurface {
-                    name,
-                    patches: continuous_patches(&lift_surface(&s)?)?,
-                })
+        let defuzzified = surface.solve(self.0).defuzzified_surface();
+        let surfaces = named(surface.crisp_surface(), defuzzified, |l| {
+            surface.layer_surface(l)
+        })
+        .into_iter()
+        .map(|(name, s)| {
+            Ok(NamedSurface {
+                name,
+                patches: continuous_patches(&lift_surface(&s)?)?,
             })
-            .collect::<Result<_, Error>>()?;
+        })
+        .collect::<Result<_, Error>>()?;
         Ok(Geometry {
             dimension: D,
             curves: Vec::new(),
             surfaces,
         })
     }
+}
+
+/// The eight shapes of a run with their names: `crisp`, `defuzzified`, then
+/// the six other layers in SPEC §1 order.
+fn named<T>(crisp: T, defuzzified: T, layer: impl Fn(Layer) -> T) -> Vec<(&'static str, T)> {
+    let mut out = vec![("crisp", crisp), ("defuzzified", defuzzified)];
+    out.extend(
+        Layer::ALL
+            .into_iter()
+            .filter(|&l| l != Layer::Crisp)
+            .map(|l| (l.name(), layer(l))),
+    );
+    out
 }
 
 /// A point with three coordinates: its own, then zeros.
