@@ -185,8 +185,12 @@ fn global(meta: &CadMeta) -> String {
 }
 
 /// An IGES string: its length in characters, `H`, the text (ASCII; other
-/// characters become `?`).
+/// characters become `?`); an empty string is the parameter's default (an
+/// empty field), as `0H` is not read by every program.
 fn hollerith(text: &str) -> String {
+    if text.is_empty() {
+        return String::new();
+    }
     let ascii: String = text
         .chars()
         .map(|c| if (' '..='~').contains(&c) { c } else { '?' })
