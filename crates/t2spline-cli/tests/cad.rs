@@ -285,3 +285,27 @@ fn export_failures_name_their_place_and_write_nothing() {
         .stderr(predicate::str::contains("the curves have degree 0 (piecewise constant: a set of points), which DXF cannot hold; export needs degree 1 or more"));
     assert_eq!(std::fs::read_to_string(&old).unwrap(), "old");
 }
+
+#[test]
+fn readings_on_standard_input_are_told_by_their_content() {
+    let text = "\u{feff}station;x;y\r\nA;0;0\r\nA;0,5;1\r\nB;2;1\r\nB;3;2\r\n";
+    let out = t2spline()
+        .args(["fuzzify", "-", "--degree", "1"])
+        .write_stdin(text)
+        .assert()
+        .code(0)
+        .get_output()
+        .stdout
+        .clone();
+    let data: Value = serde_json::from_slice(&out).unwrap();
+    assert_eq!(data["points"][0]["x"]["crisp"], serde_json::json!(0.25));
+    t2spline()
+        .args(["fit", "-", "--degree", "1", "-o", "-"])
+        .write_stdin(text)
+        .assert()
+        .code(0)
+        .stderr(predicate::str::contains(
+            "<stdin>: a readings file (CSV), fuzzified first",
+        ))
+        .stdout(predicate::str::contains("\"knots\""));
+}
