@@ -5,6 +5,7 @@ Stand-in until `t2spline plot` exists: it reads only what `t2spline fit` and
 offsets it plots. Made by (from the repository root):
 
     cargo build --release --bin t2spline
+    target/release/t2spline fuzzify examples/beach-readings.csv --tolerance 0.02 --alpha 0.5 -o examples/fit-measurements.json
     target/release/t2spline fit examples/fit-measurements.json -o out/fit-job.json
     target/release/t2spline run out/fit-job.json --csv out/fit-csv -o out/fit-result.json
     python3 -m venv docs/.venv && docs/.venv/bin/pip install -r docs/fit-example/requirements.txt

@@ -26,8 +26,16 @@ pub enum Command {
     Plot(PlotArgs),
     /// Write a self-contained HTML report with an alpha slider into a folder.
     Report(ReportArgs),
-    /// Fit a fuzzy curve to fuzzy data points and write it as a job file.
+    /// Fit a fuzzy curve to fuzzy data points (or to repeated readings, CSV)
+    /// and write it as a job file.
     Fit(FitArgs),
+    /// Turn repeated readings of stations (CSV) into fuzzy data points for
+    /// `fit`: median, quartiles, 10th-90th percentiles, extremes widened by
+    /// the instrument's accuracy.
+    Fuzzify(FuzzifyArgs),
+    /// Write the exact curves of a run (crisp, defuzzified, six layers) as
+    /// rational B-splines in a CAD file: DXF, STEP, IGES or OBJ.
+    Export(ExportArgs),
     /// Time the sampling engine: one line per case with the median of 5 runs.
     Bench(BenchArgs),
 }
@@ -152,6 +160,81 @@ pub struct FitArgs {
     /// Do not print the report on standard error.
     #[arg(short, long)]
     pub quiet: bool,
+    /// How readings become fuzzy numbers, when the data file is a readings
+    /// file (CSV).
+    #[command(flatten)]
+    pub readings: ReadingsArgs,
+}
+
+/// How readings become fuzzy data points (`fuzzify`, and `fit` of a
+/// readings file).
+#[derive(Debug, Args)]
+pub struct ReadingsArgs {
+    /// The instrument's accuracy T: the upper membership function reaches T
+    /// beyond the smallest and the largest reading [default: 0].
+    #[arg(long, value_name = "T", allow_negative_numbers = true)]
+    pub tolerance: Option<f64>,
+    /// The height of the lower membership function, in (0, 1] [default: 0.5:
+    /// the quartiles hold half of the readings].
+    #[arg(long, value_name = "H", allow_negative_numbers = true)]
+    pub lower_height: Option<f64>,
+    /// The degree of the curve to fit, carried into the data file [default: 3].
+    #[arg(long, value_name = "P", conflicts_with = "order")]
+    pub degree: Option<u64>,
+    /// The order of the curve to fit (degree + 1), instead of --degree.
+    #[arg(long, value_name = "K")]
+    pub order: Option<u64>,
+}
+
+/// Arguments of `t2spline fuzzify`.
+#[derive(Debug, Args)]
+pub struct FuzzifyArgs {
+    /// The readings file: a header `station,x,y` or `station,x,y,z`, then one
+    /// reading per row, the rows of a station together (comma or semicolon
+    /// separated). `-` reads standard input.
+    pub readings: PathBuf,
+    /// Write the data file here instead of standard output (`-` is standard
+    /// output).
+    #[arg(short, long, value_name = "DATA.json")]
+    pub output: Option<PathBuf>,
+    /// The level alpha in [0, 1] to carry into the data file (and so into the
+    /// fitted job).
+    #[arg(long, value_name = "A", allow_negative_numbers = true)]
+    pub alpha: Option<f64>,
+    /// How readings become fuzzy numbers.
+    #[command(flatten)]
+    pub rule: ReadingsArgs,
+}
+
+/// CAD formats of `t2spline export`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum CadFormatArg {
+    /// AutoCAD DXF (R2000): SPLINE entities, one layer per curve.
+    Dxf,
+    /// STEP (AP214): rational B_SPLINE_CURVE_WITH_KNOTS entities.
+    Step,
+    /// IGES 5.3: entity 126.
+    Iges,
+    /// Wavefront OBJ: rational B-spline curves.
+    Obj,
+}
+
+/// Arguments of `t2spline export`.
+#[derive(Debug, Args)]
+pub struct ExportArgs {
+    /// The job file; `-` reads standard input.
+    pub job: PathBuf,
+    /// The file to write (`-` is standard output).
+    #[arg(short, long, value_name = "FILE")]
+    pub output: PathBuf,
+    /// The format [default: from the extension of FILE: .dxf, .step/.stp,
+    /// .iges/.igs, .obj].
+    #[arg(long, value_enum)]
+    pub format: Option<CadFormatArg>,
+    /// The level alpha in [0, 1] of the defuzzified curve; overrides the job
+    /// file.
+    #[arg(long, value_name = "A", allow_negative_numbers = true)]
+    pub alpha: Option<f64>,
 }
 
 /// Arguments of `t2spline bench`.

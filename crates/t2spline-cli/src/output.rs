@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 
 use t2spline::job::Job;
 use t2spline_io::job::{read_text, read_text_from};
-use t2spline_io::{parse_data, parse_job, write_all_atomic, Error, FitData};
+use t2spline_io::{parse_job, write_all_atomic, Error};
 
 /// Whether the path names a standard stream.
 pub fn is_stdio(path: &Path) -> bool {
@@ -45,11 +45,6 @@ pub fn read_job_text(path: &Path) -> Result<(Job, String), Error> {
     let text = read_input(path)?;
     let job = parse_job(&text, &job_name(path))?;
     Ok((job, text))
-}
-
-/// Reads and validates the data file at `path`, or from standard input for `-`.
-pub fn read_data(path: &Path) -> Result<FitData, Error> {
-    parse_data(&read_input(path)?, &job_name(path))
 }
 
 /// Writes to standard output with `write`; a failure is an [`Error::Write`]

@@ -39,7 +39,7 @@ fn fits_the_example_into_a_job_that_runs() {
             "each layer fitted on its own would break the order of SPEC §1 at 35 place(s)",
         ))
         .stderr(predicate::str::contains(
-            "upper_left      1.604e-1  points[8].y   spread  1.604e-1  points[8].y",
+            "upper_left      1.606e-1  points[8].y   spread  1.606e-1  points[8].y",
         ))
         .stderr(
             predicate::str::is_match(
@@ -50,14 +50,15 @@ fn fits_the_example_into_a_job_that_runs() {
     let v = read_json(&job);
     assert_eq!(v["degree"], json!(3));
     assert_eq!(v["points"].as_array().unwrap().len(), 13);
-    assert_eq!(v["samples"], json!(201));
+    // The data file (made by `t2spline fuzzify`) leaves samples to the default.
+    assert_eq!(v["samples"], Value::Null);
     t2spline()
         .args(["validate"])
         .arg(&job)
         .assert()
         .code(0)
         .stdout(predicate::str::contains(
-            "ok: 2-D curve, 13 control points, order 4, alpha 0.5, 201 samples",
+            "ok: 2-D curve, 13 control points, order 4, alpha 0.5, 101 samples",
         ));
     t2spline().arg("run").arg(&job).assert().code(0);
 }

@@ -17,6 +17,11 @@
 //!   never half written.
 //! - [`parse_data`] / [`FitData`]: data files for `t2spline fit` (fuzzy data
 //!   points), and the fitted model written back as a job file.
+//! - [`render_cad`]: a run's exact curves ([`t2spline::job::Geometry`]) as
+//!   DXF, STEP, IGES or OBJ, rational B-splines at full precision.
+//! - [`parse_readings`] / [`ReadingsFile`]: repeated readings of stations
+//!   (CSV as spreadsheets write it), which the core turns into fuzzy data
+//!   points ([`t2spline::fit::fuzzify`]).
 //!
 //! ```
 //! use t2spline::job::Overrides;
@@ -37,6 +42,7 @@
 //! ```
 
 mod atomic;
+mod cad;
 mod csv;
 mod error;
 mod finite;
@@ -44,8 +50,10 @@ mod fit_data;
 pub mod job;
 mod pretty;
 mod printable;
+mod readings;
 
 pub use crate::atomic::{write_all_atomic, write_atomic, Staged};
+pub use crate::cad::{render_cad, CadFormat, CadMeta};
 pub use crate::csv::{render_csv, stage_csv, write_csv, CSV_FILES, DERIVATIVES_CSV};
 pub use error::{Error, Problem};
 pub use finite::check_finite;
@@ -53,3 +61,4 @@ pub use fit_data::FitData;
 pub use job::{job_json, parse_data, parse_job, read_data, read_job};
 pub use pretty::{to_json_pretty, write_json_pretty};
 pub use printable::printable;
+pub use readings::{data_json, is_readings, parse_readings, read_readings, ReadingsFile, MAX_ROWS};

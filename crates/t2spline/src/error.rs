@@ -519,6 +519,25 @@ pub enum Error {
         count: usize,
     },
 
+    /// A station of a readings file has fewer readings than percentiles need
+    /// ([`MIN_READINGS`](crate::fit::MIN_READINGS)).
+    ///
+    /// ```
+    /// # use t2spline::Error;
+    /// # use t2spline::fit::{fuzzify, FuzzifyRule};
+    /// let stations = vec![vec![[0.0, 0.0], [1.0, 1.0]], vec![[2.0, 2.0]]];
+    /// let e = fuzzify(&stations, &FuzzifyRule::try_new(0.0, 0.5)?).unwrap_err();
+    /// assert_eq!(e, Error::TooFewReadings { station: Some(1), count: 1 });
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("{}{count} reading(s); percentiles need at least 2", station.map_or(String::new(), |s| format!("station {s} (points[{s}]): ")))]
+    TooFewReadings {
+        /// The station (0-based, as the data point it becomes), if known.
+        station: Option<usize>,
+        /// The number of readings given.
+        count: usize,
+    },
+
     /// Fitting needs degree 1 or more: knots by averaging divide by the degree,
     /// and a piecewise-constant curve cannot pass through distinct points.
     ///

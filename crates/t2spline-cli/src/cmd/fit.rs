@@ -6,11 +6,11 @@ use std::path::PathBuf;
 use anyhow::anyhow;
 use t2spline::fit::{Deviation, FitOptions, FitSummary, FuzzyFitMode, Parametrization};
 use t2spline::Layer;
-use t2spline_io::{parse_job, to_json_pretty, FitData};
+use t2spline_io::{is_readings, parse_data, parse_job, to_json_pretty, FitData};
 
 use super::settings::OptionError;
 use crate::cli::FitArgs;
-use crate::output::{job_name, read_data, Outputs};
+use crate::output::{job_name, read_input, Outputs};
 
 /// Condition numbers above this get a warning: the control points may then
 /// be wrong in their last eight digits or more.
@@ -23,6 +23,8 @@ struct Plan {
     mode: FuzzyFitMode,
     output: Option<PathBuf>,
     quiet: bool,
+    /// For a readings file: how its readings were fuzzified, for the report.
+    fuzzified: Option<String>,
 }
 
 impl Plan {
@@ -33,7 +35,34 @@ impl Plan {
             .parse()
             .map_err(|e: String| anyhow!(e))?;
         let mode: FuzzyFitMode = args.fuzzy_fit.parse().map_err(|e: String| anyhow!(e))?;
-        let data = read_data(&args.data)?;
+        let text = read_input(&args.data)?;
+        let (data, fuzzified) = if is_readings(&args.data, &text) {
+            let data = super::fuzzify::readings_data(&args.data, &text, &args.readings, None)?;
+            let note = format!(
+                "{}: a readings file (CSV), fuzzified first as `t2spline fuzzify` does: {}",
+                data.source,
+                data.description.as_deref().unwrap_or_default()
+            );
+            (data, Some(note))
+        } else {
+            let given = [
+                ("--tolerance", args.readings.tolerance.is_some()),
+                ("--lower-height", args.readings.lower_height.is_some()),
+                ("--degree", args.readings.degree.is_some()),
+                ("--order", args.readings.order.is_some()),
+            ];
+            if let Some((option, _)) = given.iter().find(|(_, g)| *g) {
+                return Err(OptionError {
+                    option,
+                    message: format!(
+                        "only for a readings file (CSV); {} is a data file, whose numbers and degree are its own",
+                        job_name(&args.data)
+                    ),
+                }
+                .into());
+            }
+            (parse_data(&text, &job_name(&args.data))?, None)
+        };
         if let Some(m) = args.control_points {
             let (min, max) = (data.degree + 1, data.len());
             if m < min || m > max {
@@ -57,6 +86,7 @@ impl Plan {
             mode,
             output: args.output,
             quiet: args.quiet,
+            fuzzified,
         })
     }
 }
@@ -104,7 +134,8 @@ fn report(plan: &Plan, s: &FitSummary) -> Vec<String> {
         None => "interpolation".to_owned(),
         Some(_) => "least squares, end points interpolated".to_owned(),
     };
-    let mut lines = vec![format!(
+    let mut lines: Vec<String> = plan.fuzzified.iter().cloned().collect();
+    lines.push(format!(
         "{}: {} data points, degree {}, {} parameters: {method}, {} control points, condition number {:.1e}",
         plan.data.source,
         s.data_points,
@@ -112,7 +143,7 @@ fn report(plan: &Plan, s: &FitSummary) -> Vec<String> {
         plan.options.parametrization,
         s.control_points,
         s.condition,
-    )];
+    ));
     if s.condition > WARN_CONDITION {
         lines.push(format!(
             "warning: the system is ill-conditioned: the control points may be wrong in their last {:.0} digits; fewer control points give a better-posed fit",

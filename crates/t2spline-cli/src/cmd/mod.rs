@@ -2,7 +2,9 @@
 //! the libraries.
 
 mod bench;
+mod export;
 mod fit;
+mod fuzzify;
 mod plot;
 mod report;
 mod run;
@@ -19,6 +21,8 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<()> {
         Command::Plot(args) => plot::plot(&args),
         Command::Report(args) => report::report(&args),
         Command::Fit(args) => fit::fit(args),
+        Command::Fuzzify(args) => fuzzify::fuzzify(args),
+        Command::Export(args) => export::export(&args),
         Command::Bench(args) => bench::bench(&args),
     }
 }

@@ -5,6 +5,9 @@
 //! - [`averaging_knots`] (Eq. 9.8) and [`approximation_knots`] (Eqs. 9.68–9.69).
 //! - [`fit_curve`]: a crisp B-spline through the data (Algorithm A9.1) or
 //!   approximating them with the end points interpolated (§9.4.1).
+//! - [`fuzzify`]: fuzzy data points from repeated readings (median,
+//!   quartiles, 10th–90th percentiles, extremes widened by the instrument's
+//!   accuracy; [`FuzzifyRule`]).
 //! - [`fit_fuzzy`]: a fuzzy curve through fuzzy data points, with the order of
 //!   SPEC §1 kept by construction ([`FuzzyFitMode::Valid`]) or each layer
 //!   fitted on its own and checked ([`FuzzyFitMode::Independent`]).
@@ -27,6 +30,7 @@ pub(crate) mod banded;
 mod curve;
 mod data;
 mod design;
+mod fuzzify;
 mod fuzzy;
 mod knots;
 mod nnls;
@@ -34,6 +38,9 @@ mod parametrization;
 
 pub use curve::{fit_curve, CurveFit, FitOptions};
 pub use data::{FitOutcome, FitSummary, FuzzyData};
+pub use fuzzify::{
+    fuzzify, fuzzify_number, percentile, FuzzifyRule, Readings, DEFAULT_LOWER_HEIGHT, MIN_READINGS,
+};
 pub use fuzzy::{fit_fuzzy, Deviation, FuzzyFit, FuzzyFitMode, OrderViolation};
 pub use knots::{approximation_knots, averaging_knots};
 pub use parametrization::Parametrization;

@@ -6,8 +6,9 @@
 //! ([`Overrides`]: `--alpha` on the command line, `alpha=` in Python) into
 //! checked [`Settings`], and [`Job::run`] computes every stage into a
 //! [`RunOutput`]: the one path from job to result that the command-line tool,
-//! the figures and the Python bindings all take. Reading job files and writing
-//! results are the I/O crate's; this module only computes.
+//! the figures and the Python bindings all take. [`Job::geometry`] gives the
+//! same run's curves exactly, named, for CAD files. Reading job files and
+//! writing results are the I/O crate's; this module only computes.
 //!
 //! ```
 //! use t2spline::job::{Job, Model, Overrides};
@@ -27,6 +28,7 @@
 //! # Ok::<(), t2spline::Error>(())
 //! ```
 
+mod geometry;
 mod output;
 mod points;
 mod run;
@@ -35,6 +37,7 @@ mod serialize;
 mod settings;
 
 pub use crate::error::Setting;
+pub use geometry::{Geometry, NamedCurve};
 pub use output::{
     ControlPoints, CrispDefuzzified, Distance, LeftRight, Parameter, Parameters, Regime, RunOutput,
     Sampled, SixLayers, Spline,

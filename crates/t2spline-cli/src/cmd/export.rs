@@ -1,0 +1,150 @@
+//! `t2spline export JOB.json -o FILE [--format dxf|step|iges|obj] [--alpha A]`.
+
+use std::path::{Path, PathBuf};
+use std::time::{SystemTime, UNIX_EPOCH};
+
+use t2spline::job::{Job, Overrides, Settings};
+use t2spline_io::{render_cad, CadFormat, CadMeta};
+
+use super::settings::{about_option, settings, OptionError};
+use crate::cli::{CadFormatArg, ExportArgs};
+use crate::output::{is_stdio, job_name, read_job_text, Outputs};
+
+/// An export with every input validated.
+struct Plan {
+    job: Job,
+    source: String,
+    settings: Settings,
+    format: CadFormat,
+    output: PathBuf,
+}
+
+impl Plan {
+    fn new(args: &ExportArgs) -> anyhow::Result<Plan> {
+        let format = match args.format {
+            Some(f) => from_arg(f),
+            None => from_extension(&args.output)?,
+        };
+        let (job, text) = read_job_text(&args.job)?;
+        let overrides = Overrides {
+            alpha: args.alpha,
+            ..Overrides::default()
+        };
+        let settings = settings(&job, &overrides, &args.job, &text)?;
+        Ok(Plan {
+            job,
+            source: job_name(&args.job),
+            settings,
+            format,
+            output: args.output.clone(),
+        })
+    }
+}
+
+pub fn export(args: &ExportArgs) -> anyhow::Result<()> {
+    let plan = Plan::new(args)?;
+    let geometry = plan.job.geometry(&plan.settings).map_err(about_option)?;
+    let geometry = if plan.format.clamps() {
+        geometry.clamped()
+    } else {
+        geometry
+    };
+    let name = if is_stdio(&plan.output) {
+        "t2spline".to_owned()
+    } else {
+        plan.output
+            .file_name()
+            .map_or_else(String::new, |n| n.to_string_lossy().into_owned())
+    };
+    let meta = CadMeta {
+        name,
+        description: plan.job.description.clone(),
+        timestamp: timestamp(),
+    };
+    let text = render_cad(plan.format, &geometry, &meta, &plan.source)?;
+    let mut out = Outputs::default();
+    out.to(Some(&plan.output), text.into_bytes());
+    out.commit()
+}
+
+fn from_arg(f: CadFormatArg) -> CadFormat {
+    match f {
+        CadFormatArg::Dxf => CadFormat::Dxf,
+        CadFormatArg::Step => CadFormat::Step,
+        CadFormatArg::Iges => CadFormat::Iges,
+        CadFormatArg::Obj => CadFormat::Obj,
+    }
+}
+
+/// The format named by the output's extension.
+fn from_extension(path: &Path) -> anyhow::Result<CadFormat> {
+    let extension = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    match extension.as_deref() {
+        Some("dxf") => Ok(CadFormat::Dxf),
+        Some("step" | "stp") => Ok(CadFormat::Step),
+        Some("iges" | "igs") => Ok(CadFormat::Iges),
+        Some("obj") => Ok(CadFormat::Obj),
+        _ => Err(OptionError {
+            option: "--format",
+            message: format!(
+                "missing: the extension of {} names no format (.dxf, .step, .stp, .iges, .igs, .obj); give --format dxf|step|iges|obj",
+                job_name(path)
+            ),
+        }
+        .into()),
+    }
+}
+
+/// The time of writing as `YYYY-MM-DDThh:mm:ss` (UTC); `SOURCE_DATE_EPOCH`
+/// (seconds since 1970), when set, replaces the clock, so that files can be
+/// made reproducibly.
+fn timestamp() -> String {
+    let seconds = std::env::var("SOURCE_DATE_EPOCH")
+        .ok()
+        .and_then(|s| s.trim().parse::<u64>().ok())
+        .unwrap_or_else(|| {
+            SystemTime::now()
+                .duration_since(UNIX_EPOCH)
+                .map_or(0, |d| d.as_secs())
+        });
+    let (days, rest) = (seconds / 86_400, seconds % 86_400);
+    let (year, month, day) = civil_from_days(days);
+    format!(
+        "{year:04}-{month:02}-{day:02}T{:02}:{:02}:{:02}",
+        rest / 3600,
+        rest % 3600 / 60,
+        rest % 60
+    )
+}
+
+/// The proleptic Gregorian date of a day count since 1970-01-01 (Howard
+/// Hinnant's `civil_from_days`, in 400-year eras of 146 097 days).
+fn civil_from_days(days: u64) -> (u64, u64, u64) {
+    let z = days + 719_468;
+    let era = z / 146_097;
+    let doe = z - era * 146_097;
+    let yoe = (doe - doe / 1460 + doe / 36_524 - doe / 146_096) / 365;
+    let doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    let mp = (5 * doy + 2) / 153;
+    let day = doy - (153 * mp + 2) / 5 + 1;
+    let month = if mp < 10 { mp + 3 } else { mp - 9 };
+    let year = yoe + era * 400 + u64::from(month <= 2);
+    (year, month, day)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn dates_from_day_counts() {
+        assert_eq!(civil_from_days(0), (1970, 1, 1));
+        assert_eq!(civil_from_days(59), (1970, 3, 1));
+        // 2000-02-29 (a leap day of a year divisible by 400) is day 11 016.
+        assert_eq!(civil_from_days(11_016), (2000, 2, 29));
+        assert_eq!(civil_from_days(20_819), (2027, 1, 1));
+    }
+}

@@ -1,0 +1,224 @@
+//! CAD files of a run's exact curves: DXF, STEP, IGES and Wavefront OBJ.
+//!
+//! Every format gets the curves of [`Geometry`] (the core's
+//! [`Job::geometry`](t2spline::job::Job::geometry)) as rational B-splines
+//! with their knots, weights and control points, never as polylines, each
+//! named `crisp`, `defuzzified`, `upper_left`, …:
+//!
+//! | format | entity | name in | unclamped curves | units |
+//! |---|---|---|---|---|
+//! | DXF (R2000, ASCII) | `SPLINE` (rational flag and a weight per control point when a weight is not 1) | layer | clamped exactly (knot insertion) | `$INSUNITS` millimetres |
+//! | STEP (AP214, ISO 10303-21) | `B_SPLINE_CURVE_WITH_KNOTS` and `RATIONAL_B_SPLINE_CURVE` (complex entity) in a wireframe shape of one product | entity name and presentation layer | as they are (knot multiplicities, domain `[U[p], U[n]]`) | millimetres |
+//! | IGES 5.3 | entity 126 (rational B-spline curve) with a name property (406 form 15) | name property, label | as they are (`V(0)`, `V(1)` give the domain) | millimetres |
+//! | OBJ | `cstype rat bspline`, `deg`, `curv`, `parm u` | group | as they are (`curv u0 u1`) | none |
+//!
+//! Surface jobs (SPEC §9) export their eight surfaces, named the same way:
+//! STEP `B_SPLINE_SURFACE_WITH_KNOTS` + `RATIONAL_B_SPLINE_SURFACE`, IGES
+//! entity 128, OBJ `surf` with `parm u` and `parm v`; DXF has no NURBS
+//! surface entity and refuses them.
+//!
+//! Numbers are written in the shortest form that reads back to the same
+//! 64-bit float, so nothing is rounded. A curve that jumps at a knot of full
+//! multiplicity is written as its continuous pieces, all with the curve's
+//! name (see [`Geometry`]). Curves of degree 0 (piecewise constant) are sets
+//! of points, which no CAD format stores as a curve: they are refused.
+//!
+//! The writers only write; cutting and clamping curves is the core's
+//! ([`Geometry::clamped`]), which the caller applies when
+//! [`CadFormat::clamps`] says so.
+
+mod dxf;
+mod iges;
+mod obj;
+mod step;
+
+use std::fmt;
+
+use t2spline::job::Geometry;
+use t2spline::Num;
+
+use crate::{Error, Problem};
+
+/// A CAD file format.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CadFormat {
+    /// AutoCAD's Drawing Exchange Format (ASCII, R2000).
+    Dxf,
+    /// STEP (ISO 10303-21, AP214 `automotive_design`).
+    Step,
+    /// IGES 5.3.
+    Iges,
+    /// Wavefront OBJ free-form curves.
+    Obj,
+}
+
+impl CadFormat {
+    /// Every format.
+    pub const ALL: [CadFormat; 4] = [
+        CadFormat::Dxf,
+        CadFormat::Step,
+        CadFormat::Iges,
+        CadFormat::Obj,
+    ];
+
+    /// The name on the command line and in messages (`dxf`, `step`, …).
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            CadFormat::Dxf => "dxf",
+            CadFormat::Step => "step",
+            CadFormat::Iges => "iges",
+            CadFormat::Obj => "obj",
+        }
+    }
+
+    /// Whether curves must be clamped before this format is written: DXF
+    /// readers draw a `SPLINE` from its first to its last control point, so an
+    /// unclamped curve is written as the same curve with a clamped knot
+    /// vector ([`Geometry::clamped`]); the other formats carry the domain.
+    #[must_use]
+    pub fn clamps(self) -> bool {
+        self == CadFormat::Dxf
+    }
+}
+
+impl fmt::Display for CadFormat {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// What a CAD file says about itself.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct CadMeta {
+    /// The file's name (STEP `FILE_NAME`, IGES global section).
+    pub name: String,
+    /// The job's description, if any.
+    pub description: Option<String>,
+    /// When the file was written, as `YYYY-MM-DDThh:mm:ss` (UTC).
+    pub timestamp: String,
+}
+
+/// The text of a CAD file of `geometry`.
+///
+/// # Errors
+/// [`Error::Invalid`] (naming `source`, the job) for curves of degree 0,
+/// which no format stores as curves.
+///
+/// # Examples
+/// ```
+/// # use t2spline::job::Overrides;
+/// # use t2spline_io::{render_cad, CadFormat, CadMeta};
+/// let text = std::fs::read_to_string("../../examples/paper-alg-1-1.json")?;
+/// let job = t2spline_io::parse_job(&text, "paper-alg-1-1.json")?;
+/// let geometry = job.geometry(&job.settings(&Overrides::default())?)?;
+/// let meta = CadMeta { name: "out.obj".into(), description: None, timestamp: "2026-01-01T00:00:00".into() };
+/// let obj = render_cad(CadFormat::Obj, &geometry, &meta, "paper-alg-1-1.json")?;
+/// assert!(obj.contains("g defuzzified\n") && obj.contains("cstype rat bspline\n"));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn render_cad(
+    format: CadFormat,
+    geometry: &Geometry,
+    meta: &CadMeta,
+    source: &str,
+) -> Result<String, Error> {
+    if format == CadFormat::Dxf && !geometry.surfaces.is_empty() {
+        return Err(Error::Invalid {
+            file: source.to_owned(),
+            problems: vec![Problem::new(
+                "DXF holds NURBS curves (SPLINE) but no NURBS surfaces (only ACIS solids); export surfaces as STEP, IGES or OBJ",
+            )],
+        });
+    }
+    if geometry.degree() == 0 {
+        return Err(Error::Invalid {
+            file: source.to_owned(),
+            problems: vec![Problem::new(format!(
+                "the {} have degree 0 (piecewise constant: a set of points), which {} cannot hold; export needs degree 1 or more",
+                if geometry.surfaces.is_empty() { "curves" } else { "surfaces" },
+                format.name().to_uppercase()
+            ))],
+        });
+    }
+    debug_assert!(
+        !format.clamps()
+            || geometry
+                .curves
+                .iter()
+                .flat_map(|c| &c.pieces)
+                .all(|p| p.knots().is_clamped()),
+        "{format} needs clamped curves"
+    );
+    Ok(match format {
+        CadFormat::Dxf => dxf::render(geometry),
+        CadFormat::Step => step::render(geometry, meta),
+        CadFormat::Iges => iges::render(geometry, meta),
+        CadFormat::Obj => obj::render(geometry, meta),
+    })
+}
+
+/// A float in the shortest form that reads back exactly, with a decimal
+/// point in the mantissa and `exponent` (`'E'`, or `'D'` for IGES double
+/// precision) before a power of ten: `3.0`, `-0.25`, `1.5E-7`.
+pub(crate) fn real(x: f64, exponent: char) -> String {
+    let text = Num(x).to_string();
+    let (mantissa, power) = match text.split_once('e') {
+        Some((m, p)) => (m.to_owned(), Some(p)),
+        None => (text, None),
+    };
+    let mut out = mantissa;
+    if !out.contains('.') {
+        out.push_str(".0");
+    }
+    if let Some(p) = power {
+        out.push(exponent);
+        out.push_str(p);
+    }
+    out
+}
+
+/// The smallest box around every control point (the curves lie inside it:
+/// the convex hull property), for DXF's drawing extents.
+pub(crate) fn extents(geometry: &Geometry) -> ([f64; 3], [f64; 3]) {
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    let curves = geometry.curves.iter().flat_map(|c| &c.pieces);
+    let surfaces = geometry.surfaces.iter().flat_map(|s| &s.patches);
+    for p in curves
+        .flat_map(|p| p.control_points())
+        .chain(surfaces.flat_map(|s| s.control_points()))
+    {
+        for i in 0..3 {
+            lo[i] = lo[i].min(p[i]);
+            hi[i] = hi[i].max(p[i]);
+        }
+    }
+    (lo, hi)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn reals_read_back_exactly_with_a_decimal_point() {
+        assert_eq!(real(3.0, 'E'), "3.0");
+        assert_eq!(real(-0.25, 'E'), "-0.25");
+        assert_eq!(real(1.5e-7, 'E'), "1.5E-7");
+        assert_eq!(real(1e300, 'D'), "1.0D300");
+        assert_eq!(real(0.1 + 0.2, 'E'), "0.30000000000000004");
+        for x in [
+            0.1,
+            1.0 / 3.0,
+            2f64.sqrt() * 1e-200,
+            -7.25e151,
+            f64::MIN_POSITIVE,
+        ] {
+            let text = real(x, 'E');
+            assert_eq!(text.parse::<f64>().unwrap(), x, "{text}");
+            let iges = real(x, 'D').replace('D', "E");
+            assert_eq!(iges.parse::<f64>().unwrap(), x, "{iges}");
+        }
+    }
+}

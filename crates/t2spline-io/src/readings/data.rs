@@ -1,0 +1,121 @@
+//! Fuzzified readings as a data file for `fit`.
+
+use serde_json::{json, Map, Value};
+use t2spline::fit::{FuzzifyRule, FuzzyData};
+use t2spline::{Alpha, Num};
+
+use super::ReadingsFile;
+use crate::job::write::point_json;
+use crate::{Error, FitData, Problem};
+
+impl ReadingsFile {
+    /// The data of a fit from the fuzzy data points `points` that the core
+    /// made of these readings with `rule`: a description of where they came
+    /// from and how, the top-level `lower_height` of the rule, and the curve's
+    /// `degree` (or `order`, by `degree_key`) and `alpha` to carry.
+    #[must_use]
+    pub fn fit_data(
+        &self,
+        points: FuzzyData,
+        rule: &FuzzifyRule,
+        degree_key: &'static str,
+        degree: usize,
+        alpha: Option<Alpha>,
+    ) -> FitData {
+        let description = format!(
+            "Fuzzified by t2spline from {}: {} stations, {} readings. Per coordinate: crisp = median, lower = [25th, 75th percentile] (lower_height {}), primary = [10th, 90th percentile], upper = [min - T, max + T] with T = {} (percentiles by linear interpolation, type 7).",
+            self.source,
+            self.stations.len(),
+            self.readings.readings(),
+            Num(rule.lower_height.get()),
+            Num(rule.tolerance),
+        );
+        FitData {
+            source: self.source.clone(),
+            description: Some(description),
+            degree_key,
+            degree,
+            alpha,
+            lower_height: Some(rule.lower_height.get()),
+            samples: None,
+            points,
+        }
+    }
+
+    /// A core error about fuzzifying station `i` (`points[i].x: …`), placed
+    /// at the station's first row.
+    #[must_use]
+    pub fn fuzzify_error(&self, e: &t2spline::Error) -> Error {
+        let station = match e {
+            t2spline::Error::NotFinite { place, .. }
+            | t2spline::Error::Order { place, .. }
+            | t2spline::Error::OutOfRange { place, .. } => place.point,
+            t2spline::Error::TooFewReadings { station, .. } => *station,
+            _ => None,
+        };
+        let line_column = station
+            .and_then(|s| self.first_lines.get(s))
+            .map(|&line| (line, 1));
+        let name = station.and_then(|s| self.stations.get(s));
+        let message = match name {
+            Some(name) => format!("station `{}`: {e}", super::shorten(name)),
+            None => e.to_string(),
+        };
+        Error::Invalid {
+            file: self.source.clone(),
+            problems: vec![Problem {
+                line_column,
+                message,
+            }],
+        }
+    }
+}
+
+/// The data file of `data`, keys in the order of a job file: `description`,
+/// `order` or `degree`, `alpha`, `lower_height`, `samples`, `points` (a
+/// number's `lower_height` only where it differs from the top-level one). It
+/// parses back with [`parse_data`](crate::parse_data).
+///
+/// # Examples
+/// ```
+/// # use t2spline::fit::FuzzifyRule;
+/// let file = t2spline_io::parse_readings("station,x,y\nA,0,0\nA,1,1\nB,2,0\nB,3,1\n", "r.csv")?;
+/// let rule = FuzzifyRule::try_new(0.0, 0.5)?;
+/// let data = file.fit_data(file.readings.fuzzify(&rule)?, &rule, "degree", 1, None);
+/// let json = t2spline_io::data_json(&data);
+/// assert_eq!(json["points"][1]["x"]["crisp"], 2.5);
+/// let back = t2spline_io::parse_data(&json.to_string(), "data.json")?;
+/// assert_eq!(back.points, data.points);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[must_use]
+pub fn data_json(data: &FitData) -> Value {
+    let mut out = Map::new();
+    if let Some(d) = &data.description {
+        out.insert("description".into(), json!(d));
+    }
+    let written = if data.degree_key == "order" {
+        data.degree + 1
+    } else {
+        data.degree
+    };
+    out.insert(data.degree_key.into(), json!(written));
+    if let Some(a) = data.alpha {
+        out.insert("alpha".into(), json!(a.get()));
+    }
+    if let Some(h) = data.lower_height {
+        out.insert("lower_height".into(), json!(h));
+    }
+    if let Some(n) = data.samples {
+        out.insert("samples".into(), json!(n));
+    }
+    let points = match &data.points {
+        FuzzyData::Planar(p) => p.iter().map(|p| point_json(p, data.lower_height)).collect(),
+        FuzzyData::Spatial(p) => p.iter().map(|p| point_json(p, data.lower_height)).collect(),
+        // A kind of data this version does not know: no points, which the
+        // data file's validator then refuses.
+        _ => Vec::new(),
+    };
+    out.insert("points".into(), Value::Array(points));
+    Value::Object(out)
+}

@@ -1,0 +1,408 @@
+//! Readings files: repeated measurements of stations, one reading per row, as
+//! a spreadsheet exports them.
+//!
+//! ```text
+//! station,x,y            (or station,x,y,z)
+//! dune crest,0.118,6.02
+//! dune crest,-0.07,5.987
+//! …
+//! ```
+//!
+//! Rules, each reported with its line and column (all problems at once, as
+//! for job files):
+//! - the header is `station,x,y` or `station,x,y,z` (any case, spaces
+//!   around names ignored); the separator is a comma or a semicolon, decided
+//!   by the header; in a semicolon file a decimal comma (`1,25`) is read as
+//!   a decimal point, as spreadsheets in many locales write numbers;
+//! - every row has exactly the header's columns; values are finite numbers
+//!   within [`MAX_MAGNITUDE`](t2spline::MAX_MAGNITUDE);
+//! - the rows of a station are together; stations come in the order of their
+//!   first row and become the data points in that order;
+//! - every station has at least [`MIN_READINGS`] readings;
+//! - CRLF or LF line ends, a UTF-8 byte-order mark and RFC 4180 quoting
+//!   (`"dune, crest"`, `"1,25"`) are accepted.
+//!
+//! Limits, checked before the memory they guard is allocated: the file size
+//! of job files ([`MAX_FILE_BYTES`](crate::job::MAX_FILE_BYTES)),
+//! [`MAX_ROWS`] rows and [`MAX_POINTS`](crate::job::MAX_POINTS) stations.
+//! The statistics that turn readings into fuzzy numbers are the core's
+//! ([`t2spline::fit::fuzzify`]); this module only reads.
+
+mod data;
+mod tokens;
+
+pub use data::data_json;
+
+use std::collections::HashMap;
+use std::path::Path;
+
+use t2spline::fit::{Readings, MIN_READINGS};
+use t2spline::{Num, MAX_MAGNITUDE};
+
+use crate::job::limits::{MAX_POINTS, MAX_PROBLEMS};
+use crate::job::read_text;
+use crate::{Error, Problem};
+
+/// The most rows (readings) a readings file may have: 4 million, about what
+/// a 64 MiB file of short rows holds.
+pub const MAX_ROWS: usize = 4_000_000;
+
+/// A validated readings file.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ReadingsFile {
+    /// The file name used in messages.
+    pub source: String,
+    /// The station names, in the order of their first row.
+    pub stations: Vec<String>,
+    /// The line of each station's first row.
+    pub first_lines: Vec<usize>,
+    /// The readings of every station, in that order.
+    pub readings: Readings,
+}
+
+/// Whether a data file given to `fit` is a readings file rather than JSON:
+/// by its extension (`.csv`, `.txt`, `.tsv` are readings; `.json` is not),
+/// otherwise by its first character (`{` starts JSON).
+///
+/// # Examples
+/// ```
+/// # use std::path::Path;
+/// use t2spline_io::is_readings;
+/// assert!(is_readings(Path::new("beach.csv"), "station,x,y\n"));
+/// assert!(!is_readings(Path::new("beach.json"), "station,x,y\n"));
+/// assert!(is_readings(Path::new("-"), "\u{feff}station;x;y\n"));
+/// assert!(!is_readings(Path::new("-"), "  {\"degree\": 3}"));
+/// ```
+#[must_use]
+pub fn is_readings(path: &Path, text: &str) -> bool {
+    let extension = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase);
+    match extension.as_deref() {
+        Some("csv" | "txt" | "tsv") => true,
+        Some("json") => false,
+        _ => !text
+            .trim_start_matches('\u{feff}')
+            .trim_start()
+            .starts_with('{'),
+    }
+}
+
+/// Reads and validates a readings file.
+///
+/// # Errors
+/// The errors of [`read_text`] (a file that cannot be read, is too large or is
+/// not UTF-8) and of [`parse_readings`].
+pub fn read_readings(path: &Path) -> Result<ReadingsFile, Error> {
+    let text = read_text(path)?;
+    parse_readings(&text, &path.display().to_string())
+}
+
+/// Parses and validates readings from text; `source` names the file in
+/// messages.
+///
+/// # Errors
+/// [`Error::Invalid`] listing every problem (at most
+/// [`MAX_PROBLEMS`](crate::job::MAX_PROBLEMS), then a count), each with its
+/// line and column: a wrong header, a missing or extra column, a value that is
+/// not a finite number or beyond the range, a station whose rows are not
+/// together, a station with fewer than two readings, unclosed quotes, more
+/// than [`MAX_ROWS`] rows or [`MAX_POINTS`](crate::job::MAX_POINTS) stations.
+///
+/// # Examples
+/// ```
+/// let text = "station;x;y\r\nA;0;1,5\r\nA;0,5;2\r\nB;3;x\r\nA;1;1\r\n";
+/// let e = t2spline_io::parse_readings(text, "r.csv").unwrap_err();
+/// assert_eq!(e.lines(), [
+///     "r.csv:4:5: y (column 3): `x` is not a number",
+///     "r.csv:5:1: station `A`: its rows must be together, but rows of `B` (from line 4) came between; sort the rows by station",
+///     "r.csv:4:1: station `B`: 1 reading(s); percentiles need at least 2",
+/// ]);
+/// let ok = t2spline_io::parse_readings("station,x,y\nA,0,1\nA,1,2\n", "r.csv")?;
+/// assert_eq!(ok.stations, ["A"]);
+/// # Ok::<(), t2spline_io::Error>(())
+/// ```
+pub fn parse_readings(text: &str, source: &str) -> Result<ReadingsFile, Error> {
+    let invalid = |problems: Vec<Problem>| Error::Invalid {
+        file: source.to_owned(),
+        problems,
+    };
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    // Rows are counted before any of them is stored.
+    let lines = text.lines().count();
+    if lines > MAX_ROWS + 1 {
+        return Err(invalid(vec![Problem::new(format!(
+            "{lines} lines: more than the limit of {MAX_ROWS} readings"
+        ))]));
+    }
+    let first = text.lines().next().unwrap_or("");
+    let delimiter = if first.contains(';') { ';' } else { ',' };
+    let records = tokens::records(text, delimiter).map_err(|e| {
+        invalid(vec![Problem {
+            line_column: Some((e.line, e.column)),
+            message: e.message.to_owned(),
+        }])
+    })?;
+    let Some((header, rows)) = records.split_first() else {
+        return Err(invalid(vec![Problem::new(
+            "the file is empty; expected the header `station,x,y` or `station,x,y,z` and one reading per row",
+        )]));
+    };
+    let names: Vec<String> = header
+        .fields
+        .iter()
+        .map(|f| f.text.trim().to_ascii_lowercase())
+        .collect();
+    let dimension = match names.iter().map(String::as_str).collect::<Vec<_>>()[..] {
+        ["station", "x", "y"] => 2,
+        ["station", "x", "y", "z"] => 3,
+        _ => {
+            let given = header
+                .fields
+                .iter()
+                .map(|f| f.text.as_str())
+                .collect::<Vec<_>>()
+                .join(&delimiter.to_string());
+            return Err(invalid(vec![Problem {
+                line_column: Some((header.fields[0].line, header.fields[0].column)),
+                message: format!(
+                    "expected the header `station,x,y` or `station,x,y,z` (comma or semicolon separated), got `{}`",
+                    shorten(&given)
+                ),
+            }]));
+        }
+    };
+    let mut reader = Rows::new(delimiter, dimension);
+    for row in rows {
+        reader.row(row);
+        if reader.problems.len() > MAX_PROBLEMS || reader.over_limit {
+            break;
+        }
+    }
+    reader
+        .finish()
+        .map_err(invalid)
+        .map(|(stations, first_lines, readings)| ReadingsFile {
+            source: source.to_owned(),
+            stations,
+            first_lines,
+            readings,
+        })
+}
+
+/// The state of reading rows: stations so far and every problem found.
+struct Rows {
+    delimiter: char,
+    dimension: usize,
+    columns: [&'static str; 4],
+    names: Vec<String>,
+    first_line: Vec<usize>,
+    index: HashMap<String, usize>,
+    values: Vec<Vec<[f64; 3]>>,
+    /// Rows per station, good or not (the rule of at least two readings
+    /// counts rows, so that a bad value is reported once).
+    rows: Vec<usize>,
+    current: Option<usize>,
+    problems: Vec<Problem>,
+    /// Too many stations: reading stops there.
+    over_limit: bool,
+}
+
+impl Rows {
+    fn new(delimiter: char, dimension: usize) -> Self {
+        Rows {
+            delimiter,
+            dimension,
+            columns: ["station", "x", "y", "z"],
+            names: Vec::new(),
+            first_line: Vec::new(),
+            index: HashMap::new(),
+            values: Vec::new(),
+            rows: Vec::new(),
+            current: None,
+            problems: Vec::new(),
+            over_limit: false,
+        }
+    }
+
+    fn problem(&mut self, at: (usize, usize), message: String) {
+        self.problems.push(Problem {
+            line_column: Some(at),
+            message,
+        });
+    }
+
+    fn row(&mut self, row: &tokens::Record) {
+        let width = self.dimension + 1;
+        let fields = &row.fields;
+        if fields.len() < width {
+            let missing = self.columns[fields.len()..width].join(", ");
+            self.problem(
+                row.end,
+                format!(
+                    "missing column(s) {missing}: every row needs {width} values ({})",
+                    self.columns[..width].join(&self.delimiter.to_string())
+                ),
+            );
+            return;
+        }
+        if let Some(extra) = fields.get(width) {
+            if fields[width..].iter().any(|f| !f.text.trim().is_empty()) {
+                self.problem(
+                    (extra.line, extra.column),
+                    format!(
+                        "extra column {}: every row has {width} values ({})",
+                        width + 1,
+                        self.columns[..width].join(&self.delimiter.to_string())
+                    ),
+                );
+                return;
+            }
+        }
+        let mut point = [0.0; 3];
+        let mut good = true;
+        for (axis, field) in fields[1..width].iter().enumerate() {
+            match self.number(field) {
+                Ok(x) => point[axis] = x,
+                Err(message) => {
+                    let name = self.columns[axis + 1];
+                    self.problem(
+                        (field.line, field.column),
+                        format!("{name} (column {}): {message}", axis + 2),
+                    );
+                    good = false;
+                }
+            }
+        }
+        let name = fields[0].text.trim();
+        let at = (fields[0].line, fields[0].column);
+        if name.is_empty() {
+            self.problem(
+                at,
+                "station (column 1): empty; every row names its station".into(),
+            );
+            return;
+        }
+        let station = match self.current {
+            Some(s) if self.names[s] == name => s,
+            _ => match self.index.get(name) {
+                Some(&s) => {
+                    let between = self.current.map_or(String::new(), |c| {
+                        format!(
+                            ", but rows of `{}` (from line {}) came between",
+                            shorten(&self.names[c]),
+                            self.first_line[c]
+                        )
+                    });
+                    self.problem(
+                        at,
+                        format!(
+                            "station `{}`: its rows must be together{between}; sort the rows by station",
+                            shorten(name)
+                        ),
+                    );
+                    self.current = Some(s);
+                    return;
+                }
+                None => {
+                    if self.names.len() == MAX_POINTS {
+                        self.problem(
+                            at,
+                            format!(
+                                "station `{}`: more than the limit of {MAX_POINTS} stations",
+                                shorten(name)
+                            ),
+                        );
+                        self.over_limit = true;
+                        return;
+                    }
+                    self.index.insert(name.to_owned(), self.names.len());
+                    self.names.push(name.to_owned());
+                    self.first_line.push(at.0);
+                    self.values.push(Vec::new());
+                    self.rows.push(0);
+                    self.names.len() - 1
+                }
+            },
+        };
+        self.current = Some(station);
+        self.rows[station] += 1;
+        if good {
+            self.values[station].push(point);
+        }
+    }
+
+    /// A value: a finite number within the range; in a semicolon file, a
+    /// decimal comma counts as a decimal point.
+    fn number(&self, field: &tokens::Field) -> Result<f64, String> {
+        let text = field.text.trim();
+        let decimal = if self.delimiter == ';' && text.contains(',') && !text.contains('.') {
+            text.replacen(',', ".", 1)
+        } else {
+            text.to_owned()
+        };
+        match decimal.parse::<f64>() {
+            Ok(x) if x.is_finite() && x.abs() <= MAX_MAGNITUDE => Ok(x),
+            Ok(x) if x.is_finite() => Err(format!("{} is outside [-1e150, 1e150]", Num(x))),
+            _ if text.is_empty() => Err("empty; every reading needs a number".into()),
+            _ => Err(format!("`{}` is not a number", shorten(text))),
+        }
+    }
+
+    /// The stations and their readings, or every problem.
+    fn finish(mut self) -> Result<(Vec<String>, Vec<usize>, Readings), Vec<Problem>> {
+        for s in 0..self.names.len() {
+            let count = self.rows[s];
+            if count < MIN_READINGS && self.problems.len() <= MAX_PROBLEMS {
+                let message = format!(
+                    "station `{}`: {count} reading(s); percentiles need at least {MIN_READINGS}",
+                    shorten(&self.names[s])
+                );
+                self.problem((self.first_line[s], 1), message);
+            }
+        }
+        if self.names.is_empty() && self.problems.is_empty() {
+            self.problems.push(Problem::new(
+                "no readings: after the header, one reading per row is needed",
+            ));
+        }
+        if !self.problems.is_empty() {
+            if self.problems.len() > MAX_PROBLEMS {
+                let more = self.problems.len() - MAX_PROBLEMS;
+                self.problems.truncate(MAX_PROBLEMS);
+                self.problems
+                    .push(Problem::new(format!("… and {more} more problem(s)")));
+            }
+            return Err(self.problems);
+        }
+        let readings = if self.dimension == 2 {
+            Readings::Planar(
+                self.values
+                    .iter()
+                    .map(|s| s.iter().map(|p| [p[0], p[1]]).collect())
+                    .collect(),
+            )
+        } else {
+            Readings::Spatial(self.values)
+        };
+        Ok((self.names, self.first_line, readings))
+    }
+}
+
+/// Text from the file in a message: at most 40 characters, control
+/// characters escaped, so that a hostile file cannot write to a terminal.
+fn shorten(text: &str) -> String {
+    let mut out = String::new();
+    for c in text.chars().take(40) {
+        if c.is_control() {
+            out.extend(c.escape_default());
+        } else {
+            out.push(c);
+        }
+    }
+    if text.chars().count() > 40 {
+        out.push('…');
+    }
+    out
+}
