@@ -8,6 +8,14 @@
 //! job runs in about a minute and 1.3 GB of memory; the README gives measured
 //! figures.
 //!
+//! Surface jobs (SPEC §9) have the same limits, counted over the net and per
+//! direction: at most [`MAX_POINTS`] control points in the whole net
+//! (`nu·nv`, counted from the rows' lengths before any point is read), an
+//! order of at most [`MAX_ORDER`] in each direction, and a grid of samples of
+//! at most [`t2spline::job::MAX_SAMPLES`] points (`su·sv`,
+//! [`t2spline::job::check_grid_samples`]). Rows and knot vectors are arrays,
+//! bounded by [`MAX_ARRAY`] like every other.
+//!
 //! Numbers themselves are limited by the core crate: coordinates and knots to
 //! `[-1e150, 1e150]` ([`t2spline::MAX_MAGNITUDE`]) and weights to
 //! `[1e-150, 1e150]`, so that every result is a finite number; the number of
@@ -17,7 +25,8 @@
 /// 100 000-point 3-D job written one number per line is about 40 MB.
 pub const MAX_FILE_BYTES: u64 = 64 << 20;
 
-/// The largest number of control points.
+/// The largest number of control points: of a curve, or of a surface's net
+/// in all (`nu·nv`).
 pub const MAX_POINTS: usize = 100_000;
 
 /// The largest order `k` (degree `k − 1`). Evaluating a curve costs about `k²`
@@ -71,6 +80,18 @@ pub(crate) fn check_order(key: &str, given: u64, written: &str) -> Result<usize,
     } else {
         // At most MAX_ORDER, which is a usize.
         Ok(order as usize)
+    }
+}
+
+/// Checks the number of control points of a surface's net, `nu·nv`, against
+/// [`MAX_POINTS`].
+pub(crate) fn check_net_size(count: usize) -> Result<(), String> {
+    if count > MAX_POINTS {
+        Err(format!(
+            "a net of {count} control points is more than the limit {MAX_POINTS}"
+        ))
+    } else {
+        Ok(())
     }
 }
 

@@ -9,6 +9,8 @@ pub mod limits;
 pub(crate) mod parse;
 mod position;
 mod read;
+mod surface;
+mod walker;
 pub(crate) mod write;
 
 pub use limits::{

@@ -151,7 +151,7 @@ fn errors_name_the_direction_and_the_net_place() {
     let e = NurbsSurface::try_new(net, vec![vec![1.0; 2]; 2], [ku, kv]).unwrap_err();
     assert_eq!(
         e.to_string(),
-        "knots.u: knots: expected 4 values (control points + order), got 5"
+        "knots.u: expected 4 values (rows + order in u), got 5"
     );
 }
 
