@@ -73,7 +73,7 @@ impl Walker {
         let weights = match o.get("weights") {
             // The shape is within the limit of the net's size.
             None => shape.map(|[nu, nv]| vec![vec![1.0; nv]; nu]),
-            Some(v) => self.net_weights(v, shape),
+            Some(v) => self.net_weights(v, o.get("points").and_then(Value::as_array)),
         };
         let knots = match o.get("knots") {
             None => Some([None, None]),
@@ -244,9 +244,9 @@ impl Walker {
         })
     }
 
-    /// `weights`: rows of numbers of the shape of the net (when known), each
-    /// finite and within the core's range.
-    fn net_weights(&mut self, v: &Value, shape: Option<[usize; 2]>) -> Option<Vec<Vec<f64>>> {
+    /// `weights`: rows of numbers of the shape of `points` (the rows as
+    /// given, when an array), each finite and within the core's range.
+    fn net_weights(&mut self, v: &Value, points: Option<&Vec<Value>>) -> Option<Vec<Vec<f64>>> {
         let rule = "rows of numbers, the shape of points";
         let Some(rows) = v.as_array() else {
             self.report("weights", format!("expected {rule}, got {}", kind(v)));
@@ -259,7 +259,7 @@ impl Walker {
             );
             return None;
         }
-        if let Some([nu, _]) = shape.filter(|&[nu, _]| nu != rows.len()) {
+        if let Some(nu) = points.map(Vec::len).filter(|&nu| nu != rows.len()) {
             self.report(
                 "weights",
                 format!("{}, points has {nu}", count(rows.len(), "row")),
@@ -270,11 +270,12 @@ impl Walker {
             let key = element("weights", i);
             let values = self.numbers(row, &key);
             let length = row.as_array().map(Vec::len);
-            if let (Some(length), Some([_, nv])) = (length, shape) {
+            let columns = points.and_then(|p| p.get(i)?.as_array().map(Vec::len));
+            if let (Some(length), Some(nv)) = (length, columns) {
                 if length != nv {
                     self.report(
                         &key,
-                        format!("{}, points has {nv}", count(length, "column")),
+                        format!("{}, points[{i}] has {nv}", count(length, "column")),
                     );
                 }
             }
