@@ -109,13 +109,18 @@ fn the_cylinder_example_is_the_quarter_cylinder_with_proportional_spreads() {
                     for side in 0..2 {
                         let given = p[axis][key][side].as_f64().unwrap();
                         let want = c * unit[key][side].as_f64().unwrap();
-                        assert!((given - want).abs() <= 1e-15 * c, "{axis} {key}: {given} vs {want}");
+                        assert!(
+                            (given - want).abs() <= 1e-15 * c,
+                            "{axis} {key}: {given} vs {want}"
+                        );
                     }
                 }
             }
             let z = &p["z"];
             let c = z["crisp"].as_f64().unwrap();
-            assert!(["upper", "primary", "lower"].iter().all(|k| z[k] == serde_json::json!([c, c])));
+            assert!(["upper", "primary", "lower"]
+                .iter()
+                .all(|k| z[k] == serde_json::json!([c, c])));
         }
     }
 }
@@ -160,7 +165,11 @@ fn the_fuzzy_cylinder_is_a_cylinder_of_the_predicted_radius_at_every_stage() {
                         "alpha {alpha}, {what} at ({a}, {b}): radius {radius}, want {}",
                         factor * r
                     );
-                    assert!((p[2] - height * vb).abs() <= 1e-12 * height, "{what}: z {}", p[2]);
+                    assert!(
+                        (p[2] - height * vb).abs() <= 1e-12 * height,
+                        "{what}: z {}",
+                        p[2]
+                    );
                 }
             }
         };
@@ -191,7 +200,11 @@ fn the_fuzzy_cylinder_is_a_cylinder_of_the_predicted_radius_at_every_stage() {
             (e.max - want).abs() <= 1e-12 * r && (e.rms - want).abs() <= 1e-12 * r,
             "alpha {alpha}: {e:?}, want max = rms = {want}"
         );
-        let expected_regime = if alpha <= h { "alpha <= h" } else { "alpha > h" };
+        let expected_regime = if alpha <= h {
+            "alpha <= h"
+        } else {
+            "alpha > h"
+        };
         assert_eq!(out.regime.as_str(), expected_regime);
     }
 }
@@ -222,7 +235,9 @@ fn the_terrain_solution_lies_below_the_crisp_surface_furthest_from_the_benchmark
     // The benchmark's height is crisp: no spread at all.
     let bm1 = &file["points"][1][1]["z"];
     let c = bm1["crisp"].as_f64().unwrap();
-    assert!(["upper", "primary", "lower"].iter().all(|k| bm1[k] == serde_json::json!([c, c])));
+    assert!(["upper", "primary", "lower"]
+        .iter()
+        .all(|k| bm1[k] == serde_json::json!([c, c])));
     assert!((stages(bm1, h, alpha).defuzzified - c).abs() <= 1e-12 * c);
     // The corner (500, 400) is the farthest from BM1 at (100, 100).
     let corner = &file["points"][5][4];
@@ -230,9 +245,16 @@ fn the_terrain_solution_lies_below_the_crisp_surface_furthest_from_the_benchmark
     assert_eq!(corner["y"]["crisp"], 400.0);
     let z = &corner["z"];
     let gap = z["crisp"].as_f64().unwrap() - stages(z, h, alpha).defuzzified;
-    assert!((out.error.max - gap).abs() <= 1e-12 * 100.0, "{:?} vs {gap}", out.error);
+    assert!(
+        (out.error.max - gap).abs() <= 1e-12 * 100.0,
+        "{:?} vs {gap}",
+        out.error
+    );
     assert_eq!(out.error.max_at, Parameter::Uv([1.0, 1.0]));
-    assert!((largest - gap).abs() <= 1e-12 * 100.0, "largest gap on the grid {largest}");
+    assert!(
+        (largest - gap).abs() <= 1e-12 * 100.0,
+        "largest gap on the grid {largest}"
+    );
     assert!(out.error.rms < out.error.max);
     let Spline::Surface { domain, .. } = out.spline else {
         panic!("a surface")
