@@ -5,7 +5,7 @@
 use serde_json::{json, Value};
 use t2spline::job::{Model, Samples, DEFAULT_SURFACE_SAMPLES, MAX_SAMPLES};
 use t2spline::{Direction, FuzzySurface};
-use t2spline_io::job::{MAX_ORDER, MAX_POINTS};
+use t2spline_io::job::{MAX_ORDER, MAX_POINTS, MAX_SURFACE_WORK};
 
 // ---------------------------------------------------------------------------
 // Fixtures
@@ -442,6 +442,23 @@ fn a_net_beyond_the_limit_is_refused_before_its_points_are_read() {
             side * side
         )]
     );
+}
+
+/// The time of a run grows with the span rectangles times the basis terms
+/// of each: a net past that limit is refused, naming the figures.
+#[test]
+fn a_surface_beyond_the_limit_of_work_is_refused() {
+    let net = |n: usize| Value::Array((0..n).map(|i| row(i, n)).collect());
+    let mut v = with("order", json!([4, 4]));
+    v["points"] = net(104);
+    assert_problems(
+        &v,
+        &[&format!(
+            "job.json: points: a surface of 104 × 104 control points and orders 4 × 4 has up to 10201 span rectangles of 16 basis terms each, 163216 in all, more than the limit {MAX_SURFACE_WORK}: the distance of the solution is measured on every rectangle; use fewer control points or lower orders"
+        )],
+    );
+    v["points"] = net(103);
+    assert_eq!(surface_of(&v).shape(), [103, 103]);
 }
 
 /// One file with a problem of every surface kind; each line names the file,

@@ -15,7 +15,7 @@ pub(crate) mod write;
 
 pub use limits::{
     MAX_ARRAY, MAX_FILE_BYTES, MAX_KEYS, MAX_NESTING, MAX_ORDER, MAX_POINTS, MAX_PROBLEMS,
-    MAX_VALUES,
+    MAX_SURFACE_WORK, MAX_VALUES,
 };
 pub use position::{locate, LineColumn};
 pub use read::{read_text, read_text_from};

@@ -18,7 +18,7 @@ use t2spline::job::{check_grid_samples, Job, Model, Samples, DEFAULT_SURFACE_SAM
 use t2spline::nurbs::net_weight_problems;
 use t2spline::{Direction, Error as CoreError, FuzzySurface, KnotVector, Nt2Point, Place};
 
-use super::limits::check_net_size;
+use super::limits::{check_net_size, check_surface_work};
 use super::parse::{complete, knot_error_path, TOP_KEYS};
 use super::position::{child, element};
 use super::walker::{kind, written, Walker};
@@ -81,6 +81,10 @@ impl Walker {
         };
         if let (Some(degree), Some(shape)) = (degree, shape) {
             self.direction_rules(degree, shape, knots.as_ref());
+            // At most MAX_ORDER, so no overflow.
+            if let Err(rule) = check_surface_work(shape, degree.map(|p| p + 1)) {
+                self.report("points", rule);
+            }
         }
         // A key that failed to parse is None here and has been reported.
         if !self.problems.is_empty() {
