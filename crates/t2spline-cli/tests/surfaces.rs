@@ -416,6 +416,9 @@ fn plot_and_report_refuse_surface_jobs_in_one_line() {
     }
 }
 
+/// A problem a test expects: its JSON path and its message.
+type Problem = (&'static str, &'static str);
+
 /// Each kind of bad input of a surface job: `run` and `validate` exit with 2
 /// and print the problem at its line and column.
 #[test]
@@ -429,7 +432,7 @@ fn every_kind_of_bad_surface_input_is_a_located_line_with_exit_code_2() {
     };
     // (case, text, the JSON path of the problem, the message); the paths are
     // placed by the reader's own scan, whose positions `t2spline-io` tests.
-    let cases: Vec<(&str, String, Vec<(&str, &str)>)> = vec![
+    let cases: Vec<(&str, String, Vec<Problem>)> = vec![
         (
             "ragged",
             with(&|v| {

@@ -4,7 +4,9 @@
 //! job fuzz target, run here by proptest so that CI runs them).
 
 mod oracle;
+mod positions;
 
+use positions::at;
 use proptest::prelude::*;
 use serde_json::{json, Value};
 use t2spline::job::{Samples, Settings};
@@ -18,19 +20,6 @@ use t2spline_io::{check_finite, render_csv, write_json_pretty, Error};
 // ---------------------------------------------------------------------------
 // Helpers
 // ---------------------------------------------------------------------------
-
-/// `line:column` (from 1, columns in characters) of the `nth` occurrence of
-/// `needle` in `text`: where the tests expect a problem to be reported.
-fn at(text: &str, needle: &str, nth: usize) -> String {
-    let (i, _) = text
-        .match_indices(needle)
-        .nth(nth)
-        .unwrap_or_else(|| panic!("{needle:?} #{nth} is not in the text"));
-    let before = &text[..i];
-    let line = before.matches('\n').count() + 1;
-    let column = before.rsplit('\n').next().unwrap_or("").chars().count() + 1;
-    format!("{line}:{column}")
-}
 
 /// The lines of the error of an invalid job.
 fn lines(text: &str) -> Vec<String> {

@@ -84,33 +84,39 @@ fn surface_job() -> impl Strategy<Value = Job> {
         })
 }
 
+/// The job, written by `job_json` (compact and pretty), reads back equal.
+fn round_trips(job: Job) -> Result<(), TestCaseError> {
+    let compact = t2spline_io::job_json(&job).to_string();
+    let back = t2spline_io::parse_job(&compact, "job.json");
+    prop_assert!(
+        back.is_ok(),
+        "{:?}\n{compact}",
+        back.err().map(|e| e.lines())
+    );
+    prop_assert_eq!(back.unwrap(), job.clone(), "{}", compact);
+
+    let pretty = to_json_pretty(&t2spline_io::job_json(&job));
+    let back = t2spline_io::parse_job(&pretty, "job.json");
+    prop_assert!(
+        back.is_ok(),
+        "{:?}\n{pretty}",
+        back.err().map(|e| e.lines())
+    );
+    prop_assert_eq!(back.unwrap(), job, "{}", pretty);
+    Ok(())
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(256))]
 
     #[test]
     fn job_json_round_trips(job in any_job()) {
-        let compact = t2spline_io::job_json(&job).to_string();
-        let back = t2spline_io::parse_job(&compact, "job.json");
-        prop_assert!(back.is_ok(), "{:?}\n{compact}", back.err().map(|e| e.lines()));
-        prop_assert_eq!(back.unwrap(), job.clone(), "{}", compact);
-
-        let pretty = to_json_pretty(&t2spline_io::job_json(&job));
-        let back = t2spline_io::parse_job(&pretty, "job.json");
-        prop_assert!(back.is_ok(), "{:?}\n{pretty}", back.err().map(|e| e.lines()));
-        prop_assert_eq!(back.unwrap(), job, "{}", pretty);
+        round_trips(job)?;
     }
 
     #[test]
     fn surface_job_json_round_trips(job in surface_job()) {
-        let compact = t2spline_io::job_json(&job).to_string();
-        let back = t2spline_io::parse_job(&compact, "job.json");
-        prop_assert!(back.is_ok(), "{:?}\n{compact}", back.err().map(|e| e.lines()));
-        prop_assert_eq!(back.unwrap(), job.clone(), "{}", compact);
-
-        let pretty = to_json_pretty(&t2spline_io::job_json(&job));
-        let back = t2spline_io::parse_job(&pretty, "job.json");
-        prop_assert!(back.is_ok(), "{:?}\n{pretty}", back.err().map(|e| e.lines()));
-        prop_assert_eq!(back.unwrap(), job, "{}", pretty);
+        round_trips(job)?;
     }
 
     #[test]

@@ -2,6 +2,9 @@
 //! every rule it can break reported at its line and column, all at once, as
 //! for curves.
 
+mod positions;
+
+use positions::at;
 use serde_json::{json, Value};
 use t2spline::job::{Model, Samples, DEFAULT_SURFACE_SAMPLES, MAX_SAMPLES};
 use t2spline::{Direction, FuzzySurface};
@@ -56,18 +59,6 @@ fn surface_of(v: &Value) -> FuzzySurface<3> {
         },
         Err(e) => panic!("{}\n{text}", e.lines().join("\n")),
     }
-}
-
-/// `line:column` (from 1) of the `nth` occurrence of `needle` in `text`.
-fn at(text: &str, needle: &str, nth: usize) -> String {
-    let (i, _) = text
-        .match_indices(needle)
-        .nth(nth)
-        .unwrap_or_else(|| panic!("{needle:?} #{nth} is not in the text"));
-    let before = &text[..i];
-    let line = before.matches('\n').count() + 1;
-    let column = before.rsplit('\n').next().unwrap_or("").chars().count() + 1;
-    format!("{line}:{column}")
 }
 
 /// The error lines of an invalid job given as text, with their positions.
