@@ -2,15 +2,17 @@
 //!
 //! This crate reads and writes; the core crate `t2spline` computes.
 //!
-//! - [`parse_job`] / [`read_job`]: the job file of SPEC §8, validated with
-//!   every problem reported at once, each naming its place (`points[2].y`,
-//!   `weights[1]`, JSON line and column for syntax errors) and its rule, into
-//!   the core's [`Job`](t2spline::job::Job); [`job_json`] writes a job back.
+//! - [`parse_job`] / [`read_job`]: the job file of SPEC §8 (a curve) or §9
+//!   (a surface, its points as rows of a net), validated with every problem
+//!   reported at once, each naming its place (`points[2].y`,
+//!   `points[2][1].y`, `weights[1]`, `knots.v`) with its line and column, and
+//!   its rule, into the core's [`Job`](t2spline::job::Job); [`job_json`]
+//!   writes a job back.
 //! - [`write_json_pretty`]: a run's [`RunOutput`](t2spline::job::RunOutput)
 //!   (or any serde value) as the result file: indented, arrays of numbers on
 //!   one line, streamed without an intermediate tree.
-//! - [`render_csv`] / [`write_csv`] / [`stage_csv`]: the sampled curves as
-//!   CSV, one file per curve family.
+//! - [`render_csv`] / [`write_csv`] / [`stage_csv`]: the sampled curves (or
+//!   surfaces, one row per grid point) as CSV, one file per curve family.
 //! - [`check_finite`]: the last guard before writing, naming the first NaN or
 //!   infinity of an output by its path.
 //! - [`Staged`] / [`write_atomic`]: output files that are complete or absent,

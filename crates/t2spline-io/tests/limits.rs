@@ -4,7 +4,9 @@
 //! job fuzz target, run here by proptest so that CI runs them).
 
 mod oracle;
+mod positions;
 
+use positions::at;
 use proptest::prelude::*;
 use serde_json::{json, Value};
 use t2spline::job::{Samples, Settings};
@@ -18,19 +20,6 @@ use t2spline_io::{check_finite, render_csv, write_json_pretty, Error};
 // ---------------------------------------------------------------------------
 // Helpers
 // ---------------------------------------------------------------------------
-
-/// `line:column` (from 1, columns in characters) of the `nth` occurrence of
-/// `needle` in `text`: where the tests expect a problem to be reported.
-fn at(text: &str, needle: &str, nth: usize) -> String {
-    let (i, _) = text
-        .match_indices(needle)
-        .nth(nth)
-        .unwrap_or_else(|| panic!("{needle:?} #{nth} is not in the text"));
-    let before = &text[..i];
-    let line = before.matches('\n').count() + 1;
-    let column = before.rsplit('\n').next().unwrap_or("").chars().count() + 1;
-    format!("{line}:{column}")
-}
 
 /// The lines of the error of an invalid job.
 fn lines(text: &str) -> Vec<String> {
@@ -535,7 +524,8 @@ fn a_non_finite_result_is_refused_by_name() {
 // Arbitrary bytes: the fuzz target's checks under proptest
 // ---------------------------------------------------------------------------
 
-/// The job files the mutations start from.
+/// The job files the mutations start from: curves of 2 and 3 dimensions and
+/// surfaces.
 fn seeds() -> Vec<String> {
     let example = include_str!("../../../examples/paper-alg-1-1.json").to_owned();
     let mut spatial = job(5);
@@ -544,10 +534,14 @@ fn seeds() -> Vec<String> {
     }
     spatial["knots"] = json!([0, 0, 0.5, 0.5, 0.75, 1, 1]);
     spatial["weights"] = json!([1e-12, 1, 1e12, 1, 2]);
+    let surface = include_str!("../../../fuzz/seeds/job/surface.json").to_owned();
+    let extreme_surface = include_str!("../../../fuzz/seeds/job/surface-extreme.json").to_owned();
     vec![
         example,
         job(3).to_string(),
         serde_json::to_string_pretty(&spatial).unwrap(),
+        surface,
+        extreme_surface,
     ]
 }
 
@@ -579,6 +573,10 @@ fn mutation() -> impl Strategy<Value = Mutation> {
         "}",
         "\"samples\": 0, ",
         "\"z\": ",
+        "[2, 2]",
+        "[[",
+        "\"u\": ",
+        "\"v\": [0, 1]",
     ]);
     prop_oneof![
         (any::<usize>(), any::<u8>()).prop_map(|(i, b)| Mutation::Set(i, b)),
@@ -621,7 +619,7 @@ proptest! {
 
     #[test]
     fn mutated_jobs_get_a_result_or_a_clear_error(
-        seed in 0usize..3, mutations in proptest::collection::vec(mutation(), 1..6),
+        seed in 0usize..5, mutations in proptest::collection::vec(mutation(), 1..6),
     ) {
         let text = &seeds()[seed];
         oracle::check_job_bytes(&apply(text, &mutations));

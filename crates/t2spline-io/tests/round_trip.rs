@@ -1,5 +1,6 @@
-//! JSON round trips: a job through `Job::to_json` (compact and pretty) and back
-//! through the validator, and a result through serde; every f64 exactly.
+//! JSON round trips: a job of a curve or a surface through `job_json`
+//! (compact and pretty) and back through the validator, and a result through
+//! serde; every f64 exactly.
 
 use proptest::prelude::*;
 use t2spline::job::{Job, Model, Samples, Settings, MAX_SAMPLES};
@@ -57,20 +58,65 @@ fn any_job() -> impl Strategy<Value = Job> {
     prop_oneof![job::<2>(Model::Planar), job::<3>(Model::Spatial)]
 }
 
+/// Grids from the least to the most samples a surface job may ask for.
+fn grid() -> impl Strategy<Value = [usize; 2]> {
+    prop_oneof![
+        Just([2usize, 2]),
+        Just([2, MAX_SAMPLES / 2]),
+        Just([1000, 1000]),
+        (2usize..=1000, 2usize..=1000).prop_map(|(u, v)| [u, v]),
+    ]
+}
+
+/// A valid surface job (SPEC §9).
+fn surface_job() -> impl Strategy<Value = Job> {
+    (
+        strategies::fuzzy_surface::<3>(),
+        alpha(),
+        grid(),
+        description(),
+    )
+        .prop_map(|(s, alpha, samples, description)| Job {
+            description,
+            alpha,
+            samples: Samples::Grid(samples),
+            model: Model::Surface(s),
+        })
+}
+
+/// The job, written by `job_json` (compact and pretty), reads back equal.
+fn round_trips(job: Job) -> Result<(), TestCaseError> {
+    let compact = t2spline_io::job_json(&job).to_string();
+    let back = t2spline_io::parse_job(&compact, "job.json");
+    prop_assert!(
+        back.is_ok(),
+        "{:?}\n{compact}",
+        back.err().map(|e| e.lines())
+    );
+    prop_assert_eq!(back.unwrap(), job.clone(), "{}", compact);
+
+    let pretty = to_json_pretty(&t2spline_io::job_json(&job));
+    let back = t2spline_io::parse_job(&pretty, "job.json");
+    prop_assert!(
+        back.is_ok(),
+        "{:?}\n{pretty}",
+        back.err().map(|e| e.lines())
+    );
+    prop_assert_eq!(back.unwrap(), job, "{}", pretty);
+    Ok(())
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(256))]
 
     #[test]
     fn job_json_round_trips(job in any_job()) {
-        let compact = t2spline_io::job_json(&job).to_string();
-        let back = t2spline_io::parse_job(&compact, "job.json");
-        prop_assert!(back.is_ok(), "{:?}\n{compact}", back.err().map(|e| e.lines()));
-        prop_assert_eq!(back.unwrap(), job.clone(), "{}", compact);
+        round_trips(job)?;
+    }
 
-        let pretty = to_json_pretty(&t2spline_io::job_json(&job));
-        let back = t2spline_io::parse_job(&pretty, "job.json");
-        prop_assert!(back.is_ok(), "{:?}\n{pretty}", back.err().map(|e| e.lines()));
-        prop_assert_eq!(back.unwrap(), job, "{}", pretty);
+    #[test]
+    fn surface_job_json_round_trips(job in surface_job()) {
+        round_trips(job)?;
     }
 
     #[test]
@@ -81,6 +127,26 @@ proptest! {
     ) {
         let alpha = Alpha::try_new(a).unwrap();
         let samples = Samples::Along(samples);
+        let result = job.run(&Settings { alpha, samples, derivatives: None }).unwrap();
+        let (text, back) = written(&result);
+        prop_assert_eq!(back, serde_json::to_value(&result).unwrap(), "{}", text);
+    }
+}
+
+proptest! {
+    // A surface run computes the distance over the whole domain (a scan and
+    // a search per span rectangle): fewer cases than for curves.
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    #[test]
+    fn surface_result_json_round_trips_exactly(
+        job in surface_job(),
+        a in 0.0..=1.0f64,
+        su in 2usize..9,
+        sv in 2usize..9,
+    ) {
+        let alpha = Alpha::try_new(a).unwrap();
+        let samples = Samples::Grid([su, sv]);
         let result = job.run(&Settings { alpha, samples, derivatives: None }).unwrap();
         let (text, back) = written(&result);
         prop_assert_eq!(back, serde_json::to_value(&result).unwrap(), "{}", text);

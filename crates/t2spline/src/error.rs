@@ -873,12 +873,20 @@ fn in_direction(direction: crate::nurbs::Direction, inner: &Error) -> String {
         Error::TooFewControlPoints { order, count } => format!(
             "points: a surface of order {order} in {d} needs at least {order} control points along {d}, got {count}"
         ),
-        Error::KnotCount { .. }
-        | Error::KnotNotFinite { .. }
+        Error::KnotCount { expected, found } => {
+            let lines = match d {
+                crate::nurbs::Direction::U => "rows",
+                crate::nurbs::Direction::V => "columns",
+            };
+            format!("knots.{d}: expected {expected} values ({lines} + order in {d}), got {found}")
+        }
+        // The curve's message with its knot vector named by direction:
+        // `knots[3] = …` becomes `knots.v[3] = …`, the path in a job file.
+        Error::KnotNotFinite { .. }
         | Error::KnotOutOfRange { .. }
         | Error::KnotDecreasing { .. }
         | Error::KnotMultiplicity { .. }
-        | Error::EmptyDomain { .. } => format!("knots.{d}: {inner}"),
+        | Error::EmptyDomain { .. } => inner.to_string().replace("knots", &format!("knots.{d}")),
         Error::OutOfDomain { t, start, end } => format!(
             "parameter {d} = {} is outside the domain [{}, {}]",
             Num(*t),

@@ -8,6 +8,18 @@
 //! job runs in about a minute and 1.3 GB of memory; the README gives measured
 //! figures.
 //!
+//! Surface jobs (SPEC §9) have the same limits, counted over the net and per
+//! direction: at most [`MAX_POINTS`] control points in the whole net
+//! (`nu·nv`, counted from the rows' lengths before any point is read), an
+//! order of at most [`MAX_ORDER`] in each direction, and a grid of samples of
+//! at most [`t2spline::job::MAX_SAMPLES`] points (`su·sv`,
+//! [`t2spline::job::check_grid_samples`]). Rows and knot vectors are arrays,
+//! bounded by [`MAX_ARRAY`] like every other. One more limit bounds the time
+//! of a surface's run, [`MAX_SURFACE_WORK`]: the distance of SPEC §9 is
+//! measured on every span rectangle of the net, at a cost that grows with the
+//! number of basis terms `ku·kv`, so a net that [`MAX_POINTS`] allows would
+//! run for hours.
+//!
 //! Numbers themselves are limited by the core crate: coordinates and knots to
 //! `[-1e150, 1e150]` ([`t2spline::MAX_MAGNITUDE`]) and weights to
 //! `[1e-150, 1e150]`, so that every result is a finite number; the number of
@@ -17,13 +29,26 @@
 /// 100 000-point 3-D job written one number per line is about 40 MB.
 pub const MAX_FILE_BYTES: u64 = 64 << 20;
 
-/// The largest number of control points.
+/// The largest number of control points: of a curve, or of a surface's net
+/// in all (`nu·nv`).
 pub const MAX_POINTS: usize = 100_000;
 
 /// The largest order `k` (degree `k − 1`). Evaluating a curve costs about `k²`
 /// operations per parameter, so a very high order makes every sample slow; it
 /// is also far beyond what B-spline modelling uses (orders 2–6, rarely above 10).
 pub const MAX_ORDER: usize = 32;
+
+/// The most work a surface job may ask for: its span rectangles (at most
+/// `(nu − ku + 1)(nv − kv + 1)`) times the basis terms `ku·kv` of each. The
+/// distance between the crisp and the defuzzified surface (SPEC §9) scans
+/// and refines every rectangle. Measured on a 2-core machine (release build,
+/// smooth data), the largest jobs at this limit run in 107 s (201 × 201
+/// control points of orders 2 × 2, 40 000 rectangles, 280 MB), 59 s (103 ×
+/// 103 of orders 4 × 4) and 12 s (43 × 43 of orders 32 × 32): the time per
+/// rectangle grows more slowly than `ku·kv`, so the product is a bound that
+/// errs on the side of low orders. Below [`MAX_POINTS`], this is the limit
+/// that large nets meet first.
+pub const MAX_SURFACE_WORK: usize = 160_000;
 
 /// How deeply arrays and objects may nest: `serde_json`'s own recursion limit
 /// (it refuses the 128th level), which stops a hostile file before it can
@@ -74,6 +99,36 @@ pub(crate) fn check_order(key: &str, given: u64, written: &str) -> Result<usize,
     }
 }
 
+/// Checks the number of control points of a surface's net, `nu·nv`, against
+/// [`MAX_POINTS`].
+pub(crate) fn check_net_size(count: usize) -> Result<(), String> {
+    if count > MAX_POINTS {
+        Err(format!(
+            "a net of {count} control points is more than the limit {MAX_POINTS}"
+        ))
+    } else {
+        Ok(())
+    }
+}
+
+/// Checks a surface of `shape` control points and `orders` against
+/// [`MAX_SURFACE_WORK`]; a direction with fewer points than its order is
+/// another rule's (it has no rectangles).
+pub(crate) fn check_surface_work(shape: [usize; 2], orders: [usize; 2]) -> Result<(), String> {
+    let [nu, nv] = shape;
+    let [ku, kv] = orders;
+    let rectangles = (nu + 1).saturating_sub(ku) * (nv + 1).saturating_sub(kv);
+    let work = rectangles.saturating_mul(ku.saturating_mul(kv));
+    if work > MAX_SURFACE_WORK {
+        Err(format!(
+            "a surface of {nu} × {nv} control points and orders {ku} × {kv} has up to {rectangles} span rectangles of {} basis terms each, {work} in all, more than the limit {MAX_SURFACE_WORK}: the distance of the solution is measured on every rectangle; use fewer control points or lower orders",
+            ku * kv
+        ))
+    } else {
+        Ok(())
+    }
+}
+
 /// The rule a file breaks when it is larger than [`MAX_FILE_BYTES`]; `size`
 /// is its size when known (a regular file), `None` when it was noticed while
 /// reading (a pipe, standard input).
@@ -104,6 +159,22 @@ mod tests {
             check_order("degree", u64::MAX, "1e30"),
             Err("degree = 1e30 is more than the limit 31 (order 32)".to_owned())
         );
+    }
+
+    #[test]
+    fn surface_work_counts_rectangles_times_terms() {
+        assert_eq!(check_surface_work([100, 100], [4, 4]), Ok(()));
+        assert_eq!(check_surface_work([43, 43], [32, 32]), Ok(()));
+        assert!(check_surface_work([44, 44], [32, 32]).is_err());
+        assert_eq!(check_surface_work([1, 1], [1, 1]), Ok(()));
+        // Fewer points than the order: no rectangles, another rule's.
+        assert_eq!(check_surface_work([2, 100_000], [3, 32]), Ok(()));
+        assert_eq!(
+            check_surface_work([104, 104], [4, 4]),
+            Err("a surface of 104 × 104 control points and orders 4 × 4 has up to 10201 span rectangles of 16 basis terms each, 163216 in all, more than the limit 160000: the distance of the solution is measured on every rectangle; use fewer control points or lower orders".to_owned())
+        );
+        assert!(check_surface_work([MAX_POINTS, 1], [1, 1]).is_ok());
+        assert!(check_surface_work([160_001, 1], [1, 1]).is_err());
     }
 
     #[test]

@@ -9,11 +9,13 @@ pub mod limits;
 pub(crate) mod parse;
 mod position;
 mod read;
+mod surface;
+mod walker;
 pub(crate) mod write;
 
 pub use limits::{
     MAX_ARRAY, MAX_FILE_BYTES, MAX_KEYS, MAX_NESTING, MAX_ORDER, MAX_POINTS, MAX_PROBLEMS,
-    MAX_VALUES,
+    MAX_SURFACE_WORK, MAX_VALUES,
 };
 pub use position::{locate, LineColumn};
 pub use read::{read_text, read_text_from};
@@ -31,9 +33,11 @@ use crate::{Error, FitData};
 /// # Errors
 /// [`Error::Invalid`] listing every problem found: JSON syntax, duplicate,
 /// unknown or missing keys, wrong types, the limits of [`limits`], and
-/// every rule of SPEC §1, §6 and §8. Each names its line and column (of the
-/// key or element concerned; for a missing key, of the object that lacks it)
-/// and its place (`points[2].y`, `weights[1]`, `knots`, ...).
+/// every rule of SPEC §1, §6, §8 and, for a surface job (`points` given as
+/// rows of a net), §9. Each names its line and column (of the key or element
+/// concerned; for a missing key, of the object that lacks it) and its place
+/// (`points[2].y`, `weights[1]`, `knots`, and in a surface job
+/// `points[2][1].y`, `weights[2][1]`, `knots.v`, ...).
 ///
 /// # Examples
 /// ```
@@ -41,6 +45,12 @@ use crate::{Error, FitData};
 /// assert_eq!(e.lines(), [
 ///     "job.json:1:14: alhpa: unknown key (did you mean `alpha`?)",
 ///     "job.json:1:28: points: a curve of order 2 needs at least 2 control points, got 0",
+/// ]);
+/// let e = t2spline_io::parse_job(r#"{"order": [2, 2], "knots": {"w": []}, "points": [[], [1]]}"#, "s.json").unwrap_err();
+/// assert_eq!(e.lines(), [
+///     "s.json:1:54: points[1]: 1 column, row 0 has 0: every row of the net needs as many points",
+///     "s.json:1:55: points[1][0]: expected a point (a JSON object), got a number",
+///     "s.json:1:29: knots.w: unknown key (known keys: u, v)",
 /// ]);
 /// ```
 pub fn parse_job(text: &str, source: &str) -> Result<Job, Error> {

@@ -17,10 +17,12 @@ use super::limits::{
     check_order, MAX_ARRAY, MAX_KEYS, MAX_NESTING, MAX_POINTS, MAX_PROBLEMS, MAX_VALUES,
 };
 use super::position::{self, child, element, Oversized};
+use super::surface;
+use super::walker::{kind, written, Walker};
 use crate::fit_data::FitData;
 use crate::Problem;
 
-const TOP_KEYS: &[&str] = &[
+pub(super) const TOP_KEYS: &[&str] = &[
     "description",
     "order",
     "degree",
@@ -193,210 +195,29 @@ fn looks_like_csv(text: &str) -> bool {
     })
 }
 
-/// What kind of JSON value `v` is, for messages.
-fn kind(v: &Value) -> &'static str {
-    match v {
-        Value::Null => "null",
-        Value::Bool(_) => "a boolean",
-        Value::Number(_) => "a number",
-        Value::String(_) => "a string",
-        Value::Array(_) => "an array",
-        Value::Object(_) => "an object",
-    }
-}
-
-/// The known key closest to `key` by edit distance, if it is a likely typo.
-fn suggestion(key: &str, known: &[&'static str]) -> Option<&'static str> {
-    // Edit distance costs len(key)·len(known): a megabyte-long key is no typo.
-    if key.chars().count() > 32 {
-        return None;
-    }
-    known
-        .iter()
-        .map(|k| (edit_distance(key, k), *k))
-        .filter(|(d, k)| *d <= 2 && *d < k.len())
-        .min()
-        .map(|(_, k)| k)
-}
-
-/// Levenshtein distance with adjacent transpositions counting 1 (optimal string
-/// alignment), so that `alhpa` is one step from `alpha`.
-fn edit_distance(a: &str, b: &str) -> usize {
-    let (a, b): (Vec<char>, Vec<char>) = (a.chars().collect(), b.chars().collect());
-    let mut d = vec![vec![0usize; b.len() + 1]; a.len() + 1];
-    for (i, row) in d.iter_mut().enumerate() {
-        row[0] = i;
-    }
-    for (j, cell) in d[0].iter_mut().enumerate() {
-        *cell = j;
-    }
-    for i in 1..=a.len() {
-        for j in 1..=b.len() {
-            let cost = usize::from(a[i - 1] != b[j - 1]);
-            d[i][j] = (d[i - 1][j] + 1)
-                .min(d[i][j - 1] + 1)
-                .min(d[i - 1][j - 1] + cost);
-            if i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] {
-                d[i][j] = d[i][j].min(d[i - 2][j - 2] + 1);
-            }
-        }
-    }
-    d[a.len()][b.len()]
-}
-
 /// The fuzzy numbers of one point, per axis, once parsed.
-type RawPoint = Vec<(Axis, Option<Nt2Number>)>;
+pub(super) type RawPoint = Vec<(Axis, Option<Nt2Number>)>;
 
-/// The validator's state: the first [`MAX_PROBLEMS`] problems, as (JSON path,
-/// message), how many more there were, and how messages name the root.
-struct Walker {
-    problems: Vec<(String, String)>,
-    more: usize,
-    /// `"job"` or `"data"`.
-    root: &'static str,
-}
-
-impl Default for Walker {
-    fn default() -> Self {
-        Walker {
-            problems: Vec::new(),
-            more: 0,
-            root: "job",
-        }
-    }
+/// The top-level keys that every job and data file reads alike, as parsed
+/// (`None`: missing or invalid, and reported).
+pub(super) struct Common {
+    pub(super) description: Option<String>,
+    pub(super) alpha: Option<Alpha>,
+    /// The top-level lower height; `Err(())`: given but invalid (reported
+    /// here once, not again for every number that inherits it).
+    pub(super) height: Result<Option<f64>, ()>,
 }
 
 impl Walker {
-    /// Whether the list is full; a problem then only counts.
-    fn full(&mut self) -> bool {
-        let full = self.problems.len() >= MAX_PROBLEMS;
-        self.more += usize::from(full);
-        full
-    }
-
-    /// A problem at `path`, shown as `path: rule` (the root as `job` or
-    /// `data`).
-    fn report(&mut self, path: &str, rule: impl std::fmt::Display) {
-        if !self.full() {
-            let shown = if path.is_empty() { self.root } else { path };
-            self.problems
-                .push((path.to_owned(), format!("{shown}: {rule}")));
-        }
-    }
-
-    /// A problem at `path` whose message names its place itself (the errors
-    /// of the core crate).
-    fn located(&mut self, path: &str, message: impl std::fmt::Display) {
-        if !self.full() {
-            self.problems.push((path.to_owned(), message.to_string()));
-        }
-    }
-
-    fn object<'v>(
-        &mut self,
-        v: &'v Value,
-        key: &str,
-        what: &str,
-    ) -> Option<&'v Map<String, Value>> {
-        let o = v.as_object();
-        if o.is_none() {
-            self.report(
-                key,
-                format!("expected {what} (a JSON object), got {}", kind(v)),
-            );
-        }
-        o
-    }
-
-    fn unknown_keys(&mut self, o: &Map<String, Value>, prefix: &str, known: &[&'static str]) {
-        for k in o.keys().filter(|k| !known.contains(&k.as_str())) {
-            let path = child(prefix, k);
-            match suggestion(k, known) {
-                Some(s) => self.report(&path, format!("unknown key (did you mean `{s}`?)")),
-                None => self.report(
-                    &path,
-                    format!("unknown key (known keys: {})", known.join(", ")),
-                ),
-            }
-        }
-    }
-
-    fn number(&mut self, v: &Value, key: &str) -> Option<f64> {
-        let x = v.as_f64();
-        if x.is_none() {
-            self.report(key, format!("expected a number, got {}", kind(v)));
-        }
-        x
-    }
-
-    /// A whole number ≥ 0; `3.0` is accepted as 3, as spreadsheets write it,
-    /// and a whole number beyond `u64` (`1e30`) saturates, to be refused by a
-    /// limit.
-    fn whole(&mut self, v: &Value, key: &str) -> Option<u64> {
-        if let Some(n) = v.as_u64() {
-            return Some(n);
-        }
-        match v.as_f64() {
-            // `as` saturates at u64::MAX.
-            Some(x) if x >= 0.0 && x.fract() == 0.0 => Some(x as u64),
-            Some(x) => {
-                self.report(
-                    key,
-                    format!("expected a whole number >= 0, got {}", t2spline::Num(x)),
-                );
-                None
-            }
-            None => {
-                self.report(key, format!("expected a whole number, got {}", kind(v)));
-                None
-            }
-        }
-    }
-
-    fn numbers(&mut self, v: &Value, key: &str) -> Option<Vec<f64>> {
-        let Some(items) = v.as_array() else {
-            self.report(
-                key,
-                format!("expected an array of numbers, got {}", kind(v)),
-            );
-            return None;
-        };
-        let xs: Vec<Option<f64>> = items
-            .iter()
-            .enumerate()
-            .map(|(i, x)| self.number(x, &element(key, i)))
-            .collect();
-        xs.into_iter().collect()
-    }
-
-    fn pair(&mut self, v: &Value, key: &str) -> Option<[f64; 2]> {
-        match v.as_array().map(Vec::as_slice) {
-            Some([l, r]) => {
-                let l = self.number(l, &element(key, 0));
-                let r = self.number(r, &element(key, 1));
-                Some([l?, r?])
-            }
-            _ => {
-                self.report(
-                    key,
-                    format!(
-                        "expected [left, right], an array of two numbers, got {}",
-                        describe(v)
-                    ),
-                );
-                None
-            }
-        }
-    }
-
-    /// The keys a job and a data file share, checked against `known`.
-    /// `missing_points` says what `points` holds, for its message.
-    fn header(
+    /// The keys every file shares, in the order of the file format: unknown
+    /// keys (against `known`), `description`, the model's order (read by
+    /// `order`, as the kind of model needs), `alpha`, `lower_height`.
+    pub(super) fn common<T>(
         &mut self,
         o: &Map<String, Value>,
         known: &[&'static str],
-        missing_points: &str,
-    ) -> Header {
+        order: impl FnOnce(&mut Self) -> T,
+    ) -> (Common, T) {
         self.unknown_keys(o, "", known);
         let description = match o.get("description") {
             None => None,
@@ -406,13 +227,11 @@ impl Walker {
                 None
             }
         };
-        let degree = self.degree(o);
+        let order = order(self);
         let alpha = o.get("alpha").and_then(|v| {
             let a = self.number(v, "alpha")?;
             Alpha::try_new(a).map_err(|e| self.located("alpha", e)).ok()
         });
-        // `Err(())`: a top-level height was given but is invalid (reported here
-        // once, not again for every number that inherits it).
         let height: Result<Option<f64>, ()> = match o.get("lower_height") {
             None => Ok(None),
             Some(v) => match self.number(v, "lower_height").map(Height::try_new) {
@@ -424,43 +243,83 @@ impl Walker {
                 None => Err(()),
             },
         };
+        let common = Common {
+            description,
+            alpha,
+            height,
+        };
+        (common, order)
+    }
+
+    /// The keys a job and a data file of a curve share, checked against
+    /// `known`. `missing_points` says what `points` holds, for its message.
+    fn header(
+        &mut self,
+        o: &Map<String, Value>,
+        known: &[&'static str],
+        missing_points: &str,
+    ) -> Header {
+        let (common, degree) = self.common(o, known, |w| w.degree(o));
         let samples = match o.get("samples") {
             None => Some(None),
-            Some(v) => self.whole(v, "samples").and_then(|n| {
-                check_samples(n, &written(v))
-                    .map_err(|rule| self.report("samples", rule))
-                    .ok()
-                    .map(Some)
-            }),
+            Some(v) if v.is_array() => {
+                self.report(
+                    "samples",
+                    "a pair [u, v] is for a surface, whose points are rows of a net; a curve takes one number of samples",
+                );
+                None
+            }
+            Some(v) => self.samples_in(v, "samples").map(Some),
         };
         let points = match o.get("points") {
             None => {
                 self.report("points", format!("missing: {missing_points}"));
                 None
             }
-            Some(v) => self.points(v, height),
+            Some(v) => self.points(v, common.height),
         };
         Header {
-            description,
+            description: common.description,
             degree_key: if o.contains_key("degree") {
                 "degree"
             } else {
                 "order"
             },
             degree,
-            alpha,
-            lower_height: height.ok().flatten(),
+            alpha: common.alpha,
+            lower_height: common.height.ok().flatten(),
             samples,
             points,
             count: o.get("points").and_then(Value::as_array).map(Vec::len),
         }
     }
 
+    /// A number of samples at `path`: a whole number from 2 to the limit
+    /// (SPEC §8).
+    pub(super) fn samples_in(&mut self, v: &Value, path: &str) -> Option<usize> {
+        let n = self.whole(v, path)?;
+        check_samples(n, &written(v))
+            .map_err(|rule| self.report(path, rule))
+            .ok()
+    }
+
     fn job(&mut self, root: &Value) -> Option<Job> {
         let o = self.object(root, "", "the job")?;
+        if surface::is_surface(o) {
+            return self.surface_job(o);
+        }
         let header = self.header(o, TOP_KEYS, "a job needs its fuzzy control points");
         let weights = o.get("weights").and_then(|v| self.numbers(v, "weights"));
-        let knots = o.get("knots").and_then(|v| self.numbers(v, "knots"));
+        let knots = o.get("knots").and_then(|v| {
+            if v.is_object() {
+                self.report(
+                    "knots",
+                    "an object of knot vectors (u, v) is for a surface, whose points are rows of a net; a curve's knots are one array of numbers",
+                );
+                return None;
+            }
+            self.numbers(v, "knots")
+        });
         // Curve-level rules (SPEC §6), checked against the number of entries in
         // `points` even when some of them are invalid.
         let n = header.count;
@@ -570,32 +429,55 @@ impl Walker {
         }
     }
 
-    /// The degree, from `order` or `degree`, within [`MAX_ORDER`](super::limits::MAX_ORDER).
-    fn degree(&mut self, o: &Map<String, Value>) -> Option<usize> {
-        let (key, v) = match (o.get("order"), o.get("degree")) {
+    /// The key that gives the order, `order` or `degree`, and its value:
+    /// exactly one of them must be given.
+    pub(super) fn order_key<'v>(
+        &mut self,
+        o: &'v Map<String, Value>,
+    ) -> Option<(&'static str, &'v Value)> {
+        match (o.get("order"), o.get("degree")) {
             (Some(_), Some(_)) => {
                 self.located(
                     "degree",
                     "order, degree: give exactly one of them (order = degree + 1)",
                 );
-                return None;
+                None
             }
             (None, None) => {
                 self.report("order", "missing: give `order` (k) or `degree` (k - 1)");
-                return None;
+                None
             }
-            (Some(v), None) => ("order", v),
-            (None, Some(v)) => ("degree", v),
-        };
-        let given = self.whole(v, key)?;
+            (Some(v), None) => Some(("order", v)),
+            (None, Some(v)) => Some(("degree", v)),
+        }
+    }
+
+    /// One order `v` at `path`, given as `key` (`order` or `degree`): a
+    /// whole number, an order of at least 1, within
+    /// [`MAX_ORDER`](super::limits::MAX_ORDER). Returns the degree.
+    pub(super) fn degree_of(&mut self, key: &str, path: &str, v: &Value) -> Option<usize> {
+        let given = self.whole(v, path)?;
         if key == "order" && given == 0 {
-            self.report("order", "order = 0: the order must be at least 1");
+            self.report(path, "order = 0: the order must be at least 1");
             return None;
         }
         let order = check_order(key, given, &written(v))
-            .map_err(|rule| self.report(key, rule))
+            .map_err(|rule| self.report(path, rule))
             .ok()?;
         Some(order - 1)
+    }
+
+    /// The degree of a curve, from `order` or `degree`.
+    fn degree(&mut self, o: &Map<String, Value>) -> Option<usize> {
+        let (key, v) = self.order_key(o)?;
+        if v.is_array() {
+            self.report(
+                key,
+                format!("a pair [u, v] is for a surface, whose points are rows of a net; a curve has one {key}"),
+            );
+            return None;
+        }
+        self.degree_of(key, key, v)
     }
 
     fn points(&mut self, v: &Value, height: Result<Option<f64>, ()>) -> Option<Points> {
@@ -617,86 +499,90 @@ impl Walker {
         let mut parsed: Vec<Option<RawPoint>> = Vec::with_capacity(items.len());
         for (i, item) in items.iter().enumerate() {
             let key = element("points", i);
-            let Some(o) = self.object(item, &key, "a point") else {
-                parsed.push(None);
-                continue;
-            };
-            self.unknown_keys(o, &key, POINT_KEYS);
-            let axes: Vec<Axis> = [Axis::X, Axis::Y, Axis::Z]
-                .into_iter()
-                .filter(|a| o.contains_key(a.name()))
-                .collect();
-            let names: Vec<&'static str> = axes.iter().map(|a| a.name()).collect();
-            let mut usable = true;
-            if !(names == ["x", "y"] || names == ["x", "y", "z"]) {
-                self.report(
-                    &key,
-                    format!(
-                        "has coordinates [{}]; a point needs x and y, and optionally z",
-                        names.join(", ")
-                    ),
-                );
-                usable = false;
-            } else {
+            let coordinates = |w: &mut Self, names: &[&'static str]| {
+                if !(names == ["x", "y"] || names == ["x", "y", "z"]) {
+                    w.report(
+                        &key,
+                        format!(
+                            "has coordinates [{}]; a point needs x and y, and optionally z",
+                            names.join(", ")
+                        ),
+                    );
+                    return false;
+                }
                 match &dimension {
-                    None => dimension = Some((i, names.clone())),
-                    Some((first, first_names)) if *first_names != names => {
-                        self.report(&key, format!(
+                    None => dimension = Some((i, names.to_vec())),
+                    Some((first, first_names)) if first_names != names => {
+                        w.report(&key, format!(
                             "has coordinates [{}] but points[{first}] has [{}]: every point needs the same coordinates",
                             names.join(", "),
                             first_names.join(", ")
                         ));
-                        usable = false;
+                        return false;
                     }
                     Some(_) => {}
                 }
-            }
-            // The numbers are checked even in an unusable point, so that one
-            // run reports all their problems too.
-            let point: RawPoint = axes
-                .into_iter()
-                .map(|axis| (axis, self.number_of(&o[axis.name()], i, axis, height)))
-                .collect();
-            if !usable {
-                parsed.push(None);
-                continue;
-            }
-            parsed.push(Some(point));
+                true
+            };
+            let point = self.point(item, &key, |axis| Place::new(i, axis), height, coordinates);
+            parsed.push(point);
         }
         let points: Vec<RawPoint> = parsed.into_iter().collect::<Option<_>>()?;
-        if points.iter().flatten().any(|(_, x)| x.is_none()) {
-            return None;
-        }
-        let numbers = |p: &RawPoint| {
-            p.iter()
-                .map(|(_, x)| x.expect("checked above"))
-                .collect::<Vec<_>>()
-        };
         match dimension.map(|(_, names)| names.len()) {
-            Some(3) => Some(Points::Spatial(
-                points
-                    .iter()
-                    .map(|p| Nt2Point::new(array(numbers(p))))
-                    .collect(),
-            )),
-            _ => Some(Points::Planar(
-                points
-                    .iter()
-                    .map(|p| Nt2Point::new(array(numbers(p))))
-                    .collect(),
-            )),
+            Some(3) => points
+                .into_iter()
+                .map(complete)
+                .collect::<Option<_>>()
+                .map(Points::Spatial),
+            _ => points
+                .into_iter()
+                .map(complete)
+                .collect::<Option<_>>()
+                .map(Points::Planar),
         }
     }
 
-    /// One fuzzy number at `points[i].axis`.
+    /// One control point at `key` (`points[2]`, or `points[2][1]` in the net
+    /// of a surface): an object with a fuzzy number per coordinate, each
+    /// placed by `place` in the core's messages. `coordinates` judges which
+    /// coordinates the point has (and reports at `key`); the numbers are
+    /// checked even in a point it refuses, so that one run reports all their
+    /// problems too. `None`: not an object, or refused.
+    pub(super) fn point(
+        &mut self,
+        item: &Value,
+        key: &str,
+        place: impl Fn(Axis) -> Place,
+        height: Result<Option<f64>, ()>,
+        coordinates: impl FnOnce(&mut Self, &[&'static str]) -> bool,
+    ) -> Option<RawPoint> {
+        let o = self.object(item, key, "a point")?;
+        self.unknown_keys(o, key, POINT_KEYS);
+        let axes: Vec<Axis> = [Axis::X, Axis::Y, Axis::Z]
+            .into_iter()
+            .filter(|a| o.contains_key(a.name()))
+            .collect();
+        let names: Vec<&'static str> = axes.iter().map(|a| a.name()).collect();
+        let usable = coordinates(self, &names);
+        let point: RawPoint = axes
+            .into_iter()
+            .map(|axis| {
+                let number = self.number_of(&o[axis.name()], key, place(axis), height);
+                (axis, number)
+            })
+            .collect();
+        usable.then_some(point)
+    }
+
+    /// One fuzzy number: coordinate `place.axis` of the point at `point`.
     fn number_of(
         &mut self,
         v: &Value,
-        i: usize,
-        axis: Axis,
+        point: &str,
+        place: Place,
         height: Result<Option<f64>, ()>,
     ) -> Option<Nt2Number> {
-        let key = child(&element("points", i), axis.name());
+        let key = child(point, place.axis.map_or("?", Axis::name));
         let o = self.object(v, &key, "a fuzzy number")?;
         self.unknown_keys(o, &key, NUMBER_KEYS);
         let mut get = |name: &str| {
@@ -736,7 +622,7 @@ impl Walker {
                 | t2spline::Error::OutOfRange { what, .. } => value_path(&key, what),
                 _ => key.clone(),
             };
-            self.located(&path, e.at(Place::new(i, axis)));
+            self.located(&path, e.at(place));
         }
         if stand_in {
             return None;
@@ -761,35 +647,29 @@ fn curve_error_path(e: &t2spline::Error) -> String {
         E::TooFewControlPoints { .. } => "points".to_owned(),
         E::WeightCount { .. } => "weights".to_owned(),
         E::Weight { index, .. } | E::WeightOutOfRange { index, .. } => element("weights", index),
-        E::KnotCount { .. } | E::EmptyDomain { .. } => "knots".to_owned(),
+        _ => knot_error_path(e, "knots").unwrap_or_default(),
+    }
+}
+
+/// The place of an error of the core crate about a knot vector, the array at
+/// `knots` (`knots`, or `knots.v` of a surface); `None` for other errors.
+pub(super) fn knot_error_path(e: &t2spline::Error, knots: &str) -> Option<String> {
+    use t2spline::Error as E;
+    match *e {
+        E::KnotCount { .. } | E::EmptyDomain { .. } => Some(knots.to_owned()),
         E::KnotNotFinite { index, .. }
         | E::KnotOutOfRange { index, .. }
         | E::KnotDecreasing { index, .. }
-        | E::KnotMultiplicity { first: index, .. } => element("knots", index),
-        _ => String::new(),
+        | E::KnotMultiplicity { first: index, .. } => Some(element(knots, index)),
+        _ => None,
     }
 }
 
-/// A number as the file wrote it, near enough: `3`, `1e300`.
-fn written(v: &Value) -> String {
-    match (v.as_u64(), v.as_f64()) {
-        (Some(n), _) => n.to_string(),
-        (None, Some(x)) => t2spline::Num(x).to_string(),
-        _ => v.to_string(),
-    }
-}
-
-/// Short description of a value that should have been a pair.
-fn describe(v: &Value) -> String {
-    match v.as_array() {
-        Some(a) => format!("an array of {} values", a.len()),
-        None => kind(v).to_owned(),
-    }
-}
-
-/// A vector of exactly `D` numbers as an array; the caller guarantees the length.
-fn array<const D: usize>(v: Vec<Nt2Number>) -> [Nt2Number; D] {
-    v.try_into().expect("the dimension was checked to be D")
+/// The point of `D` dimensions whose numbers were all read, if the point has
+/// exactly `D`.
+pub(super) fn complete<const D: usize>(p: RawPoint) -> Option<Nt2Point<D>> {
+    let numbers: Vec<Nt2Number> = p.into_iter().map(|(_, x)| x).collect::<Option<_>>()?;
+    numbers.try_into().ok().map(Nt2Point::new)
 }
 
 /// What a job and a data file share, as parsed (`None`: missing or invalid,
@@ -812,18 +692,4 @@ struct Header {
 enum Points {
     Planar(Vec<Nt2Point<2>>),
     Spatial(Vec<Nt2Point<3>>),
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn edit_distance_counts_transpositions_once() {
-        assert_eq!(edit_distance("alhpa", "alpha"), 1);
-        assert_eq!(edit_distance("wieghts", "weights"), 1);
-        assert_eq!(edit_distance("", "abc"), 3);
-        assert_eq!(suggestion("sample", TOP_KEYS), Some("samples"));
-        assert_eq!(suggestion("colour", TOP_KEYS), None);
-    }
 }

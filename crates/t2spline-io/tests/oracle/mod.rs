@@ -11,15 +11,19 @@
 //!   text; no message carries a control character (a hostile key cannot write
 //!   escape sequences to a terminal) or a 300-digit number;
 //! - the same holds for the text read as a data file of `t2spline fit`;
-//! - a valid job writes back to canonical JSON that parses to the same job;
+//! - a valid job, of a curve or of a surface, writes back to canonical JSON
+//!   that parses to the same job;
 //! - its result has only finite numbers, parameters from the start to exactly
-//!   the end of the domain, seven ordered layers at every sample, and `rms ≤
-//!   max`; its JSON reads back, and its CSV files have one row per sample and
-//!   no `NaN` or `inf`.
+//!   the end of the domain (in u and in v for a surface), every sampled curve
+//!   or surface with one point per parameter (a grid `su × sv` for a surface)
+//!   and control points in the shape of the model (the net's for a surface),
+//!   seven ordered layers at every sample, `rms ≤ max` with the maximum
+//!   reached inside the domain; its JSON reads back, and its CSV files have
+//!   one row per sample (per grid point) and no `NaN` or `inf`.
 
 #![allow(dead_code)]
 
-use t2spline::job::{Job, Parameters, Samples, Settings, Spline};
+use t2spline::job::{Job, Model, Parameter, Parameters, Samples, Settings, Spline};
 use t2spline::{Alpha, Layer};
 use t2spline_io::job::read_text_from;
 use t2spline_io::{check_finite, render_csv, write_json_pretty, Error};
@@ -132,9 +136,42 @@ pub fn check_job(job: &Job) {
         }
         _ => panic!("parameters of another kind than the spline"),
     };
-    for (params, [a, b]) in ranges {
-        assert_eq!(params.first(), Some(&a));
-        assert_eq!(params.last(), Some(&b));
+    for (params, [a, b]) in &ranges {
+        assert_eq!(params.first(), Some(a));
+        assert_eq!(params.last(), Some(b));
+    }
+    // The maximum of the distance is reached inside the domain.
+    let at: Vec<f64> = match result.error.max_at {
+        Parameter::T(t) => vec![t],
+        Parameter::Uv(uv) => uv.to_vec(),
+    };
+    assert_eq!(at.len(), ranges.len());
+    for (t, (_, [a, b])) in at.iter().zip(&ranges) {
+        assert!((a..=b).contains(&t), "max_at {t} outside [{a}, {b}]");
+    }
+    // Grids of samples and nets of control points in the model's shape.
+    let (grid, net) = match (&samples, &job.model) {
+        (Samples::Grid(grid), Model::Surface(s)) => (Some(*grid), Some(s.shape())),
+        (Samples::Along(_), Model::Planar(_) | Model::Spatial(_)) => (None, None),
+        _ => panic!("samples of another kind than the model"),
+    };
+    for points in [
+        &c.crisp,
+        &c.defuzzified,
+        &c.type_reduced.left,
+        &c.type_reduced.right,
+    ] {
+        assert_eq!((points.grid(), points.len()), (grid, count));
+    }
+    let p = &result.control_points;
+    for points in [
+        &p.crisp,
+        &p.defuzzified,
+        &p.type_reduced_left,
+        &p.type_reduced_right,
+    ] {
+        assert_eq!(points.grid(), net);
+        assert_eq!(points.len(), job.model.control_point_count());
     }
     for i in 0..count {
         for k in 0..result.dimension {

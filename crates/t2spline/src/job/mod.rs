@@ -44,8 +44,8 @@ pub use output::{
 };
 pub use points::Points;
 pub use settings::{
-    check_derivative_order, check_samples, Overrides, Samples, Settings, DEFAULT_SAMPLES,
-    DEFAULT_SURFACE_SAMPLES, MAX_DERIVATIVE_ORDER, MAX_SAMPLES,
+    check_derivative_order, check_grid_samples, check_samples, Overrides, Samples, Settings,
+    DEFAULT_SAMPLES, DEFAULT_SURFACE_SAMPLES, MAX_DERIVATIVE_ORDER, MAX_SAMPLES,
 };
 
 use crate::fuzzy::{Alpha, Axis, Nt2Number, Nt2Point};

@@ -158,14 +158,9 @@ fn samples_of(counts: &[u64], surface: bool) -> Result<Samples, String> {
         (&[n], true) => samples_of(&[n, n], true),
         (&[u, v], true) => {
             let [u, v] = [u, v].map(|n| check_samples(n, &n.to_string()));
-            let [u, v] = [u?, v?];
-            if u.saturating_mul(v) > MAX_SAMPLES {
-                return Err(format!(
-                    "samples = {u} × {v} = {} grid points is more than the limit {MAX_SAMPLES}",
-                    u.saturating_mul(v)
-                ));
-            }
-            Ok(Samples::Grid([u, v]))
+            let grid = [u?, v?];
+            check_grid_samples(grid)?;
+            Ok(Samples::Grid(grid))
         }
         (_, false) => Err(format!(
             "a curve is sampled at one number of parameters, got {} numbers",
@@ -207,6 +202,31 @@ pub fn check_samples(n: u64, written: &str) -> Result<usize, String> {
     } else {
         usize::try_from(n).map_err(|_| format!("samples = {written} does not fit this machine"))
     }
+}
+
+/// Checks the size of a grid of samples `[su, sv]` (SPEC §9), each already
+/// checked by [`check_samples`]: at most [`MAX_SAMPLES`] grid points.
+///
+/// # Errors
+/// The rule that the grid breaks, as text.
+///
+/// # Examples
+/// ```
+/// # use t2spline::job::check_grid_samples;
+/// assert_eq!(check_grid_samples([1000, 1000]), Ok(()));
+/// assert_eq!(
+///     check_grid_samples([2000, 501]),
+///     Err("samples = 2000 × 501 = 1002000 grid points is more than the limit 1000000".to_owned())
+/// );
+/// ```
+pub fn check_grid_samples([u, v]: [usize; 2]) -> Result<(), String> {
+    let points = u.saturating_mul(v);
+    if points > MAX_SAMPLES {
+        return Err(format!(
+            "samples = {u} × {v} = {points} grid points is more than the limit {MAX_SAMPLES}"
+        ));
+    }
+    Ok(())
 }
 
 /// Checks a derivative order `K` for a run with `samples` samples: at least 1,

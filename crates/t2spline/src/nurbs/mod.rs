@@ -44,4 +44,4 @@ pub use curve::{weight_problems, NurbsCurve};
 pub use degree_elevation::MAX_ELEVATED_DEGREE;
 pub use derivatives::MAX_DERIVATIVE_ORDER;
 pub use knots::{Domain, KnotVector};
-pub use surface::{Direction, NurbsSurface};
+pub use surface::{net_weight_problems, Direction, NurbsSurface};

@@ -439,22 +439,50 @@ pub(crate) fn net_weights_flat(weights: &[f64], shape: [usize; 2]) -> Result<(),
             found: weights.len(),
         });
     }
-    for (k, &value) in weights.iter().enumerate() {
-        let rule = if !(value.is_finite() && value > 0.0) {
-            "must be finite and greater than 0"
-        } else if !(MIN_WEIGHT..=MAX_WEIGHT).contains(&value) {
-            "is outside [1e-150, 1e150]"
-        } else {
-            continue;
-        };
-        return Err(Error::NetWeight {
-            row: k / shape[1],
-            column: k % shape[1],
-            value,
-            rule,
-        });
-    }
-    Ok(())
+    let first = weights
+        .chunks(shape[1].max(1))
+        .enumerate()
+        .find_map(|(row, w)| net_weight_problems(row, w).into_iter().next());
+    first.map_or(Ok(()), Err)
+}
+
+/// Every weight of row `row` of a net that is not finite and positive or
+/// lies outside [[`MIN_WEIGHT`], [`MAX_WEIGHT`]] ([`Error::NetWeight`]);
+/// empty if none. The counterpart of
+/// [`weight_problems`](crate::nurbs::weight_problems) for the rows of a
+/// surface, for validators that list every problem.
+///
+/// # Examples
+/// ```
+/// # use t2spline::nurbs::net_weight_problems;
+/// let p = net_weight_problems(2, &[1.0, 0.0, 1e-200]);
+/// let lines: Vec<String> = p.iter().map(ToString::to_string).collect();
+/// assert_eq!(lines, [
+///     "weights[2][1] = 0 must be finite and greater than 0",
+///     "weights[2][2] = 1e-200 is outside [1e-150, 1e150]",
+/// ]);
+/// ```
+#[must_use]
+pub fn net_weight_problems(row: usize, weights: &[f64]) -> Vec<Error> {
+    weights
+        .iter()
+        .enumerate()
+        .filter_map(|(column, &value)| {
+            let rule = if !(value.is_finite() && value > 0.0) {
+                "must be finite and greater than 0"
+            } else if !(MIN_WEIGHT..=MAX_WEIGHT).contains(&value) {
+                "is outside [1e-150, 1e150]"
+            } else {
+                return None;
+            };
+            Some(Error::NetWeight {
+                row,
+                column,
+                value,
+                rule,
+            })
+        })
+        .collect()
 }
 
 /// The non-zero rational basis functions of a surface at `(u, v)`: the

@@ -151,7 +151,19 @@ fn errors_name_the_direction_and_the_net_place() {
     let e = NurbsSurface::try_new(net, vec![vec![1.0; 2]; 2], [ku, kv]).unwrap_err();
     assert_eq!(
         e.to_string(),
-        "knots.u: knots: expected 4 values (control points + order), got 5"
+        "knots.u: expected 4 values (rows + order in u), got 5"
+    );
+    // A knot rule of one direction names that direction's knot vector, as a
+    // job file does.
+    let e = knots_in(Direction::V, Some(vec![0.0, 0.0, 0.5, 0.2, 1.0]), 1, 3).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "knots.v[3] = 0.2 is less than knots.v[2] = 0.5: knots.v must not decrease"
+    );
+    let e = knots_in(Direction::V, Some(vec![0.0, 0.0, 1.0]), 1, 2).unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "knots.v: expected 4 values (columns + order in v), got 3"
     );
 }
 

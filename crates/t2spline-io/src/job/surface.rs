@@ -1,0 +1,367 @@
+//! The rules of surface jobs (SPEC §9): a job whose `points` are rows of a
+//! net.
+//!
+//! The walkers of numbers, points, weights and knots are the curves' own
+//! ([`walker`](super::walker), [`parse`](super::parse)); what is new here is
+//! the shape of a surface job and the rules that tie its parts to the net:
+//!
+//! | key | curve | surface |
+//! |---|---|---|
+//! | `order` / `degree` | a number | a pair `[u, v]` |
+//! | `points` | a list of points (x, y and optionally z) | rows of points along u, each row along v, all of one length; x, y and z |
+//! | `weights` | a list, one per point | rows, the shape of `points` |
+//! | `knots` | an array of `n + k` numbers | an object with `u` (`nu + ku` numbers) and/or `v` (`nv + kv`) |
+//! | `samples` | a number (default 101) | a pair `[su, sv]`, or one number for both (default `[21, 21]`) |
+
+use serde_json::{Map, Value};
+use t2spline::job::{check_grid_samples, Job, Model, Samples, DEFAULT_SURFACE_SAMPLES};
+use t2spline::nurbs::net_weight_problems;
+use t2spline::{Direction, Error as CoreError, FuzzySurface, KnotVector, Nt2Point, Place};
+
+use super::limits::{check_net_size, check_surface_work};
+use super::parse::{complete, knot_error_path, TOP_KEYS};
+use super::position::{child, element};
+use super::walker::{kind, written, Walker};
+
+const KNOT_KEYS: [&str; 2] = ["u", "v"];
+
+/// Whether the job object `o` is a surface job: more entries of `points` are
+/// arrays (rows of a net) than objects (points of a curve); with as many of
+/// each (no entries at all, say), when `order` or `degree` is a pair. A
+/// curve job with one stray array keeps its curve messages, and a surface
+/// job with one stray point its surface messages.
+pub(super) fn is_surface(o: &Map<String, Value>) -> bool {
+    let items = o
+        .get("points")
+        .and_then(Value::as_array)
+        .map_or(&[][..], Vec::as_slice);
+    let rows = items.iter().filter(|v| v.is_array()).count();
+    let points = items.iter().filter(|v| v.is_object()).count();
+    rows > points
+        || (rows == points
+            && ["order", "degree"]
+                .iter()
+                .any(|k| o.get(*k).is_some_and(Value::is_array)))
+}
+
+/// The net of control points as read.
+struct Net {
+    /// `[nu, nv]` when every row is an array of the same length, whether or
+    /// not its points are valid (the rules of each direction need it).
+    shape: Option<[usize; 2]>,
+    /// The points, row by row, when every one is valid.
+    points: Option<Vec<Vec<Nt2Point<3>>>>,
+}
+
+/// The knot values of a surface as given, `[u, v]` (`None`: the default).
+type KnotValues = [Option<Vec<f64>>; 2];
+
+impl Walker {
+    /// A surface job (SPEC §9): every problem of every key, then the rules
+    /// that tie the net, weights and knots together in each direction.
+    pub(super) fn surface_job(&mut self, o: &Map<String, Value>) -> Option<Job> {
+        let (common, degree) = self.common(o, TOP_KEYS, |w| w.degrees(o));
+        let samples = self.grid_samples(o.get("samples"));
+        let net = match o.get("points") {
+            None => {
+                self.report("points", "missing: a job needs its fuzzy control points");
+                None
+            }
+            Some(v) => self.net(v, common.height),
+        };
+        let shape = net.as_ref().and_then(|n| n.shape);
+        let weights = match o.get("weights") {
+            // The shape is within the limit of the net's size.
+            None => shape.map(|[nu, nv]| vec![vec![1.0; nv]; nu]),
+            Some(v) => self.net_weights(v, o.get("points").and_then(Value::as_array)),
+        };
+        let knots = match o.get("knots") {
+            None => Some([None, None]),
+            Some(v) => self.knot_vectors(v),
+        };
+        if let (Some(degree), Some(shape)) = (degree, shape) {
+            self.direction_rules(degree, shape, knots.as_ref());
+            // At most MAX_ORDER, so no overflow.
+            if let Err(rule) = check_surface_work(shape, degree.map(|p| p + 1)) {
+                self.report("points", rule);
+            }
+        }
+        // A key that failed to parse is None here and has been reported.
+        if !self.problems.is_empty() {
+            return None;
+        }
+        let (degree, points, samples, weights, knots) =
+            (degree?, net?.points?, samples?, weights?, knots?);
+        match FuzzySurface::try_new(degree, points, weights, knots) {
+            Ok(surface) => Some(Job {
+                description: common.description,
+                alpha: common.alpha,
+                samples: Samples::Grid(samples),
+                model: Model::Surface(surface),
+            }),
+            Err(e) => {
+                // Every rule FuzzySurface checks was checked above; keep the
+                // message should the two ever disagree.
+                self.located(&surface_error_path(&e), e);
+                None
+            }
+        }
+    }
+
+    /// The degrees `[p, q]`, from `order` or `degree`: a pair.
+    fn degrees(&mut self, o: &Map<String, Value>) -> Option<[usize; 2]> {
+        let (key, v) = self.order_key(o)?;
+        match v.as_array().map(Vec::as_slice) {
+            Some([u, v]) => {
+                let u = self.degree_of(key, &element(key, 0), u);
+                let v = self.degree_of(key, &element(key, 1), v);
+                Some([u?, v?])
+            }
+            Some(items) => {
+                self.report(
+                    key,
+                    format!(
+                        "expected a pair [u, v], one {key} per direction, got an array of {} values",
+                        items.len()
+                    ),
+                );
+                None
+            }
+            None => {
+                let got = if v.is_number() {
+                    written(v)
+                } else {
+                    kind(v).to_owned()
+                };
+                self.report(
+                    key,
+                    format!(
+                        "a surface (points given as rows of a net) has one {key} per direction: give a pair [u, v], got {got}"
+                    ),
+                );
+                None
+            }
+        }
+    }
+
+    /// The grid of samples `[su, sv]`: a pair, or one number for both
+    /// directions; at most [`MAX_SAMPLES`](t2spline::job::MAX_SAMPLES) grid
+    /// points.
+    fn grid_samples(&mut self, v: Option<&Value>) -> Option<[usize; 2]> {
+        let Some(v) = v else {
+            return Some([DEFAULT_SURFACE_SAMPLES; 2]);
+        };
+        let grid = match v.as_array().map(Vec::as_slice) {
+            Some([su, sv]) => {
+                let su = self.samples_in(su, &element("samples", 0));
+                let sv = self.samples_in(sv, &element("samples", 1));
+                [su?, sv?]
+            }
+            Some(items) => {
+                self.report(
+                    "samples",
+                    format!(
+                        "expected a pair [u, v] of numbers of samples, or one number for both directions, got an array of {} values",
+                        items.len()
+                    ),
+                );
+                return None;
+            }
+            None => [self.samples_in(v, "samples")?; 2],
+        };
+        check_grid_samples(grid)
+            .map_err(|rule| self.report("samples", rule))
+            .ok()?;
+        Some(grid)
+    }
+
+    /// The net `points[i][j]`: rows of 3-D points, all of one length, at most
+    /// [`MAX_POINTS`](super::limits::MAX_POINTS) in all (counted before any
+    /// point is read).
+    fn net(&mut self, v: &Value, height: Result<Option<f64>, ()>) -> Option<Net> {
+        let Some(rows) = v.as_array() else {
+            self.report(
+                "points",
+                format!(
+                    "expected rows of points (an array of arrays), got {}",
+                    kind(v)
+                ),
+            );
+            return None;
+        };
+        let total: usize = rows.iter().filter_map(Value::as_array).map(Vec::len).sum();
+        if let Err(rule) = check_net_size(total) {
+            self.report("points", rule);
+            return None;
+        }
+        let columns = rows.first().and_then(Value::as_array).map(Vec::len);
+        let mut regular = true;
+        let mut parsed: Vec<Option<Vec<Nt2Point<3>>>> = Vec::with_capacity(rows.len());
+        for (i, row) in rows.iter().enumerate() {
+            let key = element("points", i);
+            let Some(items) = row.as_array() else {
+                self.report(
+                    &key,
+                    format!("expected a row of points (an array), got {}", kind(row)),
+                );
+                regular = false;
+                parsed.push(None);
+                continue;
+            };
+            if let Some(c) = columns.filter(|&c| c != items.len()) {
+                self.report(
+                    &key,
+                    format!(
+                        "{}, row 0 has {c}: every row of the net needs as many points",
+                        count(items.len(), "column")
+                    ),
+                );
+                regular = false;
+            }
+            let points: Vec<Option<Nt2Point<3>>> = items
+                .iter()
+                .enumerate()
+                .map(|(j, item)| {
+                    let key = element(&key, j);
+                    let spatial = |w: &mut Self, names: &[&'static str]| {
+                        let spatial = names == ["x", "y", "z"];
+                        if !spatial {
+                            w.report(
+                                &key,
+                                format!(
+                                    "has coordinates [{}]; the points of a surface need x, y and z",
+                                    names.join(", ")
+                                ),
+                            );
+                        }
+                        spatial
+                    };
+                    self.point(item, &key, |a| Place::in_net(i, j, a), height, spatial)
+                        .and_then(complete)
+                })
+                .collect();
+            parsed.push(points.into_iter().collect());
+        }
+        Some(Net {
+            shape: regular.then(|| [rows.len(), columns.unwrap_or(0)]),
+            points: parsed.into_iter().collect(),
+        })
+    }
+
+    /// `weights`: rows of numbers of the shape of `points` (the rows as
+    /// given, when an array), each finite and within the core's range.
+    fn net_weights(&mut self, v: &Value, points: Option<&Vec<Value>>) -> Option<Vec<Vec<f64>>> {
+        let rule = "rows of numbers, the shape of points";
+        let Some(rows) = v.as_array() else {
+            self.report("weights", format!("expected {rule}, got {}", kind(v)));
+            return None;
+        };
+        if !rows.is_empty() && !rows.iter().any(Value::is_array) {
+            self.report(
+                "weights",
+                format!("expected {rule}, got a list of numbers (the weights of a curve)"),
+            );
+            return None;
+        }
+        if let Some(nu) = points.map(Vec::len).filter(|&nu| nu != rows.len()) {
+            self.report(
+                "weights",
+                format!("{}, points has {nu}", count(rows.len(), "row")),
+            );
+        }
+        let mut out = Vec::with_capacity(rows.len());
+        for (i, row) in rows.iter().enumerate() {
+            let key = element("weights", i);
+            let values = self.numbers(row, &key);
+            let length = row.as_array().map(Vec::len);
+            let columns = points.and_then(|p| p.get(i)?.as_array().map(Vec::len));
+            if let (Some(length), Some(nv)) = (length, columns) {
+                if length != nv {
+                    self.report(
+                        &key,
+                        format!("{}, points[{i}] has {nv}", count(length, "column")),
+                    );
+                }
+            }
+            for e in values.iter().flat_map(|w| net_weight_problems(i, w)) {
+                self.located(&surface_error_path(&e), e);
+            }
+            out.push(values);
+        }
+        out.into_iter().collect()
+    }
+
+    /// `knots`: an object with the knot values of `u` and/or `v`.
+    fn knot_vectors(&mut self, v: &Value) -> Option<KnotValues> {
+        let Some(o) = v.as_object() else {
+            self.report(
+                "knots",
+                format!(
+                    "a surface has a knot vector per direction: expected an object with `u` and/or `v`, got {}",
+                    kind(v)
+                ),
+            );
+            return None;
+        };
+        self.unknown_keys(o, "knots", &KNOT_KEYS);
+        let mut valid = true;
+        let values = KNOT_KEYS.map(|d| {
+            let values = o.get(d).map(|v| self.numbers(v, &child("knots", d)));
+            valid &= !matches!(values, Some(None));
+            values.flatten()
+        });
+        valid.then_some(values)
+    }
+
+    /// The rules of each direction (SPEC §6 as per §9): at least `k` control
+    /// points along it, and its knot vector's rules when given.
+    fn direction_rules(
+        &mut self,
+        degree: [usize; 2],
+        shape: [usize; 2],
+        knots: Option<&KnotValues>,
+    ) {
+        for direction in Direction::BOTH {
+            let d = direction.index();
+            let (p, n) = (degree[d], shape[d]);
+            // A degree of usize::MAX saturates to an order no net reaches.
+            let order = p.saturating_add(1);
+            let problems = match knots.and_then(|k| k[d].as_deref()) {
+                Some(values) => KnotVector::problems(values, p, n),
+                None if n < order => vec![CoreError::TooFewControlPoints { order, count: n }],
+                None => Vec::new(),
+            };
+            for inner in problems {
+                let e = CoreError::InDirection {
+                    direction,
+                    inner: Box::new(inner),
+                };
+                self.located(&surface_error_path(&e), e);
+            }
+        }
+    }
+}
+
+/// `n` things, singular or plural: `1 column`, `3 rows`.
+fn count(n: usize, thing: &str) -> String {
+    if n == 1 {
+        format!("1 {thing}")
+    } else {
+        format!("{n} {thing}s")
+    }
+}
+
+/// The place in the job file of an error of the core crate about a surface.
+fn surface_error_path(e: &CoreError) -> String {
+    match e {
+        CoreError::InDirection { direction, inner } => match **inner {
+            CoreError::TooFewControlPoints { .. } => "points".to_owned(),
+            ref inner => {
+                knot_error_path(inner, &child("knots", &direction.to_string())).unwrap_or_default()
+            }
+        },
+        CoreError::NetShape { what, row, .. } => element(what, *row),
+        CoreError::NetWeight { row, column, .. } => element(&element("weights", *row), *column),
+        _ => String::new(),
+    }
+}
