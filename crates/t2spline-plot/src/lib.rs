@@ -39,15 +39,17 @@ pub mod font;
 pub mod geometry;
 pub mod labels;
 pub mod layout;
+pub mod obstacles;
 mod output;
 #[cfg(feature = "png")]
 pub mod png;
 pub mod report;
 pub mod scene;
+pub mod simplify;
 pub mod style;
 pub mod svg;
 pub mod ticks;
 
 pub use error::Error;
-pub use figures::{all_figures, NumberChoice, FIGURE_NAMES};
+pub use figures::{all_figures, Aspect, FigureOptions, NumberChoice, FIGURE_NAMES};
 pub use output::{render_files, Format};

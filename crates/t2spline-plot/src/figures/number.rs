@@ -7,7 +7,7 @@ use t2spline::{Alpha, Axis};
 
 use super::style::{layer_marker, layer_stroke, upper_band};
 use super::NumberChoice;
-use crate::scene::{Figure, LegendEntry, Mark, Panel};
+use crate::scene::{Figure, LegendEntry, Mark, Panel, Priority};
 use crate::style::{Marker, Shape, Stroke, GREY, INK, PURPLE};
 use crate::ticks::short;
 use crate::{data, Error};
@@ -149,6 +149,7 @@ pub fn number_figure(job: &Job, alpha: Alpha, choice: NumberChoice) -> Result<Fi
         Mark::Label {
             anchor: [d, 0.0],
             text: format!("defuzzified {}", short(d, 4)),
+            priority: Priority::Always,
         },
     );
     panel.push(
@@ -156,6 +157,7 @@ pub fn number_figure(job: &Job, alpha: Alpha, choice: NumberChoice) -> Result<Fi
         Mark::Label {
             anchor: [c, 1.0],
             text: format!("crisp {}", short(c, 4)),
+            priority: Priority::Always,
         },
     );
     let legend = vec![
@@ -169,11 +171,18 @@ pub fn number_figure(job: &Job, alpha: Alpha, choice: NumberChoice) -> Result<Fi
             layer_stroke(Layer::PrimaryLeft),
             layer_marker(Layer::PrimaryLeft),
         ),
-        LegendEntry::line_marker(
-            "LMF (lower, height h), cut ends",
-            layer_stroke(Layer::LowerLeft),
-            layer_marker(Layer::LowerLeft),
-        ),
+        if cut.lower().is_some() {
+            LegendEntry::line_marker(
+                "LMF (lower, height h) and its cut ends",
+                layer_stroke(Layer::LowerLeft),
+                layer_marker(Layer::LowerLeft),
+            )
+        } else {
+            LegendEntry::line(
+                "LMF (lower, height h): no cut above h",
+                layer_stroke(Layer::LowerLeft),
+            )
+        },
         LegendEntry::area("footprint of uncertainty", upper_band()),
         LegendEntry::line("type-reduced triangle", tfn_stroke),
         LegendEntry::marker("defuzzified value", d_marker),
@@ -183,21 +192,20 @@ pub fn number_figure(job: &Job, alpha: Alpha, choice: NumberChoice) -> Result<Fi
     } else {
         "α > h: no lower cut, two ends averaged"
     };
-    Ok(Figure {
-        name: "number",
-        title: format!(
+    Ok(Figure::new(
+        "number",
+        format!(
             "Fuzzy number: coordinate {name} of control point {}",
             choice.point
         ),
-        subtitle: format!(
+        format!(
             "{regime}; type-reduced ({}, {}, {}), defuzzified {}",
             short(tfn.left(), 4),
             short(c, 4),
             short(tfn.right(), 4),
             short(d, 4)
         ),
-        panels: vec![panel],
+        vec![panel],
         legend,
-        colorbar: None,
-    })
+    ))
 }
