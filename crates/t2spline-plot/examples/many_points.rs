@@ -53,20 +53,9 @@ fn number(c: f64, r: &mut Random, height: Option<f64>) -> Value {
     n
 }
 
-fn main() {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    let mut n = 40usize;
-    let mut dim = 2usize;
-    let mut seed = 1u64;
-    let mut it = args.iter();
-    while let Some(a) = it.next() {
-        let mut value = || it.next().and_then(|v| v.parse::<u64>().ok());
-        match a.as_str() {
-            "--dim" => dim = value().map_or(2, |v| if v == 3 { 3 } else { 2 }),
-            "--seed" => seed = value().unwrap_or(1),
-            s => n = s.parse().unwrap_or(n).max(4),
-        }
-    }
+/// A job of `n` control points (at least 4) in `dim` (2 or 3) dimensions.
+pub fn job(n: usize, dim: usize, seed: u64) -> Value {
+    let n = n.max(4);
     let mut r = Random(seed);
     let points: Vec<Value> = (0..n)
         .map(|i| {
@@ -91,15 +80,33 @@ fn main() {
         })
         .collect();
     let weights: Vec<f64> = (0..n).map(|_| r.range(0.5, 3.0)).collect();
-    let job = json!({
+    json!({
         "description": format!("{n} control points made by the many_points example (seed {seed})"),
         "order": 4,
         "weights": weights,
         "alpha": 0.8,
         "lower_height": 0.6,
         "points": points,
-    });
+    })
+}
+
+// Tests include this file for `job` alone.
+#[allow(dead_code)]
+fn main() {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    let mut n = 40usize;
+    let mut dim = 2usize;
+    let mut seed = 1u64;
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        let mut value = || it.next().and_then(|v| v.parse::<u64>().ok());
+        match a.as_str() {
+            "--dim" => dim = value().map_or(2, |v| if v == 3 { 3 } else { 2 }),
+            "--seed" => seed = value().unwrap_or(1),
+            s => n = s.parse().unwrap_or(n),
+        }
+    }
     // Writing to a closed pipe is not worth a panic message.
-    let _ = serde_json::to_writer(std::io::stdout(), &job);
+    let _ = serde_json::to_writer(std::io::stdout(), &job(n, dim, seed));
     println!();
 }

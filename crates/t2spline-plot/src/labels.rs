@@ -9,8 +9,9 @@
 //! are left out otherwise, so that a dense figure shows fewer names rather
 //! than a heap of them.
 //!
-//! Every label tests at most [`CANDIDATES`] boxes against the indexed
-//! [`Obstacles`], so placing `n` labels costs `O(n)` bounded queries.
+//! Every label tests at most 64 boxes (8 distances × 8 directions) against
+//! the indexed [`Obstacles`], so placing `n` labels costs `O(n)` bounded
+//! queries.
 
 use crate::font::{cap_height, line_height, text_width};
 use crate::geometry::{Px, Rect};
@@ -45,8 +46,6 @@ const DIRECTIONS: [(f64, f64); 8] = [
     (0.0, -1.0),
     (0.0, 1.0),
 ];
-/// The most boxes a label tests.
-pub const CANDIDATES: usize = RADII.len() * DIRECTIONS.len();
 
 /// The box of `text` with its top-left corner at `(x, y)`.
 fn text_box(text: &str, x: f64, y: f64) -> Rect {
@@ -243,7 +242,7 @@ mod tests {
             label(&mut p, &format!("l{k}"), [5.0, 5.0], Priority::Always);
         }
         let pl = layout();
-        let o = crate::layout::panel_obstacles(&p, &pl);
+        let o = crate::obstacles::panel_obstacles(&p, &pl);
         let placed: Vec<Placed> = place(&p, &pl, &o, &[]).into_iter().flatten().collect();
         assert_eq!(placed.len(), 3);
         for (i, a) in placed.iter().enumerate() {
@@ -263,7 +262,7 @@ mod tests {
         }
         label(&mut p, "a", [5.0, 5.0], Priority::Always);
         let pl = layout();
-        let o = crate::layout::panel_obstacles(&p, &pl);
+        let o = crate::obstacles::panel_obstacles(&p, &pl);
         let placed = place(&p, &pl, &o, &[]);
         let names = placed[..40].iter().flatten().count();
         assert!(names > 0 && names < 40, "{names} names placed");

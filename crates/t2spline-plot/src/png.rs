@@ -41,7 +41,7 @@ fn fonts() -> Arc<fontdb::Database> {
 /// # Examples
 /// ```
 /// let svg = r#"<svg xmlns="http://www.w3.org/2000/svg" width="10" height="5"><rect width="10" height="5" fill="red"/></svg>"#;
-/// let png = t2spline_plot::png::svg_to_png(svg, 2.0)?;
+/// let png = t2spline_plot::svg_to_png(svg, 2.0)?;
 /// assert_eq!(&png[1..4], b"PNG");
 /// // 300 dpi = 11811 pixels per metre, in the chunk after the header.
 /// assert_eq!(&png[37..41], b"pHYs");

@@ -3,13 +3,7 @@
 
 /// Tick values covering `[lo, hi]` with about `target` intervals, each a
 /// multiple of a nice step, and the step.
-///
-/// # Examples
-/// ```
-/// let (ticks, step) = t2spline_plot::ticks::nice_ticks(0.13, 6.9, 7);
-/// assert_eq!(step, 1.0);
-/// assert_eq!(ticks, [1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
-/// ```
+
 #[must_use]
 pub fn nice_ticks(lo: f64, hi: f64, target: usize) -> (Vec<f64>, f64) {
     let span = hi - lo;
@@ -59,14 +53,7 @@ pub fn tick_label(value: f64, decimals: usize) -> String {
 
 /// A coordinate for an SVG file: two decimals, trailing zeros dropped, no `-0`,
 /// so that files are stable text.
-///
-/// # Examples
-/// ```
-/// use t2spline_plot::ticks::coord;
-/// assert_eq!(coord(12.3456), "12.35");
-/// assert_eq!(coord(3.0), "3");
-/// assert_eq!(coord(-0.001), "0");
-/// ```
+
 #[must_use]
 pub fn coord(v: f64) -> String {
     let s = format!("{v:.2}");
@@ -106,6 +93,9 @@ mod tests {
 
     #[test]
     fn ticks_cover_the_range_with_nice_steps() {
+        let (t, s) = nice_ticks(0.13, 6.9, 7);
+        assert_eq!(s, 1.0);
+        assert_eq!(t, [1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
         let (t, s) = nice_ticks(-0.04, 1.04, 5);
         assert_eq!(s, 0.25);
         assert_eq!(t, [0.0, 0.25, 0.5, 0.75, 1.0]);
@@ -125,6 +115,8 @@ mod tests {
         assert_eq!(short(6.0, 3), "6");
         assert_eq!(short(-2.345_67, 3), "−2.35");
         assert_eq!(coord(-0.004), "0");
+        assert_eq!(coord(12.3456), "12.35");
+        assert_eq!(coord(3.0), "3");
         assert_eq!(coord(10.10), "10.1");
     }
 }

@@ -108,7 +108,7 @@ pub struct Layout {
     pub height: f64,
     /// Baseline of the title.
     pub title_baseline: f64,
-    /// Baseline of the subtitle.
+    /// Baseline of the subtitle's first line.
     pub subtitle_baseline: f64,
     /// The panels.
     pub panels: Vec<PanelLayout>,
@@ -148,6 +148,22 @@ impl Layout {
         }
         out
     }
+}
+
+/// `text` in lines no wider than `width` at font `size`, broken at spaces.
+#[must_use]
+pub fn wrap(text: &str, width: f64, size: f64) -> Vec<String> {
+    let mut lines: Vec<String> = Vec::new();
+    for word in text.split(' ') {
+        match lines.last_mut() {
+            Some(line) if text_width(&format!("{line} {word}"), size) <= width => {
+                line.push(' ');
+                line.push_str(word);
+            }
+            _ => lines.push(word.to_owned()),
+        }
+    }
+    lines
 }
 
 /// Data bounds of a panel's items: `[x0, x1, y0, y1]`.
@@ -304,12 +320,21 @@ pub fn fit_probed(figures: &[&Figure], probes: &[usize]) -> Layout {
     } + cbar;
     let title_baseline = PAD + cap_height(font_size::TITLE) + 4.0;
     let subtitle_baseline = title_baseline + line_height(font_size::SUBTITLE) + 5.0;
+    let subtitle_lines = figures
+        .iter()
+        .map(|f| wrap(&f.subtitle, width - 2.0 * PAD, font_size::SUBTITLE).len())
+        .max()
+        .unwrap_or(1)
+        .max(1);
     let title_h = if fig.panels.iter().any(|p| p.title.is_some()) {
         line_height(font_size::AXIS) + 4.0
     } else {
         0.0
     };
-    let top = subtitle_baseline + 12.0 + title_h;
+    let top = subtitle_baseline
+        + (subtitle_lines - 1) as f64 * line_height(font_size::SUBTITLE)
+        + 12.0
+        + title_h;
     let cell = (width - cbar - 2.0 * PAD) / cols as f64;
     let bottom_margin =
         TICK_LEN + 4.0 + line_height(font_size::TICK) + 6.0 + line_height(font_size::AXIS);

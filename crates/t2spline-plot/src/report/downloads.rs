@@ -83,23 +83,29 @@ fn tokens(text: &str) -> (Vec<&str>, Vec<&str>) {
     (lits, nums)
 }
 
-/// `texts` (one file at every stop) as templates and, per stop, a template
-/// index and the numbers that fill its holes:
-/// `{"name", "templates": [[piece, …], …], "stops": [[template, [number, …]], …]}`;
-/// a template's pieces and a stop's numbers alternate, pieces first and last.
-#[must_use]
-pub fn pack(name: &str, texts: &[String]) -> Value {
+/// One file cut into templates: per stop its template and the numbers
+/// that fill the template's holes.
+struct Cut<'a> {
+    templates: Vec<Vec<String>>,
+    stops: Vec<(usize, Vec<&'a str>)>,
+}
+
+/// `texts` (one file at every stop) as templates (the text between the
+/// numbers that change; stops whose text around the numbers agrees share
+/// one) and, per stop, a template and its numbers.
+fn cut(texts: &[String]) -> Cut<'_> {
     let cut: Vec<(Vec<&str>, Vec<&str>)> = texts.iter().map(|t| tokens(t)).collect();
-    // Stops whose literal text agrees share a template.
-    let mut groups: Vec<(Vec<&str>, Vec<usize>)> = Vec::new();
+    let mut groups: Vec<(&Vec<&str>, Vec<usize>)> = Vec::new();
     for (k, (lits, _)) in cut.iter().enumerate() {
-        match groups.iter_mut().find(|(l, _)| l == lits) {
+        match groups.iter_mut().find(|(l, _)| *l == lits) {
             Some((_, members)) => members.push(k),
-            None => groups.push((lits.clone(), vec![k])),
+            None => groups.push((lits, vec![k])),
         }
     }
-    let mut templates = Vec::new();
-    let mut stops = vec![Value::Null; texts.len()];
+    let mut out = Cut {
+        templates: Vec::new(),
+        stops: vec![(0, Vec::new()); texts.len()],
+    };
     for (t, (lits, members)) in groups.iter().enumerate() {
         let first = &cut[members[0]].1;
         let holes: Vec<usize> = (0..first.len())
@@ -119,31 +125,96 @@ pub fn pack(name: &str, texts: &[String]) -> Value {
                 }
             }
         }
-        templates.push(json!(pieces));
+        out.templates.push(pieces);
         for &k in members {
-            let values: Vec<&str> = holes.iter().map(|&i| cut[k].1[i]).collect();
-            stops[k] = json!([t, values]);
+            out.stops[k] = (t, holes.iter().map(|&i| cut[k].1[i]).collect());
         }
     }
-    json!({"name": name, "templates": templates, "stops": stops})
+    out
 }
 
-/// The text of stop `k` from [`pack`]'s form, as the page assembles it.
+/// Downloadable files (name, text at each stop) in the form the page reads:
+///
+/// ```text
+/// {"files": [{"name", "templates": [[piece, …], …]}, …],
+///  "stops": [{"t": [template of each file], "v": [entry, …]}, …]}
+/// ```
+/// A template's pieces alternate with a stop's numbers, pieces first and
+/// last. A stop's numbers for all its files, in file order, are its entries:
+/// a string is the next number (and joins the stop's table of numbers); an
+/// integer `d` repeats an earlier number, the one `d` places after the last
+/// repeated in that table. The CSV files repeat the result file's curves, so
+/// most of their numbers cost a small, regular integer.
 #[must_use]
-pub fn unpack(packed: &Value, k: usize) -> Option<String> {
+pub fn pack(files: &[(String, Vec<String>)]) -> Value {
+    let cuts: Vec<Cut<'_>> = files.iter().map(|(_, texts)| cut(texts)).collect();
+    let stops = files.first().map_or(0, |(_, t)| t.len());
+    let packed_stops: Vec<Value> = (0..stops)
+        .map(|k| {
+            let mut table: std::collections::HashMap<&str, i64> = std::collections::HashMap::new();
+            let (mut entries, mut count, mut last) = (Vec::new(), 0i64, 0i64);
+            for c in &cuts {
+                for &s in &c.stops[k].1 {
+                    match table.get(s) {
+                        Some(&i) if s.len() > 4 => {
+                            entries.push(json!(i - last));
+                            last = i;
+                        }
+                        _ => {
+                            table.insert(s, count);
+                            count += 1;
+                            entries.push(json!(s));
+                        }
+                    }
+                }
+            }
+            let t: Vec<usize> = cuts.iter().map(|c| c.stops[k].0).collect();
+            json!({"t": t, "v": entries})
+        })
+        .collect();
+    let files: Vec<Value> = files
+        .iter()
+        .zip(&cuts)
+        .map(|((name, _), c)| json!({"name": name, "templates": c.templates}))
+        .collect();
+    json!({"files": files, "stops": packed_stops})
+}
+
+/// The text of file `name` at stop `k` from [`pack`]'s form, as the page
+/// assembles it.
+#[cfg(test)]
+#[must_use]
+pub fn unpack(packed: &Value, name: &str, k: usize) -> Option<String> {
     let stop = packed["stops"].get(k)?;
-    let pieces = packed["templates"]
-        .get(stop[0].as_u64()? as usize)?
-        .as_array()?;
-    let values = stop[1].as_array()?;
-    let mut s = String::new();
-    for (i, p) in pieces.iter().enumerate() {
-        s.push_str(p.as_str()?);
-        if let Some(v) = values.get(i) {
-            s.push_str(v.as_str()?);
+    let (mut table, mut values, mut last) = (Vec::new(), Vec::new(), 0i64);
+    for e in stop["v"].as_array()? {
+        match e.as_str() {
+            Some(s) => {
+                table.push(s.to_owned());
+                values.push(s.to_owned());
+            }
+            None => {
+                last += e.as_i64()?;
+                values.push(table.get(usize::try_from(last).ok()?)?.clone());
+            }
         }
     }
-    Some(s)
+    let mut values = values.into_iter();
+    for (f, file) in packed["files"].as_array()?.iter().enumerate() {
+        let t = stop["t"].get(f)?.as_u64()? as usize;
+        let pieces = file["templates"].get(t)?.as_array()?;
+        let mut s = String::new();
+        for (i, p) in pieces.iter().enumerate() {
+            s.push_str(p.as_str()?);
+            if i + 1 < pieces.len() {
+                s.push_str(&values.next()?);
+            }
+        }
+        if file["name"] == name {
+            return Some(s);
+        }
+    }
+    None
 }
 
 #[cfg(test)]
@@ -152,20 +223,38 @@ mod tests {
 
     #[test]
     fn texts_come_back_byte_for_byte() {
-        let texts = vec![
+        let json = vec![
             "{\"a\": [1.5, -2e-7, null],\n \"s\": \"x 0.5 \\\" 7\", \"k\": 3}\n".to_owned(),
-            "{\"a\": [1.25, -2e-7, 4],\n \"s\": \"x 0.5 \\\" 7\", \"k\": 3}\n".to_owned(),
+            "{\"a\": [1.255, -2e-7, 4],\n \"s\": \"x 0.5 \\\" 7\", \"k\": 3}\n".to_owned(),
             "{\"a\": [1.5, -3, null, 9],\n \"s\": \"x 0.5 \\\" 7\", \"k\": 3}\n".to_owned(),
-            "t,x_1\n0,0.1\n1,0.2\n".to_owned(),
         ];
-        let packed = pack("f", &texts);
-        for (k, t) in texts.iter().enumerate() {
-            assert_eq!(unpack(&packed, k).as_deref(), Some(t.as_str()), "stop {k}");
+        let csv = vec![
+            "t,x_1\n0,1.5\n1,0.2\n".to_owned(),
+            "t,x_1\n0,1.255\n1,0.25\n".to_owned(),
+            "t,x_1\n0,1.5\n1,0.2\n".to_owned(),
+        ];
+        let files = vec![
+            ("r.json".to_owned(), json.clone()),
+            ("c.csv".to_owned(), csv.clone()),
+        ];
+        let packed = pack(&files);
+        for k in 0..3 {
+            assert_eq!(
+                unpack(&packed, "r.json", k).as_deref(),
+                Some(json[k].as_str()),
+                "stop {k}"
+            );
+            assert_eq!(
+                unpack(&packed, "c.csv", k).as_deref(),
+                Some(csv[k].as_str()),
+                "stop {k}"
+            );
         }
-        // The first two share a template with holes only where they differ.
-        assert_eq!(packed["stops"][0], json!([0, ["1.5", "null"]]));
-        assert_eq!(packed["stops"][1], json!([0, ["1.25", "4"]]));
-        let (_, nums) = tokens(&texts[0]);
+        // The first two share a template with holes only where they differ;
+        // the CSV's 1.255 repeats the result's (the first number of the stop).
+        assert_eq!(packed["stops"][0]["t"], json!([0, 0]));
+        assert_eq!(packed["stops"][1]["v"], json!(["1.255", "4", 0, "0.25"]));
+        let (_, nums) = tokens(&json[0]);
         assert_eq!(
             nums,
             ["1.5", "-2e-7", "null", "3"],

@@ -20,8 +20,11 @@ mod page;
 mod stops;
 pub mod tables;
 
-pub use downloads::{files_of, unpack};
-pub use stops::{finest_within, Stops, STEPS};
+use downloads::files_of;
+#[cfg(test)]
+use downloads::unpack;
+use stops::finest_within;
+pub use stops::Stops;
 
 use serde_json::{json, Value};
 use t2spline::job::{Job, RunOutput};
@@ -114,7 +117,7 @@ pub fn render(
         "stops": stops_json,
         "figures": figs.iter().map(|f| f.data.clone()).collect::<Vec<_>>(),
         "strings": strings.into_json(),
-        "downloads": files.iter().map(|(name, texts)| downloads::pack(name, texts)).collect::<Vec<_>>(),
+        "downloads": downloads::pack(&files),
     });
     let scene_heights = heights.clone();
     let fig_result = data::compute(job, start)?;
@@ -160,24 +163,43 @@ pub fn render(
         page.section(&s);
     }
     page.job(job_text);
+    if std::env::var("T2SPLINE_DEBUG_SIZES").is_ok() {
+        let n = stops.alphas.len();
+        let figures = pack::packed_len(&json!([data_block["figures"], data_block["strings"]]));
+        let downloads = pack::packed_len(&data_block["downloads"]);
+        let numbers = pack::packed_len(&data_block["stops"]);
+        eprintln!(
+            "stops {n}: figures {} per stop, downloads {} per stop, numbers {} per stop",
+            figures / n,
+            downloads / n,
+            numbers / n
+        );
+    }
     page.finish(&pack::pack(&data_block));
     Ok(page.html)
 }
 
-/// The stops: as fine a grid as the start stop's packed size allows within
-/// [`DATA_BUDGET`].
+/// The stops: as fine a grid as the packed size of two sample stops allows
+/// within [`DATA_BUDGET`]. The samples (α = 0.3 and 0.9) do not depend on the
+/// start, so a job gets the same grid whatever alpha its report starts at.
 fn choose_stops(job: &Job, start: Alpha, options: &FigureOptions) -> Result<Stops, Error> {
     let heights = job.model.heights();
-    let run = data::run_at(job, start, job.samples)?;
-    let files: Vec<String> = files_of(&run)?.into_iter().map(|(_, t)| t).collect();
-    let figures: Vec<String> = stop_figures(job, start, &heights, options)?
-        .iter()
-        .map(svg::render)
-        .collect();
-    // About half of a result's numbers and most figure parts change from stop
-    // to stop; the rest is stored once.
-    let per_stop = pack::packed_len(&json!(files)) / 2 + pack::packed_len(&json!(figures)) * 3 / 4;
-    Ok(finest_within(job, start, per_stop.max(1), DATA_BUDGET))
+    let mut total = 0;
+    for a in [0.3, 0.9] {
+        let alpha = Alpha::try_new(a)?;
+        let run = data::run_at(job, alpha, job.samples)?;
+        let files: Vec<String> = files_of(&run)?.into_iter().map(|(_, t)| t).collect();
+        let figures: Vec<String> = stop_figures(job, alpha, &heights, options)?
+            .iter()
+            .map(svg::render)
+            .collect();
+        // Measured on jobs of 4 to 200 points: a stop's packed downloads take
+        // a third of a whole result's files packed alone (half its numbers
+        // change, and the CSV files repeat the result's), and its figure
+        // parts a bit under half of its whole figures.
+        total += pack::packed_len(&json!(files)) / 3 + pack::packed_len(&json!(figures)) * 9 / 20;
+    }
+    Ok(finest_within(job, start, (total / 2).max(1), DATA_BUDGET))
 }
 
 /// The figures that change with alpha: the number and stages 2–4.

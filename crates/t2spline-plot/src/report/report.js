@@ -84,16 +84,32 @@
     }
   }
 
-  // A downloadable file at the shown stop: a template joined with the stop's numbers.
+  // A downloadable file at a stop (the shown one by default): its template
+  // joined with the stop's numbers. The numbers of all files come as one
+  // list: a string is a number, an integer repeats an earlier one (that many
+  // places after the last repeated).
   function fileText(name, k) {
-    var f = data.downloads.filter(function (d) { return d.name === name; })[0];
-    var stop = f.stops[k === undefined ? Number(slider.value) : k];
-    var pieces = f.templates[stop[0]], values = stop[1], s = "";
-    for (var i = 0; i < pieces.length; i++) {
-      s += pieces[i];
-      if (i < values.length) s += values[i];
+    var stop = data.downloads.stops[k === undefined ? Number(slider.value) : k];
+    var table = [], values = [], last = 0;
+    stop.v.forEach(function (e) {
+      if (typeof e === "string") {
+        table.push(e);
+        values.push(e);
+      } else {
+        last += e;
+        values.push(table[last]);
+      }
+    });
+    var next = 0, files = data.downloads.files;
+    for (var f = 0; f < files.length; f++) {
+      var pieces = files[f].templates[stop.t[f]], s = "";
+      for (var i = 0; i < pieces.length; i++) {
+        s += pieces[i];
+        if (i + 1 < pieces.length) s += values[next++];
+      }
+      if (files[f].name === name) return s;
     }
-    return s;
+    return null;
   }
 
   function svgText(name) {

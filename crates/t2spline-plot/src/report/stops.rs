@@ -27,7 +27,7 @@ impl Stops {
     /// # Examples
     /// ```
     /// let job = t2spline_io::read_job("../../examples/paper-alg-1-1.json".as_ref())?;
-    /// let s = t2spline_plot::report::Stops::new(&job, t2spline::Alpha::try_new(0.8)?, 100);
+    /// let s = t2spline_plot::Stops::new(&job, t2spline::Alpha::try_new(0.8)?, 100);
     /// assert_eq!(s.alphas.len(), 101); // 0.6 and 0.8 are already on the grid
     /// assert_eq!((s.alphas[60], s.alphas[s.initial]), (0.6, 0.8));
     /// # Ok::<(), Box<dyn std::error::Error>>(())

@@ -11,7 +11,7 @@ use std::fmt::Write as _;
 mod legend;
 mod marks;
 
-use crate::font::{cap_height, SVG_FONT_STACK};
+use crate::font::{cap_height, line_height, SVG_FONT_STACK};
 use crate::geometry::{Px, Rect};
 use crate::labels::{place, Placed};
 use crate::layout::{self, Layout, PanelLayout, TICK_LEN};
@@ -33,12 +33,11 @@ pub struct Part {
 ///
 /// # Examples
 /// ```
-/// use t2spline_plot::scene::{Figure, Mark, Panel};
-/// use t2spline_plot::style::{Stroke, BLACK};
+/// use t2spline_plot::{Figure, Mark, Panel, Stroke, palette::BLACK};
 /// let mut panel = Panel::curves("x", "y");
 /// panel.push("c", Mark::Line { points: vec![[0.0, 0.0], [1.0, 1.0]], stroke: Stroke::solid(BLACK, 1.0) });
 /// let fig = Figure::new("demo", "Demo", "", vec![panel], vec![]);
-/// let svg = t2spline_plot::svg::render(&fig);
+/// let svg = t2spline_plot::render_svg(&fig);
 /// assert!(svg.starts_with("<svg") && svg.contains("<polyline"));
 /// ```
 #[must_use]
@@ -83,23 +82,31 @@ pub fn parts(fig: &Figure, layout: &Layout, prefix: &str) -> Vec<Part> {
         ),
     );
     let centre = coord(0.5 * layout.width);
-    for (key, baseline, size, text) in [
-        ("title", layout.title_baseline, font_size::TITLE, &fig.title),
+    let lines = layout::wrap(&fig.subtitle, layout.width - 20.0, font_size::SUBTITLE);
+    for (key, baseline, size, lines) in [
+        (
+            "title",
+            layout.title_baseline,
+            font_size::TITLE,
+            vec![fig.title.clone()],
+        ),
         (
             "subtitle",
             layout.subtitle_baseline,
             font_size::SUBTITLE,
-            &fig.subtitle,
+            lines,
         ),
     ] {
-        push(
-            key.into(),
-            format!(
-                "<text x=\"{centre}\" y=\"{}\" font-size=\"{size}\" text-anchor=\"middle\" fill=\"{INK}\">{}</text>\n",
-                coord(baseline),
-                escape(text)
-            ),
-        );
+        let mut svg = String::new();
+        for (k, line) in lines.iter().enumerate() {
+            let _ = writeln!(
+                svg,
+                "<text x=\"{centre}\" y=\"{}\" font-size=\"{size}\" text-anchor=\"middle\" fill=\"{INK}\">{}</text>",
+                coord(baseline + k as f64 * line_height(size)),
+                escape(line)
+            );
+        }
+        push(key.into(), svg);
     }
     for (i, (panel, pl)) in fig.panels.iter().zip(&layout.panels).enumerate() {
         let clip = format!("{prefix}clip{i}");

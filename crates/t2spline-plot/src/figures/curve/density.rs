@@ -16,11 +16,9 @@ const PANEL_PX: f64 = 560.0;
 /// Plot width of each panel of a three-panel figure.
 const PANEL_PX_3: f64 = 340.0;
 /// The fewest pixels between neighbouring control points for markers at the
-/// derived control points (cut ends, type-reduced, defuzzified) and for
-/// full-size crisp markers.
+/// derived control points (cut ends, type-reduced, defuzzified), for the
+/// stage-1 interval bars and for full-size crisp markers.
 const MARKERS_PX: f64 = 18.0;
-/// The fewest pixels for the stage-1 bars of each number's intervals.
-const BARS_PX: f64 = 18.0;
 /// The fewest pixels for (small) markers at the crisp control points.
 const CRISP_PX: f64 = 3.0;
 /// Names need about this many pixels between labelled points.
@@ -35,10 +33,9 @@ pub struct Density {
     pub name_stride: usize,
     /// Markers at the crisp control points.
     pub crisp_markers: bool,
-    /// Markers at the derived control points.
+    /// Markers at the derived control points, and the bars of the fuzzy
+    /// intervals (stage 1).
     pub markers: bool,
-    /// Bars of the fuzzy intervals (stage 1).
-    pub bars: bool,
     /// Median distance between neighbouring control points, in pixels.
     pub spacing_px: f64,
     /// The number of control points.
@@ -66,7 +63,6 @@ impl Density {
             name_stride,
             crisp_markers: spacing_px >= CRISP_PX,
             markers: spacing_px >= MARKERS_PX,
-            bars: spacing_px >= BARS_PX,
             spacing_px,
             count,
         }
@@ -78,10 +74,11 @@ impl Density {
         self.name_stride > 0 && (k % self.name_stride == 0 || k + 1 == self.count)
     }
 
-    /// A note on what the figure leaves out, with `what` naming the markers
-    /// (e.g. "cut ends"); `None` when nothing is.
+    /// A note on what the figure leaves out: thinned names, crisp markers,
+    /// and `left_out` (what the builder dropped for want of room, e.g.
+    /// "cut ends not marked"); `None` when nothing is.
     #[must_use]
-    pub fn note(&self, what: Option<&str>) -> Option<String> {
+    pub fn note(&self, left_out: Option<&str>) -> Option<String> {
         let mut parts = Vec::new();
         match self.name_stride {
             0 => parts.push("no names".to_owned()),
@@ -89,8 +86,8 @@ impl Density {
             2 => parts.push("names on every other point where there is room".to_owned()),
             k => parts.push(format!("names on every {k}th point where there is room")),
         }
-        if let Some(what) = what.filter(|_| !self.markers) {
-            parts.push(format!("{what} not marked"));
+        if let Some(what) = left_out {
+            parts.push(what.to_owned());
         }
         if !self.crisp_markers {
             parts.push("control points not marked".to_owned());
@@ -157,12 +154,12 @@ mod tests {
     fn few_points_show_everything_and_many_are_thinned() {
         let few = Density::of(&line(5), &xy(), Aspect::Equal);
         assert_eq!(few.name_stride, 1);
-        assert!(few.markers && few.bars && few.crisp_markers);
-        assert_eq!(few.note(Some("cut ends")), None);
+        assert!(few.markers && few.crisp_markers);
+        assert_eq!(few.note(None), None);
         let many = Density::of(&line(1000), &xy(), Aspect::Equal);
         assert!(many.name_stride >= 20, "{many:?}");
-        assert!(!many.markers && !many.bars);
-        let note = many.note(Some("cut ends")).unwrap();
+        assert!(!many.markers);
+        let note = many.note(Some("cut ends not marked")).unwrap();
         assert!(
             note.contains("1000 control points") && note.contains("cut ends not marked"),
             "{note}"

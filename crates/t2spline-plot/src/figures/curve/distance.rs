@@ -150,11 +150,11 @@ pub fn distance_figure(job: &Job, alpha: f64) -> Result<Figure, crate::Error> {
     if !inner.is_empty() {
         legend.push(LegendEntry::marker(
             "value at α = h",
-            Marker::filled(Shape::Circle, 6.0, INK),
+            Marker::filled(Shape::Circle, 6.0, BLACK),
         ));
         legend.push(LegendEntry::marker(
             "limit from above h",
-            Marker::open(Shape::Circle, 6.0, INK),
+            Marker::open(Shape::Circle, 6.0, BLACK),
         ));
     }
     Ok(Figure {

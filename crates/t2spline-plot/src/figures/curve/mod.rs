@@ -126,11 +126,12 @@ impl<'a> CurveScene<'a> {
             .collect()
     }
 
-    /// The notes of a figure: what the density left out (`what`: the derived
-    /// markers it shows), and whether the axes are to scale.
+    /// The notes of a figure: what the density left out (`left_out` says
+    /// what, when the derived markers are), and whether the axes are to scale.
     #[must_use]
-    pub fn notes(&self, what: Option<&str>) -> Vec<String> {
-        let mut notes: Vec<String> = self.density.note(what).into_iter().collect();
+    pub fn notes(&self, left_out: &str) -> Vec<String> {
+        let left_out = (!self.density.markers).then_some(left_out);
+        let mut notes: Vec<String> = self.density.note(left_out).into_iter().collect();
         if self.aspect == Aspect::Auto {
             notes.push("Axes not to scale: each is fitted to the data.".to_owned());
         }
@@ -276,6 +277,11 @@ pub fn names(
     density: &Density,
     text: impl Fn(usize) -> String,
 ) {
+    // Thinned names go in the first projection only: in the others a curve
+    // folded over itself would mix them up.
+    if density.name_stride > 1 && ij != (0, 1) {
+        return;
+    }
     for (k, xy) in project(points, ij).into_iter().enumerate() {
         if density.named(k) {
             p.push(

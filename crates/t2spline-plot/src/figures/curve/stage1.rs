@@ -23,7 +23,7 @@ pub fn stage1_figure(scene: &CurveScene<'_>) -> Figure {
     let panels = scene.panels(|p, ij| {
         bands(p, r, ij);
         polygon(p, &cp.crisp, ij);
-        if d.bars {
+        if d.markers {
             bars(p, r, ij);
         }
         for l in Layer::ALL {
@@ -54,13 +54,13 @@ pub fn stage1_figure(scene: &CurveScene<'_>) -> Figure {
     }
     legend.push(LegendEntry::area("between the upper layers", upper_band()));
     legend.push(LegendEntry::area("between the lower layers", lower_band()));
-    let bars_phrase = if d.bars {
+    let bars_phrase = if d.markers {
         "; bars: upper ⊃ primary ⊃ lower interval of each coordinate"
     } else {
         ""
     };
     Figure {
-        notes: scene.notes(Some("interval bars")),
+        notes: scene.notes("no interval bars"),
         ..Figure::new(
             "stage1-fuzzy",
             "Stage 1: normal type-2 fuzzy rational B-spline curve",

@@ -75,7 +75,7 @@ pub fn stage2_figure(scene: &CurveScene<'_>) -> Figure {
         names(p, &cp.crisp, ij, d, point_name);
     });
     Figure {
-        notes: scene.notes(Some("cut ends")),
+        notes: scene.notes("cut ends not marked"),
         ..Figure::new(
             "stage2-alpha-cut",
             "Stage 2: alpha-cut of the fuzzy control points (α-NT2FRBsC)",

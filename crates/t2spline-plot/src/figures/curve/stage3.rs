@@ -104,7 +104,7 @@ pub fn stage3_figure(scene: &CurveScene<'_>) -> Figure {
         reduced_band(),
     ));
     Figure {
-        notes: scene.notes(Some("type-reduced points")),
+        notes: scene.notes("type-reduced points not marked"),
         ..Figure::new(
             "stage3-type-reduced",
             "Stage 3: type reduction (TR-α-NT2FRBsC)",

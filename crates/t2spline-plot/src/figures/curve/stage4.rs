@@ -17,8 +17,6 @@ use crate::{data, Error};
 /// Whether stage 4 gets a panel magnifying the largest distance.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Zoom {
-    /// No magnified panel.
-    Off,
     /// A magnified panel when the curves are apart (`error.max > 0`).
     WhereApart,
     /// Always a magnified panel; where the curves coincide it says so (the
@@ -91,7 +89,6 @@ pub fn stage4_figure(job: &Job, scene: &CurveScene<'_>, zoom: Zoom) -> Result<Fi
         largest_distance(p, ends.projected(ij), text);
     });
     let zoomed = match zoom {
-        Zoom::Off => false,
         Zoom::WhereApart => e.max > 0.0,
         Zoom::Always => true,
     };
@@ -123,7 +120,7 @@ pub fn stage4_figure(job: &Job, scene: &CurveScene<'_>, zoom: Zoom) -> Result<Fi
         ),
     ];
     Ok(Figure {
-        notes: scene.notes(Some("defuzzified points")),
+        notes: scene.notes("defuzzified points not marked"),
         ..Figure::new(
             "stage4-defuzzified",
             "Stage 4: crisp type-2 solution curve (D-TR-α-NT2FRBsC)",
