@@ -66,7 +66,9 @@ pub fn run_at(job: &Job, alpha: Alpha, samples: usize) -> Result<RunOutput, Erro
 #[must_use]
 pub fn just_above(h: f64) -> Option<f64> {
     // Positive floats are ordered as their bits.
-    (h < 1.0 && h >= 0.0).then(|| f64::from_bits(h.to_bits() + 1))
+    (0.0..1.0)
+        .contains(&h)
+        .then(|| f64::from_bits(h.to_bits() + 1))
 }
 
 /// The crisp and the defuzzified curve of `model` at `alpha` at the given

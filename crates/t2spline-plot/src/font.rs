@@ -11,6 +11,7 @@ use std::sync::OnceLock;
 pub const FONT_BYTES: &[u8] = include_bytes!("../fonts/DejaVuSans.ttf");
 
 /// The family name inside [`FONT_BYTES`].
+#[cfg(any(feature = "png", test))]
 pub const FONT_FAMILY: &str = "DejaVu Sans";
 
 /// The `font-family` list written into SVG files.
@@ -51,7 +52,6 @@ fn metrics() -> Option<&'static Metrics> {
 
 /// The width in pixels of `text` set in the bundled font at `size` pixels
 /// (sum of advance widths; kerning ignored, which DejaVu Sans barely uses).
-
 #[must_use]
 pub fn text_width(text: &str, size: f64) -> f64 {
     // The bundled font always parses (a test checks it); if it did not, an

@@ -70,7 +70,10 @@ fn placed(rect: Rect, leader: Option<[Px; 2]>) -> Placed {
 }
 
 /// The candidate boxes of a text item, or `None` for other items.
-fn candidates(mark: &Mark, pl: &PanelLayout) -> Option<(Vec<(Rect, Option<[Px; 2]>)>, Priority)> {
+/// A candidate box and its leader line, if any.
+type Candidate = (Rect, Option<[Px; 2]>);
+
+fn candidates(mark: &Mark, pl: &PanelLayout) -> Option<(Vec<Candidate>, Priority)> {
     let plot = pl.plot.grow(-1.0);
     match mark {
         Mark::HRule { y, label, .. } if !label.is_empty() => {
@@ -164,7 +167,7 @@ pub fn place(
 
 /// Candidate boxes around `anchor` at the given distances, nearest first,
 /// with leaders for far ones.
-fn around(anchor: Px, text: &str, radii: &[f64]) -> Vec<(Rect, Option<[Px; 2]>)> {
+fn around(anchor: Px, text: &str, radii: &[f64]) -> Vec<Candidate> {
     let b = text_box(text, 0.0, 0.0);
     let mut out = Vec::with_capacity(radii.len() * DIRECTIONS.len());
     for &r in radii {

@@ -3,7 +3,6 @@
 
 /// Tick values covering `[lo, hi]` with about `target` intervals, each a
 /// multiple of a nice step, and the step.
-
 #[must_use]
 pub fn nice_ticks(lo: f64, hi: f64, target: usize) -> (Vec<f64>, f64) {
     let span = hi - lo;
@@ -53,7 +52,6 @@ pub fn tick_label(value: f64, decimals: usize) -> String {
 
 /// A coordinate for an SVG file: two decimals, trailing zeros dropped, no `-0`,
 /// so that files are stable text.
-
 #[must_use]
 pub fn coord(v: f64) -> String {
     let s = format!("{v:.2}");

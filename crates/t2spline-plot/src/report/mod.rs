@@ -294,7 +294,10 @@ fn fuzzy_points_table(job: &Job, r: &RunOutput) -> String {
     }
     s.push_str("</tbody></table></div>\n");
     if n > shown {
-        let _ = write!(s, "<p class=\"note\">The first {shown} control points; all {n} are in the job below.</p>\n");
+        let _ = writeln!(
+            s,
+            "<p class=\"note\">The first {shown} control points; all {n} are in the job below.</p>"
+        );
     }
     s.push_str("</details>\n");
     s

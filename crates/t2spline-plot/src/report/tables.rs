@@ -235,9 +235,9 @@ pub fn html(t: &Table, r: &RunOutput) -> String {
     }
     s.push_str("</tbody></table></div>\n");
     if t.left_out > 0 {
-        let _ = write!(
+        let _ = writeln!(
             s,
-            "<p class=\"note\">The first {MAX_TABLE_POINTS} control points; the other {} are in the downloads (result JSON).</p>\n",
+            "<p class=\"note\">The first {MAX_TABLE_POINTS} control points; the other {} are in the downloads (result JSON).</p>",
             t.left_out
         );
     }

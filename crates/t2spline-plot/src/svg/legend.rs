@@ -137,9 +137,9 @@ pub(super) fn colorbar(cb: &ColorBar, r: Rect) -> String {
 pub(super) fn notes(notes: &[String], top: f64) -> String {
     let mut s = String::new();
     for (k, n) in notes.iter().enumerate() {
-        let _ = write!(
+        let _ = writeln!(
             s,
-            "<text x=\"10\" y=\"{}\" font-size=\"{}\" fill=\"{MUTED}\">{}</text>\n",
+            "<text x=\"10\" y=\"{}\" font-size=\"{}\" fill=\"{MUTED}\">{}</text>",
             coord(top + (k as f64 + 1.0) * NOTE_ROW - 3.0),
             font_size::NOTE,
             super::escape(n)
