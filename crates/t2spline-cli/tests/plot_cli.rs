@@ -13,6 +13,18 @@ fn t2spline() -> Command {
     Command::cargo_bin("t2spline").unwrap()
 }
 
+/// `t2spline SUB EXAMPLE -o DIR`, to add options to.
+fn on_example(sub: &str, dir: &Path) -> Command {
+    let mut c = t2spline();
+    c.args([
+        sub,
+        example().to_str().unwrap(),
+        "-o",
+        dir.to_str().unwrap(),
+    ]);
+    c
+}
+
 const NAMES: [&str; 7] = [
     "number",
     "stage1-fuzzy",
@@ -83,13 +95,7 @@ fn aspect_auto_fits_each_axis_and_notes_it() {
     let dir = tempfile::tempdir().unwrap();
     for aspect in ["equal", "auto"] {
         let out = dir.path().join(aspect);
-        t2spline()
-            .args([
-                "plot",
-                example().to_str().unwrap(),
-                "-o",
-                out.to_str().unwrap(),
-            ])
+        on_example("plot", &out)
             .args(["--format", "svg", "--aspect", aspect])
             .assert()
             .success();
@@ -100,15 +106,8 @@ fn aspect_auto_fits_each_axis_and_notes_it() {
             "{aspect}"
         );
     }
-    t2spline()
-        .args([
-            "plot",
-            example().to_str().unwrap(),
-            "-o",
-            dir.path().to_str().unwrap(),
-            "--aspect",
-            "wide",
-        ])
+    on_example("plot", dir.path())
+        .args(["--aspect", "wide"])
         .assert()
         .code(2)
         .stderr(contains("--aspect"));
@@ -117,28 +116,15 @@ fn aspect_auto_fits_each_axis_and_notes_it() {
 #[test]
 fn report_accepts_the_figure_options() {
     let dir = tempfile::tempdir().unwrap();
-    t2spline()
-        .args([
-            "report",
-            example().to_str().unwrap(),
-            "-o",
-            dir.path().to_str().unwrap(),
-        ])
+    on_example("report", dir.path())
         .args(["--point", "3", "--axis", "y", "--aspect", "auto"])
         .assert()
         .success();
     let html = std::fs::read_to_string(dir.path().join("report.html")).unwrap();
     assert!(html.contains("coordinate y of control point 3"));
     assert!(html.contains("Axes not to scale"));
-    t2spline()
-        .args([
-            "report",
-            example().to_str().unwrap(),
-            "-o",
-            dir.path().to_str().unwrap(),
-            "--point",
-            "9",
-        ])
+    on_example("report", dir.path())
+        .args(["--point", "9"])
         .assert()
         .code(2)
         .stderr(contains("--point: point 9 does not exist"));

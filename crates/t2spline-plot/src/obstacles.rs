@@ -329,12 +329,17 @@ pub fn add_panel(o: &mut Obstacles, panel: &Panel, pl: &PanelLayout) {
 mod tests {
     use super::*;
 
-    const R: Rect = Rect {
-        x: 10.0,
-        y: 10.0,
-        w: 10.0,
-        h: 10.0,
-    };
+    /// A 10-pixel square at (10, 10).
+    const R: Rect = square(10.0, 10.0, 10.0);
+
+    const fn square(x: f64, y: f64, side: f64) -> Rect {
+        Rect {
+            x,
+            y,
+            w: side,
+            h: side,
+        }
+    }
 
     fn panel() -> Obstacles {
         Obstacles::new(Rect {

@@ -219,6 +219,16 @@ impl LegendEntry {
         }
     }
 
+    /// A line entry with a marker when there is one (a series whose points
+    /// may be left out for want of room).
+    #[must_use]
+    pub fn line_maybe_marker(label: &str, stroke: Stroke, marker: Option<Marker>) -> LegendEntry {
+        LegendEntry {
+            marker,
+            ..LegendEntry::line(label, stroke)
+        }
+    }
+
     /// An entry for a marker alone.
     #[must_use]
     pub fn marker(label: &str, marker: Marker) -> LegendEntry {

@@ -63,10 +63,10 @@ pub fn coord(v: f64) -> String {
     }
 }
 
-/// A number for a label in a figure: at most `digits` significant decimals after
-/// trimming, e.g. `0.0448`, `6`, `0.6`.
+/// `v` with at most `digits` significant decimals after trimming trailing
+/// zeros, in fixed notation with an ASCII minus: `0.0448`, `6`, `-0.6`.
 #[must_use]
-pub fn short(v: f64, digits: usize) -> String {
+pub fn significant(v: f64, digits: usize) -> String {
     if v == 0.0 || !v.is_finite() {
         return if v.is_finite() {
             "0".into()
@@ -77,12 +77,18 @@ pub fn short(v: f64, digits: usize) -> String {
     let mag = v.abs().log10().floor() as i32;
     let decimals = (digits as i32 - 1 - mag).max(0) as usize;
     let s = format!("{v:.decimals$}");
-    let s = if s.contains('.') {
+    if s.contains('.') {
         s.trim_end_matches('0').trim_end_matches('.').to_owned()
     } else {
         s
-    };
-    s.replace('-', "−")
+    }
+}
+
+/// A number for a label in a figure: [`significant`] with a true minus
+/// sign, e.g. `0.0448`, `6`, `−0.6`.
+#[must_use]
+pub fn short(v: f64, digits: usize) -> String {
+    significant(v, digits).replace('-', "−")
 }
 
 #[cfg(test)]

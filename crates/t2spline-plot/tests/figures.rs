@@ -448,6 +448,14 @@ fn the_distance_figure_shows_both_sides_of_the_jump_at_h() {
             .unwrap()
     };
     let (at, above) = (markers("max-at-h"), markers("max-above-h"));
+    // No line bridges the jump: the curve breaks at h, and is drawn in two
+    // stretches.
+    let svg = render_svg(&fig);
+    let line = svg
+        .lines()
+        .find(|l| l.contains("stroke=\"#000000\" stroke-width=\"1.8\""))
+        .expect("the max line");
+    assert!(line.starts_with("<path d=\"M") && line.matches('M').count() == 2, "{line}");
     assert_eq!((at.len(), above.len()), (1, 1));
     assert_eq!(at[0][0], 0.6);
     // The paper's type reduction jumps at h: averaging three cut ends (the

@@ -13,6 +13,7 @@ use t2spline::job::RunOutput;
 use t2spline::Layer;
 
 use crate::svg::escape;
+use crate::ticks::significant;
 
 /// The most control points a table lists.
 pub const MAX_TABLE_POINTS: usize = 12;
@@ -33,27 +34,18 @@ pub fn rounded(v: Option<f64>) -> String {
     let Some(x) = v else {
         return "null".to_owned();
     };
-    if x == 0.0 || !x.is_finite() {
-        return if x.is_finite() {
-            "0".into()
-        } else {
-            x.to_string()
-        };
-    }
-    let mag = x.abs().log10().floor() as i32;
+    let mag = if x == 0.0 || !x.is_finite() {
+        0
+    } else {
+        x.abs().log10().floor() as i32
+    };
     if !(-4..=6).contains(&mag) {
         let s = format!("{x:.3e}");
         let (m, e) = s.split_once('e').unwrap_or((&s, "0"));
         let m = m.trim_end_matches('0').trim_end_matches('.');
         return format!("{m}e{e}");
     }
-    let decimals = (3 - mag).max(0) as usize;
-    let s = format!("{x:.decimals$}");
-    if s.contains('.') {
-        s.trim_end_matches('0').trim_end_matches('.').to_owned()
-    } else {
-        s
-    }
+    significant(x, 4)
 }
 
 /// One table: its id, its caption, its header and static row heads, and the

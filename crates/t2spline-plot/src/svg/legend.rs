@@ -10,16 +10,13 @@ use crate::style::{font_size, Fill, INK, MUTED, WHITE};
 use crate::ticks::{coord, short};
 
 use super::marks::markers;
-use super::{stroke_attrs, text_el};
+use super::{rect_attrs, stroke_attrs, text_el};
 
 pub(super) fn legend(entries: &[LegendEntry], l: &LegendLayout) -> String {
     let r = l.rect;
     let mut s = format!(
-        "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"{WHITE}\" fill-opacity=\"0.92\" stroke=\"#b0b0b0\" stroke-width=\"0.8\" rx=\"2\"/>\n",
-        coord(r.x),
-        coord(r.y),
-        coord(r.w),
-        coord(r.h)
+        "<rect{} fill=\"{WHITE}\" fill-opacity=\"0.92\" stroke=\"#b0b0b0\" stroke-width=\"0.8\" rx=\"2\"/>\n",
+        rect_attrs(&r)
     );
     for (e, [x, y]) in entries.iter().zip(l.entries(entries.len())) {
         let mid = y + 0.5 * (LEGEND_ROW - 2.0);
@@ -91,11 +88,8 @@ pub(super) fn colorbar(cb: &ColorBar, r: Rect) -> String {
     }
     let _ = writeln!(
         s,
-        "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"{INK}\" stroke-width=\"0.8\"/>",
-        coord(r.x),
-        coord(r.y),
-        coord(r.w),
-        coord(r.h)
+        "<rect{} fill=\"none\" stroke=\"{INK}\" stroke-width=\"0.8\"/>",
+        rect_attrs(&r)
     );
     s.push_str(&text_el(
         r.x + 0.5 * r.w,

@@ -6,32 +6,66 @@ use std::fmt::Write as _;
 use crate::geometry::Px;
 use crate::labels::Placed;
 use crate::layout::PanelLayout;
-use crate::scene::Mark;
+use crate::scene::{Mark, Xy};
 use crate::simplify::simplify;
 use crate::style::{font_size, Marker, Shape, GREY, WHITE};
 use crate::ticks::coord;
 
 use super::{points_attr, stroke_attrs, text_el};
 
+/// The stretches of a polyline between its gaps (non-finite points), in
+/// pixels, each simplified to within `tolerance`.
+fn stretches(points: &[Xy], pl: &PanelLayout, tolerance: f64) -> Vec<Vec<Px>> {
+    points
+        .split(|p| !(p[0].is_finite() && p[1].is_finite()))
+        .filter(|s| !s.is_empty())
+        .map(|s| {
+            simplify(
+                &s.iter().map(|&p| pl.to_px(p)).collect::<Vec<_>>(),
+                tolerance,
+            )
+        })
+        .collect()
+}
+
+/// A line: one `<polyline>`, or a `<path>` of several stretches when it has
+/// gaps (a jump that no line may bridge).
+fn line(
+    points: &[Xy],
+    stroke: &crate::style::Stroke,
+    pl: &PanelLayout,
+    clip_attr: &str,
+    tolerance: f64,
+) -> String {
+    let runs = stretches(points, pl, tolerance);
+    if let [one] = runs.as_slice() {
+        return format!(
+            "<polyline points=\"{}\" {}{clip_attr}/>\n",
+            points_attr(one),
+            stroke_attrs(stroke)
+        );
+    }
+    let mut d = String::new();
+    for run in &runs {
+        for (k, p) in run.iter().enumerate() {
+            let _ = write!(
+                d,
+                "{}{} {}",
+                if k == 0 { 'M' } else { 'L' },
+                coord(p[0]),
+                coord(p[1])
+            );
+        }
+    }
+    format!("<path d=\"{d}\" {}{clip_attr}/>\n", stroke_attrs(stroke))
+}
+
 pub(super) fn mark(m: &Mark, pl: &PanelLayout, clip: &str, tolerance: f64) -> String {
     let clip_attr = format!(" clip-path=\"url(#{clip})\"");
     match m {
-        Mark::Line { points, stroke } => {
-            let px = simplify(
-                &points.iter().map(|&p| pl.to_px(p)).collect::<Vec<_>>(),
-                tolerance,
-            );
-            format!(
-                "<polyline points=\"{}\" {}{clip_attr}/>\n",
-                points_attr(&px),
-                stroke_attrs(stroke)
-            )
-        }
+        Mark::Line { points, stroke } => line(points, stroke, pl, &clip_attr, tolerance),
         Mark::Area { points, fill } => {
-            let px = simplify(
-                &points.iter().map(|&p| pl.to_px(p)).collect::<Vec<_>>(),
-                tolerance,
-            );
+            let px = stretches(points, pl, tolerance).concat();
             format!(
                 "<polygon points=\"{}\" fill=\"{}\" fill-opacity=\"{}\" stroke=\"none\"{clip_attr}/>\n",
                 points_attr(&px),

@@ -211,6 +211,17 @@ pub fn escape(s: &str) -> String {
         .replace('"', "&quot;")
 }
 
+/// `<rect>` position attributes of `r`: ` x="…" y="…" width="…" height="…"`.
+pub(crate) fn rect_attrs(r: &Rect) -> String {
+    format!(
+        " x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"",
+        coord(r.x),
+        coord(r.y),
+        coord(r.w),
+        coord(r.h)
+    )
+}
+
 pub(crate) fn stroke_attrs(s: &Stroke) -> String {
     let mut a = format!(
         "fill=\"none\" stroke=\"{}\" stroke-width=\"{}\" stroke-linejoin=\"round\"",
@@ -248,11 +259,8 @@ pub(crate) fn text_el(x: f64, y: f64, size: f64, anchor: &str, extra: &str, text
 fn frame(panel: &Panel, pl: &PanelLayout, clip: &str) -> String {
     let r = pl.plot;
     let mut s = format!(
-        "<clipPath id=\"{clip}\"><rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/></clipPath>\n",
-        coord(r.x),
-        coord(r.y),
-        coord(r.w),
-        coord(r.h)
+        "<clipPath id=\"{clip}\"><rect{}/></clipPath>\n",
+        rect_attrs(&r)
     );
     let xs: Vec<f64> = pl.x.ticks.iter().map(|&t| pl.to_px([t, 0.0])[0]).collect();
     let ys: Vec<f64> = pl.y.ticks.iter().map(|&t| pl.to_px([0.0, t])[1]).collect();
@@ -278,11 +286,8 @@ fn frame(panel: &Panel, pl: &PanelLayout, clip: &str) -> String {
     );
     let _ = writeln!(
         s,
-        "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" stroke=\"{INK}\" stroke-width=\"1\"/>",
-        coord(r.x),
-        coord(r.y),
-        coord(r.w),
-        coord(r.h)
+        "<rect{} fill=\"none\" stroke=\"{INK}\" stroke-width=\"1\"/>",
+        rect_attrs(&r)
     );
     let tick_base = r.bottom() + TICK_LEN + 3.0 + cap_height(font_size::TICK);
     for (x, l) in xs.iter().zip(pl.x.labels()) {

@@ -26,7 +26,7 @@ use t2spline::job::{Points, RunOutput};
 
 use super::style::{crisp_marker, crisp_stroke, polygon_stroke};
 use super::Aspect;
-use crate::scene::{Mark, Panel, Priority, Xy};
+use crate::scene::{LegendEntry, Mark, Panel, Priority, Xy};
 use crate::style::{Marker, Stroke};
 use crate::ticks::short;
 
@@ -137,6 +137,20 @@ impl<'a> CurveScene<'a> {
         }
         notes
     }
+}
+
+/// The legend entries of the crisp curve with its control points, and of the
+/// control polygon.
+#[must_use]
+pub fn crisp_legend() -> Vec<LegendEntry> {
+    vec![
+        LegendEntry::line_marker(
+            "crisp curve and control points",
+            crisp_stroke(),
+            crisp_marker(),
+        ),
+        LegendEntry::line("control polygon", polygon_stroke()),
+    ]
 }
 
 /// Points projected to the coordinates `(i, j)`.

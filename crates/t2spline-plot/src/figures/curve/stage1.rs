@@ -4,10 +4,11 @@
 use t2spline::job::{Points, RunOutput};
 use t2spline::Layer;
 
-use super::{band, crisp_points, names, point_name, polygon, project, weights_phrase, CurveScene};
-use crate::figures::style::{
-    crisp_marker, crisp_stroke, layer_stroke, lower_band, polygon_stroke, upper_band, FUNCTIONS,
+use super::{
+    band, crisp_legend, crisp_points, names, point_name, polygon, project, weights_phrase,
+    CurveScene,
 };
+use crate::figures::style::{layer_stroke, lower_band, upper_band, FUNCTIONS};
 use crate::scene::{Figure, LegendEntry, Mark, Panel};
 use crate::style::{Stroke, BLUE, GREEN, VERMILLION};
 
@@ -38,14 +39,7 @@ pub fn stage1_figure(scene: &CurveScene<'_>) -> Figure {
         crisp_points(p, &cp.crisp, ij, d);
         names(p, &cp.crisp, ij, d, point_name);
     });
-    let mut legend = vec![
-        LegendEntry::line_marker(
-            "crisp curve and control points",
-            crisp_stroke(),
-            crisp_marker(),
-        ),
-        LegendEntry::line("control polygon", polygon_stroke()),
-    ];
+    let mut legend = crisp_legend();
     for (l, _, name) in FUNCTIONS {
         legend.push(LegendEntry::line(
             &format!("{name} layers (left, right)"),

@@ -4,13 +4,10 @@ use t2spline::job::{Points, RunOutput};
 use t2spline::Layer;
 
 use super::{
-    alpha_phrase, band, crisp_points, line, markers, names, point_name, polygon, project,
-    CurveScene,
+    alpha_phrase, band, crisp_legend, crisp_points, line, markers, names, point_name, polygon,
+    project, CurveScene,
 };
-use crate::figures::style::{
-    crisp_marker, crisp_stroke, layer_marker, layer_stroke, lower_band, polygon_stroke, upper_band,
-    FUNCTIONS,
-};
+use crate::figures::style::{layer_marker, layer_stroke, lower_band, upper_band, FUNCTIONS};
 use crate::scene::{Figure, LegendEntry, Mark, Panel};
 
 /// The alpha-cut curve of a layer (the crisp curve for the crisp layer);
@@ -113,14 +110,7 @@ fn cut_bands(p: &mut Panel, r: &RunOutput, ij: (usize, usize)) {
 
 /// The legend of what is drawn at this alpha.
 fn legend(r: &RunOutput, with_markers: bool) -> Vec<LegendEntry> {
-    let mut legend = vec![
-        LegendEntry::line_marker(
-            "crisp curve and control points",
-            crisp_stroke(),
-            crisp_marker(),
-        ),
-        LegendEntry::line("control polygon", polygon_stroke()),
-    ];
+    let mut legend = crisp_legend();
     for (l, _, name) in FUNCTIONS {
         if l == Layer::LowerLeft && !has_lower(r) {
             continue;

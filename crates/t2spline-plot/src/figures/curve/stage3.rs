@@ -82,12 +82,12 @@ pub fn stage3_figure(scene: &CurveScene<'_>) -> Figure {
             crisp_stroke(),
             crisp_marker(),
         ),
-        entry(
+        LegendEntry::line_maybe_marker(
             &with("type-reduced left curve"),
             left_stroke(),
             d.markers.then(left_marker),
         ),
-        entry(
+        LegendEntry::line_maybe_marker(
             &with("type-reduced right curve"),
             right_stroke(),
             d.markers.then(right_marker),
@@ -112,13 +112,6 @@ pub fn stage3_figure(scene: &CurveScene<'_>) -> Figure {
             panels,
             legend,
         )
-    }
-}
-
-fn entry(label: &str, stroke: Stroke, marker: Option<crate::style::Marker>) -> LegendEntry {
-    LegendEntry {
-        marker,
-        ..LegendEntry::line(label, stroke)
     }
 }
 

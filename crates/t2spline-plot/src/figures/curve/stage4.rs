@@ -5,11 +5,8 @@ use t2spline::job::{Job, RunOutput};
 use t2spline::Alpha;
 
 use super::zoom::zoom_panel;
-use super::{crisp_curve, crisp_points, line, markers, polygon, project, CurveScene};
-use crate::figures::style::{
-    crisp_marker, crisp_stroke, distance_marker, distance_stroke, polygon_stroke, solution_marker,
-    solution_stroke,
-};
+use super::{crisp_curve, crisp_legend, crisp_points, line, markers, polygon, project, CurveScene};
+use crate::figures::style::{distance_marker, distance_stroke, solution_marker, solution_stroke};
 use crate::scene::{Figure, LegendEntry, Mark, Panel, Priority, Xy};
 use crate::ticks::short;
 use crate::{data, Error};
@@ -95,30 +92,21 @@ pub fn stage4_figure(job: &Job, scene: &CurveScene<'_>, zoom: Zoom) -> Result<Fi
     if zoomed {
         panels.push(zoom_panel(job, r, &ends)?);
     }
-    let legend = vec![
-        LegendEntry::line_marker(
-            "crisp curve and control points",
-            crisp_stroke(),
-            crisp_marker(),
-        ),
-        LegendEntry {
-            marker: d.markers.then(solution_marker),
-            ..LegendEntry::line(
-                if d.markers {
-                    "defuzzified curve and control points"
-                } else {
-                    "defuzzified curve"
-                },
-                solution_stroke(),
-            )
+    let mut legend = crisp_legend();
+    legend.push(LegendEntry::line_maybe_marker(
+        if d.markers {
+            "defuzzified curve and control points"
+        } else {
+            "defuzzified curve"
         },
-        LegendEntry::line("control polygon", polygon_stroke()),
-        LegendEntry::line_marker(
-            "largest distance at equal t",
-            distance_stroke(),
-            distance_marker(),
-        ),
-    ];
+        solution_stroke(),
+        d.markers.then(solution_marker),
+    ));
+    legend.push(LegendEntry::line_marker(
+        "largest distance at equal t",
+        distance_stroke(),
+        distance_marker(),
+    ));
     Ok(Figure {
         notes: scene.notes("defuzzified points not marked"),
         ..Figure::new(
