@@ -145,12 +145,26 @@ pub fn place(
                 .into_iter()
                 .filter(|(r, _)| plot.contains_rect(r) && !texts.overlaps_rect(r))
                 .collect();
-            let free = inside.iter().find(|(r, _)| taken.is_free(r));
+            // Free: the box covers nothing, and its leader (from a few
+            // pixels off the anchor) cuts through nothing either.
+            let clear = |leader: &Option<[Px; 2]>| {
+                leader.is_none_or(|[a, b]| {
+                    let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
+                    let len = dx.hypot(dy).max(1e-9);
+                    let start = [a[0] + dx / len * 3.0, a[1] + dy / len * 3.0];
+                    len <= 3.0 || !taken.crosses(start, b)
+                })
+            };
+            let free = inside
+                .iter()
+                .find(|(r, leader)| taken.is_free(r) && clear(leader));
             let best = match priority {
                 Priority::IfRoom => free,
-                Priority::Always => {
-                    free.or_else(|| inside.iter().min_by_key(|(r, _)| taken.hits(r)))
-                }
+                Priority::Always => free.or_else(|| {
+                    inside
+                        .iter()
+                        .min_by_key(|(r, l)| taken.hits(r) + usize::from(!clear(l)))
+                }),
             };
             if let Some((rect, leader)) = best.cloned() {
                 taken.add_rect(rect.grow(1.0));

@@ -265,6 +265,26 @@ impl Obstacles {
         !self.covers_fill(r) && !self.near(r).iter().any(|&id| self.meets(id, r))
     }
 
+    /// Whether the segment `a`–`b` crosses a drawn segment or box (a leader
+    /// line should not cut through the drawing).
+    #[must_use]
+    pub fn crosses(&self, a: Px, b: Px) -> bool {
+        let bbox = Rect {
+            x: a[0].min(b[0]),
+            y: a[1].min(b[1]),
+            w: (a[0] - b[0]).abs(),
+            h: (a[1] - b[1]).abs(),
+        };
+        self.near(&bbox).iter().any(|&id| {
+            if id & RECT_TAG == 0 {
+                let [c, d] = self.segments[id as usize];
+                segments_cross(a, b, c, d)
+            } else {
+                self.rects[(id & !RECT_TAG) as usize].meets_segment(a, b)
+            }
+        })
+    }
+
     /// Whether `r` overlaps one of the boxes (texts, markers, legend).
     #[must_use]
     pub fn overlaps_rect(&self, r: &Rect) -> bool {
@@ -272,6 +292,28 @@ impl Obstacles {
             .iter()
             .any(|&id| id & RECT_TAG != 0 && self.meets(id, r))
     }
+}
+
+/// Whether the segments `a`–`b` and `c`–`d` share a point (orientation
+/// test; touching counts).
+fn segments_cross(a: Px, b: Px, c: Px, d: Px) -> bool {
+    let orient =
+        |p: Px, q: Px, r: Px| (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
+    let (d1, d2) = (orient(c, d, a), orient(c, d, b));
+    let (d3, d4) = (orient(a, b, c), orient(a, b, d));
+    if ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0))
+        && ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0))
+    {
+        return true;
+    }
+    let on = |p: Px, q: Px, r: Px| {
+        orient(p, q, r) == 0.0
+            && r[0] >= p[0].min(q[0])
+            && r[0] <= p[0].max(q[0])
+            && r[1] >= p[1].min(q[1])
+            && r[1] <= p[1].max(q[1])
+    };
+    on(c, d, a) || on(c, d, b) || on(a, b, c) || on(a, b, d)
 }
 
 /// Half the side of a marker's box, in pixels, with its outline.
@@ -383,6 +425,17 @@ mod tests {
             }),
             1
         );
+    }
+
+    #[test]
+    fn leaders_cross_what_lies_across_them() {
+        let mut o = panel();
+        o.add_segment([50.0, 0.0], [50.0, 100.0]);
+        o.add_rect(Rect { x: 120.0, ..R });
+        assert!(o.crosses([40.0, 50.0], [60.0, 40.0]));
+        assert!(!o.crosses([40.0, 50.0], [45.0, 90.0]));
+        assert!(o.crosses([110.0, 5.0], [130.0, 25.0]), "through the box");
+        assert!(!o.crosses([110.0, 5.0], [115.0, 25.0]));
     }
 
     #[test]

@@ -455,7 +455,10 @@ fn the_distance_figure_shows_both_sides_of_the_jump_at_h() {
         .lines()
         .find(|l| l.contains("stroke=\"#000000\" stroke-width=\"1.8\""))
         .expect("the max line");
-    assert!(line.starts_with("<path d=\"M") && line.matches('M').count() == 2, "{line}");
+    assert!(
+        line.starts_with("<path d=\"M") && line.matches('M').count() == 2,
+        "{line}"
+    );
     assert_eq!((at.len(), above.len()), (1, 1));
     assert_eq!(at[0][0], 0.6);
     // The paper's type reduction jumps at h: averaging three cut ends (the

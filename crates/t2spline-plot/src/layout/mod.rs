@@ -15,12 +15,12 @@ mod texts;
 
 pub use axes::{with_ranges, AxisLayout};
 pub use legend::{LegendLayout, LEGEND_ROW, LEGEND_SWATCH};
-pub use texts::{label_room, wrap, FixedLabels};
+pub use texts::{wrap, FixedLabels};
 
 use crate::font::{cap_height, line_height};
 use crate::geometry::{Px, Rect};
 use crate::obstacles::{add_panel, Obstacles};
-use crate::scene::{Figure, Xy};
+use crate::scene::{Figure, Priority, Xy};
 use crate::style::font_size;
 use axes::{data_ranges, label_width, placed};
 use legend::LegendSize;
@@ -266,12 +266,12 @@ fn probe_obstacles(panels: &[PanelLayout], probes: &[&Figure]) -> Vec<Obstacles>
 }
 
 /// The legend, sized for every figure's, inside a panel where it covers
-/// neither drawing nor an annotation's surroundings, else below the panels.
+/// none of `taken` (drawing, annotations and their rooms), else below the
+/// panels.
 fn place_legend(
     figures: &[&Figure],
-    probes: &[&Figure],
     panels: &[PanelLayout],
-    obstacles: &[Obstacles],
+    taken: &[Obstacles],
     width: f64,
     below_top: f64,
 ) -> Option<LegendLayout> {
@@ -279,24 +279,94 @@ fn place_legend(
     if size.count == 0 {
         return None;
     }
-    let room: Vec<Obstacles> = panels
-        .iter()
-        .enumerate()
-        .map(|(i, pl)| {
-            let mut o = Obstacles::new(pl.plot);
-            o.extend(&obstacles[i]);
-            for f in probes {
-                for r in label_room(&f.panels[i], &with_ranges(pl, &f.panels[i])) {
-                    o.add_rect(r);
-                }
-            }
-            o
-        })
-        .collect();
     Some(
-        legend::inside(size, panels, &room)
+        legend::inside(size, panels, taken)
             .unwrap_or_else(|| legend::below(size, width, below_top)),
     )
+}
+
+/// The texts that are the same in every figure, placed once: annotations
+/// first, then (in `names`, after the legend is placed) names where free.
+struct Texts {
+    fixed: Vec<Vec<bool>>,
+    placed: Vec<FixedLabels>,
+    /// What is drawn and the annotations placed, per panel.
+    taken: Vec<Obstacles>,
+}
+
+impl Texts {
+    /// The annotations of every panel, placed against the probes' drawings
+    /// and the rooms of the annotations that change from figure to figure.
+    fn annotations(
+        figures: &[&Figure],
+        probes: &[&Figure],
+        panels: &[PanelLayout],
+        drawn: Vec<Obstacles>,
+    ) -> Texts {
+        let mut out = Texts {
+            fixed: Vec::new(),
+            placed: Vec::new(),
+            taken: drawn,
+        };
+        for (i, pl) in panels.iter().enumerate() {
+            let fixed = texts::fixed_items(figures, i);
+            for r in texts::changing_rooms(probes, i, pl, &fixed) {
+                out.taken[i].add_rect(r);
+            }
+            let placed = texts::place_fixed(
+                &figures[0].panels[i],
+                pl,
+                &fixed,
+                Priority::Always,
+                &out.taken[i],
+                &[],
+            );
+            for p in placed.iter().flatten().flatten() {
+                out.taken[i].add_rect(p.rect.grow(1.0));
+            }
+            out.fixed.push(fixed);
+            out.placed.push(placed);
+        }
+        out
+    }
+
+    /// The names of every panel, where they cover nothing placed so far and
+    /// not the legend; then every fixed text's placement.
+    fn names(
+        mut self,
+        figures: &[&Figure],
+        panels: &[PanelLayout],
+        legend: Option<&LegendLayout>,
+    ) -> Vec<FixedLabels> {
+        for (i, pl) in panels.iter().enumerate() {
+            let mut forbidden: Vec<Rect> = legend
+                .filter(|l| l.panel == Some(i))
+                .map(|l| l.rect.grow(2.0))
+                .into_iter()
+                .collect();
+            forbidden.extend(
+                self.placed[i]
+                    .iter()
+                    .flatten()
+                    .flatten()
+                    .map(|p| p.rect.grow(1.0)),
+            );
+            let names = texts::place_fixed(
+                &figures[0].panels[i],
+                pl,
+                &self.fixed[i],
+                Priority::IfRoom,
+                &self.taken[i],
+                &forbidden,
+            );
+            for (a, n) in self.placed[i].iter_mut().zip(names) {
+                if a.is_none() {
+                    *a = n;
+                }
+            }
+        }
+        self.placed
+    }
 }
 
 /// Lays out figures that share one structure (same panels, items and
@@ -335,16 +405,14 @@ pub fn fit_probed(figures: &[&Figure], probes: &[usize]) -> Layout {
         })
     });
     let probe_figs: Vec<&Figure> = probes.iter().map(|&k| figures[k]).collect();
-    let obstacles = probe_obstacles(&panels, &probe_figs);
-    let below_top = plot_bottom + page.bottom_margin;
-    let legend = place_legend(
+    let texts = Texts::annotations(
         figures,
         &probe_figs,
         &panels,
-        &obstacles,
-        page.width,
-        below_top,
+        probe_obstacles(&panels, &probe_figs),
     );
+    let below_top = plot_bottom + page.bottom_margin;
+    let legend = place_legend(figures, &panels, &texts.taken, page.width, below_top);
     let mut height = match &legend {
         Some(l) if l.panel.is_none() => l.rect.bottom() + PAD,
         _ => below_top + PAD,
@@ -354,13 +422,7 @@ pub fn fit_probed(figures: &[&Figure], probes: &[usize]) -> Layout {
     if notes > 0 {
         height = notes_top + notes as f64 * NOTE_ROW + PAD;
     }
-    let labels = panels
-        .iter()
-        .enumerate()
-        .map(|(i, pl)| {
-            texts::fixed_labels(figures, &probe_figs, i, pl, &obstacles[i], legend.as_ref())
-        })
-        .collect();
+    let labels = texts.names(figures, &panels, legend.as_ref());
     Layout {
         width: page.width,
         // Whole pixels, so the PNG is exactly `PNG_SCALE` times the SVG.
