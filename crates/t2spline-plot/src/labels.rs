@@ -2,12 +2,14 @@
 //! around its anchor, nearest first, and takes the first that covers nothing
 //! drawn; far positions get a leader line.
 //!
-//! Labels of [`Priority::Always`] (annotations) are placed first; when no
-//! position is free they take the one covering the fewest things, but never
-//! another text or the legend. Labels of [`Priority::IfRoom`] (point names)
-//! are placed only where they cover nothing and stay near their anchor, and
-//! are left out otherwise, so that a dense figure shows fewer names rather
-//! than a heap of them.
+//! A position is free when its box covers nothing drawn and its leader cuts
+//! through nothing; failing that, a box on a filled area alone will do (a
+//! text with a white halo reads well on a pale band). Labels of
+//! [`Priority::Always`] (annotations) are placed first; when no position is
+//! free they take the one covering the fewest things, but never another text
+//! or the legend. Labels of [`Priority::IfRoom`] (point names) are placed
+//! only where free and near their anchor, and are left out otherwise, so that
+//! a dense figure shows fewer names rather than a heap of them.
 //!
 //! Every label tests at most 64 boxes (8 distances × 8 directions) against
 //! the indexed [`Obstacles`], so placing `n` labels costs `O(n)` bounded
@@ -105,7 +107,7 @@ fn candidates(mark: &Mark, pl: &PanelLayout) -> Option<(Vec<Candidate>, Priority
         } => {
             let radii = match priority {
                 Priority::Always => &RADII[..],
-                Priority::IfRoom => &RADII[..3],
+                Priority::IfRoom => &RADII[..4],
             };
             Some((around(pl.to_px(*anchor), text, radii), *priority))
         }
@@ -145,19 +147,25 @@ pub fn place(
                 .into_iter()
                 .filter(|(r, _)| plot.contains_rect(r) && !texts.overlaps_rect(r))
                 .collect();
-            // Free: the box covers nothing, and its leader (from a few
-            // pixels off the anchor) cuts through nothing either.
+            // Free: the box covers nothing, and its leader cuts through
+            // nothing either, past the anchor's own marker (at most 8 px).
             let clear = |leader: &Option<[Px; 2]>| {
                 leader.is_none_or(|[a, b]| {
                     let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
                     let len = dx.hypot(dy).max(1e-9);
-                    let start = [a[0] + dx / len * 3.0, a[1] + dy / len * 3.0];
-                    len <= 3.0 || !taken.crosses(start, b)
+                    let start = [a[0] + dx / len * 5.0, a[1] + dy / len * 5.0];
+                    len <= 5.0 || !taken.crosses(start, b)
                 })
             };
+            // Best on nothing at all, else on a filled area only.
             let free = inside
                 .iter()
-                .find(|(r, leader)| taken.is_free(r) && clear(leader));
+                .find(|(r, leader)| taken.is_free(r) && clear(leader))
+                .or_else(|| {
+                    inside
+                        .iter()
+                        .find(|(r, leader)| taken.is_clear(r) && clear(leader))
+                });
             let best = match priority {
                 Priority::IfRoom => free,
                 Priority::Always => free.or_else(|| {

@@ -285,6 +285,13 @@ impl Obstacles {
         })
     }
 
+    /// Whether `r` covers no line and no box; it may lie on a filled area
+    /// (a text with a halo reads well on a pale band).
+    #[must_use]
+    pub fn is_clear(&self, r: &Rect) -> bool {
+        !self.near(r).iter().any(|&id| self.meets(id, r))
+    }
+
     /// Whether `r` overlaps one of the boxes (texts, markers, legend).
     #[must_use]
     pub fn overlaps_rect(&self, r: &Rect) -> bool {

@@ -252,6 +252,20 @@ fn curves_have_equal_aspect_and_legends_and_labels_cover_no_data() {
 }
 
 #[test]
+fn every_point_of_a_small_job_is_named() {
+    for fig in figures("examples/paper-alg-1-1.json", 0.8, NumberChoice::default())[1..4].iter() {
+        let l = fit_layout(&[fig]);
+        let named = fig.panels[0]
+            .items
+            .iter()
+            .zip(&l.labels[0])
+            .filter(|(it, p)| it.key.starts_with("name-") && matches!(p, Some(Some(_))))
+            .count();
+        assert_eq!(named, 4, "{}: names placed", fig.name);
+    }
+}
+
+#[test]
 fn jobs_of_40_to_1000_points_stay_readable() {
     for (n, dim) in [(40, 2), (200, 2), (200, 3), (1000, 2)] {
         let job = many(n, dim);

@@ -32,6 +32,9 @@ use crate::ticks::short;
 
 const AXIS_NAMES: [&str; 3] = ["x", "y", "z"];
 
+/// Jobs of up to this many control points name every one of them.
+const FEW_POINTS: usize = 12;
+
 /// A pair of coordinates drawn in one panel: `(x, y)` in 2-D, each of the
 /// three pairs in 3-D.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -296,6 +299,13 @@ pub fn names(
     if density.name_stride > 1 && ij != (0, 1) {
         return;
     }
+    // A job of a few points is read by its names (the paper's P₀ … P₃): each
+    // is shown, where it covers least; beyond, names only where there is room.
+    let priority = if density.count <= FEW_POINTS {
+        Priority::Always
+    } else {
+        Priority::IfRoom
+    };
     for (k, xy) in project(points, ij).into_iter().enumerate() {
         if density.named(k) {
             p.push(
@@ -303,7 +313,7 @@ pub fn names(
                 Mark::Label {
                     anchor: xy,
                     text: text(k),
-                    priority: Priority::IfRoom,
+                    priority,
                 },
             );
         }
