@@ -95,6 +95,31 @@ pub enum AxisArg {
     Z,
 }
 
+/// Scaling of curve panels for `--aspect`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+pub enum AspectArg {
+    /// One unit has the same length on both axes (shapes are true).
+    Equal,
+    /// Each axis fitted to its data (for elongated data).
+    Auto,
+}
+
+/// What the figures show, shared by `plot` and `report`.
+#[derive(Debug, Args)]
+pub struct FigureArgs {
+    /// The control point whose fuzzy number the `number` figure shows (from 0).
+    #[arg(long, value_name = "I", default_value_t = 0)]
+    pub point: usize,
+    /// The coordinate whose fuzzy number the `number` figure shows.
+    #[arg(long, value_enum, default_value_t = AxisArg::X)]
+    pub axis: AxisArg,
+    /// How curve panels are scaled: `equal` keeps one unit the same length on
+    /// both axes; `auto` fits each axis to its data, for elongated curves
+    /// whose spreads would otherwise not show.
+    #[arg(long, value_enum, default_value_t = AspectArg::Equal)]
+    pub aspect: AspectArg,
+}
+
 /// Arguments of `t2spline plot`.
 #[derive(Debug, Args)]
 pub struct PlotArgs {
@@ -106,12 +131,8 @@ pub struct PlotArgs {
     /// Which files to write per figure.
     #[arg(long, value_enum, default_value_t = FormatArg::Both)]
     pub format: FormatArg,
-    /// The control point whose fuzzy number the `number` figure shows (from 0).
-    #[arg(long, value_name = "I", default_value_t = 0)]
-    pub point: usize,
-    /// The coordinate whose fuzzy number the `number` figure shows.
-    #[arg(long, value_enum, default_value_t = AxisArg::X)]
-    pub axis: AxisArg,
+    #[command(flatten)]
+    pub figures: FigureArgs,
     /// The level alpha in [0, 1]; overrides the job file.
     #[arg(long, value_name = "A", allow_negative_numbers = true)]
     pub alpha: Option<f64>,
@@ -129,6 +150,8 @@ pub struct ReportArgs {
     /// job's alpha, else 0.5).
     #[arg(long, value_name = "A", allow_negative_numbers = true)]
     pub alpha: Option<f64>,
+    #[command(flatten)]
+    pub figures: FigureArgs,
 }
 
 /// Arguments of `t2spline fit`.

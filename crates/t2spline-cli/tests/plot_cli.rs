@@ -13,13 +13,26 @@ fn t2spline() -> Command {
     Command::cargo_bin("t2spline").unwrap()
 }
 
-const NAMES: [&str; 6] = [
+/// `t2spline SUB EXAMPLE -o DIR`, to add options to.
+fn on_example(sub: &str, dir: &Path) -> Command {
+    let mut c = t2spline();
+    c.args([
+        sub,
+        example().to_str().unwrap(),
+        "-o",
+        dir.to_str().unwrap(),
+    ]);
+    c
+}
+
+const NAMES: [&str; 7] = [
     "number",
     "stage1-fuzzy",
     "stage2-alpha-cut",
     "stage3-type-reduced",
     "stage4-defuzzified",
     "alpha-sweep",
+    "distance-alpha",
 ];
 
 #[test]
@@ -48,7 +61,7 @@ fn plot_writes_every_figure_in_both_formats_by_default() {
     }
     assert_eq!(
         std::fs::read_dir(&out).unwrap().count(),
-        12,
+        14,
         "no stray files"
     );
 }
@@ -68,13 +81,53 @@ fn plot_svg_only_and_a_chosen_number() {
         ])
         .assert()
         .success();
-    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 6);
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 7);
     let number = std::fs::read_to_string(dir.path().join("number.svg")).unwrap();
     assert!(
         number.contains("coordinate y of control point 3"),
         "{number}"
     );
     assert!(number.contains("α = 0.3"));
+}
+
+#[test]
+fn aspect_auto_fits_each_axis_and_notes_it() {
+    let dir = tempfile::tempdir().unwrap();
+    for aspect in ["equal", "auto"] {
+        let out = dir.path().join(aspect);
+        on_example("plot", &out)
+            .args(["--format", "svg", "--aspect", aspect])
+            .assert()
+            .success();
+        let stage1 = std::fs::read_to_string(out.join("stage1-fuzzy.svg")).unwrap();
+        assert_eq!(
+            stage1.contains("Axes not to scale"),
+            aspect == "auto",
+            "{aspect}"
+        );
+    }
+    on_example("plot", dir.path())
+        .args(["--aspect", "wide"])
+        .assert()
+        .code(2)
+        .stderr(contains("--aspect"));
+}
+
+#[test]
+fn report_accepts_the_figure_options() {
+    let dir = tempfile::tempdir().unwrap();
+    on_example("report", dir.path())
+        .args(["--point", "3", "--axis", "y", "--aspect", "auto"])
+        .assert()
+        .success();
+    let html = std::fs::read_to_string(dir.path().join("report.html")).unwrap();
+    assert!(html.contains("coordinate y of control point 3"));
+    assert!(html.contains("Axes not to scale"));
+    on_example("report", dir.path())
+        .args(["--point", "9"])
+        .assert()
+        .code(2)
+        .stderr(contains("--point: point 9 does not exist"));
 }
 
 #[test]
@@ -147,5 +200,5 @@ fn report_is_one_self_contained_file() {
         html.contains("&quot;order&quot;: 3"),
         "the job itself is shown"
     );
-    assert!(html.len() < 2_500_000, "report size {}", html.len());
+    assert!(html.len() < 4_000_000, "report size {}", html.len());
 }

@@ -1,5 +1,5 @@
-//! Pixel geometry for layout: rectangles, and what a rectangle would cover
-//! (curve segments, markers, filled areas, other texts).
+//! Pixel geometry for layout: points and rectangles, and whether a segment
+//! meets a rectangle.
 
 /// A point in pixels, y downwards.
 pub type Px = [f64; 2];
@@ -106,73 +106,6 @@ impl Rect {
     }
 }
 
-/// Whether `p` lies inside the polygon (even-odd rule).
-#[must_use]
-pub fn in_polygon(p: Px, poly: &[Px]) -> bool {
-    let mut inside = false;
-    let mut j = poly.len().wrapping_sub(1);
-    for i in 0..poly.len() {
-        let (a, b) = (poly[i], poly[j]);
-        if (a[1] > p[1]) != (b[1] > p[1])
-            && p[0] < (b[0] - a[0]) * (p[1] - a[1]) / (b[1] - a[1]) + a[0]
-        {
-            inside = !inside;
-        }
-        j = i;
-    }
-    inside
-}
-
-/// Everything drawn in a panel that a text or legend must not cover, in pixels.
-#[derive(Clone, Debug, Default)]
-pub struct Obstacles {
-    /// Line segments (curves, rules, bars).
-    pub segments: Vec<[Px; 2]>,
-    /// Boxes (markers, texts, the legend).
-    pub rects: Vec<Rect>,
-    /// Filled polygons.
-    pub areas: Vec<Vec<Px>>,
-}
-
-impl Obstacles {
-    /// How many obstacles `r` covers (0 means free).
-    #[must_use]
-    pub fn hits(&self, r: &Rect) -> usize {
-        let segs = self
-            .segments
-            .iter()
-            .filter(|s| r.meets_segment(s[0], s[1]))
-            .count();
-        let rects = self.rects.iter().filter(|o| o.overlaps(r)).count();
-        let areas = self
-            .areas
-            .iter()
-            .filter(|poly| {
-                let corners = [
-                    [r.x, r.y],
-                    [r.right(), r.y],
-                    [r.x, r.bottom()],
-                    [r.right(), r.bottom()],
-                ];
-                corners.iter().any(|&c| in_polygon(c, poly)) || poly.iter().any(|&v| r.contains(v))
-            })
-            .count();
-        segs + rects + areas
-    }
-
-    /// Adds a polyline as its segments.
-    pub fn add_polyline(&mut self, pts: &[Px]) {
-        self.segments.extend(pts.windows(2).map(|w| [w[0], w[1]]));
-    }
-
-    /// Adds everything of `other`.
-    pub fn extend(&mut self, other: &Obstacles) {
-        self.segments.extend_from_slice(&other.segments);
-        self.rects.extend_from_slice(&other.rects);
-        self.areas.extend(other.areas.iter().cloned());
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -191,16 +124,5 @@ mod tests {
         assert!(!R.meets_segment([0.0, 0.0], [30.0, 5.0]));
         assert!(!R.meets_segment([0.0, 0.0], [9.0, 30.0]));
         assert!(R.meets_segment([0.0, 30.0], [30.0, 0.0]));
-    }
-
-    #[test]
-    fn areas_count_when_the_box_is_inside_or_holds_a_vertex() {
-        let mut o = Obstacles::default();
-        o.areas
-            .push(vec![[0.0, 0.0], [100.0, 0.0], [100.0, 100.0], [0.0, 100.0]]);
-        assert_eq!(o.hits(&R), 1);
-        let far = Rect { x: 200.0, ..R };
-        assert_eq!(o.hits(&far), 0);
-        assert!(in_polygon([5.0, 5.0], &o.areas[0]));
     }
 }

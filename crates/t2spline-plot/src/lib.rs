@@ -1,21 +1,28 @@
 //! # t2spline-plot — figures and reports for t2spline
 //!
 //! Publication figures of every stage of the method (the paper's Figs. 3.1,
-//! 4.1–4.4 and 5.1–5.4, and an alpha sweep) as SVG and PNG, and a
-//! self-contained HTML report with an alpha slider.
+//! 4.1–4.4 and 5.1–5.4, the distance along the curve for several alphas and
+//! against alpha) as SVG and PNG, and a self-contained HTML report with an
+//! alpha slider and downloads.
 //!
-//! - [`figures`]: one builder per figure, from a
-//!   [`RunOutput`](t2spline::job::RunOutput) computed in [`data`] by the core's
-//!   one run path (the only place numbers come from).
-//! - [`scene`] → [`layout`] → [`svg`]: figures in data coordinates, placed on a
-//!   page (equal aspect for curves, legends where they cover nothing, labels
-//!   that avoid each other), written as deterministic SVG text.
-//! - [`png`] (feature `png`, default): the same SVG rasterised with resvg and
-//!   the bundled DejaVu Sans font.
-//! - [`report`]: one HTML file with the figures, tables and the job.
+//! - [`all_figures`]: every figure of a job at one alpha, built in data
+//!   coordinates ([`Figure`]: panels of keyed [`Mark`]s, a legend, notes) from
+//!   numbers the core computes (`Job::run`, its sampling engine and distance;
+//!   plotting never recomputes the method).
+//! - [`fit_layout`] → [`render_svg`]: figures placed on a page (equal aspect
+//!   for curves unless [`Aspect::Auto`], legends and labels where they cover
+//!   nothing, per-point detail thinned for jobs of many points), written as
+//!   deterministic SVG text; [`svg_to_png`] (feature `png`, default) rasterises
+//!   the same SVG with resvg and the bundled DejaVu Sans font, at 300 dpi.
+//! - [`render_report`]: one HTML file with the figures, tables, downloads and
+//!   the job.
+//!
+//! Curve figures are one family (`figures/curve/`); the layout, legend, colour
+//! bar, labels and SVG/PNG output know nothing of curves, so other families
+//! of figures can use them as they are.
 //!
 //! ```
-//! use t2spline_plot::{all_figures, NumberChoice};
+//! use t2spline_plot::{all_figures, FigureOptions};
 //! let job = t2spline_io::parse_job(r#"{
 //!   "order": 2, "alpha": 0.5, "lower_height": 0.6,
 //!   "points": [
@@ -25,29 +32,50 @@
 //!      "y": {"crisp": 1, "upper": [0, 3], "primary": [0.5, 2], "lower": [0.8, 1.5]}}
 //!   ]}"#, "job.json")?;
 //! let alpha = job.alpha.expect("the file gives alpha");
-//! let figures = all_figures(&job, alpha, NumberChoice::default())?;
-//! assert_eq!(figures.len(), 6);
-//! let svg = t2spline_plot::svg::render(&figures[1]);
+//! let figures = all_figures(&job, alpha, &FigureOptions::default())?;
+//! assert_eq!(figures.len(), 7);
+//! let svg = t2spline_plot::render_svg(&figures[1]);
 //! assert!(svg.contains("Stage 1"));
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-pub mod data;
+mod data;
 mod error;
-pub mod figures;
-pub mod font;
-pub mod geometry;
-pub mod labels;
-pub mod layout;
+mod figures;
+mod font;
+mod geometry;
+mod labels;
+mod layout;
+mod obstacles;
 mod output;
 #[cfg(feature = "png")]
-pub mod png;
-pub mod report;
-pub mod scene;
-pub mod style;
-pub mod svg;
-pub mod ticks;
+mod png;
+mod report;
+mod scene;
+mod simplify;
+mod style;
+mod svg;
+mod ticks;
 
 pub use error::Error;
-pub use figures::{all_figures, NumberChoice, FIGURE_NAMES};
+pub use figures::{all_figures, Aspect, FigureOptions, NumberChoice, FIGURE_NAMES};
+pub use geometry::{Px, Rect};
+pub use labels::{place as place_labels, Placed};
+pub use layout::{fit as fit_layout, AxisLayout, Layout, LegendLayout, PanelLayout};
+pub use obstacles::{panel_obstacles, Obstacles};
 pub use output::{render_files, Format};
+#[cfg(feature = "png")]
+pub use png::{svg_to_png, Pixmap, PNG_DPI, PNG_SCALE};
+pub use report::{render as render_report, Stops, DATA_BUDGET};
+pub use scene::{ColorBar, Figure, Item, LegendEntry, Mark, Panel, Priority, Xy};
+pub use simplify::simplify;
+pub use style::{viridis, Color, Fill, Marker, Shape, Stroke};
+pub use svg::render as render_svg;
+
+/// The colours of the figures: the Okabe–Ito palette, distinguishable with
+/// the common colour-vision deficiencies, and greys.
+pub mod palette {
+    pub use crate::style::{
+        BLACK, BLUE, GREEN, GREY, GRID, INK, MUTED, ORANGE, PURPLE, SKY, VERMILLION, WHITE,
+    };
+}

@@ -16,12 +16,37 @@ pub struct Figure {
     pub title: String,
     /// One line under the title (parameters such as alpha and h).
     pub subtitle: String,
-    /// Panels, drawn left to right.
+    /// Panels, drawn left to right (in rows of two when there are four).
     pub panels: Vec<Panel>,
     /// Legend entries, in order.
     pub legend: Vec<LegendEntry>,
     /// A colour bar to the right of the panels.
     pub colorbar: Option<ColorBar>,
+    /// Lines of small print under the figure: what was left out or thinned
+    /// to keep it readable, and why.
+    pub notes: Vec<String>,
+}
+
+impl Figure {
+    /// A figure without colour bar or notes.
+    #[must_use]
+    pub fn new(
+        name: &'static str,
+        title: impl Into<String>,
+        subtitle: impl Into<String>,
+        panels: Vec<Panel>,
+        legend: Vec<LegendEntry>,
+    ) -> Figure {
+        Figure {
+            name,
+            title: title.into(),
+            subtitle: subtitle.into(),
+            panels,
+            legend,
+            colorbar: None,
+            notes: Vec::new(),
+        }
+    }
 }
 
 /// One set of axes.
@@ -48,10 +73,19 @@ impl Panel {
     #[must_use]
     pub fn curves(x_label: &str, y_label: &str) -> Panel {
         Panel {
+            equal_aspect: true,
+            ..Panel::graph(x_label, y_label)
+        }
+    }
+
+    /// A panel for a graph of a function: each axis fitted to its data.
+    #[must_use]
+    pub fn graph(x_label: &str, y_label: &str) -> Panel {
+        Panel {
             title: None,
             x_label: x_label.to_owned(),
             y_label: y_label.to_owned(),
-            equal_aspect: true,
+            equal_aspect: false,
             x_range: None,
             y_range: None,
             items: Vec::new(),
@@ -117,16 +151,38 @@ pub enum Mark {
         /// Text at the right end, above the line.
         label: String,
     },
-    /// A text placed near `anchor`, where it covers the least; far placements
-    /// get a thin leader line.
+    /// A vertical line across the whole panel, labelled at its top.
+    VRule {
+        /// Position in data units.
+        x: f64,
+        /// How it is drawn.
+        stroke: Stroke,
+        /// Text beside the line, at the top.
+        label: String,
+    },
+    /// A text placed near `anchor` where it covers nothing ([`crate::labels`]);
+    /// far placements get a thin leader line.
     Label {
         /// The point the text is about.
         anchor: Xy,
         /// The text.
         text: String,
+        /// Whether it may be left out when there is no room.
+        priority: Priority,
     },
     /// Nothing (an item absent at this alpha, kept so keys stay aligned).
     Empty,
+}
+
+/// Whether a label must be shown.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Priority {
+    /// An annotation: placed where it covers least if no place is free, but
+    /// never on another text or the legend.
+    Always,
+    /// A name (of a control point): shown only where it covers nothing, near
+    /// its anchor; left out otherwise.
+    IfRoom,
 }
 
 /// One legend row: a sample of a line, an area and/or a marker, and a text.
@@ -159,6 +215,16 @@ impl LegendEntry {
     pub fn line_marker(label: &str, stroke: Stroke, marker: Marker) -> LegendEntry {
         LegendEntry {
             marker: Some(marker),
+            ..LegendEntry::line(label, stroke)
+        }
+    }
+
+    /// A line entry with a marker when there is one (a series whose points
+    /// may be left out for want of room).
+    #[must_use]
+    pub fn line_maybe_marker(label: &str, stroke: Stroke, marker: Option<Marker>) -> LegendEntry {
+        LegendEntry {
+            marker,
             ..LegendEntry::line(label, stroke)
         }
     }

@@ -23,6 +23,8 @@ pub const BLACK: Color = Color(0x00, 0x00, 0x00);
 pub const INK: Color = Color(0x22, 0x22, 0x22);
 /// Mid grey: control polygons and reference lines.
 pub const GREY: Color = Color(0x80, 0x80, 0x80);
+/// Muted grey: notes.
+pub const MUTED: Color = Color(0x55, 0x55, 0x55);
 /// Light grey: grid lines.
 pub const GRID: Color = Color(0xe4, 0xe4, 0xe4);
 /// White: backgrounds, open markers and text halos.
@@ -35,7 +37,7 @@ pub const GREEN: Color = Color(0x00, 0x9e, 0x73);
 pub const VERMILLION: Color = Color(0xd5, 0x5e, 0x00);
 /// Okabe–Ito reddish purple: type-reduced values.
 pub const PURPLE: Color = Color(0xcc, 0x79, 0xa7);
-/// Okabe–Ito orange: the defuzzified (solution) values.
+/// Okabe–Ito orange: the type-reduced right values.
 pub const ORANGE: Color = Color(0xe6, 0x9f, 0x00);
 /// Okabe–Ito sky blue.
 pub const SKY: Color = Color(0x56, 0xb4, 0xe9);
@@ -148,6 +150,8 @@ pub mod font_size {
     pub const LEGEND: f64 = 11.0;
     /// Labels placed on the data.
     pub const LABEL: f64 = 10.5;
+    /// Notes under the figure.
+    pub const NOTE: f64 = 10.0;
 }
 
 /// Viridis at `s` in `[0, 1]` (matplotlib's colour map, nine stops, linear in

@@ -3,13 +3,6 @@
 
 /// Tick values covering `[lo, hi]` with about `target` intervals, each a
 /// multiple of a nice step, and the step.
-///
-/// # Examples
-/// ```
-/// let (ticks, step) = t2spline_plot::ticks::nice_ticks(0.13, 6.9, 7);
-/// assert_eq!(step, 1.0);
-/// assert_eq!(ticks, [1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
-/// ```
 #[must_use]
 pub fn nice_ticks(lo: f64, hi: f64, target: usize) -> (Vec<f64>, f64) {
     let span = hi - lo;
@@ -59,14 +52,6 @@ pub fn tick_label(value: f64, decimals: usize) -> String {
 
 /// A coordinate for an SVG file: two decimals, trailing zeros dropped, no `-0`,
 /// so that files are stable text.
-///
-/// # Examples
-/// ```
-/// use t2spline_plot::ticks::coord;
-/// assert_eq!(coord(12.3456), "12.35");
-/// assert_eq!(coord(3.0), "3");
-/// assert_eq!(coord(-0.001), "0");
-/// ```
 #[must_use]
 pub fn coord(v: f64) -> String {
     let s = format!("{v:.2}");
@@ -78,10 +63,10 @@ pub fn coord(v: f64) -> String {
     }
 }
 
-/// A number for a label in a figure: at most `digits` significant decimals after
-/// trimming, e.g. `0.0448`, `6`, `0.6`.
+/// `v` with at most `digits` significant decimals after trimming trailing
+/// zeros, in fixed notation with an ASCII minus: `0.0448`, `6`, `-0.6`.
 #[must_use]
-pub fn short(v: f64, digits: usize) -> String {
+pub fn significant(v: f64, digits: usize) -> String {
     if v == 0.0 || !v.is_finite() {
         return if v.is_finite() {
             "0".into()
@@ -92,12 +77,18 @@ pub fn short(v: f64, digits: usize) -> String {
     let mag = v.abs().log10().floor() as i32;
     let decimals = (digits as i32 - 1 - mag).max(0) as usize;
     let s = format!("{v:.decimals$}");
-    let s = if s.contains('.') {
+    if s.contains('.') {
         s.trim_end_matches('0').trim_end_matches('.').to_owned()
     } else {
         s
-    };
-    s.replace('-', "−")
+    }
+}
+
+/// A number for a label in a figure: [`significant`] with a true minus
+/// sign, e.g. `0.0448`, `6`, `−0.6`.
+#[must_use]
+pub fn short(v: f64, digits: usize) -> String {
+    significant(v, digits).replace('-', "−")
 }
 
 #[cfg(test)]
@@ -106,6 +97,9 @@ mod tests {
 
     #[test]
     fn ticks_cover_the_range_with_nice_steps() {
+        let (t, s) = nice_ticks(0.13, 6.9, 7);
+        assert_eq!(s, 1.0);
+        assert_eq!(t, [1.0, 2.0, 3.0, 4.0, 5.0, 6.0]);
         let (t, s) = nice_ticks(-0.04, 1.04, 5);
         assert_eq!(s, 0.25);
         assert_eq!(t, [0.0, 0.25, 0.5, 0.75, 1.0]);
@@ -125,6 +119,8 @@ mod tests {
         assert_eq!(short(6.0, 3), "6");
         assert_eq!(short(-2.345_67, 3), "−2.35");
         assert_eq!(coord(-0.004), "0");
+        assert_eq!(coord(12.3456), "12.35");
+        assert_eq!(coord(3.0), "3");
         assert_eq!(coord(10.10), "10.1");
     }
 }

@@ -1,36 +1,35 @@
-//! `t2spline plot JOB.json -o DIR [--format svg|png|both] [--point I --axis x|y|z] [--alpha A]`.
+//! `t2spline plot JOB.json -o DIR [--format svg|png|both] [--point I --axis x|y|z]
+//! [--aspect equal|auto] [--alpha A]`.
 
 use t2spline::job::Overrides;
 use t2spline::Axis;
-use t2spline_plot::{all_figures, render_files, Format, NumberChoice};
+use t2spline_plot::{all_figures, render_files, Aspect, FigureOptions, Format, NumberChoice};
 
 use super::settings::{settings, OptionError};
-use crate::cli::{AxisArg, FormatArg, PlotArgs};
+use crate::cli::{AspectArg, AxisArg, FigureArgs, FormatArg, PlotArgs};
 use crate::output::{read_job_text, Outputs};
 
-pub fn plot(args: &PlotArgs) -> anyhow::Result<()> {
-    let (job, text) = read_job_text(&args.job)?;
-    let overrides = Overrides {
-        alpha: args.alpha,
-        ..Overrides::default()
-    };
-    let alpha = settings(&job, &overrides, &args.job, &text)?.alpha;
-    let choice = NumberChoice {
-        point: args.point,
-        axis: match args.axis {
-            AxisArg::X => Axis::X,
-            AxisArg::Y => Axis::Y,
-            AxisArg::Z => Axis::Z,
+/// The figure options of `--point`, `--axis` and `--aspect`.
+pub fn figure_options(args: &FigureArgs) -> FigureOptions {
+    FigureOptions {
+        number: NumberChoice {
+            point: args.point,
+            axis: match args.axis {
+                AxisArg::X => Axis::X,
+                AxisArg::Y => Axis::Y,
+                AxisArg::Z => Axis::Z,
+            },
         },
-    };
-    let format = match args.format {
-        FormatArg::Svg => Format::Svg,
-        FormatArg::Png => Format::Png,
-        FormatArg::Both => Format::Both,
-    };
-    // Everything is rendered before anything is written, and written all or
-    // nothing; the paths written go to standard output.
-    let figures = all_figures(&job, alpha, choice).map_err(|e| match e {
+        aspect: match args.aspect {
+            AspectArg::Equal => Aspect::Equal,
+            AspectArg::Auto => Aspect::Auto,
+        },
+    }
+}
+
+/// A plotting error, naming the option that chose a point or axis the job lacks.
+pub fn about_number(e: t2spline_plot::Error) -> anyhow::Error {
+    match e {
         t2spline_plot::Error::NoSuchPoint { .. } => OptionError {
             option: "--point",
             message: e.to_string(),
@@ -42,7 +41,24 @@ pub fn plot(args: &PlotArgs) -> anyhow::Result<()> {
         }
         .into(),
         other => anyhow::Error::from(other),
-    })?;
+    }
+}
+
+pub fn plot(args: &PlotArgs) -> anyhow::Result<()> {
+    let (job, text) = read_job_text(&args.job)?;
+    let overrides = Overrides {
+        alpha: args.alpha,
+        ..Overrides::default()
+    };
+    let alpha = settings(&job, &overrides, &args.job, &text)?.alpha;
+    let format = match args.format {
+        FormatArg::Svg => Format::Svg,
+        FormatArg::Png => Format::Png,
+        FormatArg::Both => Format::Both,
+    };
+    // Everything is rendered before anything is written, and written all or
+    // nothing; the paths written go to standard output.
+    let figures = all_figures(&job, alpha, &figure_options(&args.figures)).map_err(about_number)?;
     let mut out = Outputs::default();
     let mut listing = String::new();
     for (name, bytes) in render_files(&figures, format)? {

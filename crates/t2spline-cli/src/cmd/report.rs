@@ -1,8 +1,10 @@
-//! `t2spline report JOB.json -o DIR [--alpha A]`: writes `DIR/report.html`.
+//! `t2spline report JOB.json -o DIR [--alpha A] [--point I --axis x|y|z]
+//! [--aspect equal|auto]`: writes `DIR/report.html`.
 
 use t2spline::job::Overrides;
 use t2spline::Alpha;
 
+use super::plot::{about_number, figure_options};
 use super::settings::about_option;
 use crate::cli::ReportArgs;
 use crate::output::{read_job_text, Outputs};
@@ -21,7 +23,8 @@ pub fn report(args: &ReportArgs) -> anyhow::Result<()> {
         Err(t2spline::Error::MissingAlpha) => Alpha::try_new(DEFAULT_START)?,
         Err(e) => return Err(about_option(e)),
     };
-    let html = t2spline_plot::report::render(&job, &text, start)?;
+    let html = t2spline_plot::render_report(&job, &text, start, &figure_options(&args.figures))
+        .map_err(about_number)?;
     let mut out = Outputs::default();
     out.in_dir(&args.output, "report.html", html.into_bytes());
     out.to(

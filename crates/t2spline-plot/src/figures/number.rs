@@ -3,40 +3,41 @@
 //! the type-reduced triangle with its centroid.
 
 use t2spline::job::Job;
-use t2spline::{Alpha, Axis};
+use t2spline::{Alpha, AlphaCut, Axis, Interval, Layer, Nt2Number, Tfn};
 
 use super::style::{layer_marker, layer_stroke, upper_band};
 use super::NumberChoice;
-use crate::scene::{Figure, LegendEntry, Mark, Panel};
+use crate::scene::{Figure, LegendEntry, Mark, Panel, Priority, Xy};
 use crate::style::{Marker, Shape, Stroke, GREY, INK, PURPLE};
 use crate::ticks::short;
 use crate::{data, Error};
-use t2spline::Layer;
 
-/// The `number` figure for one coordinate of one control point at `alpha`.
-///
-/// # Errors
-/// [`Error::NoSuchPoint`] or [`Error::NoSuchAxis`] if the job has no such
-/// point or coordinate.
-pub fn number_figure(job: &Job, alpha: Alpha, choice: NumberChoice) -> Result<Figure, Error> {
-    let x = data::number(&job.model, choice.point, choice.axis)?;
-    let cut = x.alpha_cut(alpha);
-    let tfn = cut.type_reduce();
-    let d = tfn.defuzzify();
-    let (a, h, c) = (alpha.get(), x.height().get(), x.crisp());
-    let (u, p, l) = (x.upper(), x.primary(), x.lower());
-    let triangle = |lo: f64, top: f64, hi: f64| vec![[lo, 0.0], [c, top], [hi, 0.0]];
-    let name = Axis::name(choice.axis);
-    let mut panel = Panel {
-        title: None,
-        x_label: name.to_owned(),
-        y_label: "membership grade".into(),
-        equal_aspect: false,
-        x_range: None,
-        y_range: Some([-0.07, 1.12]),
-        items: Vec::new(),
-    };
-    panel.push(
+/// The type-reduced triangle.
+fn tfn_stroke() -> Stroke {
+    Stroke::solid(PURPLE, 2.0)
+}
+
+/// The defuzzified value.
+fn centroid_marker() -> Marker {
+    Marker::filled(Shape::Diamond, 8.0, PURPLE)
+}
+
+/// The triangle with feet `lo`, `hi`, apex at `crisp` and height `top`.
+fn triangle(lo: f64, crisp: f64, top: f64, hi: f64) -> Vec<Xy> {
+    vec![[lo, 0.0], [crisp, top], [hi, 0.0]]
+}
+
+/// The footprint of uncertainty (between UMF and LMF) and the three
+/// membership functions.
+fn membership(p: &mut Panel, x: &Nt2Number) {
+    let (u, pr, l, c, h) = (
+        x.upper(),
+        x.primary(),
+        x.lower(),
+        x.crisp(),
+        x.height().get(),
+    );
+    p.push(
         "fou",
         Mark::Area {
             points: vec![
@@ -50,7 +51,25 @@ pub fn number_figure(job: &Job, alpha: Alpha, choice: NumberChoice) -> Result<Fi
             fill: upper_band(),
         },
     );
-    panel.push(
+    rules(p, h);
+    for (key, iv, top, layer) in [
+        ("umf", u, 1.0, Layer::UpperLeft),
+        ("primary", pr, 1.0, Layer::PrimaryLeft),
+        ("lmf", l, h, Layer::LowerLeft),
+    ] {
+        p.push(
+            key,
+            Mark::Line {
+                points: triangle(iv.left(), c, top, iv.right()),
+                stroke: layer_stroke(layer),
+            },
+        );
+    }
+}
+
+/// The height h as a horizontal rule (the level α is added by [`cut`]).
+fn rules(p: &mut Panel, h: f64) {
+    p.push(
         "h",
         Mark::HRule {
             y: h,
@@ -58,7 +77,12 @@ pub fn number_figure(job: &Job, alpha: Alpha, choice: NumberChoice) -> Result<Fi
             label: format!("h = {}", short(h, 4)),
         },
     );
-    panel.push(
+}
+
+/// The level α and the cut ends of each function on it (none of the LMF
+/// above its height).
+fn cut(p: &mut Panel, cut: &AlphaCut, a: f64) {
+    p.push(
         "alpha",
         Mark::HRule {
             y: a,
@@ -66,58 +90,34 @@ pub fn number_figure(job: &Job, alpha: Alpha, choice: NumberChoice) -> Result<Fi
             label: format!("α = {}", short(a, 4)),
         },
     );
-    panel.push(
-        "umf",
-        Mark::Line {
-            points: triangle(u.left(), 1.0, u.right()),
-            stroke: layer_stroke(Layer::UpperLeft),
-        },
-    );
-    panel.push(
-        "primary",
-        Mark::Line {
-            points: triangle(p.left(), 1.0, p.right()),
-            stroke: layer_stroke(Layer::PrimaryLeft),
-        },
-    );
-    panel.push(
-        "lmf",
-        Mark::Line {
-            points: triangle(l.left(), h, l.right()),
-            stroke: layer_stroke(Layer::LowerLeft),
-        },
-    );
-    let tfn_stroke = Stroke::solid(PURPLE, 2.0);
-    panel.push(
+    let ends = |iv: Interval| vec![[iv.left(), a], [iv.right(), a]];
+    for (key, iv, layer) in [
+        ("cut-upper", Some(cut.upper()), Layer::UpperLeft),
+        ("cut-primary", Some(cut.primary()), Layer::PrimaryLeft),
+        ("cut-lower", cut.lower(), Layer::LowerLeft),
+    ] {
+        p.push(
+            key,
+            iv.map_or(Mark::Empty, |iv| Mark::Markers {
+                points: ends(iv),
+                marker: layer_marker(layer),
+            }),
+        );
+    }
+}
+
+/// The type-reduced triangle and its centroid on the axis, with a drop line
+/// from the triangle.
+fn reduced(p: &mut Panel, tfn: &Tfn, c: f64) {
+    let d = tfn.defuzzify();
+    p.push(
         "tfn",
         Mark::Line {
-            points: triangle(tfn.left(), 1.0, tfn.right()),
-            stroke: tfn_stroke.clone(),
+            points: triangle(tfn.left(), c, 1.0, tfn.right()),
+            stroke: tfn_stroke(),
         },
     );
-    let ends = |iv: t2spline::Interval| vec![[iv.left(), a], [iv.right(), a]];
-    panel.push(
-        "cut-upper",
-        Mark::Markers {
-            points: ends(cut.upper()),
-            marker: layer_marker(Layer::UpperLeft),
-        },
-    );
-    panel.push(
-        "cut-primary",
-        Mark::Markers {
-            points: ends(cut.primary()),
-            marker: layer_marker(Layer::PrimaryLeft),
-        },
-    );
-    panel.push(
-        "cut-lower",
-        cut.lower().map_or(Mark::Empty, |iv| Mark::Markers {
-            points: ends(iv),
-            marker: layer_marker(Layer::LowerLeft),
-        }),
-    );
-    // The centroid on the axis, with a drop line from the triangle.
+    // The triangle's height above the centroid.
     let top = if d <= c {
         if c > tfn.left() {
             (d - tfn.left()) / (c - tfn.left())
@@ -129,36 +129,54 @@ pub fn number_figure(job: &Job, alpha: Alpha, choice: NumberChoice) -> Result<Fi
     } else {
         1.0
     };
-    panel.push(
+    p.push(
         "defuzzified-line",
         Mark::Segments {
             segments: vec![[[d, 0.0], [d, top]]],
             stroke: Stroke::dashed(PURPLE, 1.0, "3 2"),
         },
     );
-    let d_marker = Marker::filled(Shape::Diamond, 8.0, PURPLE);
-    panel.push(
+    p.push(
         "defuzzified",
         Mark::Markers {
             points: vec![[d, 0.0]],
-            marker: d_marker.clone(),
+            marker: centroid_marker(),
         },
     );
-    panel.push(
-        "defuzzified-text",
-        Mark::Label {
-            anchor: [d, 0.0],
-            text: format!("defuzzified {}", short(d, 4)),
-        },
-    );
-    panel.push(
-        "crisp-text",
-        Mark::Label {
-            anchor: [c, 1.0],
-            text: format!("crisp {}", short(c, 4)),
-        },
-    );
-    let legend = vec![
+    for (key, anchor, text) in [
+        (
+            "defuzzified-text",
+            [d, 0.0],
+            format!("defuzzified {}", short(d, 4)),
+        ),
+        ("crisp-text", [c, 1.0], format!("crisp {}", short(c, 4))),
+    ] {
+        p.push(
+            key,
+            Mark::Label {
+                anchor,
+                text,
+                priority: Priority::Always,
+            },
+        );
+    }
+}
+
+/// The legend of what is drawn (the LMF's cut ends only below its height).
+fn legend(lower_cut: bool) -> Vec<LegendEntry> {
+    let lmf = if lower_cut {
+        LegendEntry::line_marker(
+            "LMF (lower, height h) and its cut ends",
+            layer_stroke(Layer::LowerLeft),
+            layer_marker(Layer::LowerLeft),
+        )
+    } else {
+        LegendEntry::line(
+            "LMF (lower, height h): no cut above h",
+            layer_stroke(Layer::LowerLeft),
+        )
+    };
+    vec![
         LegendEntry::line_marker(
             "UMF (upper) and its cut ends",
             layer_stroke(Layer::UpperLeft),
@@ -169,35 +187,47 @@ pub fn number_figure(job: &Job, alpha: Alpha, choice: NumberChoice) -> Result<Fi
             layer_stroke(Layer::PrimaryLeft),
             layer_marker(Layer::PrimaryLeft),
         ),
-        LegendEntry::line_marker(
-            "LMF (lower, height h), cut ends",
-            layer_stroke(Layer::LowerLeft),
-            layer_marker(Layer::LowerLeft),
-        ),
+        lmf,
         LegendEntry::area("footprint of uncertainty", upper_band()),
-        LegendEntry::line("type-reduced triangle", tfn_stroke),
-        LegendEntry::marker("defuzzified value", d_marker),
-    ];
-    let regime = if a <= h {
+        LegendEntry::line("type-reduced triangle", tfn_stroke()),
+        LegendEntry::marker("defuzzified value", centroid_marker()),
+    ]
+}
+
+/// The `number` figure for one coordinate of one control point at `alpha`.
+///
+/// # Errors
+/// [`Error::NoSuchPoint`] or [`Error::NoSuchAxis`] if the job has no such
+/// point or coordinate.
+pub fn number_figure(job: &Job, alpha: Alpha, choice: NumberChoice) -> Result<Figure, Error> {
+    let x = data::number(&job.model, choice.point, choice.axis)?;
+    let c = x.alpha_cut(alpha);
+    let tfn = c.type_reduce();
+    let name = Axis::name(choice.axis);
+    let mut panel = Panel::graph(name, "membership grade");
+    panel.y_range = Some([-0.07, 1.12]);
+    membership(&mut panel, &x);
+    cut(&mut panel, &c, alpha.get());
+    reduced(&mut panel, &tfn, x.crisp());
+    let regime = if c.lower().is_some() {
         "α ≤ h: three cut ends averaged"
     } else {
         "α > h: no lower cut, two ends averaged"
     };
-    Ok(Figure {
-        name: "number",
-        title: format!(
+    Ok(Figure::new(
+        "number",
+        format!(
             "Fuzzy number: coordinate {name} of control point {}",
             choice.point
         ),
-        subtitle: format!(
+        format!(
             "{regime}; type-reduced ({}, {}, {}), defuzzified {}",
             short(tfn.left(), 4),
-            short(c, 4),
+            short(x.crisp(), 4),
             short(tfn.right(), 4),
-            short(d, 4)
+            short(tfn.defuzzify(), 4)
         ),
-        panels: vec![panel],
-        legend,
-        colorbar: None,
-    })
+        vec![panel],
+        legend(c.lower().is_some()),
+    ))
 }

@@ -2,7 +2,16 @@
 
 use t2spline::Layer;
 
-use crate::style::{Fill, Marker, Shape, Stroke, BLACK, BLUE, GREEN, GREY, PURPLE, VERMILLION};
+use crate::style::{
+    Fill, Marker, Shape, Stroke, BLACK, BLUE, GREEN, GREY, ORANGE, PURPLE, VERMILLION,
+};
+
+/// The layers of each function, for legends and bars: (left, right, name).
+pub const FUNCTIONS: [(Layer, Layer, &str); 3] = [
+    (Layer::UpperLeft, Layer::UpperRight, "upper"),
+    (Layer::PrimaryLeft, Layer::PrimaryRight, "primary"),
+    (Layer::LowerLeft, Layer::LowerRight, "lower"),
+];
 
 /// The line of a layer curve (left and right ends of one function look alike).
 #[must_use]
@@ -62,10 +71,29 @@ pub fn lower_band() -> Fill {
     }
 }
 
-/// Type-reduced curves.
+/// The type-reduced left curve: purple, long dashes.
 #[must_use]
-pub fn reduced_stroke() -> Stroke {
+pub fn left_stroke() -> Stroke {
     Stroke::dashed(PURPLE, 1.7, "8 3")
+}
+
+/// The type-reduced right curve: orange, short dashes, so that left and
+/// right differ in grey too.
+#[must_use]
+pub fn right_stroke() -> Stroke {
+    Stroke::dashed(ORANGE, 1.9, "2.5 2.5")
+}
+
+/// The type-reduced left control points.
+#[must_use]
+pub fn left_marker() -> Marker {
+    Marker::filled(Shape::Triangle, 7.5, PURPLE)
+}
+
+/// The type-reduced right control points.
+#[must_use]
+pub fn right_marker() -> Marker {
+    Marker::filled(Shape::Diamond, 8.0, ORANGE)
 }
 
 /// The band between the type-reduced curves.
@@ -87,4 +115,16 @@ pub fn solution_stroke() -> Stroke {
 #[must_use]
 pub fn solution_marker() -> Marker {
     Marker::open(Shape::Diamond, 8.0, BLUE)
+}
+
+/// The segment of the largest distance between the curves.
+#[must_use]
+pub fn distance_stroke() -> Stroke {
+    Stroke::solid(BLACK, 1.4)
+}
+
+/// The ends of the largest distance.
+#[must_use]
+pub fn distance_marker() -> Marker {
+    Marker::open(Shape::Circle, 4.0, BLACK)
 }

@@ -1,16 +1,17 @@
-//! A figure at every alpha of the slider as one SVG plus the parts that change:
-//! one layout is fitted to all of them (axes and legend stay put), each part
-//! that differs between alphas is stored once in a string table, and every
-//! alpha lists which string each changing part shows.
+//! A figure at every stop of the slider as one SVG plus the parts that change:
+//! one layout is fitted to all of them (axes, legend and unchanging labels
+//! stay put; a magnified panel takes each figure's own ranges), each part
+//! that differs between stops is stored once in a string table, and every
+//! stop lists which string each changing part shows.
 
 use serde_json::{json, Value};
 
-use crate::layout;
+use crate::layout::{self, Layout};
 use crate::scene::Figure;
 use crate::svg::{self, Part};
 
 /// Pixel tolerance of polylines in the report: half a screen pixel.
-const REPORT_TOLERANCE: f64 = 0.5;
+pub const REPORT_TOLERANCE: f64 = 0.5;
 
 /// Strings shared by every figure of a report, each stored once.
 #[derive(Debug, Default)]
@@ -47,20 +48,37 @@ pub struct Frames {
     pub data: Value,
 }
 
-/// Lays out `figures` (one per alpha, same structure) together and collects
-/// what changes. `initial` indexes the figure shown first.
+/// Lays out `figures` (one per stop, same structure) together, with the
+/// legend and the unchanging labels placed around the figures `probes`, and
+/// collects what changes. `initial` indexes the figure shown first.
 ///
 /// # Panics
 /// If `figures` is empty, or if two figures do not have the same parts (the
 /// builders guarantee they do).
 #[must_use]
-pub fn frames(figures: &[Figure], initial: usize, prefix: &str, strings: &mut Strings) -> Frames {
+pub fn frames(
+    figures: &[Figure],
+    initial: usize,
+    probes: &[usize],
+    prefix: &str,
+    strings: &mut Strings,
+) -> Frames {
     let refs: Vec<&Figure> = figures.iter().collect();
-    let mut layout = layout::fit(&refs);
+    let mut layout = layout::fit_probed(&refs, probes);
     layout.tolerance = REPORT_TOLERANCE;
+    let zoom = figures[0]
+        .panels
+        .iter()
+        .any(|p| p.x_range.is_some() && p.y_range.is_some());
+    let layouts: Vec<Layout> = if zoom {
+        figures.iter().map(|f| layout.for_figure(f)).collect()
+    } else {
+        Vec::new()
+    };
     let all: Vec<Vec<Part>> = figures
         .iter()
-        .map(|f| svg::parts(f, &layout, prefix))
+        .enumerate()
+        .map(|(k, f)| svg::parts(f, layouts.get(k).unwrap_or(&layout), prefix))
         .collect();
     let first = &all[0];
     for parts in &all {
@@ -84,7 +102,7 @@ pub fn frames(figures: &[Figure], initial: usize, prefix: &str, strings: &mut St
         })
         .collect();
     let svg = svg::document(
-        &layout,
+        layouts.get(initial).unwrap_or(&layout),
         &figures[initial].title,
         &all[initial],
         Some(prefix),

@@ -1,204 +1,282 @@
 //! The HTML report: one self-contained file (no network, no external scripts,
-//! styles or fonts) with every figure, an alpha slider that updates the stage
-//! figures and tables, tables of the control points at each stage, the distance,
-//! and the job itself.
+//! styles or fonts) with every figure, an alpha slider and number field that
+//! update the figures, tables and distance, downloads of each figure (SVG,
+//! PNG) and of the result at the shown alpha (JSON, CSV, the bytes of
+//! `t2spline run`), and the job itself.
 //!
-//! The slider stops at alpha = 0, 0.01, …, 1 and also at every lower height h
-//! and at the starting alpha. For every stop the numbers shown and the changing
-//! parts of the figures are computed here, in Rust, by the same library calls
-//! as `t2spline run --alpha A`, and embedded as JSON; the page's script only
-//! swaps them in. Numbers are written as `run` writes them, so they agree to
-//! the last digit.
+//! The slider stops on a grid of alpha ([`Stops`]: 0.01 apart for small jobs,
+//! coarser as the job grows, to keep the file within [`DATA_BUDGET`]), at
+//! every lower height h and at the starting alpha. For every stop the numbers
+//! shown, the changing parts of the figures and the downloads are computed
+//! here, in Rust, by the same library calls as `t2spline run --alpha A`, and
+//! embedded compressed ([`pack`]); the page's script only unpacks and swaps
+//! them in. Numbers are written as `run` writes them, so they agree to the
+//! last digit.
 
+mod downloads;
 mod frames;
+mod pack;
+mod page;
+mod stops;
 pub mod tables;
 
-use std::fmt::Write as _;
+use downloads::files_of;
+#[cfg(test)]
+use downloads::unpack;
+use stops::finest_within;
+pub use stops::Stops;
 
 use serde_json::{json, Value};
-use t2spline::job::{Job, RunOutput, Spline};
+use t2spline::job::{Job, RunOutput};
 use t2spline::{Alpha, Axis, Layer};
 
-use crate::figures::{
-    number_figure, stage1_figure, stage2_figure, stage3_figure, stage4_figure, sweep_figure,
-    NumberChoice,
+use crate::figures::curve::{
+    distance_figure, stage1_figure, stage2_figure, stage3_figure, stage4_figure, sweep_figure,
+    CurveScene, Zoom,
 };
-use crate::svg::{self, escape};
-use crate::ticks::short;
+use crate::figures::{number_figure, FigureOptions};
+use crate::layout;
+use crate::scene::Figure;
+use crate::svg;
 use crate::{data, Error};
-use frames::{frames, Strings};
+use frames::{frames, Frames, Strings};
+use page::{Page, Section};
+use tables::{number_text, rounded};
 
-/// The slider's regular step.
-pub const STEP: f64 = 0.01;
-
-/// The alphas the slider stops at: 0, 0.01, …, 1, every lower height and
-/// `start`, ascending and without repeats.
-///
-/// # Examples
-/// ```
-/// let job = t2spline_io::read_job("../../examples/paper-alg-1-1.json".as_ref())?;
-/// let stops = t2spline_plot::report::stops(&job, t2spline::Alpha::try_new(0.8)?);
-/// assert_eq!(stops.len(), 101); // 0.6 and 0.8 are already on the grid
-/// assert_eq!(stops[60], 0.6);
-/// # Ok::<(), Box<dyn std::error::Error>>(())
-/// ```
-#[must_use]
-pub fn stops(job: &Job, start: Alpha) -> Vec<f64> {
-    // i / 100 is the correctly rounded double nearest to the decimal, which is
-    // what `--alpha 0.37` parses to.
-    let mut v: Vec<f64> = (0..=100).map(|i| f64::from(i) / 100.0).collect();
-    v.extend(job.model.heights());
-    v.push(start.get());
-    v.sort_by(f64::total_cmp);
-    v.dedup();
-    v
-}
+/// The most bytes the packed per-stop data may take; the grid of stops is
+/// coarsened to stay within it.
+pub const DATA_BUDGET: usize = 3_500_000;
 
 /// Renders the report of `job` (whose file text is `job_text`) with the
-/// slider at `start`.
+/// slider at `start`; `options` chooses the number shown and the aspect of
+/// curve panels.
 ///
 /// # Errors
-/// Only if the library cannot evaluate a curve where the result says the
-/// distance is largest (never for a validated job).
-pub fn render(job: &Job, job_text: &str, start: Alpha) -> Result<String, Error> {
-    let alphas = stops(job, start);
-    let initial = alphas.iter().position(|&a| a == start.get()).unwrap_or(0);
+/// [`Error::NoSuchPoint`] or [`Error::NoSuchAxis`] if `options.number` names
+/// a point or coordinate the job lacks; otherwise only if the library cannot
+/// evaluate a curve where the result says the distance is largest (never for
+/// a validated job).
+pub fn render(
+    job: &Job,
+    job_text: &str,
+    start: Alpha,
+    options: &FigureOptions,
+) -> Result<String, Error> {
     let heights = job.model.heights();
-    let mut results = Vec::with_capacity(alphas.len());
-    for &a in &alphas {
+    let stops = choose_stops(job, start, options)?;
+    let mut stop_data = Vec::with_capacity(stops.alphas.len());
+    let mut kinds: [Vec<Figure>; 4] = Default::default();
+    let mut files: Vec<(String, Vec<String>)> = Vec::new();
+    let mut start_run = None;
+    for &a in &stops.alphas {
         // Stops lie in [0, 1].
         let alpha = Alpha::try_new(a)?;
-        results.push((alpha, data::compute(job, alpha)?));
+        let [number, s2, s3, s4] = stop_figures(job, alpha, &heights, options)?;
+        for (list, f) in kinds.iter_mut().zip([number, s2, s3, s4]) {
+            list.push(f);
+        }
+        let run = data::run_at(job, alpha, job.samples.count())?;
+        for (k, (name, text)) in files_of(&run)?.into_iter().enumerate() {
+            match files.get_mut(k) {
+                Some((_, texts)) => texts.push(text),
+                None => files.push((name, vec![text])),
+            }
+        }
+        stop_data.push(run);
+        if stop_data.len() == stops.initial + 1 {
+            start_run = stop_data.last().cloned();
+        }
     }
-    let choice = NumberChoice::default();
-    let mut strings = Strings::default();
-    let mut number = Vec::new();
-    let mut stage2 = Vec::new();
-    let mut stage3 = Vec::new();
-    let mut stage4 = Vec::new();
-    for (alpha, r) in &results {
-        number.push(number_figure(job, *alpha, choice)?);
-        stage2.push(stage2_figure(r, &heights));
-        stage3.push(stage3_figure(r, &heights));
-        stage4.push(stage4_figure(job, r, false)?);
-    }
-    let figs = [
-        frames(&number, initial, "fn-", &mut strings),
-        frames(&stage2, initial, "s2-", &mut strings),
-        frames(&stage3, initial, "s3-", &mut strings),
-        frames(&stage4, initial, "s4-", &mut strings),
-    ];
-    let start_result = &results[initial].1;
-    let table_defs = tables::tables(start_result);
-    let stops_json: Vec<Value> = alphas
+    let Some(start_run) = start_run else {
+        return Err(Error::Core(t2spline::Error::MissingAlpha));
+    };
+    let distance = distance_figure(job, start.get())?;
+    let distances: Vec<Figure> = stops
+        .alphas
         .iter()
-        .zip(&results)
-        .map(|(a, (_, r))| {
-            let cells: serde_json::Map<String, Value> = table_defs
-                .iter()
-                .map(|t| (t.id.to_owned(), json!(tables::cells(t, r))))
-                .collect();
-            json!({
-                "alpha": tables::number_text(Some(*a)),
-                "regime": r.regime,
-                "at_h": heights.contains(a),
-                "cells": cells,
-            })
-        })
+        .map(|&a| with_alpha_rule(&distance, a))
+        .collect();
+    let probes = stops.probes(&heights);
+    let mut strings = Strings::default();
+    let figs: Vec<Frames> = kinds
+        .iter()
+        .chain(std::iter::once(&distances))
+        .zip(["fn-", "s2-", "s3-", "s4-", "da-"])
+        .map(|(list, prefix)| frames(list, stops.initial, &probes, prefix, &mut strings))
+        .collect();
+    let table_defs = tables::tables(&start_run);
+    let stops_json: Vec<Value> = stops
+        .alphas
+        .iter()
+        .zip(&stop_data)
+        .map(|(a, r)| stop_json(*a, r, &heights, &table_defs))
         .collect();
     let data_block = json!({
-        "initial": initial,
+        "initial": stops.initial,
+        "step": stops.step_text(),
         "stops": stops_json,
         "figures": figs.iter().map(|f| f.data.clone()).collect::<Vec<_>>(),
         "strings": strings.into_json(),
+        "downloads": downloads::pack(&files),
     });
-    let stage1 = svg::render(&stage1_figure(start_result));
-    let sweep = svg::render(&sweep_figure(job)?);
-    let mut page = Page::default();
-    page.header(job, start_result, &heights);
-    page.controls(&alphas, initial, &heights);
-    page.section(
-        "number",
-        "One fuzzy number (paper Figs. 3.1, 4.1–4.4)",
-        &figs[0].svg,
-        "Coordinate x of control point 0: its upper (UMF), primary and lower (LMF) membership functions, the cut at α and the type-reduced triangle with its centroid. Other numbers: t2spline plot --point I --axis x|y|z.",
-        &[],
-    );
-    page.section(
-        "stage1",
-        "Stage 1: the fuzzy control points and layer curves (Fig. 5.1)",
-        &stage1,
-        "Does not depend on α.",
-        &[fuzzy_points_table(job, start_result)],
-    );
+    let scene_heights = heights.clone();
+    let fig_result = data::compute(job, start)?;
+    let scene = CurveScene::new(&fig_result, &scene_heights, options.aspect);
+    let stage1 = static_svg(&stage1_figure(&scene));
+    let sweep = static_svg(&sweep_figure(job)?);
     let table_html: Vec<String> = table_defs
         .iter()
-        .map(|t| tables::html(t, start_result))
+        .map(|t| tables::html(t, &start_run))
         .collect();
-    page.section(
-        "stage2",
-        "Stage 2: alpha-cut (Fig. 5.2)",
-        &figs[1].svg,
-        "Cut ends of every number at α; a lower end is null above its height h.",
-        &[captioned(
-            "Alpha-cut control points (control_points.alpha_cut, crisp)",
-            &table_html[0],
-        )],
+    let mut page = Page::default();
+    let contents = [
+        ("number", "One number"),
+        ("stage1", "Stage 1"),
+        ("stage2", "Stage 2"),
+        ("stage3", "Stage 3"),
+        ("stage4", "Stage 4"),
+        ("distance", "Distance and α"),
+        ("job", "The job"),
+    ];
+    page.header(job.description.as_deref(), &start_run, &heights, &contents);
+    page.controls(
+        &stops.alphas,
+        stops.initial,
+        &heights,
+        &start_run,
+        &stops.step_text(),
     );
-    page.section(
-        "stage3",
-        "Stage 3: type reduction (Fig. 5.3)",
-        &figs[2].svg,
-        "Each control point becomes a type-1 triangle (left, crisp, right).",
-        &[captioned(
-            "Type-reduced control points (type_reduced_left, crisp, type_reduced_right)",
-            &table_html[1],
-        )],
+    let number_caption = format!(
+        "Coordinate {} of control point {}: its upper (UMF), primary and lower (LMF) membership functions, the cut at α and the type-reduced triangle with its centroid. Other numbers: t2spline report --point I --axis x|y|z.",
+        options.number.axis.name(),
+        options.number.point
     );
-    page.section(
-        "stage4",
-        "Stage 4: defuzzification and distance (Fig. 5.4)",
-        &figs[3].svg,
-        "The distance between the crisp and the defuzzified curve at equal t, over the whole domain.",
-        &[
-            captioned("Defuzzified control points (control_points.defuzzified)", &table_html[2]),
-            captioned("Distance between the curves (error)", &table_html[3]),
-        ],
-    );
-    page.section(
-        "sweep",
-        "The solution as α varies",
-        &sweep,
-        "Defuzzified curves for α = 0, 0.1, …, 1; does not depend on the slider.",
-        &[],
-    );
+    for s in [
+        Section { id: "number", title: "One fuzzy number (paper Figs. 3.1, 4.1–4.4)", svg: &figs[0].svg, figure: "number", caption: &number_caption, csv: None, tables: vec![] },
+        Section { id: "stage1", title: "Stage 1: the fuzzy control points and layer curves (Fig. 5.1)", svg: &stage1, figure: "stage1-fuzzy", caption: "Does not depend on α.", csv: Some("stage1-layers.csv"), tables: vec![fuzzy_points_table(job, &start_run)] },
+        Section { id: "stage2", title: "Stage 2: alpha-cut (Fig. 5.2)", svg: &figs[1].svg, figure: "stage2-alpha-cut", caption: "Cut ends of every number at α; a lower end is null above its height h.", csv: Some("stage2-alpha-cut.csv"), tables: vec![table_html[0].clone()] },
+        Section { id: "stage3", title: "Stage 3: type reduction (Fig. 5.3)", svg: &figs[2].svg, figure: "stage3-type-reduced", caption: "Each control point becomes a type-1 triangle (left, crisp, right).", csv: Some("stage3-type-reduced.csv"), tables: vec![table_html[1].clone()] },
+        Section { id: "stage4", title: "Stage 4: defuzzification and distance (Fig. 5.4)", svg: &figs[3].svg, figure: "stage4-defuzzified", caption: "The distance between the crisp and the defuzzified curve at equal t, over the whole domain; the right panel magnifies its largest value, with both curves computed anew there.", csv: Some("stage4-defuzzified.csv"), tables: vec![table_html[2].clone(), table_html[3].clone()] },
+        Section { id: "distance", title: "The distance as α varies", svg: &figs[4].svg, figure: "distance-alpha", caption: "Largest and rms distance against α, with both sides of every h; the vertical line is the shown α.", csv: None, tables: vec![] },
+        Section { id: "sweep", title: "Where along the curve the solution moves", svg: &sweep, figure: "alpha-sweep", caption: "‖D(t) − C(t)‖ against t for several α; does not depend on the slider.", csv: None, tables: vec![] },
+    ] {
+        page.section(&s);
+    }
     page.job(job_text);
-    page.finish(&data_block);
+    if std::env::var("T2SPLINE_DEBUG_SIZES").is_ok() {
+        let n = stops.alphas.len();
+        let figures = pack::packed_len(&json!([data_block["figures"], data_block["strings"]]));
+        let downloads = pack::packed_len(&data_block["downloads"]);
+        let numbers = pack::packed_len(&data_block["stops"]);
+        eprintln!(
+            "stops {n}: figures {} per stop, downloads {} per stop, numbers {} per stop",
+            figures / n,
+            downloads / n,
+            numbers / n
+        );
+    }
+    page.finish(&pack::pack(&data_block));
     Ok(page.html)
 }
 
-fn captioned(caption: &str, table: &str) -> String {
-    table.replacen(
-        "<thead>",
-        &format!("<caption>{}</caption><thead>", escape(caption)),
-        1,
-    )
+/// The stops: as fine a grid as the packed size of two sample stops allows
+/// within [`DATA_BUDGET`]. The samples (α = 0.3 and 0.9) do not depend on the
+/// start, so a job gets the same grid whatever alpha its report starts at.
+fn choose_stops(job: &Job, start: Alpha, options: &FigureOptions) -> Result<Stops, Error> {
+    let heights = job.model.heights();
+    let mut total = 0;
+    for a in [0.3, 0.9] {
+        let alpha = Alpha::try_new(a)?;
+        let run = data::run_at(job, alpha, job.samples.count())?;
+        let files: Vec<String> = files_of(&run)?.into_iter().map(|(_, t)| t).collect();
+        let figures: Vec<String> = stop_figures(job, alpha, &heights, options)?
+            .iter()
+            .map(svg::render)
+            .collect();
+        // Measured on jobs of 4 to 200 points: a stop's packed downloads take
+        // a third of a whole result's files packed alone (half its numbers
+        // change, and the CSV files repeat the result's), and its figure
+        // parts a bit under half of its whole figures.
+        total += pack::packed_len(&json!(files)) / 3 + pack::packed_len(&json!(figures)) * 9 / 20;
+    }
+    Ok(finest_within(job, start, (total / 2).max(1), DATA_BUDGET))
 }
 
-/// The stage-1 table: every number's seven values and height.
+/// The figures that change with alpha: the number and stages 2–4.
+fn stop_figures(
+    job: &Job,
+    alpha: Alpha,
+    heights: &[f64],
+    options: &FigureOptions,
+) -> Result<[Figure; 4], Error> {
+    let r = data::compute(job, alpha)?;
+    let scene = CurveScene::new(&r, heights, options.aspect);
+    Ok([
+        number_figure(job, alpha, options.number)?,
+        stage2_figure(&scene),
+        stage3_figure(&scene),
+        stage4_figure(job, &scene, Zoom::Always)?,
+    ])
+}
+
+/// The distance figure with its alpha line at `alpha`.
+fn with_alpha_rule(fig: &Figure, alpha: f64) -> Figure {
+    let mut f = fig.clone();
+    for p in &mut f.panels {
+        for item in &mut p.items {
+            if item.key == "alpha" {
+                item.mark = crate::figures::curve::alpha_rule(alpha);
+            }
+        }
+    }
+    f
+}
+
+/// A figure that does not change with alpha, as one SVG.
+fn static_svg(fig: &Figure) -> String {
+    let mut l = layout::fit(&[fig]);
+    l.tolerance = frames::REPORT_TOLERANCE;
+    svg::document(&l, &fig.title, &svg::parts(fig, &l, ""), None)
+}
+
+/// One stop's numbers: alpha, regime, the distance, the table cells.
+fn stop_json(a: f64, r: &RunOutput, heights: &[f64], defs: &[tables::Table]) -> Value {
+    let pair = |v: f64| json!([number_text(Some(v)), rounded(Some(v))]);
+    let cells: serde_json::Map<String, Value> = defs
+        .iter()
+        .map(|t| (t.id.to_owned(), json!(tables::cells(t, r))))
+        .collect();
+    json!({
+        "alpha": number_text(Some(a)),
+        "shown": rounded(Some(a)),
+        "regime": r.regime,
+        "at_h": heights.contains(&a),
+        "bar": {"m-max": pair(r.error.max), "m-max-at": pair(data::curve_spline(r).max_at), "m-rms": pair(r.error.rms)},
+        "cells": cells,
+    })
+}
+
+/// The stage-1 table: every number's seven values and height (the first
+/// [`tables::MAX_TABLE_POINTS`] points).
 fn fuzzy_points_table(job: &Job, r: &RunOutput) -> String {
-    let mut s = String::from("<table id=\"table-fuzzy\"><caption>Fuzzy control points (the job)</caption><thead><tr><th>point</th><th>coord.</th><th>weight</th>");
+    use std::fmt::Write as _;
+    let n = r.control_points.crisp.len();
+    let shown = n.min(tables::MAX_TABLE_POINTS);
+    let open = if n == shown { " open" } else { "" };
+    let mut s = format!("<details class=\"table\"{open}><summary>Fuzzy control points (the job)</summary>\n<div class=\"scroll\"><table id=\"table-fuzzy\"><thead><tr><th>point</th><th>coord.</th><th>weight</th>");
     for l in Layer::ALL {
         let _ = write!(s, "<th>{}</th>", l.name().replace('_', "."));
     }
     s.push_str("<th>h</th></tr></thead><tbody>\n");
-    for k in 0..r.control_points.crisp.len() {
+    let cell =
+        |v: Option<f64>| format!("<td data-value=\"{}\">{}</td>", number_text(v), rounded(v));
+    for k in 0..shown {
         for (a, axis) in Axis::first::<3>().iter().take(r.dimension).enumerate() {
             let _ = write!(
                 s,
-                "<tr><th scope=\"row\">{k}</th><th scope=\"row\">{}</th><td>{}</td>",
+                "<tr><th scope=\"row\">{k}</th><th scope=\"row\">{}</th>{}",
                 axis.name(),
-                tables::number_text(r.spline.weights().get(k).copied())
+                cell(r.spline.weights().get(k).copied())
             );
             for l in Layer::ALL {
                 let points = r
@@ -206,179 +284,24 @@ fn fuzzy_points_table(job: &Job, r: &RunOutput) -> String {
                     .layers
                     .get(l)
                     .unwrap_or(&r.control_points.crisp);
-                let _ = write!(
-                    s,
-                    "<td>{}</td>",
-                    tables::number_text(points.coord(a).get(k).copied())
-                );
+                s.push_str(&cell(points.coord(a).get(k).copied()));
             }
             let h = data::number(&job.model, k, *axis)
                 .ok()
                 .map(|x| x.height().get());
-            let _ = writeln!(s, "<td>{}</td></tr>", tables::number_text(h));
+            let _ = writeln!(s, "{}</tr>", cell(h));
         }
     }
-    s.push_str("</tbody></table>\n");
+    s.push_str("</tbody></table></div>\n");
+    if n > shown {
+        let _ = writeln!(
+            s,
+            "<p class=\"note\">The first {shown} control points; all {n} are in the job below.</p>"
+        );
+    }
+    s.push_str("</details>\n");
     s
 }
 
-/// The page being written.
-#[derive(Debug, Default)]
-struct Page {
-    html: String,
-}
-
-impl Page {
-    fn header(&mut self, job: &Job, r: &RunOutput, heights: &[f64]) {
-        let title = "Normal type-2 fuzzy rational B-spline curve";
-        let curve = match &r.spline {
-            Spline::Curve {
-                order,
-                degree,
-                knots,
-                ..
-            } => (*order, *degree, knots.as_slice()),
-            Spline::Surface { .. } => (0, 0, &[][..]),
-        };
-        let _ = write!(
-            self.html,
-            "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>t2spline report: {}</title>\n<style>\n{}</style>\n</head>\n<body>\n<header>\n<h1>{title}</h1>\n",
-            escape(job.description.as_deref().unwrap_or(title)),
-            include_str!("report.css")
-        );
-        if let Some(d) = &job.description {
-            let _ = writeln!(self.html, "<p>{}</p>", escape(d));
-        }
-        let _ = writeln!(
-            self.html,
-            "<p class=\"facts\">{}-D, {} control points, order {} (degree {}), weights ({}), knots ({}), lower heights h: {}.</p>\n</header>",
-            r.dimension,
-            r.control_points.crisp.len(),
-            curve.0,
-            curve.1,
-            join(&r.spline.weights()),
-            join(curve.2),
-            join(heights)
-        );
-    }
-
-    fn controls(&mut self, alphas: &[f64], initial: usize, heights: &[f64]) {
-        let _ = write!(
-            self.html,
-            "<nav id=\"controls\" aria-label=\"alpha\">\n<div class=\"row\">\n<label for=\"alpha\">α</label>\n<input type=\"range\" id=\"alpha\" min=\"0\" max=\"{}\" step=\"1\" value=\"{initial}\">\n<output id=\"alpha-value\" for=\"alpha\">{}</output>\n<span id=\"regime\"></span>\n",
-            alphas.len() - 1,
-            tables::number_text(Some(alphas[initial]))
-        );
-        for h in heights {
-            if let Some(k) = alphas.iter().position(|a| a == h) {
-                let _ = writeln!(
-                    self.html,
-                    "<button type=\"button\" data-stop=\"{k}\">go to α = h = {}</button>",
-                    short(*h, 6)
-                );
-            }
-        }
-        let _ = writeln!(
-            self.html,
-            "</div>\n<p class=\"note\">Stops at α = 0, 0.01, …, 1 and at every h. At α = h type reduction switches from averaging three cut ends to two (SPEC §3), so the solution jumps between α = h and the next stop; that is the paper's method. Every number shown equals <code>t2spline run --alpha A</code> at the shown α.</p>\n</nav>\n<main>"
-        );
-    }
-
-    fn section(&mut self, id: &str, title: &str, svg: &str, caption: &str, tables: &[String]) {
-        let _ = write!(
-            self.html,
-            "<section id=\"{id}\">\n<h2>{}</h2>\n<figure>\n{svg}<figcaption>{}</figcaption>\n</figure>\n",
-            escape(title),
-            escape(caption)
-        );
-        if !tables.is_empty() {
-            self.html.push_str("<div class=\"tables\">\n");
-            for t in tables {
-                self.html.push_str(t);
-            }
-            self.html.push_str("</div>\n");
-        }
-        self.html.push_str("</section>\n");
-    }
-
-    fn job(&mut self, text: &str) {
-        let _ = write!(
-            self.html,
-            "<section id=\"job\">\n<h2>The job</h2>\n<pre>{}</pre>\n</section>\n</main>\n",
-            escape(text)
-        );
-    }
-
-    fn finish(&mut self, data: &Value) {
-        // "</" may not appear inside a script element; "<\/" is the same JSON.
-        let json = data.to_string().replace("</", "<\\/");
-        let _ = write!(
-            self.html,
-            "<footer>Made by t2spline {}. Self-contained: no network, scripts or fonts are loaded.</footer>\n<script type=\"application/json\" id=\"report-data\">{json}</script>\n<script>\n{}</script>\n</body>\n</html>\n",
-            env!("CARGO_PKG_VERSION"),
-            include_str!("report.js")
-        );
-    }
-}
-
-fn join(v: &[f64]) -> String {
-    v.iter()
-        .map(|x| short(*x, 6))
-        .collect::<Vec<_>>()
-        .join(", ")
-}
-
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    fn example() -> (Job, String) {
-        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join("../../examples/paper-alg-1-1.json");
-        let text = std::fs::read_to_string(&path).unwrap();
-        (t2spline_io::parse_job(&text, "example").unwrap(), text)
-    }
-
-    #[test]
-    fn table_cells_are_the_run_result_at_the_job_sampling() {
-        let (job, _) = example();
-        for a in stops(&job, Alpha::try_new(0.8).unwrap()) {
-            let alpha = Alpha::try_new(a).unwrap();
-            let figure_result = data::compute(&job, alpha).unwrap();
-            let run_result = job
-                .run(&t2spline::job::Settings {
-                    alpha,
-                    samples: job.samples,
-                    derivatives: None,
-                })
-                .unwrap();
-            for t in tables::tables(&run_result) {
-                assert_eq!(
-                    tables::cells(&t, &figure_result),
-                    tables::cells(&t, &run_result),
-                    "alpha {a}, {}",
-                    t.id
-                );
-            }
-        }
-    }
-
-    #[test]
-    fn the_report_marks_h_and_starts_at_the_given_alpha() {
-        let (job, text) = example();
-        let html = render(&job, &text, Alpha::try_new(0.37).unwrap()).unwrap();
-        assert!(html.contains("go to α = h = 0.6"));
-        assert!(html.contains("<output id=\"alpha-value\" for=\"alpha\">0.37</output>"));
-        assert!(html.contains("value=\"37\""), "0.37 is stop 37");
-        let start = html.find("id=\"report-data\">").unwrap();
-        let end = html[start..].find("</script>").unwrap() + start;
-        let data: Value =
-            serde_json::from_str(&html[start + 17..end].replace("<\\/", "</")).unwrap();
-        let stops = data["stops"].as_array().unwrap();
-        assert_eq!(stops.len(), 101);
-        assert_eq!(stops[60]["at_h"], json!(true));
-        assert_eq!(stops[60]["regime"], json!("alpha <= h"));
-        assert_eq!(stops[61]["regime"], json!("alpha > h"));
-        assert_eq!(data["figures"].as_array().unwrap().len(), 4);
-    }
-}
+mod tests;

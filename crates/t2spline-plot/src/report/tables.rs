@@ -1,7 +1,11 @@
 //! The report's tables of control points at each stage and of the distance.
-//! Every number is written exactly as `t2spline run` writes it (serde_json's
-//! shortest round-trip form), so the report and the result file agree to the
-//! last digit; each cell names its place in the result file (`data-key`).
+//!
+//! Each cell shows its number rounded to four significant digits, where it is
+//! read, and carries the exact text in `data-value`, written as
+//! `t2spline run` writes it (serde_json's shortest round-trip form), so the
+//! report and the result file agree to the last digit; `data-key` names its
+//! place in the result file. Jobs of many control points show the first
+//! [`MAX_TABLE_POINTS`] points; the downloads have all.
 
 use std::fmt::Write as _;
 
@@ -9,6 +13,10 @@ use t2spline::job::RunOutput;
 use t2spline::Layer;
 
 use crate::svg::escape;
+use crate::ticks::significant;
+
+/// The most control points a table lists.
+pub const MAX_TABLE_POINTS: usize = 12;
 
 /// A number as `t2spline run` prints it; `None` (an absent lower cut) as `null`.
 #[must_use]
@@ -19,57 +27,88 @@ pub fn number_text(v: Option<f64>) -> String {
     )
 }
 
-/// One table: its id, its header and static row heads, and the keys of its
-/// changing cells in order.
+/// A number rounded for reading: four significant digits, trailing zeros
+/// dropped (`0.84`, `-1.235`, `1.2e-7`); `null` for an absent value.
+#[must_use]
+pub fn rounded(v: Option<f64>) -> String {
+    let Some(x) = v else {
+        return "null".to_owned();
+    };
+    let mag = if x == 0.0 || !x.is_finite() {
+        0
+    } else {
+        x.abs().log10().floor() as i32
+    };
+    if !(-4..=6).contains(&mag) {
+        let s = format!("{x:.3e}");
+        let (m, e) = s.split_once('e').unwrap_or((&s, "0"));
+        let m = m.trim_end_matches('0').trim_end_matches('.');
+        return format!("{m}e{e}");
+    }
+    significant(x, 4)
+}
+
+/// One table: its id, its caption, its header and static row heads, and the
+/// keys of its changing cells in order.
 #[derive(Debug)]
 pub struct Table {
     /// Element id.
     pub id: &'static str,
+    /// What it holds.
+    pub caption: &'static str,
     /// Column titles.
     pub header: Vec<String>,
     /// Per row: the leading cells (point, coordinate) and the keys of the number cells.
     pub rows: Vec<(Vec<String>, Vec<String>)>,
+    /// Control points not listed.
+    pub left_out: usize,
 }
 
 const AXES: [&str; 3] = ["x", "y", "z"];
+
+fn table(id: &'static str, caption: &'static str, header: &[&str]) -> Table {
+    Table {
+        id,
+        caption,
+        header: header.iter().map(|s| (*s).to_owned()).collect(),
+        rows: Vec::new(),
+        left_out: 0,
+    }
+}
 
 /// The tables of a result, in report order.
 #[must_use]
 pub fn tables(r: &RunOutput) -> Vec<Table> {
     let n = r.control_points.crisp.len();
+    let shown = n.min(MAX_TABLE_POINTS);
     let d = r.dimension;
-    let layers: Vec<Layer> = Layer::ALL.to_vec();
-    let mut cut = Table {
-        id: "table-alpha-cut",
-        header: ["point", "coord."]
+    let mut cut = table(
+        "table-alpha-cut",
+        "Alpha-cut control points (control_points.alpha_cut, crisp)",
+        &["point", "coord."],
+    );
+    cut.header.extend(
+        Layer::ALL
             .iter()
-            .map(|s| (*s).to_owned())
-            .chain(
-                layers
-                    .iter()
-                    .map(|l| format!("{}′", l.name().replace('_', "."))),
-            )
-            .collect(),
-        rows: Vec::new(),
-    };
-    let mut reduced = Table {
-        id: "table-type-reduced",
-        header: ["point", "coord.", "left", "crisp", "right"]
-            .map(str::to_owned)
-            .to_vec(),
-        rows: Vec::new(),
-    };
-    let mut defuzzified = Table {
-        id: "table-defuzzified",
-        header: std::iter::once("point".to_owned())
-            .chain(AXES[..d].iter().map(|a| (*a).to_owned()))
-            .collect(),
-        rows: Vec::new(),
-    };
-    for k in 0..n {
+            .map(|l| format!("{}′", l.name().replace('_', "."))),
+    );
+    let mut reduced = table(
+        "table-type-reduced",
+        "Type-reduced control points (type_reduced_left, crisp, type_reduced_right)",
+        &["point", "coord.", "left", "crisp", "right"],
+    );
+    let mut defuzzified = table(
+        "table-defuzzified",
+        "Defuzzified control points (control_points.defuzzified)",
+        &["point"],
+    );
+    defuzzified
+        .header
+        .extend(AXES[..d].iter().map(|a| (*a).to_owned()));
+    for k in 0..shown {
         for (a, axis) in AXES[..d].iter().enumerate() {
             let heads = vec![k.to_string(), (*axis).to_owned()];
-            let cells = layers
+            let cells = Layer::ALL
                 .iter()
                 .map(|l| match l {
                     Layer::Crisp => format!("crisp.{k}.{a}"),
@@ -91,18 +130,22 @@ pub fn tables(r: &RunOutput) -> Vec<Table> {
             (0..d).map(|a| format!("defuzzified.{k}.{a}")).collect(),
         ));
     }
-    let distance = Table {
-        id: "table-distance",
-        header: ["", "max", "max_at (t)", "rms"].map(str::to_owned).to_vec(),
-        rows: vec![(
-            vec!["distance".to_owned()],
-            vec![
-                "error.max".into(),
-                "error.max_at".into(),
-                "error.rms".into(),
-            ],
-        )],
-    };
+    for t in [&mut cut, &mut reduced, &mut defuzzified] {
+        t.left_out = n - shown;
+    }
+    let mut distance = table(
+        "table-distance",
+        "Distance between the curves (error)",
+        &["", "max", "max_at (t)", "rms"],
+    );
+    distance.rows.push((
+        vec!["distance".to_owned()],
+        vec![
+            "error.max".into(),
+            "error.max_at".into(),
+            "error.rms".into(),
+        ],
+    ));
     vec![cut, reduced, defuzzified, distance]
 }
 
@@ -135,19 +178,32 @@ pub fn value(r: &RunOutput, key: &str) -> Option<f64> {
     }
 }
 
-/// The cell texts of a table for one result, in row order.
+/// The exact and the rounded texts of a table's cells for one result, in
+/// row order.
 #[must_use]
-pub fn cells(t: &Table, r: &RunOutput) -> Vec<String> {
+pub fn cells(t: &Table, r: &RunOutput) -> (Vec<String>, Vec<String>) {
     t.rows
         .iter()
-        .flat_map(|(_, keys)| keys.iter().map(|k| number_text(value(r, k))))
-        .collect()
+        .flat_map(|(_, keys)| keys.iter().map(|k| value(r, k)))
+        .map(|v| (number_text(v), rounded(v)))
+        .unzip()
 }
 
-/// The table as HTML with the texts of `r`.
+/// The table as HTML with the texts of `r`, folded under its caption
+/// (`open` when it lists every point of a small job).
 #[must_use]
 pub fn html(t: &Table, r: &RunOutput) -> String {
-    let mut s = format!("<table id=\"{}\"><thead><tr>", t.id);
+    let rows = t.rows.len();
+    let open = if t.left_out == 0 && rows <= 3 * MAX_TABLE_POINTS {
+        " open"
+    } else {
+        ""
+    };
+    let mut s = format!(
+        "<details class=\"table\"{open}><summary>{}</summary>\n<div class=\"scroll\"><table id=\"{}\"><thead><tr>",
+        escape(t.caption),
+        t.id
+    );
     for h in &t.header {
         let _ = write!(s, "<th>{}</th>", escape(h));
     }
@@ -158,10 +214,46 @@ pub fn html(t: &Table, r: &RunOutput) -> String {
             let _ = write!(s, "<th scope=\"row\">{}</th>", escape(h));
         }
         for k in keys {
-            let _ = write!(s, "<td data-key=\"{k}\">{}</td>", number_text(value(r, k)));
+            let v = value(r, k);
+            let absent = if v.is_none() { " class=\"absent\"" } else { "" };
+            let _ = write!(
+                s,
+                "<td data-key=\"{k}\" data-value=\"{}\"{absent}>{}</td>",
+                number_text(v),
+                rounded(v)
+            );
         }
         s.push_str("</tr>\n");
     }
-    s.push_str("</tbody></table>\n");
+    s.push_str("</tbody></table></div>\n");
+    if t.left_out > 0 {
+        let _ = writeln!(
+            s,
+            "<p class=\"note\">The first {MAX_TABLE_POINTS} control points; the other {} are in the downloads (result JSON).</p>",
+            t.left_out
+        );
+    }
+    s.push_str("</details>\n");
     s
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_are_rounded_for_reading() {
+        assert_eq!(rounded(Some(0.840_000_000_000_000_1)), "0.84");
+        assert_eq!(rounded(Some(-1.234_56)), "-1.235");
+        assert_eq!(rounded(Some(4.0)), "4");
+        assert_eq!(rounded(Some(1234.567)), "1235");
+        assert_eq!(rounded(Some(0.007_398_2)), "0.007398");
+        assert_eq!(rounded(Some(1.2e-7)), "1.2e-7");
+        assert_eq!(rounded(Some(3.0e12)), "3e12");
+        assert_eq!(rounded(None), "null");
+        assert_eq!(
+            number_text(Some(0.840_000_000_000_000_1)),
+            "0.8400000000000001"
+        );
+    }
 }

@@ -1,0 +1,130 @@
+//! Stage 2 (paper Fig. 5.2): the alpha-cut control points and their curves.
+
+use t2spline::job::{Points, RunOutput};
+use t2spline::Layer;
+
+use super::{
+    alpha_phrase, band, crisp_legend, crisp_points, line, markers, names, point_name, polygon,
+    project, CurveScene,
+};
+use crate::figures::style::{layer_marker, layer_stroke, lower_band, upper_band, FUNCTIONS};
+use crate::scene::{Figure, LegendEntry, Mark, Panel};
+
+/// The alpha-cut curve of a layer (the crisp curve for the crisp layer);
+/// `None` when the layer has no cut at this alpha.
+fn cut_curve(r: &RunOutput, l: Layer) -> Option<&Points> {
+    match r.samples.alpha_cut.get(l) {
+        None => Some(&r.samples.crisp),
+        Some(v) => v.as_ref(),
+    }
+}
+
+/// The alpha-cut control points of a layer that exist (every coordinate cut).
+fn cut_points(r: &RunOutput, l: Layer, (i, j): (usize, usize)) -> Vec<[f64; 2]> {
+    r.control_points
+        .alpha_cut
+        .get(l)
+        .map(|cut| {
+            cut.coord(i)
+                .iter()
+                .zip(cut.coord(j))
+                .filter_map(|(x, y)| Some([(*x)?, (*y)?]))
+                .collect()
+        })
+        .unwrap_or_default()
+}
+
+/// Whether the lower cut curves exist at this alpha.
+fn has_lower(r: &RunOutput) -> bool {
+    cut_curve(r, Layer::LowerLeft).is_some()
+}
+
+/// Stage 2 (paper Fig. 5.2): the alpha-cut control points and their curves,
+/// with the bands between the upper and between the lower cut curves. Lower
+/// cuts are drawn (and listed in the legend) only where every number has
+/// one.
+#[must_use]
+pub fn stage2_figure(scene: &CurveScene<'_>) -> Figure {
+    let r = scene.r;
+    let cp = &r.control_points;
+    let d = &scene.density;
+    let panels = scene.panels(|p, ij| {
+        cut_bands(p, r, ij);
+        polygon(p, &cp.crisp, ij);
+        for l in Layer::ALL {
+            line(
+                p,
+                format!("curve-{}", l.name()),
+                cut_curve(r, l).map(|c| project(c, ij)),
+                layer_stroke(l),
+            );
+        }
+        for l in Layer::ALL.into_iter().filter(|&l| l != Layer::Crisp) {
+            markers(
+                p,
+                format!("points-{}", l.name()),
+                cut_points(r, l, ij),
+                layer_marker(l),
+                d.markers,
+            );
+        }
+        crisp_points(p, &cp.crisp, ij, d);
+        names(p, &cp.crisp, ij, d, point_name);
+    });
+    Figure {
+        notes: scene.notes("cut ends not marked"),
+        ..Figure::new(
+            "stage2-alpha-cut",
+            "Stage 2: alpha-cut of the fuzzy control points (α-NT2FRBsC)",
+            alpha_phrase(r.alpha, scene.heights, r.regime.as_str()),
+            panels,
+            legend(r, d.markers),
+        )
+    }
+}
+
+/// The bands between the upper and between the lower cut curves.
+fn cut_bands(p: &mut Panel, r: &RunOutput, ij: (usize, usize)) {
+    for (key, (a, b), fill) in [
+        (
+            "band-upper",
+            (Layer::UpperLeft, Layer::UpperRight),
+            upper_band(),
+        ),
+        (
+            "band-lower",
+            (Layer::LowerLeft, Layer::LowerRight),
+            lower_band(),
+        ),
+    ] {
+        let mark = match (cut_curve(r, a), cut_curve(r, b)) {
+            (Some(x), Some(y)) => Mark::Area {
+                points: band(x, y, ij),
+                fill,
+            },
+            _ => Mark::Empty,
+        };
+        p.push(key, mark);
+    }
+}
+
+/// The legend of what is drawn at this alpha.
+fn legend(r: &RunOutput, with_markers: bool) -> Vec<LegendEntry> {
+    let mut legend = crisp_legend();
+    for (l, _, name) in FUNCTIONS {
+        if l == Layer::LowerLeft && !has_lower(r) {
+            continue;
+        }
+        let label = format!("{name} cuts (left, right)");
+        legend.push(if with_markers {
+            LegendEntry::line_marker(&label, layer_stroke(l), layer_marker(l))
+        } else {
+            LegendEntry::line(&label, layer_stroke(l))
+        });
+    }
+    legend.push(LegendEntry::area("between the upper cuts", upper_band()));
+    if has_lower(r) {
+        legend.push(LegendEntry::area("between the lower cuts", lower_band()));
+    }
+    legend
+}

@@ -1,0 +1,212 @@
+//! Drawn things as SVG elements: lines, areas, markers, segments, rules and
+//! placed texts.
+
+use std::fmt::Write as _;
+
+use crate::geometry::Px;
+use crate::labels::Placed;
+use crate::layout::PanelLayout;
+use crate::scene::{Mark, Xy};
+use crate::simplify::simplify;
+use crate::style::{font_size, Marker, Shape, GREY, WHITE};
+use crate::ticks::coord;
+
+use super::{points_attr, stroke_attrs, text_el};
+
+/// The stretches of a polyline between its gaps (non-finite points), in
+/// pixels, each simplified to within `tolerance`.
+fn stretches(points: &[Xy], pl: &PanelLayout, tolerance: f64) -> Vec<Vec<Px>> {
+    points
+        .split(|p| !(p[0].is_finite() && p[1].is_finite()))
+        .filter(|s| !s.is_empty())
+        .map(|s| {
+            simplify(
+                &s.iter().map(|&p| pl.to_px(p)).collect::<Vec<_>>(),
+                tolerance,
+            )
+        })
+        .collect()
+}
+
+/// A line: one `<polyline>`, or a `<path>` of several stretches when it has
+/// gaps (a jump that no line may bridge).
+fn line(
+    points: &[Xy],
+    stroke: &crate::style::Stroke,
+    pl: &PanelLayout,
+    clip_attr: &str,
+    tolerance: f64,
+) -> String {
+    let runs = stretches(points, pl, tolerance);
+    if let [one] = runs.as_slice() {
+        return format!(
+            "<polyline points=\"{}\" {}{clip_attr}/>\n",
+            points_attr(one),
+            stroke_attrs(stroke)
+        );
+    }
+    let mut d = String::new();
+    for run in &runs {
+        for (k, p) in run.iter().enumerate() {
+            let _ = write!(
+                d,
+                "{}{} {}",
+                if k == 0 { 'M' } else { 'L' },
+                coord(p[0]),
+                coord(p[1])
+            );
+        }
+    }
+    format!("<path d=\"{d}\" {}{clip_attr}/>\n", stroke_attrs(stroke))
+}
+
+pub(super) fn mark(m: &Mark, pl: &PanelLayout, clip: &str, tolerance: f64) -> String {
+    let clip_attr = format!(" clip-path=\"url(#{clip})\"");
+    match m {
+        Mark::Line { points, stroke } => line(points, stroke, pl, &clip_attr, tolerance),
+        Mark::Area { points, fill } => {
+            let px = stretches(points, pl, tolerance).concat();
+            format!(
+                "<polygon points=\"{}\" fill=\"{}\" fill-opacity=\"{}\" stroke=\"none\"{clip_attr}/>\n",
+                points_attr(&px),
+                fill.color,
+                coord(fill.opacity)
+            )
+        }
+        Mark::Markers { points, marker } => markers(&pl.marker_px(points), marker),
+        Mark::Segments { segments, stroke } => {
+            let mut d = String::new();
+            for [a, b] in segments {
+                let (a, b) = (pl.to_px(*a), pl.to_px(*b));
+                let _ = write!(
+                    d,
+                    "M{} {}L{} {}",
+                    coord(a[0]),
+                    coord(a[1]),
+                    coord(b[0]),
+                    coord(b[1])
+                );
+            }
+            format!("<path d=\"{d}\" {}{clip_attr}/>\n", stroke_attrs(stroke))
+        }
+        Mark::HRule { y, stroke, .. } => {
+            let py = pl.to_px([0.0, *y])[1];
+            format!(
+                "<path d=\"M{} {}H{}\" {}/>\n",
+                coord(pl.plot.x),
+                coord(py),
+                coord(pl.plot.right()),
+                stroke_attrs(stroke)
+            )
+        }
+        Mark::VRule { x, stroke, .. } => {
+            let px = pl.to_px([*x, 0.0])[0];
+            format!(
+                "<path d=\"M{} {}V{}\" {}/>\n",
+                coord(px),
+                coord(pl.plot.y),
+                coord(pl.plot.bottom()),
+                stroke_attrs(stroke)
+            )
+        }
+        Mark::Label { .. } | Mark::Empty => String::new(),
+    }
+}
+
+/// Markers at pixel positions, in one group.
+pub(super) fn markers(px: &[Px], m: &Marker) -> String {
+    if px.is_empty() {
+        return String::new();
+    }
+    let fill = m.fill.unwrap_or(WHITE);
+    let mut s = format!(
+        "<g fill=\"{}\" stroke=\"{}\" stroke-width=\"1.2\">",
+        if m.shape == Shape::Cross {
+            "none".to_owned()
+        } else {
+            fill.to_string()
+        },
+        m.stroke
+    );
+    for p in px {
+        s.push_str(&marker_shape(*p, m.shape, m.size));
+    }
+    s.push_str("</g>\n");
+    s
+}
+
+fn marker_shape([x, y]: Px, shape: Shape, size: f64) -> String {
+    let r = 0.5 * size;
+    let c = coord;
+    match shape {
+        Shape::Circle => format!("<circle cx=\"{}\" cy=\"{}\" r=\"{}\"/>", c(x), c(y), c(r)),
+        Shape::Square => {
+            let a = 0.85 * r;
+            format!(
+                "<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"/>",
+                c(x - a),
+                c(y - a),
+                c(2.0 * a),
+                c(2.0 * a)
+            )
+        }
+        Shape::Triangle => format!(
+            "<path d=\"M{} {}L{} {}L{} {}Z\"/>",
+            c(x),
+            c(y - 1.1 * r),
+            c(x + r),
+            c(y + 0.7 * r),
+            c(x - r),
+            c(y + 0.7 * r)
+        ),
+        Shape::Diamond => format!(
+            "<path d=\"M{} {}L{} {}L{} {}L{} {}Z\"/>",
+            c(x),
+            c(y - 1.15 * r),
+            c(x + r),
+            c(y),
+            c(x),
+            c(y + 1.15 * r),
+            c(x - r),
+            c(y)
+        ),
+        Shape::Cross => {
+            let a = 0.8 * r;
+            format!(
+                "<path d=\"M{} {}L{} {}M{} {}L{} {}\" stroke-width=\"1.6\"/>",
+                c(x - a),
+                c(y - a),
+                c(x + a),
+                c(y + a),
+                c(x - a),
+                c(y + a),
+                c(x + a),
+                c(y - a)
+            )
+        }
+    }
+}
+
+/// A placed label with a white halo so it reads over anything.
+pub(super) fn label(p: &Placed, text: &str) -> String {
+    let mut s = String::new();
+    if let Some([a, b]) = p.leader {
+        let _ = writeln!(
+            s,
+            "<path d=\"M{} {}L{} {}\" stroke=\"{GREY}\" stroke-width=\"0.8\" fill=\"none\"/>",
+            coord(a[0]),
+            coord(a[1]),
+            coord(b[0]),
+            coord(b[1])
+        );
+    }
+    s.push_str(&text_el(
+        p.baseline[0],
+        p.baseline[1],
+        font_size::LABEL,
+        "start",
+        &format!(" stroke=\"{WHITE}\" stroke-width=\"3\" stroke-linejoin=\"round\" paint-order=\"stroke\""),
+        text,
+    ));
+    s
+}

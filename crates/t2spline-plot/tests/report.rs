@@ -1,0 +1,41 @@
+//! Reports of larger jobs: within the size budget, with a coarser grid of
+//! stops as the job grows, and still every figure and download.
+
+use t2spline::Alpha;
+use t2spline_plot::{render_report, FigureOptions, Stops};
+
+#[path = "../examples/many_points.rs"]
+mod many_points;
+
+/// The number of stops of a report (the slider's `max` + 1).
+fn stops_in(html: &str) -> usize {
+    let at = html
+        .find("id=\"alpha\" min=\"0\" max=\"")
+        .expect("a slider")
+        + 24;
+    let end = html[at..].find('"').unwrap() + at;
+    html[at..end].parse::<usize>().unwrap() + 1
+}
+
+#[test]
+fn a_report_of_200_points_stays_under_5_mb_with_every_part() {
+    let text = many_points::job(200, 2, 1).to_string();
+    let job = t2spline_io::parse_job(&text, "generated").unwrap();
+    let start = Alpha::try_new(0.8).unwrap();
+    let html = render_report(&job, &text, start, &FigureOptions::default()).unwrap();
+    assert!(html.len() < 5_000_000, "{} bytes", html.len());
+    // Coarser than 0.01, finer than 0.25: at least 0, 0.1, …, 1 and both heights.
+    let n = stops_in(&html);
+    assert!((13..101).contains(&n), "{n} stops");
+    let grid = [100, 50, 20, 10, 4].map(|k| Stops::new(&job, start, k).alphas.len());
+    assert!(grid.contains(&n), "{n} stops is one of the grids {grid:?}");
+    for id in [
+        "number", "stage1", "stage2", "stage3", "stage4", "distance", "sweep", "job",
+    ] {
+        assert!(html.contains(&format!("<section id=\"{id}\">")), "{id}");
+    }
+    assert_eq!(html.matches("data-svg=").count(), 7);
+    assert_eq!(html.matches("data-file=\"stage").count(), 4);
+    // Tables list the first 12 points and say where the others are.
+    assert!(html.contains("the other 188 are in the downloads"));
+}
