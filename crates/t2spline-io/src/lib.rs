@@ -42,12 +42,24 @@ mod error;
 mod finite;
 mod fit_data;
 pub mod job;
+mod number;
+#[cfg(feature = "parquet")]
+mod parquet;
 mod pretty;
+mod summary;
+mod table;
+mod target;
+mod temporary;
 
-pub use crate::atomic::{write_all_atomic, write_atomic, Staged};
+pub use crate::atomic::{sync_file_systems, write_all_atomic, write_atomic, Staged};
 pub use crate::csv::{render_csv, stage_csv, write_csv, CSV_FILES, DERIVATIVES_CSV};
 pub use error::{Error, Problem};
 pub use finite::check_finite;
 pub use fit_data::FitData;
 pub use job::{job_json, parse_data, parse_job, read_data, read_job};
+#[cfg(feature = "parquet")]
+pub use parquet::{write_parquet, write_summary_parquet};
 pub use pretty::{to_json_pretty, write_json_pretty};
+pub use summary::{write_summary_csv, JobSummary, SUMMARY_COLUMNS};
+pub use target::same_file;
+pub use temporary::remove_temporary_files;
