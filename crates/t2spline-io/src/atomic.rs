@@ -373,4 +373,82 @@ mod tests {
         write_atomic(&path, b"b").unwrap();
         assert_eq!(mode(&path), 0o640);
     }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_symbolic_link_keeps_pointing_to_the_new_content() {
+        let dir = tempfile::tempdir().unwrap();
+        let file = dir.path().join("real.json");
+        let link = dir.path().join("link.json");
+        std::fs::write(&file, b"old").unwrap();
+        std::os::unix::fs::symlink("real.json", &link).unwrap();
+        write_atomic(&link, b"new").unwrap();
+        assert!(std::fs::symlink_metadata(&link).unwrap().file_type().is_symlink());
+        assert_eq!(std::fs::read(&file).unwrap(), b"new");
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 2);
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_fifo_is_written_through_after_the_files() {
+        let dir = tempfile::tempdir().unwrap();
+        let fifo = dir.path().join("pipe");
+        let made = std::process::Command::new("mkfifo").arg(&fifo).status().unwrap();
+        assert!(made.success());
+        let reader = {
+            let fifo = fifo.clone();
+            std::thread::spawn(move || std::fs::read(fifo).unwrap())
+        };
+        let file = dir.path().join("a.csv");
+        let mut staged = Staged::default();
+        staged.add(&fifo, |w| w.write_all(b"through")).unwrap();
+        staged.add(&file, |w| w.write_all(b"file")).unwrap();
+        staged.commit().unwrap();
+        assert_eq!(reader.join().unwrap(), b"through");
+        assert_eq!(std::fs::read(&file).unwrap(), b"file");
+        assert!(!std::fs::symlink_metadata(&fifo).unwrap().is_file());
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_hard_linked_file_is_refused_and_left_as_it_was() {
+        let dir = tempfile::tempdir().unwrap();
+        let file = dir.path().join("a.json");
+        std::fs::write(&file, b"old").unwrap();
+        std::fs::hard_link(&file, dir.path().join("b.json")).unwrap();
+        let e = write_atomic(&file, b"new").unwrap_err();
+        assert!(e.lines()[0].contains("a.json: cannot write: the file has 2 hard links"), "{e:?}");
+        assert_eq!(std::fs::read(dir.path().join("b.json")).unwrap(), b"old");
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 2);
+    }
+
+    #[test]
+    fn stale_files_go_at_the_commit_only() {
+        let dir = tempfile::tempdir().unwrap();
+        let stale = dir.path().join("derivatives.csv");
+        std::fs::write(&stale, b"old").unwrap();
+        let mut staged = Staged::default();
+        staged.remove_stale(&stale);
+        staged.remove_stale(&dir.path().join("absent.csv"));
+        staged.add(&dir.path().join("a.csv"), |w| w.write_all(b"a")).unwrap();
+        drop(staged);
+        assert!(stale.exists(), "removed without a commit");
+        let mut staged = Staged::default();
+        staged.remove_stale(&stale);
+        staged.add(&dir.path().join("a.csv"), |w| w.write_all(b"a")).unwrap();
+        staged.commit().unwrap();
+        assert!(!stale.exists());
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
+    }
+
+    #[test]
+    fn deferred_outputs_are_complete_and_flushed_later() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("a.json");
+        let mut staged = Staged::deferring_sync();
+        staged.add(&path, |w| w.write_all(b"{}")).unwrap();
+        staged.commit().unwrap();
+        assert_eq!(std::fs::read(&path).unwrap(), b"{}");
+        sync_file_systems(&[path]).unwrap();
+    }
 }

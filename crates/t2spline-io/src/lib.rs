@@ -61,5 +61,4 @@ pub use job::{job_json, parse_data, parse_job, read_data, read_job};
 pub use parquet::{write_parquet, write_summary_parquet};
 pub use pretty::{to_json_pretty, write_json_pretty};
 pub use summary::{write_summary_csv, JobSummary, SUMMARY_COLUMNS};
-pub use target::same_file;
 pub use temporary::remove_temporary_files;

@@ -10,7 +10,7 @@ use t2spline_io::{parse_job, to_json_pretty, FitData};
 
 use super::settings::OptionError;
 use crate::cli::FitArgs;
-use crate::output::{job_name, read_data, Outputs};
+use crate::output::{is_stdio, job_name, read_data, Inputs, Outputs};
 
 /// Condition numbers above this get a warning: the control points may then
 /// be wrong in their last eight digits or more.
@@ -34,6 +34,9 @@ impl Plan {
             .map_err(|e: String| anyhow!(e))?;
         let mode: FuzzyFitMode = args.fuzzy_fit.parse().map_err(|e: String| anyhow!(e))?;
         let data = read_data(&args.data)?;
+        if let Some(output) = args.output.as_deref().filter(|p| !is_stdio(p)) {
+            Inputs::of([args.data.as_path()]).check("--output", output)?;
+        }
         if let Some(m) = args.control_points {
             let (min, max) = (data.degree + 1, data.len());
             if m < min || m > max {
