@@ -8,6 +8,7 @@ use std::collections::BTreeMap;
 
 use parquet::basic::Type as Physical;
 use parquet::file::reader::{FileReader, SerializedFileReader};
+use parquet::record::RowAccessor;
 use proptest::prelude::*;
 use t2spline::job::{Job, Model, RunOutput, Samples, Settings};
 use t2spline::{strategies, Alpha};
@@ -186,7 +187,7 @@ fn a_summary_with_nulls() {
     assert_eq!(
         rows,
         [
-            r#"{name: "a", file: "jobs/a.json", status: "ok", regime: "alpha > h", alpha: 0.8, error_max: 0.044, error_rms: 0.00000000000000000001, message: null}"#,
+            r#"{name: "a", file: "jobs/a.json", status: "ok", regime: "alpha > h", alpha: 0.8, error_max: 0.044, error_rms: 1E-20, message: null}"#,
             r#"{name: "b", file: "jobs/b.json", status: "invalid", regime: null, alpha: null, error_max: null, error_rms: null, message: "jobs/b.json:1:2: alhpa: unknown key"}"#
         ]
     );
