@@ -1,5 +1,5 @@
 //! Writing the result of the shipped example at 10⁶ samples (about 700 MB
-//! of JSON, 720 MB of CSV): each writer beside a plain write of the same
+//! of JSON, 720 MB of CSV, 230 MB of Parquet): each writer beside a plain write of the same
 //! number of bytes into the same folder, in one run, so that the ratio holds
 //! on a noisy machine. Criterion prints both as bytes per second.
 //!
@@ -109,6 +109,32 @@ fn bench(c: &mut Criterion) {
             let mut staged = Staged::default();
             staged
                 .add(&csv.join("plain.csv"), |w| plain(w, csv_bytes))
+                .expect("written");
+        });
+    });
+    // Parquet: the time of one file, beside a plain write of its size.
+    let parquet = dir.path().join("result.parquet");
+    let parquet_bytes = {
+        let mut n = Count(0);
+        t2spline_io::write_parquet(&mut n, &result).expect("counting");
+        n.0
+    };
+    g.throughput(Throughput::Bytes(parquet_bytes));
+    g.bench_function("parquet", |b| {
+        b.iter(|| {
+            let mut staged = Staged::default();
+            staged
+                .add(&parquet, |w| {
+                    t2spline_io::write_parquet(w, black_box(&result))
+                })
+                .expect("written");
+        });
+    });
+    g.bench_function("plain-write-of-parquet-size", |b| {
+        b.iter(|| {
+            let mut staged = Staged::default();
+            staged
+                .add(&parquet, |w| plain(w, parquet_bytes))
                 .expect("written");
         });
     });

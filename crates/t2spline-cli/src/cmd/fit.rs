@@ -33,10 +33,10 @@ impl Plan {
             .parse()
             .map_err(|e: String| anyhow!(e))?;
         let mode: FuzzyFitMode = args.fuzzy_fit.parse().map_err(|e: String| anyhow!(e))?;
-        let data = read_data(&args.data)?;
         if let Some(output) = args.output.as_deref().filter(|p| !is_stdio(p)) {
             Inputs::of([args.data.as_path()]).check("--output", output)?;
         }
+        let data = read_data(&args.data)?;
         if let Some(m) = args.control_points {
             let (min, max) = (data.degree + 1, data.len());
             if m < min || m > max {

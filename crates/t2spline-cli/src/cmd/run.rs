@@ -96,14 +96,14 @@ struct Plan {
 
 impl Plan {
     fn new(args: RunArgs, path: &Path) -> anyhow::Result<Plan> {
-        let (job, text) = read_job_text(path)?;
-        let settings = settings(&job, &overrides(&args), path, &text)?;
         let out = Destinations {
-            json: args.output.filter(|p| !is_stdio(p)),
-            csv: args.csv,
-            parquet: args.parquet,
+            json: args.output.clone().filter(|p| !is_stdio(p)),
+            csv: args.csv.clone(),
+            parquet: args.parquet.clone(),
         };
         out.check(&Inputs::of([path]))?;
+        let (job, text) = read_job_text(path)?;
+        let settings = settings(&job, &overrides(&args), path, &text)?;
         Ok(Plan { job, settings, out })
     }
 }
