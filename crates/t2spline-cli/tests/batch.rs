@@ -77,8 +77,18 @@ fn every_good_job_is_written_and_every_bad_one_reported() {
     let o_dir = out.path().join("results");
     let [a, b, c] = ["a", "b", "c"].map(|n| input.path().join(format!("{n}.json")));
     let o = run(&[
-        "run", s(&a), s(&b), s(&c), "-o", s(&o_dir), "--csv", s(&o_dir), "--parquet", s(&o_dir),
-        "--samples", "33",
+        "run",
+        s(&a),
+        s(&b),
+        s(&c),
+        "-o",
+        s(&o_dir),
+        "--csv",
+        s(&o_dir),
+        "--parquet",
+        s(&o_dir),
+        "--samples",
+        "33",
     ]);
     assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
     let err = stderr(&o);
@@ -95,7 +105,11 @@ fn every_good_job_is_written_and_every_bad_one_reported() {
     );
     for (name, job) in [("a", &a), ("c", &c)] {
         let (json, csv) = alone(job, &["--samples", "33"]);
-        assert_eq!(std::fs::read(o_dir.join(format!("{name}.json"))).unwrap(), json, "{name}");
+        assert_eq!(
+            std::fs::read(o_dir.join(format!("{name}.json"))).unwrap(),
+            json,
+            "{name}"
+        );
         assert_eq!(files(&o_dir.join(name)), csv, "{name}");
         let parquet = std::fs::read(o_dir.join(format!("{name}.parquet"))).unwrap();
         assert!(parquet.starts_with(b"PAR1") && parquet.ends_with(b"PAR1"));
@@ -103,13 +117,30 @@ fn every_good_job_is_written_and_every_bad_one_reported() {
     assert!(!o_dir.join("b.json").exists() && !o_dir.join("b").exists());
     let summary = std::fs::read_to_string(o_dir.join("summary.csv")).unwrap();
     let lines: Vec<&str> = summary.lines().collect();
-    assert_eq!(lines[0], "name,file,status,regime,alpha,error_max,error_rms,message");
-    assert!(lines[1].starts_with(&format!("a,{},ok,alpha > h,0.8,0.0224", s(&a))), "{}", lines[1]);
-    assert!(lines[2].starts_with(&format!("b,{},invalid,,,,,", s(&b))), "{}", lines[2]);
+    assert_eq!(
+        lines[0],
+        "name,file,status,regime,alpha,error_max,error_rms,message"
+    );
+    assert!(
+        lines[1].starts_with(&format!("a,{},ok,alpha > h,0.8,0.0224", s(&a))),
+        "{}",
+        lines[1]
+    );
+    assert!(
+        lines[2].starts_with(&format!("b,{},invalid,,,,,", s(&b))),
+        "{}",
+        lines[2]
+    );
     assert!(lines[2].contains(":3:3: alhpa"), "{}", lines[2]);
-    assert!(lines[3].starts_with(&format!("c,{},ok,", s(&c))), "{}", lines[3]);
+    assert!(
+        lines[3].starts_with(&format!("c,{},ok,", s(&c))),
+        "{}",
+        lines[3]
+    );
     assert_eq!(lines.len(), 4);
-    assert!(std::fs::read(o_dir.join("summary.parquet")).unwrap().starts_with(b"PAR1"));
+    assert!(std::fs::read(o_dir.join("summary.parquet"))
+        .unwrap()
+        .starts_with(b"PAR1"));
 }
 
 #[test]
@@ -144,7 +175,11 @@ fn the_exit_code_is_the_worst_failure() {
     ]);
     // An invalid job (2) and an unreadable one (3): 3.
     assert_eq!(o.status.code(), Some(3), "{}", stderr(&o));
-    assert!(stderr(&o).contains("missing.json: cannot read"), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("missing.json: cannot read"),
+        "{}",
+        stderr(&o)
+    );
     assert!(stderr(&o).contains("2 of 4 jobs failed"), "{}", stderr(&o));
     let summary = std::fs::read_to_string(out.path().join("summary.csv")).unwrap();
     assert!(summary.contains(",unreadable,"), "{summary}");
@@ -161,10 +196,19 @@ fn usage_errors_come_before_any_job_runs() {
     let original = std::fs::read(&a).unwrap();
     let cases: [(Vec<&str>, &str); 4] = [
         (vec!["run", s(&a), s(&c)], "give a folder for them, -o DIR"),
-        (vec!["run", s(&a), s(&a2), "-o", s(other.path())], "would both write a.json"),
-        (vec!["run", s(&a), "-", "-o", s(other.path())], "standard input"),
+        (
+            vec!["run", s(&a), s(&a2), "-o", s(other.path())],
+            "would both write a.json",
+        ),
+        (
+            vec!["run", s(&a), "-", "-o", s(other.path())],
+            "standard input",
+        ),
         // The outputs of a folder of jobs written into that folder.
-        (vec!["run", "--jobs", s(input.path()), "-o", s(input.path())], "is the input file"),
+        (
+            vec!["run", "--jobs", s(input.path()), "-o", s(input.path())],
+            "is the input file",
+        ),
     ];
     for (args, message) in cases {
         let o = run(&args);

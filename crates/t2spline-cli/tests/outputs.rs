@@ -49,7 +49,11 @@ fn names(dir: &Path) -> Vec<String> {
 fn a_fifo_gets_the_result_and_stays_a_fifo() {
     let dir = tempfile::tempdir().unwrap();
     let fifo = dir.path().join("pipe");
-    assert!(Command::new("mkfifo").arg(&fifo).status().unwrap().success());
+    assert!(Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .unwrap()
+        .success());
     let reader = {
         let fifo = fifo.clone();
         std::thread::spawn(move || std::fs::read(fifo).unwrap())
@@ -93,7 +97,10 @@ fn a_symbolic_link_is_followed_and_kept() {
     std::os::unix::fs::symlink("real.json", &link).unwrap();
     let o = run(&["run", s(&example()), "-o", s(&link)]);
     assert!(o.status.success(), "{}", stderr(&o));
-    assert!(std::fs::symlink_metadata(&link).unwrap().file_type().is_symlink());
+    assert!(std::fs::symlink_metadata(&link)
+        .unwrap()
+        .file_type()
+        .is_symlink());
     assert_eq!(std::fs::read(&real).unwrap(), expected());
     assert_eq!(names(dir.path()), ["link.json", "real.json"]);
 }
@@ -106,7 +113,11 @@ fn a_hard_linked_output_is_refused_with_exit_4() {
     std::fs::hard_link(&a, dir.path().join("b.json")).unwrap();
     let o = run(&["run", s(&example()), "-o", s(&a)]);
     assert_eq!(o.status.code(), Some(4), "{}", stderr(&o));
-    assert!(stderr(&o).contains("a.json: cannot write: the file has 2 hard links"), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("a.json: cannot write: the file has 2 hard links"),
+        "{}",
+        stderr(&o)
+    );
     assert_eq!(std::fs::read(dir.path().join("b.json")).unwrap(), b"old");
     assert_eq!(names(dir.path()), ["a.json", "b.json"]);
 }
@@ -127,7 +138,11 @@ fn an_output_never_overwrites_its_input() {
     ] {
         let o = run(&args);
         assert_eq!(o.status.code(), Some(2), "{args:?}: {}", stderr(&o));
-        assert!(stderr(&o).contains("is the input file"), "{args:?}: {}", stderr(&o));
+        assert!(
+            stderr(&o).contains("is the input file"),
+            "{args:?}: {}",
+            stderr(&o)
+        );
         assert_eq!(std::fs::read(&job).unwrap(), original, "{args:?}");
     }
     // A job named like a CSV file in the CSV folder.
@@ -239,7 +254,10 @@ fn a_signal_while_writing_removes_the_temporary_files() {
         let start = std::time::Instant::now();
         while temporaries(dir.path()).is_empty() {
             assert!(child.try_wait().unwrap().is_none(), "ended before writing");
-            assert!(start.elapsed().as_secs() < 300, "no temporary file appeared");
+            assert!(
+                start.elapsed().as_secs() < 300,
+                "no temporary file appeared"
+            );
             std::thread::sleep(std::time::Duration::from_millis(5));
         }
         let sent = Command::new("kill")
@@ -249,7 +267,11 @@ fn a_signal_while_writing_removes_the_temporary_files() {
         assert!(sent.success());
         let status = child.wait().unwrap();
         assert_eq!(status.signal(), Some(number), "{status:?}");
-        assert_eq!(temporaries(dir.path()), Vec::<PathBuf>::new(), "SIG{signal}");
+        assert_eq!(
+            temporaries(dir.path()),
+            Vec::<PathBuf>::new(),
+            "SIG{signal}"
+        );
         assert!(!out.exists(), "SIG{signal}: a result appeared");
     }
 }

@@ -94,7 +94,9 @@ fn bench(c: &mut Criterion) {
     g.bench_function("plain-write-of-json-size", |b| {
         b.iter(|| {
             let mut staged = Staged::default();
-            staged.add(&json, |w| plain(w, json_bytes)).expect("written");
+            staged
+                .add(&json, |w| plain(w, json_bytes))
+                .expect("written");
         });
     });
     g.throughput(Throughput::Bytes(csv_bytes));

@@ -206,9 +206,7 @@ impl<'a> Staged<'a> {
     pub fn commit(self) -> Result<(), Error> {
         if self.durable {
             for (_, shown, file) in &self.files {
-                file.file()
-                    .sync_all()
-                    .map_err(|e| write_error(shown, e))?;
+                file.file().sync_all().map_err(|e| write_error(shown, e))?;
             }
         }
         let mut dirs: Vec<PathBuf> = Vec::new();
@@ -383,7 +381,10 @@ mod tests {
         std::fs::write(&file, b"old").unwrap();
         std::os::unix::fs::symlink("real.json", &link).unwrap();
         write_atomic(&link, b"new").unwrap();
-        assert!(std::fs::symlink_metadata(&link).unwrap().file_type().is_symlink());
+        assert!(std::fs::symlink_metadata(&link)
+            .unwrap()
+            .file_type()
+            .is_symlink());
         assert_eq!(std::fs::read(&file).unwrap(), b"new");
         assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 2);
     }
@@ -393,7 +394,10 @@ mod tests {
     fn a_fifo_is_written_through_after_the_files() {
         let dir = tempfile::tempdir().unwrap();
         let fifo = dir.path().join("pipe");
-        let made = std::process::Command::new("mkfifo").arg(&fifo).status().unwrap();
+        let made = std::process::Command::new("mkfifo")
+            .arg(&fifo)
+            .status()
+            .unwrap();
         assert!(made.success());
         let reader = {
             let fifo = fifo.clone();
@@ -417,7 +421,10 @@ mod tests {
         std::fs::write(&file, b"old").unwrap();
         std::fs::hard_link(&file, dir.path().join("b.json")).unwrap();
         let e = write_atomic(&file, b"new").unwrap_err();
-        assert!(e.lines()[0].contains("a.json: cannot write: the file has 2 hard links"), "{e:?}");
+        assert!(
+            e.lines()[0].contains("a.json: cannot write: the file has 2 hard links"),
+            "{e:?}"
+        );
         assert_eq!(std::fs::read(dir.path().join("b.json")).unwrap(), b"old");
         assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 2);
     }
@@ -430,12 +437,16 @@ mod tests {
         let mut staged = Staged::default();
         staged.remove_stale(&stale);
         staged.remove_stale(&dir.path().join("absent.csv"));
-        staged.add(&dir.path().join("a.csv"), |w| w.write_all(b"a")).unwrap();
+        staged
+            .add(&dir.path().join("a.csv"), |w| w.write_all(b"a"))
+            .unwrap();
         drop(staged);
         assert!(stale.exists(), "removed without a commit");
         let mut staged = Staged::default();
         staged.remove_stale(&stale);
-        staged.add(&dir.path().join("a.csv"), |w| w.write_all(b"a")).unwrap();
+        staged
+            .add(&dir.path().join("a.csv"), |w| w.write_all(b"a"))
+            .unwrap();
         staged.commit().unwrap();
         assert!(!stale.exists());
         assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);

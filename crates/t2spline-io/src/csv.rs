@@ -128,7 +128,9 @@ pub fn stage_csv<'a>(
         .into_iter()
         .map(|(name, table)| {
             let path = dir.join(name);
-            staged.add(&path, move |w| write_table(&table, w)).map(|()| path)
+            staged
+                .add(&path, move |w| write_table(&table, w))
+                .map(|()| path)
         })
         .collect()
 }

@@ -122,7 +122,10 @@ mod tests {
         for k in -320..=308 {
             let p: f64 = format!("1e{k}").parse().unwrap();
             // The neighbours of the power, one ulp either side.
-            let (up, down) = (f64::from_bits(p.to_bits() + 1), f64::from_bits(p.to_bits() - 1));
+            let (up, down) = (
+                f64::from_bits(p.to_bits() + 1),
+                f64::from_bits(p.to_bits() - 1),
+            );
             v.extend([p, -p, up, down, 1.5 * p, 7.0 / 3.0 * p]);
         }
         v.into_iter().filter(|x| x.is_finite()).collect()
@@ -146,7 +149,11 @@ mod tests {
     fn csv_is_nums_text_at_every_edge() {
         for x in edges() {
             let text = as_csv(x);
-            assert!(agrees_with_num(&text, x), "{x:e}: {text} against {}", Num(x));
+            assert!(
+                agrees_with_num(&text, x),
+                "{x:e}: {text} against {}",
+                Num(x)
+            );
         }
     }
 

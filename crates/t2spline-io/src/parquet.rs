@@ -4,14 +4,18 @@
 //! Written with the `parquet` crate's column writers, which take `&[f64]`
 //! straight from the result's vectors: no Arrow arrays, no copy of the
 //! result. Columns are `DOUBLE` (float64) and required, except the optional
-//! ones of the summary; encoding `PLAIN` (dictionaries are useless for a
-//! million distinct floats), no compression (see ARCHITECTURE.md), page
-//! statistics on, so engines can skip pages by value.
+//! ones of the summary. Floats are encoded `BYTE_STREAM_SPLIT` (the k-th
+//! bytes of all values together, so that the sign, exponent and leading
+//! mantissa bytes of neighbouring samples, nearly equal on a smooth curve,
+//! sit side by side) and compressed with Snappy: 60 % of the plain size for
+//! the shipped example (see ARCHITECTURE.md); no dictionaries (useless for a
+//! million distinct floats); page statistics on, so engines can skip pages
+//! by value.
 
 use std::io::Write;
 use std::sync::Arc;
 
-use parquet::basic::{Compression, LogicalType, Repetition, Type as Physical};
+use parquet::basic::{Compression, Encoding, LogicalType, Repetition, Type as Physical};
 use parquet::data_type::{ByteArray, ByteArrayType, DoubleType};
 use parquet::errors::ParquetError;
 use parquet::file::metadata::KeyValue;
@@ -72,21 +76,28 @@ fn metadata(result: &RunOutput) -> Result<Vec<KeyValue>, serde_json::Error> {
         serde_json::to_string(&result.control_points)?,
     ));
     pairs.push(("error".into(), serde_json::to_string(&result.error)?));
-    Ok(pairs.into_iter().map(|(k, v)| KeyValue::new(k, v)).collect())
+    Ok(pairs
+        .into_iter()
+        .map(|(k, v)| KeyValue::new(k, v))
+        .collect())
 }
 
-/// The writer's settings: plain encoding, no compression, our name.
-fn properties(metadata: Vec<KeyValue>) -> Arc<WriterProperties> {
-    Arc::new(
-        WriterProperties::builder()
-            .set_writer_version(WriterVersion::PARQUET_1_0)
-            .set_compression(Compression::UNCOMPRESSED)
-            .set_dictionary_enabled(false)
-            .set_max_row_group_size(ROW_GROUP)
-            .set_created_by(format!("t2spline {}", env!("CARGO_PKG_VERSION")))
-            .set_key_value_metadata(Some(metadata))
-            .build(),
-    )
+/// The writer's settings: Snappy compression, no dictionaries, our name;
+/// for columns of floats (`split`) the byte-stream-split encoding.
+fn properties(metadata: Vec<KeyValue>, split: bool) -> Arc<WriterProperties> {
+    let builder = WriterProperties::builder()
+        .set_writer_version(WriterVersion::PARQUET_1_0)
+        .set_compression(Compression::SNAPPY)
+        .set_dictionary_enabled(false)
+        .set_max_row_group_size(ROW_GROUP)
+        .set_created_by(format!("t2spline {}", env!("CARGO_PKG_VERSION")))
+        .set_key_value_metadata(Some(metadata));
+    let builder = if split {
+        builder.set_encoding(Encoding::BYTE_STREAM_SPLIT)
+    } else {
+        builder
+    };
+    Arc::new(builder.build())
 }
 
 /// A required `DOUBLE` column.
@@ -154,7 +165,7 @@ fn write_table<W: Write + Send>(
         .iter()
         .map(|c| double(&c.name))
         .collect::<Result<_, _>>()?;
-    let mut file = SerializedFileWriter::new(writer, schema(fields)?, properties(metadata))?;
+    let mut file = SerializedFileWriter::new(writer, schema(fields)?, properties(metadata, true))?;
     let mut scratch = Vec::new();
     for start in (0..table.rows).step_by(ROW_GROUP) {
         let end = (start + ROW_GROUP).min(table.rows);
@@ -231,7 +242,8 @@ fn write_summary<W: Write + Send>(
         optional_double(rms)?,
         text(message, OPTIONAL)?,
     ];
-    let mut out = SerializedFileWriter::new(writer, schema(fields)?, properties(Vec::new()))?;
+    let mut out =
+        SerializedFileWriter::new(writer, schema(fields)?, properties(Vec::new(), false))?;
     let mut group = out.next_row_group()?;
     let strings = |f: &dyn Fn(&crate::JobSummary) -> Option<&str>| {
         optional(jobs.iter().map(|j| f(j).map(ByteArray::from)))
@@ -246,7 +258,8 @@ fn write_summary<W: Write + Send>(
     for (k, (values, levels)) in columns_of_text.iter().enumerate() {
         let mut c = next(&mut group)?;
         let levels = (k == 3).then_some(&levels[..]);
-        c.typed::<ByteArrayType>().write_batch(values, levels, None)?;
+        c.typed::<ByteArrayType>()
+            .write_batch(values, levels, None)?;
         c.close()?;
     }
     for (values, levels) in [

@@ -147,7 +147,10 @@ impl<'a> Families<'a> {
                 named("crisp", &c.crisp),
                 named("right", &c.type_reduced.right),
             ],
-            stage4: vec![named("crisp", &c.crisp), named("defuzzified", &c.defuzzified)],
+            stage4: vec![
+                named("crisp", &c.crisp),
+                named("defuzzified", &c.defuzzified),
+            ],
             derivatives: c.derivatives.as_ref().map(|d| {
                 [("crisp", &d.crisp), ("defuzzified", &d.defuzzified)]
                     .into_iter()
@@ -187,7 +190,10 @@ pub(crate) fn csv_tables<'r>(result: &'r RunOutput) -> Vec<(&'static str, Table<
         (crate::CSV_FILES[0].0, table(&f.stage1, None)),
         (crate::CSV_FILES[1].0, table(&f.stage2, None)),
         (crate::CSV_FILES[2].0, table(&f.stage3, None)),
-        (crate::CSV_FILES[3].0, table(&f.stage4, Some(distance(result)))),
+        (
+            crate::CSV_FILES[3].0,
+            table(&f.stage4, Some(distance(result))),
+        ),
     ];
     if let Some(d) = &f.derivatives {
         tables.push((crate::DERIVATIVES_CSV, table(d, None)));

@@ -102,10 +102,21 @@ mod tests {
         let file = dir.path().join("a.json");
         std::fs::write(&file, "x").unwrap();
         let new = dir.path().join("new.json");
-        assert!(matches!(resolve(&new).unwrap(), Target::File { path, permissions: None } if path == new));
-        assert!(matches!(resolve(&file).unwrap(), Target::File { permissions: Some(_), .. }));
+        assert!(
+            matches!(resolve(&new).unwrap(), Target::File { path, permissions: None } if path == new)
+        );
+        assert!(matches!(
+            resolve(&file).unwrap(),
+            Target::File {
+                permissions: Some(_),
+                ..
+            }
+        ));
         let fifo = dir.path().join("fifo");
-        let made = std::process::Command::new("mkfifo").arg(&fifo).status().unwrap();
+        let made = std::process::Command::new("mkfifo")
+            .arg(&fifo)
+            .status()
+            .unwrap();
         assert!(made.success());
         assert!(matches!(resolve(&fifo).unwrap(), Target::Stream(_)));
         let e = resolve(dir.path()).unwrap_err();
@@ -121,7 +132,10 @@ mod tests {
         std::os::unix::fs::symlink(dir.path().join("b"), dir.path().join("c")).unwrap();
         match resolve(&dir.path().join("c")).unwrap() {
             Target::File { path, .. } => {
-                assert_eq!(std::fs::canonicalize(path).unwrap(), std::fs::canonicalize(&file).unwrap());
+                assert_eq!(
+                    std::fs::canonicalize(path).unwrap(),
+                    std::fs::canonicalize(&file).unwrap()
+                );
             }
             t => panic!("{t:?}"),
         }

@@ -57,12 +57,20 @@ fn csv_columns(result: &RunOutput) -> Columns {
     let mut out: Columns = Vec::new();
     for (file, text) in render_csv(result) {
         let mut lines = text.lines();
-        let header: Vec<String> = lines.next().unwrap().split(',').map(str::to_owned).collect();
+        let header: Vec<String> = lines
+            .next()
+            .unwrap()
+            .split(',')
+            .map(str::to_owned)
+            .collect();
         let rows: Vec<Vec<f64>> = lines
             .map(|l| l.split(',').map(|x| x.parse().unwrap()).collect())
             .collect();
         for (i, name) in header.iter().enumerate() {
-            let name = if file == "stage2-alpha-cut.csv" && !["t", "u", "v"].contains(&name.as_str()) && !name.starts_with("crisp_") {
+            let name = if file == "stage2-alpha-cut.csv"
+                && !["t", "u", "v"].contains(&name.as_str())
+                && !name.starts_with("crisp_")
+            {
                 format!("alpha_cut_{name}")
             } else {
                 name.clone()
@@ -121,7 +129,10 @@ fn settings(a: f64, samples: Samples, derivatives: Option<usize>) -> Settings {
 
 #[test]
 fn the_example_with_derivatives() {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/paper-alg-1-1.json");
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../examples/paper-alg-1-1.json"
+    );
     let job = t2spline_io::read_job(std::path::Path::new(path)).unwrap();
     for (a, d) in [(0.8, None), (0.3, Some(2))] {
         let result = job.run(&settings(a, Samples::Along(33), d)).unwrap();
@@ -136,7 +147,10 @@ fn the_example_with_derivatives() {
     // alpha 0.8 > h = 0.6: no lower cut.
     assert!(names.contains(&"alpha_cut_primary_left_x"));
     assert!(!names.iter().any(|n| n.starts_with("alpha_cut_lower")));
-    assert_eq!(names[names.len() - 3..], ["defuzzified_x", "defuzzified_y", "distance"]);
+    assert_eq!(
+        names[names.len() - 3..],
+        ["defuzzified_x", "defuzzified_y", "distance"]
+    );
     assert_eq!(kv["regime"], "\"alpha > h\"");
     assert_eq!(kv["alpha"], "0.8");
 }

@@ -123,10 +123,7 @@ impl Batch {
             if name.is_empty() || (name == "summary" && args.parquet.is_some()) {
                 return Err(usage(
                     "JOB",
-                    format!(
-                        "{}: no output can be named after this file",
-                        path.display()
-                    ),
+                    format!("{}: no output can be named after this file", path.display()),
                 ));
             }
             if let Some(other) = seen.insert(name.clone(), path.clone()) {
@@ -251,9 +248,13 @@ fn message(path: &Path, e: &anyhow::Error) -> Vec<String> {
 pub fn run(args: RunArgs) -> anyhow::Result<()> {
     let batch = Batch::new(args)?;
     let mut folders = NewFolders::default();
-    for dir in [Some(&batch.output), batch.csv.as_ref(), batch.parquet.as_ref()]
-        .into_iter()
-        .flatten()
+    for dir in [
+        Some(&batch.output),
+        batch.csv.as_ref(),
+        batch.parquet.as_ref(),
+    ]
+    .into_iter()
+    .flatten()
     {
         folders.create(dir)?;
     }
@@ -282,7 +283,10 @@ pub fn run(args: RunArgs) -> anyhow::Result<()> {
         })?;
     }
     staged.commit()?;
-    let failed = rows.iter().filter(|r| r.status != Exit::Ok.status()).count();
+    let failed = rows
+        .iter()
+        .filter(|r| r.status != Exit::Ok.status())
+        .count();
     if failed > 0 {
         return Err(JobsFailed {
             failed,
