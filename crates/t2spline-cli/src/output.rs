@@ -87,7 +87,10 @@ fn stdout_was_closed() -> bool {
     ) else {
         return false;
     };
-    flags & OFlags::RWMODE == OFlags::RDWR && u64::from(stat.st_rdev) == null.rdev()
+    // `st_rdev` is a `u64` on some targets and a `c_ulong` on others.
+    #[allow(clippy::useless_conversion)]
+    let device = u64::from(stat.st_rdev);
+    flags & OFlags::RWMODE == OFlags::RDWR && device == null.rdev()
 }
 
 #[cfg(not(unix))]

@@ -114,11 +114,22 @@ fn bench(c: &mut Criterion) {
                 .expect("written");
         });
     });
-    // Parquet: the time of one file, beside a plain write of its size.
-    let parquet = dir.path().join("result.parquet");
+    #[cfg(feature = "parquet")]
+    parquet(&mut g, dir.path(), &result);
+    g.finish();
+}
+
+/// Parquet: the time of one file, beside a plain write of its size.
+#[cfg(feature = "parquet")]
+fn parquet(
+    g: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
+    dir: &Path,
+    result: &RunOutput,
+) {
+    let parquet = dir.join("result.parquet");
     let parquet_bytes = {
         let mut n = Count(0);
-        t2spline_io::write_parquet(&mut n, &result).expect("counting");
+        t2spline_io::write_parquet(&mut n, result).expect("counting");
         n.0
     };
     g.throughput(Throughput::Bytes(parquet_bytes));
@@ -127,7 +138,7 @@ fn bench(c: &mut Criterion) {
             let mut staged = Staged::default();
             staged
                 .add(&parquet, |w| {
-                    t2spline_io::write_parquet(w, black_box(&result))
+                    t2spline_io::write_parquet(w, black_box(result))
                 })
                 .expect("written");
         });
@@ -140,7 +151,6 @@ fn bench(c: &mut Criterion) {
                 .expect("written");
         });
     });
-    g.finish();
 }
 
 criterion_group!(benches, bench);

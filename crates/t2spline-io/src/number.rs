@@ -109,7 +109,6 @@ mod tests {
             1e17,
             1.5e-6,
             9.999999999999999e-6,
-            9.999999999999999e-7,
             9.999999999999998e15,
             123456789012345680.0,
             f64::MAX,
@@ -158,6 +157,8 @@ mod tests {
     }
 
     #[test]
+    // The value is exact (floats 0.25 apart there): its tie is the point.
+    #[allow(clippy::excessive_precision)]
     fn a_tie_takes_the_even_digit_as_json_does() {
         let x = -1245506687333402.25;
         assert_eq!(Num(x).to_string(), "-1245506687333402.3");

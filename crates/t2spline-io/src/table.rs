@@ -48,6 +48,7 @@ impl Values<'_> {
 
     /// The values of rows `rows`, borrowed when they are stored, else
     /// computed into `scratch`.
+    #[cfg(feature = "parquet")]
     pub(crate) fn rows<'s>(
         &'s self,
         rows: std::ops::Range<usize>,
@@ -207,6 +208,7 @@ pub(crate) fn csv_tables<'r>(result: &'r RunOutput) -> Vec<(&'static str, Table<
 /// prefixed, as the stage-2 file's names repeat stage 1's), `left_*`,
 /// `right_*`, `defuzzified_*`, `distance`, and the derivatives
 /// (`crisp_d1_x`, …).
+#[cfg(feature = "parquet")]
 pub(crate) fn one_table(result: &RunOutput) -> Table<'_> {
     let f = Families::of(result);
     let mut columns = parameters(&result.samples.params);
