@@ -11,10 +11,15 @@
 //!   one line, streamed without an intermediate tree.
 //! - [`render_csv`] / [`write_csv`] / [`stage_csv`]: the sampled curves as
 //!   CSV, one file per curve family.
+//! - `write_parquet` (feature `parquet`, default): the sampled curves as one
+//!   Apache Parquet table, the rest of the result as key-value metadata.
+//! - [`JobSummary`], [`write_summary_csv`] (and `write_summary_parquet`): the
+//!   summary of a run of many jobs.
 //! - [`check_finite`]: the last guard before writing, naming the first NaN or
 //!   infinity of an output by its path.
 //! - [`Staged`] / [`write_atomic`]: output files that are complete or absent,
-//!   never half written.
+//!   never half written; devices and FIFOs written through, symbolic links
+//!   followed; [`remove_temporary_files`] for a front end's signal handler.
 //! - [`parse_data`] / [`FitData`]: data files for `t2spline fit` (fuzzy data
 //!   points), and the fitted model written back as a job file.
 //!
@@ -42,6 +47,8 @@ mod error;
 mod finite;
 mod fit_data;
 pub mod job;
+#[cfg(feature = "parquet")]
+mod keys;
 mod number;
 #[cfg(feature = "parquet")]
 mod parquet;

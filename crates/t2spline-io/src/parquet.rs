@@ -22,9 +22,9 @@ use parquet::file::metadata::KeyValue;
 use parquet::file::properties::{WriterProperties, WriterVersion};
 use parquet::file::writer::SerializedFileWriter;
 use parquet::schema::types::Type;
-use serde_json::json;
-use t2spline::job::{RunOutput, Spline};
+use t2spline::job::RunOutput;
 
+use crate::keys::top_level_json;
 use crate::table::{one_table, Table};
 
 /// Rows per row group: large enough for a million samples in one, as
@@ -39,44 +39,7 @@ const CHUNK: usize = 1 << 16;
 /// but the samples, each value as compact JSON text (the same digits as the
 /// JSON file).
 fn metadata(result: &RunOutput) -> Result<Vec<KeyValue>, serde_json::Error> {
-    let spline = match &result.spline {
-        Spline::Curve {
-            order,
-            degree,
-            weights,
-            knots,
-            domain,
-        } => json!({
-            "order": order, "degree": degree, "weights": weights, "knots": knots, "domain": domain,
-        }),
-        Spline::Surface {
-            order,
-            degree,
-            weights,
-            knots,
-            domain,
-        } => json!({
-            "order": order, "degree": degree, "weights": weights,
-            "knots": {"u": knots[0], "v": knots[1]},
-            "domain": {"u": domain[0], "v": domain[1]},
-        }),
-    };
-    let mut pairs: Vec<(String, String)> = Vec::new();
-    if let Some(d) = &result.description {
-        pairs.push(("description".into(), serde_json::to_string(d)?));
-    }
-    pairs.push(("dimension".into(), result.dimension.to_string()));
-    if let serde_json::Value::Object(spline) = spline {
-        pairs.extend(spline.into_iter().map(|(k, v)| (k, v.to_string())));
-    }
-    pairs.push(("alpha".into(), serde_json::to_string(&result.alpha)?));
-    pairs.push(("regime".into(), serde_json::to_string(&result.regime)?));
-    pairs.push((
-        "control_points".into(),
-        serde_json::to_string(&result.control_points)?,
-    ));
-    pairs.push(("error".into(), serde_json::to_string(&result.error)?));
-    Ok(pairs
+    Ok(top_level_json(result, &["curves", "surfaces"])?
         .into_iter()
         .map(|(k, v)| KeyValue::new(k, v))
         .collect())
