@@ -40,7 +40,7 @@ macro_rules! refuse {
     )*};
 }
 
-impl<'a> Serializer for &'a mut Keys<'_> {
+impl Serializer for &mut Keys<'_> {
     type Ok = ();
     type Error = Error;
     type SerializeSeq = Impossible<(), Error>;
