@@ -18,7 +18,8 @@ pub struct Cli {
 /// The subcommands.
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// Run the four stages on a job file and write the result as JSON.
+    /// Run the four stages on a job file and write the result as JSON (also
+    /// CSV, Parquet); or on many job files in parallel.
     Run(RunArgs),
     /// Check a job file and report every problem in it.
     Validate(ValidateArgs),
@@ -43,10 +44,18 @@ pub enum Command {
 /// Arguments of `t2spline run`.
 #[derive(Debug, Args)]
 pub struct RunArgs {
-    /// The job file (JSON, see SPEC §8); `-` reads standard input.
-    pub job: PathBuf,
-    /// Write the result here instead of standard output (`-` is standard output).
-    #[arg(short, long, value_name = "OUT.json")]
+    /// The job file (JSON, see SPEC §8); `-` reads standard input. Several
+    /// job files run in parallel, one result each (see `-o`).
+    #[arg(value_name = "JOB", required_unless_present = "jobs")]
+    pub job: Vec<PathBuf>,
+    /// Also run every `*.json` file in this folder (in name order), as if
+    /// each were named after `run`.
+    #[arg(long, value_name = "DIR")]
+    pub jobs: Option<PathBuf>,
+    /// Write the result here instead of standard output (`-` is standard
+    /// output). With several jobs: the folder for `NAME.json` per job (from
+    /// the job file `NAME.json`) and `summary.csv`, created if missing.
+    #[arg(short, long, value_name = "OUT.json|DIR")]
     pub output: Option<PathBuf>,
     /// The level alpha in [0, 1]; overrides the job file.
     #[arg(long, value_name = "A", allow_negative_numbers = true)]
@@ -56,9 +65,15 @@ pub struct RunArgs {
     #[arg(long, value_name = "N|U,V", value_delimiter = ',', num_args = 1)]
     pub samples: Option<Vec<u64>>,
     /// Also write the sampled curves as CSV files (one per curve family) into
-    /// this folder, creating it if needed.
+    /// this folder, creating it if needed; with several jobs into its
+    /// subfolder `NAME/` per job.
     #[arg(long, value_name = "DIR")]
     pub csv: Option<PathBuf>,
+    /// Also write the sampled curves as one Apache Parquet table into this
+    /// file; with several jobs, the folder for `NAME.parquet` per job and
+    /// `summary.parquet`.
+    #[arg(long, value_name = "FILE|DIR")]
+    pub parquet: Option<PathBuf>,
     /// Also compute the derivatives of orders 1 to K of the crisp and the
     /// defuzzified curve at the sample parameters, and their arc lengths
     /// (result keys `curves.derivatives`, `curves.arc_length`); K from 1 to 16.

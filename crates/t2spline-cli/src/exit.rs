@@ -5,11 +5,20 @@
 //! |---|---|
 //! | 0 | success; also when the reader of standard output closed the pipe early |
 //! | 1 | internal error: a bug (a result that is not finite); nothing was written |
-//! | 2 | invalid input: a usage error (clap), an option value that breaks a rule, or a job or data file that breaks a rule or a limit (JSON syntax, keys, SPEC rules, size, encoding); also any error of another layer (the options of `fit`, a figure `plot` cannot draw), which are about the input |
+//! | 2 | invalid input: a usage error (clap), an option value that breaks a rule, an output that would overwrite an input, or a job or data file that breaks a rule or a limit (JSON syntax, keys, SPEC rules, size, encoding); also any error of another layer (the options of `fit`, a figure `plot` cannot draw), which are about the input |
 //! | 3 | the job cannot be read (missing, not permitted, a folder, an I/O error) |
-//! | 4 | an output cannot be written (missing folder, not permitted, disk full, standard output failing); existing outputs are untouched |
+//! | 4 | an output cannot be written (missing folder, not permitted, disk full, standard output closed or failing, a file with several hard links); existing outputs are untouched |
 //!
-//! A panic (which would be a bug too) exits with Rust's 101.
+//! A run of many jobs (`t2spline run a.json b.json …`, `--jobs DIR`) goes on
+//! past a failing job and exits with the code of its most serious failure:
+//! 1 (a bug) before 4 (outputs) before 3 (inputs) before 2 (a bad job); 0
+//! when every job was written. `summary.csv` has each job's status.
+//!
+//! A panic (which would be a bug too) exits with Rust's 101; Ctrl-C and
+//! `SIGTERM` end the program by their signal, after removing its temporary
+//! files.
+
+use std::path::PathBuf;
 
 use t2spline_io::Error;
 
@@ -30,9 +39,13 @@ pub enum Exit {
 
 impl Exit {
     /// The exit code for an error: the kind of the first [`t2spline_io::Error`]
-    /// in its chain. Errors of other layers (the options of `fit`, a point
-    /// index `plot` cannot draw) are about the input: 2.
+    /// in its chain (or the code a run of many jobs chose). Errors of other
+    /// layers (the options of `fit`, a point index `plot` cannot draw) are
+    /// about the input: 2.
     pub fn of(e: &anyhow::Error) -> Exit {
+        if let Some(failed) = e.downcast_ref::<JobsFailed>() {
+            return failed.exit;
+        }
         match e.chain().find_map(|c| c.downcast_ref::<Error>()) {
             Some(Error::Read { .. }) => Exit::Read,
             Some(Error::Write { .. }) => Exit::Write,
@@ -45,12 +58,71 @@ impl Exit {
     pub fn code(self) -> u8 {
         self as u8
     }
+
+    /// How serious a failure is: a bug, then outputs, then inputs, then a
+    /// bad job.
+    fn rank(self) -> u8 {
+        match self {
+            Exit::Ok => 0,
+            Exit::Invalid => 1,
+            Exit::Read => 2,
+            Exit::Write => 3,
+            Exit::Internal => 4,
+        }
+    }
+
+    /// The more serious of two.
+    pub fn worst(self, other: Exit) -> Exit {
+        if other.rank() > self.rank() {
+            other
+        } else {
+            self
+        }
+    }
+
+    /// The word for a job's status in a summary.
+    pub fn status(self) -> &'static str {
+        match self {
+            Exit::Ok => "ok",
+            Exit::Internal => "internal",
+            Exit::Invalid => "invalid",
+            Exit::Read => "unreadable",
+            Exit::Write => "unwritable",
+        }
+    }
 }
+
+/// Some jobs of a run of many failed (each already reported): the last line
+/// of the run, whose exit code is that of the most serious failure.
+#[derive(Debug)]
+pub struct JobsFailed {
+    /// How many failed.
+    pub failed: usize,
+    /// How many jobs there were.
+    pub total: usize,
+    /// The code to exit with.
+    pub exit: Exit,
+    /// The summary file written.
+    pub summary: PathBuf,
+}
+
+impl std::fmt::Display for JobsFailed {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{} of {} jobs failed, the others were written (see {})",
+            self.failed,
+            self.total,
+            self.summary.display()
+        )
+    }
+}
+
+impl std::error::Error for JobsFailed {}
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use std::path::PathBuf;
 
     #[test]
     fn each_kind_has_its_code() {
@@ -104,5 +176,26 @@ mod tests {
             message: "m".into(),
         };
         assert_eq!(Exit::of(&anyhow::Error::new(option)), Exit::Invalid);
+    }
+
+    #[test]
+    fn many_jobs_exit_with_their_worst_failure() {
+        use Exit::*;
+        let worst = |codes: &[Exit]| codes.iter().fold(Ok, |w, &c| w.worst(c));
+        assert_eq!(worst(&[]), Ok);
+        assert_eq!(worst(&[Invalid, Read, Invalid]), Read);
+        assert_eq!(worst(&[Invalid, Write, Read]), Write);
+        assert_eq!(worst(&[Write, Internal, Invalid]), Internal);
+        let failed = JobsFailed {
+            failed: 2,
+            total: 5,
+            exit: Read,
+            summary: PathBuf::from("out/summary.csv"),
+        };
+        assert_eq!(
+            failed.to_string(),
+            "2 of 5 jobs failed, the others were written (see out/summary.csv)"
+        );
+        assert_eq!(Exit::of(&anyhow::Error::new(failed)), Read);
     }
 }

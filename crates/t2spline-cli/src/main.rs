@@ -9,6 +9,7 @@ mod cli;
 mod cmd;
 mod exit;
 mod output;
+mod signals;
 
 use std::io::Write;
 use std::process::ExitCode;
@@ -19,6 +20,7 @@ use crate::exit::Exit;
 
 fn main() -> ExitCode {
     let cli = cli::Cli::parse();
+    signals::remove_temporary_files_on_signals();
     match cmd::dispatch(cli) {
         Ok(()) => ExitCode::from(Exit::Ok.code()),
         Err(e) if output::is_broken_pipe(&e) => ExitCode::from(Exit::Ok.code()),

@@ -9,6 +9,8 @@ use t2spline::job::Job;
 use t2spline_io::job::{read_text, read_text_from};
 use t2spline_io::{parse_job, write_all_atomic, Error};
 
+use crate::cmd::settings::OptionError;
+
 /// Whether the path names a standard stream.
 pub fn is_stdio(path: &Path) -> bool {
     path.as_os_str() == "-"
@@ -48,15 +50,102 @@ pub fn read_job_text(path: &Path) -> Result<(Job, String), Error> {
 }
 
 /// Writes to standard output with `write`; a failure is an [`Error::Write`]
-/// naming `<stdout>` (a closed pipe among them, which `main` treats as success).
+/// naming `<stdout>` (a closed pipe among them, which `main` treats as
+/// success), and so is a standard output that was closed when the program
+/// started (`t2spline run job.json >&-`).
 pub fn to_stdout(write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>) -> Result<(), Error> {
+    let failed = |source| Error::Write {
+        path: PathBuf::from("<stdout>"),
+        source,
+    };
+    if stdout_was_closed() {
+        return Err(failed(std::io::Error::other("standard output is closed")));
+    }
     let mut out = std::io::BufWriter::new(std::io::stdout().lock());
-    write(&mut out)
-        .and_then(|()| out.flush())
-        .map_err(|source| Error::Write {
-            path: PathBuf::from("<stdout>"),
-            source,
-        })
+    write(&mut out).and_then(|()| out.flush()).map_err(failed)
+}
+
+/// Whether standard output was closed when the program started. Rust's
+/// runtime then opens `/dev/null` in its place, read-write, so that writes
+/// vanish without an error; a shell's `>/dev/null` opens it write-only. So
+/// `/dev/null` open for reading and writing on descriptor 1 means closed
+/// (`1<>/dev/null`, which looks the same, is taken as closed too).
+#[cfg(unix)]
+fn stdout_was_closed() -> bool {
+    use rustix::fs::{fcntl_getfl, fstat, OFlags};
+    use std::os::unix::fs::MetadataExt;
+    let stdout = std::io::stdout();
+    let (Ok(flags), Ok(stat), Ok(null)) = (
+        fcntl_getfl(&stdout),
+        fstat(&stdout),
+        std::fs::metadata("/dev/null"),
+    ) else {
+        return false;
+    };
+    // `st_rdev` is a `u64` on some targets and a `c_ulong` on others.
+    #[allow(clippy::useless_conversion)]
+    let device = u64::from(stat.st_rdev);
+    flags & OFlags::RWMODE == OFlags::RDWR && device == null.rdev()
+}
+
+#[cfg(not(unix))]
+fn stdout_was_closed() -> bool {
+    false
+}
+
+/// The identity of an existing file: device and inode where there are
+/// such, else the canonical path; links and hard links resolve to the file.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+struct FileId(#[cfg(unix)] (u64, u64), #[cfg(not(unix))] PathBuf);
+
+impl FileId {
+    fn of(path: &Path) -> Option<FileId> {
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::MetadataExt;
+            std::fs::metadata(path)
+                .ok()
+                .map(|m| FileId((m.dev(), m.ino())))
+        }
+        #[cfg(not(unix))]
+        {
+            std::fs::canonicalize(path).ok().map(FileId)
+        }
+    }
+}
+
+/// The input files of a command (job and data files), so that no output
+/// overwrites one (`t2spline run job.json -o job.json`).
+#[derive(Debug, Default)]
+pub struct Inputs {
+    files: std::collections::HashMap<FileId, PathBuf>,
+}
+
+impl Inputs {
+    /// The files among `paths` (standard input is none).
+    pub fn of<'p>(paths: impl IntoIterator<Item = &'p Path>) -> Inputs {
+        let files = paths
+            .into_iter()
+            .filter(|p| !is_stdio(p))
+            .filter_map(|p| FileId::of(p).map(|id| (id, p.to_owned())))
+            .collect();
+        Inputs { files }
+    }
+
+    /// An error about `option` if writing `output` would overwrite an input.
+    pub fn check(&self, option: &'static str, output: &Path) -> Result<(), OptionError> {
+        match FileId::of(output).and_then(|id| self.files.get(&id)) {
+            Some(input) => Err(OptionError {
+                option,
+                message: format!(
+                    "{} is the input file {}: an output never overwrites its input",
+                    output.display(),
+                    input.display()
+                ),
+            }),
+            None => Ok(()),
+        }
+    }
 }
 
 /// The folders a run creates for its outputs, so that a failed run can remove

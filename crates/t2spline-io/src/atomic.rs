@@ -5,16 +5,21 @@
 //! only then renamed over the target. A run that writes several files stages
 //! all of them first and renames them only when every one is complete, so a
 //! failure while writing (a full disk, a missing folder) leaves every existing
-//! output as it was. Temporary files are removed on failure and when the
-//! program is interrupted between staging and renaming they are left as
-//! `.t2spline-*.tmp`, never under an output's name.
+//! output as it was. Temporary files are removed on failure, and on Ctrl-C
+//! or `SIGTERM` by a front end that calls [`remove_temporary_files`](crate::remove_temporary_files).
+//!
+//! What a path names decides how it is written (see `target.rs`): a symbolic
+//! link is followed and the file it names replaced (the link stays); a
+//! device or FIFO is written through after the files are renamed (as
+//! standard output is); a file with several hard links is refused.
 
+use std::fmt;
 use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 
-use tempfile::NamedTempFile;
-
+use crate::target::{resolve, Target};
+use crate::temporary::Temporary;
 use crate::Error;
 
 /// Writes `bytes` to `path` atomically: into a temporary file in the same folder,
@@ -56,6 +61,9 @@ pub fn write_all_atomic(files: &[(&Path, &[u8])]) -> Result<(), Error> {
     staged.commit()
 }
 
+/// A writer of one output, kept until the files are committed.
+type Deferred<'a> = Box<dyn FnOnce(&mut (dyn Write + Send)) -> std::io::Result<()> + 'a>;
+
 /// Several output files written all-or-nothing: [`Staged::add`] writes each one
 /// completely into a temporary file beside its target, [`Staged::commit`]
 /// renames them all into place. Dropping a `Staged` without committing removes
@@ -65,6 +73,10 @@ pub fn write_all_atomic(files: &[(&Path, &[u8])]) -> Result<(), Error> {
 /// a rename fail is found while staging (a missing or unwritable folder, a
 /// target that is a folder); should one fail nonetheless (the folder was
 /// removed in between), the files renamed before it stay replaced.
+///
+/// Outputs that are devices or FIFOs (`-o /dev/null`, a named pipe) are
+/// written through, not replaced, and last, after the files are renamed, as
+/// standard output is.
 ///
 /// # Examples
 /// ```
@@ -79,35 +91,83 @@ pub fn write_all_atomic(files: &[(&Path, &[u8])]) -> Result<(), Error> {
 /// assert_eq!(std::fs::read_dir(dir.path())?.count(), 0);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
-#[derive(Debug, Default)]
-pub struct Staged {
-    files: Vec<(PathBuf, NamedTempFile)>,
+pub struct Staged<'a> {
+    /// Target (the end of any links), the path as given, the temporary file.
+    files: Vec<(PathBuf, PathBuf, Temporary)>,
+    /// Devices and FIFOs: the path as given, the path written, the writer.
+    streams: Vec<(PathBuf, PathBuf, Deferred<'a>)>,
+    /// Files of an earlier run that this one does not write.
+    stale: Vec<PathBuf>,
+    /// Whether a commit flushes every file to disk before renaming it.
+    durable: bool,
 }
 
-impl Staged {
+impl Default for Staged<'_> {
+    fn default() -> Self {
+        Staged {
+            files: Vec::new(),
+            streams: Vec::new(),
+            stale: Vec::new(),
+            durable: true,
+        }
+    }
+}
+
+impl fmt::Debug for Staged<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("Staged")
+            .field("files", &self.files)
+            .field(
+                "streams",
+                &self.streams.iter().map(|s| &s.0).collect::<Vec<_>>(),
+            )
+            .field("stale", &self.stale)
+            .field("durable", &self.durable)
+            .finish()
+    }
+}
+
+impl<'a> Staged<'a> {
+    /// Outputs whose commit renames without flushing each file to disk
+    /// first: for a front end that writes many outputs and flushes them all
+    /// at once afterwards ([`sync_file_systems`](crate::sync_file_systems)).
+    /// A failure of the program still leaves nothing half written; a power
+    /// failure before the final flush may.
+    #[must_use]
+    pub fn deferring_sync() -> Self {
+        Staged {
+            durable: false,
+            ..Staged::default()
+        }
+    }
+
     /// Writes one output into a temporary file beside `path` with `write`
-    /// (through a buffer), and flushes it to disk.
+    /// (through a buffer); a device or FIFO is written with it at
+    /// [`Staged::commit`] instead. The writer is `Send` so that writers
+    /// that need it (Parquet's) can take it.
     ///
     /// # Errors
     /// [`Error::Write`] naming `path` if the temporary file cannot be created or
-    /// written; `path` is untouched.
+    /// written, if `path` is a folder, or a file with several hard links;
+    /// `path` is untouched.
     pub fn add(
         &mut self,
         path: &Path,
-        write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>,
+        write: impl FnOnce(&mut (dyn Write + Send)) -> std::io::Result<()> + 'a,
     ) -> Result<(), Error> {
         let failed = |e| write_error(path, e);
-        let dir = match path.parent() {
+        let (target, permissions) = match resolve(path).map_err(failed)? {
+            Target::Stream(stream) => {
+                self.streams
+                    .push((path.to_owned(), stream, Box::new(write)));
+                return Ok(());
+            }
+            Target::File { path, permissions } => (path, permissions),
+        };
+        let dir = match target.parent() {
             Some(d) if !d.as_os_str().is_empty() => d,
             _ => Path::new("."),
         };
-        let old = std::fs::metadata(path).ok();
-        // Renaming onto a folder would fail only at commit, after other files
-        // may have been renamed; refuse it now, while nothing has changed.
-        if old.as_ref().is_some_and(std::fs::Metadata::is_dir) {
-            return Err(failed(std::io::ErrorKind::IsADirectory.into()));
-        }
-        let old = old.filter(std::fs::Metadata::is_file);
         let mut builder = tempfile::Builder::new();
         builder.prefix(".t2spline-").suffix(".tmp");
         #[cfg(unix)]
@@ -115,32 +175,44 @@ impl Staged {
             use std::os::unix::fs::PermissionsExt;
             builder.permissions(std::fs::Permissions::from_mode(0o666));
         }
-        let file = builder.tempfile_in(dir).map_err(failed)?;
-        if let Some(old) = old {
-            file.as_file()
-                .set_permissions(old.permissions())
-                .map_err(failed)?;
+        let file = Temporary::create(&builder, dir).map_err(failed)?;
+        if let Some(permissions) = permissions {
+            file.file().set_permissions(permissions).map_err(failed)?;
         }
-        let mut w = BufWriter::new(file.as_file());
+        let mut w = BufWriter::new(file.file());
         write(&mut w).map_err(failed)?;
         w.flush().map_err(failed)?;
         drop(w);
-        file.as_file().sync_all().map_err(failed)?;
-        self.files.push((path.to_owned(), file));
+        self.files.push((target, path.to_owned(), file));
         Ok(())
     }
 
-    /// Renames every staged file into place, then flushes the folders so that
-    /// the renames survive a crash.
+    /// Removes `path` at [`Staged::commit`] if it exists and is a file: an
+    /// output of an earlier run that this run does not write (a reused CSV
+    /// folder's `derivatives.csv`), so that the folder holds this run's files
+    /// only.
+    pub fn remove_stale(&mut self, path: &Path) {
+        self.stale.push(path.to_owned());
+    }
+
+    /// Flushes every staged file to disk (unless [`Staged::deferring_sync`]),
+    /// renames each into place, flushes the folders so that the renames
+    /// survive a crash, removes the stale files, and writes the devices and
+    /// FIFOs.
     ///
     /// # Errors
-    /// [`Error::Write`] naming the first file that could not be renamed.
+    /// [`Error::Write`] naming the first file that could not be written,
+    /// flushed or renamed, or removed.
     pub fn commit(self) -> Result<(), Error> {
+        if self.durable {
+            for (_, shown, file) in &self.files {
+                file.file().sync_all().map_err(|e| write_error(shown, e))?;
+            }
+        }
         let mut dirs: Vec<PathBuf> = Vec::new();
-        for (path, file) in self.files {
-            file.persist(&path)
-                .map_err(|e| write_error(&path, e.error))?;
-            let dir = path
+        for (target, shown, file) in self.files {
+            file.persist(&target).map_err(|e| write_error(&shown, e))?;
+            let dir = target
                 .parent()
                 .filter(|d| !d.as_os_str().is_empty())
                 .unwrap_or(Path::new("."))
@@ -150,13 +222,64 @@ impl Staged {
             }
         }
         // Best effort: not every platform or file system can sync a folder.
-        for dir in dirs {
-            if let Ok(d) = File::open(&dir) {
-                let _ = d.sync_all();
+        if self.durable {
+            for dir in dirs {
+                if let Ok(d) = File::open(&dir) {
+                    let _ = d.sync_all();
+                }
             }
+        }
+        for path in self.stale {
+            if std::fs::symlink_metadata(&path).is_ok_and(|m| m.is_file()) {
+                std::fs::remove_file(&path).map_err(|e| write_error(&path, e))?;
+            }
+        }
+        for (shown, stream, write) in self.streams {
+            let failed = |e| write_error(&shown, e);
+            let file = std::fs::OpenOptions::new()
+                .write(true)
+                .open(&stream)
+                .map_err(failed)?;
+            let mut w = BufWriter::new(file);
+            write(&mut w).and_then(|()| w.flush()).map_err(failed)?;
         }
         Ok(())
     }
+}
+
+/// Flushes the files at `paths` to disk, for outputs committed by a
+/// [`Staged::deferring_sync`]: on Linux one `syncfs` per file system of their
+/// folders (one flush for a thousand files, where one per file would cost a
+/// disk round trip each), elsewhere each file in turn.
+///
+/// # Errors
+/// [`Error::Write`] naming a path whose folder or file cannot be opened or
+/// flushed.
+pub fn sync_file_systems(paths: &[PathBuf]) -> Result<(), Error> {
+    #[cfg(target_os = "linux")]
+    {
+        use std::os::unix::fs::MetadataExt;
+        let mut devices = Vec::new();
+        for path in paths {
+            let dir = path
+                .parent()
+                .filter(|d| !d.as_os_str().is_empty())
+                .unwrap_or(Path::new("."));
+            let folder = File::open(dir).map_err(|e| write_error(path, e))?;
+            let device = folder.metadata().map_err(|e| write_error(path, e))?.dev();
+            if !devices.contains(&device) {
+                rustix::fs::syncfs(&folder).map_err(|e| write_error(path, e.into()))?;
+                devices.push(device);
+            }
+        }
+    }
+    #[cfg(not(target_os = "linux"))]
+    for path in paths {
+        File::open(path)
+            .and_then(|f| f.sync_all())
+            .map_err(|e| write_error(path, e))?;
+    }
+    Ok(())
 }
 
 /// [`Error::Write`] for `path`. tempfile's errors end in
@@ -247,5 +370,96 @@ mod tests {
         std::fs::set_permissions(&path, std::fs::Permissions::from_mode(0o640)).unwrap();
         write_atomic(&path, b"b").unwrap();
         assert_eq!(mode(&path), 0o640);
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_symbolic_link_keeps_pointing_to_the_new_content() {
+        let dir = tempfile::tempdir().unwrap();
+        let file = dir.path().join("real.json");
+        let link = dir.path().join("link.json");
+        std::fs::write(&file, b"old").unwrap();
+        std::os::unix::fs::symlink("real.json", &link).unwrap();
+        write_atomic(&link, b"new").unwrap();
+        assert!(std::fs::symlink_metadata(&link)
+            .unwrap()
+            .file_type()
+            .is_symlink());
+        assert_eq!(std::fs::read(&file).unwrap(), b"new");
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 2);
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_fifo_is_written_through_after_the_files() {
+        let dir = tempfile::tempdir().unwrap();
+        let fifo = dir.path().join("pipe");
+        let made = std::process::Command::new("mkfifo")
+            .arg(&fifo)
+            .status()
+            .unwrap();
+        assert!(made.success());
+        let reader = {
+            let fifo = fifo.clone();
+            std::thread::spawn(move || std::fs::read(fifo).unwrap())
+        };
+        let file = dir.path().join("a.csv");
+        let mut staged = Staged::default();
+        staged.add(&fifo, |w| w.write_all(b"through")).unwrap();
+        staged.add(&file, |w| w.write_all(b"file")).unwrap();
+        staged.commit().unwrap();
+        assert_eq!(reader.join().unwrap(), b"through");
+        assert_eq!(std::fs::read(&file).unwrap(), b"file");
+        assert!(!std::fs::symlink_metadata(&fifo).unwrap().is_file());
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_hard_linked_file_is_refused_and_left_as_it_was() {
+        let dir = tempfile::tempdir().unwrap();
+        let file = dir.path().join("a.json");
+        std::fs::write(&file, b"old").unwrap();
+        std::fs::hard_link(&file, dir.path().join("b.json")).unwrap();
+        let e = write_atomic(&file, b"new").unwrap_err();
+        assert!(
+            e.lines()[0].contains("a.json: cannot write: the file has 2 hard links"),
+            "{e:?}"
+        );
+        assert_eq!(std::fs::read(dir.path().join("b.json")).unwrap(), b"old");
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 2);
+    }
+
+    #[test]
+    fn stale_files_go_at_the_commit_only() {
+        let dir = tempfile::tempdir().unwrap();
+        let stale = dir.path().join("derivatives.csv");
+        std::fs::write(&stale, b"old").unwrap();
+        let mut staged = Staged::default();
+        staged.remove_stale(&stale);
+        staged.remove_stale(&dir.path().join("absent.csv"));
+        staged
+            .add(&dir.path().join("a.csv"), |w| w.write_all(b"a"))
+            .unwrap();
+        drop(staged);
+        assert!(stale.exists(), "removed without a commit");
+        let mut staged = Staged::default();
+        staged.remove_stale(&stale);
+        staged
+            .add(&dir.path().join("a.csv"), |w| w.write_all(b"a"))
+            .unwrap();
+        staged.commit().unwrap();
+        assert!(!stale.exists());
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 1);
+    }
+
+    #[test]
+    fn deferred_outputs_are_complete_and_flushed_later() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("a.json");
+        let mut staged = Staged::deferring_sync();
+        staged.add(&path, |w| w.write_all(b"{}")).unwrap();
+        staged.commit().unwrap();
+        assert_eq!(std::fs::read(&path).unwrap(), b"{}");
+        sync_file_systems(&[path]).unwrap();
     }
 }

@@ -1,13 +1,13 @@
 //! CSV export of the sampled curves: one file per curve family, with headers.
 
-use std::io::Write;
+use std::io::{self, BufWriter, Write};
 use std::path::{Path, PathBuf};
 
-use t2spline::job::{Parameters, Points, RunOutput};
-use t2spline::pipeline::euclidean_norm;
-use t2spline::{Layer, Num};
+use t2spline::job::RunOutput;
 
 use crate::atomic::Staged;
+use crate::number;
+use crate::table::{csv_tables, Table};
 use crate::Error;
 
 /// The files [`write_csv`] writes, with what each holds.
@@ -30,118 +30,32 @@ pub const CSV_FILES: [(&str, &str); 4] = [
     ),
 ];
 
-/// One named column group: a curve sampled at the result's parameters.
-type Family<'a> = Vec<(String, &'a Points)>;
-
-/// One CSV file of a result: `t` (a surface: `u, v`, one row per grid point,
-/// `v` fastest), then every curve's coordinates, then an optional extra
-/// column.
-struct Table<'a> {
-    params: &'a Parameters,
-    family: Family<'a>,
-    dims: usize,
-    extra: Option<(&'static str, Vec<f64>)>,
-}
-
-impl Table<'_> {
-    fn write(&self, out: &mut dyn Write) -> std::io::Result<()> {
-        let axes = ["x", "y", "z"];
-        let mut w = csv::Writer::from_writer(out);
-        let mut header: Vec<String> = match self.params {
-            Parameters::Along(_) => vec!["t".to_owned()],
-            Parameters::Grid { .. } => vec!["u".to_owned(), "v".to_owned()],
-        };
-        for (name, _) in &self.family {
-            header.extend(axes[..self.dims].iter().map(|a| format!("{name}_{a}")));
+/// Writes one table as CSV: a header of column names, then one line per
+/// row, numbers in [`number::csv`]'s form, `\n` line ends (no quoting: names
+/// and numbers hold no commas or quotes).
+///
+/// Numbers go straight into a buffer of 64 KiB: no string per number or row.
+fn write_table<W: Write>(table: &Table<'_>, out: W) -> io::Result<()> {
+    let mut w = BufWriter::with_capacity(1 << 16, out);
+    for (k, column) in table.columns.iter().enumerate() {
+        if k > 0 {
+            w.write_all(b",")?;
         }
-        header.extend(self.extra.as_ref().map(|(name, _)| (*name).to_owned()));
-        w.write_record(&header)?;
-        let number = |x: &f64| Num(*x).to_string();
-        let index: Box<dyn Iterator<Item = Vec<&f64>>> = match self.params {
-            Parameters::Along(t) => Box::new(t.iter().map(|t| vec![t])),
-            Parameters::Grid { u, v } => Box::new(
-                u.iter()
-                    .flat_map(move |a| v.iter().map(move |b| vec![a, b])),
-            ),
-        };
-        for (i, at) in index.enumerate() {
-            let mut row: Vec<String> = at.into_iter().map(number).collect();
-            for (_, points) in &self.family {
-                row.extend(points.coords().iter().map(|c| number(&c[i])));
-            }
-            row.extend(self.extra.as_ref().map(|(_, v)| number(&v[i])));
-            w.write_record(&row)?;
+        w.write_all(column.name.as_bytes())?;
+    }
+    w.write_all(b"\n")?;
+    for i in 0..table.rows {
+        let mut columns = table.columns.iter();
+        if let Some(first) = columns.next() {
+            number::csv(&mut w, first.values.get(i))?;
         }
-        w.flush()
+        for column in columns {
+            w.write_all(b",")?;
+            number::csv(&mut w, column.values.get(i))?;
+        }
+        w.write_all(b"\n")?;
     }
-}
-
-/// The tables of a result, in the order of [`CSV_FILES`], then
-/// [`DERIVATIVES_CSV`] when the result has derivatives.
-fn tables(result: &RunOutput) -> Vec<(&'static str, Table<'_>)> {
-    let c = &result.samples;
-    let layer = |l: Layer| c.layer(l);
-    let stage1: Family = Layer::ALL
-        .iter()
-        .map(|&l| (l.name().to_owned(), layer(l)))
-        .collect();
-    let stage2: Family = Layer::ALL
-        .iter()
-        .filter_map(|&l| match c.alpha_cut.get(l) {
-            Some(Some(v)) => Some((l.name().to_owned(), v)),
-            Some(None) => None,
-            None => Some((l.name().to_owned(), &c.crisp)),
-        })
-        .collect();
-    let stage3: Family = vec![
-        ("left".into(), &c.type_reduced.left),
-        ("crisp".into(), &c.crisp),
-        ("right".into(), &c.type_reduced.right),
-    ];
-    let stage4: Family = vec![
-        ("crisp".into(), &c.crisp),
-        ("defuzzified".into(), &c.defuzzified),
-    ];
-    // Scaled, so that a distance near 1e-170 does not underflow when squared.
-    let mut d = vec![0.0; result.dimension];
-    let distance: Vec<f64> = (0..c.params.count())
-        .map(|i| {
-            for ((d, a), b) in d
-                .iter_mut()
-                .zip(c.crisp.coords())
-                .zip(c.defuzzified.coords())
-            {
-                *d = a[i] - b[i];
-            }
-            euclidean_norm(&d)
-        })
-        .collect();
-    let table = |family, extra| Table {
-        params: &c.params,
-        family,
-        dims: result.dimension,
-        extra,
-    };
-    let mut files = vec![
-        (CSV_FILES[0].0, table(stage1, None)),
-        (CSV_FILES[1].0, table(stage2, None)),
-        (CSV_FILES[2].0, table(stage3, None)),
-        (CSV_FILES[3].0, table(stage4, Some(("distance", distance)))),
-    ];
-    if let Some(d) = &c.derivatives {
-        // `crisp_d1_x, …, defuzzified_dK_z`: the derivatives of `--derivatives K`.
-        let family: Family = [("crisp", &d.crisp), ("defuzzified", &d.defuzzified)]
-            .into_iter()
-            .flat_map(|(name, orders)| {
-                orders
-                    .iter()
-                    .enumerate()
-                    .map(move |(k, points)| (format!("{name}_d{}", k + 1), points))
-            })
-            .collect();
-        files.push((DERIVATIVES_CSV, table(family, None)));
-    }
-    files
+    w.flush()
 }
 
 /// The extra file [`write_csv`] writes for a result with derivatives
@@ -158,12 +72,12 @@ pub const DERIVATIVES_CSV: &str = "derivatives.csv";
 /// 1e-6 (`1e300`, not 301 digits).
 #[must_use]
 pub fn render_csv(result: &RunOutput) -> Vec<(&'static str, String)> {
-    tables(result)
+    csv_tables(result)
         .into_iter()
         .map(|(name, table)| {
             let mut out = Vec::new();
             // Writing to a Vec cannot fail, and CSV of numbers and names is UTF-8.
-            table.write(&mut out).expect("in-memory write");
+            write_table(&table, &mut out).expect("in-memory write");
             (
                 name,
                 String::from_utf8(out).expect("CSV of numbers is UTF-8"),
@@ -189,25 +103,34 @@ pub fn write_csv(dir: &Path, result: &RunOutput) -> Result<Vec<PathBuf>, Error> 
 
 /// Writes the CSV files of a result into temporary files beside their
 /// targets in `dir` (created if needed), to be renamed by [`Staged::commit`]
-/// together with other outputs. Returns the target paths.
+/// together with other outputs. Returns the target paths. A
+/// [`DERIVATIVES_CSV`] of an earlier run is removed at the commit when this
+/// result has no derivatives, so that the folder holds this result's files
+/// (other files in it are left alone).
 ///
 /// # Errors
 /// [`Error::Write`] if the folder cannot be created or a file cannot be
 /// written.
-pub fn stage_csv(
-    staged: &mut Staged,
+pub fn stage_csv<'a>(
+    staged: &mut Staged<'a>,
     dir: &Path,
-    result: &RunOutput,
+    result: &'a RunOutput,
 ) -> Result<Vec<PathBuf>, Error> {
     std::fs::create_dir_all(dir).map_err(|source| Error::Write {
         path: dir.to_owned(),
         source,
     })?;
-    tables(result)
+    let tables = csv_tables(result);
+    if !tables.iter().any(|(name, _)| *name == DERIVATIVES_CSV) {
+        staged.remove_stale(&dir.join(DERIVATIVES_CSV));
+    }
+    tables
         .into_iter()
         .map(|(name, table)| {
             let path = dir.join(name);
-            staged.add(&path, |w| table.write(w)).map(|()| path)
+            staged
+                .add(&path, move |w| write_table(&table, w))
+                .map(|()| path)
         })
         .collect()
 }

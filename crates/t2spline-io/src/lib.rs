@@ -13,10 +13,15 @@
 //!   one line, streamed without an intermediate tree.
 //! - [`render_csv`] / [`write_csv`] / [`stage_csv`]: the sampled curves (or
 //!   surfaces, one row per grid point) as CSV, one file per curve family.
+//! - `write_parquet` (feature `parquet`, default): the sampled curves as one
+//!   Apache Parquet table, the rest of the result as key-value metadata.
+//! - [`JobSummary`], [`write_summary_csv`] (and `write_summary_parquet`): the
+//!   summary of a run of many jobs.
 //! - [`check_finite`]: the last guard before writing, naming the first NaN or
 //!   infinity of an output by its path.
 //! - [`Staged`] / [`write_atomic`]: output files that are complete or absent,
-//!   never half written.
+//!   never half written; devices and FIFOs written through, symbolic links
+//!   followed; [`remove_temporary_files`] for a front end's signal handler.
 //! - [`parse_data`] / [`FitData`]: data files for `t2spline fit` (fuzzy data
 //!   points), and the fitted model written back as a job file.
 //! - [`render_cad`]: a run's exact curves ([`t2spline::job::Geometry`]) as
@@ -50,17 +55,30 @@ mod error;
 mod finite;
 mod fit_data;
 pub mod job;
+#[cfg(feature = "parquet")]
+mod keys;
+mod number;
+#[cfg(feature = "parquet")]
+mod parquet;
 mod pretty;
 mod printable;
 mod readings;
+mod summary;
+mod table;
+mod target;
+mod temporary;
 
-pub use crate::atomic::{write_all_atomic, write_atomic, Staged};
+pub use crate::atomic::{sync_file_systems, write_all_atomic, write_atomic, Staged};
 pub use crate::cad::{render_cad, CadFormat, CadMeta};
 pub use crate::csv::{render_csv, stage_csv, write_csv, CSV_FILES, DERIVATIVES_CSV};
 pub use error::{Error, Problem};
 pub use finite::check_finite;
 pub use fit_data::FitData;
 pub use job::{job_json, parse_data, parse_job, read_data, read_job};
+#[cfg(feature = "parquet")]
+pub use parquet::{write_parquet, write_summary_parquet};
 pub use pretty::{to_json_pretty, write_json_pretty};
 pub use printable::printable;
 pub use readings::{data_json, is_readings, parse_readings, read_readings, ReadingsFile, MAX_ROWS};
+pub use summary::{write_summary_csv, JobSummary, SUMMARY_COLUMNS};
+pub use temporary::remove_temporary_files;

@@ -7,7 +7,7 @@
 //! tree or string: at a million samples that tree would take several times the
 //! memory of the result itself.
 
-use std::io::{self, Write};
+use std::io::{self, BufWriter, Write};
 
 use serde::Serialize;
 use serde_json::ser::{CompactFormatter, Formatter};
@@ -47,13 +47,15 @@ pub fn to_json_pretty(value: &Value) -> String {
 /// assert_eq!(out, b"[\n  [0.5, 1.0],\n  [2.0, 3.0]\n]\n");
 /// # Ok::<(), std::io::Error>(())
 /// ```
-pub fn write_json_pretty<W: Write, T: Serialize + ?Sized>(
-    mut writer: W,
-    value: &T,
-) -> io::Result<()> {
-    let mut ser = serde_json::Serializer::with_formatter(&mut writer, Pretty::default());
+pub fn write_json_pretty<W: Write, T: Serialize + ?Sized>(writer: W, value: &T) -> io::Result<()> {
+    // A buffer of a concrete type, whatever `writer` is (`&mut dyn Write`
+    // among others): each number and separator is then a copy into memory
+    // that the compiler inlines, not a call through the writer.
+    let mut w = BufWriter::with_capacity(1 << 16, writer);
+    let mut ser = serde_json::Serializer::with_formatter(&mut w, Pretty::default());
     value.serialize(&mut ser).map_err(io::Error::from)?;
-    writer.write_all(b"\n")
+    w.write_all(b"\n")?;
+    w.flush()
 }
 
 /// An open container while writing.
@@ -75,8 +77,14 @@ struct Pretty {
 }
 
 fn indent<W: ?Sized + Write>(w: &mut W, depth: usize) -> io::Result<()> {
-    for _ in 0..depth {
-        w.write_all(b"  ")?;
+    /// Enough for the depth of a result (a surface's samples are at 4);
+    /// deeper values are indented in several writes.
+    const SPACES: &[u8; 32] = b"                                ";
+    let mut left = 2 * depth;
+    while left > 0 {
+        let n = left.min(SPACES.len());
+        w.write_all(&SPACES[..n])?;
+        left -= n;
     }
     Ok(())
 }
@@ -126,10 +134,14 @@ impl Formatter for Pretty {
         write_u64(u64),
         write_u128(u128),
         write_f32(f32),
-        write_f64(f64),
         write_number_str(&str),
         write_raw_fragment(&str),
     );
+
+    fn write_f64<W: ?Sized + Write>(&mut self, w: &mut W, value: f64) -> io::Result<()> {
+        self.start(w, true)?;
+        crate::number::json(w, value)
+    }
 
     fn write_null<W: ?Sized + Write>(&mut self, w: &mut W) -> io::Result<()> {
         self.start(w, true)?;

@@ -330,3 +330,36 @@ fn write_csv_into_a_file_is_an_error_naming_it() {
     );
     assert_eq!(std::fs::read_to_string(&blocker).unwrap(), "x");
 }
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// A surface: `u, v` over the grid with `v` fastest, then every surface's
+    /// points in the same order, bit for bit.
+    #[test]
+    fn csv_of_random_surfaces(
+        surface in strategies::fuzzy_surface::<3>(),
+        a in 0.0..=1.0f64,
+        su in 2usize..7,
+        sv in 2usize..7,
+    ) {
+        let samples = Samples::Grid([su, sv]);
+        let job = Job { description: None, alpha: None, samples, model: Model::Surface(surface) };
+        let r = job.run(&Settings { alpha: alpha(a), samples, derivatives: None }).unwrap();
+        let t2spline::job::Parameters::Grid { u, v } = &r.samples.params else {
+            panic!("a grid")
+        };
+        let files = render_csv(&r);
+        let (h, rows) = table(file(&files, "stage3-type-reduced.csv"));
+        prop_assert_eq!(&h[..2], ["u", "v"]);
+        prop_assert_eq!(rows.len(), su * sv);
+        let (cu, cv) = (column(&h, &rows, "u"), column(&h, &rows, "v"));
+        for (i, (a, b)) in cu.iter().zip(&cv).enumerate() {
+            prop_assert_eq!(a.to_bits(), u[i / sv].to_bits());
+            prop_assert_eq!(b.to_bits(), v[i % sv].to_bits());
+        }
+        assert_curve(&h, &rows, "left", &r.samples.type_reduced.left);
+        assert_curve(&h, &rows, "crisp", &r.samples.crisp);
+        assert_curve(&h, &rows, "right", &r.samples.type_reduced.right);
+    }
+}

@@ -10,7 +10,7 @@ use t2spline_io::{is_readings, parse_data, parse_job, to_json_pretty, FitData};
 
 use super::settings::OptionError;
 use crate::cli::FitArgs;
-use crate::output::{job_name, read_input, Outputs};
+use crate::output::{is_stdio, job_name, read_input, Inputs, Outputs};
 
 /// Condition numbers above this get a warning: the control points may then
 /// be wrong in their last eight digits or more.
@@ -35,6 +35,9 @@ impl Plan {
             .parse()
             .map_err(|e: String| anyhow!(e))?;
         let mode: FuzzyFitMode = args.fuzzy_fit.parse().map_err(|e: String| anyhow!(e))?;
+        if let Some(output) = args.output.as_deref().filter(|p| !is_stdio(p)) {
+            Inputs::of([args.data.as_path()]).check("--output", output)?;
+        }
         let text = read_input(&args.data)?;
         let (data, fuzzified) = if is_readings(&args.data, &text) {
             let data = super::fuzzify::readings_data(&args.data, &text, &args.readings, None)?;

@@ -1,6 +1,7 @@
 //! One module per subcommand: validate the raw arguments into a plan, then call
 //! the libraries.
 
+mod batch;
 mod bench;
 mod export;
 mod fit;

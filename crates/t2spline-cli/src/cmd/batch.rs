@@ -1,0 +1,300 @@
+//! `t2spline run a.json b.json … -o DIR [--jobs DIR] [--csv DIR]
+//! [--parquet DIR]`: many jobs in one process, in parallel across jobs
+//! (rayon), one result per job, past failing jobs, and a summary table.
+//!
+//! Each job is all or nothing on its own: its files are complete in
+//! temporary files before any is renamed. They are renamed without a flush
+//! to disk each; one flush of the file systems at the end covers them all
+//! (a flush per file costs a disk round trip, more than a small job).
+
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+use rayon::prelude::*;
+use t2spline::job::{Overrides, RunOutput};
+use t2spline_io::{
+    check_finite, sync_file_systems, write_summary_csv, write_summary_parquet, JobSummary, Staged,
+    CSV_FILES, DERIVATIVES_CSV,
+};
+
+use super::run::{overrides, Destinations};
+use super::settings::{about_derivatives, settings, OptionError};
+use crate::cli::RunArgs;
+use crate::exit::{Exit, JobsFailed};
+use crate::output::{is_stdio, job_name, read_job_text, Inputs, NewFolders};
+
+/// The summary's file names.
+const SUMMARY_CSV: &str = "summary.csv";
+const SUMMARY_PARQUET: &str = "summary.parquet";
+
+/// A job of the run: its file and the name of its outputs.
+#[derive(Debug)]
+struct Entry {
+    path: PathBuf,
+    name: String,
+}
+
+/// A run of many jobs with its options checked.
+#[derive(Debug)]
+struct Batch {
+    jobs: Vec<Entry>,
+    overrides: Overrides,
+    output: PathBuf,
+    csv: Option<PathBuf>,
+    parquet: Option<PathBuf>,
+}
+
+/// What became of one job.
+struct Outcome {
+    summary: JobSummary,
+    error: Option<anyhow::Error>,
+    /// The files written, to be flushed to disk at the end.
+    written: Vec<PathBuf>,
+}
+
+fn usage(option: &'static str, message: impl Into<String>) -> anyhow::Error {
+    OptionError {
+        option,
+        message: message.into(),
+    }
+    .into()
+}
+
+/// The name of a job's outputs: its file name without `.json`.
+fn output_name(path: &Path) -> String {
+    let file = path
+        .file_name()
+        .map_or_else(String::new, |f| f.to_string_lossy().into_owned());
+    file.strip_suffix(".json").unwrap_or(&file).to_owned()
+}
+
+/// The `*.json` files of `dir` (following links), by name.
+fn folder_jobs(dir: &Path) -> Result<Vec<PathBuf>, t2spline_io::Error> {
+    let failed = |source| t2spline_io::Error::Read {
+        path: dir.to_owned(),
+        source,
+    };
+    let mut jobs = Vec::new();
+    for entry in std::fs::read_dir(dir).map_err(failed)? {
+        let path = entry.map_err(failed)?.path();
+        if path.extension().is_some_and(|e| e == "json") && path.is_file() {
+            jobs.push(path);
+        }
+    }
+    jobs.sort();
+    Ok(jobs)
+}
+
+impl Batch {
+    fn new(args: RunArgs) -> anyhow::Result<Batch> {
+        let mut paths = args.job.clone();
+        if let Some(dir) = &args.jobs {
+            let found = folder_jobs(dir)?;
+            if found.is_empty() && paths.is_empty() {
+                return Err(usage(
+                    "--jobs",
+                    format!("{} holds no *.json file", dir.display()),
+                ));
+            }
+            paths.extend(found);
+        }
+        if paths.iter().any(|p| is_stdio(p)) {
+            return Err(usage(
+                "JOB",
+                "standard input (`-`) can only be read when it is the one job",
+            ));
+        }
+        let output = match args.output.as_deref() {
+            Some(dir) if !is_stdio(dir) => dir.to_owned(),
+            _ => {
+                return Err(usage(
+                    "--output",
+                    format!(
+                        "{} jobs write one result each: give a folder for them, -o DIR",
+                        paths.len()
+                    ),
+                ))
+            }
+        };
+        let mut jobs: Vec<Entry> = Vec::with_capacity(paths.len());
+        let mut seen = std::collections::HashMap::new();
+        for path in paths {
+            let name = output_name(&path);
+            if name.is_empty() || (name == "summary" && args.parquet.is_some()) {
+                return Err(usage(
+                    "JOB",
+                    format!("{}: no output can be named after this file", path.display()),
+                ));
+            }
+            if let Some(other) = seen.insert(name.clone(), path.clone()) {
+                return Err(usage(
+                    "JOB",
+                    format!(
+                        "{} and {} would both write {name}.json: rename one",
+                        other.display(),
+                        path.display()
+                    ),
+                ));
+            }
+            jobs.push(Entry { path, name });
+        }
+        let batch = Batch {
+            jobs,
+            overrides: overrides(&args),
+            output,
+            csv: args.csv,
+            parquet: args.parquet,
+        };
+        batch.check_outputs()?;
+        Ok(batch)
+    }
+
+    /// No output overwrites a job file (`--jobs DIR -o DIR`).
+    fn check_outputs(&self) -> anyhow::Result<()> {
+        let inputs = Inputs::of(self.jobs.iter().map(|j| j.path.as_path()));
+        for job in &self.jobs {
+            self.destinations(job).check(&inputs)?;
+        }
+        inputs.check("--output", &self.output.join(SUMMARY_CSV))?;
+        if let Some(dir) = &self.parquet {
+            inputs.check("--parquet", &dir.join(SUMMARY_PARQUET))?;
+        }
+        Ok(())
+    }
+
+    /// Where a job's files go.
+    fn destinations(&self, job: &Entry) -> Destinations {
+        Destinations {
+            json: Some(self.output.join(format!("{}.json", job.name))),
+            csv: self.csv.as_ref().map(|d| d.join(&job.name)),
+            parquet: self
+                .parquet
+                .as_ref()
+                .map(|d| d.join(format!("{}.parquet", job.name))),
+        }
+    }
+
+    /// Reads, runs and writes one job.
+    fn run_one(&self, job: &Entry) -> Outcome {
+        let mut summary = JobSummary {
+            name: job.name.clone(),
+            file: job_name(&job.path),
+            status: Exit::Ok.status().to_owned(),
+            regime: None,
+            alpha: None,
+            error_max: None,
+            error_rms: None,
+            message: None,
+        };
+        let mut written = Vec::new();
+        let error = self.compute(job).and_then(|result| {
+            summary.regime = Some(result.regime.as_str().to_owned());
+            summary.alpha = Some(result.alpha);
+            summary.error_max = Some(result.error.max);
+            summary.error_rms = Some(result.error.rms);
+            let out = self.destinations(job);
+            out.write(Staged::deferring_sync(), &result)?;
+            written = files(&out, &result);
+            Ok(())
+        });
+        let error = error.err();
+        if let Some(e) = &error {
+            summary.status = Exit::of(e).status().to_owned();
+            summary.message = Some(message(&job.path, e).join("; "));
+        }
+        Outcome {
+            summary,
+            error,
+            written,
+        }
+    }
+
+    fn compute(&self, job: &Entry) -> anyhow::Result<RunOutput> {
+        let (j, text) = read_job_text(&job.path)?;
+        let settings = settings(&j, &self.overrides, &job.path, &text)?;
+        let result = j.run(&settings).map_err(about_derivatives)?;
+        check_finite(&result)?;
+        Ok(result)
+    }
+}
+
+/// The files a result wrote to `out`.
+fn files(out: &Destinations, result: &RunOutput) -> Vec<PathBuf> {
+    let mut files: Vec<PathBuf> = out.json.iter().chain(&out.parquet).cloned().collect();
+    if let Some(dir) = &out.csv {
+        files.extend(CSV_FILES.iter().map(|f| dir.join(f.0)));
+        if result.samples.derivatives.is_some() {
+            files.push(dir.join(DERIVATIVES_CSV));
+        }
+    }
+    files
+}
+
+/// The lines of a job's error, each naming the job file.
+fn message(path: &Path, e: &anyhow::Error) -> Vec<String> {
+    let file = job_name(path);
+    format!("{e:#}")
+        .lines()
+        .map(|line| {
+            if line.starts_with(&file) {
+                line.to_owned()
+            } else {
+                format!("{file}: {line}")
+            }
+        })
+        .collect()
+}
+
+pub fn run(args: RunArgs) -> anyhow::Result<()> {
+    let batch = Batch::new(args)?;
+    let mut folders = NewFolders::default();
+    for dir in [
+        Some(&batch.output),
+        batch.csv.as_ref(),
+        batch.parquet.as_ref(),
+    ]
+    .into_iter()
+    .flatten()
+    {
+        folders.create(dir)?;
+    }
+    let outcomes: Vec<Outcome> = batch.jobs.par_iter().map(|j| batch.run_one(j)).collect();
+    let mut worst = Exit::Ok;
+    let mut stderr = std::io::stderr().lock();
+    for (job, outcome) in batch.jobs.iter().zip(&outcomes) {
+        if let Some(e) = &outcome.error {
+            worst = worst.worst(Exit::of(e));
+            for line in message(&job.path, e) {
+                // A closed standard error loses the messages, not the run.
+                let _ = writeln!(stderr, "t2spline: {line}");
+            }
+        }
+    }
+    drop(stderr);
+    let written: Vec<PathBuf> = outcomes.iter().flat_map(|o| o.written.clone()).collect();
+    sync_file_systems(&written)?;
+    let rows: Vec<JobSummary> = outcomes.into_iter().map(|o| o.summary).collect();
+    let summary = batch.output.join(SUMMARY_CSV);
+    let mut staged = Staged::default();
+    staged.add(&summary, |w| write_summary_csv(w, &rows))?;
+    if let Some(dir) = &batch.parquet {
+        staged.add(&dir.join(SUMMARY_PARQUET), |w| {
+            write_summary_parquet(w, &rows)
+        })?;
+    }
+    staged.commit()?;
+    let failed = rows
+        .iter()
+        .filter(|r| r.status != Exit::Ok.status())
+        .count();
+    if failed > 0 {
+        return Err(JobsFailed {
+            failed,
+            total: rows.len(),
+            exit: worst,
+            summary,
+        }
+        .into());
+    }
+    Ok(())
+}

@@ -1,0 +1,263 @@
+//! Apache Parquet files (feature `parquet`): a run's sampled curves as one
+//! table, and the summary of many runs.
+//!
+//! Written with the `parquet` crate's column writers, which take `&[f64]`
+//! straight from the result's vectors: no Arrow arrays, no copy of the
+//! result. Columns are `DOUBLE` (float64) and required, except the optional
+//! ones of the summary. Floats are encoded `BYTE_STREAM_SPLIT` (the k-th
+//! bytes of all values together, so that the sign, exponent and leading
+//! mantissa bytes of neighbouring samples, nearly equal on a smooth curve,
+//! sit side by side) and compressed with Snappy: 60 % of the plain size for
+//! the shipped example (see ARCHITECTURE.md); no dictionaries (useless for a
+//! million distinct floats); page statistics on, so engines can skip pages
+//! by value.
+
+use std::io::Write;
+use std::sync::Arc;
+
+use parquet::basic::{Compression, Encoding, LogicalType, Repetition, Type as Physical};
+use parquet::data_type::{ByteArray, ByteArrayType, DoubleType};
+use parquet::errors::ParquetError;
+use parquet::file::metadata::KeyValue;
+use parquet::file::properties::{WriterProperties, WriterVersion};
+use parquet::file::writer::SerializedFileWriter;
+use parquet::schema::types::Type;
+use t2spline::job::RunOutput;
+
+use crate::keys::top_level_json;
+use crate::table::{one_table, Table};
+
+/// Rows per row group: large enough for a million samples in one, as
+/// pyarrow and parquet-rs do by default.
+const ROW_GROUP: usize = 1 << 20;
+
+/// Values computed per call of the column writer (a surface's `u`, `v`, the
+/// distance), so that no column is stored whole.
+const CHUNK: usize = 1 << 16;
+
+/// The key-value metadata of a result file: every key of the result file
+/// but the samples, each value as compact JSON text (the same digits as the
+/// JSON file).
+fn metadata(result: &RunOutput) -> Result<Vec<KeyValue>, serde_json::Error> {
+    Ok(top_level_json(result, &["curves", "surfaces"])?
+        .into_iter()
+        .map(|(k, v)| KeyValue::new(k, v))
+        .collect())
+}
+
+/// The writer's settings: Snappy compression, no dictionaries, our name;
+/// for columns of floats (`split`) the byte-stream-split encoding.
+fn properties(metadata: Vec<KeyValue>, split: bool) -> Arc<WriterProperties> {
+    let builder = WriterProperties::builder()
+        .set_writer_version(WriterVersion::PARQUET_1_0)
+        .set_compression(Compression::SNAPPY)
+        .set_dictionary_enabled(false)
+        .set_max_row_group_size(ROW_GROUP)
+        .set_created_by(format!("t2spline {}", env!("CARGO_PKG_VERSION")))
+        .set_key_value_metadata(Some(metadata));
+    let builder = if split {
+        builder.set_encoding(Encoding::BYTE_STREAM_SPLIT)
+    } else {
+        builder
+    };
+    Arc::new(builder.build())
+}
+
+/// A required `DOUBLE` column.
+fn double(name: &str) -> Result<Arc<Type>, ParquetError> {
+    Type::primitive_type_builder(name, Physical::DOUBLE)
+        .with_repetition(Repetition::REQUIRED)
+        .build()
+        .map(Arc::new)
+}
+
+/// A message type (the schema) of `fields`.
+fn schema(fields: Vec<Arc<Type>>) -> Result<Arc<Type>, ParquetError> {
+    Type::group_type_builder("schema")
+        .with_fields(fields)
+        .build()
+        .map(Arc::new)
+}
+
+/// `ParquetError` as an I/O error, for [`crate::Staged`] and its callers.
+fn io_error(e: ParquetError) -> std::io::Error {
+    match e {
+        ParquetError::External(inner) => match inner.downcast::<std::io::Error>() {
+            Ok(io) => *io,
+            Err(other) => std::io::Error::other(other),
+        },
+        other => std::io::Error::other(other),
+    }
+}
+
+/// Writes the sampled curves (or surfaces) of `result` as one Parquet table:
+/// one row per parameter, a `DOUBLE` column per curve and coordinate with the
+/// names of the CSV columns (`t` or `u, v`; `upper_left_x`, …, `crisp_x`,
+/// …; `alpha_cut_upper_left_x`, … for the alpha-cut layers that exist;
+/// `left_*`, `right_*`, `defuzzified_*`, `distance`; `crisp_d1_x`, … with
+/// derivatives), and every other key of the result file (`alpha`, `regime`,
+/// `error`, `control_points`, the spline's `order`, `degree`, `weights`,
+/// `knots`, `domain`, …) as key-value metadata whose values are JSON text.
+///
+/// # Errors
+/// The errors of `writer`.
+///
+/// # Examples
+/// ```
+/// # use t2spline::job::Overrides;
+/// let job = t2spline_io::read_job(std::path::Path::new("../../examples/paper-alg-1-1.json"))?;
+/// let result = job.run(&job.settings(&Overrides::default())?)?;
+/// let mut bytes = Vec::new();
+/// t2spline_io::write_parquet(&mut bytes, &result)?;
+/// assert_eq!(&bytes[..4], b"PAR1");
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn write_parquet<W: Write + Send>(writer: W, result: &RunOutput) -> std::io::Result<()> {
+    let table = one_table(result);
+    let metadata = metadata(result).map_err(std::io::Error::from)?;
+    write_table(writer, &table, metadata).map_err(io_error)
+}
+
+fn write_table<W: Write + Send>(
+    writer: W,
+    table: &Table<'_>,
+    metadata: Vec<KeyValue>,
+) -> Result<(), ParquetError> {
+    let fields = table
+        .columns
+        .iter()
+        .map(|c| double(&c.name))
+        .collect::<Result<_, _>>()?;
+    let mut file = SerializedFileWriter::new(writer, schema(fields)?, properties(metadata, true))?;
+    let mut scratch = Vec::new();
+    for start in (0..table.rows).step_by(ROW_GROUP) {
+        let end = (start + ROW_GROUP).min(table.rows);
+        let mut group = file.next_row_group()?;
+        for column in &table.columns {
+            let mut out = next(&mut group)?;
+            for chunk in (start..end).step_by(CHUNK) {
+                let rows = chunk..(chunk + CHUNK).min(end);
+                let values = column.values.rows(rows, &mut scratch);
+                out.typed::<DoubleType>().write_batch(values, None, None)?;
+            }
+            out.close()?;
+        }
+        group.close()?;
+    }
+    file.close()?;
+    Ok(())
+}
+
+/// A `BYTE_ARRAY` column of UTF-8 text, required or optional.
+fn text(name: &str, repetition: Repetition) -> Result<Arc<Type>, ParquetError> {
+    Type::primitive_type_builder(name, Physical::BYTE_ARRAY)
+        .with_repetition(repetition)
+        .with_logical_type(Some(LogicalType::String))
+        .build()
+        .map(Arc::new)
+}
+
+/// The values and definition levels (1 present, 0 null) of an optional
+/// column.
+fn optional<T: Clone>(values: impl Iterator<Item = Option<T>>) -> (Vec<T>, Vec<i16>) {
+    let mut present = Vec::new();
+    let levels = values
+        .map(|v| match v {
+            Some(v) => {
+                present.push(v);
+                1
+            }
+            None => 0,
+        })
+        .collect();
+    (present, levels)
+}
+
+/// Writes the summary of a run of many jobs as a Parquet table with the
+/// columns of [`SUMMARY_COLUMNS`](crate::SUMMARY_COLUMNS): `name`, `file`
+/// and `status` required text, `regime` and `message` optional text,
+/// `alpha`, `error_max`, `error_rms` optional `DOUBLE` (null for a job that
+/// did not run).
+///
+/// # Errors
+/// The errors of `writer`.
+pub fn write_summary_parquet<W: Write + Send>(
+    writer: W,
+    jobs: &[crate::JobSummary],
+) -> std::io::Result<()> {
+    write_summary(writer, jobs).map_err(io_error)
+}
+
+fn write_summary<W: Write + Send>(
+    writer: W,
+    jobs: &[crate::JobSummary],
+) -> Result<(), ParquetError> {
+    const OPTIONAL: Repetition = Repetition::OPTIONAL;
+    const REQUIRED: Repetition = Repetition::REQUIRED;
+    let [name, file, status, regime, alpha, max, rms, message] = crate::SUMMARY_COLUMNS;
+    let fields = vec![
+        text(name, REQUIRED)?,
+        text(file, REQUIRED)?,
+        text(status, REQUIRED)?,
+        text(regime, OPTIONAL)?,
+        optional_double(alpha)?,
+        optional_double(max)?,
+        optional_double(rms)?,
+        text(message, OPTIONAL)?,
+    ];
+    let mut out =
+        SerializedFileWriter::new(writer, schema(fields)?, properties(Vec::new(), false))?;
+    let mut group = out.next_row_group()?;
+    let strings = |f: &dyn Fn(&crate::JobSummary) -> Option<&str>| {
+        optional(jobs.iter().map(|j| f(j).map(ByteArray::from)))
+    };
+    let numbers = |f: &dyn Fn(&crate::JobSummary) -> Option<f64>| optional(jobs.iter().map(f));
+    let columns_of_text = [
+        strings(&|j| Some(&j.name)),
+        strings(&|j| Some(&j.file)),
+        strings(&|j| Some(&j.status)),
+        strings(&|j| j.regime.as_deref()),
+    ];
+    for (k, (values, levels)) in columns_of_text.iter().enumerate() {
+        let mut c = next(&mut group)?;
+        let levels = (k == 3).then_some(&levels[..]);
+        c.typed::<ByteArrayType>()
+            .write_batch(values, levels, None)?;
+        c.close()?;
+    }
+    for (values, levels) in [
+        numbers(&|j| j.alpha),
+        numbers(&|j| j.error_max),
+        numbers(&|j| j.error_rms),
+    ] {
+        let mut c = next(&mut group)?;
+        c.typed::<DoubleType>()
+            .write_batch(&values, Some(&levels), None)?;
+        c.close()?;
+    }
+    let (values, levels) = strings(&|j| j.message.as_deref());
+    let mut c = next(&mut group)?;
+    c.typed::<ByteArrayType>()
+        .write_batch(&values, Some(&levels), None)?;
+    c.close()?;
+    group.close()?;
+    out.close()?;
+    Ok(())
+}
+
+/// An optional `DOUBLE` column.
+fn optional_double(name: &str) -> Result<Arc<Type>, ParquetError> {
+    Type::primitive_type_builder(name, Physical::DOUBLE)
+        .with_repetition(Repetition::OPTIONAL)
+        .build()
+        .map(Arc::new)
+}
+
+/// The next column of a row group, which the schema says exists.
+fn next<'g, W: Write + Send>(
+    group: &'g mut parquet::file::writer::SerializedRowGroupWriter<'_, W>,
+) -> Result<parquet::file::writer::SerializedColumnWriter<'g>, ParquetError> {
+    group
+        .next_column()?
+        .ok_or_else(|| ParquetError::General("fewer columns than the schema".into()))
+}

@@ -1,0 +1,91 @@
+//! The summary of a run of many jobs: one row per job, as CSV (and as
+//! Parquet with the feature `parquet`).
+
+use std::io::{self, Write};
+
+/// One job of a run of many: its name and file, how it ended, and its key
+/// figures when it ran.
+#[derive(Clone, Debug, PartialEq)]
+pub struct JobSummary {
+    /// The name of its outputs (the job file's name without `.json`).
+    pub name: String,
+    /// The job file as given.
+    pub file: String,
+    /// `ok`, or the kind of failure: `invalid`, `unreadable`, `unwritable`,
+    /// `internal`.
+    pub status: String,
+    /// `alpha <= h`, `alpha > h` or `mixed` (SPEC §3), if it ran.
+    pub regime: Option<String>,
+    /// The level alpha, if it ran.
+    pub alpha: Option<f64>,
+    /// `error.max`, if it ran.
+    pub error_max: Option<f64>,
+    /// `error.rms`, if it ran.
+    pub error_rms: Option<f64>,
+    /// What went wrong (the lines of the error, joined by `; `), if it failed.
+    pub message: Option<String>,
+}
+
+/// The column names of a summary, in order.
+pub const SUMMARY_COLUMNS: [&str; 8] = [
+    "name",
+    "file",
+    "status",
+    "regime",
+    "alpha",
+    "error_max",
+    "error_rms",
+    "message",
+];
+
+/// A number in the CSV files' form.
+fn number(x: Option<f64>) -> Vec<u8> {
+    let mut out = Vec::new();
+    if let Some(x) = x {
+        // Writing to a Vec cannot fail.
+        crate::number::csv(&mut out, x).expect("in-memory write");
+    }
+    out
+}
+
+/// Writes the summary as CSV: a header of [`SUMMARY_COLUMNS`], then a line
+/// per job; an empty field where a job has no value, text quoted where it
+/// holds a comma, quote or line break (RFC 4180), numbers as in the result's
+/// CSV files.
+///
+/// # Errors
+/// The errors of `writer`.
+///
+/// # Examples
+/// ```
+/// # use t2spline_io::{write_summary_csv, JobSummary};
+/// let ok = JobSummary { name: "a".into(), file: "jobs/a.json".into(), status: "ok".into(),
+///     regime: Some("alpha > h".into()), alpha: Some(0.8), error_max: Some(0.044), error_rms: Some(0.01),
+///     message: None };
+/// let bad = JobSummary { name: "b".into(), file: "jobs/b.json".into(), status: "invalid".into(),
+///     regime: None, alpha: None, error_max: None, error_rms: None,
+///     message: Some("jobs/b.json:3:5: alhpa: unknown key".into()) };
+/// let mut out = Vec::new();
+/// write_summary_csv(&mut out, &[ok, bad])?;
+/// assert_eq!(String::from_utf8(out)?, "name,file,status,regime,alpha,error_max,error_rms,message\n\
+///     a,jobs/a.json,ok,alpha > h,0.8,0.044,0.01,\n\
+///     b,jobs/b.json,invalid,,,,,jobs/b.json:3:5: alhpa: unknown key\n");
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn write_summary_csv<W: Write>(writer: W, jobs: &[JobSummary]) -> io::Result<()> {
+    let mut w = csv::Writer::from_writer(writer);
+    w.write_record(SUMMARY_COLUMNS)?;
+    for job in jobs {
+        w.write_record([
+            job.name.as_bytes(),
+            job.file.as_bytes(),
+            job.status.as_bytes(),
+            job.regime.as_deref().unwrap_or_default().as_bytes(),
+            &number(job.alpha),
+            &number(job.error_max),
+            &number(job.error_rms),
+            job.message.as_deref().unwrap_or_default().as_bytes(),
+        ])?;
+    }
+    w.flush()
+}

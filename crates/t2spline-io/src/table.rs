@@ -1,0 +1,239 @@
+//! A run's sampled curves (or surfaces) as tables of named columns, one row
+//! per parameter: what the CSV files and the Parquet file hold.
+//!
+//! Columns borrow the result's vectors (structure of arrays, [`Points`]);
+//! nothing is copied. A surface's `u` and `v` repeat over the grid (`v`
+//! fastest) and the distance is computed row by row, so neither is stored.
+
+use t2spline::job::{Parameters, Points, RunOutput};
+use t2spline::pipeline::euclidean_norm;
+use t2spline::Layer;
+
+/// The coordinate names of columns: `crisp_x`, `crisp_y`, `crisp_z`.
+const AXES: [&str; 3] = ["x", "y", "z"];
+
+/// Where the values of a column come from.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum Values<'a> {
+    /// One value per row.
+    Slice(&'a [f64]),
+    /// A grid's `u`: row `i` has `u[i / sv]`.
+    Outer(&'a [f64], usize),
+    /// A grid's `v`: row `i` has `v[i % v.len()]`.
+    Inner(&'a [f64]),
+    /// `|crisp − defuzzified|` of each row.
+    Distance(&'a Points, &'a Points),
+}
+
+impl Values<'_> {
+    /// The value of row `i`.
+    #[inline]
+    pub(crate) fn get(&self, i: usize) -> f64 {
+        match *self {
+            Values::Slice(v) => v[i],
+            Values::Outer(u, sv) => u[i / sv],
+            Values::Inner(v) => v[i % v.len()],
+            Values::Distance(a, b) => {
+                // Scaled, so that a distance near 1e-170 does not underflow
+                // when squared.
+                let mut d = [0.0; 3];
+                let dims = a.dimension().min(3);
+                for (axis, d) in d[..dims].iter_mut().enumerate() {
+                    *d = a.coord(axis)[i] - b.coord(axis)[i];
+                }
+                euclidean_norm(&d[..dims])
+            }
+        }
+    }
+
+    /// The values of rows `rows`, borrowed when they are stored, else
+    /// computed into `scratch`.
+    #[cfg(feature = "parquet")]
+    pub(crate) fn rows<'s>(
+        &'s self,
+        rows: std::ops::Range<usize>,
+        scratch: &'s mut Vec<f64>,
+    ) -> &'s [f64] {
+        if let Values::Slice(v) = self {
+            return &v[rows];
+        }
+        scratch.clear();
+        scratch.extend(rows.map(|i| self.get(i)));
+        scratch
+    }
+}
+
+/// A named column.
+#[derive(Clone, Debug)]
+pub(crate) struct Column<'a> {
+    /// `t`, `crisp_x`, `distance`, ...: letters, digits and `_` only.
+    pub(crate) name: String,
+    /// Its values.
+    pub(crate) values: Values<'a>,
+}
+
+/// Columns of one length.
+#[derive(Clone, Debug)]
+pub(crate) struct Table<'a> {
+    /// The columns, parameters first.
+    pub(crate) columns: Vec<Column<'a>>,
+    /// The number of rows.
+    pub(crate) rows: usize,
+}
+
+/// Curves of one family: a name per curve.
+type Family<'a> = Vec<(String, &'a Points)>;
+
+/// The parameter columns: `t`, or a grid's `u` and `v` (`v` fastest).
+fn parameters(params: &Parameters) -> Vec<Column<'_>> {
+    let column = |name: &str, values| Column {
+        name: name.to_owned(),
+        values,
+    };
+    match params {
+        Parameters::Along(t) => vec![column("t", Values::Slice(t))],
+        Parameters::Grid { u, v } => vec![
+            column("u", Values::Outer(u, v.len().max(1))),
+            column("v", Values::Inner(v)),
+        ],
+    }
+}
+
+/// `name_x, name_y (, name_z)` for every curve of `family`, each name after
+/// `prefix`.
+fn coordinates<'a>(prefix: &str, family: &[(String, &'a Points)]) -> Vec<Column<'a>> {
+    let mut columns = Vec::new();
+    for (name, points) in family {
+        for (c, axis) in points.coords().iter().zip(AXES) {
+            columns.push(Column {
+                name: format!("{prefix}{name}_{axis}"),
+                values: Values::Slice(c),
+            });
+        }
+    }
+    columns
+}
+
+/// The curve families of a result: stage 1 (the seven layers), stage 2 (the
+/// alpha-cut layers that exist at this alpha, the crisp curve for the crisp
+/// layer), stage 3 (left, crisp, right), stage 4 (crisp, defuzzified), and
+/// the derivatives if any (`crisp_d1 … defuzzified_dK`).
+struct Families<'a> {
+    stage1: Family<'a>,
+    stage2: Family<'a>,
+    stage3: Family<'a>,
+    stage4: Family<'a>,
+    derivatives: Option<Family<'a>>,
+}
+
+impl<'a> Families<'a> {
+    fn of(result: &'a RunOutput) -> Self {
+        let c = &result.samples;
+        let named = |name: &str, points| (name.to_owned(), points);
+        Families {
+            stage1: Layer::ALL
+                .iter()
+                .map(|&l| named(l.name(), c.layer(l)))
+                .collect(),
+            stage2: Layer::ALL
+                .iter()
+                .filter_map(|&l| match c.alpha_cut.get(l) {
+                    Some(Some(v)) => Some(named(l.name(), v)),
+                    Some(None) => None,
+                    None => Some(named(l.name(), &c.crisp)),
+                })
+                .collect(),
+            stage3: vec![
+                named("left", &c.type_reduced.left),
+                named("crisp", &c.crisp),
+                named("right", &c.type_reduced.right),
+            ],
+            stage4: vec![
+                named("crisp", &c.crisp),
+                named("defuzzified", &c.defuzzified),
+            ],
+            derivatives: c.derivatives.as_ref().map(|d| {
+                [("crisp", &d.crisp), ("defuzzified", &d.defuzzified)]
+                    .into_iter()
+                    .flat_map(|(name, orders)| {
+                        orders
+                            .iter()
+                            .enumerate()
+                            .map(move |(k, points)| (format!("{name}_d{}", k + 1), points))
+                    })
+                    .collect()
+            }),
+        }
+    }
+}
+
+/// The `distance` column: `|crisp − defuzzified|` per row.
+fn distance(result: &RunOutput) -> Column<'_> {
+    Column {
+        name: "distance".to_owned(),
+        values: Values::Distance(&result.samples.crisp, &result.samples.defuzzified),
+    }
+}
+
+/// The CSV files' tables by file name: the four stages, then `derivatives`
+/// when the result has them (names from [`crate::CSV_FILES`] and
+/// [`crate::DERIVATIVES_CSV`]).
+pub(crate) fn csv_tables<'r>(result: &'r RunOutput) -> Vec<(&'static str, Table<'r>)> {
+    let f = Families::of(result);
+    let rows = result.samples.params.count();
+    let table = |family: &[(String, &'r Points)], extra: Option<Column<'r>>| {
+        let mut columns = parameters(&result.samples.params);
+        columns.extend(coordinates("", family));
+        columns.extend(extra);
+        Table { columns, rows }
+    };
+    let mut tables = vec![
+        (crate::CSV_FILES[0].0, table(&f.stage1, None)),
+        (crate::CSV_FILES[1].0, table(&f.stage2, None)),
+        (crate::CSV_FILES[2].0, table(&f.stage3, None)),
+        (
+            crate::CSV_FILES[3].0,
+            table(&f.stage4, Some(distance(result))),
+        ),
+    ];
+    if let Some(d) = &f.derivatives {
+        tables.push((crate::DERIVATIVES_CSV, table(d, None)));
+    }
+    tables
+}
+
+/// Every sampled column of a result in one table, each curve once, with
+/// the names of the CSV columns: the parameters, stage 1 (`upper_left_x`,
+/// …, `crisp_x`, …), the alpha-cut layers that exist (`alpha_cut_upper_left_x`:
+/// prefixed, as the stage-2 file's names repeat stage 1's), `left_*`,
+/// `right_*`, `defuzzified_*`, `distance`, and the derivatives
+/// (`crisp_d1_x`, …).
+#[cfg(feature = "parquet")]
+pub(crate) fn one_table(result: &RunOutput) -> Table<'_> {
+    let f = Families::of(result);
+    let mut columns = parameters(&result.samples.params);
+    columns.extend(coordinates("", &f.stage1));
+    // Stage 2 without the crisp curve, which stage 1 has.
+    let cuts: Family<'_> = f
+        .stage2
+        .iter()
+        .filter(|(name, _)| name != Layer::Crisp.name())
+        .cloned()
+        .collect();
+    columns.extend(coordinates("alpha_cut_", &cuts));
+    let c = &result.samples;
+    let rest: Family<'_> = vec![
+        ("left".to_owned(), &c.type_reduced.left),
+        ("right".to_owned(), &c.type_reduced.right),
+        ("defuzzified".to_owned(), &c.defuzzified),
+    ];
+    columns.extend(coordinates("", &rest));
+    columns.push(distance(result));
+    if let Some(d) = &f.derivatives {
+        columns.extend(coordinates("", d));
+    }
+    Table {
+        columns,
+        rows: result.samples.params.count(),
+    }
+}
