@@ -47,30 +47,70 @@ pub fn figure_samples(model: &Model) -> usize {
         .clamp(MIN_FIGURE_SAMPLES, MAX_FIGURE_SAMPLES)
 }
 
-/// The result of the job at `alpha`, sampled for figures.
-///
-/// # Errors
-/// [`Error::Surface`] for a surface job; [`Error::Core`] if the run fails (it
-/// does not for a validated curve job without derivatives).
-pub fn compute(job: &Job, alpha: Alpha) -> Result<RunOutput, Error> {
-    run_at(job, alpha, figure_samples(&job.model))
-}
-
-/// The result of the job at `alpha` with `samples` samples, as
-/// `t2spline run --alpha A --samples N` computes it.
+/// The result of the job at `alpha`, sampled for figures: a curve at
+/// [`figure_samples`], a surface on [`surface_grid`].
 ///
 /// # Errors
 /// [`Error::Core`] if the run fails (it does not for a validated job without
 /// derivatives).
-pub fn run_at(job: &Job, alpha: Alpha, samples: usize) -> Result<RunOutput, Error> {
-    if job.model.is_surface() {
-        return Err(Error::Surface);
-    }
+pub fn compute(job: &Job, alpha: Alpha) -> Result<RunOutput, Error> {
+    let samples = match surface_grid(&job.model) {
+        Some(grid) => Samples::Grid(grid),
+        None => Samples::Along(figure_samples(&job.model)),
+    };
+    run_with(job, alpha, samples)
+}
+
+/// The result of the job at `alpha` with the job's own samples, as
+/// `t2spline run --alpha A` computes it (a curve or a surface).
+///
+/// # Errors
+/// [`Error::Core`] if the run fails (it does not for a validated job without
+/// derivatives).
+pub fn run_job(job: &Job, alpha: Alpha) -> Result<RunOutput, Error> {
+    run_with(job, alpha, job.samples)
+}
+
+fn run_with(job: &Job, alpha: Alpha, samples: Samples) -> Result<RunOutput, Error> {
     Ok(job.run(&Settings {
         alpha,
-        samples: Samples::Along(samples),
+        samples,
         derivatives: None,
     })?)
+}
+
+/// Grid points per knot span and direction in surface figures.
+pub const SURFACE_SAMPLES_PER_SPAN: usize = 8;
+/// The fewest grid points per direction in surface figures.
+pub const MIN_SURFACE_GRID: usize = 17;
+/// The most grid points per direction in surface figures: at most 48 × 48
+/// quadrilaterals are drawn per surface, whatever the job's `samples` or the
+/// size of its net, so a figure's cost is bounded.
+pub const MAX_SURFACE_GRID: usize = 49;
+
+/// The grid `[su, sv]` on which surface figures sample a surface model
+/// ([`SURFACE_SAMPLES_PER_SPAN`] per knot span, from [`MIN_SURFACE_GRID`] to
+/// [`MAX_SURFACE_GRID`] per direction); `None` for a curve.
+#[must_use]
+pub fn surface_grid(model: &Model) -> Option<[usize; 2]> {
+    struct Grid;
+    impl ModelVisitor for Grid {
+        type Output = Option<[usize; 2]>;
+        fn curve<const D: usize>(self, _: &FuzzyCurve<D>) -> Self::Output {
+            None
+        }
+        fn surface<const D: usize>(self, s: &FuzzySurface<D>) -> Self::Output {
+            let (shape, degree) = (s.shape(), s.degree());
+            Some(std::array::from_fn(|k| {
+                shape[k]
+                    .saturating_sub(degree[k])
+                    .saturating_mul(SURFACE_SAMPLES_PER_SPAN)
+                    .saturating_add(1)
+                    .clamp(MIN_SURFACE_GRID, MAX_SURFACE_GRID)
+            }))
+        }
+    }
+    model.visit(Grid)
 }
 
 /// What figures print of a curve's spline.
@@ -88,8 +128,8 @@ pub struct CurveSpline<'a> {
     pub max_at: f64,
 }
 
-/// The spline of a curve result (figures are made of curve results only:
-/// [`run_at`] refuses surfaces; a surface's gives empty lists).
+/// The spline of a curve result (a surface's gives empty lists and `max_at`
+/// NaN).
 #[must_use]
 pub fn curve_spline(r: &RunOutput) -> CurveSpline<'_> {
     let max_at = r.error.max_at.t().unwrap_or(f64::NAN);
@@ -149,6 +189,30 @@ pub fn curves_at(model: &Model, alpha: Alpha, params: &[f64]) -> Result<(Points,
         }
     }
     model.visit(At(alpha, params))
+}
+
+/// The crisp and the defuzzified surface of `model` at `alpha` at the
+/// parameters `uv` (the ends of the largest distance, at `error.max_at`).
+///
+/// # Errors
+/// [`Error::Surface`] for a curve model; [`Error::Core`] if `uv` lies
+/// outside the domain.
+pub fn surfaces_at(model: &Model, alpha: Alpha, uv: [f64; 2]) -> Result<[Vec<f64>; 2], Error> {
+    struct At(Alpha, [f64; 2]);
+    impl ModelVisitor for At {
+        type Output = Result<[Vec<f64>; 2], Error>;
+        fn curve<const D: usize>(self, _: &FuzzyCurve<D>) -> Self::Output {
+            Err(Error::Surface)
+        }
+        fn surface<const D: usize>(self, s: &FuzzySurface<D>) -> Self::Output {
+            let solution = s.solve(self.0);
+            let [u, v] = self.1;
+            let crisp = solution.crisp_surface().eval(u, v)?;
+            let defuzzified = solution.defuzzified_surface().eval(u, v)?;
+            Ok([crisp.to_vec(), defuzzified.to_vec()])
+        }
+    }
+    model.visit(At(alpha, uv))
 }
 
 /// Levels sampled together: bounds the memory of a sweep over many alphas

@@ -75,7 +75,7 @@ pub fn render(
         for (list, f) in kinds.iter_mut().zip([number, s2, s3, s4]) {
             list.push(f);
         }
-        let run = data::run_at(job, alpha, job.samples.count())?;
+        let run = data::run_job(job, alpha)?;
         for (k, (name, text)) in files_of(&run)?.into_iter().enumerate() {
             match files.get_mut(k) {
                 Some((_, texts)) => texts.push(text),
@@ -187,7 +187,7 @@ fn choose_stops(job: &Job, start: Alpha, options: &FigureOptions) -> Result<Stop
     let mut total = 0;
     for a in [0.3, 0.9] {
         let alpha = Alpha::try_new(a)?;
-        let run = data::run_at(job, alpha, job.samples.count())?;
+        let run = data::run_job(job, alpha)?;
         let files: Vec<String> = files_of(&run)?.into_iter().map(|(_, t)| t).collect();
         let figures: Vec<String> = stop_figures(job, alpha, &heights, options)?
             .iter()
