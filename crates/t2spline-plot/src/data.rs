@@ -308,6 +308,9 @@ pub fn sampled_distances(
     alphas: &[Alpha],
     samples: usize,
 ) -> Result<Vec<[f64; 2]>, Error> {
+    if let Some(grid) = surface_grid(model) {
+        return surface_distances(model, alphas, grid);
+    }
     let mut out = vec![[0.0; 2]; alphas.len()];
     for_each_level(model, alphas, samples, &mut |k, d| {
         let n = d.len();
@@ -329,6 +332,56 @@ pub fn sampled_distances(
         out[k] = [max, rms];
     })?;
     Ok(out)
+}
+
+/// [`sampled_distances`] of a surface, on the grid `[su, sv]` of uniform
+/// `(u, v)`: the mean square by the trapezoidal rule in both directions
+/// (weights `ωₐ·ω_b`, ½ at each end of each direction).
+fn surface_distances(
+    model: &Model,
+    alphas: &[Alpha],
+    [su, sv]: [usize; 2],
+) -> Result<Vec<[f64; 2]>, Error> {
+    struct Levels<'a>(&'a [Alpha], [usize; 2]);
+    impl ModelVisitor for Levels<'_> {
+        type Output = Result<Vec<[f64; 2]>, Error>;
+        fn curve<const D: usize>(self, _: &FuzzyCurve<D>) -> Self::Output {
+            Err(Error::Surface)
+        }
+        fn surface<const D: usize>(self, s: &FuzzySurface<D>) -> Self::Output {
+            let [su, sv] = self.1;
+            let grid = |x: &t2spline::NurbsSurface<D>| {
+                x.sample_grid(Params::Uniform(su), Params::Uniform(sv))
+                    .map(t2spline::sampling::Grid::into_samples)
+            };
+            let crisp = grid(&s.crisp_surface())?;
+            let end = |i: usize, n: usize| if i == 0 || i + 1 == n { 0.5 } else { 1.0 };
+            self.0
+                .iter()
+                .map(|&a| {
+                    let d = grid(&s.solve(a).defuzzified_surface())?;
+                    let dist: Vec<f64> = (0..su * sv)
+                        .map(|i| {
+                            let (p, q) = (d.point(i), crisp.point(i));
+                            euclidean_norm(&std::array::from_fn::<f64, D, _>(|k| p[k] - q[k]))
+                        })
+                        .collect();
+                    let max = dist.iter().copied().fold(0.0, f64::max);
+                    let (mut sum, mut weight) = (0.0, 0.0);
+                    if max > 0.0 {
+                        for (i, v) in dist.iter().enumerate() {
+                            let w = end(i / sv, su) * end(i % sv, sv);
+                            sum += w * (v / max) * (v / max);
+                            weight += w;
+                        }
+                    }
+                    let rms = if weight > 0.0 { max * (sum / weight).sqrt() } else { 0.0 };
+                    Ok([max, rms])
+                })
+                .collect()
+        }
+    }
+    model.visit(Levels(alphas, [su, sv]))
 }
 
 /// The fuzzy number of one coordinate of one control point.

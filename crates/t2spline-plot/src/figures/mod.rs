@@ -81,7 +81,7 @@ pub struct FigureOptions {
 }
 
 /// Every figure of the job at `alpha`, in the order of [`FIGURE_NAMES`]; a
-/// surface job has the first five (the number and the four stages).
+/// surface job has all but `alpha-sweep`.
 ///
 /// # Errors
 /// [`Error::NoSuchPoint`] or [`Error::NoSuchAxis`] if `options.number` names
@@ -98,6 +98,7 @@ pub fn all_figures(job: &Job, alpha: Alpha, options: &FigureOptions) -> Result<V
             surface::stage2_figure(&scene),
             surface::stage3_figure(&scene),
             surface::stage4_figure(job, &scene)?,
+            curve::distance_figure(job, alpha.get())?,
         ]);
     }
     let scene = CurveScene::new(&result, &heights, options.aspect);
