@@ -303,18 +303,39 @@ mod tests {
     #[test]
     fn the_nearer_of_two_parallel_planes_is_drawn_last() {
         let bounds = [[0.0, 2.0], [0.0, 2.0], [0.0, 1.0]];
-        for (view, near_is_top) in [((-60.0, 30.0), true), ((20.0, -40.0), false)] {
+        // Looking down, up and obliquely from above and below.
+        for (view, top_nearer) in [
+            ((0.0, 90.0), true),
+            ((0.0, -90.0), false),
+            ((-60.0, 30.0), true),
+            ((20.0, -40.0), false),
+        ] {
             let cam = Camera::new(View::try_new(view.0, view.1).unwrap(), bounds, Aspect::Equal);
             let (low, high) = (plane(0.0), plane(1.0));
             let mut all = faces(&cam, GridRef { points: &low, shape: [3, 3] }, Paint::Shaded(GREY), None);
-            let n = all.len();
+            // The top plane's colour is dark whatever the light (a shade of (1, 2, 3)).
             all.extend(faces(&cam, GridRef { points: &high, shape: [3, 3] }, Paint::Shaded(Color(1, 2, 3)), None));
             all.reverse(); // the order built must not matter
             let Mark::Mesh { facets } = painted(all) else { unreachable!() };
-            // The top plane's faces are those whose colour is a shade of (1, 2, 3).
+            assert_eq!(facets.len(), 8);
             let top = |f: &Facet| f.fill.color.2 <= 3;
-            assert_eq!(facets[n..].iter().all(top), near_is_top, "{view:?}");
-            assert_eq!(facets[..n].iter().all(|f| !top(f)), near_is_top, "{view:?}");
+            let position = |p: Xyz| {
+                let is_top = p[2] > 0.5;
+                facets.iter().position(|f| f.points[0] == cam.project(p) && top(f) == is_top).unwrap()
+            };
+            // Each face of one plane and the face straight above or below it
+            // overlap on the screen: the nearer is drawn after the other.
+            for a in 0..2 {
+                for b in 0..2 {
+                    let (x, y) = (f64::from(a), f64::from(b));
+                    let (lo, hi) = (position([x, y, 0.0]), position([x, y, 1.0]));
+                    assert_eq!(hi > lo, top_nearer, "{view:?} face ({a}, {b})");
+                }
+            }
+            if view.1.abs() == 90.0 {
+                // Straight on, depth is height alone: one plane after the other.
+                assert!(facets[..4].iter().all(|f| top(f) != top_nearer), "{view:?}");
+            }
         }
     }
 }

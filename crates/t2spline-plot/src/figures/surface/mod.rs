@@ -389,6 +389,29 @@ pub fn crisp_legend() -> Vec<LegendEntry> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use t2spline::Alpha;
+
+    #[test]
+    fn the_largest_distance_starts_at_the_projection_of_max_at() {
+        // The terrain's distance is largest at its corner (u, v) = (1, 1),
+        // whose crisp point is the last sample of the grid.
+        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/fuzzy-terrain.json");
+        let job = t2spline_io::read_job(std::path::Path::new(path)).unwrap();
+        let alpha = Alpha::try_new(0.5).unwrap();
+        let r = crate::data::compute(&job, alpha).unwrap();
+        assert_eq!(r.error.max_at, t2spline::job::Parameter::Uv([1.0, 1.0]));
+        let heights = job.model.heights();
+        let scene = SurfaceScene::new(&r, &heights, View::DEFAULT, Aspect::Equal);
+        let fig = stage4_figure(&job, &scene).unwrap();
+        let ends = fig.panels[0].items.iter().find(|i| i.key == "distance-ends").unwrap();
+        let Mark::Markers { points, .. } = &ends.mark else { panic!() };
+        let corner = xyz(&r.samples.crisp).last().copied().unwrap();
+        let want = scene.camera.project(corner);
+        assert!((points[0][0] - want[0]).abs() < 1e-9 && (points[0][1] - want[1]).abs() < 1e-9);
+        let solution = xyz(&r.samples.defuzzified).last().copied().unwrap();
+        let d = (0..3).map(|k| (solution[k] - corner[k]).powi(2)).sum::<f64>().sqrt();
+        assert!((d - r.error.max).abs() < 1e-9 * r.error.max.max(1.0), "{d} {}", r.error.max);
+    }
 
     #[test]
     fn bins_round_to_the_nearest_step() {
