@@ -136,7 +136,12 @@ pub struct FigureArgs {
     /// The direction the 3-D views of a surface job look from, as
     /// `AZIMUTH,ELEVATION` in degrees: azimuth from the +x axis toward +y,
     /// elevation above the x–y plane in [-90, 90].
-    #[arg(long, value_name = "AZ,EL", default_value = "-60,30", allow_hyphen_values = true)]
+    #[arg(
+        long,
+        value_name = "AZ,EL",
+        default_value = "-60,30",
+        allow_hyphen_values = true
+    )]
     pub view: t2spline_plot::View,
 }
 

@@ -223,13 +223,24 @@ fn plot_and_report_draw_both_surface_examples() {
         for stem in &NAMES[..5] {
             for ext in ["svg", "png"] {
                 let p = dir.path().join("figs").join(format!("{stem}.{ext}"));
-                assert!(std::fs::metadata(&p).unwrap().len() > 1000, "{}", p.display());
+                assert!(
+                    std::fs::metadata(&p).unwrap().len() > 1000,
+                    "{}",
+                    p.display()
+                );
             }
         }
         let png = std::fs::read(dir.path().join("figs/stage1-fuzzy.png")).unwrap();
-        assert_eq!(&png[37..41], b"pHYs", "{name}: 300 dpi like the curve figures");
+        assert_eq!(
+            &png[37..41],
+            b"pHYs",
+            "{name}: 300 dpi like the curve figures"
+        );
         let svg = std::fs::read_to_string(dir.path().join("figs/stage1-fuzzy.svg")).unwrap();
-        assert!(svg.contains("azimuth 30°, elevation 45°"), "{name}: the view is stated");
+        assert!(
+            svg.contains("azimuth 30°, elevation 45°"),
+            "{name}: the view is stated"
+        );
         assert!(!dir.path().join("figs/alpha-sweep.svg").exists());
         assert!(dir.path().join("figs/distance-alpha.svg").exists());
         t2spline()
@@ -239,7 +250,10 @@ fn plot_and_report_draw_both_surface_examples() {
             .assert()
             .success();
         let html = std::fs::read_to_string(dir.path().join("report/report.html")).unwrap();
-        assert!(html.contains("id=\"m-max-at-v\""), "{name}: max_at is (u, v)");
+        assert!(
+            html.contains("id=\"m-max-at-v\""),
+            "{name}: max_at is (u, v)"
+        );
         assert!(html.contains("azimuth −30°, elevation 20°"), "{name}");
         assert!(html.len() < 5_000_000, "{name}: report size {}", html.len());
     }

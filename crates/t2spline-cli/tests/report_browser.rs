@@ -407,7 +407,11 @@ fn check_report(
     let (stdout, csv) = run_files(job, &alpha);
     let d = page.exec(DOWNLOADS, json!([]));
     let files = d["files"].as_array().unwrap();
-    assert_eq!(files.len(), 1 + csv.len(), "the result and run's CSV files: {files:?}");
+    assert_eq!(
+        files.len(),
+        1 + csv.len(),
+        "the result and run's CSV files: {files:?}"
+    );
     for f in files {
         let (name, text) = (f[0].as_str().unwrap(), f[1].as_str().unwrap());
         let expected = if name == "result.json" {

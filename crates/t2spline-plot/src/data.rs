@@ -375,7 +375,11 @@ fn surface_distances(
                             weight += w;
                         }
                     }
-                    let rms = if weight > 0.0 { max * (sum / weight).sqrt() } else { 0.0 };
+                    let rms = if weight > 0.0 {
+                        max * (sum / weight).sqrt()
+                    } else {
+                        0.0
+                    };
                     Ok([max, rms])
                 })
                 .collect()

@@ -6,7 +6,9 @@ use std::path::{Path, PathBuf};
 
 use t2spline::job::Job;
 use t2spline::{Alpha, Axis};
-use t2spline_plot::{all_figures, render_svg, Error, Figure, FigureOptions, Mark, NumberChoice, View};
+use t2spline_plot::{
+    all_figures, render_svg, Error, Figure, FigureOptions, Mark, NumberChoice, View,
+};
 
 fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
@@ -20,7 +22,10 @@ fn figures(job: &Job, options: FigureOptions) -> Vec<Figure> {
     all_figures(job, Alpha::try_new(0.5).unwrap(), &options).unwrap()
 }
 
-const EXAMPLES: [&str; 2] = ["examples/fuzzy-terrain.json", "examples/fuzzy-cylinder.json"];
+const EXAMPLES: [&str; 2] = [
+    "examples/fuzzy-terrain.json",
+    "examples/fuzzy-cylinder.json",
+];
 
 const NAMES: [&str; 6] = [
     "number",
@@ -42,7 +47,11 @@ fn texts(svg: &str) -> Vec<String> {
 }
 
 fn keys(fig: &Figure, panel: usize) -> Vec<&str> {
-    fig.panels[panel].items.iter().map(|i| i.key.as_str()).collect()
+    fig.panels[panel]
+        .items
+        .iter()
+        .map(|i| i.key.as_str())
+        .collect()
 }
 
 #[test]
@@ -56,7 +65,12 @@ fn every_stage_of_a_surface_job_is_drawn() {
             let svg = render_svg(fig);
             let texts = texts(&svg);
             for entry in &fig.legend {
-                assert!(texts.contains(&entry.label), "{path} {}: legend {:?}", fig.name, entry.label);
+                assert!(
+                    texts.contains(&entry.label),
+                    "{path} {}: legend {:?}",
+                    fig.name,
+                    entry.label
+                );
             }
             if !fig.name.starts_with("stage") {
                 continue;
@@ -68,11 +82,24 @@ fn every_stage_of_a_surface_job_is_drawn() {
             for key in ["box", "surfaces", "ticks"] {
                 assert!(keys(fig, 0).contains(&key), "{path} {}: {key}", fig.name);
             }
-            assert!(view.title.as_deref().unwrap().contains("azimuth −60°, elevation 30°"));
+            assert!(view
+                .title
+                .as_deref()
+                .unwrap()
+                .contains("azimuth −60°, elevation 30°"));
             for axis in ["x", "y", "z"] {
-                assert!(texts.iter().any(|t| t == axis), "{path} {}: axis {axis}", fig.name);
+                assert!(
+                    texts.iter().any(|t| t == axis),
+                    "{path} {}: axis {axis}",
+                    fig.name
+                );
             }
-            let Some(Mark::Mesh { facets }) = view.items.iter().find(|i| i.key == "surfaces").map(|i| &i.mark) else {
+            let Some(Mark::Mesh { facets }) = view
+                .items
+                .iter()
+                .find(|i| i.key == "surfaces")
+                .map(|i| &i.mark)
+            else {
                 panic!("{path} {}: no surfaces", fig.name)
             };
             assert!(facets.iter().filter(|f| !f.points.is_empty()).count() >= 16 * 16);
@@ -90,13 +117,23 @@ fn stage4_marks_the_largest_distance_on_the_map_and_the_colour_bar() {
         let job = read(path);
         let figs = figures(&job, FigureOptions::default());
         let run = job
-            .run(&job.settings(&t2spline::job::Overrides { alpha: Some(0.5), ..Default::default() }).unwrap())
+            .run(
+                &job.settings(&t2spline::job::Overrides {
+                    alpha: Some(0.5),
+                    ..Default::default()
+                })
+                .unwrap(),
+            )
             .unwrap();
         let t2spline::job::Parameter::Uv(uv) = run.error.max_at else {
             panic!("a surface's max_at is (u, v)")
         };
         let s4 = &figs[4];
-        let marker = s4.panels[1].items.iter().find(|i| i.key == "max-at").unwrap();
+        let marker = s4.panels[1]
+            .items
+            .iter()
+            .find(|i| i.key == "max-at")
+            .unwrap();
         let Mark::Markers { points, .. } = &marker.mark else {
             panic!("{path}: max_at is marked")
         };
@@ -111,10 +148,17 @@ fn stage4_marks_the_largest_distance_on_the_map_and_the_colour_bar() {
 #[test]
 fn the_view_is_chosen_and_stated() {
     let job = read(EXAMPLES[0]);
-    let options = FigureOptions { view: View::try_new(30.0, 60.0).unwrap(), ..FigureOptions::default() };
+    let options = FigureOptions {
+        view: View::try_new(30.0, 60.0).unwrap(),
+        ..FigureOptions::default()
+    };
     let a = figures(&job, options);
     let b = figures(&job, FigureOptions::default());
-    assert!(a[1].panels[0].title.as_deref().unwrap().contains("azimuth 30°, elevation 60°"));
+    assert!(a[1].panels[0]
+        .title
+        .as_deref()
+        .unwrap()
+        .contains("azimuth 30°, elevation 60°"));
     assert_ne!(render_svg(&a[1]), render_svg(&b[1]));
     // The map over (u, v) does not depend on the view.
     assert_eq!(a[1].panels[1], b[1].panels[1]);
@@ -128,15 +172,30 @@ fn numbers_of_the_net_are_indexed_row_by_row() {
         all_figures(
             &job,
             Alpha::try_new(0.5).unwrap(),
-            &FigureOptions { number: NumberChoice { point, axis: Axis::Z }, ..FigureOptions::default() },
+            &FigureOptions {
+                number: NumberChoice {
+                    point,
+                    axis: Axis::Z,
+                },
+                ..FigureOptions::default()
+            },
         )
     };
     let figs = number(7).unwrap();
     let svg = render_svg(&figs[0]);
     // Row 1, column 2 has crisp height 106.03 (column by column, point 7
     // would be row 1, column 1, at 104.22).
-    assert!(svg.contains(">crisp 106<"), "the crisp height of row 1, column 2");
-    assert!(matches!(number(30), Err(Error::NoSuchPoint { point: 30, count: 30 })));
+    assert!(
+        svg.contains(">crisp 106<"),
+        "the crisp height of row 1, column 2"
+    );
+    assert!(matches!(
+        number(30),
+        Err(Error::NoSuchPoint {
+            point: 30,
+            count: 30
+        })
+    ));
 }
 
 /// A fuzzy surface job of `n × n` control points (a smooth hill), bicubic.
@@ -150,7 +209,12 @@ fn big_net(n: usize, samples: usize) -> Job {
             let fuzzy = |c: f64, s: f64| {
                 format!(
                     r#"{{"crisp": {c}, "upper": [{}, {}], "primary": [{}, {}], "lower": [{}, {}]}}"#,
-                    c - 3.0 * s, c + 2.0 * s, c - 2.0 * s, c + 1.5 * s, c - s, c + s
+                    c - 3.0 * s,
+                    c + 2.0 * s,
+                    c - 2.0 * s,
+                    c + 1.5 * s,
+                    c - s,
+                    c + s
                 )
             };
             row.push(format!(
@@ -174,12 +238,29 @@ fn large_nets_draw_a_capped_grid_whatever_the_samples() {
     let small = figures(&big_net(40, 5), FigureOptions::default());
     let large = figures(&big_net(40, 400), FigureOptions::default());
     for (a, b) in small.iter().zip(&large) {
-        assert_eq!(render_svg(a), render_svg(b), "{}: figures do not depend on the job's samples", a.name);
+        assert_eq!(
+            render_svg(a),
+            render_svg(b),
+            "{}: figures do not depend on the job's samples",
+            a.name
+        );
     }
-    let Mark::Mesh { facets } = &small[4].panels[0].items.iter().find(|i| i.key == "surfaces").unwrap().mark else {
+    let Mark::Mesh { facets } = &small[4].panels[0]
+        .items
+        .iter()
+        .find(|i| i.key == "surfaces")
+        .unwrap()
+        .mark
+    else {
         panic!()
     };
     // Stage 4 draws the crisp surface on the capped grid: 48 × 48 quadrilaterals.
-    assert_eq!(facets.iter().filter(|f| !f.points.is_empty()).count(), 48 * 48);
-    assert!(small[1].notes.iter().any(|n| n.contains("interval bars left out")));
+    assert_eq!(
+        facets.iter().filter(|f| !f.points.is_empty()).count(),
+        48 * 48
+    );
+    assert!(small[1]
+        .notes
+        .iter()
+        .any(|n| n.contains("interval bars left out")));
 }

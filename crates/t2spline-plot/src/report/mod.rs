@@ -127,7 +127,10 @@ pub fn render(
         (static_svg(&surface::stage1_figure(&scene)), None)
     } else {
         let scene = CurveScene::new(&fig_result, &heights, options.aspect);
-        (static_svg(&stage1_figure(&scene)), Some(static_svg(&sweep_figure(job)?)))
+        (
+            static_svg(&stage1_figure(&scene)),
+            Some(static_svg(&sweep_figure(job)?)),
+        )
     };
     let table_html: Vec<String> = table_defs
         .iter()
@@ -156,7 +159,11 @@ pub fn render(
         options.number.axis.name(),
         options.number.point
     );
-    let captions = if surface { SURFACE_CAPTIONS } else { CURVE_CAPTIONS };
+    let captions = if surface {
+        SURFACE_CAPTIONS
+    } else {
+        CURVE_CAPTIONS
+    };
     for s in [
         Section { id: "number", title: "One fuzzy number (paper Figs. 3.1, 4.1–4.4)", svg: &figs[0].svg, figure: "number", caption: &number_caption, csv: None, tables: vec![] },
         Section { id: "stage1", title: captions[0], svg: &stage1, figure: "stage1-fuzzy", caption: "Does not depend on α.", csv: Some("stage1-layers.csv"), tables: vec![fuzzy_points_table(job, &start_run)] },
@@ -168,7 +175,15 @@ pub fn render(
         page.section(&s);
     }
     if let Some(sweep) = &sweep {
-        page.section(&Section { id: "sweep", title: "Where along the curve the solution moves", svg: sweep, figure: "alpha-sweep", caption: "‖D(t) − C(t)‖ against t for several α; does not depend on the slider.", csv: None, tables: vec![] });
+        page.section(&Section {
+            id: "sweep",
+            title: "Where along the curve the solution moves",
+            svg: sweep,
+            figure: "alpha-sweep",
+            caption: "‖D(t) − C(t)‖ against t for several α; does not depend on the slider.",
+            csv: None,
+            tables: vec![],
+        });
     }
     page.job(job_text);
     if std::env::var("T2SPLINE_DEBUG_SIZES").is_ok() {

@@ -134,13 +134,23 @@ fn mesh(facets: &[Facet], pl: &PanelLayout, clip_attr: &str) -> String {
             s.push_str("<path d=\"");
             for (k, p) in f.points.iter().enumerate() {
                 let [x, y] = pl.to_px(*p);
-                let _ = write!(s, "{}{} {}", if k == 0 { 'M' } else { 'L' }, coord(x), coord(y));
+                let _ = write!(
+                    s,
+                    "{}{} {}",
+                    if k == 0 { 'M' } else { 'L' },
+                    coord(x),
+                    coord(y)
+                );
             }
             let c = f.fill.color;
             if f.fill.opacity >= 1.0 {
                 let _ = write!(s, "Z\" fill=\"{c}\" stroke=\"{c}\" stroke-width=\"0.5\"/>");
             } else {
-                let _ = write!(s, "Z\" fill=\"{c}\" fill-opacity=\"{}\"/>", coord(f.fill.opacity));
+                let _ = write!(
+                    s,
+                    "Z\" fill=\"{c}\" fill-opacity=\"{}\"/>",
+                    coord(f.fill.opacity)
+                );
             }
         }
         if let (Some(stroke), false) = (&f.stroke, f.lines.is_empty()) {

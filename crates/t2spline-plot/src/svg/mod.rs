@@ -264,7 +264,14 @@ fn frame(panel: &Panel, pl: &PanelLayout, clip: &str) -> String {
     );
     if !panel.frame {
         if let Some(t) = &panel.title {
-            s.push_str(&text_el(r.x + 0.5 * r.w, r.y - 7.0, font_size::AXIS, "middle", "", t));
+            s.push_str(&text_el(
+                r.x + 0.5 * r.w,
+                r.y - 7.0,
+                font_size::AXIS,
+                "middle",
+                "",
+                t,
+            ));
         }
         return s;
     }

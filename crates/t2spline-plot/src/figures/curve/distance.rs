@@ -112,7 +112,10 @@ pub fn distance_figure(job: &Job, alpha: f64) -> Result<Figure, crate::Error> {
     let samples = data::figure_samples(&job.model);
     let d = data::sampled_distances(&job.model, &levels, samples)?;
     let (what, over) = match data::surface_grid(&job.model) {
-        Some([su, sv]) => ("surfaces", format!("‖D(u, v) − C(u, v)‖ over the {su} × {sv} grid of uniform (u, v)")),
+        Some([su, sv]) => (
+            "surfaces",
+            format!("‖D(u, v) − C(u, v)‖ over the {su} × {sv} grid of uniform (u, v)"),
+        ),
         None => ("curves", format!("‖D(t) − C(t)‖ over {samples} uniform t")),
     };
     let inner: Vec<f64> = heights.iter().copied().filter(|&h| h < 1.0).collect();
@@ -167,7 +170,10 @@ pub fn distance_figure(job: &Job, alpha: f64) -> Result<Figure, crate::Error> {
         )],
         ..Figure::new(
             "distance-alpha",
-            format!("Distance between the crisp and the defuzzified {} as α varies", &what[..what.len() - 1]),
+            format!(
+                "Distance between the crisp and the defuzzified {} as α varies",
+                &what[..what.len() - 1]
+            ),
             "α = 0, 0.01, …, 1 and both sides of every h: the solution jumps at α = h (SPEC §3)",
             vec![p],
             legend,

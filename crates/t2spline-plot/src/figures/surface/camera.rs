@@ -63,10 +63,7 @@ impl View {
                 "the elevation must lie in [-90, 90] degrees, not {elevation}"
             )));
         }
-        Ok(View {
-            azimuth,
-            elevation,
-        })
+        Ok(View { azimuth, elevation })
     }
 }
 
@@ -88,9 +85,8 @@ impl FromStr for View {
             )));
         };
         let number = |t: &str| {
-            t.parse::<f64>().map_err(|_| {
-                Error::View(format!("`{t}` is not a number of degrees (e.g. -60,30)"))
-            })
+            t.parse::<f64>()
+                .map_err(|_| Error::View(format!("`{t}` is not a number of degrees (e.g. -60,30)")))
         };
         View::try_new(number(a)?, number(e)?)
     }
@@ -311,6 +307,10 @@ mod tests {
             let e = bad.parse::<View>().unwrap_err().to_string();
             assert!(!e.is_empty(), "{bad}");
         }
-        assert!("0,120".parse::<View>().unwrap_err().to_string().contains("[-90, 90]"));
+        assert!("0,120"
+            .parse::<View>()
+            .unwrap_err()
+            .to_string()
+            .contains("[-90, 90]"));
     }
 }

@@ -71,7 +71,12 @@ pub fn faces(cam: &Camera, g: GridRef<'_>, paint: Paint<'_>, iso: Option<&Stroke
     let mut out = Vec::with_capacity(su.saturating_sub(1) * sv.saturating_sub(1));
     for a in 0..su.saturating_sub(1) {
         for b in 0..sv.saturating_sub(1) {
-            let corners = [g.at(a, b), g.at(a + 1, b), g.at(a + 1, b + 1), g.at(a, b + 1)];
+            let corners = [
+                g.at(a, b),
+                g.at(a + 1, b),
+                g.at(a + 1, b + 1),
+                g.at(a, b + 1),
+            ];
             let q = corners.map(|p| cam.to_box(p));
             if q.iter().flatten().any(|v| !v.is_finite()) {
                 continue;
@@ -144,9 +149,16 @@ pub fn boundary(cam: &Camera, g: GridRef<'_>, stroke: &Stroke) -> Vec<Deep> {
     ];
     let mut out = Vec::new();
     for c in &curves {
-        let finite: Vec<Xyz> = c.iter().copied().filter(|p| p.iter().all(|v| v.is_finite())).collect();
+        let finite: Vec<Xyz> = c
+            .iter()
+            .copied()
+            .filter(|p| p.iter().all(|v| v.is_finite()))
+            .collect();
         for run in finite.windows(2).collect::<Vec<_>>().chunks(RUN) {
-            let depth = run.iter().map(|w| cam.depth(w[0]) + cam.depth(w[1])).sum::<f64>()
+            let depth = run
+                .iter()
+                .map(|w| cam.depth(w[0]) + cam.depth(w[1]))
+                .sum::<f64>()
                 / (2 * run.len()) as f64;
             out.push((
                 depth,
@@ -156,7 +168,10 @@ pub fn boundary(cam: &Camera, g: GridRef<'_>, stroke: &Stroke) -> Vec<Deep> {
                         color: stroke.color,
                         opacity: 0.0,
                     },
-                    lines: run.iter().map(|w| [cam.project(w[0]), cam.project(w[1])]).collect(),
+                    lines: run
+                        .iter()
+                        .map(|w| [cam.project(w[0]), cam.project(w[1])])
+                        .collect(),
                     stroke: Some(stroke.clone()),
                 },
             ));
@@ -191,7 +206,11 @@ pub fn back(p: &mut Panel, cam: &Camera) {
         // points away from the viewer.
         let mut normal = [0.0; 3];
         normal[k] = 1.0;
-        let side = if cam.box_depth(normal) > 0.0 { -1.0 } else { 1.0 };
+        let side = if cam.box_depth(normal) > 0.0 {
+            -1.0
+        } else {
+            1.0
+        };
         let (i, j) = ((k + 1) % 3, (k + 2) % 3);
         let mut ring = Vec::new();
         for (si, sj) in [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)] {
@@ -248,7 +267,11 @@ pub fn ticks(p: &mut Panel, cam: &Camera, names: [&str; 3]) {
         let s = tick_edge(cam, k);
         let mid = cam.screen(corner(cam, s));
         let len = mid[0].hypot(mid[1]);
-        let out = if len > 0.0 { [mid[0] / len, mid[1] / len] } else { [0.0, -1.0] };
+        let out = if len > 0.0 {
+            [mid[0] / len, mid[1] / len]
+        } else {
+            [0.0, -1.0]
+        };
         let [lo, hi] = cam.bounds[k];
         let (values, step) = nice_ticks(lo, hi, 5);
         let decimals = decimals_for(step);
@@ -270,7 +293,10 @@ pub fn ticks(p: &mut Panel, cam: &Camera, names: [&str; 3]) {
                 tick_label(v, decimals).replace('-', "−"),
             ));
         }
-        texts.push(([mid[0] + 7.5 * TICK * out[0], mid[1] + 7.5 * TICK * out[1]], (*name).to_owned()));
+        texts.push((
+            [mid[0] + 7.5 * TICK * out[0], mid[1] + 7.5 * TICK * out[1]],
+            (*name).to_owned(),
+        ));
     }
     p.push(
         "ticks",
@@ -310,18 +336,43 @@ mod tests {
             ((-60.0, 30.0), true),
             ((20.0, -40.0), false),
         ] {
-            let cam = Camera::new(View::try_new(view.0, view.1).unwrap(), bounds, Aspect::Equal);
+            let cam = Camera::new(
+                View::try_new(view.0, view.1).unwrap(),
+                bounds,
+                Aspect::Equal,
+            );
             let (low, high) = (plane(0.0), plane(1.0));
-            let mut all = faces(&cam, GridRef { points: &low, shape: [3, 3] }, Paint::Shaded(GREY), None);
+            let mut all = faces(
+                &cam,
+                GridRef {
+                    points: &low,
+                    shape: [3, 3],
+                },
+                Paint::Shaded(GREY),
+                None,
+            );
             // The top plane's colour is dark whatever the light (a shade of (1, 2, 3)).
-            all.extend(faces(&cam, GridRef { points: &high, shape: [3, 3] }, Paint::Shaded(Color(1, 2, 3)), None));
+            all.extend(faces(
+                &cam,
+                GridRef {
+                    points: &high,
+                    shape: [3, 3],
+                },
+                Paint::Shaded(Color(1, 2, 3)),
+                None,
+            ));
             all.reverse(); // the order built must not matter
-            let Mark::Mesh { facets } = painted(all) else { unreachable!() };
+            let Mark::Mesh { facets } = painted(all) else {
+                unreachable!()
+            };
             assert_eq!(facets.len(), 8);
             let top = |f: &Facet| f.fill.color.2 <= 3;
             let position = |p: Xyz| {
                 let is_top = p[2] > 0.5;
-                facets.iter().position(|f| f.points[0] == cam.project(p) && top(f) == is_top).unwrap()
+                facets
+                    .iter()
+                    .position(|f| f.points[0] == cam.project(p) && top(f) == is_top)
+                    .unwrap()
             };
             // Each face of one plane and the face straight above or below it
             // overlap on the screen: the nearer is drawn after the other.

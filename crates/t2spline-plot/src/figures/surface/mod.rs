@@ -77,7 +77,12 @@ pub struct SurfaceScene<'a> {
 impl<'a> SurfaceScene<'a> {
     /// The scene of surface result `r`.
     #[must_use]
-    pub fn new(r: &'a RunOutput, heights: &'a [f64], view: View, aspect: Aspect) -> SurfaceScene<'a> {
+    pub fn new(
+        r: &'a RunOutput,
+        heights: &'a [f64],
+        view: View,
+        aspect: Aspect,
+    ) -> SurfaceScene<'a> {
         let (s, cp) = (&r.samples, &r.control_points);
         let mut bounds = [[f64::INFINITY, f64::NEG_INFINITY]; 3];
         let mut add = |p: &Points| {
@@ -152,7 +157,12 @@ impl<'a> SurfaceScene<'a> {
                 let at = |i: usize, j: usize| values.get(i * sv + j).copied().unwrap_or(0.0);
                 let mean = 0.25 * (at(a, b) + at(a + 1, b) + at(a + 1, b + 1) + at(a, b + 1));
                 facets.push(Facet {
-                    points: vec![[u[a], v[b]], [u[a + 1], v[b]], [u[a + 1], v[b + 1]], [u[a], v[b + 1]]],
+                    points: vec![
+                        [u[a], v[b]],
+                        [u[a + 1], v[b]],
+                        [u[a + 1], v[b + 1]],
+                        [u[a], v[b + 1]],
+                    ],
                     fill: Fill {
                         color: bins.colour(mean),
                         opacity: 1.0,
@@ -169,7 +179,10 @@ impl<'a> SurfaceScene<'a> {
     /// The control net through `points` (rows and columns), projected.
     #[must_use]
     pub fn net_segments(&self, points: &Points) -> Vec<[Xy; 2]> {
-        let p: Vec<Xy> = xyz(points).into_iter().map(|q| self.camera.project(q)).collect();
+        let p: Vec<Xy> = xyz(points)
+            .into_iter()
+            .map(|q| self.camera.project(q))
+            .collect();
         let [nu, nv] = self.net;
         let mut segs = Vec::new();
         for a in 0..nu {
@@ -189,7 +202,10 @@ impl<'a> SurfaceScene<'a> {
     /// Points projected.
     #[must_use]
     pub fn projected(&self, points: &Points) -> Vec<Xy> {
-        xyz(points).into_iter().map(|q| self.camera.project(q)).collect()
+        xyz(points)
+            .into_iter()
+            .map(|q| self.camera.project(q))
+            .collect()
     }
 
     /// The notes: thinning, and a coordinate stretched to fit the box.
@@ -198,7 +214,13 @@ impl<'a> SurfaceScene<'a> {
         let mut notes = Vec::new();
         let stretched: Vec<String> = (0..3)
             .filter(|&k| self.camera.stretch(k) > 1.0 + 1e-9)
-            .map(|k| format!("{} ×{}", ["x", "y", "z"][k], short(self.camera.stretch(k), 3)))
+            .map(|k| {
+                format!(
+                    "{} ×{}",
+                    ["x", "y", "z"][k],
+                    short(self.camera.stretch(k), 3)
+                )
+            })
             .collect();
         if !stretched.is_empty() {
             notes.push(format!(
@@ -255,7 +277,8 @@ impl<'a> SurfaceScene<'a> {
             let mut segments = Vec::new();
             for (i, c) in crisp.iter().enumerate() {
                 for k in 0..3 {
-                    let end = |e: &[Vec<Option<f64>>]| e.get(k).and_then(|v| v.get(i).copied().flatten());
+                    let end =
+                        |e: &[Vec<Option<f64>>]| e.get(k).and_then(|v| v.get(i).copied().flatten());
                     if let (Some(a), Some(b)) = (end(&lo), end(&hi)) {
                         let (mut pa, mut pb) = (*c, *c);
                         (pa[k], pb[k]) = (a, b);
@@ -271,7 +294,12 @@ impl<'a> SurfaceScene<'a> {
     #[must_use]
     pub fn crisp_faces(&self, paint: Paint<'_>) -> Vec<Deep> {
         let crisp = xyz(&self.r.samples.crisp);
-        mesh::faces(&self.camera, self.grid_of(&crisp), paint, Some(&iso_stroke()))
+        mesh::faces(
+            &self.camera,
+            self.grid_of(&crisp),
+            paint,
+            Some(&iso_stroke()),
+        )
     }
 
     /// Two surfaces as translucent envelopes in `fill`, with their boundaries.
@@ -280,7 +308,12 @@ impl<'a> SurfaceScene<'a> {
         let mut out = Vec::new();
         for (s, stroke) in surfaces {
             let pts = xyz(s);
-            out.extend(mesh::faces(&self.camera, self.grid_of(&pts), Paint::Translucent(fill), None));
+            out.extend(mesh::faces(
+                &self.camera,
+                self.grid_of(&pts),
+                Paint::Translucent(fill),
+                None,
+            ));
             out.extend(mesh::boundary(&self.camera, self.grid_of(&pts), &stroke));
         }
         out
@@ -332,7 +365,11 @@ impl Bins {
     #[must_use]
     pub fn of(values: &[f64]) -> Bins {
         Bins {
-            max: values.iter().copied().filter(|v| v.is_finite()).fold(0.0, f64::max),
+            max: values
+                .iter()
+                .copied()
+                .filter(|v| v.is_finite())
+                .fold(0.0, f64::max),
         }
     }
 
@@ -382,7 +419,11 @@ pub fn crisp_legend() -> Vec<LegendEntry> {
                 opacity: 1.0,
             },
         ),
-        LegendEntry::line_marker("crisp control net and points", polygon_stroke(), crisp_marker()),
+        LegendEntry::line_marker(
+            "crisp control net and points",
+            polygon_stroke(),
+            crisp_marker(),
+        ),
     ]
 }
 
@@ -395,7 +436,10 @@ mod tests {
     fn the_largest_distance_starts_at_the_projection_of_max_at() {
         // The terrain's distance is largest at its corner (u, v) = (1, 1),
         // whose crisp point is the last sample of the grid.
-        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/../../examples/fuzzy-terrain.json");
+        let path = concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/../../examples/fuzzy-terrain.json"
+        );
         let job = t2spline_io::read_job(std::path::Path::new(path)).unwrap();
         let alpha = Alpha::try_new(0.5).unwrap();
         let r = crate::data::compute(&job, alpha).unwrap();
@@ -403,14 +447,27 @@ mod tests {
         let heights = job.model.heights();
         let scene = SurfaceScene::new(&r, &heights, View::DEFAULT, Aspect::Equal);
         let fig = stage4_figure(&job, &scene).unwrap();
-        let ends = fig.panels[0].items.iter().find(|i| i.key == "distance-ends").unwrap();
-        let Mark::Markers { points, .. } = &ends.mark else { panic!() };
+        let ends = fig.panels[0]
+            .items
+            .iter()
+            .find(|i| i.key == "distance-ends")
+            .unwrap();
+        let Mark::Markers { points, .. } = &ends.mark else {
+            panic!()
+        };
         let corner = xyz(&r.samples.crisp).last().copied().unwrap();
         let want = scene.camera.project(corner);
         assert!((points[0][0] - want[0]).abs() < 1e-9 && (points[0][1] - want[1]).abs() < 1e-9);
         let solution = xyz(&r.samples.defuzzified).last().copied().unwrap();
-        let d = (0..3).map(|k| (solution[k] - corner[k]).powi(2)).sum::<f64>().sqrt();
-        assert!((d - r.error.max).abs() < 1e-9 * r.error.max.max(1.0), "{d} {}", r.error.max);
+        let d = (0..3)
+            .map(|k| (solution[k] - corner[k]).powi(2))
+            .sum::<f64>()
+            .sqrt();
+        assert!(
+            (d - r.error.max).abs() < 1e-9 * r.error.max.max(1.0),
+            "{d} {}",
+            r.error.max
+        );
     }
 
     #[test]

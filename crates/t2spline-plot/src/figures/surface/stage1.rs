@@ -28,20 +28,31 @@ pub fn stage1_figure(scene: &SurfaceScene<'_>) -> Figure {
         ],
         &upper_band(),
     ));
-    for l in [Layer::PrimaryLeft, Layer::PrimaryRight, Layer::LowerLeft, Layer::LowerRight] {
+    for l in [
+        Layer::PrimaryLeft,
+        Layer::PrimaryRight,
+        Layer::LowerLeft,
+        Layer::LowerRight,
+    ] {
         facets.extend(scene.outline(s.layer(l), &layer_stroke(l)));
     }
     let view = scene.view_panel(facets, |p| {
         scene.crisp_net(p);
         let ends = |l: Layer| {
             let pts: &Points = cp.layers.get(l).unwrap_or(&cp.crisp);
-            (0..3).map(|k| pts.coord(k).iter().map(|&v| Some(v)).collect()).collect()
+            (0..3)
+                .map(|k| pts.coord(k).iter().map(|&v| Some(v)).collect())
+                .collect()
         };
         scene.bars(p, ends);
     });
     let spread = distances(s.layer(Layer::UpperRight), s.layer(Layer::UpperLeft));
     let bins = Bins::of(&spread);
-    let map = scene.map_panel("spread between the upper layers over (u, v)", &spread, &bins);
+    let map = scene.map_panel(
+        "spread between the upper layers over (u, v)",
+        &spread,
+        &bins,
+    );
     let mut legend = crisp_legend();
     for (l, _, name) in FUNCTIONS {
         legend.push(LegendEntry::line(

@@ -28,7 +28,12 @@ pub fn stage2_figure(scene: &SurfaceScene<'_>) -> Figure {
             &upper_band(),
         ));
     }
-    for l in [Layer::PrimaryLeft, Layer::PrimaryRight, Layer::LowerLeft, Layer::LowerRight] {
+    for l in [
+        Layer::PrimaryLeft,
+        Layer::PrimaryRight,
+        Layer::LowerLeft,
+        Layer::LowerRight,
+    ] {
         if let Some(c) = cut(l) {
             facets.extend(scene.outline(c, &layer_stroke(l)));
         }
@@ -55,7 +60,10 @@ pub fn stage2_figure(scene: &SurfaceScene<'_>) -> Figure {
             layer_stroke(l),
         ));
     }
-    legend.push(LegendEntry::area("between the upper cut surfaces", upper_band()));
+    legend.push(LegendEntry::area(
+        "between the upper cut surfaces",
+        upper_band(),
+    ));
     Figure {
         colorbar: Some(bins.colorbar("width", vec![])),
         notes: scene.notes(),

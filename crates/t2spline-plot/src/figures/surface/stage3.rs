@@ -45,8 +45,16 @@ pub fn stage3_figure(scene: &SurfaceScene<'_>) -> Figure {
     let bins = Bins::of(&width);
     let map = scene.map_panel("distance between right and left over (u, v)", &width, &bins);
     let mut legend = crisp_legend();
-    legend.push(LegendEntry::line_marker("type-reduced left surface and points", left_stroke(), left_marker()));
-    legend.push(LegendEntry::line_marker("type-reduced right surface and points", right_stroke(), right_marker()));
+    legend.push(LegendEntry::line_marker(
+        "type-reduced left surface and points",
+        left_stroke(),
+        left_marker(),
+    ));
+    legend.push(LegendEntry::line_marker(
+        "type-reduced right surface and points",
+        right_stroke(),
+        right_marker(),
+    ));
     legend.push(LegendEntry::area("between left and right", reduced_band()));
     Figure {
         colorbar: Some(bins.colorbar("‖R − L‖", vec![])),

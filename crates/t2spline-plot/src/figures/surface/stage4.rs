@@ -5,9 +5,11 @@ use t2spline::job::{Job, Parameter};
 use t2spline::Alpha;
 
 use super::{distances, Bins, SurfaceScene};
-use crate::figures::style::{distance_marker, distance_stroke, polygon_stroke, solution_marker, solution_stroke};
-use crate::figures::surface::mesh::Paint;
 use crate::figures::curve::largest_distance;
+use crate::figures::style::{
+    distance_marker, distance_stroke, polygon_stroke, solution_marker, solution_stroke,
+};
+use crate::figures::surface::mesh::Paint;
 use crate::scene::{Figure, LegendEntry, Mark, Priority, Xy};
 use crate::style::{Marker, Shape, BLACK};
 use crate::ticks::short;
@@ -40,9 +42,9 @@ pub fn stage4_figure(job: &Job, scene: &SurfaceScene<'_>) -> Result<Figure, Erro
     facets.extend(scene.outline(&s.defuzzified, &solution_stroke()));
     let at = format!("(u, v) = ({}, {})", short(uv[0], 4), short(uv[1], 4));
     let ends: [Xy; 2] = [crisp_end, solution_end].map(|p| {
-        scene
-            .camera
-            .project(std::array::from_fn(|k| p.get(k).copied().unwrap_or(f64::NAN)))
+        scene.camera.project(std::array::from_fn(|k| {
+            p.get(k).copied().unwrap_or(f64::NAN)
+        }))
     });
     let text = format!("max distance {} at {at}", short(e.max, 4));
     let view = scene.view_panel(facets, |p| {
@@ -90,8 +92,16 @@ pub fn stage4_figure(job: &Job, scene: &SurfaceScene<'_>) -> Result<Figure, Erro
                 opacity: 1.0,
             },
         ),
-        LegendEntry::line_marker("defuzzified surface (boundary), control net and points", solution_stroke(), solution_marker()),
-        LegendEntry::line_marker("largest distance at equal (u, v)", distance_stroke(), distance_marker()),
+        LegendEntry::line_marker(
+            "defuzzified surface (boundary), control net and points",
+            solution_stroke(),
+            solution_marker(),
+        ),
+        LegendEntry::line_marker(
+            "largest distance at equal (u, v)",
+            distance_stroke(),
+            distance_marker(),
+        ),
         LegendEntry::marker("where the distance is largest", max_marker()),
     ];
     Ok(Figure {
