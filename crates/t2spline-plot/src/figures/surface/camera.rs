@@ -218,7 +218,7 @@ impl Camera {
     #[must_use]
     pub fn brightness(&self, n: Xyz) -> f64 {
         let len = dot(n, n).sqrt();
-        if !(len > 0.0) {
+        if len.is_nan() || len <= 0.0 {
             return 1.0;
         }
         AMBIENT + (1.0 - AMBIENT) * (dot(n, self.light) / len).abs()

@@ -276,10 +276,7 @@ pub fn ticks(p: &mut Panel, cam: &Camera, names: [&str; 3]) {
         let (values, step) = nice_ticks(lo, hi, 5);
         let decimals = decimals_for(step);
         for v in values.into_iter().filter(|v| (lo..=hi).contains(v)) {
-            let mut d = [0.0; 3];
-            for c in 0..3 {
-                d[c] = 0.5 * (cam.bounds[c][0] + cam.bounds[c][1]);
-            }
+            let mut d = cam.bounds.map(|[lo, hi]| 0.5 * (lo + hi));
             d[k] = v;
             let mut q = cam.to_box(d);
             for c in (0..3).filter(|&c| c != k) {
