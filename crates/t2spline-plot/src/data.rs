@@ -54,8 +54,21 @@ pub fn figure_samples(model: &Model) -> usize {
 /// [`Error::Core`] if the run fails (it does not for a validated job without
 /// derivatives).
 pub fn compute(job: &Job, alpha: Alpha) -> Result<RunOutput, Error> {
+    compute_within(job, alpha, MAX_SURFACE_GRID)
+}
+
+/// The most grid points per direction of a surface in the report, whose
+/// figures are stored at every slider stop: at most 24 × 24 quadrilaterals
+/// per surface.
+pub const REPORT_SURFACE_GRID: usize = 25;
+
+/// [`compute`] with a surface's grid at most `max` points per direction.
+///
+/// # Errors
+/// As [`compute`].
+pub fn compute_within(job: &Job, alpha: Alpha, max: usize) -> Result<RunOutput, Error> {
     let samples = match surface_grid(&job.model) {
-        Some(grid) => Samples::Grid(grid),
+        Some(grid) => Samples::Grid(grid.map(|n| n.min(max))),
         None => Samples::Along(figure_samples(&job.model)),
     };
     run_with(job, alpha, samples)

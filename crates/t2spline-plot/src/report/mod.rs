@@ -120,7 +120,7 @@ pub fn render(
         "strings": strings.into_json(),
         "downloads": downloads::pack(&files),
     });
-    let fig_result = data::compute(job, start)?;
+    let fig_result = data::compute_within(job, start, data::REPORT_SURFACE_GRID)?;
     let surface = job.model.is_surface();
     let (stage1, sweep) = if surface {
         let scene = SurfaceScene::new(&fig_result, &heights, options.view, options.aspect);
@@ -246,7 +246,7 @@ fn stop_figures(
     heights: &[f64],
     options: &FigureOptions,
 ) -> Result<[Figure; 4], Error> {
-    let r = data::compute(job, alpha)?;
+    let r = data::compute_within(job, alpha, data::REPORT_SURFACE_GRID)?;
     if job.model.is_surface() {
         let scene = SurfaceScene::new(&r, heights, options.view, options.aspect);
         return Ok([
