@@ -11,6 +11,8 @@ use t2spline_io::{render_csv, write_csv, CSV_FILES};
 fn compute(job: &Job, alpha: Alpha, samples: usize) -> RunOutput {
     job.run(&Settings {
         alpha,
+        type_reduction: t2spline::TypeReduction::Paper,
+        unused_alpha: None,
         samples: Samples::Along(samples),
         derivatives: None,
     })

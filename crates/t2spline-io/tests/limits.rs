@@ -488,6 +488,8 @@ fn extreme_jobs_write_only_finite_numbers() {
                 let r = job
                     .run(&Settings {
                         alpha: Alpha::try_new(alpha).unwrap(),
+                        type_reduction: t2spline::TypeReduction::Paper,
+                        unused_alpha: None,
                         samples: Samples::Along(33),
                         derivatives: None,
                     })
@@ -517,6 +519,8 @@ fn a_non_finite_result_is_refused_by_name() {
     let mut r = job
         .run(&Settings {
             alpha: Alpha::try_new(0.5).unwrap(),
+            type_reduction: t2spline::TypeReduction::Paper,
+            unused_alpha: None,
             samples: Samples::Along(5),
             derivatives: None,
         })

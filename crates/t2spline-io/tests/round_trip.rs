@@ -81,7 +81,7 @@ proptest! {
     ) {
         let alpha = Alpha::try_new(a).unwrap();
         let samples = Samples::Along(samples);
-        let result = job.run(&Settings { alpha, samples, derivatives: None }).unwrap();
+        let result = job.run(&Settings { alpha, type_reduction: t2spline::TypeReduction::Paper, unused_alpha: None, samples, derivatives: None }).unwrap();
         let (text, back) = written(&result);
         prop_assert_eq!(back, serde_json::to_value(&result).unwrap(), "{}", text);
     }
@@ -104,6 +104,8 @@ fn the_example_job_round_trips_and_its_result_too() {
 
     let settings = Settings {
         alpha: job.alpha.unwrap(),
+        type_reduction: t2spline::TypeReduction::Paper,
+        unused_alpha: None,
         samples: job.samples,
         derivatives: None,
     };

@@ -24,6 +24,8 @@ pub fn compute(job: &Job, alpha: Alpha) -> Result<RunOutput, Error> {
     }
     Ok(job.run(&Settings {
         alpha,
+        type_reduction: t2spline::TypeReduction::Paper,
+        unused_alpha: None,
         samples: Samples::Along(FIGURE_SAMPLES),
         derivatives: None,
     })?)

@@ -348,6 +348,8 @@ mod tests {
             let run_result = job
                 .run(&t2spline::job::Settings {
                     alpha,
+                    type_reduction: t2spline::TypeReduction::Paper,
+                    unused_alpha: None,
                     samples: job.samples,
                     derivatives: None,
                 })
