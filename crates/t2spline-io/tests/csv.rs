@@ -297,7 +297,7 @@ proptest! {
         a in 0.0..=1.0f64,
         samples in 2usize..30,
     ) {
-        let job = Job { description: None, alpha: None, samples: Samples::Along(samples), model: curve };
+        let job = Job { description: None, alpha: None, type_reduction: t2spline::TypeReduction::Paper, samples: Samples::Along(samples), model: curve };
         check_values(&compute(&job, alpha(a), samples));
     }
 }

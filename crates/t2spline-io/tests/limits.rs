@@ -244,7 +244,7 @@ fn hostile_keys_cannot_reach_the_terminal_raw() {
     let e = lines(&text);
     assert_eq!(
         e[0],
-        "job.json:1:14: [\"\\u001b[31mred\\u202e\"]: unknown key (known keys: description, order, degree, weights, knots, alpha, lower_height, samples, points)"
+        "job.json:1:14: [\"\\u001b[31mred\\u202e\"]: unknown key (known keys: description, order, degree, weights, knots, alpha, type_reduction, lower_height, samples, points)"
     );
     let long_at = at(&text, &format!("\"{long}\""), 0);
     assert!(

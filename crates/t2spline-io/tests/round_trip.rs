@@ -3,7 +3,7 @@
 
 use proptest::prelude::*;
 use t2spline::job::{Job, Model, Samples, Settings, MAX_SAMPLES};
-use t2spline::{strategies, Alpha, FuzzyCurve};
+use t2spline::{strategies, Alpha, FuzzyCurve, TypeReduction};
 use t2spline_io::to_json_pretty;
 
 /// Descriptions with quotes, escapes and non-ASCII text, and arbitrary ones.
@@ -44,13 +44,17 @@ fn job<const D: usize>(model: impl Fn(FuzzyCurve<D>) -> Model) -> impl Strategy<
         alpha(),
         samples(),
         description(),
+        proptest::sample::select(TypeReduction::ALL.to_vec()),
     )
-        .prop_map(move |(c, alpha, samples, description)| Job {
-            description,
-            alpha,
-            samples: Samples::Along(samples),
-            model: model(c),
-        })
+        .prop_map(
+            move |(c, alpha, samples, description, type_reduction)| Job {
+                description,
+                alpha,
+                type_reduction,
+                samples: Samples::Along(samples),
+                model: model(c),
+            },
+        )
 }
 
 fn any_job() -> impl Strategy<Value = Job> {

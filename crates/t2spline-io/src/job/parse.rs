@@ -11,14 +11,16 @@ use std::collections::HashSet;
 use serde_json::{Map, Value};
 use t2spline::fit::FuzzyData;
 use t2spline::job::{check_samples, Job, Model, Samples, DEFAULT_SAMPLES};
-use t2spline::{Alpha, Axis, FuzzyCurve, Height, KnotVector, Nt2Number, Nt2Point, Place};
+use t2spline::{
+    Alpha, Axis, FuzzyCurve, Height, KnotVector, Nt2Number, Nt2Point, Place, TypeReduction,
+};
 
 use super::limits::{
     check_order, MAX_ARRAY, MAX_KEYS, MAX_NESTING, MAX_POINTS, MAX_PROBLEMS, MAX_VALUES,
 };
 use super::position::{self, child, element, Oversized};
 use crate::fit_data::FitData;
-use crate::Problem;
+use crate::{printable, Problem};
 
 const TOP_KEYS: &[&str] = &[
     "description",
@@ -27,6 +29,7 @@ const TOP_KEYS: &[&str] = &[
     "weights",
     "knots",
     "alpha",
+    "type_reduction",
     "lower_height",
     "samples",
     "points",
@@ -459,6 +462,10 @@ impl Walker {
     fn job(&mut self, root: &Value) -> Option<Job> {
         let o = self.object(root, "", "the job")?;
         let header = self.header(o, TOP_KEYS, "a job needs its fuzzy control points");
+        let type_reduction = match o.get("type_reduction") {
+            None => Some(TypeReduction::Paper),
+            Some(v) => self.type_reduction(v),
+        };
         let weights = o.get("weights").and_then(|v| self.numbers(v, "weights"));
         let knots = o.get("knots").and_then(|v| self.numbers(v, "knots"));
         // Curve-level rules (SPEC §6), checked against the number of entries in
@@ -476,8 +483,13 @@ impl Walker {
         if !self.problems.is_empty() {
             return None;
         }
-        let (degree, points, samples, weights) =
-            (header.degree?, header.points?, header.samples?, weights?);
+        let (degree, points, samples, weights, type_reduction) = (
+            header.degree?,
+            header.points?,
+            header.samples?,
+            weights?,
+            type_reduction?,
+        );
         let model = match points {
             Points::Planar(p) => FuzzyCurve::try_new(degree, p, weights, knots).map(Model::Planar),
             Points::Spatial(p) => {
@@ -488,6 +500,7 @@ impl Walker {
             Ok(model) => Some(Job {
                 description: header.description,
                 alpha: header.alpha,
+                type_reduction,
                 samples: Samples::Along(samples.unwrap_or(DEFAULT_SAMPLES)),
                 model,
             }),
@@ -498,6 +511,36 @@ impl Walker {
                 None
             }
         }
+    }
+
+    /// `type_reduction`: one of the [`TypeReduction::name`]s (SPEC §10).
+    fn type_reduction(&mut self, v: &Value) -> Option<TypeReduction> {
+        let Some(name) = v.as_str() else {
+            self.report(
+                "type_reduction",
+                format!("expected a string, got {}", kind(v)),
+            );
+            return None;
+        };
+        let parsed = name.parse().ok();
+        if parsed.is_none() {
+            let names = TypeReduction::ALL.map(TypeReduction::name);
+            let hint = match suggestion(name, &names) {
+                Some(s) => format!("did you mean `{s}`?"),
+                None => format!("known: {}", names.join(", ")),
+            };
+            // A name is short; a long value is shown by its start.
+            let shown: String = name.chars().take(40).collect();
+            let more = if shown.len() < name.len() { "…" } else { "" };
+            self.report(
+                "type_reduction",
+                format!(
+                    "unknown type reduction `{}{more}` ({hint})",
+                    printable(&shown)
+                ),
+            );
+        }
+        parsed
     }
 
     /// A data file: the keys of a job but `weights` and `knots`, at least
