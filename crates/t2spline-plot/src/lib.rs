@@ -1,8 +1,9 @@
 //! # t2spline-plot — figures and reports for t2spline
 //!
 //! Publication figures of every stage of the method (the paper's Figs. 3.1,
-//! 4.1–4.4 and 5.1–5.4, and an alpha sweep) as SVG and PNG, and a
-//! self-contained HTML report with an alpha slider.
+//! 4.1–4.4 and 5.1–5.4, an alpha sweep, and the type reductions of SPEC §10
+//! compared) as SVG and PNG, and a self-contained HTML report with an alpha
+//! slider and a type-reduction selector.
 //!
 //! - [`figures`]: one builder per figure, from a
 //!   [`RunOutput`](t2spline::job::RunOutput) computed in [`data`] by the core's
@@ -26,7 +27,7 @@
 //!   ]}"#, "job.json")?;
 //! let alpha = job.alpha.expect("the file gives alpha");
 //! let figures = all_figures(&job, alpha, NumberChoice::default())?;
-//! assert_eq!(figures.len(), 6);
+//! assert_eq!(figures.len(), 7);
 //! let svg = t2spline_plot::svg::render(&figures[1]);
 //! assert!(svg.contains("Stage 1"));
 //! # Ok::<(), Box<dyn std::error::Error>>(())

@@ -114,10 +114,11 @@ fn every_figure_has_title_axes_labels_and_a_legend_or_colour_bar() {
             } else {
                 1
             };
-            let panels = if fig.name == "stage4-defuzzified" && panels == 1 {
-                2
-            } else {
-                panels
+            let panels = match fig.name {
+                "stage4-defuzzified" if panels == 1 => 2,
+                // The projections and the distance along the curve.
+                "reductions" => panels + 1,
+                _ => panels,
             };
             assert_eq!(
                 fig.panels.len(),
@@ -235,7 +236,7 @@ mod png {
     fn png_files_decode_to_the_svg_size_times_three_with_text_and_series() {
         let figs = figures("examples/paper-alg-1-1.json", 0.8, NumberChoice::default());
         let files = t2spline_plot::render_files(&figs, t2spline_plot::Format::Png).unwrap();
-        assert_eq!(files.len(), 6);
+        assert_eq!(files.len(), 7);
         for (fig, (name, bytes)) in figs.iter().zip(&files) {
             assert_eq!(name, &format!("{}.png", fig.name));
             let pixmap = Pixmap::decode_png(bytes).unwrap();

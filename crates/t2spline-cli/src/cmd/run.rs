@@ -1,12 +1,12 @@
-//! `t2spline run JOB.json [-o OUT.json] [--alpha A] [--samples N] [--csv DIR]
-//! [--derivatives K]`.
+//! `t2spline run JOB.json [-o OUT.json] [--alpha A] [--type-reduction NAME]
+//! [--samples N] [--csv DIR] [--derivatives K]`.
 
 use std::path::PathBuf;
 
 use t2spline::job::{Job, Overrides, Settings};
 use t2spline_io::{check_finite, stage_csv, write_json_pretty, Staged};
 
-use super::settings::settings;
+use super::settings::{note_unused_alpha, settings};
 use crate::cli::RunArgs;
 use crate::output::{is_stdio, read_job_text, to_stdout, NewFolders};
 
@@ -24,10 +24,17 @@ impl Plan {
         let (job, text) = read_job_text(&args.job)?;
         let overrides = Overrides {
             alpha: args.alpha,
+            type_reduction: args.reduction.type_reduction,
             samples: args.samples,
             derivatives: args.derivatives,
         };
         let settings = settings(&job, &overrides, &args.job, &text)?;
+        note_unused_alpha(
+            "run",
+            &settings,
+            args.alpha.is_some(),
+            "is ignored (stage 2 is cut at alpha = 0, the whole footprint)",
+        );
         Ok(Plan {
             job,
             settings,

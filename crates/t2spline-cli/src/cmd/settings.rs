@@ -1,6 +1,8 @@
 //! The settings of a run from the command line: the core's checks, with
-//! messages that name the option (`--alpha`, `--samples`, `--derivatives`).
+//! messages that name the option (`--alpha`, `--samples`, `--derivatives`),
+//! and the note for an alpha that the type reduction does not use.
 
+use std::io::Write as _;
 use std::path::Path;
 
 use t2spline::job::{Job, Overrides, Setting, Settings};
@@ -69,6 +71,27 @@ pub fn settings(
         .into(),
         other => about_option(other),
     })
+}
+
+/// Says on standard error, in one line, that the type reduction does not use
+/// the alpha given (`--alpha` if `from_option`, else the job file's), and
+/// what that alpha still does for `command` (`effect`). Nothing if every
+/// alpha given is used.
+pub fn note_unused_alpha(command: &str, settings: &Settings, from_option: bool, effect: &str) {
+    if let Some(a) = settings.unused_alpha {
+        let source = if from_option {
+            "--alpha"
+        } else {
+            "the job's alpha"
+        };
+        // A closed standard error must not stop the command.
+        let _ = writeln!(
+            std::io::stderr().lock(),
+            "t2spline {command}: note: type reduction {} does not use alpha; {source} {} {effect}",
+            settings.type_reduction,
+            a.get()
+        );
+    }
 }
 
 /// A derivative beyond the range of a float is the input's doing, not a bug:

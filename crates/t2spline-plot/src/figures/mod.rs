@@ -9,9 +9,12 @@
 //! | `stage2-alpha-cut` | alpha-cut control points and curves | Fig. 5.2 |
 //! | `stage3-type-reduced` | type-reduced control points and curves, with weights | Fig. 5.3 |
 //! | `stage4-defuzzified` | crisp and defuzzified curves, maximum distance | Fig. 5.4 |
-//! | `alpha-sweep` | defuzzified curves for alpha = 0, 0.1, …, 1 | — |
+//! | `alpha-sweep` | defuzzified curves for alpha = 0, 0.1, …, 1 (the paper's reduction) | — |
+//! | `reductions` | the solution curve of every type reduction and its distance to the crisp curve | SPEC §10 |
 
 mod number;
+mod number_reductions;
+mod reductions;
 mod stages;
 pub mod style;
 mod sweep;
@@ -21,6 +24,9 @@ use t2spline::job::{Job, RunOutput};
 use t2spline::{Alpha, Axis};
 
 pub use number::number_figure;
+pub use reductions::{
+    reduction_label, reduction_marker, reduction_stroke, reduction_with_level, reductions_figure,
+};
 pub use stages::{stage1_figure, stage2_figure, stage3_figure, stage4_figure};
 pub use sweep::sweep_figure;
 
@@ -29,13 +35,14 @@ use crate::ticks::short;
 use crate::{data, Error};
 
 /// The file stems of all figures, in the order [`all_figures`] returns them.
-pub const FIGURE_NAMES: [&str; 6] = [
+pub const FIGURE_NAMES: [&str; 7] = [
     "number",
     "stage1-fuzzy",
     "stage2-alpha-cut",
     "stage3-type-reduced",
     "stage4-defuzzified",
     "alpha-sweep",
+    "reductions",
 ];
 
 /// Which number the `number` figure shows.
@@ -57,6 +64,9 @@ impl Default for NumberChoice {
 }
 
 /// Every figure of the job at `alpha`, in the order of [`FIGURE_NAMES`].
+/// Stages 2–4 follow the job's type reduction, as `t2spline run` does (a
+/// reduction other than the paper's cuts stage 2 at 0); `alpha` is the
+/// paper's level in the `number`, `alpha-sweep` and `reductions` figures.
 ///
 /// # Errors
 /// [`Error::NoSuchPoint`] or [`Error::NoSuchAxis`] if `choice` names a
@@ -75,6 +85,7 @@ pub fn all_figures(
         stage3_figure(&result, &job.model.heights()),
         stage4_figure(job, &result, true)?,
         sweep_figure(job)?,
+        reductions_figure(job, alpha)?,
     ])
 }
 
@@ -131,9 +142,16 @@ fn point_name(i: usize) -> String {
     format!("P{digits}")
 }
 
-/// "α = 0.8 > h = 0.6" and what it means, for subtitles.
+/// "α = 0.8 > h = 0.6" and what it means, for subtitles; for a type
+/// reduction other than the paper's, that it does not use α.
 fn alpha_phrase(result: &RunOutput, heights: &[f64]) -> String {
     let a = short(result.alpha, 4);
+    let Some(regime) = result.regime.filter(|_| result.alpha_used) else {
+        return format!(
+            "{} does not use α: cut shown at α = {a}, the whole footprint",
+            reduction_label(result.type_reduction)
+        );
+    };
     match heights {
         [h] if result.alpha <= *h => format!(
             "α = {a} ≤ h = {}: all three functions are cut",
@@ -147,8 +165,17 @@ fn alpha_phrase(result: &RunOutput, heights: &[f64]) -> String {
             "α = {a}, heights h from {} to {} ({})",
             short(heights.first().copied().unwrap_or(1.0), 4),
             short(heights.last().copied().unwrap_or(1.0), 4),
-            result.regime
+            regime
         ),
+    }
+}
+
+/// `α = 0.8` for the paper's reduction, else the reduction's name.
+fn reduction_phrase(result: &RunOutput) -> String {
+    if result.alpha_used {
+        format!("α = {}", short(result.alpha, 4))
+    } else {
+        reduction_label(result.type_reduction).to_owned()
     }
 }
 

@@ -1,12 +1,13 @@
 //! One fuzzy number (paper Figs. 3.1 and 4.1–4.4): its three membership
 //! functions, the footprint of uncertainty, the height h, the cut at alpha and
-//! the type-reduced triangle with its centroid.
+//! the type-reduced triangle with its centroid; and the other reductions of
+//! SPEC §10 (`number_reductions.rs`).
 
 use t2spline::job::Job;
-use t2spline::{Alpha, Axis};
+use t2spline::{Alpha, Axis, TypeReduction};
 
 use super::style::{layer_marker, layer_stroke, upper_band};
-use super::NumberChoice;
+use super::{number_reductions, NumberChoice};
 use crate::scene::{Figure, LegendEntry, Mark, Panel};
 use crate::style::{Marker, Shape, Stroke, GREY, INK, PURPLE};
 use crate::ticks::short;
@@ -158,7 +159,7 @@ pub fn number_figure(job: &Job, alpha: Alpha, choice: NumberChoice) -> Result<Fi
             text: format!("crisp {}", short(c, 4)),
         },
     );
-    let legend = vec![
+    let mut legend = vec![
         LegendEntry::line_marker(
             "UMF (upper) and its cut ends",
             layer_stroke(Layer::UpperLeft),
@@ -176,8 +177,9 @@ pub fn number_figure(job: &Job, alpha: Alpha, choice: NumberChoice) -> Result<Fi
         ),
         LegendEntry::area("footprint of uncertainty", upper_band()),
         LegendEntry::line("type-reduced triangle", tfn_stroke),
-        LegendEntry::marker("defuzzified value", d_marker),
+        LegendEntry::marker(&format!("paper: defuzzified {}", short(d, 4)), d_marker),
     ];
+    legend.extend(number_reductions::add_reductions(&mut panel, &x));
     let regime = if a <= h {
         "α ≤ h: three cut ends averaged"
     } else {
@@ -189,13 +191,16 @@ pub fn number_figure(job: &Job, alpha: Alpha, choice: NumberChoice) -> Result<Fi
             "Fuzzy number: coordinate {name} of control point {}",
             choice.point
         ),
-        subtitle: format!(
-            "{regime}; type-reduced ({}, {}, {}), defuzzified {}",
-            short(tfn.left(), 4),
-            short(c, 4),
-            short(tfn.right(), 4),
-            short(d, 4)
-        ),
+        subtitle: match job.type_reduction {
+            TypeReduction::Paper => format!(
+                "{regime}; type-reduced ({}, {}, {}), defuzzified {}",
+                short(tfn.left(), 4),
+                short(c, 4),
+                short(tfn.right(), 4),
+                short(d, 4)
+            ),
+            method => number_reductions::reduction_subtitle(&x, method),
+        },
         panels: vec![panel],
         legend,
         colorbar: None,

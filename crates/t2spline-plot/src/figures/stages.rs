@@ -8,7 +8,7 @@ use super::style::{
     crisp_marker, crisp_stroke, layer_marker, layer_stroke, lower_band, polygon_stroke,
     reduced_band, reduced_stroke, solution_marker, solution_stroke, upper_band,
 };
-use super::{alpha_phrase, band, curve_panels, point_name, project};
+use super::{alpha_phrase, band, curve_panels, point_name, project, reduction_phrase};
 use crate::scene::{Figure, LegendEntry, Mark, Panel};
 use crate::style::{Marker, Shape, Stroke, BLACK, BLUE, GREEN, GREY, PURPLE, VERMILLION};
 use crate::ticks::short;
@@ -400,7 +400,8 @@ pub fn stage3_figure(r: &RunOutput, heights: &[f64]) -> Figure {
 pub fn stage4_figure(job: &Job, r: &RunOutput, detail: bool) -> Result<Figure, Error> {
     let (c, cp, e) = (&r.samples, &r.control_points, &r.error);
     let alpha = t2spline::Alpha::try_new(r.alpha)?;
-    let (at_crisp, at_solution) = data::curves_at(&job.model, alpha, data::max_at(r))?;
+    let (at_crisp, at_solution) =
+        data::curves_at(&job.model, alpha, r.type_reduction, data::max_at(r))?;
     let distance_stroke = Stroke::solid(BLACK, 1.4);
     let end_marker = Marker::open(Shape::Circle, 4.0, BLACK);
     let text = format!(
@@ -507,8 +508,8 @@ pub fn stage4_figure(job: &Job, r: &RunOutput, detail: bool) -> Result<Figure, E
         "stage4-defuzzified",
         "Stage 4: crisp type-2 solution curve (D-TR-α-NT2FRBsC)",
         format!(
-            "α = {}: max distance {} at t = {}, rms distance {}",
-            short(r.alpha, 4),
+            "{}: max distance {} at t = {}, rms distance {}",
+            reduction_phrase(r),
             short(e.max, 4),
             short(data::max_at(r), 4),
             short(e.rms, 4)

@@ -1,7 +1,7 @@
 //! The defuzzified curve for alpha = 0, 0.1, …, 1, coloured by alpha.
 
 use t2spline::job::Job;
-use t2spline::Alpha;
+use t2spline::{Alpha, TypeReduction};
 
 use super::style::{crisp_marker, polygon_stroke};
 use super::{curve_panels, project};
@@ -16,8 +16,8 @@ pub fn sweep_alphas() -> Vec<f64> {
     (0..=10).map(|i| f64::from(i) / 10.0).collect()
 }
 
-/// The `alpha-sweep` figure: one defuzzified curve per alpha of
-/// `sweep_alphas`, coloured by alpha (viridis) with a colour bar marking the
+/// The `alpha-sweep` figure: one defuzzified curve of the paper's type
+/// reduction (the one that uses alpha) per alpha of `sweep_alphas`, coloured by alpha (viridis) with a colour bar marking the
 /// lower heights, where the solution jumps.
 ///
 /// # Errors
@@ -28,7 +28,8 @@ pub fn sweep_figure(job: &Job) -> Result<crate::scene::Figure, crate::Error> {
         .iter()
         // Values in [0, 1] are valid alphas.
         .filter_map(|&a| Alpha::try_new(a).ok())
-        .map(|a| data::compute(job, a))
+        // Only the paper's reduction varies with alpha.
+        .map(|a| data::compute_with(job, a, TypeReduction::Paper))
         .collect::<Result<Vec<_>, _>>()?;
     let Some(first) = results.first() else {
         return Err(crate::Error::Core(t2spline::Error::MissingAlpha));
@@ -67,7 +68,7 @@ pub fn sweep_figure(job: &Job) -> Result<crate::scene::Figure, crate::Error> {
         name: "alpha-sweep",
         title: "Defuzzified curve as alpha varies".into(),
         subtitle: format!(
-            "α = 0, 0.1, …, 1 (α = 1 gives the crisp curve); the solution jumps at α = h ({})",
+            "the paper's reduction at α = 0, 0.1, …, 1 (α = 1 gives the crisp curve); the solution jumps at α = h ({})",
             heights
                 .iter()
                 .map(|h| short(*h, 4))

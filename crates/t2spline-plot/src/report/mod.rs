@@ -4,24 +4,27 @@
 //! and the job itself.
 //!
 //! The slider stops at alpha = 0, 0.01, …, 1 and also at every lower height h
-//! and at the starting alpha. For every stop the numbers shown and the changing
+//! and at the starting alpha. A selector switches the type reduction of
+//! stages 3–4 (SPEC §10): the paper's has a frame per slider stop, each other
+//! reduction one frame (it does not use alpha), all computed here. For every stop the numbers shown and the changing
 //! parts of the figures are computed here, in Rust, by the same library calls
 //! as `t2spline run --alpha A`, and embedded as JSON; the page's script only
 //! swaps them in. Numbers are written as `run` writes them, so they agree to
 //! the last digit.
 
 mod frames;
+mod reductions;
 pub mod tables;
 
 use std::fmt::Write as _;
 
 use serde_json::{json, Value};
 use t2spline::job::{Job, RunOutput, Spline};
-use t2spline::{Alpha, Axis, Layer};
+use t2spline::{Alpha, Axis, Layer, TypeReduction};
 
 use crate::figures::{
-    number_figure, stage1_figure, stage2_figure, stage3_figure, stage4_figure, sweep_figure,
-    NumberChoice,
+    number_figure, reductions_figure, stage1_figure, stage2_figure, stage3_figure, stage4_figure,
+    sweep_figure, NumberChoice,
 };
 use crate::svg::{self, escape};
 use crate::ticks::short;
@@ -62,13 +65,28 @@ pub fn stops(job: &Job, start: Alpha) -> Vec<f64> {
 /// distance is largest (never for a validated job).
 pub fn render(job: &Job, job_text: &str, start: Alpha) -> Result<String, Error> {
     let alphas = stops(job, start);
-    let initial = alphas.iter().position(|&a| a == start.get()).unwrap_or(0);
     let heights = job.model.heights();
-    let mut results = Vec::with_capacity(alphas.len());
+    // Frames 0..alphas.len(): the paper's reduction at every stop; then one
+    // frame per other reduction, which does not use alpha (stage 2 at 0).
+    let reduction_frames = reductions::frames(alphas.len());
+    let initial = reductions::initial_frame(&reduction_frames, job.type_reduction)
+        .unwrap_or_else(|| alphas.iter().position(|&a| a == start.get()).unwrap_or(0));
+    let mut results = Vec::with_capacity(alphas.len() + reduction_frames.len());
     for &a in &alphas {
         // Stops lie in [0, 1].
         let alpha = Alpha::try_new(a)?;
-        results.push((alpha, data::compute(job, alpha)?));
+        let paper = Job {
+            type_reduction: TypeReduction::Paper,
+            ..job.clone()
+        };
+        results.push((alpha, data::compute(&paper, alpha)?, paper));
+    }
+    for frame in &reduction_frames {
+        let other = Job {
+            type_reduction: frame.method,
+            ..job.clone()
+        };
+        results.push((start, data::compute(&other, start)?, other));
     }
     let choice = NumberChoice::default();
     let mut strings = Strings::default();
@@ -76,7 +94,7 @@ pub fn render(job: &Job, job_text: &str, start: Alpha) -> Result<String, Error> 
     let mut stage2 = Vec::new();
     let mut stage3 = Vec::new();
     let mut stage4 = Vec::new();
-    for (alpha, r) in &results {
+    for (alpha, r, job) in &results {
         number.push(number_figure(job, *alpha, choice)?);
         stage2.push(stage2_figure(r, &heights));
         stage3.push(stage3_figure(r, &heights));
@@ -90,33 +108,45 @@ pub fn render(job: &Job, job_text: &str, start: Alpha) -> Result<String, Error> 
     ];
     let start_result = &results[initial].1;
     let table_defs = tables::tables(start_result);
-    let stops_json: Vec<Value> = alphas
+    let stops_json: Vec<Value> = results
         .iter()
-        .zip(&results)
-        .map(|(a, (_, r))| {
+        .map(|(a, r, _)| {
             let cells: serde_json::Map<String, Value> = table_defs
                 .iter()
                 .map(|t| (t.id.to_owned(), json!(tables::cells(t, r))))
                 .collect();
+            let (alpha, regime) = if r.alpha_used {
+                (tables::number_text(Some(a.get())), json!(r.regime))
+            } else {
+                ("not used".to_owned(), json!(reductions::regime_text(r)))
+            };
             json!({
-                "alpha": tables::number_text(Some(*a)),
-                "regime": r.regime,
-                "at_h": heights.contains(a),
+                "alpha": alpha,
+                "regime": regime,
+                "at_h": r.alpha_used && heights.contains(&a.get()),
                 "cells": cells,
             })
         })
         .collect();
     let data_block = json!({
         "initial": initial,
+        "reductions": reductions::json(&reduction_frames),
         "stops": stops_json,
         "figures": figs.iter().map(|f| f.data.clone()).collect::<Vec<_>>(),
         "strings": strings.into_json(),
     });
     let stage1 = svg::render(&stage1_figure(start_result));
     let sweep = svg::render(&sweep_figure(job)?);
+    let compared = svg::render(&reductions_figure(job, start)?);
     let mut page = Page::default();
     page.header(job, start_result, &heights);
-    page.controls(&alphas, initial, &heights);
+    let paper_stop = alphas.iter().position(|&a| a == start.get()).unwrap_or(0);
+    page.controls(
+        &alphas,
+        paper_stop,
+        &heights,
+        &reductions::selector(job.type_reduction),
+    );
     page.section(
         "number",
         "One fuzzy number (paper Figs. 3.1, 4.1–4.4)",
@@ -149,7 +179,7 @@ pub fn render(job: &Job, job_text: &str, start: Alpha) -> Result<String, Error> 
         "stage3",
         "Stage 3: type reduction (Fig. 5.3)",
         &figs[2].svg,
-        "Each control point becomes a type-1 triangle (left, crisp, right).",
+        "Each control point becomes a type-1 triangle (left, crisp, right); with the centroid or alpha-planes, left and right are the centroid interval [c_l, c_r], which need not contain crisp; with Nie–Tan they are its one value.",
         &[captioned(
             "Type-reduced control points (type_reduced_left, crisp, type_reduced_right)",
             &table_html[1],
@@ -169,7 +199,17 @@ pub fn render(job: &Job, job_text: &str, start: Alpha) -> Result<String, Error> 
         "sweep",
         "The solution as α varies",
         &sweep,
-        "Defuzzified curves for α = 0, 0.1, …, 1; does not depend on the slider.",
+        "Defuzzified curves of the paper's reduction for α = 0, 0.1, …, 1; does not depend on the slider.",
+        &[],
+    );
+    page.section(
+        "reductions",
+        "The type reductions compared (SPEC §10)",
+        &compared,
+        &format!(
+            "The solution curve of every type reduction and its distance to the crisp curve; the paper's at the starting α = {}. Each equals t2spline run --type-reduction NAME.",
+            short(start.get(), 6)
+        ),
         &[],
     );
     page.job(job_text);
@@ -262,10 +302,10 @@ impl Page {
         );
     }
 
-    fn controls(&mut self, alphas: &[f64], initial: usize, heights: &[f64]) {
+    fn controls(&mut self, alphas: &[f64], initial: usize, heights: &[f64], selector: &str) {
         let _ = write!(
             self.html,
-            "<nav id=\"controls\" aria-label=\"alpha\">\n<div class=\"row\">\n<label for=\"alpha\">α</label>\n<input type=\"range\" id=\"alpha\" min=\"0\" max=\"{}\" step=\"1\" value=\"{initial}\">\n<output id=\"alpha-value\" for=\"alpha\">{}</output>\n<span id=\"regime\"></span>\n",
+            "<nav id=\"controls\" aria-label=\"type reduction and alpha\">\n<div class=\"row\">\n{selector}<label for=\"alpha\">α</label>\n<input type=\"range\" id=\"alpha\" min=\"0\" max=\"{}\" step=\"1\" value=\"{initial}\">\n<output id=\"alpha-value\" for=\"alpha\">{}</output>\n<span id=\"regime\"></span>\n",
             alphas.len() - 1,
             tables::number_text(Some(alphas[initial]))
         );
@@ -280,7 +320,7 @@ impl Page {
         }
         let _ = writeln!(
             self.html,
-            "</div>\n<p class=\"note\">Stops at α = 0, 0.01, …, 1 and at every h. At α = h type reduction switches from averaging three cut ends to two (SPEC §3), so the solution jumps between α = h and the next stop; that is the paper's method. Every number shown equals <code>t2spline run --alpha A</code> at the shown α.</p>\n</nav>\n<main>"
+            "</div>\n<p class=\"note\">Stops at α = 0, 0.01, …, 1 and at every h. At α = h type reduction switches from averaging three cut ends to two (SPEC §3), so the solution jumps between α = h and the next stop; that is the paper's method. Every number shown equals <code>t2spline run --alpha A</code> at the shown α. Only the paper's type reduction uses α: with another one selected the slider rests, stage 2 is cut at α = 0 (the whole footprint) and every number equals <code>t2spline run --type-reduction NAME</code>.</p>\n</nav>\n<main>"
         );
     }
 
@@ -377,10 +417,63 @@ mod tests {
         let data: Value =
             serde_json::from_str(&html[start + 17..end].replace("<\\/", "</")).unwrap();
         let stops = data["stops"].as_array().unwrap();
-        assert_eq!(stops.len(), 101);
+        // 101 slider stops of the paper's reduction, one frame for each other.
+        assert_eq!(stops.len(), 104);
         assert_eq!(stops[60]["at_h"], json!(true));
         assert_eq!(stops[60]["regime"], json!("alpha <= h"));
         assert_eq!(stops[61]["regime"], json!("alpha > h"));
+        assert_eq!(stops[101]["alpha"], json!("not used"));
+        assert_eq!(
+            data["reductions"],
+            json!([
+                {"name": "paper", "frame": null},
+                {"name": "centroid", "frame": 101},
+                {"name": "nie-tan", "frame": 102},
+                {"name": "alpha-planes", "frame": 103},
+            ])
+        );
+        assert_eq!(data["initial"], json!(37));
+        for f in data["figures"].as_array().unwrap() {
+            assert_eq!(f["frames"].as_array().unwrap().len(), 104);
+        }
         assert_eq!(data["figures"].as_array().unwrap().len(), 4);
+        assert!(html.contains("<option value=\"paper\" selected>"));
+        // A job of another reduction opens on its frame.
+        let job = Job {
+            type_reduction: TypeReduction::NieTan,
+            ..job
+        };
+        let html = render(&job, &text, Alpha::try_new(0.37).unwrap()).unwrap();
+        assert!(html.contains("<option value=\"nie-tan\" selected>"));
+        assert!(html.contains("\"initial\":102"));
+    }
+
+    #[test]
+    fn every_reduction_is_the_run_result() {
+        let (job, _) = example();
+        let alpha = Alpha::try_new(0.8).unwrap();
+        for method in TypeReduction::ALL {
+            let job = Job {
+                type_reduction: method,
+                ..job.clone()
+            };
+            let figure_result = data::compute(&job, alpha).unwrap();
+            let settings = job
+                .settings(&t2spline::job::Overrides {
+                    alpha: Some(0.8),
+                    ..Default::default()
+                })
+                .unwrap();
+            let run_result = job.run(&settings).unwrap();
+            assert_eq!(figure_result.type_reduction, method);
+            for t in tables::tables(&run_result) {
+                assert_eq!(
+                    tables::cells(&t, &figure_result),
+                    tables::cells(&t, &run_result),
+                    "{method}, {}",
+                    t.id
+                );
+            }
+        }
     }
 }

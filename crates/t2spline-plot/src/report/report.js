@@ -1,4 +1,4 @@
-// t2spline report: the alpha slider. Every number and every curve shown was
+// t2spline report: the alpha slider and the type-reduction selector. Every number and every curve shown was
 // computed by t2spline and stored in the data block; this script only swaps
 // them in (it does no arithmetic on the method).
 (function () {
@@ -36,14 +36,35 @@
     document.body.classList.toggle("at-h", stop.at_h);
   }
 
+  // The type reduction: the paper's follows the slider; each other one has
+  // a frame of its own (it does not use alpha), named in data.reductions.
+  var select = document.getElementById("reduction");
+  var buttons = document.querySelectorAll("button[data-stop]");
+
+  function showReduction() {
+    var frame = null;
+    data.reductions.forEach(function (r) {
+      if (r.name === select.value) {
+        frame = r.frame;
+      }
+    });
+    var paper = frame === null;
+    slider.disabled = !paper;
+    Array.prototype.forEach.call(buttons, function (b) {
+      b.disabled = !paper;
+    });
+    show(paper ? Number(slider.value) : frame);
+  }
+
   slider.addEventListener("input", function () {
     show(Number(slider.value));
   });
-  Array.prototype.forEach.call(document.querySelectorAll("button[data-stop]"), function (b) {
+  Array.prototype.forEach.call(buttons, function (b) {
     b.addEventListener("click", function () {
       slider.value = b.getAttribute("data-stop");
       show(Number(slider.value));
     });
   });
-  show(Number(slider.value));
+  select.addEventListener("change", showReduction);
+  showReduction();
 })();
