@@ -13,13 +13,14 @@ fn t2spline() -> Command {
     Command::cargo_bin("t2spline").unwrap()
 }
 
-const NAMES: [&str; 6] = [
+const NAMES: [&str; 7] = [
     "number",
     "stage1-fuzzy",
     "stage2-alpha-cut",
     "stage3-type-reduced",
     "stage4-defuzzified",
     "alpha-sweep",
+    "reductions",
 ];
 
 #[test]
@@ -48,7 +49,7 @@ fn plot_writes_every_figure_in_both_formats_by_default() {
     }
     assert_eq!(
         std::fs::read_dir(&out).unwrap().count(),
-        12,
+        14,
         "no stray files"
     );
 }
@@ -68,7 +69,7 @@ fn plot_svg_only_and_a_chosen_number() {
         ])
         .assert()
         .success();
-    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 6);
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 7);
     let number = std::fs::read_to_string(dir.path().join("number.svg")).unwrap();
     assert!(
         number.contains("coordinate y of control point 3"),

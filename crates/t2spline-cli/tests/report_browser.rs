@@ -3,7 +3,8 @@
 //!
 //! The page must load with no console errors and no network requests; moving
 //! the slider must change the figures, and every number shown must be the text
-//! `t2spline run --alpha A` prints for the alpha shown.
+//! `t2spline run --alpha A` prints for the alpha shown; selecting another type
+//! reduction must show what `t2spline run --type-reduction NAME` prints.
 //!
 //! Without `chromium` and `chromedriver` the test says it was skipped and
 //! passes, unless `T2SPLINE_REQUIRE_BROWSER=1` (set by CI), when it fails.
@@ -129,16 +130,15 @@ fn lookup<'a>(result: &'a Value, key: &str) -> &'a Value {
 }
 
 fn run_json(job: &Path, alpha: &str) -> Value {
+    run_json_with(job, &["--alpha", alpha])
+}
+
+/// `t2spline run JOB --samples 2 ARGS…` as JSON.
+fn run_json_with(job: &Path, args: &[&str]) -> Value {
     let out = Command::cargo_bin("t2spline")
         .unwrap()
-        .args([
-            "run",
-            job.to_str().unwrap(),
-            "--alpha",
-            alpha,
-            "--samples",
-            "2",
-        ])
+        .args(["run", job.to_str().unwrap(), "--samples", "2"])
+        .args(args)
         .output()
         .unwrap();
     assert!(
@@ -157,6 +157,28 @@ return { alpha: document.getElementById("alpha-value").textContent, cells: cells
          s4: part("s4-0") === null ? null : Array.from(document.querySelectorAll("[id^=s4-]")).map(e => e.innerHTML).join(""),
          resources: performance.getEntriesByType("resource").length };
 "#;
+
+const SELECT_REDUCTION: &str = r#"
+const s = document.getElementById("reduction");
+s.value = arguments[0];
+s.dispatchEvent(new Event("change", { bubbles: true }));
+return document.getElementById("alpha").disabled;
+"#;
+
+/// Every cell of the page's tables equals the result's value at its key.
+fn check_cells(page: &Value, result: &Value, what: &str) {
+    let cells = page["cells"].as_array().unwrap();
+    assert!(cells.len() > 20, "tables have cells: {}", cells.len());
+    for cell in cells {
+        let (key, text) = (cell[0].as_str().unwrap(), cell[1].as_str().unwrap());
+        let expected = lookup(result, key);
+        assert!(
+            !expected.is_null() || text == "null",
+            "{key} missing in the result"
+        );
+        assert_eq!(text, expected.to_string(), "{what}: {key}");
+    }
+}
 
 const MOVE_SLIDER: &str = r#"
 const s = document.getElementById("alpha");
@@ -224,17 +246,7 @@ fn check_report(chromium: &Path, driver: &Driver, job: &Path, stops_to_check: &[
             alpha,
             "alpha shown at stop {k}"
         );
-        let cells = page["cells"].as_array().unwrap();
-        assert!(cells.len() > 20, "tables have cells: {}", cells.len());
-        for cell in cells {
-            let (key, text) = (cell[0].as_str().unwrap(), cell[1].as_str().unwrap());
-            let expected = lookup(&result, key);
-            assert!(
-                !expected.is_null() || text == "null",
-                "{key} missing in the result"
-            );
-            assert_eq!(text, expected.to_string(), "alpha {alpha}: {key}");
-        }
+        check_cells(&page, &result, &format!("alpha {alpha}"));
         seen_s4.push(page["s4"].as_str().unwrap_or_default().to_owned());
     }
     seen_s4.dedup();
@@ -242,6 +254,20 @@ fn check_report(chromium: &Path, driver: &Driver, job: &Path, stops_to_check: &[
         seen_s4.len() > 2,
         "the stage 4 figure changes with the slider"
     );
+    // Every other type reduction: its own frame, the slider at rest, and
+    // every number that of `run --type-reduction NAME`.
+    let paper_page = exec(READ_PAGE, json!([]));
+    for name in ["centroid", "nie-tan", "alpha-planes"] {
+        assert_eq!(exec(SELECT_REDUCTION, json!([name])), json!(true), "{name}: slider at rest");
+        let page = exec(READ_PAGE, json!([]));
+        assert_eq!(page["alpha"], json!("not used"), "{name}");
+        let result = run_json_with(job, &["--type-reduction", name]);
+        check_cells(&page, &result, name);
+        assert_ne!(page["s4"], paper_page["s4"], "{name}: stage 4 changes");
+    }
+    assert_eq!(exec(SELECT_REDUCTION, json!(["paper"])), json!(false));
+    let back = exec(READ_PAGE, json!([]));
+    assert_eq!(back["cells"], paper_page["cells"], "back to the paper at the same stop");
 
     let logs = driver.post(&s("/se/log"), &json!({"type": "browser"}));
     let errors: Vec<&Value> = logs
