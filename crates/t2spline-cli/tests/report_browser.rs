@@ -258,7 +258,11 @@ fn check_report(chromium: &Path, driver: &Driver, job: &Path, stops_to_check: &[
     // every number that of `run --type-reduction NAME`.
     let paper_page = exec(READ_PAGE, json!([]));
     for name in ["centroid", "nie-tan", "alpha-planes"] {
-        assert_eq!(exec(SELECT_REDUCTION, json!([name])), json!(true), "{name}: slider at rest");
+        assert_eq!(
+            exec(SELECT_REDUCTION, json!([name])),
+            json!(true),
+            "{name}: slider at rest"
+        );
         let page = exec(READ_PAGE, json!([]));
         assert_eq!(page["alpha"], json!("not used"), "{name}");
         let result = run_json_with(job, &["--type-reduction", name]);
@@ -267,7 +271,10 @@ fn check_report(chromium: &Path, driver: &Driver, job: &Path, stops_to_check: &[
     }
     assert_eq!(exec(SELECT_REDUCTION, json!(["paper"])), json!(false));
     let back = exec(READ_PAGE, json!([]));
-    assert_eq!(back["cells"], paper_page["cells"], "back to the paper at the same stop");
+    assert_eq!(
+        back["cells"], paper_page["cells"],
+        "back to the paper at the same stop"
+    );
 
     let logs = driver.post(&s("/se/log"), &json!({"type": "browser"}));
     let errors: Vec<&Value> = logs

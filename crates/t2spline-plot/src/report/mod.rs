@@ -394,14 +394,19 @@ mod tests {
                     derivatives: None,
                 })
                 .unwrap();
-            for t in tables::tables(&run_result) {
-                assert_eq!(
-                    tables::cells(&t, &figure_result),
-                    tables::cells(&t, &run_result),
-                    "alpha {a}, {}",
-                    t.id
-                );
-            }
+            assert_same_tables(&figure_result, &run_result, &format!("alpha {a}"));
+        }
+    }
+
+    /// The report's table cells of `shown` are those of `run`.
+    fn assert_same_tables(shown: &RunOutput, run: &RunOutput, what: &str) {
+        for t in tables::tables(run) {
+            assert_eq!(
+                tables::cells(&t, shown),
+                tables::cells(&t, run),
+                "{what}, {}",
+                t.id
+            );
         }
     }
 
@@ -466,14 +471,7 @@ mod tests {
                 .unwrap();
             let run_result = job.run(&settings).unwrap();
             assert_eq!(figure_result.type_reduction, method);
-            for t in tables::tables(&run_result) {
-                assert_eq!(
-                    tables::cells(&t, &figure_result),
-                    tables::cells(&t, &run_result),
-                    "{method}, {}",
-                    t.id
-                );
-            }
+            assert_same_tables(&figure_result, &run_result, method.name());
         }
     }
 }
