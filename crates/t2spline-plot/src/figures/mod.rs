@@ -24,9 +24,7 @@ use t2spline::job::{Job, RunOutput};
 use t2spline::{Alpha, Axis};
 
 pub use number::number_figure;
-pub use reductions::{
-    reduction_label, reduction_marker, reduction_stroke, reduction_with_level, reductions_figure,
-};
+pub use reductions::{reduction_label, reductions_figure};
 pub use stages::{stage1_figure, stage2_figure, stage3_figure, stage4_figure};
 pub use sweep::sweep_figure;
 
