@@ -5,11 +5,10 @@
 //! core's curves directly (a zoom's curves on its own parameters, the
 //! distance at many alphas); plotting never recomputes the method.
 
-use t2spline::job::{Job, Model, ModelVisitor, Points, RunOutput, Settings};
-use t2spline::job::{Samples, Spline};
+use t2spline::job::{Job, Model, ModelVisitor, Overrides, Points, RunOutput, Spline};
 use t2spline::pipeline::euclidean_norm;
 use t2spline::sampling::{Params, Sampler};
-use t2spline::{Alpha, Axis, FuzzyCurve, FuzzySurface, Nt2Number};
+use t2spline::{Alpha, Axis, FuzzyCurve, FuzzySurface, Nt2Number, TypeReduction};
 
 use crate::Error;
 
@@ -47,30 +46,49 @@ pub fn figure_samples(model: &Model) -> usize {
         .clamp(MIN_FIGURE_SAMPLES, MAX_FIGURE_SAMPLES)
 }
 
-/// The result of the job at `alpha`, sampled for figures.
+/// The result of the job at `alpha` with the job's type reduction, sampled
+/// for figures: what `t2spline run --alpha A` computes (a reduction other
+/// than the paper's does not use `alpha` and cuts stage 2 at 0).
 ///
 /// # Errors
 /// [`Error::Surface`] for a surface job; [`Error::Core`] if the run fails (it
 /// does not for a validated curve job without derivatives).
 pub fn compute(job: &Job, alpha: Alpha) -> Result<RunOutput, Error> {
-    run_at(job, alpha, figure_samples(&job.model))
+    compute_with(job, alpha, job.type_reduction)
 }
 
-/// The result of the job at `alpha` with `samples` samples, as
-/// `t2spline run --alpha A --samples N` computes it.
+/// The result of the job at `alpha` with the type reduction `method`
+/// (SPEC §10), sampled for figures, as [`compute`].
 ///
 /// # Errors
-/// [`Error::Core`] if the run fails (it does not for a validated job without
-/// derivatives).
-pub fn run_at(job: &Job, alpha: Alpha, samples: usize) -> Result<RunOutput, Error> {
+/// As [`compute`].
+pub fn compute_with(job: &Job, alpha: Alpha, method: TypeReduction) -> Result<RunOutput, Error> {
+    run_at(job, alpha, method, figure_samples(&job.model))
+}
+
+/// The result of the job at `alpha` with the type reduction `method` and
+/// `samples` samples, as `t2spline run --alpha A --type-reduction M
+/// --samples N` computes it (the same settings, checked by the core).
+///
+/// # Errors
+/// [`Error::Surface`] for a surface job; [`Error::Core`] if the run fails (it
+/// does not for a validated curve job without derivatives).
+pub fn run_at(
+    job: &Job,
+    alpha: Alpha,
+    method: TypeReduction,
+    samples: usize,
+) -> Result<RunOutput, Error> {
     if job.model.is_surface() {
         return Err(Error::Surface);
     }
-    Ok(job.run(&Settings {
-        alpha,
-        samples: Samples::Along(samples),
+    let settings = job.settings(&Overrides {
+        alpha: Some(alpha.get()),
+        type_reduction: Some(method),
+        samples: Some(vec![samples as u64]),
         derivatives: None,
-    })?)
+    })?;
+    Ok(job.run(&settings)?)
 }
 
 /// What figures print of a curve's spline.
@@ -129,26 +147,32 @@ pub fn just_above(h: f64) -> Option<f64> {
         .then(|| f64::from_bits(h.to_bits() + 1))
 }
 
-/// The crisp and the defuzzified curve of `model` at `alpha` at the given
-/// parameters (any order; all in the domain).
+/// The crisp and the defuzzified curve of `model` at `alpha` with the type
+/// reduction `method` (the result's [`RunOutput::type_reduction`]), at the
+/// given parameters (any order; all in the domain).
 ///
 /// # Errors
 /// [`Error::Core`] if a parameter lies outside the domain.
-pub fn curves_at(model: &Model, alpha: Alpha, params: &[f64]) -> Result<(Points, Points), Error> {
-    struct At<'a>(Alpha, &'a [f64]);
+pub fn curves_at(
+    model: &Model,
+    alpha: Alpha,
+    method: TypeReduction,
+    params: &[f64],
+) -> Result<(Points, Points), Error> {
+    struct At<'a>(Alpha, TypeReduction, &'a [f64]);
     impl ModelVisitor for At<'_> {
         type Output = Result<(Points, Points), Error>;
         fn curve<const D: usize>(self, c: &FuzzyCurve<D>) -> Self::Output {
-            let s = c.solve(self.0);
-            let crisp = s.crisp_curve().sample_soa(self.1)?;
-            let solution = s.defuzzified_curve().sample_soa(self.1)?;
+            let s = c.solve_with(self.0, self.1);
+            let crisp = s.crisp_curve().sample_soa(self.2)?;
+            let solution = s.defuzzified_curve().sample_soa(self.2)?;
             Ok((Points::from(crisp), Points::from(solution)))
         }
         fn surface<const D: usize>(self, _: &FuzzySurface<D>) -> Self::Output {
             Err(Error::Surface)
         }
     }
-    model.visit(At(alpha, params))
+    model.visit(At(alpha, method, params))
 }
 
 /// Levels sampled together: bounds the memory of a sweep over many alphas
@@ -156,7 +180,8 @@ pub fn curves_at(model: &Model, alpha: Alpha, params: &[f64]) -> Result<(Points,
 const LEVELS_PER_PASS: usize = 8;
 
 /// Calls `sink(k, d)` for each alpha `alphas[k]` with the distance
-/// `d[i] = ‖D(tᵢ) − C(tᵢ)‖` between its defuzzified and the crisp curve at
+/// `d[i] = ‖D(tᵢ) − C(tᵢ)‖` between the defuzzified curve of the paper's
+/// type reduction (the one that uses alpha) and the crisp curve at
 /// `samples` uniform parameters `tᵢ`, and returns the parameters. The curves
 /// come from the library's sampling engine: per pass one [`Sampler`] for the
 /// crisp control points and the defuzzified ones of several levels (from
@@ -209,9 +234,9 @@ fn for_each_level(
     })
 }
 
-/// The distance `‖D(t) − C(t)‖` between the defuzzified and the crisp curve
-/// at each of `samples` uniform parameters, for each alpha: the parameters,
-/// then one list per alpha.
+/// The distance `‖D(t) − C(t)‖` between the defuzzified curve of the paper's
+/// type reduction and the crisp curve at each of `samples` uniform
+/// parameters, for each alpha: the parameters, then one list per alpha.
 ///
 /// # Errors
 /// [`Error::Core`] if sampling fails (never for a validated job).
@@ -226,7 +251,8 @@ pub fn distance_along(
 }
 
 /// The largest and the root-mean-square distance between the defuzzified
-/// and the crisp curve at each alpha, over `samples` uniform parameters (the
+/// curve of the paper's type reduction and the crisp curve at each alpha,
+/// over `samples` uniform parameters (the
 /// mean square by the trapezoidal rule):
 ///
 /// ```text

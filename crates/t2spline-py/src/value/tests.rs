@@ -61,6 +61,7 @@ fn example_output(alpha: f64, derivatives: Option<i64>) -> t2spline::job::RunOut
         alpha: Some(alpha),
         samples: Some(vec![11]),
         derivatives,
+        ..Overrides::default()
     };
     job.run(&job.settings(&overrides).unwrap()).unwrap()
 }
