@@ -1,4 +1,4 @@
-//! The binary under hostile input and failure (issue 6): one test per kind of
+//! The binary under hostile input and failure: one test per kind of
 //! error and exit code, the message format `t2spline: FILE:LINE:COLUMN: PLACE:
 //! RULE`, limits checked before reading, outputs that are complete or
 //! untouched, `-o -`, closed pipes and full disks.

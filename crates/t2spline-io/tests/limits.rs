@@ -1,4 +1,4 @@
-//! Hostile input (issue 6): every kind of problem is reported at its line and
+//! Hostile input: every kind of problem is reported at its line and
 //! column, every limit is enforced before the memory or time it guards is
 //! spent, and arbitrary bytes get a result or a clear error (the checks of the
 //! job fuzz target, run here by proptest so that CI runs them).

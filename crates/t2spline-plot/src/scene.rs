@@ -160,7 +160,7 @@ pub enum Mark {
         /// Text beside the line, at the top.
         label: String,
     },
-    /// A text placed near `anchor` where it covers nothing ([`crate::labels`]);
+    /// A text placed near `anchor` where it covers nothing (`labels`);
     /// far placements get a thin leader line.
     Label {
         /// The point the text is about.

@@ -12,7 +12,7 @@ const RATIO: f64 = 0.618_033_988_749_894_9;
 /// The bracket shrinks by [`RATIO`] per evaluation until it is no wider than
 /// `tolerance` (at most 200 steps). Every probe is kept inside the starting
 /// bracket, so rounding in a bracket a few subnormal units wide cannot take it
-/// out of the domain (found by fuzzing, issue 6).
+/// out of the domain (found by fuzzing).
 pub(crate) fn golden_section_min(
     f: impl Fn(f64) -> f64,
     [mut lo, mut hi]: [f64; 2],

@@ -1,4 +1,4 @@
-//! Extreme numerics (issue 6): weights from 1e-12 to 1e12 (and the limits
+//! Extreme numerics: weights from 1e-12 to 1e12 (and the limits
 //! 1e-150 and 1e150), coordinates from 1e-300 to the limit 1e150, interior knots of full
 //! multiplicity (a curve that jumps), repeated control points, zero-width
 //! spreads, h = 1, alpha exactly 0, h and 1, and parameters on every knot and at

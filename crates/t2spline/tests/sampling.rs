@@ -218,7 +218,7 @@ fn high_degrees_stay_within_tolerance() {
 }
 
 /// A cubic with one span `width` wide at `left` and extreme coordinates
-/// (issue 6's input ranges).
+/// (the hostile-input ranges).
 fn narrow_span_curve(width: f64, left: f64, weights: &[f64]) -> NurbsCurve<2> {
     let points: Vec<[f64; 2]> = [1e150, -3e149, 2e-150, 7e149, -1e150, 5e148]
         .iter()

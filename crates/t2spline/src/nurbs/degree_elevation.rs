@@ -15,7 +15,7 @@ pub const MAX_ELEVATED_DEGREE: usize = 64;
 /// Checks that degree `p` raised `t` times stays within [`MAX_ELEVATED_DEGREE`],
 /// and that a curve of degree 0 (piecewise constant, jumping at every interior
 /// knot) is not raised: A5.9 needs segments of degree at least 1 and, given
-/// degree 0, builds an invalid knot vector (found by fuzzing, issue 6).
+/// degree 0, builds an invalid knot vector (found by fuzzing).
 pub(crate) fn check_elevation(p: usize, t: usize) -> Result<(), Error> {
     if p == 0 && t > 0 {
         return Err(Error::OutOfRange {

@@ -28,7 +28,7 @@ pub(crate) fn lerp(alpha: f64, a: &[f64], b: &[f64]) -> Row {
 /// Knot insertion computes `β` from the knots as `(U[i+p] − u)/(U[i+p] − U[i])`
 /// rather than as `1 − α`: when `α` rounds to 1, `1 − α` is 0 while the true
 /// `β` may be 1e-68, and multiplied by a weight of 1e98 that is no rounding
-/// error but the whole new weight (found by fuzzing, issue 6). Non-negative
+/// error but the whole new weight (found by fuzzing). Non-negative
 /// `α` and `β` keep the monotonicity of [`lerp`].
 pub(crate) fn blend(alpha: f64, beta: f64, a: &[f64], b: &[f64]) -> Row {
     a.iter().zip(b).map(|(x, y)| alpha * x + beta * y).collect()

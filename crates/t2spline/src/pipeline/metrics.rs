@@ -55,7 +55,7 @@ impl Distance {
             scan.clear();
             scan.extend((0..=SCAN_STEPS).map(|j| {
                 // `min`: in a span a few subnormal units wide the rounded step
-                // can overshoot `b` (found by fuzzing, issue 6).
+                // can overshoot `b` (found by fuzzing).
                 let t = if j == SCAN_STEPS {
                     b
                 } else {

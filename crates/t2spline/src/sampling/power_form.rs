@@ -37,7 +37,7 @@ pub(crate) struct Span {
 /// for κ ≤ 1e3 at order 8. Typical curves have κ of 2ᵖ times the weight
 /// ratio (8 for the cubic Bézier with equal weights); weights spread over
 /// 1e-12 … 1e12 give κ near 1e24, where the power form cancels to nonsense
-/// (a negative denominator, NaN: issue 6).
+/// (a negative denominator, NaN).
 pub(crate) const MAX_CONDITION: f64 = 1e3;
 
 /// Spans narrower than this get the pre-scaling `PRE`.
@@ -140,7 +140,7 @@ impl PowerBasis {
 /// derivative mapped to `s` units ([`basis_derivatives_in`]).
 ///
 /// In `t` the `k`-th derivative grows like `1/(span width)ᵏ` and overflowed for
-/// spans of 1e-140 (infinite and NaN samples; issue 6). Mapping the knots
+/// spans of 1e-140 (infinite and NaN samples). Mapping the knots
 /// themselves to `s` and clamping the far ones was wrong: two far knots on
 /// either side of a narrow span enter one ratio, which clamping changed (found
 /// by fuzzing); here the basis values stay ratios in `t`.
