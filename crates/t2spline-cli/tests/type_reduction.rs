@@ -305,7 +305,12 @@ fn export_writes_the_chosen_reduction_s_curve() {
         assert_eq!(points.len(), want.len());
         // The run's control points and weights, exactly; z = 0 for a planar job.
         for ((p, w), weight) in points.iter().zip(want).zip(weights) {
-            let w: Vec<f64> = w.as_array().unwrap().iter().map(|x| x.as_f64().unwrap()).collect();
+            let w: Vec<f64> = w
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|x| x.as_f64().unwrap())
+                .collect();
             assert_eq!(p, &[w[0], w[1], 0.0, weight.as_f64().unwrap()], "{method}");
         }
         // The crisp curve does not depend on the reduction.
@@ -364,9 +369,17 @@ fn a_run_of_many_jobs_honours_each_job_s_reduction() {
         lines[0],
         "name,file,status,type_reduction,regime,alpha,error_max,error_rms,message"
     );
-    assert!(lines[1].starts_with("a,") && lines[1].contains(",ok,paper,alpha > h,0.8,"), "{}", lines[1]);
+    assert!(
+        lines[1].starts_with("a,") && lines[1].contains(",ok,paper,alpha > h,0.8,"),
+        "{}",
+        lines[1]
+    );
     // No regime and no alpha for a reduction that does not use alpha.
-    assert!(lines[2].starts_with("b,") && lines[2].contains(",ok,centroid,,,"), "{}", lines[2]);
+    assert!(
+        lines[2].starts_with("b,") && lines[2].contains(",ok,centroid,,,"),
+        "{}",
+        lines[2]
+    );
     // The flag overrides every job's key.
     let again = dir.path().join("again");
     let (code, _, _) = t2spline(&[
@@ -380,9 +393,10 @@ fn a_run_of_many_jobs_honours_each_job_s_reduction() {
     ]);
     assert_eq!(code, 0);
     for name in ["a", "b"] {
-        let v: Value =
-            serde_json::from_str(&std::fs::read_to_string(again.join(format!("{name}.json"))).unwrap())
-                .unwrap();
+        let v: Value = serde_json::from_str(
+            &std::fs::read_to_string(again.join(format!("{name}.json"))).unwrap(),
+        )
+        .unwrap();
         assert_eq!(v["type_reduction"], json!("nie-tan"), "{name}");
     }
 }

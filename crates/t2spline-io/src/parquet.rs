@@ -195,8 +195,7 @@ fn write_summary<W: Write + Send>(
 ) -> Result<(), ParquetError> {
     const OPTIONAL: Repetition = Repetition::OPTIONAL;
     const REQUIRED: Repetition = Repetition::REQUIRED;
-    let [name, file, status, reduction, regime, alpha, max, rms, message] =
-        crate::SUMMARY_COLUMNS;
+    let [name, file, status, reduction, regime, alpha, max, rms, message] = crate::SUMMARY_COLUMNS;
     let fields = vec![
         text(name, REQUIRED)?,
         text(file, REQUIRED)?,

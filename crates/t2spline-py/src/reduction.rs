@@ -103,11 +103,7 @@ pub(crate) fn centroid<'py>(
             )))
         }
     };
-    let (x, lmf, umf) = (
-        samples(x, "x")?,
-        samples(lmf, "lmf")?,
-        samples(umf, "umf")?,
-    );
+    let (x, lmf, umf) = (samples(x, "x")?, samples(lmf, "lmf")?, samples(umf, "umf")?);
     let (left, right, defuzzified, iterations) = compute(py, move || {
         let set = SampledSet::try_new(&x.data, &lmf.data, &umf.data)?;
         Ok(match algorithm {

@@ -236,7 +236,11 @@ pub(crate) fn run<'py>(
         derivatives,
     )?;
     if let Some(a) = settings.unused_alpha {
-        let source = if alpha.is_some() { "alpha=" } else { "the job's alpha " };
+        let source = if alpha.is_some() {
+            "alpha="
+        } else {
+            "the job's alpha "
+        };
         let message = format!(
             "type reduction {} does not use alpha; {source}{} is ignored (stage 2 is cut at alpha = 0, the whole footprint)",
             settings.type_reduction,

@@ -35,8 +35,8 @@ use t2spline::job::{Job, RunOutput};
 use t2spline::{Alpha, Axis, Layer, TypeReduction};
 
 use crate::figures::curve::{
-    distance_figure, reductions_figure, stage1_figure, stage2_figure, stage3_figure,
-    stage4_figure, sweep_figure, CurveScene, Zoom,
+    distance_figure, reductions_figure, stage1_figure, stage2_figure, stage3_figure, stage4_figure,
+    sweep_figure, CurveScene, Zoom,
 };
 use crate::figures::{number_figure, FigureOptions};
 use crate::layout;
@@ -212,10 +212,11 @@ fn choose_stops(job: &Job, start: Alpha, options: &FigureOptions) -> Result<Stop
         let alpha = Alpha::try_new(a)?;
         let run = data::run_at(job, alpha, TypeReduction::Paper, job.samples.count())?;
         let files: Vec<String> = files_of(&run)?.into_iter().map(|(_, t)| t).collect();
-        let figures: Vec<String> = stop_figures(job, alpha, TypeReduction::Paper, &heights, options)?
-            .iter()
-            .map(svg::render)
-            .collect();
+        let figures: Vec<String> =
+            stop_figures(job, alpha, TypeReduction::Paper, &heights, options)?
+                .iter()
+                .map(svg::render)
+                .collect();
         // Measured on jobs of 4 to 200 points: a stop's packed downloads take
         // a third of a whole result's files packed alone (half its numbers
         // change, and the CSV files repeat the result's), and its figure

@@ -103,7 +103,12 @@ fn the_report_marks_h_starts_at_the_given_alpha_and_carries_run_s_files() {
     let figures = data["figures"].as_array().unwrap();
     assert_eq!(figures.len(), 5);
     for f in &figures[..4] {
-        assert_eq!(f["frames"].as_array().unwrap().len(), 104, "{}", f["prefix"]);
+        assert_eq!(
+            f["frames"].as_array().unwrap().len(),
+            104,
+            "{}",
+            f["prefix"]
+        );
     }
     // The distance against alpha is the paper's: a frame per slider stop.
     assert_eq!(figures[4]["frames"].as_array().unwrap().len(), 101);
@@ -154,7 +159,10 @@ fn a_job_of_another_reduction_opens_on_its_frame() {
     .unwrap();
     assert!(html.contains("<option value=\"nie-tan\" selected>"));
     assert!(html.contains("data-stamp=\"nie-tan\">not used</output>"));
-    assert!(html.contains("value=\"37\""), "the slider rests at the start");
+    assert!(
+        html.contains("value=\"37\""),
+        "the slider rests at the start"
+    );
     let data = data_block(&html);
     assert_eq!(data["initial"], json!(102));
     assert_eq!(data["stops"][102]["reduction"], json!("nie-tan"));
