@@ -8,6 +8,17 @@ fn example() -> (Job, String) {
     (t2spline_io::parse_job(&text, "example").unwrap(), text)
 }
 
+/// The report of `job` with the slider starting at 0.37.
+fn render_at_037(job: &Job, text: &str) -> String {
+    render(
+        job,
+        text,
+        Alpha::try_new(0.37).unwrap(),
+        &FigureOptions::default(),
+    )
+    .unwrap()
+}
+
 /// The report's data block, unpacked.
 fn data_block(html: &str) -> Value {
     let start = html.find("id=\"report-data\">").unwrap() + 17;
@@ -70,13 +81,7 @@ fn every_reduction_is_the_run_result() {
 #[test]
 fn the_report_marks_h_starts_at_the_given_alpha_and_carries_run_s_files() {
     let (job, text) = example();
-    let html = render(
-        &job,
-        &text,
-        Alpha::try_new(0.37).unwrap(),
-        &FigureOptions::default(),
-    )
-    .unwrap();
+    let html = render_at_037(&job, &text);
     assert!(html.contains("α = h = 0.6"));
     assert!(html.contains("data-value=\"0.37\" data-stamp=\"alpha-0.37\">0.37</output>"));
     assert!(html.contains("value=\"37\""), "0.37 is stop 37");
@@ -150,13 +155,7 @@ fn a_job_of_another_reduction_opens_on_its_frame() {
         type_reduction: TypeReduction::NieTan,
         ..job
     };
-    let html = render(
-        &job,
-        &text,
-        Alpha::try_new(0.37).unwrap(),
-        &FigureOptions::default(),
-    )
-    .unwrap();
+    let html = render_at_037(&job, &text);
     assert!(html.contains("<option value=\"nie-tan\" selected>"));
     assert!(html.contains("data-stamp=\"nie-tan\">not used</output>"));
     assert!(

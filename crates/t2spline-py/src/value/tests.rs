@@ -157,9 +157,8 @@ fn a_surface_run_gives_grids_of_points() {
     );
     let job = t2spline_io::read_job(std::path::Path::new(path)).unwrap();
     let overrides = Overrides {
-        alpha: None,
         samples: Some(vec![4, 3]),
-        derivatives: None,
+        ..Overrides::default()
     };
     let out = job.run(&job.settings(&overrides).unwrap()).unwrap();
     let tree = to_value(&out).unwrap();
