@@ -33,6 +33,14 @@ def test_the_keyword_equals_the_cli_option(cli: Path, name: Any) -> None:
     assert (got["regime"] is None) is (name != "paper")
 
 
+@pytest.mark.parametrize("name", REDUCTIONS)
+def test_a_surface_job_takes_the_keyword_as_the_cli_takes_the_option(cli: Path, name: Any) -> None:
+    terrain = EXAMPLE.parent / "fuzzy-terrain.json"
+    got = t2spline.run(terrain, type_reduction=name, samples=(5, 4))
+    assert_same(got, cli_run(cli, terrain, "--type-reduction", name, "--samples", "5,4"))
+    assert got["type_reduction"] == name
+
+
 @pytest.mark.parametrize("name", REDUCTIONS[1:])
 def test_the_job_key_equals_the_cli(cli: Path, tmp_path: Path, name: str) -> None:
     job = json.loads(EXAMPLE.read_text())
