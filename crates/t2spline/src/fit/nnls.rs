@@ -58,7 +58,7 @@ pub(crate) fn nonnegative_least_squares(a: &BandMatrix, b: &[f64]) -> Result<Vec
     let tol = gradient_tolerance(b);
     let passive: Vec<bool> = free.iter().map(|x| x[0] > 0.0).collect();
     match block_pivoting(a, b, &rhs, passive.clone(), tol, MAX_SOLVES)? {
-        Some(x) => Ok(x),
+        Some((x, _)) => Ok(x),
         None => lawson_hanson(a, b, &rhs, passive, tol),
     }
 }
@@ -86,8 +86,8 @@ fn solve_free(a: &BandMatrix, rhs: &[[f64; 1]], passive: &[bool]) -> Result<Vec<
 }
 
 /// Block principal pivoting from the split `passive` (see
-/// [`nonnegative_least_squares`]); `None` if the conditions are not met
-/// within `max_solves` solves.
+/// [`nonnegative_least_squares`]): the solution and the number of solves it
+/// took, or `None` if the conditions are not met within `max_solves` solves.
 fn block_pivoting(
     a: &BandMatrix,
     b: &[f64],
@@ -95,19 +95,19 @@ fn block_pivoting(
     mut passive: Vec<bool>,
     tol: f64,
     max_solves: usize,
-) -> Result<Option<Vec<f64>>, Error> {
+) -> Result<Option<(Vec<f64>, usize)>, Error> {
     let reach = 2 * a.width();
     let mut fewest = usize::MAX;
     let mut backup = BACKUP_EXCHANGES;
     let mut stalled = false;
-    for _ in 0..max_solves {
+    for solves in 1..=max_solves {
         let x = solve_free(a, rhs, &passive)?;
         let w = gradient(a, b, &x);
         let infeasible: Vec<usize> = (0..a.cols())
             .filter(|&j| if passive[j] { x[j] < 0.0 } else { w[j] > tol })
             .collect();
         if infeasible.is_empty() {
-            return Ok(Some(x));
+            return Ok(Some((x, solves)));
         }
         if !stalled && infeasible.len() < fewest {
             fewest = infeasible.len();
