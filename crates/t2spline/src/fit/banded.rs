@@ -78,11 +78,6 @@ impl BandMatrix {
         self.cols
     }
 
-    /// The band width: the most non-zero values in a row.
-    pub(crate) fn width(&self) -> usize {
-        self.width
-    }
-
     /// Row `r`: its first column and its `width` values.
     pub(crate) fn row(&self, r: usize) -> (usize, &[f64]) {
         (

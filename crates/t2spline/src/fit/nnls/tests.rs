@@ -22,20 +22,17 @@ fn assert_kkt(a: &BandMatrix, b: &[f64], x: &[f64], tol: f64) {
     }
 }
 
-/// Block pivoting (within `max_solves`) and Lawson–Hanson, both from the
-/// signs of the unconstrained solution as [`nonnegative_least_squares`]
-/// starts them.
-fn both_methods(
-    a: &BandMatrix,
-    b: &[f64],
-    max_solves: usize,
-) -> (Option<(Vec<f64>, usize)>, Vec<f64>) {
-    let rhs: Vec<[f64; 1]> = b.iter().map(|&v| [v]).collect();
-    let free = least_squares(a, &rhs).unwrap();
-    let passive: Vec<bool> = free.iter().map(|x| x[0] > 0.0).collect();
-    let tol = gradient_tolerance(b);
-    let pivoting = block_pivoting(a, b, &rhs, passive.clone(), tol, max_solves).unwrap();
-    (pivoting, lawson_hanson(a, b, &rhs, passive, tol).unwrap())
+/// The signs of the unconstrained solution, where both phases start.
+fn unconstrained_signs(problem: &mut Problem) -> Vec<bool> {
+    let free = problem.solve_free(&vec![true; problem.a.cols()]).unwrap();
+    free.iter().map(|&x| x > 0.0).collect()
+}
+
+/// Lawson–Hanson alone, from the signs of the unconstrained solution.
+fn lawson_hanson_alone(a: &BandMatrix, b: &[f64]) -> Vec<f64> {
+    let mut problem = Problem::new(a, b);
+    let passive = unconstrained_signs(&mut problem);
+    problem.lawson_hanson(passive).unwrap()
 }
 
 #[test]
@@ -64,8 +61,7 @@ fn kkt_conditions_hold_on_a_constrained_problem() {
     let x = nonnegative_least_squares(&a, &b).unwrap();
     assert_kkt(&a, &b, &x, 1e-12);
     assert!(x.contains(&0.0), "the constraint should be active: {x:?}");
-    let (pivoting, active_set) = both_methods(&a, &b, MAX_SOLVES);
-    assert_eq!(pivoting.map(|p| p.0), Some(x));
+    let active_set = lawson_hanson_alone(&a, &b);
     assert_kkt(&a, &b, &active_set, 1e-12);
 }
 
@@ -95,15 +91,11 @@ proptest::proptest! {
         let b: Vec<f64> = rows.iter().map(|r| r.2).collect();
         let x = nonnegative_least_squares(&a, &b).unwrap();
         assert_kkt(&a, &b, &x, 1e-10);
-        let (pivoting, active_set) = both_methods(&a, &b, MAX_SOLVES);
+        let active_set = lawson_hanson_alone(&a, &b);
         assert_kkt(&a, &b, &active_set, 1e-10);
-        let Some((pivoting, _)) = pivoting else {
-            return Err(proptest::test_runner::TestCaseError::fail("pivoting did not finish"));
-        };
-        assert_kkt(&a, &b, &pivoting, 1e-10);
-        // The solution is unique: the two methods agree to rounding.
-        for (p, q) in pivoting.iter().zip(&active_set) {
-            proptest::prop_assert!((p - q).abs() < 1e-10, "{pivoting:?} vs {active_set:?}");
+        // The solution is unique: the two ways agree to rounding.
+        for (p, q) in x.iter().zip(&active_set) {
+            proptest::prop_assert!((p - q).abs() < 1e-10, "{x:?} vs {active_set:?}");
         }
     }
 }
@@ -143,42 +135,37 @@ fn jumping_spreads(n: usize, seed: u64) -> (BandMatrix, Vec<f64>) {
 }
 
 #[test]
-fn pivoting_solves_large_problems_in_few_solves() {
+fn large_problems_take_few_solves() {
     // The unconstrained solution oscillates in sign and a thousand
-    // constraints are active: Lawson–Hanson needs a solve per variable it
-    // frees. With seed 36, full exchanges stall after four solves among a few
-    // clusters of variables, which the exchange per cluster resolves (18
-    // solves; one exchange at a time would add up the clusters' needs).
-    for (seed, most) in [(1, 8), (2, 8), (36, 30)] {
+    // constraints are active: Lawson–Hanson alone needs a solve per variable
+    // it frees. Block pivoting solves seeds 1 and 2 on its own; with seed 36
+    // full exchanges stall among a few clusters of neighbouring variables
+    // and Lawson–Hanson finishes.
+    for (seed, stalls) in [(1, false), (2, false), (36, true)] {
         let (a, b) = jumping_spreads(5000, seed);
-        let rhs: Vec<[f64; 1]> = b.iter().map(|&v| [v]).collect();
-        let free = least_squares(&a, &rhs).unwrap();
-        let negative = free.iter().filter(|x| x[0] < 0.0).count();
+        let mut problem = Problem::new(&a, &b);
+        let passive = unconstrained_signs(&mut problem);
+        let negative = passive.iter().filter(|&&p| !p).count();
         assert!(negative > 500, "only {negative} negative unconstrained values");
-        let passive: Vec<bool> = free.iter().map(|x| x[0] > 0.0).collect();
-        let (x, solves) = block_pivoting(&a, &b, &rhs, passive, gradient_tolerance(&b), most)
-            .unwrap()
-            .unwrap_or_else(|| panic!("seed {seed}: no solution within {most} solves"));
-        if seed == 36 {
-            assert!(solves > 10, "seed 36 no longer stalls ({solves} solves)");
-        }
+        let phase_1 = problem.block_pivoting(passive).unwrap();
+        assert_eq!(matches!(phase_1, Pivoting::Stalled(_)), stalls, "seed {seed}");
+        let (x, solves) = Problem::new(&a, &b).solve().unwrap();
+        assert!(solves <= 30, "seed {seed}: {solves} solves");
         assert_kkt(&a, &b, &x, 1e-10);
-        assert_eq!(nonnegative_least_squares(&a, &b).unwrap(), x);
     }
 }
 
 #[test]
-fn lawson_hanson_agrees_with_pivoting_on_a_mid_sized_problem() {
-    let (a, b) = jumping_spreads(300, 7);
-    let (pivoting, active_set) = both_methods(&a, &b, MAX_SOLVES);
-    let (pivoting, _) = pivoting.expect("pivoting finishes");
-    assert_kkt(&a, &b, &active_set, 1e-10);
-    for (p, q) in pivoting.iter().zip(&active_set) {
-        assert!((p - q).abs() < 1e-12, "{p} vs {q}");
+fn both_phases_agree_with_lawson_hanson_alone_on_a_mid_sized_problem() {
+    for seed in [36, 7] {
+        let (a, b) = jumping_spreads(1000, seed);
+        let x = nonnegative_least_squares(&a, &b).unwrap();
+        let active_set = lawson_hanson_alone(&a, &b);
+        assert_kkt(&a, &b, &x, 1e-10);
+        for (p, q) in x.iter().zip(&active_set) {
+            assert!((p - q).abs() < 1e-12, "{p} vs {q}");
+        }
     }
-    // Without solves left for pivoting, the fallback gives the answer.
-    let (none, _) = both_methods(&a, &b, 0);
-    assert!(none.is_none());
 }
 
 #[test]
