@@ -72,6 +72,7 @@ mod golden_section;
 mod limits;
 pub mod nurbs;
 pub mod pipeline;
+pub(crate) mod quadrature;
 pub mod sampling;
 #[cfg(any(test, feature = "proptest"))]
 pub mod strategies;
