@@ -4,8 +4,8 @@
 use crate::nurbs::basis::basis_functions;
 use crate::nurbs::NurbsCurve;
 
-/// Evaluates a curve and its first derivative on a chosen knot span, many
-/// times, without allocating.
+/// Evaluates curves of one degree and their first derivatives on a chosen
+/// knot span, many times, without allocating.
 ///
 /// The Cox–de Boor recurrence (The NURBS Book, A2.2) divides by the knot
 /// differences `U[span+1+r] − U[span+1−j+r]`, which depend on the span only:
@@ -20,8 +20,7 @@ use crate::nurbs::NurbsCurve;
 /// A span so narrow that a reciprocal overflows (below about 1e-308) is
 /// evaluated by [`basis_functions`], which divides first.
 #[derive(Clone, Debug)]
-pub(crate) struct SpanEvaluator<'a, const D: usize> {
-    curve: &'a NurbsCurve<D>,
+pub(crate) struct SpanEvaluator {
     span: usize,
     /// `1/(U[span+1+r] − U[span+1−j+r])` at `j(j−1)/2 + r`, for `j = 1 … p`,
     /// `r < j`.
@@ -34,12 +33,11 @@ pub(crate) struct SpanEvaluator<'a, const D: usize> {
     right: Vec<f64>,
 }
 
-impl<'a, const D: usize> SpanEvaluator<'a, D> {
-    /// An evaluator for `curve`, on no span yet.
-    pub(crate) fn new(curve: &'a NurbsCurve<D>) -> Self {
-        let order = curve.order();
+impl SpanEvaluator {
+    /// An evaluator for curves of degree `degree`, on no span yet.
+    pub(crate) fn new(degree: usize) -> Self {
+        let order = degree + 1;
         SpanEvaluator {
-            curve,
             span: usize::MAX,
             inverse: vec![0.0; order * (order - 1) / 2],
             finite: true,
@@ -51,14 +49,14 @@ impl<'a, const D: usize> SpanEvaluator<'a, D> {
     }
 
     /// Chooses the non-empty knot span `span` (`U[span] < U[span+1]`, `p ≤
-    /// span < n`); does nothing if it is chosen already.
-    pub(crate) fn set_span(&mut self, span: usize) {
-        if span == self.span {
-            return;
-        }
+    /// span < n`) of `curve`, whose degree must be the evaluator's. The
+    /// evaluation methods must then be given the same curve. Costs about one
+    /// evaluation: callers choose a span once for many points.
+    pub(crate) fn set_span<const D: usize>(&mut self, curve: &NurbsCurve<D>, span: usize) {
+        debug_assert_eq!(curve.order(), self.basis.len());
         self.span = span;
-        let u = self.curve.knots().as_slice();
-        let p = self.curve.degree();
+        let u = curve.knots().as_slice();
+        let p = curve.degree();
         self.finite = true;
         for j in 1..=p {
             for r in 0..j {
@@ -71,9 +69,8 @@ impl<'a, const D: usize> SpanEvaluator<'a, D> {
 
     /// The basis functions at `t` into `self.basis`, and with `derivative`
     /// their derivatives into `self.derivative`.
-    fn basis_at(&mut self, t: f64, derivative: bool) {
-        let u = self.curve.knots().as_slice();
-        let (p, span) = (self.curve.degree(), self.span);
+    fn basis_at(&mut self, u: &[f64], t: f64, derivative: bool) {
+        let (p, span) = (self.basis.len() - 1, self.span);
         if !self.finite {
             basis_functions(u, p, span, t, &mut self.basis);
             if derivative {
@@ -112,11 +109,11 @@ impl<'a, const D: usize> SpanEvaluator<'a, D> {
     }
 
     /// `C(t)` on the chosen span (`t` in it or at its ends).
-    pub(crate) fn point(&mut self, t: f64) -> [f64; D] {
-        self.basis_at(t, false);
-        let first = self.span - self.curve.degree();
-        let weights = &self.curve.weights()[first..];
-        let points = &self.curve.control_points()[first..];
+    pub(crate) fn point<const D: usize>(&mut self, curve: &NurbsCurve<D>, t: f64) -> [f64; D] {
+        self.basis_at(curve.knots().as_slice(), t, false);
+        let first = self.span - curve.degree();
+        let weights = &curve.weights()[first..];
+        let points = &curve.control_points()[first..];
         let mut a = [0.0; D];
         let mut w = 0.0;
         for ((n, wi), pi) in self.basis.iter().zip(weights).zip(points) {
@@ -130,30 +127,49 @@ impl<'a, const D: usize> SpanEvaluator<'a, D> {
     }
 
     /// `C(t)` and `C'(t)` on the chosen span (one-sided at its ends).
-    pub(crate) fn point_and_derivative(&mut self, t: f64) -> ([f64; D], [f64; D]) {
-        self.basis_at(t, true);
-        let first = self.span - self.curve.degree();
-        let weights = &self.curve.weights()[first..];
-        let points = &self.curve.control_points()[first..];
-        let (mut a, mut da) = ([0.0; D], [0.0; D]);
-        let (mut w, mut dw) = (0.0, 0.0);
-        for (((n, dn), wi), pi) in self
-            .basis
-            .iter()
-            .zip(&self.derivative)
-            .zip(weights)
-            .zip(points)
-        {
-            let (nw, dnw) = (n * wi, dn * wi);
-            w += nw;
-            dw += dnw;
+    ///
+    /// The derivative is formed from differences of control points,
+    ///
+    /// ```text
+    /// C' = Σᵢ<ⱼ (bᵢaⱼ − aᵢbⱼ)·(Pᵢ − Pⱼ),   aᵢ = wᵢNᵢ/w,  bᵢ = wᵢN'ᵢ/w
+    /// ```
+    /// (from `C' = (A' − w'·C)/w` and `C − Pᵢ = Σⱼ aⱼ(Pⱼ − Pᵢ)`), not as
+    /// `(A' − w'·C)/w`: with weights far apart, `A'` and `w'·C` are huge and
+    /// nearly equal where one weight dominates, and their difference was
+    /// rounding noise larger than the speed itself (weights from 10⁻¹² to
+    /// 10¹²: a length 1% too long). `O(p²)` operations, as the basis.
+    pub(crate) fn point_and_derivative<const D: usize>(
+        &mut self,
+        curve: &NurbsCurve<D>,
+        t: f64,
+    ) -> ([f64; D], [f64; D]) {
+        self.basis_at(curve.knots().as_slice(), t, true);
+        let first = self.span - curve.degree();
+        let order = self.basis.len();
+        let weights = &curve.weights()[first..first + order];
+        let points = &curve.control_points()[first..first + order];
+        let w: f64 = self.basis.iter().zip(weights).map(|(n, wi)| n * wi).sum();
+        // aᵢ and bᵢ in place of the basis and its derivative.
+        for ((n, dn), wi) in self.basis.iter_mut().zip(&mut self.derivative).zip(weights) {
+            *n *= wi / w;
+            *dn *= wi / w;
+        }
+        let (a, b) = (&self.basis, &self.derivative);
+        let mut c = [0.0; D];
+        let mut dc = [0.0; D];
+        for i in 0..order {
             for d in 0..D {
-                a[d] += nw * pi[d];
-                da[d] += dnw * pi[d];
+                c[d] += a[i] * points[i][d];
+            }
+            for j in i + 1..order {
+                let k = b[i] * a[j] - a[i] * b[j];
+                if k != 0.0 {
+                    for d in 0..D {
+                        dc[d] += k * (points[i][d] - points[j][d]);
+                    }
+                }
             }
         }
-        let c = a.map(|ad| ad / w);
-        let dc = std::array::from_fn(|d| (da[d] - dw * c[d]) / w);
         (c, dc)
     }
 }
@@ -186,13 +202,14 @@ mod tests {
             u,
         )
         .unwrap();
-        let mut e = SpanEvaluator::new(&c);
+        let mut e = SpanEvaluator::new(3);
         for (span, [a, b]) in c.knots().spans() {
-            e.set_span(span);
+            e.set_span(&c, span);
             for s in [0.0, 0.13, 0.5, 0.77, 1.0] {
                 let t = a + s * (b - a);
-                let (point, tangent) = e.point_and_derivative(t);
-                assert_eq!(e.point(t), point);
+                let (point, tangent) = e.point_and_derivative(&c, t);
+                let again = e.point(&c, t);
+                assert!((0..2).all(|d| (again[d] - point[d]).abs() < 1e-14));
                 let want = c.derivatives_in_span(span, t, 1);
                 for d in 0..2 {
                     assert!((point[d] - want[0][d]).abs() < 1e-14, "{t}: {point:?} {want:?}");
@@ -208,13 +225,13 @@ mod tests {
     #[test]
     fn degree_zero_and_one() {
         let c = NurbsCurve::try_clamped(0, vec![[1.0, 2.0], [3.0, 4.0]], vec![1.0, 2.0]).unwrap();
-        let mut e = SpanEvaluator::new(&c);
-        e.set_span(1);
-        assert_eq!(e.point_and_derivative(0.7), ([3.0, 4.0], [0.0, 0.0]));
+        let mut e = SpanEvaluator::new(0);
+        e.set_span(&c, 1);
+        assert_eq!(e.point_and_derivative(&c, 0.7), ([3.0, 4.0], [0.0, 0.0]));
         let c = NurbsCurve::try_clamped(1, vec![[0.0, 0.0], [3.0, 4.0]], vec![1.0, 1.0]).unwrap();
-        let mut e = SpanEvaluator::new(&c);
-        e.set_span(1);
-        assert_eq!(e.point_and_derivative(0.5), ([1.5, 2.0], [3.0, 4.0]));
+        let mut e = SpanEvaluator::new(1);
+        e.set_span(&c, 1);
+        assert_eq!(e.point_and_derivative(&c, 0.5), ([1.5, 2.0], [3.0, 4.0]));
     }
 
     #[test]
@@ -223,11 +240,11 @@ mod tests {
         let u = KnotVector::try_new(vec![0.0, 0.0, 0.0, end, end, end], 2, 3).unwrap();
         let c = NurbsCurve::try_new(vec![[0.0, 0.0], [1.0, 2.0], [3.0, 4.0]], vec![1.0, 2.0, 1.0], u)
             .unwrap();
-        let mut e = SpanEvaluator::new(&c);
-        e.set_span(2);
+        let mut e = SpanEvaluator::new(2);
+        e.set_span(&c, 2);
         assert!(!e.finite);
         let t = end / 2.0;
-        let (got, want) = (e.point(t), c.eval(t).unwrap());
+        let (got, want) = (e.point(&c, t), c.eval(t).unwrap());
         assert!((0..2).all(|d| (got[d] - want[d]).abs() <= 1e-15 * want[d].abs()), "{got:?} {want:?}");
     }
 }
