@@ -14,7 +14,7 @@ const RATIO: f64 = 0.618_033_988_749_894_9;
 /// bracket, so rounding in a bracket a few subnormal units wide cannot take it
 /// out of the domain (found by fuzzing, issue 6).
 pub(crate) fn golden_section_min(
-    f: impl Fn(f64) -> f64,
+    mut f: impl FnMut(f64) -> f64,
     [mut lo, mut hi]: [f64; 2],
     tolerance: f64,
 ) -> (f64, f64) {
