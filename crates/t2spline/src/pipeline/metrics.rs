@@ -1,6 +1,6 @@
 //! The distance between the crisp and the defuzzified curve (SPEC §7).
 
-use crate::golden_section::golden_section_min;
+use crate::golden_section::brent_min;
 use crate::nurbs::pieces::tame_pieces;
 use crate::nurbs::span_eval::SpanEvaluator;
 use crate::nurbs::NurbsCurve;
@@ -17,8 +17,9 @@ use crate::quadrature::{integrate_pieces, Tolerance};
 /// Both curves share weights and knots, so `D − C` is itself a rational
 /// B-spline whose control points are the differences `Dᵢ − Pᵢ`; `d` is its norm.
 /// Neither figure depends on the job's `samples`: `max` is found by a scan of 32
-/// steps per knot span, each local maximum of the scan refined by
-/// golden-section search (to about 1e-13 of the span in `t`); `rms` by
+/// steps per knot span, each local maximum of the scan refined by Brent's
+/// method (parabolic steps and golden sections, to 1e-9 of the span in `t`,
+/// where the value is exact to rounding); `rms` by
 /// adaptive Gauss–Kronrod quadrature (7/15 points, [`crate::quadrature`])
 /// over the knot spans, cut where the weights vary by more than a factor 4
 /// ([`crate::nurbs::pieces`]), to a relative accuracy of 10⁻¹². With
@@ -36,6 +37,10 @@ pub struct Distance {
 
 /// Steps of the scan for the maximum, per knot span.
 const SCAN_STEPS: usize = 32;
+/// The accuracy in `t` of a refined maximum, relative to its knot span. `d`
+/// is flat at a peak (`d(t*) − d(t) ≈ |d''|·δ²/2`), so the value found is
+/// exact to rounding long before: closer, rounding decides the comparisons.
+const REFINEMENT: f64 = 1e-9;
 /// The relative accuracy aimed at for the mean square `rms²`: `rms` is then
 /// accurate to half of it, within the promised 10⁻¹².
 const MEAN_SQUARE_TARGET: f64 = 1e-13;
@@ -67,7 +72,7 @@ impl Distance {
             eval.set_span(difference, span);
             let mut norm = |t: f64| euclidean_norm(&eval.point(difference, t));
             let step = (b - a) / SCAN_STEPS as f64;
-            let tolerance = 1e-13 * (b - a).max(f64::MIN_POSITIVE);
+            let tolerance = REFINEMENT * (b - a).max(f64::MIN_POSITIVE);
             scan.clear();
             scan.extend((0..=SCAN_STEPS).map(|j| {
                 // `min`: in a span a few subnormal units wide the rounded step
@@ -91,7 +96,7 @@ impl Distance {
                 let falls = j == SCAN_STEPS || scan[j + 1].0 <= d;
                 if rises && falls {
                     let bracket = [scan[j.saturating_sub(1)].1, scan[(j + 1).min(SCAN_STEPS)].1];
-                    let (d, t) = golden_section_min(|t| -norm(t), bracket, tolerance);
+                    let (d, t) = brent_min(|t| -norm(t), bracket, (t, -d), tolerance);
                     if -d > max.0 {
                         max = (-d, t);
                     }
