@@ -71,7 +71,12 @@ fn data(count: usize, seed: u64) -> Vec<Nt2Point<2>> {
 fn valid_fit(c: &mut Criterion) {
     let mut g = c.benchmark_group("fit_fuzzy_valid");
     g.sample_size(10);
-    for (count, degree, seconds) in [(1_000, 3, 5), (10_000, 3, 10), (100_000, 3, 20), (10_000, 9, 20)] {
+    for (count, degree, seconds) in [
+        (1_000, 3, 5),
+        (10_000, 3, 10),
+        (100_000, 3, 20),
+        (10_000, 9, 20),
+    ] {
         let points = data(count, 1);
         let options = FitOptions::interpolation(degree);
         g.throughput(Throughput::Elements(count as u64))

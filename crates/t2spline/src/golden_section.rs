@@ -111,7 +111,12 @@ pub(crate) fn brent_min(
             e = if x >= middle { lo - x } else { hi - x };
             d = STEP * e;
         }
-        let u = if d.abs() >= tol { x + d } else { x + tol.copysign(d) }.clamp(a, b);
+        let u = if d.abs() >= tol {
+            x + d
+        } else {
+            x + tol.copysign(d)
+        }
+        .clamp(a, b);
         let fu = f(u);
         if fu <= fx {
             if u >= x {
@@ -194,8 +199,14 @@ mod tests {
         let brent = calls.replace(0);
         let (gv, gt) = golden_section_min(g, [-0.5, 0.5], 1e-10);
         let golden = calls.get();
-        assert!((v - gv).abs() <= 2.0 * f64::EPSILON && (t - gt).abs() < 1e-7, "{t} {gt}");
-        assert!(brent <= 20 && golden >= 45, "{brent} and {golden} evaluations");
+        assert!(
+            (v - gv).abs() <= 2.0 * f64::EPSILON && (t - gt).abs() < 1e-7,
+            "{t} {gt}"
+        );
+        assert!(
+            brent <= 20 && golden >= 45,
+            "{brent} and {golden} evaluations"
+        );
     }
 
     #[test]

@@ -33,7 +33,9 @@ fn curve(n: usize, degree: usize, e: f64, seed: u64) -> NurbsCurve<2> {
             at
         })
         .collect();
-    let weights = (0..n).map(|_| 10f64.powf(e * (2.0 * r.next() - 1.0))).collect();
+    let weights = (0..n)
+        .map(|_| 10f64.powf(e * (2.0 * r.next() - 1.0)))
+        .collect();
     NurbsCurve::try_clamped(degree, points, weights).unwrap()
 }
 
@@ -103,19 +105,27 @@ fn the_subdivision_reference_is_exact_on_closed_forms() {
     // The quarter circle, π/2, and the parabola through (0,0), (1,1), (2,0),
     // √2 + asinh(1).
     let w = std::f64::consts::FRAC_1_SQRT_2;
-    let circle =
-        NurbsCurve::try_clamped(2, vec![[1.0, 0.0], [1.0, 1.0], [0.0, 1.0]], vec![1.0, w, 1.0])
-            .unwrap();
+    let circle = NurbsCurve::try_clamped(
+        2,
+        vec![[1.0, 0.0], [1.0, 1.0], [0.0, 1.0]],
+        vec![1.0, w, 1.0],
+    )
+    .unwrap();
     let parabola =
-        NurbsCurve::try_clamped(2, vec![[0.0, 0.0], [1.0, 1.0], [2.0, 0.0]], vec![1.0; 3])
-            .unwrap();
+        NurbsCurve::try_clamped(2, vec![[0.0, 0.0], [1.0, 1.0], [2.0, 0.0]], vec![1.0; 3]).unwrap();
     for (c, exact) in [
         (circle, std::f64::consts::FRAC_PI_2),
         (parabola, 2f64.sqrt() + 1f64.asinh()),
     ] {
         let (chords, polygons, estimate) = subdivision_length(&c, 1e-14);
-        assert!(chords <= exact && exact <= polygons, "{chords} {exact} {polygons}");
-        assert!((estimate / exact - 1.0).abs() < 1e-13, "{estimate} vs {exact}");
+        assert!(
+            chords <= exact && exact <= polygons,
+            "{chords} {exact} {polygons}"
+        );
+        assert!(
+            (estimate / exact - 1.0).abs() < 1e-13,
+            "{estimate} vs {exact}"
+        );
     }
 }
 
@@ -126,7 +136,10 @@ fn check_length(c: &NurbsCurve<2>, what: &str) {
     let lower = polyline(c, 200_000);
     let (chords, polygons, estimate) = subdivision_length(c, 1e-14);
     let slack = 1.0 + LENGTH_TOLERANCE;
-    assert!(length * slack >= lower, "{what}: {length} below the polyline's {lower}");
+    assert!(
+        length * slack >= lower,
+        "{what}: {length} below the polyline's {lower}"
+    );
     assert!(
         length * slack >= chords && length <= polygons * slack,
         "{what}: {length} outside [{chords}, {polygons}]"
@@ -162,7 +175,10 @@ fn weights_from_1e_minus_3_to_1e3_give_the_full_length() {
     // for seed 1): the speed peaks within 10⁻⁶ of a knot, between the nodes.
     for degree in 1..=3 {
         for seed in 1..=3 {
-            check_length(&curve(12, degree, 3.0, seed), &format!("degree {degree}, seed {seed}"));
+            check_length(
+                &curve(12, degree, 3.0, seed),
+                &format!("degree {degree}, seed {seed}"),
+            );
         }
     }
 }
@@ -172,7 +188,10 @@ fn weights_from_1e_minus_12_to_1e12_give_the_full_length() {
     // Before, 4.34 against the polyline's 4.67 (degree 3, seed 1).
     for degree in [1, 3] {
         for seed in 1..=3 {
-            check_length(&curve(12, degree, 12.0, seed), &format!("degree {degree}, seed {seed}"));
+            check_length(
+                &curve(12, degree, 12.0, seed),
+                &format!("degree {degree}, seed {seed}"),
+            );
         }
     }
 }
@@ -183,7 +202,18 @@ fn a_segment_within_a_span_of_1e_minus_14_is_measured() {
     // segment, of length about 3, is traversed within a span only 90 floats
     // wide. Before, 6.1857 against 6.2043.
     let u = KnotVector::try_new(
-        vec![0.0, 0.0, 0.0, 0.5, 0.5, 0.5 + 1e-14, 0.5 + 1e-14, 1.0, 1.0, 1.0],
+        vec![
+            0.0,
+            0.0,
+            0.0,
+            0.5,
+            0.5,
+            0.5 + 1e-14,
+            0.5 + 1e-14,
+            1.0,
+            1.0,
+            1.0,
+        ],
         2,
         7,
     )
@@ -197,7 +227,10 @@ fn a_segment_within_a_span_of_1e_minus_14_is_measured() {
         [4.0, 1.0],
         [4.0, 0.0],
     ];
-    check_length(&NurbsCurve::try_new(points, vec![1.0; 7], u).unwrap(), "narrow span");
+    check_length(
+        &NurbsCurve::try_new(points, vec![1.0; 7], u).unwrap(),
+        "narrow span",
+    );
 }
 
 #[test]

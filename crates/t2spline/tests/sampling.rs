@@ -480,8 +480,14 @@ fn fewer_parameters_than_spans_match_the_curves_of_every_stage() {
     // 400 control points of order 12, 101 parameters: every span is
     // evaluated from the basis instead of converted to power form.
     let n = |c: f64| {
-        Nt2Number::try_new(c, [c - 0.6, c + 0.9], [c - 0.4, c + 0.6], [c - 0.2, c + 0.3], 0.6)
-            .unwrap()
+        Nt2Number::try_new(
+            c,
+            [c - 0.6, c + 0.9],
+            [c - 0.4, c + 0.6],
+            [c - 0.2, c + 0.3],
+            0.6,
+        )
+        .unwrap()
     };
     let points = (0..400)
         .map(|i| {
@@ -497,10 +503,19 @@ fn fewer_parameters_than_spans_match_the_curves_of_every_stage() {
     let solved = c.solve(alpha).defuzzified_curve();
     let crisp = c.crisp_curve();
     for (i, &t) in grid.iter().enumerate() {
-        let (want, got) = (solved.eval(t).unwrap(), sweep.levels()[0].defuzzified().point(i));
-        let (x, y) = (crisp.eval(t).unwrap(), sweep.layers()[Layer::Crisp].point(i));
+        let (want, got) = (
+            solved.eval(t).unwrap(),
+            sweep.levels()[0].defuzzified().point(i),
+        );
+        let (x, y) = (
+            crisp.eval(t).unwrap(),
+            sweep.layers()[Layer::Crisp].point(i),
+        );
         for d in 0..2 {
-            assert!(close(got[d], want[d], 400.0) && close(y[d], x[d], 400.0), "t = {t}");
+            assert!(
+                close(got[d], want[d], 400.0) && close(y[d], x[d], 400.0),
+                "t = {t}"
+            );
         }
     }
 }

@@ -118,10 +118,17 @@ impl<const D: usize> NurbsCurve<D> {
     fn length_parts(&self, a: f64, b: f64) -> (Vec<Section<D>>, Vec<Part>, f64) {
         let rows = |i: usize| {
             let w = self.weights()[i];
-            self.control_points()[i].iter().map(|x| w * x).chain([w]).collect()
+            self.control_points()[i]
+                .iter()
+                .map(|x| w * x)
+                .chain([w])
+                .collect()
         };
         let p = self.degree();
-        let bezier_knots: Vec<f64> = [0.0, 1.0].iter().flat_map(|&u| [u; 1].repeat(p + 1)).collect();
+        let bezier_knots: Vec<f64> = [0.0, 1.0]
+            .iter()
+            .flat_map(|&u| [u; 1].repeat(p + 1))
+            .collect();
         let sections: Vec<Section<D>> = tame_pieces(self.knots(), self.weights(), rows, a, b)
             .into_iter()
             .map(|piece| {

@@ -215,7 +215,10 @@ mod tests {
                 basis_functions(u.as_slice(), 3, piece.span, t, &mut n);
                 let direct: f64 = n.iter().zip(&w[piece.span - 3..]).map(|(n, w)| n * w).sum();
                 let got = bernstein_value(bezier, s);
-                assert!((got - direct).abs() < 1e-12 * direct, "{piece:?} {s}: {got} {direct}");
+                assert!(
+                    (got - direct).abs() < 1e-12 * direct,
+                    "{piece:?} {s}: {got} {direct}"
+                );
             }
         }
     }
@@ -226,7 +229,10 @@ mod tests {
         let pieces = pieces(&u, &[1.0, 2.0, 3.0, 1.0, 0.9], 0.1, 1.0);
         assert!(pieces.iter().all(|p| p.tame && p.bezier.is_none()));
         let spans: Vec<[f64; 2]> = pieces.iter().map(|p| [p.lo, p.hi]).collect();
-        assert_eq!(spans, [[0.1, 1.0 / 3.0], [1.0 / 3.0, 2.0 / 3.0], [2.0 / 3.0, 1.0]]);
+        assert_eq!(
+            spans,
+            [[0.1, 1.0 / 3.0], [1.0 / 3.0, 2.0 / 3.0], [2.0 / 3.0, 1.0]]
+        );
     }
 
     #[test]
@@ -236,8 +242,13 @@ mod tests {
         let pieces = pieces(&u, &w, 0.0, 1.0);
         assert!(pieces.len() > 20, "{}", pieces.len());
         assert!(pieces.iter().all(|p| p.tame));
-        assert!(pieces.windows(2).all(|p| p[0].hi == p[1].lo && p[0].span <= p[1].span));
-        assert!(pieces.iter().all(|p| p.lo < p.hi), "pieces of one unit in the last place");
+        assert!(pieces
+            .windows(2)
+            .all(|p| p[0].hi == p[1].lo && p[0].span <= p[1].span));
+        assert!(
+            pieces.iter().all(|p| p.lo < p.hi),
+            "pieces of one unit in the last place"
+        );
         assert_eq!((pieces[0].lo, pieces[pieces.len() - 1].hi), (0.0, 1.0));
         for piece in &pieces {
             if let Some(bezier) = &piece.bezier {
@@ -248,12 +259,8 @@ mod tests {
 
     #[test]
     fn narrow_spans_come_in_bezier_form() {
-        let u = KnotVector::try_new(
-            vec![0.0, 0.0, 0.0, 0.5, 0.5 + 1e-14, 1.0, 1.0, 1.0],
-            2,
-            5,
-        )
-        .unwrap();
+        let u = KnotVector::try_new(vec![0.0, 0.0, 0.0, 0.5, 0.5 + 1e-14, 1.0, 1.0, 1.0], 2, 5)
+            .unwrap();
         let pieces = pieces(&u, &[1.0; 5], 0.0, 1.0);
         let forms: Vec<bool> = pieces.iter().map(|p| p.bezier.is_some()).collect();
         assert_eq!(forms, [false, true, false]);

@@ -212,7 +212,10 @@ mod tests {
                 assert!((0..2).all(|d| (again[d] - point[d]).abs() < 1e-14));
                 let want = c.derivatives_in_span(span, t, 1);
                 for d in 0..2 {
-                    assert!((point[d] - want[0][d]).abs() < 1e-14, "{t}: {point:?} {want:?}");
+                    assert!(
+                        (point[d] - want[0][d]).abs() < 1e-14,
+                        "{t}: {point:?} {want:?}"
+                    );
                     assert!(
                         (tangent[d] - want[1][d]).abs() < 1e-12 * (1.0 + want[1][d].abs()),
                         "{t}: {tangent:?} {want:?}"
@@ -238,13 +241,20 @@ mod tests {
     fn a_subnormal_span_is_evaluated_by_division() {
         let end = 1.354e-321;
         let u = KnotVector::try_new(vec![0.0, 0.0, 0.0, end, end, end], 2, 3).unwrap();
-        let c = NurbsCurve::try_new(vec![[0.0, 0.0], [1.0, 2.0], [3.0, 4.0]], vec![1.0, 2.0, 1.0], u)
-            .unwrap();
+        let c = NurbsCurve::try_new(
+            vec![[0.0, 0.0], [1.0, 2.0], [3.0, 4.0]],
+            vec![1.0, 2.0, 1.0],
+            u,
+        )
+        .unwrap();
         let mut e = SpanEvaluator::new(2);
         e.set_span(&c, 2);
         assert!(!e.finite);
         let t = end / 2.0;
         let (got, want) = (e.point(&c, t), c.eval(t).unwrap());
-        assert!((0..2).all(|d| (got[d] - want[d]).abs() <= 1e-15 * want[d].abs()), "{got:?} {want:?}");
+        assert!(
+            (0..2).all(|d| (got[d] - want[d]).abs() <= 1e-15 * want[d].abs()),
+            "{got:?} {want:?}"
+        );
     }
 }

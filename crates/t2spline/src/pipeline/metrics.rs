@@ -122,7 +122,13 @@ fn mean_square<const D: usize>(difference: &NurbsCurve<D>, scale: f64) -> f64 {
     let domain = difference.domain();
     let width = domain.end - domain.start;
     let weights = difference.weights();
-    let pieces = tame_pieces(difference.knots(), weights, |i| vec![weights[i]], domain.start, domain.end);
+    let pieces = tame_pieces(
+        difference.knots(),
+        weights,
+        |i| vec![weights[i]],
+        domain.start,
+        domain.end,
+    );
     let to_s = |t: f64| ((t - domain.start) / width).clamp(0.0, 1.0);
     let ranges: Vec<[f64; 2]> = pieces.iter().map(|p| [to_s(p.lo), to_s(p.hi)]).collect();
     let mut eval = SpanEvaluator::new(difference.degree());
@@ -345,9 +351,15 @@ mod tests {
         // The reference has converged: a quarter of the cells agrees.
         assert!((composite_rms(&c, 1024) / reference - 1.0).abs() < 1e-14);
         let before = composite_rms(&c, 4);
-        assert!((before / reference - 1.0).abs() > 4e-7, "{before} vs {reference}");
+        assert!(
+            (before / reference - 1.0).abs() > 4e-7,
+            "{before} vs {reference}"
+        );
         let d = Distance::of_curve(&c);
-        assert!((d.rms / reference - 1.0).abs() < 1e-12, "{d:?} vs {reference}");
+        assert!(
+            (d.rms / reference - 1.0).abs() < 1e-12,
+            "{d:?} vs {reference}"
+        );
     }
 
     #[test]
@@ -363,12 +375,17 @@ mod tests {
         };
         for case in 0..16 {
             let n = 4 + case % 4;
-            let points = (0..n).map(|_| [2.0 * random() - 1.0, 2.0 * random() - 1.0]).collect();
+            let points = (0..n)
+                .map(|_| [2.0 * random() - 1.0, 2.0 * random() - 1.0])
+                .collect();
             let weights = (0..n).map(|_| 0.39 + 4.48 * random()).collect();
             let c = NurbsCurve::try_clamped(3, points, weights).unwrap();
             let reference = composite_rms(&c, 2048);
             let d = Distance::of_curve(&c);
-            assert!((d.rms / reference - 1.0).abs() < 1e-12, "case {case}: {d:?} vs {reference}");
+            assert!(
+                (d.rms / reference - 1.0).abs() < 1e-12,
+                "case {case}: {d:?} vs {reference}"
+            );
         }
     }
 }

@@ -285,9 +285,10 @@ fn sweep<const D: usize>(
         ch.bound(defuzzified, Some(left), Some(right));
         level_channels.push((s.alpha(), cut, left, right, defuzzified));
     }
-    let sampler = Sampler::for_count_unchecked(curve.knots(), curve.weights(), &ch.values, params.len())
-        .with_bounds(&ch.bounds)
-        .expect("the bounds name channels just made");
+    let sampler =
+        Sampler::for_count_unchecked(curve.knots(), curve.weights(), &ch.values, params.len())
+            .with_bounds(&ch.bounds)
+            .expect("the bounds name channels just made");
     let mut out: Vec<Option<Vec<f64>>> = sampler
         .sample_reusing(params, &mut buffers)?
         .into_iter()

@@ -146,9 +146,16 @@ fn large_problems_take_few_solves() {
         let mut problem = Problem::new(&a, &b);
         let passive = unconstrained_signs(&mut problem);
         let negative = passive.iter().filter(|&&p| !p).count();
-        assert!(negative > 500, "only {negative} negative unconstrained values");
+        assert!(
+            negative > 500,
+            "only {negative} negative unconstrained values"
+        );
         let phase_1 = problem.block_pivoting(passive).unwrap();
-        assert_eq!(matches!(phase_1, Pivoting::Stalled(_)), stalls, "seed {seed}");
+        assert_eq!(
+            matches!(phase_1, Pivoting::Stalled(_)),
+            stalls,
+            "seed {seed}"
+        );
         let (x, solves) = Problem::new(&a, &b).solve().unwrap();
         assert!(solves <= 30, "seed {seed}: {solves} solves");
         assert_kkt(&a, &b, &x, 1e-10);
