@@ -19,49 +19,30 @@ use std::time::Duration;
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use t2spline::fit::{fit_fuzzy, FitOptions, FuzzyFitMode};
+use t2spline::strategies::seeded_uniform;
 use t2spline::{Nt2Number, Nt2Point};
 
-/// A linear congruential generator (Knuth's MMIX constants) giving numbers in
-/// `[0, 1)`: the same data on every run and machine.
-struct Random(u64);
-
-impl Random {
-    fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(1_442_695_040_888_963_407);
-        (self.0 >> 11) as f64 / (1u64 << 53) as f64
-    }
-
-    /// Three spreads in increasing order, each zero half of the time.
-    fn spreads(&mut self) -> [f64; 3] {
-        let mut s = [0.0; 3].map(|_| {
-            if self.next() < 0.5 {
-                0.0
-            } else {
-                3.0 * self.next()
-            }
-        });
-        s.sort_by(f64::total_cmp);
-        s
-    }
+/// Three spreads in increasing order, each zero half of the time.
+fn spreads(random: &mut impl FnMut() -> f64) -> [f64; 3] {
+    let mut s = [0.0; 3].map(|_| if random() < 0.5 { 0.0 } else { 3.0 * random() });
+    s.sort_by(f64::total_cmp);
+    s
 }
 
 /// `count` fuzzy data points on a random walk.
 fn data(count: usize, seed: u64) -> Vec<Nt2Point<2>> {
-    let mut random = Random(seed);
-    let mut at = [20.0 * random.next() - 10.0, 20.0 * random.next() - 10.0];
+    let mut random = seeded_uniform(seed);
+    let mut at = [20.0 * random() - 10.0, 20.0 * random() - 10.0];
     (0..count)
         .map(|_| {
             let point = Nt2Point::new(at.map(|c| {
-                let [l0, l1, l2] = random.spreads();
-                let [r0, r1, r2] = random.spreads();
+                let [l0, l1, l2] = spreads(&mut random);
+                let [r0, r1, r2] = spreads(&mut random);
                 Nt2Number::try_new(c, [c - l2, c + r2], [c - l1, c + r1], [c - l0, c + r0], 0.5)
                     .expect("ordered by construction")
             }));
-            let angle = std::f64::consts::TAU * random.next();
-            let step = 0.1 + 2.9 * random.next();
+            let angle = std::f64::consts::TAU * random();
+            let step = 0.1 + 2.9 * random();
             at = [at[0] + step * angle.cos(), at[1] + step * angle.sin()];
             point
         })

@@ -334,18 +334,21 @@ fn empty_params_give_empty_samples() {
     assert!(c.sample_soa(&[]).unwrap().is_empty());
 }
 
+/// A number with the spreads of the paper's example around `c`.
+fn paper_number(c: f64) -> Nt2Number {
+    Nt2Number::try_new(
+        c,
+        [c - 0.6, c + 0.9],
+        [c - 0.4, c + 0.6],
+        [c - 0.2, c + 0.3],
+        0.6,
+    )
+    .unwrap()
+}
+
 /// A fuzzy curve big enough to pass the parallel threshold.
 fn paper_like_curve() -> FuzzyCurve<2> {
-    let n = |c: f64| {
-        Nt2Number::try_new(
-            c,
-            [c - 0.6, c + 0.9],
-            [c - 0.4, c + 0.6],
-            [c - 0.2, c + 0.3],
-            0.6,
-        )
-        .unwrap()
-    };
+    let n = paper_number;
     let points = (0..10)
         .map(|i| {
             let x = i as f64;
@@ -479,16 +482,7 @@ fn reused_buffers_give_the_same_samples_at_any_size() {
 fn fewer_parameters_than_spans_match_the_curves_of_every_stage() {
     // 400 control points of order 12, 101 parameters: every span is
     // evaluated from the basis instead of converted to power form.
-    let n = |c: f64| {
-        Nt2Number::try_new(
-            c,
-            [c - 0.6, c + 0.9],
-            [c - 0.4, c + 0.6],
-            [c - 0.2, c + 0.3],
-            0.6,
-        )
-        .unwrap()
-    };
+    let n = paper_number;
     let points = (0..400)
         .map(|i| {
             let x = f64::from(i);

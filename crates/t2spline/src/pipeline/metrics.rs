@@ -366,13 +366,7 @@ mod tests {
     fn rms_matches_a_fine_composite_rule_on_random_rational_cubics() {
         // Weights from 0.39 to 4.87 (8-point Gauss–Legendre on quarter
         // spans was up to 2e-4 off on such curves), 4 to 7 control points.
-        let mut state = 1u64;
-        let mut random = move || {
-            state = state
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1_442_695_040_888_963_407);
-            (state >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut random = crate::strategies::seeded_uniform(1);
         for case in 0..16 {
             let n = 4 + case % 4;
             let points = (0..n)

@@ -105,14 +105,7 @@ proptest::proptest! {
 /// Eq. 9.8), and spreads that are zero or random at random.
 fn jumping_spreads(n: usize, seed: u64) -> (BandMatrix, Vec<f64>) {
     let p = 3;
-    let mut state = seed;
-    // A linear congruential generator (Knuth's MMIX constants), in [0, 1).
-    let mut random = move || {
-        state = state
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(1_442_695_040_888_963_407);
-        (state >> 11) as f64 / (1u64 << 53) as f64
-    };
+    let mut random = crate::strategies::seeded_uniform(seed);
     let mut params = vec![0.0];
     for _ in 1..n {
         let last = params[params.len() - 1];
