@@ -108,22 +108,26 @@ impl SpanEvaluator {
         }
     }
 
-    /// `C(t)` on the chosen span (`t` in it or at its ends).
+    /// `C(t)` on the chosen span (`t` in it or at its ends), as the convex
+    /// combination `Σ Rᵢ·Pᵢ` with `Rᵢ = wᵢNᵢ/w`: forming `Σ wᵢNᵢPᵢ` first
+    /// would underflow for weights near 1e-150 and coordinates near 1e-300.
     pub(crate) fn point<const D: usize>(&mut self, curve: &NurbsCurve<D>, t: f64) -> [f64; D] {
         self.basis_at(curve.knots().as_slice(), t, false);
         let first = self.span - curve.degree();
-        let weights = &curve.weights()[first..];
-        let points = &curve.control_points()[first..];
-        let mut a = [0.0; D];
-        let mut w = 0.0;
+        let order = self.basis.len();
+        let weights = &curve.weights()[first..first + order];
+        let points = &curve.control_points()[first..first + order];
+        let w: f64 = self.basis.iter().zip(weights).map(|(n, wi)| n * wi).sum();
+        // w is at least the least weight, 1e-150 or more: 1/w is finite.
+        let inverse = 1.0 / w;
+        let mut c = [0.0; D];
         for ((n, wi), pi) in self.basis.iter().zip(weights).zip(points) {
-            let nw = n * wi;
-            w += nw;
-            for (ad, pd) in a.iter_mut().zip(pi) {
-                *ad += nw * pd;
+            let r = n * wi * inverse;
+            for (cd, pd) in c.iter_mut().zip(pi) {
+                *cd += r * pd;
             }
         }
-        a.map(|ad| ad / w)
+        c
     }
 
     /// `C(t)` and `C'(t)` on the chosen span (one-sided at its ends).

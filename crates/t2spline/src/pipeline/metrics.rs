@@ -1,7 +1,7 @@
 //! The distance between the crisp and the defuzzified curve (SPEC §7).
 
 use crate::golden_section::brent_min;
-use crate::nurbs::pieces::tame_pieces;
+use crate::nurbs::pieces::{tame_pieces, Piece};
 use crate::nurbs::span_eval::SpanEvaluator;
 use crate::nurbs::NurbsCurve;
 use crate::quadrature::{integrate_pieces, Tolerance};
@@ -16,14 +16,19 @@ use crate::quadrature::{integrate_pieces, Tolerance};
 /// ```
 /// Both curves share weights and knots, so `D − C` is itself a rational
 /// B-spline whose control points are the differences `Dᵢ − Pᵢ`; `d` is its norm.
-/// Neither figure depends on the job's `samples`: `max` is found by a scan of 32
-/// steps per knot span, each local maximum of the scan refined by Brent's
-/// method (parabolic steps and golden sections, to 1e-9 of the span in `t`,
-/// where the value is exact to rounding); `rms` by
-/// adaptive Gauss–Kronrod quadrature (7/15 points, [`crate::quadrature`])
-/// over the knot spans, cut where the weights vary by more than a factor 4
-/// ([`crate::nurbs::pieces`]), to a relative accuracy of 10⁻¹². With
-/// symmetric spreads both are 0.
+/// Neither figure depends on the job's `samples`. Both work on the knot spans,
+/// cut where the weights vary by more than a factor 4 (where a rational curve
+/// can move within a small part of a span; see ARCHITECTURE.md, "Tame pieces
+/// for rational curves"):
+///
+/// - `max`: a scan of 32 steps per piece, each local maximum of the scan
+///   refined by Brent's method to 1e-9 of the piece in `t` (`d` is flat at a
+///   peak, so the value is exact to rounding); a larger distance met by the
+///   rms quadrature counts too.
+/// - `rms`: adaptive Gauss–Kronrod quadrature (7/15 points), to a relative
+///   accuracy of 10⁻¹².
+///
+/// With symmetric spreads both are 0.
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Distance {
@@ -60,15 +65,29 @@ impl Distance {
     /// domain narrower than about 1e-300. Every evaluation is on a chosen
     /// knot span, without allocation ([`SpanEvaluator`]).
     pub(crate) fn of_curve<const D: usize>(difference: &NurbsCurve<D>) -> Distance {
-        let mut eval = SpanEvaluator::new(difference.degree());
         let domain = difference.domain();
+        let weights = difference.weights();
+        let pieces = tame_pieces(
+            difference.knots(),
+            weights,
+            |i| vec![weights[i]],
+            domain.start,
+            domain.end,
+        );
+        let mut eval = SpanEvaluator::new(difference.degree());
         eval.set_span(difference, difference.knots().find_span(domain.start));
         let mut max = (
             euclidean_norm(&eval.point(difference, domain.start)),
             domain.start,
         );
         let mut scan = Vec::with_capacity(SCAN_STEPS + 1);
-        for (span, [a, b]) in difference.knots().spans() {
+        for &Piece {
+            span, lo: a, hi: b, ..
+        } in &pieces
+        {
+            if a >= b {
+                continue;
+            }
             eval.set_span(difference, span);
             let mut norm = |t: f64| euclidean_norm(&eval.point(difference, t));
             let step = (b - a) / SCAN_STEPS as f64;
@@ -104,11 +123,16 @@ impl Distance {
             }
         }
         let scale = max.0;
-        let rms = if scale > 0.0 {
-            scale * mean_square(difference, scale).sqrt()
-        } else {
-            0.0
-        };
+        let mut rms = 0.0;
+        if scale > 0.0 {
+            let (mean, seen) = mean_square(difference, &pieces, scale);
+            rms = scale * mean.sqrt();
+            // The quadrature's nodes are distances too; one above the scan's
+            // maximum (a peak narrower than the scan's steps) is the maximum.
+            if seen.0 > max.0 {
+                max = seen;
+            }
+        }
         Distance {
             max: max.0,
             max_at: max.1,
@@ -117,22 +141,20 @@ impl Distance {
     }
 }
 
-/// `1/(b − a) · ∫ₐᵇ (d(t)/scale)² dt`, integrated over `s ∈ [0, 1]`.
-fn mean_square<const D: usize>(difference: &NurbsCurve<D>, scale: f64) -> f64 {
+/// `1/(b − a) · ∫ₐᵇ (d(t)/scale)² dt`, integrated over `s ∈ [0, 1]` on the
+/// tame pieces, and the largest distance met on the way with its parameter.
+fn mean_square<const D: usize>(
+    difference: &NurbsCurve<D>,
+    pieces: &[Piece],
+    scale: f64,
+) -> (f64, (f64, f64)) {
     let domain = difference.domain();
     let width = domain.end - domain.start;
-    let weights = difference.weights();
-    let pieces = tame_pieces(
-        difference.knots(),
-        weights,
-        |i| vec![weights[i]],
-        domain.start,
-        domain.end,
-    );
     let to_s = |t: f64| ((t - domain.start) / width).clamp(0.0, 1.0);
     let ranges: Vec<[f64; 2]> = pieces.iter().map(|p| [to_s(p.lo), to_s(p.hi)]).collect();
     let mut eval = SpanEvaluator::new(difference.degree());
     let mut chosen = usize::MAX;
+    let mut seen = (0.0, domain.start);
     let (integral, _) = integrate_pieces(
         |k, s| {
             let piece = &pieces[k];
@@ -141,14 +163,18 @@ fn mean_square<const D: usize>(difference: &NurbsCurve<D>, scale: f64) -> f64 {
                 chosen = piece.span;
             }
             let t = (domain.start + s * width).clamp(piece.lo, piece.hi);
-            let d = euclidean_norm(&eval.point(difference, t)) / scale;
+            let d = euclidean_norm(&eval.point(difference, t));
+            if d > seen.0 {
+                seen = (d, t);
+            }
+            let d = d / scale;
             d * d
         },
         &ranges,
         Tolerance::relative(MEAN_SQUARE_TARGET),
         BISECTIONS.saturating_add(BISECTIONS_PER_PIECE.saturating_mul(pieces.len())),
     );
-    integral.value
+    (integral.value, seen)
 }
 
 /// The Euclidean norm `‖v‖₂ = √(Σ vᵢ²)`. Components from 1e-150 to 1e150
