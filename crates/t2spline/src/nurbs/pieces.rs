@@ -9,7 +9,7 @@
 //! span the window can be far narrower than the span (`10⁻⁸` of it for
 //! weights from `10⁻¹²` to `10¹²` at degree 3, `10⁻²⁴` at degree 1), and a
 //! quadrature rule whose nodes all miss it sees a curve that stands still:
-//! the arc length came out a fifth short. The window shows in the
+//! the arc length came out up to a fifth short. The window shows in the
 //! denominator `w(t) = Σ wⱼNⱼ(t)`. On a piece `[lo, hi]` of a span the curve
 //! is a rational Bézier curve whose homogeneous control points `(wₖPₖ, wₖ)`
 //! come from knot insertion (`lo` and `hi` to multiplicity `p`, The NURBS
