@@ -91,7 +91,7 @@ impl Distance {
                 continue;
             }
             eval.set_span(difference, span);
-            let mut norm = |t: f64| euclidean_norm(&eval.point(difference, t));
+            let mut norm = |t: f64| distance_at(difference, &mut eval, span, t);
             let step = (b - a) / SCAN_STEPS as f64;
             let tolerance = REFINEMENT * (b - a).max(f64::MIN_POSITIVE);
             scan.clear();
@@ -143,6 +143,26 @@ impl Distance {
     }
 }
 
+/// `d(t)` for `t` in the knot span `span` (chosen on `eval`), as `eval`
+/// gives the curve: at the knot that ends the span inside the domain, the
+/// value from the right. The span's polynomial gives the left limit there,
+/// which no parameter reaches where the curve jumps (a knot of full
+/// multiplicity) and which, with weights far apart, can differ from every
+/// value at parameters before it.
+fn distance_at<const D: usize>(
+    difference: &NurbsCurve<D>,
+    eval: &mut SpanEvaluator,
+    span: usize,
+    t: f64,
+) -> f64 {
+    let end = difference.knots().as_slice()[span + 1];
+    if t >= end && end < difference.domain().end {
+        euclidean_norm(&difference.eval_unchecked(t))
+    } else {
+        euclidean_norm(&eval.point(difference, t))
+    }
+}
+
 /// `1/(b − a) · ∫ₐᵇ (d(t)/scale)² dt`, integrated over `s ∈ [0, 1]` on the
 /// tame pieces, and the largest distance met on the way with its parameter.
 fn mean_square<const D: usize>(
@@ -165,7 +185,7 @@ fn mean_square<const D: usize>(
                 chosen = piece.span;
             }
             let t = (domain.start + s * width).clamp(piece.lo, piece.hi);
-            let d = euclidean_norm(&eval.point(difference, t));
+            let d = distance_at(difference, &mut eval, piece.span, t);
             if d > seen.0 {
                 seen = (d, t);
             }
