@@ -261,9 +261,10 @@ fn sweep<const D: usize>(
 ) -> Result<SweepSamples<D>, Error> {
     let stages: Vec<&PointStages<D>> = solutions.iter().map(Solution::stages).collect();
     let plan = Plan::new(curve.points(), &stages, layers);
-    let sampler = Sampler::new_unchecked(curve.knots(), curve.weights(), plan.values())
-        .with_bounds(plan.bounds())
-        .expect("the bounds name channels just made");
+    let sampler =
+        Sampler::for_count_unchecked(curve.knots(), curve.weights(), plan.values(), params.len())
+            .with_bounds(plan.bounds())
+            .expect("the bounds name channels just made");
     let out = sampler.sample_reusing(params, &mut buffers)?;
     Ok(plan.assemble(out))
 }
