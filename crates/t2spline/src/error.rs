@@ -416,7 +416,8 @@ pub enum Error {
         end: f64,
     },
 
-    /// An arc length outside `[0, total length]` has no parameter.
+    /// An arc length outside `[0, total length]`, by more than the relative
+    /// accuracy of lengths (`LENGTH_TOLERANCE`), has no parameter.
     ///
     /// ```
     /// # use t2spline::{Error, NurbsCurve};

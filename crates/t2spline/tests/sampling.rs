@@ -395,18 +395,21 @@ fn empty_params_give_empty_samples() {
     assert!(c.sample_soa(&[]).unwrap().is_empty());
 }
 
+/// A number with the spreads of the paper's example around `c`.
+fn paper_number(c: f64) -> Nt2Number {
+    Nt2Number::try_new(
+        c,
+        [c - 0.6, c + 0.9],
+        [c - 0.4, c + 0.6],
+        [c - 0.2, c + 0.3],
+        0.6,
+    )
+    .unwrap()
+}
+
 /// A fuzzy curve big enough to pass the parallel threshold.
 fn paper_like_curve() -> FuzzyCurve<2> {
-    let n = |c: f64| {
-        Nt2Number::try_new(
-            c,
-            [c - 0.6, c + 0.9],
-            [c - 0.4, c + 0.6],
-            [c - 0.2, c + 0.3],
-            0.6,
-        )
-        .unwrap()
-    };
+    let n = paper_number;
     let points = (0..10)
         .map(|i| {
             let x = i as f64;
@@ -534,4 +537,40 @@ fn reused_buffers_give_the_same_samples_at_any_size() {
     }
     assert!(c.sample_layers_into(&[2.0], &mut layers).is_err());
     assert!(layers.is_empty());
+}
+
+#[test]
+fn fewer_parameters_than_spans_match_the_curves_of_every_stage() {
+    // 400 control points of order 12, 101 parameters: every span is
+    // evaluated from the basis instead of converted to power form.
+    let n = paper_number;
+    let points = (0..400)
+        .map(|i| {
+            let x = f64::from(i);
+            Nt2Point::new([n(x), n((x * 1.3).sin() * 3.0)])
+        })
+        .collect();
+    let weights = (0..400).map(|i| 1.0 + f64::from(i % 7) * 0.4).collect();
+    let c = FuzzyCurve::try_new(11, points, weights, None).unwrap();
+    let alpha = Alpha::try_new(0.8).unwrap();
+    let sweep = c.sample_sweep(Params::Uniform(101), &[alpha]).unwrap();
+    let grid = c.knots().domain().uniform(101);
+    let solved = c.solve(alpha).defuzzified_curve();
+    let crisp = c.crisp_curve();
+    for (i, &t) in grid.iter().enumerate() {
+        let (want, got) = (
+            solved.eval(t).unwrap(),
+            sweep.levels()[0].defuzzified().point(i),
+        );
+        let (x, y) = (
+            crisp.eval(t).unwrap(),
+            sweep.layers()[Layer::Crisp].point(i),
+        );
+        for d in 0..2 {
+            assert!(
+                close(got[d], want[d], 400.0) && close(y[d], x[d], 400.0),
+                "t = {t}"
+            );
+        }
+    }
 }

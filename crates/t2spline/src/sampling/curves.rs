@@ -168,7 +168,9 @@ impl<const D: usize> FuzzyCurve<D> {
             channels.zip(out.iter_mut().map(|o| &mut **o)).collect();
         by_channel.sort_by_key(|(channel, _)| *channel);
         let mut ordered: Vec<&mut [f64]> = by_channel.into_iter().map(|(_, o)| o).collect();
-        Sampler::new_unchecked(self.knots(), self.weights(), plan.values())
+        let params = params.into();
+        // The same sampler as `sample_layers`, so that both agree bit for bit.
+        Sampler::for_count_unchecked(self.knots(), self.weights(), plan.values(), params.len())
             .with_bounds(plan.bounds())
             .expect("the bounds name channels just made")
             .sample_into(params, &mut ordered)
@@ -307,9 +309,10 @@ fn sweep<const D: usize>(
 ) -> Result<SweepSamples<D>, Error> {
     let stages: Vec<&PointStages<D>> = solutions.iter().map(Solution::stages).collect();
     let plan = Plan::new(curve.points(), &stages, layers);
-    let sampler = Sampler::new_unchecked(curve.knots(), curve.weights(), plan.values())
-        .with_bounds(plan.bounds())
-        .expect("the bounds name channels just made");
+    let sampler =
+        Sampler::for_count_unchecked(curve.knots(), curve.weights(), plan.values(), params.len())
+            .with_bounds(plan.bounds())
+            .expect("the bounds name channels just made");
     let out = sampler.sample_reusing(params, &mut buffers)?;
     Ok(plan.assemble(out))
 }
