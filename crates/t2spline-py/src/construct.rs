@@ -165,7 +165,7 @@ impl FuzzyArrays {
         (0..self.n)
             .map(|i| {
                 let mut coords = Vec::with_capacity(D);
-                for (d, axis) in Axis::first::<D>().into_iter().enumerate() {
+                for (d, axis) in Axis::ALL.into_iter().take(D).enumerate() {
                     let k = i * D + d;
                     let number = Nt2Number::try_new(
                         self.crisp.data[k],

@@ -864,6 +864,42 @@ pub enum Error {
     /// ```
     #[error("umf: no sample is greater than 0, so the set has no centroid")]
     ZeroUpperMembership,
+
+    /// A point has one, two or three coordinates; a type of another
+    /// dimension `D` (e.g. `NurbsCurve::<4>`) is refused by its constructor.
+    ///
+    /// ```
+    /// # use t2spline::{Error, NurbsCurve};
+    /// let e = NurbsCurve::<4>::try_clamped(1, vec![[0.0; 4], [1.0; 4]], vec![1.0, 1.0]).unwrap_err();
+    /// assert_eq!(e, Error::Dimension { dimension: 4 });
+    /// assert_eq!(e.to_string(), "a point has 1, 2 or 3 coordinates, not 4");
+    /// ```
+    #[error("a point has 1, 2 or 3 coordinates, not {dimension}")]
+    Dimension {
+        /// The dimension asked for.
+        dimension: usize,
+    },
+
+    /// An index given to an accessor is past the end of what it indexes.
+    ///
+    /// ```
+    /// # use t2spline::{Error, KnotVector, NurbsSurface};
+    /// let knots = KnotVector::clamped_uniform(1, 2)?;
+    /// let net = vec![vec![[0.0; 3], [1.0; 3]], vec![[2.0; 3], [3.0; 3]]];
+    /// let s = NurbsSurface::try_new(net, vec![vec![1.0; 2]; 2], [knots.clone(), knots])?;
+    /// let e = s.control_point(0, 2).unwrap_err();
+    /// assert_eq!(e.to_string(), "column 2 is out of bounds: there are 2");
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("{what} {index} is out of bounds: there are {count}")]
+    Index {
+        /// What the index counts (`"row"`, `"column"`, ...).
+        what: &'static str,
+        /// The index given (0-based).
+        index: usize,
+        /// How many there are.
+        count: usize,
+    },
 }
 
 /// The message of [`Error::InDirection`]: the curve rule in the surface's words.
@@ -904,6 +940,15 @@ fn in_direction(direction: crate::nurbs::Direction, inner: &Error) -> String {
 }
 
 impl Error {
+    /// `Ok(index)` if `index < count`, else [`Error::Index`] naming `what`.
+    pub(crate) fn check_index(what: &'static str, index: usize, count: usize) -> Result<usize, Error> {
+        if index < count {
+            Ok(index)
+        } else {
+            Err(Error::Index { what, index, count })
+        }
+    }
+
     /// The same error as a rule of `direction` of a surface
     /// ([`Error::InDirection`]).
     pub(crate) fn in_direction(self, direction: crate::nurbs::Direction) -> Self {

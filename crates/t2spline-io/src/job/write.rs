@@ -90,7 +90,7 @@ pub(crate) fn model_json(model: &Model, top_height: Option<f64>) -> Map<String, 
 /// equals `top_height`, the job's top-level default.
 pub(crate) fn point_json<const D: usize>(p: &Nt2Point<D>, top_height: Option<f64>) -> Value {
     let mut out = Map::new();
-    for (axis, x) in Axis::first::<D>().iter().zip(p.coords()) {
+    for (axis, x) in Axis::ALL.iter().zip(p.coords()) {
         let pair = |l: Layer, r: Layer| json!([x.layer(l), x.layer(r)]);
         let mut number = json!({
             "crisp": x.crisp(),

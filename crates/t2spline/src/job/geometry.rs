@@ -199,13 +199,11 @@ fn lift_point<const D: usize>(p: &[f64; D]) -> [f64; 3] {
 
 /// The surface with three coordinates.
 fn lift_surface<const D: usize>(s: &NurbsSurface<D>) -> Result<NurbsSurface<3>, Error> {
-    let [nu, nv] = s.shape();
-    let points = (0..nu)
-        .map(|i| {
-            (0..nv)
-                .map(|j| lift_point(&s.control_point(i, j)))
-                .collect()
-        })
+    let nv = s.shape()[1];
+    let points = s
+        .control_points()
+        .chunks(nv)
+        .map(|row| row.iter().map(lift_point).collect())
         .collect();
     let weights = s.weights().chunks(nv).map(<[f64]>::to_vec).collect();
     NurbsSurface::try_new(
@@ -250,6 +248,16 @@ fn piece_knots(knots: &KnotVector, (start, end): (usize, usize)) -> Result<KnotV
     )
 }
 
+/// Rows `u0..u1`, columns `v0..v1` of a net stored row by row, `nv` per row.
+/// Piece ranges lie within the net's shape, so every slice exists (an empty
+/// row would make `NurbsSurface::try_new` refuse the patch).
+fn sub_net<T: Copy>(values: &[T], nv: usize, (u0, u1): (usize, usize), (v0, v1): (usize, usize)) -> Vec<Vec<T>> {
+    let rows = values.get(u0 * nv..u1 * nv).unwrap_or_default();
+    rows.chunks(nv.max(1))
+        .map(|row| row.get(v0..v1).unwrap_or_default().to_vec())
+        .collect()
+}
+
 /// The surface cut at every interior knot of full multiplicity in u and in
 /// v: the patches of the product of both directions' pieces, row by row.
 fn continuous_patches(s: &NurbsSurface<3>) -> Result<Vec<NurbsSurface<3>>, Error> {
@@ -262,12 +270,8 @@ fn continuous_patches(s: &NurbsSurface<3>) -> Result<Vec<NurbsSurface<3>>, Error
     let mut patches = Vec::with_capacity(ru.len() * rv.len());
     for &(u0, u1) in &ru {
         for &(v0, v1) in &rv {
-            let points = (u0..u1)
-                .map(|i| (v0..v1).map(|j| s.control_point(i, j)).collect())
-                .collect();
-            let weights = (u0..u1)
-                .map(|i| s.weights()[i * nv + v0..i * nv + v1].to_vec())
-                .collect();
+            let points = sub_net(s.control_points(), nv, (u0, u1), (v0, v1));
+            let weights = sub_net(s.weights(), nv, (u0, u1), (v0, v1));
             patches.push(NurbsSurface::try_new(
                 points,
                 weights,
