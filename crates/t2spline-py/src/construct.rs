@@ -177,8 +177,14 @@ impl FuzzyArrays {
                     .map_err(|e| e.at(Place::new(i, axis)))?;
                     coords.push(number);
                 }
-                // One number was pushed per coordinate: D of them.
-                let coords: [Nt2Number; D] = coords.try_into().expect("D numbers");
+                // One number was pushed per coordinate, D of them: the error
+                // is never made.
+                let coords: [Nt2Number; D] =
+                    coords.try_into().map_err(|v: Vec<_>| t2spline::Error::Length {
+                        what: "coordinates",
+                        expected: D,
+                        found: v.len(),
+                    })?;
                 Ok(Nt2Point::new(coords))
             })
             .collect()

@@ -235,10 +235,12 @@ pub fn fuzzify<const D: usize>(
                         .map_err(|e| e.at(Place::new(station, axis)))?,
                 );
             }
-            // `numbers` has one entry per axis, D in all.
-            let coords: [Nt2Number; D] = numbers
-                .try_into()
-                .unwrap_or_else(|_| unreachable!("one number per axis"));
+            // `numbers` has one entry per axis, D in all: the error is never made.
+            let coords: [Nt2Number; D] = numbers.try_into().map_err(|v: Vec<_>| Error::Length {
+                what: "coordinates",
+                expected: D,
+                found: v.len(),
+            })?;
             Ok(Nt2Point::new(coords))
         })
         .collect()

@@ -28,6 +28,8 @@ impl Job {
     /// float (a derivative grows like `(coordinate / knot span)^order`, so
     /// narrow spans or large coordinates can take it there); the other parts of
     /// a run are finite for every valid job (the core's input ranges).
+    /// Settings built by hand rather than by [`Job::settings`] are checked
+    /// again, with its errors ([`Error::Setting`]).
     ///
     /// # Examples
     /// ```
@@ -46,7 +48,8 @@ impl Job {
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn run(&self, settings: &Settings) -> Result<RunOutput, Error> {
-        let mut out = self.model.visit(Run(settings))?;
+        let settings = self.settings(&settings.as_overrides())?;
+        let mut out = self.model.visit(Run(&settings))?;
         out.description.clone_from(&self.description);
         Ok(out)
     }

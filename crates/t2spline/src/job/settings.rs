@@ -81,6 +81,22 @@ pub struct Settings {
     pub derivatives: Option<usize>,
 }
 
+impl Settings {
+    /// The same values as overrides: settings made by hand (their fields are
+    /// public) go through [`Job::settings`] again before a run.
+    pub(crate) fn as_overrides(&self) -> Overrides {
+        let samples = match self.samples {
+            Samples::Along(n) => vec![n as u64],
+            Samples::Grid([u, v]) => vec![u as u64, v as u64],
+        };
+        Overrides {
+            alpha: Some(self.alpha.get()),
+            samples: Some(samples),
+            derivatives: self.derivatives.map(|k| i64::try_from(k).unwrap_or(i64::MAX)),
+        }
+    }
+}
+
 impl Job {
     /// The settings of a run of this job: each override if given, else the
     /// job's value.
@@ -120,7 +136,7 @@ impl Job {
             })?,
             None => self.alpha.ok_or(Error::MissingAlpha)?,
         };
-        let surface = matches!(self.samples, Samples::Grid(_));
+        let surface = self.model.is_surface();
         let samples = match &overrides.samples {
             Some(counts) => samples_of(counts, surface),
             None => match self.samples {

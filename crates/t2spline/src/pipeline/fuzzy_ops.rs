@@ -266,11 +266,10 @@ impl<const D: usize> FuzzyCurve<D> {
     /// ```
     #[must_use]
     pub fn bounding_box(&self) -> BoundingBox<D> {
-        Layer::ALL
-            .iter()
-            .map(|&l| self.layer_curve(l).bounding_box())
-            .reduce(BoundingBox::union)
-            .expect("seven layers")
+        let [first, rest @ ..] = Layer::ALL;
+        rest.iter().fold(self.layer_curve(first).bounding_box(), |b, &l| {
+            b.union(self.layer_curve(l).bounding_box())
+        })
     }
 }
 

@@ -158,6 +158,7 @@ impl<const D: usize> FuzzyCurve<D> {
         // The plan orders its channels its own way: `out[k·D + d]` is channel
         // `layer_channel(Layer::ALL[k]) + d`.
         let channels = Layer::ALL.into_iter().flat_map(|layer| {
+            #[allow(clippy::expect_used)] // `Plan::new(.., true)` plans every layer
             let first = plan
                 .layer_channel(layer)
                 .expect("a plan with layers has every layer");
@@ -168,8 +169,7 @@ impl<const D: usize> FuzzyCurve<D> {
         by_channel.sort_by_key(|(channel, _)| *channel);
         let mut ordered: Vec<&mut [f64]> = by_channel.into_iter().map(|(_, o)| o).collect();
         Sampler::new_unchecked(self.knots(), self.weights(), plan.values())
-            .with_bounds(plan.bounds())
-            .expect("the bounds name channels just made")
+            .with_bounds(plan.bounds())?
             .sample_into(params, &mut ordered)
     }
 
@@ -245,6 +245,8 @@ impl<const D: usize> Solution<D> {
             Vec::new(),
         )?;
         let (_, levels) = sweep.into_parts();
+        // One solution was sampled, so there is one level.
+        #[allow(clippy::expect_used)]
         Ok(levels.into_iter().next().expect("one level was asked for"))
     }
 }
@@ -262,8 +264,7 @@ fn sweep<const D: usize>(
     let stages: Vec<&PointStages<D>> = solutions.iter().map(Solution::stages).collect();
     let plan = Plan::new(curve.points(), &stages, layers);
     let sampler = Sampler::new_unchecked(curve.knots(), curve.weights(), plan.values())
-        .with_bounds(plan.bounds())
-        .expect("the bounds name channels just made");
+        .with_bounds(plan.bounds())?;
     let out = sampler.sample_reusing(params, &mut buffers)?;
     Ok(plan.assemble(out))
 }

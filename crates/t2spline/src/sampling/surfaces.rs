@@ -199,6 +199,8 @@ impl<const D: usize> SurfaceSolution<D> {
             Vec::new(),
         )?;
         let (_, levels) = g.samples.into_parts();
+        // One solution was sampled, so there is one level.
+        #[allow(clippy::expect_used)]
         Ok(Grid {
             shape: g.shape,
             samples: levels.into_iter().next().expect("one level was asked for"),
