@@ -43,7 +43,10 @@ impl Temporary {
     /// The open file. Only `persist` takes the file, and it consumes `self`,
     /// so the error is never returned.
     pub(crate) fn file(&self) -> std::io::Result<&std::fs::File> {
-        self.file.as_ref().map(NamedTempFile::as_file).ok_or_else(renamed)
+        self.file
+            .as_ref()
+            .map(NamedTempFile::as_file)
+            .ok_or_else(renamed)
     }
 
     /// Renames the file to `path` and unregisters it.

@@ -180,11 +180,13 @@ impl FuzzyArrays {
                 // One number was pushed per coordinate, D of them: the error
                 // is never made.
                 let coords: [Nt2Number; D] =
-                    coords.try_into().map_err(|v: Vec<_>| t2spline::Error::Length {
-                        what: "coordinates",
-                        expected: D,
-                        found: v.len(),
-                    })?;
+                    coords
+                        .try_into()
+                        .map_err(|v: Vec<_>| t2spline::Error::Length {
+                            what: "coordinates",
+                            expected: D,
+                            found: v.len(),
+                        })?;
                 Ok(Nt2Point::new(coords))
             })
             .collect()

@@ -310,7 +310,7 @@ pub enum Error {
     /// let e = KnotVector::try_new(vec![0.0, 0.0, 0.7, 0.5, 1.0, 1.0], 1, 4).unwrap_err();
     /// assert_eq!(e.to_string(), "knots[3] = 0.5 is less than knots[2] = 0.7: knots must not decrease");
     /// ```
-    #[error("knots[{index}] = {} is less than knots[{}] = {}: knots must not decrease", Num(*value), index - 1, Num(*previous))]
+    #[error("knots[{index}] = {} is less than knots[{}] = {}: knots must not decrease", Num(*value), index.saturating_sub(1), Num(*previous))]
     KnotDecreasing {
         /// Index of the knot that is smaller than its predecessor.
         index: usize,
@@ -327,7 +327,7 @@ pub enum Error {
     /// let e = KnotVector::try_new(vec![0.0, 0.0, 0.0, 1.0, 1.0], 1, 3).unwrap_err();
     /// assert_eq!(e.to_string(), "knots[0..3]: the value 0 repeats 3 times, more than the order 2");
     /// ```
-    #[error("knots[{first}..{}]: the value {} repeats {multiplicity} times, more than the order {order}", first + multiplicity, Num(*value))]
+    #[error("knots[{first}..{}]: the value {} repeats {multiplicity} times, more than the order {order}", first.saturating_add(*multiplicity), Num(*value))]
     KnotMultiplicity {
         /// Index of the first copy.
         first: usize,
@@ -511,7 +511,7 @@ pub enum Error {
     /// let e = fit_curve(&[[0.0, 0.0], [1.0, 1.0]], &FitOptions::interpolation(2)).unwrap_err();
     /// assert_eq!(e.to_string(), "points: a curve of degree 2 needs at least 3 data points, got 2");
     /// ```
-    #[error("points: a curve of degree {degree} needs at least {} data points, got {count}", degree + 1)]
+    #[error("points: a curve of degree {degree} needs at least {} data points, got {count}", degree.saturating_add(1))]
     TooFewDataPoints {
         /// The degree `p`.
         degree: usize,
@@ -732,7 +732,7 @@ pub enum Error {
     /// assert!(matches!(e, Error::DerivativeOverflow { derivative: 2, .. }), "{e}");
     /// # Ok::<(), Error>(())
     /// ```
-    #[error("curves.derivatives.{curve}[{}][{sample}][{axis}] = {value} is beyond the range of a 64-bit float (about 1.8e308): the knot spans are too narrow or the coordinates too large for derivatives of order {derivative}", derivative - 1)]
+    #[error("curves.derivatives.{curve}[{}][{sample}][{axis}] = {value} is beyond the range of a 64-bit float (about 1.8e308): the knot spans are too narrow or the coordinates too large for derivatives of order {derivative}", derivative.saturating_sub(1))]
     DerivativeOverflow {
         /// `"crisp"` or `"defuzzified"`.
         curve: &'static str,
@@ -941,7 +941,11 @@ fn in_direction(direction: crate::nurbs::Direction, inner: &Error) -> String {
 
 impl Error {
     /// `Ok(index)` if `index < count`, else [`Error::Index`] naming `what`.
-    pub(crate) fn check_index(what: &'static str, index: usize, count: usize) -> Result<usize, Error> {
+    pub(crate) fn check_index(
+        what: &'static str,
+        index: usize,
+        count: usize,
+    ) -> Result<usize, Error> {
         if index < count {
             Ok(index)
         } else {

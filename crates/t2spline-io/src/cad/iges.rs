@@ -109,7 +109,9 @@ fn surface_parameters(s: &NurbsSurface<3>, name_de: usize) -> String {
         params.extend(s.knots(direction).as_slice().iter().map(|&u| r(u)));
     }
     // The net is stored row by row (`i·nv + j`); IGES lists it with i fastest.
-    let order: Vec<usize> = (0..nv).flat_map(|j| (0..nu).map(move |i| i * nv + j)).collect();
+    let order: Vec<usize> = (0..nv)
+        .flat_map(|j| (0..nu).map(move |i| i * nv + j))
+        .collect();
     params.extend(order.iter().filter_map(|&k| w.get(k)).map(|&x| r(x)));
     let points = s.control_points();
     for point in order.iter().filter_map(|&k| points.get(k)) {

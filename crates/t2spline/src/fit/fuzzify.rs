@@ -124,7 +124,11 @@ pub fn percentile(sorted: &[f64], q: f64) -> Option<f64> {
     let g = h - j as f64;
     let (a, b) = (*sorted.get(j)?, *sorted.get((j + 1).min(last))?);
     let d = b - a;
-    Some(if g < 0.5 { a + d * g } else { b - d * (1.0 - g) })
+    Some(if g < 0.5 {
+        a + d * g
+    } else {
+        b - d * (1.0 - g)
+    })
 }
 
 /// One fuzzy number from the readings of one coordinate (sorted in place):

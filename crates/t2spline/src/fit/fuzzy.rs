@@ -443,11 +443,12 @@ impl<const D: usize> FuzzyFit<D> {
                     })
                     .collect();
                 // One number per coordinate, D in all: the error is never made.
-                let coords: [Nt2Number; D] = coords?.try_into().map_err(|v: Vec<_>| Error::Length {
-                    what: "coordinates",
-                    expected: D,
-                    found: v.len(),
-                })?;
+                let coords: [Nt2Number; D] =
+                    coords?.try_into().map_err(|v: Vec<_>| Error::Length {
+                        what: "coordinates",
+                        expected: D,
+                        found: v.len(),
+                    })?;
                 Ok(Nt2Point::new(coords))
             })
             .collect::<Result<Vec<_>, Error>>()?;

@@ -251,7 +251,12 @@ fn piece_knots(knots: &KnotVector, (start, end): (usize, usize)) -> Result<KnotV
 /// Rows `u0..u1`, columns `v0..v1` of a net stored row by row, `nv` per row.
 /// Piece ranges lie within the net's shape, so every slice exists (an empty
 /// row would make `NurbsSurface::try_new` refuse the patch).
-fn sub_net<T: Copy>(values: &[T], nv: usize, (u0, u1): (usize, usize), (v0, v1): (usize, usize)) -> Vec<Vec<T>> {
+fn sub_net<T: Copy>(
+    values: &[T],
+    nv: usize,
+    (u0, u1): (usize, usize),
+    (v0, v1): (usize, usize),
+) -> Vec<Vec<T>> {
     let rows = values.get(u0 * nv..u1 * nv).unwrap_or_default();
     rows.chunks(nv.max(1))
         .map(|row| row.get(v0..v1).unwrap_or_default().to_vec())

@@ -92,7 +92,9 @@ impl Settings {
         Overrides {
             alpha: Some(self.alpha.get()),
             samples: Some(samples),
-            derivatives: self.derivatives.map(|k| i64::try_from(k).unwrap_or(i64::MAX)),
+            derivatives: self
+                .derivatives
+                .map(|k| i64::try_from(k).unwrap_or(i64::MAX)),
         }
     }
 }

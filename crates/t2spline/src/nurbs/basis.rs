@@ -11,7 +11,10 @@ use crate::nurbs::KnotVector;
 /// [`Error::Index`] naming the `span` if `span < degree` or
 /// `span + degree ≥ knots.len()`.
 pub(crate) fn check_span(knots: &[f64], degree: usize, span: usize) -> Result<(), Error> {
-    let fits = span >= degree && span.checked_add(degree).is_some_and(|end| end < knots.len());
+    let fits = span >= degree
+        && span
+            .checked_add(degree)
+            .is_some_and(|end| end < knots.len());
     if fits {
         Ok(())
     } else {
@@ -40,7 +43,12 @@ pub(crate) fn check_span(knots: &[f64], degree: usize, span: usize) -> Result<()
 /// assert!(try_basis_functions(&u, 2, 4, 0.5).is_err());
 /// # Ok::<(), t2spline::Error>(())
 /// ```
-pub fn try_basis_functions(knots: &[f64], degree: usize, span: usize, t: f64) -> Result<Vec<f64>, Error> {
+pub fn try_basis_functions(
+    knots: &[f64],
+    degree: usize,
+    span: usize,
+    t: f64,
+) -> Result<Vec<f64>, Error> {
     check_span(knots, degree, span)?;
     let mut out = vec![0.0; degree + 1];
     basis_functions(knots, degree, span, t, &mut out);

@@ -267,9 +267,10 @@ impl<const D: usize> FuzzyCurve<D> {
     #[must_use]
     pub fn bounding_box(&self) -> BoundingBox<D> {
         let [first, rest @ ..] = Layer::ALL;
-        rest.iter().fold(self.layer_curve(first).bounding_box(), |b, &l| {
-            b.union(self.layer_curve(l).bounding_box())
-        })
+        rest.iter()
+            .fold(self.layer_curve(first).bounding_box(), |b, &l| {
+                b.union(self.layer_curve(l).bounding_box())
+            })
     }
 }
 

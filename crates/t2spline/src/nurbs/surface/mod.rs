@@ -233,12 +233,16 @@ impl<const D: usize> NurbsSurface<D> {
     /// [`Error::Index`] naming the `row` or `column` if `i ≥ nu` or `j ≥ nv`.
     pub fn control_point(&self, i: usize, j: usize) -> Result<[f64; D], Error> {
         let [nu, nv] = self.shape();
-        let (i, j) = (Error::check_index("row", i, nu)?, Error::check_index("column", j, nv)?);
+        let (i, j) = (
+            Error::check_index("row", i, nu)?,
+            Error::check_index("column", j, nv)?,
+        );
         // `i·nv + j < nu·nv`, the length of the validated net.
-        self.points
-            .get(i * nv + j)
-            .copied()
-            .ok_or(Error::Index { what: "control point", index: i * nv + j, count: self.points.len() })
+        self.points.get(i * nv + j).copied().ok_or(Error::Index {
+            what: "control point",
+            index: i * nv + j,
+            count: self.points.len(),
+        })
     }
 
     /// The weights, row by row as [`NurbsSurface::control_points`].
