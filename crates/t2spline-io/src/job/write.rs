@@ -98,8 +98,9 @@ pub(crate) fn point_json<const D: usize>(p: &Nt2Point<D>, top_height: Option<f64
             "primary": pair(Layer::PrimaryLeft, Layer::PrimaryRight),
             "lower": pair(Layer::LowerLeft, Layer::LowerRight),
         });
-        if top_height != Some(x.height().get()) {
-            number["lower_height"] = json!(x.height().get());
+        if let (true, Some(number)) = (top_height != Some(x.height().get()), number.as_object_mut())
+        {
+            number.insert("lower_height".into(), json!(x.height().get()));
         }
         out.insert(axis.name().into(), number);
     }

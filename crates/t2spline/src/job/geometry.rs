@@ -222,12 +222,13 @@ fn piece_ranges(knots: &KnotVector) -> Vec<(usize, usize)> {
     let domain = knots.domain();
     let mut cuts = Vec::new();
     let mut f = 0;
-    while f < u.len() {
-        let run = u[f..].iter().take_while(|&&v| v == u[f]).count();
-        if run == k && domain.start < u[f] && u[f] < domain.end {
-            cuts.push(f);
+    for run in u.chunk_by(|a, b| a == b) {
+        if let (true, Some(&v)) = (run.len() == k, run.first()) {
+            if domain.start < v && v < domain.end {
+                cuts.push(f);
+            }
         }
-        f += run;
+        f += run.len();
     }
     let mut ranges = Vec::with_capacity(cuts.len() + 1);
     let mut start = 0;
@@ -242,7 +243,11 @@ fn piece_ranges(knots: &KnotVector) -> Vec<(usize, usize)> {
 fn piece_knots(knots: &KnotVector, (start, end): (usize, usize)) -> Result<KnotVector, Error> {
     let k = knots.degree() + 1;
     KnotVector::try_new(
-        knots.as_slice()[start..end + k].to_vec(),
+        knots
+            .as_slice()
+            .get(start..end + k)
+            .unwrap_or_default()
+            .to_vec(),
         k - 1,
         end - start,
     )
@@ -311,8 +316,11 @@ fn continuous_pieces(c: &NurbsCurve<3>) -> Result<Vec<NurbsCurve<3>>, Error> {
         .into_iter()
         .map(|(start, end)| {
             NurbsCurve::try_new(
-                c.control_points()[start..end].to_vec(),
-                c.weights()[start..end].to_vec(),
+                c.control_points()
+                    .get(start..end)
+                    .unwrap_or_default()
+                    .to_vec(),
+                c.weights().get(start..end).unwrap_or_default().to_vec(),
                 piece_knots(c.knots(), (start, end))?,
             )
         })

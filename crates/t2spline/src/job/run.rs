@@ -213,7 +213,7 @@ fn control_points<const D: usize>(
         alpha_cut: SixLayers::from_fn(|l| {
             let cut: Vec<[Option<f64>; D]> = cut_points
                 .iter()
-                .map(|cuts| std::array::from_fn(|d| cuts[d].layer(l)))
+                .map(|cuts| std::array::from_fn(|d| cuts.get(d).and_then(|c| c.layer(l))))
                 .collect();
             shaped(Points::from_points(&cut), grid)
         }),
@@ -276,9 +276,9 @@ fn derivative_curves<const D: usize>(
         let mut columns = vec![vec![Vec::with_capacity(params.len()); D]; order];
         for (i, &t) in params.iter().enumerate() {
             let at = c.derivatives(t, order)?;
-            for (k, column) in columns.iter_mut().enumerate() {
-                for (axis, values) in column.iter_mut().enumerate() {
-                    let value = at[k + 1][axis];
+            // `at` holds the point and its derivatives of orders 1 ..= order.
+            for (k, (column, derivative)) in columns.iter_mut().zip(at.iter().skip(1)).enumerate() {
+                for (axis, (values, &value)) in column.iter_mut().zip(derivative).enumerate() {
                     if !value.is_finite() {
                         return Err(Error::DerivativeOverflow {
                             curve: name,
