@@ -30,7 +30,7 @@ fn curvo_surface(s: &NurbsSurface<3>) -> NurbsSurface3D<f64> {
         .map(|i| {
             (0..nv)
                 .map(|j| {
-                    let (p, w) = (s.control_point(i, j), s.weights()[i * nv + j]);
+                    let (p, w) = (s.control_point(i, j).unwrap(), s.weights()[i * nv + j]);
                     Point4::new(p[0] * w, p[1] * w, p[2] * w, w)
                 })
                 .collect()

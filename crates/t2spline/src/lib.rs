@@ -100,7 +100,10 @@ pub mod pipeline;
 mod quadrature;
 pub mod reduction;
 pub mod sampling;
+// Generators for property tests: a value they cannot build is a failing
+// test, so they may `expect`.
 #[cfg(any(test, feature = "proptest"))]
+#[allow(clippy::expect_used, clippy::unwrap_used)]
 pub mod strategies;
 
 pub use error::{Error, Num, Place};

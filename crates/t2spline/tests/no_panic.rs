@@ -207,6 +207,7 @@ fn curve_operations<const D: usize>(
 }
 
 /// Every operation of a fuzzy curve of dimension `D`.
+#[allow(clippy::too_many_arguments)] // what proptest draws, one by one
 fn fuzzy_curve_operations<const D: usize>(
     degree: usize,
     flat: &[f64],

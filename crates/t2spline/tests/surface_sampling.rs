@@ -113,7 +113,7 @@ proptest! {
     ) {
         // The same net with weights spread over 24 orders of magnitude.
         let [nu, nv] = s.shape();
-        let points = (0..nu).map(|i| (0..nv).map(|j| s.control_point(i, j)).collect()).collect();
+        let points = (0..nu).map(|i| (0..nv).map(|j| s.control_point(i, j).unwrap()).collect()).collect();
         let weights = (0..nu).map(|i| (0..nv).map(|j| 10f64.powf(exponents[(i * nv + j) % 64])).collect()).collect();
         let knots = Direction::BOTH.map(|d| s.knots(d).clone());
         let s = NurbsSurface::try_new(points, weights, knots).unwrap();
