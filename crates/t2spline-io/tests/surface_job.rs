@@ -441,15 +441,15 @@ fn a_net_beyond_the_limit_is_refused_before_its_points_are_read() {
 fn a_surface_beyond_the_limit_of_work_is_refused() {
     let net = |n: usize| Value::Array((0..n).map(|i| row(i, n)).collect());
     let mut v = with("order", json!([4, 4]));
-    v["points"] = net(104);
+    v["points"] = net(204);
     assert_problems(
         &v,
         &[&format!(
-            "job.json: points: a surface of 104 × 104 control points and orders 4 × 4 has up to 10201 span rectangles of 16 basis terms each, 163216 in all, more than the limit {MAX_SURFACE_WORK}: the distance of the solution is measured on every rectangle; use fewer control points or lower orders"
+            "job.json: points: a surface of 204 × 204 control points and orders 4 × 4 has up to 40401 span rectangles of 16 basis terms each, 646416 in all, more than the limit {MAX_SURFACE_WORK}: the distance of the solution is measured on every rectangle; use fewer control points or lower orders"
         )],
     );
-    v["points"] = net(103);
-    assert_eq!(surface_of(&v).shape(), [103, 103]);
+    v["points"] = net(203);
+    assert_eq!(surface_of(&v).shape(), [203, 203]);
 }
 
 /// One file with a problem of every surface kind; each line names the file,

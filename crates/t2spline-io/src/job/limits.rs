@@ -41,14 +41,15 @@ pub const MAX_ORDER: usize = 32;
 /// The most work a surface job may ask for: its span rectangles (at most
 /// `(nu − ku + 1)(nv − kv + 1)`) times the basis terms `ku·kv` of each. The
 /// distance between the crisp and the defuzzified surface (SPEC §9) scans
-/// and refines every rectangle. Measured on a 2-core machine (release build,
-/// smooth data), the largest jobs at this limit run in 107 s (201 × 201
-/// control points of orders 2 × 2, 40 000 rectangles, 280 MB), 59 s (103 ×
-/// 103 of orders 4 × 4) and 12 s (43 × 43 of orders 32 × 32): the time per
-/// rectangle grows more slowly than `ku·kv`, so the product is a bound that
-/// errs on the side of low orders. Below [`MAX_POINTS`], this is the limit
-/// that large nets meet first.
-pub const MAX_SURFACE_WORK: usize = 160_000;
+/// and refines every rectangle whose control points could hold the largest
+/// distance; at worst (the same spreads everywhere) that is every one. The
+/// limit is set so that the largest such jobs run in under a minute on a
+/// loaded 2-core machine (figures in `docs/performance.md`): 316 × 316 control
+/// points of orders 2 × 2 (99 225 rectangles), 203 × 203 of orders 4 × 4,
+/// 56 × 56 of orders 32 × 32. The time per rectangle grows more slowly than
+/// `ku·kv`, so the product is a bound that errs on the side of low orders.
+/// Below [`MAX_POINTS`], this is the limit that large nets meet first.
+pub const MAX_SURFACE_WORK: usize = 640_000;
 
 /// How deeply arrays and objects may nest: `serde_json`'s own recursion limit
 /// (it refuses the 128th level), which stops a hostile file before it can
@@ -163,18 +164,18 @@ mod tests {
 
     #[test]
     fn surface_work_counts_rectangles_times_terms() {
-        assert_eq!(check_surface_work([100, 100], [4, 4]), Ok(()));
-        assert_eq!(check_surface_work([43, 43], [32, 32]), Ok(()));
-        assert!(check_surface_work([44, 44], [32, 32]).is_err());
+        assert_eq!(check_surface_work([203, 203], [4, 4]), Ok(()));
+        assert_eq!(check_surface_work([56, 56], [32, 32]), Ok(()));
+        assert!(check_surface_work([57, 57], [32, 32]).is_err());
         assert_eq!(check_surface_work([1, 1], [1, 1]), Ok(()));
         // Fewer points than the order: no rectangles, another rule's.
         assert_eq!(check_surface_work([2, 100_000], [3, 32]), Ok(()));
         assert_eq!(
-            check_surface_work([104, 104], [4, 4]),
-            Err("a surface of 104 × 104 control points and orders 4 × 4 has up to 10201 span rectangles of 16 basis terms each, 163216 in all, more than the limit 160000: the distance of the solution is measured on every rectangle; use fewer control points or lower orders".to_owned())
+            check_surface_work([204, 204], [4, 4]),
+            Err("a surface of 204 × 204 control points and orders 4 × 4 has up to 40401 span rectangles of 16 basis terms each, 646416 in all, more than the limit 640000: the distance of the solution is measured on every rectangle; use fewer control points or lower orders".to_owned())
         );
         assert!(check_surface_work([MAX_POINTS, 1], [1, 1]).is_ok());
-        assert!(check_surface_work([160_001, 1], [1, 1]).is_err());
+        assert!(check_surface_work([640_001, 1], [1, 1]).is_err());
     }
 
     #[test]

@@ -1,7 +1,10 @@
-//! `Points` straight into one block of floats: the rows `[[x, y], …]` that
-//! serde hands over are written one after the other, so a million samples
-//! cost a million row visits and no allocation per row. An absent value
-//! (`None`, a lower alpha-cut above the number's height) becomes NaN.
+//! `Points` straight into one block of floats: the points `[[x, y], …]` (or,
+//! for a surface's grid, the rows of points `[[[x, y, z], …], …]`) that serde
+//! hands over are written one after the other, so a million samples cost a
+//! million point visits and no allocation per point. An absent value (`None`,
+//! a lower alpha-cut above the number's height) becomes NaN. The block's
+//! shape is the nesting's: `(n, d)` for a list of points, `(rows, columns, d)`
+//! for a grid.
 
 use serde::ser::{self, Impossible, Serialize};
 
@@ -102,14 +105,50 @@ macro_rules! reject_compounds {
     };
 }
 
-/// Serializes the content of a `Points` newtype: a sequence of rows.
+/// Serializes the content of a `Points` newtype: nested sequences whose
+/// innermost elements are coordinates.
 pub(super) struct PointsSerializer;
 
-/// The rows so far: their values one after the other, and their width.
-pub(super) struct PointsSeq {
+/// The block being filled: the coordinates in C order, and the length of
+/// each level of nesting as far as it is known.
+struct Block {
     data: Vec<f64>,
-    rows: usize,
-    width: Option<usize>,
+    shape: Vec<Option<usize>>,
+    /// The depth at which coordinates sit, once one has been seen.
+    leaf_depth: Option<usize>,
+}
+
+impl Block {
+    /// Records that the sequence at `depth` had `count` elements.
+    fn close(&mut self, depth: usize, count: usize) -> Result<(), Unsupported> {
+        if self.shape.len() <= depth {
+            self.shape.resize(depth + 1, None);
+        }
+        match self.shape[depth] {
+            Some(known) if known != count => {
+                unsupported("a point list whose rows or points differ in length")
+            }
+            _ => {
+                self.shape[depth] = Some(count);
+                Ok(())
+            }
+        }
+    }
+
+    /// Records a coordinate at `depth`.
+    fn push(&mut self, depth: usize, v: f64) -> Result<(), Unsupported> {
+        if *self.leaf_depth.get_or_insert(depth) != depth {
+            return unsupported("a point list nested to different depths");
+        }
+        self.data.push(v);
+        Ok(())
+    }
+}
+
+/// The top-level sequence of a point list.
+pub(super) struct PointsSeq {
+    block: Block,
+    count: usize,
 }
 
 impl ser::Serializer for PointsSerializer {
@@ -127,10 +166,13 @@ impl ser::Serializer for PointsSerializer {
     }
     fn serialize_seq(self, len: Option<usize>) -> Result<PointsSeq, Unsupported> {
         Ok(PointsSeq {
-            // Points of up to three coordinates; the exact count follows.
-            data: Vec::with_capacity(len.unwrap_or(0).saturating_mul(3)),
-            rows: 0,
-            width: None,
+            block: Block {
+                // Points of up to three coordinates; the exact count follows.
+                data: Vec::with_capacity(len.unwrap_or(0).saturating_mul(3)),
+                shape: Vec::new(),
+                leaf_depth: None,
+            },
+            count: 0,
         })
     }
 }
@@ -139,92 +181,84 @@ impl ser::SerializeSeq for PointsSeq {
     type Ok = Value;
     type Error = Unsupported;
     fn serialize_element<T: Serialize + ?Sized>(&mut self, row: &T) -> Result<(), Unsupported> {
-        let width = row.serialize(RowSerializer {
-            data: &mut self.data,
+        row.serialize(NestedSerializer {
+            block: &mut self.block,
+            depth: 1,
         })?;
-        if *self.width.get_or_insert(width) != width {
-            return unsupported("a point list whose points differ in dimension");
-        }
-        self.rows += 1;
+        self.count += 1;
         Ok(())
     }
-    fn end(self) -> Result<Value, Unsupported> {
-        Ok(Value::Array {
-            shape: vec![self.rows, self.width.unwrap_or(0)],
-            data: self.data,
-        })
+    fn end(mut self) -> Result<Value, Unsupported> {
+        self.block.close(0, self.count)?;
+        let Block {
+            data,
+            shape,
+            leaf_depth,
+        } = self.block;
+        if leaf_depth == Some(1) {
+            return unsupported("a point list whose points are numbers");
+        }
+        // An empty list is `(0, 0)`: a list of points of unknown dimension.
+        let depth = leaf_depth.unwrap_or(2).max(2);
+        let mut dims: Vec<usize> = shape.into_iter().map(|d| d.unwrap_or(0)).collect();
+        dims.resize(depth, 0);
+        Ok(Value::Array { shape: dims, data })
     }
 }
 
-/// Serializes one point (a sequence of coordinates) into the block; gives
-/// the number of coordinates.
-struct RowSerializer<'a> {
-    data: &'a mut Vec<f64>,
+/// Serializes an element at `depth` of a point list: a sequence (a row of
+/// points, or a point) or a coordinate.
+struct NestedSerializer<'a> {
+    block: &'a mut Block,
+    depth: usize,
 }
 
-/// A point being written.
-struct RowSeq<'a> {
-    data: &'a mut Vec<f64>,
+/// A sequence being written at `depth`.
+struct NestedSeq<'a> {
+    block: &'a mut Block,
+    depth: usize,
     count: usize,
 }
 
-impl<'a> ser::Serializer for RowSerializer<'a> {
-    type Ok = usize;
+impl<'a> ser::Serializer for NestedSerializer<'a> {
+    type Ok = ();
     type Error = Unsupported;
-    type SerializeSeq = RowSeq<'a>;
+    type SerializeSeq = NestedSeq<'a>;
     reject_compounds!();
-    reject_scalars!(serialize_f64: f64);
 
-    fn serialize_none(self) -> Result<usize, Unsupported> {
-        unsupported("an absent point")
+    fn serialize_f64(self, v: f64) -> Result<(), Unsupported> {
+        self.block.push(self.depth, v)
     }
-    fn serialize_some<T: Serialize + ?Sized>(self, value: &T) -> Result<usize, Unsupported> {
+    fn serialize_none(self) -> Result<(), Unsupported> {
+        self.block.push(self.depth, f64::NAN)
+    }
+    fn serialize_some<T: Serialize + ?Sized>(self, value: &T) -> Result<(), Unsupported> {
         value.serialize(self)
     }
-    fn serialize_seq(self, _: Option<usize>) -> Result<RowSeq<'a>, Unsupported> {
-        Ok(RowSeq {
-            data: self.data,
+    fn serialize_seq(self, _: Option<usize>) -> Result<NestedSeq<'a>, Unsupported> {
+        if self.block.leaf_depth.is_some_and(|d| d <= self.depth) {
+            return unsupported("a point list nested to different depths");
+        }
+        Ok(NestedSeq {
+            block: self.block,
+            depth: self.depth,
             count: 0,
         })
     }
 }
 
-impl ser::SerializeSeq for RowSeq<'_> {
-    type Ok = usize;
+impl ser::SerializeSeq for NestedSeq<'_> {
+    type Ok = ();
     type Error = Unsupported;
     fn serialize_element<T: Serialize + ?Sized>(&mut self, value: &T) -> Result<(), Unsupported> {
-        value.serialize(CellSerializer { data: self.data })?;
+        value.serialize(NestedSerializer {
+            block: self.block,
+            depth: self.depth + 1,
+        })?;
         self.count += 1;
         Ok(())
     }
-    fn end(self) -> Result<usize, Unsupported> {
-        Ok(self.count)
-    }
-}
-
-/// Serializes one coordinate: a float, or NaN for an absent value.
-struct CellSerializer<'a> {
-    data: &'a mut Vec<f64>,
-}
-
-impl ser::Serializer for CellSerializer<'_> {
-    type Ok = ();
-    type Error = Unsupported;
-    type SerializeSeq = Impossible<(), Unsupported>;
-    reject_compounds!();
-
-    fn serialize_f64(self, v: f64) -> Result<(), Unsupported> {
-        self.data.push(v);
-        Ok(())
-    }
-    fn serialize_none(self) -> Result<(), Unsupported> {
-        self.data.push(f64::NAN);
-        Ok(())
-    }
-    fn serialize_some<T: Serialize + ?Sized>(self, value: &T) -> Result<(), Unsupported> {
-        value.serialize(self)
-    }
-    fn serialize_seq(self, _: Option<usize>) -> Result<Self::SerializeSeq, Unsupported> {
-        unsupported("a coordinate that is a list")
+    fn end(self) -> Result<(), Unsupported> {
+        self.block.close(self.depth, self.count)
     }
 }

@@ -147,3 +147,24 @@ fn serde_bytes_like() -> &'static impl Serialize {
     }
     &Bytes
 }
+
+#[test]
+fn a_surface_run_gives_grids_of_points() {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../examples/fuzzy-terrain.json"
+    );
+    let job = t2spline_io::read_job(std::path::Path::new(path)).unwrap();
+    let overrides = Overrides {
+        alpha: None,
+        samples: Some(vec![4, 3]),
+        derivatives: None,
+    };
+    let out = job.run(&job.settings(&overrides).unwrap()).unwrap();
+    let tree = to_value(&out).unwrap();
+    assert_eq!(json_of(&tree), serde_json::to_value(&out).unwrap());
+    assert_eq!(shape(at(&tree, "surfaces.crisp")), [4, 3, 3]);
+    assert_eq!(shape(at(&tree, "surfaces.type_reduced.left")), [4, 3, 3]);
+    assert_eq!(shape(at(&tree, "control_points.defuzzified")), [6, 5, 3]);
+    assert_eq!(shape(at(&tree, "weights")), [6, 5]);
+}

@@ -55,6 +55,10 @@ pub fn try_basis_functions(
     Ok(out)
 }
 
+/// The highest order whose evaluation needs no allocation (scratch on the
+/// stack); higher orders allocate their scratch.
+pub(crate) const STACK_ORDER: usize = 32;
+
 /// The `p + 1` non-zero basis functions `N_{span−p,p}(t) … N_{span,p}(t)`, written
 /// into `out[0..=p]` (The NURBS Book, A2.2, the Cox–de Boor recurrence in
 /// triangular form):
@@ -71,8 +75,17 @@ pub fn try_basis_functions(
 /// `span + degree < knots.len()` (a span of a validated [`KnotVector`]);
 /// [`try_basis_functions`] is the checked form.
 pub(crate) fn basis_functions(knots: &[f64], degree: usize, span: usize, t: f64, out: &mut [f64]) {
-    let mut left = vec![0.0; degree + 1];
-    let mut right = vec![0.0; degree + 1];
+    // Scratch on the stack up to order STACK_ORDER (no allocation per call),
+    // on the heap beyond.
+    let mut stack = [0.0; 2 * STACK_ORDER];
+    let mut heap = Vec::new();
+    let scratch: &mut [f64] = if degree < STACK_ORDER {
+        &mut stack[..2 * (degree + 1)]
+    } else {
+        heap.resize(2 * (degree + 1), 0.0);
+        &mut heap
+    };
+    let (left, right) = scratch.split_at_mut(degree + 1);
     out[0] = 1.0;
     for j in 1..=degree {
         left[j] = t - knots[span + 1 - j];

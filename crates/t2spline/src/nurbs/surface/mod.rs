@@ -29,7 +29,7 @@ use std::fmt;
 use crate::error::{Error, Place};
 use crate::fuzzy::Axis;
 use crate::limits::{within_magnitude, MAGNITUDE_RANGE, MAX_WEIGHT, MIN_WEIGHT};
-use crate::nurbs::basis::basis_functions;
+use crate::nurbs::basis::{basis_functions, STACK_ORDER};
 use crate::nurbs::{Domain, KnotVector};
 
 /// A parameter direction of a surface: `U` runs along the rows of the net
@@ -291,14 +291,48 @@ impl<const D: usize> NurbsSurface<D> {
     /// `(u, v)` in its closure: on its right or upper border this is the
     /// one-sided limit from inside, which differs from [`NurbsSurface::eval`]
     /// only at a knot of full multiplicity.
+    ///
+    /// Up to order [`STACK_ORDER`] in each direction it allocates nothing
+    /// (the distance of SPEC §9 calls it thousands of times per span
+    /// rectangle); it forms the same products and quotients as
+    /// [`TensorBasis`], so the results are the same to the bit.
     pub(crate) fn eval_in_spans(&self, spans: [usize; 2], u: f64, v: f64) -> [f64; D] {
-        self.combine(&TensorBasis::in_spans(
-            &self.knots,
-            &self.weights,
-            spans,
-            u,
-            v,
-        ))
+        let [p, q] = self.degree();
+        if p >= STACK_ORDER || q >= STACK_ORDER {
+            return self.combine(&TensorBasis::in_spans(
+                &self.knots,
+                &self.weights,
+                spans,
+                u,
+                v,
+            ));
+        }
+        let [su, sv] = spans;
+        let mut bu = [0.0; STACK_ORDER];
+        let mut bv = [0.0; STACK_ORDER];
+        let (bu, bv) = (&mut bu[..=p], &mut bv[..=q]);
+        basis_functions(self.knots[0].as_slice(), p, su, u, bu);
+        basis_functions(self.knots[1].as_slice(), q, sv, v, bv);
+        let nv = self.shape()[1];
+        // The row of weights and of points each basis row acts on.
+        let rows = |a: usize| (su - p + a) * nv + sv - q..(su - p + a) * nv + sv + 1;
+        let mut denominator = 0.0;
+        for (a, nu) in bu.iter().enumerate() {
+            for (mv, w) in bv.iter().zip(&self.weights[rows(a)]) {
+                denominator += nu * mv * w;
+            }
+        }
+        let mut out = [0.0; D];
+        for (a, nu) in bu.iter().enumerate() {
+            let (weights, points) = (&self.weights[rows(a)], &self.points[rows(a)]);
+            for ((mv, w), point) in bv.iter().zip(weights).zip(points) {
+                let r = nu * mv * w / denominator;
+                for (o, x) in out.iter_mut().zip(point) {
+                    *o += r * x;
+                }
+            }
+        }
+        out
     }
 
     /// `Σ Rᵢⱼ Pᵢⱼ` for a basis of this surface.
