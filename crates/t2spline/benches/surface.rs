@@ -63,7 +63,7 @@ fn crisp(c: &mut Criterion) {
     let theirs = peer.regular_sample_points(100, 100);
     for (a, row) in theirs.iter().enumerate() {
         for (b, q) in row.iter().enumerate() {
-            let p = ours.samples().point(ours.index(a, b));
+            let p = ours.samples().point(ours.index(a, b).unwrap()).unwrap();
             assert!(
                 (p[0] - q.x).abs() < 1e-12
                     && (p[1] - q.y).abs() < 1e-12

@@ -35,7 +35,7 @@ impl<const D: usize> NurbsCurve<D> {
     /// assert!(s.points().all(|[x, y]| (x.hypot(y) - 1.0).abs() < 1e-14));
     /// let t = [0.9, 0.1, 0.5]; // any order
     /// let s = c.sample_soa(&t)?;
-    /// assert!((s.point(0)[0] - c.eval(0.9)?[0]).abs() < 1e-15);
+    /// assert!((s.coord(0)[0] - c.eval(0.9)?[0]).abs() < 1e-15);
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn sample_soa<'a>(&self, params: impl Into<Params<'a>>) -> Result<CurveSamples<D>, Error> {
@@ -88,8 +88,8 @@ impl<const D: usize> FuzzyCurve<D> {
     /// ];
     /// let c = FuzzyCurve::try_new(2, points, vec![1.0, 1.0, 1.0], None)?;
     /// let s = c.sample_layers(Params::Uniform(3))?;
-    /// assert_eq!(s[Layer::Crisp].point(1), [1.0, 1.0]);
-    /// assert_eq!(s[Layer::UpperRight].point(1), [3.0, 3.0]);
+    /// assert_eq!(s[Layer::Crisp].point(1), Some([1.0, 1.0]));
+    /// assert_eq!(s[Layer::UpperRight].point(1), Some([3.0, 3.0]));
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn sample_layers<'a>(
@@ -197,7 +197,7 @@ impl<const D: usize> FuzzyCurve<D> {
     /// assert!(top.alpha_cut(Layer::LowerLeft).is_none()); // 1 > h = 0.5
     /// let crisp = &sweep.layers()[Layer::Crisp];
     /// let solved = top.defuzzified();
-    /// assert!((0..101).all(|i| (solved.point(i)[1] - crisp.point(i)[1]).abs() < 1e-14));
+    /// assert!((0..101).all(|i| (solved.coord(1)[i] - crisp.coord(1)[i]).abs() < 1e-14));
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn sample_sweep<'a>(
