@@ -880,6 +880,22 @@ pub enum Error {
         dimension: usize,
     },
 
+    /// More sample values were asked for than a vector can hold.
+    ///
+    /// ```
+    /// # use t2spline::{Error, NurbsCurve};
+    /// # use t2spline::sampling::Params;
+    /// let c = NurbsCurve::try_clamped(1, vec![[0.0, 0.0], [1.0, 1.0]], vec![1.0, 1.0])?;
+    /// let e = c.sample_soa(Params::Uniform(usize::MAX)).unwrap_err();
+    /// assert_eq!(e, Error::Memory { values: usize::MAX });
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("cannot hold {values} sample values per curve in memory")]
+    Memory {
+        /// The values per curve asked for.
+        values: usize,
+    },
+
     /// An index given to an accessor is past the end of what it indexes.
     ///
     /// ```

@@ -192,6 +192,12 @@ fn curve_operations<const D: usize>(
             curve.sample_soa(Params::Uniform(n.min(64)))
         })
         .ok();
+        for huge in [usize::MAX, usize::MAX / 8 + 1] {
+            let e = returns("sample_soa huge", || {
+                curve.sample_soa(Params::Uniform(huge))
+            });
+            assert_eq!(e.unwrap_err(), Error::Memory { values: huge });
+        }
         returns("refine_knots", || curve.refine_knots(t)).ok();
         returns("elevate_degree", || curve.elevate_degree(n)).ok();
         returns("clamped", || curve.clamped());
@@ -297,6 +303,8 @@ fn surface_operations<const D: usize>(
         returns("surface elevate_degree", || s.elevate_degree(d, n)).ok();
     }
     returns("sample_grid", || s.sample_grid(t, t)).ok();
+    let huge = Params::Uniform(1 << 33);
+    assert!(returns("sample_grid huge", || s.sample_grid(huge, huge)).is_err());
 }
 
 fn fuzzy_surface_operations<const D: usize>(rows: usize, flat: &[f64], t: &[f64], alpha: f64) {
