@@ -7,31 +7,19 @@
 //! `limits.rs` checks the job reader's answers in depth (the fuzz target's
 //! oracle); this file covers the other readers and the writers.
 
-use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::path::Path;
 
+#[path = "../../t2spline/tests/no_panic/returns.rs"]
+mod returns;
+
 use proptest::prelude::*;
+use returns::returns;
 use t2spline::fit::{FitOptions, FuzzifyRule, FuzzyFitMode};
 use t2spline::job::Overrides;
 use t2spline_io::{
     check_finite, data_json, is_readings, job_json, parse_data, parse_job, parse_readings,
     render_cad, render_csv, to_json_pretty, CadFormat, CadMeta,
 };
-
-/// Runs `f`, failing the test with `what` if it panics.
-fn returns<T>(what: &str, f: impl FnOnce() -> T) -> T {
-    match catch_unwind(AssertUnwindSafe(f)) {
-        Ok(value) => value,
-        Err(payload) => {
-            let message = payload
-                .downcast_ref::<String>()
-                .map(String::as_str)
-                .or_else(|| payload.downcast_ref::<&str>().copied())
-                .unwrap_or("(no message)");
-            panic!("{what} panicked: {message}");
-        }
-    }
-}
 
 /// Every reader on `text`, and every writer on what they accept.
 fn read_and_write(text: &str) {

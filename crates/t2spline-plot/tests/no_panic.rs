@@ -4,30 +4,17 @@
 //! asked for that the job lacks; and the layout of no figure at all. Each
 //! call runs under `catch_unwind` and must return, with a value or an error.
 
-use std::panic::{catch_unwind, AssertUnwindSafe};
+#[path = "../../t2spline/tests/no_panic/returns.rs"]
+mod returns;
 
 use proptest::prelude::*;
+use returns::returns;
 use t2spline::job::Job;
 use t2spline::{Alpha, Axis};
 use t2spline_plot::{
     all_figures, fit_layout, render_files, render_report, render_svg, Aspect, Figure,
     FigureOptions, Format, NumberChoice,
 };
-
-/// Runs `f`, failing the test with `what` if it panics.
-fn returns<T>(what: &str, f: impl FnOnce() -> T) -> T {
-    match catch_unwind(AssertUnwindSafe(f)) {
-        Ok(value) => value,
-        Err(payload) => {
-            let message = payload
-                .downcast_ref::<String>()
-                .map(String::as_str)
-                .or_else(|| payload.downcast_ref::<&str>().copied())
-                .unwrap_or("(no message)");
-            panic!("{what} panicked: {message}");
-        }
-    }
-}
 
 /// A job file of `points` (crisp values and one spread per point), degree,
 /// a knot vector with an interior knot of full multiplicity if `jump`.

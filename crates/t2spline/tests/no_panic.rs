@@ -8,9 +8,10 @@
 //! right; this file checks only that every call returns, over the whole
 //! public surface, so a new panic anywhere fails here first.
 
-use std::panic::{catch_unwind, AssertUnwindSafe};
+mod returns;
 
 use proptest::prelude::*;
+use returns::returns;
 use t2spline::fit::{
     fit_curve, fuzzify, fuzzify_number, percentile, FitOptions, FuzzifyRule, Parametrization,
 };
@@ -23,21 +24,6 @@ use t2spline::{
     Alpha, Axis, Direction, Error, FuzzyCurve, FuzzySurface, KnotVector, Layer, Nt2Number,
     Nt2Point, NurbsCurve, NurbsSurface, TypeReduction,
 };
-
-/// Runs `f`, failing the test with `what` if it panics.
-fn returns<T>(what: &str, f: impl FnOnce() -> T) -> T {
-    match catch_unwind(AssertUnwindSafe(f)) {
-        Ok(value) => value,
-        Err(payload) => {
-            let message = payload
-                .downcast_ref::<String>()
-                .map(String::as_str)
-                .or_else(|| payload.downcast_ref::<&str>().copied())
-                .unwrap_or("(no message)");
-            panic!("{what} panicked: {message}");
-        }
-    }
-}
 
 /// Any float, with the special values and the ends of the input range often.
 fn float() -> impl Strategy<Value = f64> {

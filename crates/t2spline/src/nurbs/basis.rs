@@ -28,7 +28,7 @@ pub(crate) fn check_span(knots: &[f64], degree: usize, span: usize) -> Result<()
 }
 
 /// The `p + 1` non-zero basis functions at `t` in `span` (The NURBS Book,
-/// A2.2), checked: the values of [`basis_functions`] in a new vector.
+/// A2.2), checked, in a new vector: `N_{span−p,p}(t) … N_{span,p}(t)`.
 ///
 /// # Errors
 /// [`Error::Index`] if `span` does not have `degree` knots on either side
