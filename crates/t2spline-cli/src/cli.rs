@@ -133,6 +133,16 @@ pub struct FigureArgs {
     /// whose spreads would otherwise not show.
     #[arg(long, value_enum, default_value_t = AspectArg::Equal)]
     pub aspect: AspectArg,
+    /// The direction the 3-D views of a surface job look from, as
+    /// `AZIMUTH,ELEVATION` in degrees: azimuth from the +x axis toward +y,
+    /// elevation above the x–y plane in [-90, 90].
+    #[arg(
+        long,
+        value_name = "AZ,EL",
+        default_value = "-60,30",
+        allow_hyphen_values = true
+    )]
+    pub view: t2spline_plot::View,
 }
 
 /// Arguments of `t2spline plot`.

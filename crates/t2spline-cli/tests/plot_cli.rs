@@ -3,6 +3,7 @@
 use std::path::{Path, PathBuf};
 
 use assert_cmd::Command;
+use predicates::prelude::*;
 use predicates::str::contains;
 
 fn example() -> PathBuf {
@@ -201,4 +202,79 @@ fn report_is_one_self_contained_file() {
         "the job itself is shown"
     );
     assert!(html.len() < 4_000_000, "report size {}", html.len());
+}
+
+fn surface_example(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("../../examples/{name}"))
+}
+
+#[test]
+fn plot_and_report_draw_both_surface_examples() {
+    for name in ["fuzzy-terrain.json", "fuzzy-cylinder.json"] {
+        let dir = tempfile::tempdir().unwrap();
+        let job = surface_example(name);
+        t2spline()
+            .args(["plot", job.to_str().unwrap(), "-o"])
+            .arg(dir.path().join("figs"))
+            .args(["--view", "30,45", "--point", "5", "--axis", "z"])
+            .assert()
+            .success()
+            .stdout(contains("stage4-defuzzified.png"));
+        for stem in &NAMES[..5] {
+            for ext in ["svg", "png"] {
+                let p = dir.path().join("figs").join(format!("{stem}.{ext}"));
+                assert!(
+                    std::fs::metadata(&p).unwrap().len() > 1000,
+                    "{}",
+                    p.display()
+                );
+            }
+        }
+        let png = std::fs::read(dir.path().join("figs/stage1-fuzzy.png")).unwrap();
+        assert_eq!(
+            &png[37..41],
+            b"pHYs",
+            "{name}: 300 dpi like the curve figures"
+        );
+        let svg = std::fs::read_to_string(dir.path().join("figs/stage1-fuzzy.svg")).unwrap();
+        assert!(
+            svg.contains("azimuth 30°, elevation 45°"),
+            "{name}: the view is stated"
+        );
+        assert!(!dir.path().join("figs/alpha-sweep.svg").exists());
+        assert!(dir.path().join("figs/distance-alpha.svg").exists());
+        t2spline()
+            .args(["report", job.to_str().unwrap(), "-o"])
+            .arg(dir.path().join("report"))
+            .args(["--view", "-30,20"])
+            .assert()
+            .success();
+        let html = std::fs::read_to_string(dir.path().join("report/report.html")).unwrap();
+        assert!(
+            html.contains("id=\"m-max-at-v\""),
+            "{name}: max_at is (u, v)"
+        );
+        assert!(html.contains("azimuth −30°, elevation 20°"), "{name}");
+        assert!(html.len() < 5_000_000, "{name}: report size {}", html.len());
+    }
+}
+
+#[test]
+fn a_bad_view_is_an_error_naming_the_flag() {
+    let dir = tempfile::tempdir().unwrap();
+    let job = surface_example("fuzzy-terrain.json");
+    for (sub, view, why) in [
+        ("plot", "30", "expected AZIMUTH,ELEVATION"),
+        ("plot", "30,100", "[-90, 90]"),
+        ("report", "east,10", "is not a number"),
+    ] {
+        t2spline()
+            .args([sub, job.to_str().unwrap(), "-o"])
+            .arg(dir.path().join("out"))
+            .arg(format!("--view={view}"))
+            .assert()
+            .code(2)
+            .stderr(contains("--view").and(contains(why)));
+    }
+    assert!(!dir.path().join("out").exists(), "nothing written on error");
 }

@@ -163,7 +163,7 @@ fn run_files(job: &Path, alpha: &str) -> (String, Vec<(String, String)>) {
 
 const READ_PAGE: &str = r#"
 const cells = Array.from(document.querySelectorAll("td[data-key]")).map(td => [td.dataset.key, td.dataset.value, td.textContent]);
-const bar = ["m-max", "m-max-at", "m-rms"].map(id => { const e = document.getElementById(id); return [id, e.dataset.value, e.textContent]; });
+const bar = ["m-max", "m-max-at", "m-max-at-v", "m-rms"].filter(id => document.getElementById(id)).map(id => { const e = document.getElementById(id); return [id, e.dataset.value, e.textContent]; });
 return { alpha: document.getElementById("alpha-value").dataset.value, shown: document.getElementById("alpha-value").textContent,
          field: document.getElementById("alpha-field").value, slider: Number(document.getElementById("alpha").value),
          cells: cells, bar: bar, max: Number(document.getElementById("alpha").max),
@@ -271,8 +271,12 @@ impl Page<'_> {
                 cell[1].as_str().unwrap(),
                 cell[2].as_str().unwrap(),
             );
+            // A surface's max_at is (u, v).
+            let surface = result["error"]["max_at"].is_array();
             let key = match key {
                 "m-max" => "error.max",
+                "m-max-at" if surface => "error.max_at.0",
+                "m-max-at-v" => "error.max_at.1",
                 "m-max-at" => "error.max_at",
                 "m-rms" => "error.rms",
                 k => k,
@@ -292,7 +296,25 @@ impl Page<'_> {
     }
 }
 
-fn check_report(chromium: &Path, driver: &Driver, job: &Path, stops_to_check: &[usize]) {
+/// What a report shows: its number of figures, and the width in pixels of
+/// stage 4's PNG (3 per unit of its SVG).
+struct Expected {
+    figures: usize,
+    png_width: u32,
+}
+
+const CURVE: Expected = Expected {
+    figures: 7,
+    png_width: 3000,
+};
+
+fn check_report(
+    chromium: &Path,
+    driver: &Driver,
+    job: &Path,
+    stops_to_check: &[usize],
+    expected: &Expected,
+) {
     let dir = tempfile::tempdir().unwrap();
     let status = Command::cargo_bin("t2spline")
         .unwrap()
@@ -385,7 +407,11 @@ fn check_report(chromium: &Path, driver: &Driver, job: &Path, stops_to_check: &[
     let (stdout, csv) = run_files(job, &alpha);
     let d = page.exec(DOWNLOADS, json!([]));
     let files = d["files"].as_array().unwrap();
-    assert_eq!(files.len(), 5, "the result and four CSV files: {files:?}");
+    assert_eq!(
+        files.len(),
+        1 + csv.len(),
+        "the result and run's CSV files: {files:?}"
+    );
     for f in files {
         let (name, text) = (f[0].as_str().unwrap(), f[1].as_str().unwrap());
         let expected = if name == "result.json" {
@@ -404,7 +430,7 @@ fn check_report(chromium: &Path, driver: &Driver, job: &Path, stops_to_check: &[
         );
     }
     let svgs = d["svgs"].as_array().unwrap();
-    assert_eq!(svgs.len(), 7, "an SVG per figure");
+    assert_eq!(svgs.len(), expected.figures, "an SVG per figure");
     for f in svgs {
         let text = f[1].as_str().unwrap();
         assert!(
@@ -413,12 +439,16 @@ fn check_report(chromium: &Path, driver: &Driver, job: &Path, stops_to_check: &[
             f[0]
         );
     }
-    assert_eq!(d["pngs"].as_array().unwrap().len(), 7, "a PNG per figure");
+    assert_eq!(
+        d["pngs"].as_array().unwrap().len(),
+        expected.figures,
+        "a PNG per figure"
+    );
     let png = page.exec_async(PNG, json!(["stage4-defuzzified"]));
     let png = base64_decode(png.as_str().unwrap());
     assert_eq!(&png[1..4], b"PNG");
     let width = u32::from_be_bytes(png[16..20].try_into().unwrap());
-    assert_eq!(width, 3000, "3 pixels per unit of a 1000-unit figure");
+    assert_eq!(width, expected.png_width, "3 pixels per unit of the figure");
     assert_eq!(&png[37..41], b"pHYs");
     assert_eq!(
         u32::from_be_bytes(png[41..45].try_into().unwrap()),
@@ -497,6 +527,7 @@ fn report_in_headless_chromium_matches_t2spline_run() {
         &driver,
         &root.join("examples/paper-alg-1-1.json"),
         &[0, 37, 80],
+        &CURVE,
     );
     // A 3-D job with mixed heights (0.4 on z, 0.7 elsewhere).
     check_report(
@@ -504,5 +535,28 @@ fn report_in_headless_chromium_matches_t2spline_run() {
         &driver,
         &root.join("fixtures/spiral-3d.json"),
         &[0, 13],
+        &CURVE,
+    );
+}
+
+#[test]
+fn surface_report_in_headless_chromium_matches_t2spline_run() {
+    let Some((chromium, chromedriver)) = browser() else {
+        return;
+    };
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
+    let driver = Driver::start(&chromedriver);
+    // Six figures (no sweep along t); stage 4 is two panels and a colour bar,
+    // 1096 units wide.
+    let surface = Expected {
+        figures: 6,
+        png_width: 3288,
+    };
+    check_report(
+        &chromium,
+        &driver,
+        &root.join("examples/fuzzy-cylinder.json"),
+        &[0, 7],
+        &surface,
     );
 }

@@ -395,25 +395,27 @@ fn derivatives_are_refused_for_surfaces() {
     );
 }
 
-/// Figures of surfaces are not drawn yet: one line, exit code 2, nothing
-/// written.
+/// Figures of surfaces: `plot` writes the six figures, `report` one page;
+/// a point past the net is refused naming `--point`, counting the net's
+/// points row by row.
 #[test]
-fn plot_and_report_refuse_surface_jobs_in_one_line() {
+fn plot_and_report_draw_surface_jobs() {
     let dir = tempfile::tempdir().unwrap();
     let path = job_file(dir.path());
-    for sub in ["plot", "report"] {
-        let out = dir.path().join(sub);
-        let (code, stdout, stderr) = run(&[sub, s(&path), "-o", s(&out)]);
-        assert_eq!(
-            (code, stdout.as_str(), stderr.as_str()),
-            (2, "", "t2spline: figures of surface jobs are not available yet; `t2spline run` computes them\n"),
-            "{sub}"
-        );
-        assert!(
-            !out.exists() || std::fs::read_dir(&out).unwrap().next().is_none(),
-            "{sub} wrote files"
-        );
-    }
+    let out = dir.path().join("plot");
+    let (code, stdout, stderr) = run(&["plot", s(&path), "-o", s(&out), "--format", "svg"]);
+    assert_eq!((code, stderr.as_str()), (0, ""), "{stdout}");
+    assert_eq!(stdout.lines().count(), 6, "{stdout}");
+    let out = dir.path().join("report");
+    let (code, _, stderr) = run(&["report", s(&path), "-o", s(&out)]);
+    assert_eq!((code, stderr.as_str()), (0, ""));
+    assert!(out.join("report.html").exists());
+    let (code, _, stderr) = run(&["plot", s(&path), "-o", s(&out), "--point", "1000"]);
+    assert_eq!(code, 2);
+    assert!(
+        stderr.starts_with("t2spline: --point: point 1000 does not exist"),
+        "{stderr}"
+    );
 }
 
 /// A problem a test expects: its JSON path and its message.

@@ -47,30 +47,83 @@ pub fn figure_samples(model: &Model) -> usize {
         .clamp(MIN_FIGURE_SAMPLES, MAX_FIGURE_SAMPLES)
 }
 
-/// The result of the job at `alpha`, sampled for figures.
-///
-/// # Errors
-/// [`Error::Surface`] for a surface job; [`Error::Core`] if the run fails (it
-/// does not for a validated curve job without derivatives).
-pub fn compute(job: &Job, alpha: Alpha) -> Result<RunOutput, Error> {
-    run_at(job, alpha, figure_samples(&job.model))
-}
-
-/// The result of the job at `alpha` with `samples` samples, as
-/// `t2spline run --alpha A --samples N` computes it.
+/// The result of the job at `alpha`, sampled for figures: a curve at
+/// [`figure_samples`], a surface on [`surface_grid`].
 ///
 /// # Errors
 /// [`Error::Core`] if the run fails (it does not for a validated job without
 /// derivatives).
-pub fn run_at(job: &Job, alpha: Alpha, samples: usize) -> Result<RunOutput, Error> {
-    if job.model.is_surface() {
-        return Err(Error::Surface);
-    }
+pub fn compute(job: &Job, alpha: Alpha) -> Result<RunOutput, Error> {
+    compute_within(job, alpha, MAX_SURFACE_GRID)
+}
+
+/// The most grid points per direction of a surface in the report, whose
+/// figures are stored at every slider stop: at most 24 × 24 quadrilaterals
+/// per surface.
+pub const REPORT_SURFACE_GRID: usize = 25;
+
+/// [`compute`] with a surface's grid at most `max` points per direction.
+///
+/// # Errors
+/// As [`compute`].
+pub fn compute_within(job: &Job, alpha: Alpha, max: usize) -> Result<RunOutput, Error> {
+    let samples = match surface_grid(&job.model) {
+        Some(grid) => Samples::Grid(grid.map(|n| n.min(max))),
+        None => Samples::Along(figure_samples(&job.model)),
+    };
+    run_with(job, alpha, samples)
+}
+
+/// The result of the job at `alpha` with the job's own samples, as
+/// `t2spline run --alpha A` computes it (a curve or a surface).
+///
+/// # Errors
+/// [`Error::Core`] if the run fails (it does not for a validated job without
+/// derivatives).
+pub fn run_job(job: &Job, alpha: Alpha) -> Result<RunOutput, Error> {
+    run_with(job, alpha, job.samples)
+}
+
+fn run_with(job: &Job, alpha: Alpha, samples: Samples) -> Result<RunOutput, Error> {
     Ok(job.run(&Settings {
         alpha,
-        samples: Samples::Along(samples),
+        samples,
         derivatives: None,
     })?)
+}
+
+/// Grid points per knot span and direction in surface figures.
+pub const SURFACE_SAMPLES_PER_SPAN: usize = 8;
+/// The fewest grid points per direction in surface figures.
+pub const MIN_SURFACE_GRID: usize = 17;
+/// The most grid points per direction in surface figures: at most 48 × 48
+/// quadrilaterals are drawn per surface, whatever the job's `samples` or the
+/// size of its net, so a figure's cost is bounded.
+pub const MAX_SURFACE_GRID: usize = 49;
+
+/// The grid `[su, sv]` on which surface figures sample a surface model
+/// ([`SURFACE_SAMPLES_PER_SPAN`] per knot span, from [`MIN_SURFACE_GRID`] to
+/// [`MAX_SURFACE_GRID`] per direction); `None` for a curve.
+#[must_use]
+pub fn surface_grid(model: &Model) -> Option<[usize; 2]> {
+    struct Grid;
+    impl ModelVisitor for Grid {
+        type Output = Option<[usize; 2]>;
+        fn curve<const D: usize>(self, _: &FuzzyCurve<D>) -> Self::Output {
+            None
+        }
+        fn surface<const D: usize>(self, s: &FuzzySurface<D>) -> Self::Output {
+            let (shape, degree) = (s.shape(), s.degree());
+            Some(std::array::from_fn(|k| {
+                shape[k]
+                    .saturating_sub(degree[k])
+                    .saturating_mul(SURFACE_SAMPLES_PER_SPAN)
+                    .saturating_add(1)
+                    .clamp(MIN_SURFACE_GRID, MAX_SURFACE_GRID)
+            }))
+        }
+    }
+    model.visit(Grid)
 }
 
 /// What figures print of a curve's spline.
@@ -88,8 +141,8 @@ pub struct CurveSpline<'a> {
     pub max_at: f64,
 }
 
-/// The spline of a curve result (figures are made of curve results only:
-/// [`run_at`] refuses surfaces; a surface's gives empty lists).
+/// The spline of a curve result (a surface's gives empty lists and `max_at`
+/// NaN).
 #[must_use]
 pub fn curve_spline(r: &RunOutput) -> CurveSpline<'_> {
     let max_at = r.error.max_at.t().unwrap_or(f64::NAN);
@@ -149,6 +202,30 @@ pub fn curves_at(model: &Model, alpha: Alpha, params: &[f64]) -> Result<(Points,
         }
     }
     model.visit(At(alpha, params))
+}
+
+/// The crisp and the defuzzified surface of `model` at `alpha` at the
+/// parameters `uv` (the ends of the largest distance, at `error.max_at`).
+///
+/// # Errors
+/// [`Error::Surface`] for a curve model; [`Error::Core`] if `uv` lies
+/// outside the domain.
+pub fn surfaces_at(model: &Model, alpha: Alpha, uv: [f64; 2]) -> Result<[Vec<f64>; 2], Error> {
+    struct At(Alpha, [f64; 2]);
+    impl ModelVisitor for At {
+        type Output = Result<[Vec<f64>; 2], Error>;
+        fn curve<const D: usize>(self, _: &FuzzyCurve<D>) -> Self::Output {
+            Err(Error::Surface)
+        }
+        fn surface<const D: usize>(self, s: &FuzzySurface<D>) -> Self::Output {
+            let solution = s.solve(self.0);
+            let [u, v] = self.1;
+            let crisp = solution.crisp_surface().eval(u, v)?;
+            let defuzzified = solution.defuzzified_surface().eval(u, v)?;
+            Ok([crisp.to_vec(), defuzzified.to_vec()])
+        }
+    }
+    model.visit(At(alpha, uv))
 }
 
 /// Levels sampled together: bounds the memory of a sweep over many alphas
@@ -244,6 +321,9 @@ pub fn sampled_distances(
     alphas: &[Alpha],
     samples: usize,
 ) -> Result<Vec<[f64; 2]>, Error> {
+    if let Some(grid) = surface_grid(model) {
+        return surface_distances(model, alphas, grid);
+    }
     let mut out = vec![[0.0; 2]; alphas.len()];
     for_each_level(model, alphas, samples, &mut |k, d| {
         let n = d.len();
@@ -265,6 +345,62 @@ pub fn sampled_distances(
         out[k] = [max, rms];
     })?;
     Ok(out)
+}
+
+/// [`sampled_distances`] of a surface, on the grid `[su, sv]` of uniform
+/// `(u, v)`: the mean square by the trapezoidal rule in both directions
+/// (weights `ωₐ·ω_b`, ½ at each end of each direction).
+fn surface_distances(
+    model: &Model,
+    alphas: &[Alpha],
+    [su, sv]: [usize; 2],
+) -> Result<Vec<[f64; 2]>, Error> {
+    struct Levels<'a>(&'a [Alpha], [usize; 2]);
+    impl ModelVisitor for Levels<'_> {
+        type Output = Result<Vec<[f64; 2]>, Error>;
+        fn curve<const D: usize>(self, _: &FuzzyCurve<D>) -> Self::Output {
+            Err(Error::Surface)
+        }
+        fn surface<const D: usize>(self, s: &FuzzySurface<D>) -> Self::Output {
+            let [su, sv] = self.1;
+            let grid = |x: &t2spline::NurbsSurface<D>| {
+                x.sample_grid(Params::Uniform(su), Params::Uniform(sv))
+                    .map(t2spline::sampling::Grid::into_samples)
+            };
+            let crisp = grid(&s.crisp_surface())?;
+            let end = |i: usize, n: usize| if i == 0 || i + 1 == n { 0.5 } else { 1.0 };
+            self.0
+                .iter()
+                .map(|&a| {
+                    let d = grid(&s.solve(a).defuzzified_surface())?;
+                    // Both grids have su·sv points.
+                    let dist: Vec<f64> = d
+                        .points()
+                        .zip(crisp.points())
+                        .map(|(p, q)| {
+                            euclidean_norm(&std::array::from_fn::<f64, D, _>(|k| p[k] - q[k]))
+                        })
+                        .collect();
+                    let max = dist.iter().copied().fold(0.0, f64::max);
+                    let (mut sum, mut weight) = (0.0, 0.0);
+                    if max > 0.0 {
+                        for (i, v) in dist.iter().enumerate() {
+                            let w = end(i / sv, su) * end(i % sv, sv);
+                            sum += w * (v / max) * (v / max);
+                            weight += w;
+                        }
+                    }
+                    let rms = if weight > 0.0 {
+                        max * (sum / weight).sqrt()
+                    } else {
+                        0.0
+                    };
+                    Ok([max, rms])
+                })
+                .collect()
+        }
+    }
+    model.visit(Levels(alphas, [su, sv]))
 }
 
 /// The fuzzy number of one coordinate of one control point.

@@ -20,9 +20,12 @@ pub enum Error {
         /// The job's dimension.
         dimension: usize,
     },
-    /// The figures of surface jobs are not drawn by this version.
-    #[error("figures of surface jobs are not available yet; `t2spline run` computes them")]
+    /// A figure or computation of curves only was asked of a surface job.
+    #[error("this is drawn for curve jobs only, not for surfaces")]
     Surface,
+    /// A 3-D view that cannot be used.
+    #[error("bad view: {0}")]
+    View(String),
     /// Reading the job or writing a file failed.
     #[error(transparent)]
     Io(#[from] t2spline_io::Error),

@@ -133,6 +133,11 @@ pub fn place(
     for f in forbidden {
         texts.add_rect(*f);
     }
+    for item in &panel.items {
+        if let Mark::Text { at, text } = &item.mark {
+            texts.add_rect(crate::obstacles::text_rect(pl, *at, text));
+        }
+    }
     let plot = pl.plot.grow(-1.0);
     let mut out: Vec<Option<Placed>> = vec![None; panel.items.len()];
     for pass in [Priority::Always, Priority::IfRoom] {

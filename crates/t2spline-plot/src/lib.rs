@@ -74,6 +74,7 @@ mod svg;
 mod ticks;
 
 pub use error::Error;
+pub use figures::surface::View;
 pub use figures::{all_figures, Aspect, FigureOptions, NumberChoice, FIGURE_NAMES};
 pub use geometry::{Px, Rect};
 pub use labels::{place as place_labels, Placed};
@@ -83,7 +84,7 @@ pub use output::{render_files, Format};
 #[cfg(feature = "png")]
 pub use png::{svg_to_png, Pixmap, PNG_DPI, PNG_SCALE};
 pub use report::{render as render_report, Stops, DATA_BUDGET};
-pub use scene::{ColorBar, Figure, Item, LegendEntry, Mark, Panel, Priority, Xy};
+pub use scene::{ColorBar, Facet, Figure, Item, LegendEntry, Mark, Panel, Priority, Xy};
 pub use simplify::simplify;
 pub use style::{viridis, Color, Fill, Marker, Shape, Stroke};
 pub use svg::render as render_svg;

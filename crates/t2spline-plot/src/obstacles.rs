@@ -338,6 +338,20 @@ pub fn panel_obstacles(panel: &Panel, pl: &PanelLayout) -> Obstacles {
     o
 }
 
+/// The box of a [`Mark::Text`] centred at `at`.
+#[must_use]
+pub fn text_rect(pl: &PanelLayout, at: [f64; 2], text: &str) -> Rect {
+    let [x, y] = pl.to_px(at);
+    let w = crate::font::text_width(text, crate::style::font_size::TICK);
+    let h = crate::font::line_height(crate::style::font_size::TICK);
+    Rect {
+        x: x - 0.5 * w,
+        y: y - 0.5 * h,
+        w,
+        h,
+    }
+}
+
 /// Adds what `panel` draws to `o`.
 pub fn add_panel(o: &mut Obstacles, panel: &Panel, pl: &PanelLayout) {
     let px = |points: &[[f64; 2]]| points.iter().map(|&p| pl.to_px(p)).collect::<Vec<Px>>();
@@ -369,6 +383,17 @@ pub fn add_panel(o: &mut Obstacles, panel: &Panel, pl: &PanelLayout) {
                 let px = pl.to_px([*x, 0.0])[0];
                 o.add_segment([px, pl.plot.y], [px, pl.plot.bottom()]);
             }
+            Mark::Mesh { facets } => {
+                for f in facets {
+                    if f.points.len() > 2 {
+                        o.add_area(&px(&f.points));
+                    }
+                    for s in &f.lines {
+                        o.add_segment(pl.to_px(s[0]), pl.to_px(s[1]));
+                    }
+                }
+            }
+            Mark::Text { at, text } => o.add_rect(text_rect(pl, *at, text)),
             Mark::Label { .. } | Mark::Empty => {}
         }
     }

@@ -66,6 +66,9 @@ pub struct Panel {
     pub y_range: Option<[f64; 2]>,
     /// What is drawn, in order (later on top).
     pub items: Vec<Item>,
+    /// Whether the panel has a frame with grid, ticks and axis labels; a 3-D
+    /// view draws its own box instead.
+    pub frame: bool,
 }
 
 impl Panel {
@@ -89,6 +92,17 @@ impl Panel {
             x_range: None,
             y_range: None,
             items: Vec::new(),
+            frame: true,
+        }
+    }
+
+    /// A panel without frame, ticks or axis labels, one data unit the same
+    /// length on both axes: a projected 3-D view that draws its own box.
+    #[must_use]
+    pub fn view() -> Panel {
+        Panel {
+            frame: false,
+            ..Panel::curves("", "")
         }
     }
 
@@ -170,8 +184,38 @@ pub enum Mark {
         /// Whether it may be left out when there is no room.
         priority: Priority,
     },
+    /// Polygons and lines drawn in the given order, one after another (a
+    /// depth-sorted 3-D view: farthest first).
+    Mesh {
+        /// What is drawn, in order.
+        facets: Vec<Facet>,
+    },
+    /// A text centred on a fixed point (a tick label of a 3-D box), with a
+    /// white halo; not moved by label placement.
+    Text {
+        /// The centre of the text.
+        at: Xy,
+        /// The text.
+        text: String,
+    },
     /// Nothing (an item absent at this alpha, kept so keys stay aligned).
     Empty,
+}
+
+/// One element of a [`Mark::Mesh`]: a filled polygon (none when `points` is
+/// empty) and, drawn right after it, straight lines in one style.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Facet {
+    /// The polygon's corners; empty for lines alone.
+    pub points: Vec<Xy>,
+    /// The polygon's fill; an opaque fill also outlines the polygon in its
+    /// own colour, so that neighbouring polygons show no seams.
+    pub fill: Fill,
+    /// Segments drawn after the polygon (lines of the surface along its
+    /// edges), with `stroke`.
+    pub lines: Vec<[Xy; 2]>,
+    /// How `lines` are drawn.
+    pub stroke: Option<Stroke>,
 }
 
 /// Whether a label must be shown.

@@ -82,7 +82,11 @@ fn spread() -> impl Strategy<Value = f64> {
 /// Every figure of `job` at `alpha`, as SVG files and rendered one by one.
 fn figures_and_report(job: &Job, alpha: f64, number: NumberChoice, aspect: Aspect, report: bool) {
     let alpha = Alpha::try_new(alpha).unwrap();
-    let options = FigureOptions { number, aspect };
+    let options = FigureOptions {
+        number,
+        aspect,
+        ..FigureOptions::default()
+    };
     if let Ok(figures) = returns("all_figures", || all_figures(job, alpha, &options)) {
         for fig in &figures {
             returns("render_svg", || render_svg(fig));

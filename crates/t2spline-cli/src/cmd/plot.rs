@@ -1,5 +1,5 @@
 //! `t2spline plot JOB.json -o DIR [--format svg|png|both] [--point I --axis x|y|z]
-//! [--aspect equal|auto] [--alpha A]`.
+//! [--aspect equal|auto] [--view AZ,EL] [--alpha A]`.
 
 use t2spline::job::Overrides;
 use t2spline::Axis;
@@ -24,6 +24,7 @@ pub fn figure_options(args: &FigureArgs) -> FigureOptions {
             AspectArg::Equal => Aspect::Equal,
             AspectArg::Auto => Aspect::Auto,
         },
+        view: args.view,
     }
 }
 

@@ -17,6 +17,7 @@
 pub mod curve;
 mod number;
 pub mod style;
+pub mod surface;
 
 use t2spline::job::Job;
 use t2spline::{Alpha, Axis};
@@ -26,6 +27,7 @@ pub use number::number_figure;
 use crate::scene::Figure;
 use crate::{data, Error};
 use curve::{CurveScene, Zoom};
+use surface::{SurfaceScene, View};
 
 /// The file stems of all figures, in the order [`all_figures`] returns them.
 pub const FIGURE_NAMES: [&str; 7] = [
@@ -68,15 +70,18 @@ pub enum Aspect {
 }
 
 /// What the figures show beyond the job and alpha.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct FigureOptions {
     /// The number of the `number` figure.
     pub number: NumberChoice,
-    /// The scaling of curve panels.
+    /// The scaling of curve panels (and of the 3-D box of surfaces).
     pub aspect: Aspect,
+    /// The direction the 3-D views of surfaces look from.
+    pub view: View,
 }
 
-/// Every figure of the job at `alpha`, in the order of [`FIGURE_NAMES`].
+/// Every figure of the job at `alpha`, in the order of [`FIGURE_NAMES`]; a
+/// surface job has all but `alpha-sweep`.
 ///
 /// # Errors
 /// [`Error::NoSuchPoint`] or [`Error::NoSuchAxis`] if `options.number` names
@@ -85,6 +90,17 @@ pub fn all_figures(job: &Job, alpha: Alpha, options: &FigureOptions) -> Result<V
     let number = number_figure(job, alpha, options.number)?;
     let result = data::compute(job, alpha)?;
     let heights = job.model.heights();
+    if job.model.is_surface() {
+        let scene = SurfaceScene::new(&result, &heights, options.view, options.aspect);
+        return Ok(vec![
+            number,
+            surface::stage1_figure(&scene),
+            surface::stage2_figure(&scene),
+            surface::stage3_figure(&scene),
+            surface::stage4_figure(job, &scene)?,
+            curve::distance_figure(job, alpha.get())?,
+        ]);
+    }
     let scene = CurveScene::new(&result, &heights, options.aspect);
     Ok(vec![
         number,

@@ -59,7 +59,13 @@ pub(super) fn bounds(panel: &Panel) -> Option<[f64; 4]> {
             Mark::Segments { segments, .. } => {
                 segments.iter().flatten().copied().for_each(&mut add)
             }
-            Mark::Label { anchor, .. } => add(*anchor),
+            Mark::Label { anchor, .. } | Mark::Text { at: anchor, .. } => add(*anchor),
+            Mark::Mesh { facets } => {
+                for f in facets {
+                    f.points.iter().copied().for_each(&mut add);
+                    f.lines.iter().flatten().copied().for_each(&mut add);
+                }
+            }
             Mark::HRule { .. } | Mark::VRule { .. } | Mark::Empty => {}
         }
     }

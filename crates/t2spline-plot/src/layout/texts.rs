@@ -118,7 +118,8 @@ pub(super) fn place_fixed(
             .zip(&chosen)
             .map(|(it, &c)| {
                 let mut it = it.clone();
-                if !c {
+                // Fixed texts stay: labels keep off them.
+                if !c && !matches!(it.mark, Mark::Text { .. }) {
                     it.mark = Mark::Empty;
                 }
                 it

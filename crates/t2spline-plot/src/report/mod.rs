@@ -34,6 +34,7 @@ use crate::figures::curve::{
     distance_figure, stage1_figure, stage2_figure, stage3_figure, stage4_figure, sweep_figure,
     CurveScene, Zoom,
 };
+use crate::figures::surface::{self, SurfaceScene};
 use crate::figures::{number_figure, FigureOptions};
 use crate::layout;
 use crate::scene::Figure;
@@ -75,7 +76,7 @@ pub fn render(
         for (list, f) in kinds.iter_mut().zip([number, s2, s3, s4]) {
             list.push(f);
         }
-        let run = data::run_at(job, alpha, job.samples.count())?;
+        let run = data::run_job(job, alpha)?;
         for (k, (name, text)) in files_of(&run)?.into_iter().enumerate() {
             match files.get_mut(k) {
                 Some((_, texts)) => texts.push(text),
@@ -119,11 +120,18 @@ pub fn render(
         "strings": strings.into_json(),
         "downloads": downloads::pack(&files),
     });
-    let scene_heights = heights.clone();
-    let fig_result = data::compute(job, start)?;
-    let scene = CurveScene::new(&fig_result, &scene_heights, options.aspect);
-    let stage1 = static_svg(&stage1_figure(&scene));
-    let sweep = static_svg(&sweep_figure(job)?);
+    let fig_result = data::compute_within(job, start, data::REPORT_SURFACE_GRID)?;
+    let surface = job.model.is_surface();
+    let (stage1, sweep) = if surface {
+        let scene = SurfaceScene::new(&fig_result, &heights, options.view, options.aspect);
+        (static_svg(&surface::stage1_figure(&scene)), None)
+    } else {
+        let scene = CurveScene::new(&fig_result, &heights, options.aspect);
+        (
+            static_svg(&stage1_figure(&scene)),
+            Some(static_svg(&sweep_figure(job)?)),
+        )
+    };
     let table_html: Vec<String> = table_defs
         .iter()
         .map(|t| tables::html(t, &start_run))
@@ -151,16 +159,31 @@ pub fn render(
         options.number.axis.name(),
         options.number.point
     );
+    let captions = if surface {
+        SURFACE_CAPTIONS
+    } else {
+        CURVE_CAPTIONS
+    };
     for s in [
         Section { id: "number", title: "One fuzzy number (paper Figs. 3.1, 4.1–4.4)", svg: &figs[0].svg, figure: "number", caption: &number_caption, csv: None, tables: vec![] },
-        Section { id: "stage1", title: "Stage 1: the fuzzy control points and layer curves (Fig. 5.1)", svg: &stage1, figure: "stage1-fuzzy", caption: "Does not depend on α.", csv: Some("stage1-layers.csv"), tables: vec![fuzzy_points_table(job, &start_run)] },
+        Section { id: "stage1", title: captions[0], svg: &stage1, figure: "stage1-fuzzy", caption: "Does not depend on α.", csv: Some("stage1-layers.csv"), tables: vec![fuzzy_points_table(job, &start_run)] },
         Section { id: "stage2", title: "Stage 2: alpha-cut (Fig. 5.2)", svg: &figs[1].svg, figure: "stage2-alpha-cut", caption: "Cut ends of every number at α; a lower end is null above its height h.", csv: Some("stage2-alpha-cut.csv"), tables: vec![table_html[0].clone()] },
-        Section { id: "stage3", title: "Stage 3: type reduction (Fig. 5.3)", svg: &figs[2].svg, figure: "stage3-type-reduced", caption: "Each control point becomes a type-1 triangle (left, crisp, right).", csv: Some("stage3-type-reduced.csv"), tables: vec![table_html[1].clone()] },
-        Section { id: "stage4", title: "Stage 4: defuzzification and distance (Fig. 5.4)", svg: &figs[3].svg, figure: "stage4-defuzzified", caption: "The distance between the crisp and the defuzzified curve at equal t, over the whole domain; the right panel magnifies its largest value, with both curves computed anew there.", csv: Some("stage4-defuzzified.csv"), tables: vec![table_html[2].clone(), table_html[3].clone()] },
+        Section { id: "stage3", title: "Stage 3: type reduction (Fig. 5.3)", svg: &figs[2].svg, figure: "stage3-type-reduced", caption: captions[1], csv: Some("stage3-type-reduced.csv"), tables: vec![table_html[1].clone()] },
+        Section { id: "stage4", title: "Stage 4: defuzzification and distance (Fig. 5.4)", svg: &figs[3].svg, figure: "stage4-defuzzified", caption: captions[2], csv: Some("stage4-defuzzified.csv"), tables: vec![table_html[2].clone(), table_html[3].clone()] },
         Section { id: "distance", title: "The distance as α varies", svg: &figs[4].svg, figure: "distance-alpha", caption: "Largest and rms distance against α, with both sides of every h; the vertical line is the shown α.", csv: None, tables: vec![] },
-        Section { id: "sweep", title: "Where along the curve the solution moves", svg: &sweep, figure: "alpha-sweep", caption: "‖D(t) − C(t)‖ against t for several α; does not depend on the slider.", csv: None, tables: vec![] },
     ] {
         page.section(&s);
+    }
+    if let Some(sweep) = &sweep {
+        page.section(&Section {
+            id: "sweep",
+            title: "Where along the curve the solution moves",
+            svg: sweep,
+            figure: "alpha-sweep",
+            caption: "‖D(t) − C(t)‖ against t for several α; does not depend on the slider.",
+            csv: None,
+            tables: vec![],
+        });
     }
     page.job(job_text);
     if std::env::var("T2SPLINE_DEBUG_SIZES").is_ok() {
@@ -179,6 +202,20 @@ pub fn render(
     Ok(page.html)
 }
 
+/// Titles of the stage 1 section, captions of the stage 3 and 4 sections.
+const CURVE_CAPTIONS: [&str; 3] = [
+    "Stage 1: the fuzzy control points and layer curves (Fig. 5.1)",
+    "Each control point becomes a type-1 triangle (left, crisp, right).",
+    "The distance between the crisp and the defuzzified curve at equal t, over the whole domain; the right panel magnifies its largest value, with both curves computed anew there.",
+];
+
+/// [`CURVE_CAPTIONS`] of a surface job.
+const SURFACE_CAPTIONS: [&str; 3] = [
+    "Stage 1: the fuzzy control net and layer surfaces",
+    "Each control point becomes a type-1 triangle (left, crisp, right); the map shows how far apart the left and right surfaces are.",
+    "The crisp surface coloured by its distance to the defuzzified one at equal (u, v); the map marks where the distance is largest (error.max_at).",
+];
+
 /// The stops: as fine a grid as the packed size of two sample stops allows
 /// within [`DATA_BUDGET`]. The samples (α = 0.3 and 0.9) do not depend on the
 /// start, so a job gets the same grid whatever alpha its report starts at.
@@ -187,7 +224,7 @@ fn choose_stops(job: &Job, start: Alpha, options: &FigureOptions) -> Result<Stop
     let mut total = 0;
     for a in [0.3, 0.9] {
         let alpha = Alpha::try_new(a)?;
-        let run = data::run_at(job, alpha, job.samples.count())?;
+        let run = data::run_job(job, alpha)?;
         let files: Vec<String> = files_of(&run)?.into_iter().map(|(_, t)| t).collect();
         let figures: Vec<String> = stop_figures(job, alpha, &heights, options)?
             .iter()
@@ -209,7 +246,16 @@ fn stop_figures(
     heights: &[f64],
     options: &FigureOptions,
 ) -> Result<[Figure; 4], Error> {
-    let r = data::compute(job, alpha)?;
+    let r = data::compute_within(job, alpha, data::REPORT_SURFACE_GRID)?;
+    if job.model.is_surface() {
+        let scene = SurfaceScene::new(&r, heights, options.view, options.aspect);
+        return Ok([
+            number_figure(job, alpha, options.number)?,
+            surface::stage2_figure(&scene),
+            surface::stage3_figure(&scene),
+            surface::stage4_figure(job, &scene)?,
+        ]);
+    }
     let scene = CurveScene::new(&r, heights, options.aspect);
     Ok([
         number_figure(job, alpha, options.number)?,
@@ -246,12 +292,18 @@ fn stop_json(a: f64, r: &RunOutput, heights: &[f64], defs: &[tables::Table]) -> 
         .iter()
         .map(|t| (t.id.to_owned(), json!(tables::cells(t, r))))
         .collect();
+    let mut bar = serde_json::Map::new();
+    bar.insert("m-max".into(), pair(r.error.max));
+    for (id, v) in page::max_at_ids(r.error.max_at) {
+        bar.insert(id.into(), pair(v));
+    }
+    bar.insert("m-rms".into(), pair(r.error.rms));
     json!({
         "alpha": number_text(Some(a)),
         "shown": rounded(Some(a)),
         "regime": r.regime,
         "at_h": heights.contains(&a),
-        "bar": {"m-max": pair(r.error.max), "m-max-at": pair(data::curve_spline(r).max_at), "m-rms": pair(r.error.rms)},
+        "bar": bar,
         "cells": cells,
     })
 }

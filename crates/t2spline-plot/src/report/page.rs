@@ -5,7 +5,7 @@
 
 use std::fmt::Write as _;
 
-use t2spline::job::RunOutput;
+use t2spline::job::{Parameter, RunOutput};
 
 use super::tables::{number_text, rounded};
 use crate::svg::escape;
@@ -62,6 +62,27 @@ fn metric(id: &str, v: f64) -> String {
         number_text(Some(v)),
         rounded(Some(v))
     )
+}
+
+/// Where the distance is largest: `t = …`, or `(u, v) = (…, …)` (the ids
+/// of [`max_at_ids`]).
+fn max_at(r: &RunOutput) -> String {
+    let ids = max_at_ids(r.error.max_at);
+    let values: Vec<String> = ids.iter().map(|(id, v)| metric(id, *v)).collect();
+    match values.as_slice() {
+        [t] => format!("t = {t}"),
+        _ => format!("(u, v) = ({})", values.join(", ")),
+    }
+}
+
+/// The sticky bar's ids of `max_at` with their values: `m-max-at` for `t`
+/// (or `u`), `m-max-at-v` for `v`.
+#[must_use]
+pub fn max_at_ids(at: Parameter) -> Vec<(&'static str, f64)> {
+    match at {
+        Parameter::T(t) => vec![("m-max-at", t)],
+        Parameter::Uv([u, v]) => vec![("m-max-at", u), ("m-max-at-v", v)],
+    }
 }
 
 impl Page {
@@ -133,9 +154,9 @@ impl Page {
         let e = &r.error;
         let _ = write!(
             self.html,
-            "</div>\n<div class=\"row\">\n<span class=\"metrics\">max distance {} at t = {}, rms {}</span>\n<span class=\"downloads\">result at this α: <button type=\"button\" class=\"dl\" data-file=\"result.json\">JSON</button></span>\n</div>\n<p class=\"note\" id=\"alpha-note\" aria-live=\"polite\">Stops at α = 0, {step}, …, 1 and at every h. At α = h type reduction switches from averaging three cut ends to two (SPEC §3), so the solution jumps just above h; that is the paper's method. Every number equals <code>t2spline run --alpha A</code> at the shown α (rounded where shown; exact in the downloads).</p>\n</div>\n<main>\n",
+            "</div>\n<div class=\"row\">\n<span class=\"metrics\">max distance {} at {}, rms {}</span>\n<span class=\"downloads\">result at this α: <button type=\"button\" class=\"dl\" data-file=\"result.json\">JSON</button></span>\n</div>\n<p class=\"note\" id=\"alpha-note\" aria-live=\"polite\">Stops at α = 0, {step}, …, 1 and at every h. At α = h type reduction switches from averaging three cut ends to two (SPEC §3), so the solution jumps just above h; that is the paper's method. Every number equals <code>t2spline run --alpha A</code> at the shown α (rounded where shown; exact in the downloads).</p>\n</div>\n<main>\n",
             metric("m-max", e.max),
-            metric("m-max-at", crate::data::curve_spline(r).max_at),
+            max_at(r),
             metric("m-rms", e.rms),
         );
     }

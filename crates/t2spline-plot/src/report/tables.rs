@@ -9,7 +9,7 @@
 
 use std::fmt::Write as _;
 
-use t2spline::job::RunOutput;
+use t2spline::job::{ControlPoints, Parameter, RunOutput};
 use t2spline::Layer;
 
 use crate::svg::escape;
@@ -105,9 +105,20 @@ pub fn tables(r: &RunOutput) -> Vec<Table> {
     defuzzified
         .header
         .extend(AXES[..d].iter().map(|a| (*a).to_owned()));
+    // A surface's points are `[row][column]` in the result file.
+    let net = r.control_points.crisp.grid();
+    let point = |k: usize| match net {
+        Some([_, nv]) => (
+            format!("{}.{}", k / nv, k % nv),
+            format!("({}, {})", k / nv, k % nv),
+        ),
+        None => (k.to_string(), k.to_string()),
+    };
     for k in 0..shown {
+        let (path, name) = point(k);
+        let k = path;
         for (a, axis) in AXES[..d].iter().enumerate() {
-            let heads = vec![k.to_string(), (*axis).to_owned()];
+            let heads = vec![name.clone(), (*axis).to_owned()];
             let cells = Layer::ALL
                 .iter()
                 .map(|l| match l {
@@ -126,26 +137,28 @@ pub fn tables(r: &RunOutput) -> Vec<Table> {
             ));
         }
         defuzzified.rows.push((
-            vec![k.to_string()],
+            vec![name],
             (0..d).map(|a| format!("defuzzified.{k}.{a}")).collect(),
         ));
     }
     for t in [&mut cut, &mut reduced, &mut defuzzified] {
         t.left_out = n - shown;
     }
-    let mut distance = table(
-        "table-distance",
-        "Distance between the curves (error)",
-        &["", "max", "max_at (t)", "rms"],
-    );
-    distance.rows.push((
-        vec!["distance".to_owned()],
-        vec![
-            "error.max".into(),
-            "error.max_at".into(),
-            "error.rms".into(),
-        ],
-    ));
+    let (header, at): (&[&str], Vec<String>) = match r.error.max_at {
+        Parameter::T(_) => (
+            &["", "max", "max_at (t)", "rms"],
+            vec!["error.max_at".into()],
+        ),
+        Parameter::Uv(_) => (
+            &["", "max", "max_at (u)", "max_at (v)", "rms"],
+            vec!["error.max_at.0".into(), "error.max_at.1".into()],
+        ),
+    };
+    let mut distance = table("table-distance", "Distance (error)", header);
+    let mut keys = vec!["error.max".to_owned()];
+    keys.extend(at);
+    keys.push("error.rms".into());
+    distance.rows.push((vec!["distance".to_owned()], keys));
     vec![cut, reduced, defuzzified, distance]
 }
 
@@ -155,27 +168,42 @@ pub fn value(r: &RunOutput, key: &str) -> Option<f64> {
     let parts: Vec<&str> = key.split('.').collect();
     let cp = &r.control_points;
     let idx = |s: &str| s.parse::<usize>().ok();
+    let net = cp.crisp.grid();
+    let net_index = |i: &str, j: &str| Some(idx(i)? * net?[1] + idx(j)?);
+    let at = |name: &str, k, a| point_value(cp, name, k, a);
+    let cut = |layer: &str, k, a| cut_value(cp, layer, k, a);
     match parts.as_slice() {
         ["error", "max"] => Some(r.error.max),
         ["error", "max_at"] => r.error.max_at.t(),
+        ["error", "max_at", c] => match r.error.max_at {
+            Parameter::Uv(uv) => uv.get(idx(c)?).copied(),
+            Parameter::T(_) => None,
+        },
         ["error", "rms"] => Some(r.error.rms),
-        [name, k, a] => {
-            let (k, a) = (idx(k)?, idx(a)?);
-            let points = match *name {
-                "crisp" => &cp.crisp,
-                "type_reduced_left" => &cp.type_reduced_left,
-                "type_reduced_right" => &cp.type_reduced_right,
-                "defuzzified" => &cp.defuzzified,
-                _ => return None,
-            };
-            points.coord(a).get(k).copied()
-        }
-        ["alpha_cut", layer, k, a] => {
-            let l = Layer::ALL.into_iter().find(|l| l.name() == *layer)?;
-            *cp.alpha_cut.get(l)?.coord(idx(a)?).get(idx(k)?)?
-        }
+        [name, i, j, a] if net.is_some() => at(name, net_index(i, j)?, idx(a)?),
+        ["alpha_cut", layer, i, j, a] => cut(layer, net_index(i, j)?, idx(a)?),
+        [name, k, a] => at(name, idx(k)?, idx(a)?),
+        ["alpha_cut", layer, k, a] => cut(layer, idx(k)?, idx(a)?),
         _ => None,
     }
+}
+
+/// Looks up `points.k.a` in `control_points` for [`value`].
+fn point_value(cp: &ControlPoints, name: &str, k: usize, a: usize) -> Option<f64> {
+    let points = match name {
+        "crisp" => &cp.crisp,
+        "type_reduced_left" => &cp.type_reduced_left,
+        "type_reduced_right" => &cp.type_reduced_right,
+        "defuzzified" => &cp.defuzzified,
+        _ => return None,
+    };
+    points.coord(a).get(k).copied()
+}
+
+/// Looks up `alpha_cut.layer.k.a` in `control_points` for [`value`].
+fn cut_value(cp: &ControlPoints, layer: &str, k: usize, a: usize) -> Option<f64> {
+    let l = Layer::ALL.into_iter().find(|l| l.name() == layer)?;
+    *cp.alpha_cut.get(l)?.coord(a).get(k)?
 }
 
 /// The exact and the rounded texts of a table's cells for one result, in

@@ -25,7 +25,7 @@ fn table_cells_are_the_run_result_at_the_job_sampling() {
     for a in Stops::new(&job, Alpha::try_new(0.8).unwrap(), 100).alphas {
         let alpha = Alpha::try_new(a).unwrap();
         let figure_result = data::compute(&job, alpha).unwrap();
-        let run_result = data::run_at(&job, alpha, job.samples.count()).unwrap();
+        let run_result = data::run_job(&job, alpha).unwrap();
         for t in tables::tables(&run_result) {
             assert_eq!(
                 tables::cells(&t, &figure_result),
@@ -61,7 +61,7 @@ fn the_report_marks_h_starts_at_the_given_alpha_and_carries_run_s_files() {
     let downloads = &data["downloads"];
     for k in [0, 37, 60, 61, 100] {
         let alpha = Alpha::try_new(stops[k]["alpha"].as_str().unwrap().parse().unwrap()).unwrap();
-        let files = files_of(&data::run_at(&job, alpha, job.samples.count()).unwrap()).unwrap();
+        let files = files_of(&data::run_job(&job, alpha).unwrap()).unwrap();
         assert_eq!(files.len(), downloads["files"].as_array().unwrap().len());
         for (name, text) in &files {
             assert_eq!(

@@ -6,7 +6,7 @@ use std::fmt::Write as _;
 use crate::geometry::Px;
 use crate::labels::Placed;
 use crate::layout::PanelLayout;
-use crate::scene::{Mark, Xy};
+use crate::scene::{Facet, Mark, Xy};
 use crate::simplify::simplify;
 use crate::style::{font_size, Marker, Shape, GREY, WHITE};
 use crate::ticks::coord;
@@ -109,8 +109,69 @@ pub(super) fn mark(m: &Mark, pl: &PanelLayout, clip: &str, tolerance: f64) -> St
                 stroke_attrs(stroke)
             )
         }
+        Mark::Mesh { facets } => mesh(facets, pl, &clip_attr),
+        Mark::Text { at, text } => {
+            let [x, y] = pl.to_px(*at);
+            text_el(
+                x,
+                y + 0.5 * crate::font::cap_height(font_size::TICK),
+                font_size::TICK,
+                "middle",
+                &format!(" stroke=\"{WHITE}\" stroke-width=\"3\" stroke-linejoin=\"round\" paint-order=\"stroke\""),
+                text,
+            )
+        }
         Mark::Label { .. } | Mark::Empty => String::new(),
     }
+}
+
+/// A mesh: one `<path>` per polygon (opaque ones outlined in their own
+/// colour against seams) and one per facet's lines, in the facets' order.
+fn mesh(facets: &[Facet], pl: &PanelLayout, clip_attr: &str) -> String {
+    let mut s = format!("<g stroke-linejoin=\"round\"{clip_attr}>");
+    for f in facets {
+        if f.points.len() > 2 {
+            s.push_str("<path d=\"");
+            for (k, p) in f.points.iter().enumerate() {
+                let [x, y] = pl.to_px(*p);
+                let _ = write!(
+                    s,
+                    "{}{} {}",
+                    if k == 0 { 'M' } else { 'L' },
+                    coord(x),
+                    coord(y)
+                );
+            }
+            let c = f.fill.color;
+            if f.fill.opacity >= 1.0 {
+                let _ = write!(s, "Z\" fill=\"{c}\" stroke=\"{c}\" stroke-width=\"0.5\"/>");
+            } else {
+                let _ = write!(
+                    s,
+                    "Z\" fill=\"{c}\" fill-opacity=\"{}\"/>",
+                    coord(f.fill.opacity)
+                );
+            }
+        }
+        if let (Some(stroke), false) = (&f.stroke, f.lines.is_empty()) {
+            s.push_str("<path d=\"");
+            let mut end = None;
+            for [a, b] in &f.lines {
+                // A segment that starts where the last ended continues its
+                // stretch, so dashes run on.
+                if end != Some(*a) {
+                    let a = pl.to_px(*a);
+                    let _ = write!(s, "M{} {}", coord(a[0]), coord(a[1]));
+                }
+                let p = pl.to_px(*b);
+                let _ = write!(s, "L{} {}", coord(p[0]), coord(p[1]));
+                end = Some(*b);
+            }
+            let _ = write!(s, "\" {}/>", stroke_attrs(stroke));
+        }
+    }
+    s.push_str("</g>\n");
+    s
 }
 
 /// Markers at pixel positions, in one group.

@@ -262,6 +262,19 @@ fn frame(panel: &Panel, pl: &PanelLayout, clip: &str) -> String {
         "<clipPath id=\"{clip}\"><rect{}/></clipPath>\n",
         rect_attrs(&r)
     );
+    if !panel.frame {
+        if let Some(t) = &panel.title {
+            s.push_str(&text_el(
+                r.x + 0.5 * r.w,
+                r.y - 7.0,
+                font_size::AXIS,
+                "middle",
+                "",
+                t,
+            ));
+        }
+        return s;
+    }
     let xs: Vec<f64> = pl.x.ticks.iter().map(|&t| pl.to_px([t, 0.0])[0]).collect();
     let ys: Vec<f64> = pl.y.ticks.iter().map(|&t| pl.to_px([0.0, t])[1]).collect();
     let mut grid = String::new();

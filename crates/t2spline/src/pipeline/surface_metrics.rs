@@ -60,6 +60,11 @@ const CUBATURE_TOLERANCE: f64 = 1e-13;
 /// Cell subdivisions of the cubature over the whole domain.
 const SUBDIVISIONS: usize = 20_000;
 
+/// The relative margin of the convex hull bound for the rounding of an
+/// evaluation (at most `ku·kv ≤ 1024` terms of relative error `2⁻⁵³` each,
+/// about `2.3·10⁻¹³`), with room to spare.
+const HULL_SLACK: f64 = 1e-9;
+
 /// A span rectangle: its span indices and its ranges in u and v.
 type Patch = ([usize; 2], [[f64; 2]; 2]);
 
@@ -75,10 +80,11 @@ impl SurfaceDistance {
             .flat_map(|&(su, ru)| spans[1].iter().map(move |&(sv, rv)| ([su, sv], [ru, rv])))
             .collect();
         // By the convex hull property (positive weights), `d` on a patch is at
-        // most the largest norm of the patch's difference control points.
-        // Patches are measured from the largest bound down, and one whose
-        // bound is below the largest distance found so far is skipped: it
-        // cannot hold the maximum. Ties go to the patch first in the net's
+        // most the largest norm of the patch's difference control points
+        // (plus rounding: a few units in the last place per basis term,
+        // covered by HULL_SLACK). Patches are measured from the largest bound
+        // down, and one whose bound is below the largest distance found so
+        // far is skipped: it cannot hold the maximum. Ties go to the patch first in the net's
         // order, as if every patch had been measured in that order.
         let bounds: Vec<f64> = patches.iter().map(|p| hull_bound(difference, p)).collect();
         let mut by_bound: Vec<usize> = (0..patches.len()).collect();
@@ -125,6 +131,7 @@ fn hull_bound<const D: usize>(s: &NurbsSurface<D>, &([su, sv], _): &Patch) -> f6
         .flat_map(|row| row.iter().skip(sv + 1 - kv).take(kv))
         .map(|p| euclidean_norm(p))
         .fold(0.0_f64, f64::max)
+        * (1.0 + HULL_SLACK)
 }
 
 /// The largest distance on one patch and where it is reached.

@@ -111,8 +111,15 @@ pub fn distance_figure(job: &Job, alpha: f64) -> Result<Figure, crate::Error> {
         .collect::<Result<Vec<_>, _>>()?;
     let samples = data::figure_samples(&job.model);
     let d = data::sampled_distances(&job.model, &levels, samples)?;
+    let (what, over) = match data::surface_grid(&job.model) {
+        Some([su, sv]) => (
+            "surfaces",
+            format!("‖D(u, v) − C(u, v)‖ over the {su} × {sv} grid of uniform (u, v)"),
+        ),
+        None => ("curves", format!("‖D(t) − C(t)‖ over {samples} uniform t")),
+    };
     let inner: Vec<f64> = heights.iter().copied().filter(|&h| h < 1.0).collect();
-    let mut p = Panel::graph("α", "distance between the curves");
+    let mut p = Panel::graph("α", &format!("distance between the {what}"));
     let top = d.iter().map(|x| x[0]).fold(0.0, f64::max);
     p.x_range = Some([-0.02, 1.02]);
     p.y_range = Some([0.0, if top > 0.0 { 1.12 * top } else { 1.0 }]);
@@ -159,11 +166,14 @@ pub fn distance_figure(job: &Job, alpha: f64) -> Result<Figure, crate::Error> {
     }
     Ok(Figure {
         notes: vec![format!(
-            "Max and rms of ‖D(t) − C(t)‖ over {samples} uniform t (t2spline run computes error.max and error.rms exactly)."
+            "Max and rms of {over} (t2spline run computes error.max and error.rms exactly)."
         )],
         ..Figure::new(
             "distance-alpha",
-            "Distance between the crisp and the defuzzified curve as α varies",
+            format!(
+                "Distance between the crisp and the defuzzified {} as α varies",
+                &what[..what.len() - 1]
+            ),
             "α = 0, 0.01, …, 1 and both sides of every h: the solution jumps at α = h (SPEC §3)",
             vec![p],
             legend,

@@ -19,7 +19,7 @@ pub use distance::{alpha_rule, distance_figure};
 pub use stage1::stage1_figure;
 pub use stage2::stage2_figure;
 pub use stage3::stage3_figure;
-pub use stage4::{stage4_figure, Zoom};
+pub use stage4::{largest_distance, stage4_figure, Zoom};
 pub use sweep::sweep_figure;
 
 use t2spline::job::{Points, RunOutput};

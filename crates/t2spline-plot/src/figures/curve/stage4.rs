@@ -131,7 +131,7 @@ pub fn stage4_figure(job: &Job, scene: &CurveScene<'_>, zoom: Zoom) -> Result<Fi
 
 /// The segment between the two ends of the largest distance, its end
 /// markers, and (with `text`) its annotation, which is always placed.
-pub(super) fn largest_distance(p: &mut Panel, ends: [Xy; 2], text: Option<String>) {
+pub fn largest_distance(p: &mut Panel, ends: [Xy; 2], text: Option<String>) {
     p.push(
         "distance",
         Mark::Segments {
