@@ -193,7 +193,9 @@ impl<'a> Problem<'a> {
                     rejected.iter_mut().for_each(|r| *r = false);
                     continue 'outer;
                 }
-                // Step from x towards z as far as feasibility allows.
+                // Step from x towards z as far as feasibility allows. Some
+                // z[j] <= 0 here (else the loop went on above).
+                #[allow(clippy::expect_used)]
                 let (blocking, step) = keep
                     .iter()
                     .filter(|&&j| z[j] <= 0.0)

@@ -43,7 +43,8 @@ impl<const D: usize> NurbsCurve<D> {
     /// that is not finite and positive or outside [`MIN_WEIGHT`](crate::MIN_WEIGHT) …
     /// [`MAX_WEIGHT`](crate::MAX_WEIGHT); [`Error::NotFinite`] for a non-finite
     /// coordinate and [`Error::OutOfRange`] for one of magnitude above
-    /// [`MAX_MAGNITUDE`](crate::MAX_MAGNITUDE).
+    /// [`MAX_MAGNITUDE`](crate::MAX_MAGNITUDE); [`Error::Dimension`] unless
+    /// `1 ≤ D ≤ 3`.
     pub fn try_new(
         control_points: Vec<[f64; D]>,
         weights: Vec<f64>,
@@ -57,8 +58,9 @@ impl<const D: usize> NurbsCurve<D> {
             });
         }
         check_weights(&weights, n)?;
+        let axes = Axis::first::<D>()?;
         for (i, p) in control_points.iter().enumerate() {
-            for (axis, &value) in Axis::first::<D>().into_iter().zip(p) {
+            for (&axis, &value) in axes.iter().zip(p) {
                 if !value.is_finite() {
                     return Err(Error::NotFinite {
                         place: Place::new(i, axis),

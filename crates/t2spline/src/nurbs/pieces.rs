@@ -117,6 +117,8 @@ pub(crate) fn tame_pieces(
         // [lo, hi]: a rational Bézier curve.
         let local = KnotVector::from_parts_unchecked(u[span - p..=span + p + 1].to_vec(), p);
         let rows: Vec<Row> = (span - p..=span).map(&row).collect();
+        // lo < hi lie in the span, the local curve's domain: segment cannot fail.
+        #[allow(clippy::expect_used)]
         let (_, bezier) = segment(&local, &rows, lo, hi)
             .expect("lo < hi lie in the span, the domain of the local curve");
         // Depth first, the right half pushed first: pieces come out in order.

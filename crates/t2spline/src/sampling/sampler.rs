@@ -256,7 +256,7 @@ impl Sampler {
         let params = params.into();
         let sorted = params.check(self.domain)?;
         let n = params.len();
-        let mut out = outputs(self.channels, n, buffers);
+        let mut out = outputs(self.channels, n, buffers)?;
         let mut slices: Vec<&mut [f64]> = out.iter_mut().map(Vec::as_mut_slice).collect();
         self.run(params, sorted, &mut slices);
         Ok(out)
@@ -291,7 +291,8 @@ impl Sampler {
         #[cfg(feature = "parallel")]
         {
             let threads = rayon::current_num_threads();
-            if threads > 1 && params.len() * (self.channels + 1) >= PARALLEL_MIN_VALUES {
+            if threads > 1 && params.len().saturating_mul(self.channels + 1) >= PARALLEL_MIN_VALUES
+            {
                 let chunk = params
                     .len()
                     .div_ceil(threads * 4)
@@ -366,8 +367,21 @@ impl Sampler {
 
 /// `channels` output vectors of `n` values, taken from `buffers` (resized)
 /// while it has them, else new.
-pub(crate) fn outputs(channels: usize, n: usize, buffers: &mut Vec<Vec<f64>>) -> Vec<Vec<f64>> {
-    (0..channels)
+///
+/// # Errors
+/// [`Error::Memory`] if `n` values are more than a vector can hold (memory
+/// the system cannot give still ends the process, as any allocation does).
+pub(crate) fn outputs(
+    channels: usize,
+    n: usize,
+    buffers: &mut Vec<Vec<f64>>,
+) -> Result<Vec<Vec<f64>>, Error> {
+    if n.checked_mul(size_of::<f64>())
+        .is_none_or(|bytes| bytes > isize::MAX as usize)
+    {
+        return Err(Error::Memory { values: n });
+    }
+    Ok((0..channels)
         .map(|_| match buffers.pop() {
             Some(mut v) => {
                 v.resize(n, 0.0);
@@ -377,7 +391,7 @@ pub(crate) fn outputs(channels: usize, n: usize, buffers: &mut Vec<Vec<f64>>) ->
             // already, so nothing is written twice.
             None => vec![0.0; n],
         })
-        .collect()
+        .collect())
 }
 
 /// Checks caller-given outputs: one slice per channel, each of `n` values.
