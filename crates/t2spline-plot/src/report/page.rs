@@ -5,7 +5,7 @@
 
 use std::fmt::Write as _;
 
-use t2spline::job::{Parameter, RunOutput};
+use t2spline::job::{Parameter, RunOutput, Spline};
 
 use super::tables::{number_text, rounded};
 use super::Stops;
@@ -95,7 +95,10 @@ impl Page {
         heights: &[f64],
         sections: &[(&str, &str)],
     ) {
-        let title = "Normal type-2 fuzzy rational B-spline curve";
+        let title = match r.spline {
+            Spline::Curve { .. } => "Normal type-2 fuzzy rational B-spline curve",
+            Spline::Surface { .. } => "Normal type-2 fuzzy rational B-spline surface",
+        };
         let _ = write!(
             self.html,
             "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>t2spline report: {}</title>\n<style>\n{}</style>\n</head>\n<body>\n<header>\n<h1>{title}</h1>\n",
