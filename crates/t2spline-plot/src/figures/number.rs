@@ -218,7 +218,7 @@ pub fn number_figure(job: &Job, alpha: Alpha, choice: NumberChoice) -> Result<Fi
         "number",
         format!(
             "Fuzzy number: coordinate {name} of control point {}",
-            choice.point
+            choice.point_name(&job.model)
         ),
         format!(
             "{regime}; type-reduced ({}, {}, {}), defuzzified {}",

@@ -155,9 +155,10 @@ pub fn render(
         &stops.step_text(),
     );
     let number_caption = format!(
-        "Coordinate {} of control point {}: its upper (UMF), primary and lower (LMF) membership functions, the cut at α and the type-reduced triangle with its centroid. Other numbers: t2spline report --point I --axis x|y|z.",
+        "Coordinate {} of control point {}: its upper (UMF), primary and lower (LMF) membership functions, the cut at α and the type-reduced triangle with its centroid. Other numbers: t2spline report --point {} --axis x|y|z.",
         options.number.axis.name(),
-        options.number.point
+        options.number.point_name(&job.model),
+        if job.model.is_surface() { "I,J" } else { "I" }
     );
     let captions = if surface {
         SURFACE_CAPTIONS
