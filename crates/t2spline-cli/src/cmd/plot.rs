@@ -87,7 +87,8 @@ pub fn plot(args: &PlotArgs) -> anyhow::Result<()> {
     };
     // Everything is rendered before anything is written, and written all or
     // nothing; the paths written go to standard output.
-    let figures = all_figures(&job, alpha, &figure_options(&args.figures, &job)?).map_err(about_number)?;
+    let figures =
+        all_figures(&job, alpha, &figure_options(&args.figures, &job)?).map_err(about_number)?;
     let mut out = Outputs::default();
     let mut listing = String::new();
     for (name, bytes) in render_files(&figures, format)? {

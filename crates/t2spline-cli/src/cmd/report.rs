@@ -23,8 +23,9 @@ pub fn report(args: &ReportArgs) -> anyhow::Result<()> {
         Err(t2spline::Error::MissingAlpha) => Alpha::try_new(DEFAULT_START)?,
         Err(e) => return Err(about_option(e)),
     };
-    let html = t2spline_plot::render_report(&job, &text, start, &figure_options(&args.figures, &job)?)
-        .map_err(about_number)?;
+    let html =
+        t2spline_plot::render_report(&job, &text, start, &figure_options(&args.figures, &job)?)
+            .map_err(about_number)?;
     let mut out = Outputs::default();
     out.in_dir(&args.output, "report.html", html.into_bytes());
     out.to(

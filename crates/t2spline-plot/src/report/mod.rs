@@ -64,7 +64,7 @@ pub fn render(
     options: &FigureOptions,
 ) -> Result<String, Error> {
     let heights = job.model.heights();
-    let stops = choose_stops(job, start, options)?;
+    let (stops, with_files) = choose_stops(job, start, options)?;
     let mut stop_data = Vec::with_capacity(stops.alphas.len());
     let mut kinds: [Vec<Figure>; 4] = Default::default();
     let mut files: Vec<(String, Vec<String>)> = Vec::new();
@@ -77,10 +77,12 @@ pub fn render(
             list.push(f);
         }
         let run = data::run_job(job, alpha)?;
-        for (k, (name, text)) in files_of(&run)?.into_iter().enumerate() {
-            match files.get_mut(k) {
-                Some((_, texts)) => texts.push(text),
-                None => files.push((name, vec![text])),
+        if with_files.carries(a) {
+            for (k, (name, text)) in files_of(&run)?.into_iter().enumerate() {
+                match files.get_mut(k) {
+                    Some((_, texts)) => texts.push(text),
+                    None => files.push((name, vec![text])),
+                }
             }
         }
         stop_data.push(run);
@@ -119,6 +121,8 @@ pub fn render(
         "figures": figs.iter().map(|f| f.data.clone()).collect::<Vec<_>>(),
         "strings": strings.into_json(),
         "downloads": downloads::pack(&files),
+        "files_at": with_files.index_json(&stops.alphas),
+        "files_note": with_files.note(),
     });
     let fig_result = data::compute_within(job, start, data::REPORT_SURFACE_GRID)?;
     let surface = job.model.is_surface();
@@ -192,11 +196,12 @@ pub fn render(
         let figures = pack::packed_len(&json!([data_block["figures"], data_block["strings"]]));
         let downloads = pack::packed_len(&data_block["downloads"]);
         let numbers = pack::packed_len(&data_block["stops"]);
+        let m = files.first().map_or(1, |(_, t)| t.len().max(1));
         eprintln!(
-            "stops {n}: figures {} per stop, downloads {} per stop, numbers {} per stop",
+            "stops {n}: figures {} per stop, numbers {} per stop; downloads at {m} stops, {} each",
             figures / n,
-            downloads / n,
-            numbers / n
+            numbers / n,
+            downloads / m
         );
     }
     page.finish(&pack::pack(&data_block));
@@ -217,12 +222,21 @@ const SURFACE_CAPTIONS: [&str; 3] = [
     "The crisp surface coloured by its distance to the defuzzified one at equal (u, v); the map marks where the distance is largest (error.max_at).",
 ];
 
-/// The stops: as fine a grid as the packed size of two sample stops allows
-/// within [`DATA_BUDGET`]. The samples (α = 0.3 and 0.9) do not depend on the
-/// start, so a job gets the same grid whatever alpha its report starts at.
-fn choose_stops(job: &Job, start: Alpha, options: &FigureOptions) -> Result<Stops, Error> {
+/// The stops, and those that carry the downloads: as fine a grid as the
+/// packed size of two sample stops allows within [`DATA_BUDGET`], with the
+/// downloads at every stop while that grid is 0.05 or finer, and always for
+/// a curve. A larger surface job (sampled finely, its files are most of a
+/// stop: 2 MB at 101 × 101) carries the downloads on a coarser grid or at the
+/// start only ([`FileStops`]), so that its figures still get fine stops. The samples (α = 0.3 and 0.9) do
+/// not depend on the start, so a job gets the same grid whatever alpha its
+/// report starts at.
+fn choose_stops(
+    job: &Job,
+    start: Alpha,
+    options: &FigureOptions,
+) -> Result<(Stops, FileStops), Error> {
     let heights = job.model.heights();
-    let mut total = 0;
+    let (mut whole, mut figures_cost) = (0, 0);
     for a in [0.3, 0.9] {
         let alpha = Alpha::try_new(a)?;
         let run = data::run_job(job, alpha)?;
@@ -231,13 +245,106 @@ fn choose_stops(job: &Job, start: Alpha, options: &FigureOptions) -> Result<Stop
             .iter()
             .map(svg::render)
             .collect();
-        // Measured on jobs of 4 to 200 points: a stop's packed downloads take
-        // a third of a whole result's files packed alone (half its numbers
-        // change, and the CSV files repeat the result's), and its figure
-        // parts a bit under half of its whole figures.
-        total += pack::packed_len(&json!(files)) / 3 + pack::packed_len(&json!(figures)) * 9 / 20;
+        whole += pack::packed_len(&json!(files));
+        figures_cost += pack::packed_len(&json!(figures)) * 9 / 20;
     }
-    Ok(finest_within(job, start, (total / 2).max(1), DATA_BUDGET))
+    // Measured on jobs of 4 to 200 points: a stop's packed downloads take a
+    // third of a whole result's files packed alone (half its numbers change,
+    // and the CSV files repeat the result's), and its figure parts a bit
+    // under half of its whole figures.
+    let (whole, figures_cost) = ((whole / 2).max(1), (figures_cost / 2).max(1));
+    let files_cost = (whole / 3).max(1);
+    let all = finest_within(job, start, files_cost + figures_cost, DATA_BUDGET);
+    if all.per_unit >= FILES_EVERYWHERE || !job.model.is_surface() {
+        return Ok((all, FileStops::Every));
+    }
+    // A surface's figures change more from stop to stop than a curve's: its
+    // stored parts take about three quarters of its whole figures (measured
+    // on the terrain example and 40 × 40 nets), not 9/20.
+    let figures_cost = figures_cost * 5 / 3;
+    if whole > DATA_BUDGET / 2 {
+        // A result this large takes most of a stop's time to compute (every
+        // stop needs its exact distance), so the figures get half the budget.
+        let stops = finest_within(job, start, figures_cost, DATA_BUDGET / 2);
+        return Ok((stops, FileStops::None(whole)));
+    }
+    // The start's files whole; the figures' grid within what is left.
+    let stops = finest_within(job, start, figures_cost, DATA_BUDGET - whole);
+    let figures_bytes = stops.alphas.len() * figures_cost + whole;
+    let files = stops::STEPS
+        .iter()
+        .filter(|&&n| stops.per_unit % n == 0)
+        .map(|&n| Stops::new(job, start, n))
+        .find(|s| figures_bytes + s.alphas.len() * files_cost <= DATA_BUDGET)
+        .map_or(FileStops::Start(start.get()), FileStops::Grid);
+    Ok((stops, files))
+}
+
+/// Grids of stops this fine or finer carry the downloads at every stop.
+const FILES_EVERYWHERE: u32 = 20;
+
+/// The stops that carry the downloads.
+#[derive(Debug)]
+enum FileStops {
+    /// Every stop.
+    Every,
+    /// The stops of a coarser grid (with every h and the start).
+    Grid(Stops),
+    /// Only the starting alpha.
+    Start(f64),
+    /// None: one stop's files would take this many bytes, more than half
+    /// the report's budget.
+    None(usize),
+}
+
+impl FileStops {
+    /// Whether the stop at `alpha` carries the downloads.
+    fn carries(&self, alpha: f64) -> bool {
+        match self {
+            FileStops::Every => true,
+            FileStops::Grid(s) => s.alphas.contains(&alpha),
+            FileStops::Start(a) => *a == alpha,
+            FileStops::None(_) => false,
+        }
+    }
+
+    /// Per stop of `alphas`, the index of its downloads, or `null`.
+    fn index_json(&self, alphas: &[f64]) -> Value {
+        let mut next = 0;
+        alphas
+            .iter()
+            .map(|&a| {
+                if self.carries(a) {
+                    next += 1;
+                    json!(next - 1)
+                } else {
+                    Value::Null
+                }
+            })
+            .collect()
+    }
+
+    /// What the page says at a stop without downloads (before "for α = A:
+    /// t2spline run JOB --alpha A"), or `null` if every stop has them.
+    fn note(&self) -> Value {
+        let where_ = match self {
+            FileStops::Every => return Value::Null,
+            FileStops::Grid(s) => format!(
+                "at α = 0, {}, …, 1, at every h and at the starting α",
+                s.step_text()
+            ),
+            FileStops::Start(_) => "at the starting α only".to_owned(),
+            FileStops::None(bytes) => {
+                return json!(format!(
+                    "The result files are left out of this report: at the job's samples they would take {:.1} MB at every α",
+                    *bytes as f64 / 1e6
+                ))
+            }
+        };
+        json!(format!(
+            "To keep the report small, the result files are in it {where_}"
+        ))
+    }
 }
 
 /// The figures that change with alpha: the number and stages 2–4.
