@@ -226,10 +226,10 @@ const SURFACE_CAPTIONS: [&str; 3] = [
 /// packed size of two sample stops allows within [`DATA_BUDGET`], with the
 /// downloads at every stop while that grid is 0.05 or finer, and always for
 /// a curve. A larger surface job (sampled finely, its files are most of a
-/// stop: 2 MB at 101 × 101) carries the downloads on a coarser grid or at the
-/// start only ([`FileStops`]), so that its figures still get fine stops. The samples (α = 0.3 and 0.9) do
-/// not depend on the start, so a job gets the same grid whatever alpha its
-/// report starts at.
+/// stop: 2 MB at 101 × 101) carries the downloads on a coarser grid, at the
+/// start only or not at all ([`FileStops`]), so that its figures still get
+/// fine stops. The samples (α = 0.3 and 0.9) do not depend on the start, so
+/// a job gets the same grid whatever alpha its report starts at.
 fn choose_stops(
     job: &Job,
     start: Alpha,
