@@ -29,7 +29,9 @@ Contents
 run
     A job (a dict with the job-file schema, or a path) through the same
     validator and engine as ``t2spline run``; the result file's keys, with
-    numpy arrays.
+    numpy arrays. ``type_reduction=`` (or the job's ``"type_reduction"``)
+    chooses ``"paper"`` (the default, stages 3–4 above), ``"centroid"``,
+    ``"nie-tan"`` or ``"alpha-planes"`` (SPEC §10).
 JobError
     A job that breaks the rules (a ``ValueError``), one problem per line.
 FuzzyNumber, AlphaCut
@@ -41,6 +43,9 @@ NurbsCurve
 FuzzyCurve, Solution
     Stage 1 from numpy arrays, sampled by the engine; stages 2–4 by
     ``FuzzyCurve.solve(alpha)``.
+centroid
+    The centroid ``[c_l, c_r]`` of an interval type-2 set given by samples
+    (Karnik–Mendel, EKM, EIASC, or the Nie–Tan value).
 fit
     Fuzzy data points → a fuzzy curve and a summary of the fit.
 benchmark_curve
@@ -88,6 +93,7 @@ from ._t2spline import (
     Solution,
     __version__,
     benchmark_curve,
+    centroid,
     fit,
     run,
 )
@@ -101,6 +107,7 @@ __all__ = [
     "Solution",
     "__version__",
     "benchmark_curve",
+    "centroid",
     "fit",
     "run",
     "types",

@@ -8,6 +8,8 @@ from numpy.typing import ArrayLike
 from .types import (
     AlphaCutCurves,
     AlphaCuts,
+    Centroid,
+    CentroidMethod,
     Distance,
     FitSummary,
     Floats,
@@ -16,6 +18,7 @@ from .types import (
     LayerSamples,
     SideName,
     StageSamples,
+    TypeReductionName,
     Which,
 )
 
@@ -29,6 +32,7 @@ __all__ = [
     "__version__",
     "_panic_for_tests",
     "benchmark_curve",
+    "centroid",
     "fit",
     "run",
 ]
@@ -43,8 +47,17 @@ def run(
     alpha: Optional[float] = None,
     samples: Optional[Union[int, tuple[int, int]]] = None,
     derivatives: Optional[int] = None,
+    type_reduction: Optional[TypeReductionName] = None,
 ) -> dict[str, Any]:
     """Runs a job as `t2spline run` does; the result file's keys, numpy arrays."""
+
+def centroid(
+    x: ArrayLike,
+    lmf: ArrayLike,
+    umf: ArrayLike,
+    method: CentroidMethod = "km",
+) -> Centroid:
+    """The centroid of an interval type-2 set given by samples (SPEC §10)."""
 
 @final
 class AlphaCut:

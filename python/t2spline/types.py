@@ -14,7 +14,7 @@ Every array is a ``float64`` numpy array (``Floats``).
 from __future__ import annotations
 
 import os
-from typing import Any, Dict, List, Literal, Optional, TypedDict, Union
+from typing import Any, Dict, List, Literal, Optional, Tuple, TypedDict, Union
 
 import numpy as np
 from numpy.typing import NDArray
@@ -22,6 +22,8 @@ from numpy.typing import NDArray
 __all__ = [
     "AlphaCutCurves",
     "AlphaCuts",
+    "Centroid",
+    "CentroidMethod",
     "Deviation",
     "Distance",
     "FitSummary",
@@ -32,6 +34,7 @@ __all__ = [
     "LayerSamples",
     "SideName",
     "StageSamples",
+    "TypeReductionName",
     "Which",
 ]
 
@@ -53,6 +56,14 @@ Which = Union[Literal["upper"], Literal["primary"], Literal["lower"]]
 
 #: A side of a type-reduced number.
 SideName = Union[Literal["left"], Literal["right"]]
+
+#: A type reduction of stages 3–4 (SPEC §10), as in a job's ``"type_reduction"``.
+TypeReductionName = Union[
+    Literal["paper"], Literal["centroid"], Literal["nie-tan"], Literal["alpha-planes"],
+]
+
+#: An algorithm of ``centroid``.
+CentroidMethod = Union[Literal["km"], Literal["ekm"], Literal["eiasc"], Literal["nie-tan"]]
 
 #: A job: a dict with the keys of a job file, or the path of one.
 Job = Union[Dict[str, Any], str, "os.PathLike[str]"]
@@ -112,6 +123,16 @@ class Distance(TypedDict):
     max: float
     max_at: float
     rms: float
+
+
+class Centroid(TypedDict):
+    """``centroid``: the ends ``c_l``, ``c_r`` of the centroid, their midpoint,
+    and the switch points tried for each end ``(left, right)``."""
+
+    left: float
+    right: float
+    defuzzified: float
+    iterations: Tuple[int, int]
 
 
 class Deviation(TypedDict):

@@ -2,7 +2,9 @@
 
 use std::path::PathBuf;
 
+use clap::builder::{PossibleValuesParser, TypedValueParser};
 use clap::{Args, Parser, Subcommand, ValueEnum};
+use t2spline::TypeReduction;
 
 /// Normal type-2 fuzzy rational B-spline curves: model uncertain control points,
 /// cut, type-reduce and defuzzify them (Algorithm 1.1 of Zakaria, Wahab and
@@ -79,6 +81,23 @@ pub struct RunArgs {
     /// (result keys `curves.derivatives`, `curves.arc_length`); K from 1 to 16.
     #[arg(long, value_name = "K", allow_negative_numbers = true)]
     pub derivatives: Option<i64>,
+    #[command(flatten)]
+    pub reduction: ReductionArg,
+}
+
+/// `--type-reduction`, shared by the commands that run a job (`run`, `plot`,
+/// `report`, `export`).
+#[derive(Debug, Args)]
+pub struct ReductionArg {
+    /// The type reduction of stages 3–4; overrides the job file's
+    /// `type_reduction`: `paper` (the paper's, uses alpha; default),
+    /// `centroid` (interval type-2 centroid, Karnik–Mendel), `nie-tan`, or
+    /// `alpha-planes` (general type-2). Only `paper` uses alpha. A report
+    /// holds all four and opens on this one.
+    #[arg(long, value_name = "NAME",
+          value_parser = PossibleValuesParser::new(TypeReduction::ALL.map(TypeReduction::name))
+              .try_map(|s| s.parse::<TypeReduction>()))]
+    pub type_reduction: Option<TypeReduction>,
 }
 
 /// Arguments of `t2spline validate`.
@@ -188,6 +207,8 @@ pub struct PlotArgs {
     /// The level alpha in [0, 1]; overrides the job file.
     #[arg(long, value_name = "A", allow_negative_numbers = true)]
     pub alpha: Option<f64>,
+    #[command(flatten)]
+    pub reduction: ReductionArg,
 }
 
 /// Arguments of `t2spline report`.
@@ -204,6 +225,8 @@ pub struct ReportArgs {
     pub alpha: Option<f64>,
     #[command(flatten)]
     pub figures: FigureArgs,
+    #[command(flatten)]
+    pub reduction: ReductionArg,
 }
 
 /// Arguments of `t2spline fit`.
@@ -310,6 +333,8 @@ pub struct ExportArgs {
     /// file.
     #[arg(long, value_name = "A", allow_negative_numbers = true)]
     pub alpha: Option<f64>,
+    #[command(flatten)]
+    pub reduction: ReductionArg,
 }
 
 /// Arguments of `t2spline bench`.

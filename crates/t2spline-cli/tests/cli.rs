@@ -89,7 +89,7 @@ fn library_result(job_file: &Path, alpha: Option<f64>, samples: Option<u64>) -> 
     let overrides = Overrides {
         alpha,
         samples: samples.map(|n| vec![n]),
-        derivatives: None,
+        ..Overrides::default()
     };
     let result = job.run(&job.settings(&overrides).unwrap()).unwrap();
     serde_json::to_value(&result).unwrap()

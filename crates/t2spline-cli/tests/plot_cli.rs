@@ -26,7 +26,7 @@ fn on_example(sub: &str, dir: &Path) -> Command {
     c
 }
 
-const NAMES: [&str; 7] = [
+const NAMES: [&str; 8] = [
     "number",
     "stage1-fuzzy",
     "stage2-alpha-cut",
@@ -34,6 +34,7 @@ const NAMES: [&str; 7] = [
     "stage4-defuzzified",
     "alpha-sweep",
     "distance-alpha",
+    "reductions",
 ];
 
 #[test]
@@ -62,7 +63,7 @@ fn plot_writes_every_figure_in_both_formats_by_default() {
     }
     assert_eq!(
         std::fs::read_dir(&out).unwrap().count(),
-        14,
+        16,
         "no stray files"
     );
 }
@@ -82,7 +83,7 @@ fn plot_svg_only_and_a_chosen_number() {
         ])
         .assert()
         .success();
-    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 7);
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 8);
     let number = std::fs::read_to_string(dir.path().join("number.svg")).unwrap();
     assert!(
         number.contains("coordinate y of control point 3"),

@@ -4,10 +4,12 @@
 //! The page must load with no console errors and no network requests; moving
 //! the slider or typing an alpha must change the figures; every number shown
 //! must be `t2spline run --alpha A`'s, rounded where shown and exact in its
-//! `data-value`; every download must be the bytes `run` writes (JSON, CSV)
-//! or the figure (SVG, PNG at 300 dpi); the page must not scroll sideways at
-//! 800 pixels, headings must show below the sticky bar after jumping to
-//! them, and the page must print.
+//! `data-value`; selecting another type reduction must show the numbers and
+//! downloads of `t2spline run --type-reduction NAME`, with the slider at
+//! rest; every download must be the bytes `run` writes (JSON, CSV) or the
+//! figure (SVG, PNG at 300 dpi); the page must not scroll sideways at 800
+//! pixels, headings must show below the sticky bar after jumping to them,
+//! and the page must print.
 //!
 //! Without `chromium` and `chromedriver` the test says it was skipped and
 //! passes, unless `T2SPLINE_REQUIRE_BROWSER=1` (set by CI), when it fails.
@@ -132,13 +134,15 @@ fn lookup<'a>(result: &'a Value, key: &str) -> &'a Value {
     v
 }
 
-/// `t2spline run JOB --alpha A` (standard output) and the CSV files of
+/// `t2spline run JOB ARGS…` (standard output) and the CSV files of
 /// `--csv`, as the binary writes them.
-fn run_files(job: &Path, alpha: &str) -> (String, Vec<(String, String)>) {
+fn run_files(job: &Path, args: &[&str]) -> (String, Vec<(String, String)>) {
     let dir = tempfile::tempdir().unwrap();
     let out = Command::cargo_bin("t2spline")
         .unwrap()
-        .args(["run", job.to_str().unwrap(), "--alpha", alpha, "--csv"])
+        .args(["run", job.to_str().unwrap()])
+        .args(args)
+        .arg("--csv")
         .arg(dir.path())
         .output()
         .unwrap();
@@ -165,11 +169,19 @@ const READ_PAGE: &str = r#"
 const cells = Array.from(document.querySelectorAll("td[data-key]")).map(td => [td.dataset.key, td.dataset.value, td.textContent]);
 const bar = ["m-max", "m-max-at", "m-max-at-v", "m-rms"].filter(id => document.getElementById(id)).map(id => { const e = document.getElementById(id); return [id, e.dataset.value, e.textContent]; });
 return { alpha: document.getElementById("alpha-value").dataset.value, shown: document.getElementById("alpha-value").textContent,
+         reduction: document.getElementById("reduction").value, disabled: document.getElementById("alpha").disabled,
          field: document.getElementById("alpha-field").value, slider: Number(document.getElementById("alpha").value),
          cells: cells, bar: bar, max: Number(document.getElementById("alpha").max),
          s4: Array.from(document.querySelectorAll("[id^=s4-]")).map(e => e.innerHTML).join(""),
          note: document.getElementById("alpha-note").textContent,
          resources: performance.getEntriesByType("resource").length };
+"#;
+
+const SELECT_REDUCTION: &str = r#"
+const s = document.getElementById("reduction");
+s.value = arguments[0];
+s.dispatchEvent(new Event("change", { bubbles: true }));
+return s.value;
 "#;
 
 const MOVE_SLIDER: &str = r#"
@@ -261,13 +273,29 @@ impl Page<'_> {
         panic!("the report's data did not unpack");
     }
 
-    /// Every number on the page is run's at the shown alpha.
-    fn check_numbers(&self, job: &Path, page: &Value) -> Value {
+    /// Every number on the page is run's at the shown alpha, or with the
+    /// selected type reduction when it does not use alpha; returns run's
+    /// standard output and CSV files.
+    fn check_numbers(&self, job: &Path, page: &Value) -> (String, Vec<(String, String)>) {
         let alpha = page["alpha"].as_str().unwrap().to_owned();
-        let (stdout, _) = run_files(job, &alpha);
+        let reduction = page["reduction"].as_str().unwrap().to_owned();
+        let paper = reduction == "paper";
+        let args = if paper {
+            ["--alpha", alpha.as_str()]
+        } else {
+            ["--type-reduction", reduction.as_str()]
+        };
+        let (stdout, csv) = run_files(job, &args);
         let result: Value = serde_json::from_str(&stdout).unwrap();
-        assert_eq!(result["alpha"].to_string(), alpha, "alpha shown");
-        assert!(is_rounding(page["shown"].as_str().unwrap(), &alpha));
+        assert_eq!(result["type_reduction"], json!(reduction));
+        if paper {
+            assert_eq!(result["alpha"].to_string(), alpha, "alpha shown");
+            assert!(is_rounding(page["shown"].as_str().unwrap(), &alpha));
+        } else {
+            assert_eq!(result["alpha_used"], json!(false), "{reduction}");
+            assert_eq!(page["shown"], json!("not used"), "{reduction}");
+        }
+        let what = if paper { alpha } else { reduction };
         let cells = page["cells"].as_array().unwrap();
         assert!(cells.len() > 20, "tables have cells: {}", cells.len());
         for cell in cells.iter().chain(page["bar"].as_array().unwrap()) {
@@ -291,13 +319,39 @@ impl Page<'_> {
                 !expected.is_null() || exact == "null",
                 "{key} missing in the result"
             );
-            assert_eq!(exact, expected.to_string(), "alpha {alpha}: {key}");
+            assert_eq!(exact, expected.to_string(), "{what}: {key}");
             assert!(
                 is_rounding(text, exact),
-                "alpha {alpha}: {key} shows {text} for {exact}"
+                "{what}: {key} shows {text} for {exact}"
             );
         }
-        result
+        (stdout, csv)
+    }
+
+    /// The result and CSV files offered for download are `expected`'s
+    /// bytes (run's standard output and CSV files).
+    fn check_files(&self, expected: &(String, Vec<(String, String)>), what: &str) {
+        let (stdout, csv) = expected;
+        let d = self.exec(DOWNLOADS, json!([]));
+        let files = d["files"].as_array().unwrap();
+        assert_eq!(files.len(), 5, "the result and four CSV files: {files:?}");
+        for f in files {
+            let (name, text) = (f[0].as_str().unwrap(), f[1].as_str().unwrap());
+            let expected = if name == "result.json" {
+                stdout.as_str()
+            } else {
+                csv.iter()
+                    .find(|(n, _)| n == name)
+                    .map(|(_, t)| t.as_str())
+                    .unwrap_or_else(|| panic!("run writes no {name}"))
+            };
+            assert!(
+                text == expected,
+                "{what}: {name} differs from run's ({} vs {} bytes)",
+                text.len(),
+                expected.len()
+            );
+        }
     }
 }
 
@@ -310,7 +364,7 @@ struct Expected {
 }
 
 const CURVE: Expected = Expected {
-    figures: 7,
+    figures: 8,
     png_width: 3000,
     files_everywhere: true,
 };
@@ -388,6 +442,26 @@ fn check_report(
         seen_s4.len() > 2,
         "the stage 4 figure changes with the slider"
     );
+    // Every other type reduction: its own frame, the slider at rest, and
+    // every number and download that of `run --type-reduction NAME`.
+    let paper_page = page.exec(READ_PAGE, json!([]));
+    for name in ["centroid", "nie-tan", "alpha-planes"] {
+        assert_eq!(page.exec(SELECT_REDUCTION, json!([name])), json!(name));
+        let p = page.exec(READ_PAGE, json!([]));
+        assert_eq!(p["disabled"], json!(true), "{name}: slider at rest");
+        assert_eq!(p["slider"], paper_page["slider"], "{name}: slider kept");
+        let files = page.check_numbers(job, &p);
+        page.check_files(&files, name);
+        assert_ne!(p["s4"], paper_page["s4"], "{name}: stage 4 changes");
+    }
+    page.exec(SELECT_REDUCTION, json!(["paper"]));
+    let back = page.exec(READ_PAGE, json!([]));
+    assert_eq!(back["disabled"], json!(false), "the slider works again");
+    assert_eq!(
+        back["cells"], paper_page["cells"],
+        "back to the paper at the same stop"
+    );
+    assert_eq!(back["s4"], paper_page["s4"], "and its figures");
 
     // The number field drives the slider and the figures; an alpha between
     // stops shows the nearest and says so.
@@ -424,10 +498,7 @@ fn check_report(
             enabled["enabled"] == json!(true)
         })
         .collect();
-    assert!(
-        with_files.iter().any(|&f| f),
-        "some stop carries the files"
-    );
+    assert!(with_files.iter().any(|&f| f), "some stop carries the files");
     assert_eq!(
         with_files.iter().all(|&f| f),
         expected.files_everywhere,
@@ -444,31 +515,8 @@ fn check_report(
     page.exec(MOVE_SLIDER, json!([at]));
     let p = page.exec(READ_PAGE, json!([]));
     let alpha = p["alpha"].as_str().unwrap().to_owned();
-    let (stdout, csv) = run_files(job, &alpha);
+    page.check_files(&run_files(job, &["--alpha", &alpha]), &alpha);
     let d = page.exec(DOWNLOADS, json!([]));
-    let files = d["files"].as_array().unwrap();
-    assert_eq!(
-        files.len(),
-        1 + csv.len(),
-        "the result and run's CSV files: {files:?}"
-    );
-    for f in files {
-        let (name, text) = (f[0].as_str().unwrap(), f[1].as_str().unwrap());
-        let expected = if name == "result.json" {
-            stdout.as_str()
-        } else {
-            csv.iter()
-                .find(|(n, _)| n == name)
-                .map(|(_, t)| t.as_str())
-                .unwrap_or_else(|| panic!("run writes no {name}"))
-        };
-        assert!(
-            text == expected,
-            "alpha {alpha}: {name} differs from run's ({} vs {} bytes)",
-            text.len(),
-            expected.len()
-        );
-    }
     let svgs = d["svgs"].as_array().unwrap();
     assert_eq!(svgs.len(), expected.figures, "an SVG per figure");
     for f in svgs {
@@ -586,7 +634,8 @@ fn surface_report_in_headless_chromium_matches_t2spline_run() {
     };
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
     let driver = Driver::start(&chromedriver);
-    // Six figures (no sweep along t); stage 4 is two panels and a colour bar,
+    // Six figures (no sweep along t, no reductions figure); stage 4 is two
+    // panels and a colour bar,
     // 1096 units wide.
     let surface = Expected {
         figures: 6,

@@ -175,7 +175,8 @@ fn optional<T: Clone>(values: impl Iterator<Item = Option<T>>) -> (Vec<T>, Vec<i
 
 /// Writes the summary of a run of many jobs as a Parquet table with the
 /// columns of [`SUMMARY_COLUMNS`](crate::SUMMARY_COLUMNS): `name`, `file`
-/// and `status` required text, `regime` and `message` optional text,
+/// and `status` required text, `type_reduction`, `regime` and `message`
+/// optional text,
 /// `alpha`, `error_max`, `error_rms` optional `DOUBLE` (null for a job that
 /// did not run).
 ///
@@ -194,11 +195,12 @@ fn write_summary<W: Write + Send>(
 ) -> Result<(), ParquetError> {
     const OPTIONAL: Repetition = Repetition::OPTIONAL;
     const REQUIRED: Repetition = Repetition::REQUIRED;
-    let [name, file, status, regime, alpha, max, rms, message] = crate::SUMMARY_COLUMNS;
+    let [name, file, status, reduction, regime, alpha, max, rms, message] = crate::SUMMARY_COLUMNS;
     let fields = vec![
         text(name, REQUIRED)?,
         text(file, REQUIRED)?,
         text(status, REQUIRED)?,
+        text(reduction, OPTIONAL)?,
         text(regime, OPTIONAL)?,
         optional_double(alpha)?,
         optional_double(max)?,
@@ -216,11 +218,13 @@ fn write_summary<W: Write + Send>(
         strings(&|j| Some(&j.name)),
         strings(&|j| Some(&j.file)),
         strings(&|j| Some(&j.status)),
+        strings(&|j| j.type_reduction.as_deref()),
         strings(&|j| j.regime.as_deref()),
     ];
     for (k, (values, levels)) in columns_of_text.iter().enumerate() {
         let mut c = next(&mut group)?;
-        let levels = (k == 3).then_some(&levels[..]);
+        // The first three are required.
+        let levels = (k >= 3).then_some(&levels[..]);
         c.typed::<ByteArrayType>()
             .write_batch(values, levels, None)?;
         c.close()?;

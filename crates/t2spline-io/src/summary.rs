@@ -14,9 +14,14 @@ pub struct JobSummary {
     /// `ok`, or the kind of failure: `invalid`, `unreadable`, `unwritable`,
     /// `internal`.
     pub status: String,
-    /// `alpha <= h`, `alpha > h` or `mixed` (SPEC §3), if it ran.
+    /// The type reduction's name (`paper`, `centroid`, `nie-tan`,
+    /// `alpha-planes`; SPEC §10), if it ran.
+    pub type_reduction: Option<String>,
+    /// `alpha <= h`, `alpha > h` or `mixed` (SPEC §3), if it ran with the
+    /// paper's type reduction.
     pub regime: Option<String>,
-    /// The level alpha, if it ran.
+    /// The level alpha, if it ran with the paper's type reduction (the only
+    /// one that uses alpha).
     pub alpha: Option<f64>,
     /// `error.max`, if it ran.
     pub error_max: Option<f64>,
@@ -27,10 +32,11 @@ pub struct JobSummary {
 }
 
 /// The column names of a summary, in order.
-pub const SUMMARY_COLUMNS: [&str; 8] = [
+pub const SUMMARY_COLUMNS: [&str; 9] = [
     "name",
     "file",
     "status",
+    "type_reduction",
     "regime",
     "alpha",
     "error_max",
@@ -60,16 +66,16 @@ fn number(x: Option<f64>) -> Vec<u8> {
 /// ```
 /// # use t2spline_io::{write_summary_csv, JobSummary};
 /// let ok = JobSummary { name: "a".into(), file: "jobs/a.json".into(), status: "ok".into(),
-///     regime: Some("alpha > h".into()), alpha: Some(0.8), error_max: Some(0.044), error_rms: Some(0.01),
-///     message: None };
+///     type_reduction: Some("paper".into()), regime: Some("alpha > h".into()), alpha: Some(0.8),
+///     error_max: Some(0.044), error_rms: Some(0.01), message: None };
 /// let bad = JobSummary { name: "b".into(), file: "jobs/b.json".into(), status: "invalid".into(),
-///     regime: None, alpha: None, error_max: None, error_rms: None,
+///     type_reduction: None, regime: None, alpha: None, error_max: None, error_rms: None,
 ///     message: Some("jobs/b.json:3:5: alhpa: unknown key".into()) };
 /// let mut out = Vec::new();
 /// write_summary_csv(&mut out, &[ok, bad])?;
-/// assert_eq!(String::from_utf8(out)?, "name,file,status,regime,alpha,error_max,error_rms,message\n\
-///     a,jobs/a.json,ok,alpha > h,0.8,0.044,0.01,\n\
-///     b,jobs/b.json,invalid,,,,,jobs/b.json:3:5: alhpa: unknown key\n");
+/// assert_eq!(String::from_utf8(out)?, "name,file,status,type_reduction,regime,alpha,error_max,error_rms,message\n\
+///     a,jobs/a.json,ok,paper,alpha > h,0.8,0.044,0.01,\n\
+///     b,jobs/b.json,invalid,,,,,,jobs/b.json:3:5: alhpa: unknown key\n");
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn write_summary_csv<W: Write>(writer: W, jobs: &[JobSummary]) -> io::Result<()> {
@@ -80,6 +86,7 @@ pub fn write_summary_csv<W: Write>(writer: W, jobs: &[JobSummary]) -> io::Result
             job.name.as_bytes(),
             job.file.as_bytes(),
             job.status.as_bytes(),
+            job.type_reduction.as_deref().unwrap_or_default().as_bytes(),
             job.regime.as_deref().unwrap_or_default().as_bytes(),
             &number(job.alpha),
             &number(job.error_max),

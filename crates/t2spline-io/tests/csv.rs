@@ -11,6 +11,8 @@ use t2spline_io::{render_csv, write_csv, CSV_FILES};
 fn compute(job: &Job, alpha: Alpha, samples: usize) -> RunOutput {
     job.run(&Settings {
         alpha,
+        type_reduction: t2spline::TypeReduction::Paper,
+        unused_alpha: None,
         samples: Samples::Along(samples),
         derivatives: None,
     })
@@ -295,7 +297,7 @@ proptest! {
         a in 0.0..=1.0f64,
         samples in 2usize..30,
     ) {
-        let job = Job { description: None, alpha: None, samples: Samples::Along(samples), model: curve };
+        let job = Job { description: None, alpha: None, type_reduction: t2spline::TypeReduction::Paper, samples: Samples::Along(samples), model: curve };
         check_values(&compute(&job, alpha(a), samples));
     }
 }
@@ -344,8 +346,15 @@ proptest! {
         sv in 2usize..7,
     ) {
         let samples = Samples::Grid([su, sv]);
-        let job = Job { description: None, alpha: None, samples, model: Model::Surface(surface) };
-        let r = job.run(&Settings { alpha: alpha(a), samples, derivatives: None }).unwrap();
+        let job = Job { samples, ..Job::new(Model::Surface(surface)) };
+        let r = job.run(&Settings {
+            alpha: alpha(a),
+            type_reduction: t2spline::TypeReduction::Paper,
+            unused_alpha: None,
+            samples,
+            derivatives: None,
+        })
+        .unwrap();
         let t2spline::job::Parameters::Grid { u, v } = &r.samples.params else {
             panic!("a grid")
         };

@@ -3,7 +3,7 @@
 
 use serde_json::{json, Value};
 use t2spline::job::{Job, Model, Samples, DEFAULT_SAMPLES, MAX_SAMPLES};
-use t2spline::Alpha;
+use t2spline::{Alpha, TypeReduction};
 
 // ---------------------------------------------------------------------------
 // Fixtures
@@ -229,7 +229,7 @@ fn unknown_top_level_keys_are_errors_with_a_suggestion_when_close() {
     });
     assert_problems(
         &v,
-        &["job.json: colour: unknown key (known keys: description, order, degree, weights, knots, alpha, lower_height, samples, points)"],
+        &["job.json: colour: unknown key (known keys: description, order, degree, weights, knots, alpha, type_reduction, lower_height, samples, points)"],
     );
 }
 
@@ -402,6 +402,80 @@ fn alpha_must_be_a_number_in_the_unit_interval() {
         });
         assert_eq!(parse(&v).unwrap().alpha.map(Alpha::get), Some(a));
     }
+}
+
+// ---------------------------------------------------------------------------
+// type_reduction (SPEC §10)
+// ---------------------------------------------------------------------------
+
+#[test]
+fn type_reduction_is_one_of_four_names_and_defaults_to_the_paper() {
+    assert_eq!(parse(&base()).unwrap().type_reduction, TypeReduction::Paper);
+    for method in TypeReduction::ALL {
+        let v = with(|o| {
+            o.insert("type_reduction".into(), json!(method.name()));
+        });
+        assert_eq!(parse(&v).unwrap().type_reduction, method);
+    }
+    // Alpha may be left out of a job whose reduction does not use it: the
+    // file is valid either way (the run decides whether alpha is needed).
+    let v = with(|o| {
+        o.remove("alpha");
+        o.insert("type_reduction".into(), json!("centroid"));
+    });
+    assert_eq!(parse(&v).unwrap().alpha, None);
+    for (value, line) in [
+        (
+            json!("nietan"),
+            "job.json: type_reduction: unknown type reduction `nietan` (did you mean `nie-tan`?)",
+        ),
+        (
+            json!("Centroid"),
+            "job.json: type_reduction: unknown type reduction `Centroid` (did you mean `centroid`?)",
+        ),
+        (
+            json!("karnik-mendel"),
+            "job.json: type_reduction: unknown type reduction `karnik-mendel` (known: paper, centroid, nie-tan, alpha-planes)",
+        ),
+        (
+            json!("x".repeat(100)),
+            &format!(
+                "job.json: type_reduction: unknown type reduction `{}…` (known: paper, centroid, nie-tan, alpha-planes)",
+                "x".repeat(40)
+            ),
+        ),
+        (
+            json!(2),
+            "job.json: type_reduction: expected a string, got a number",
+        ),
+        (
+            json!(null),
+            "job.json: type_reduction: expected a string, got null",
+        ),
+    ] {
+        let v = with(|o| {
+            o.insert("type_reduction".into(), value.clone());
+        });
+        assert_problems(&v, &[line]);
+    }
+    // A misspelt key is an unknown key with a suggestion, like any other.
+    let v = with(|o| {
+        o.insert("type_reducton".into(), json!("centroid"));
+    });
+    assert_problems(
+        &v,
+        &["job.json: type_reducton: unknown key (did you mean `type_reduction`?)"],
+    );
+}
+
+#[test]
+fn an_unknown_type_reduction_names_its_line_and_column() {
+    let text = "{\n  \"order\": 2,\n  \"type_reduction\": \"centriod\",\n  \"points\": []\n}";
+    let lines = located_problems(text);
+    assert_eq!(
+        lines[0],
+        "job.json:3:3: type_reduction: unknown type reduction `centriod` (did you mean `centroid`?)"
+    );
 }
 
 #[test]

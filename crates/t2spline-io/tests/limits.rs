@@ -233,7 +233,7 @@ fn hostile_keys_cannot_reach_the_terminal_raw() {
     let e = lines(&text);
     assert_eq!(
         e[0],
-        "job.json:1:14: [\"\\u001b[31mred\\u202e\"]: unknown key (known keys: description, order, degree, weights, knots, alpha, lower_height, samples, points)"
+        "job.json:1:14: [\"\\u001b[31mred\\u202e\"]: unknown key (known keys: description, order, degree, weights, knots, alpha, type_reduction, lower_height, samples, points)"
     );
     let long_at = at(&text, &format!("\"{long}\""), 0);
     assert!(
@@ -477,6 +477,8 @@ fn extreme_jobs_write_only_finite_numbers() {
                 let r = job
                     .run(&Settings {
                         alpha: Alpha::try_new(alpha).unwrap(),
+                        type_reduction: t2spline::TypeReduction::Paper,
+                        unused_alpha: None,
                         samples: Samples::Along(33),
                         derivatives: None,
                     })
@@ -506,6 +508,8 @@ fn a_non_finite_result_is_refused_by_name() {
     let mut r = job
         .run(&Settings {
             alpha: Alpha::try_new(0.5).unwrap(),
+            type_reduction: t2spline::TypeReduction::Paper,
+            unused_alpha: None,
             samples: Samples::Along(5),
             derivatives: None,
         })

@@ -10,8 +10,8 @@ use parquet::basic::Type as Physical;
 use parquet::file::reader::{FileReader, SerializedFileReader};
 use parquet::record::RowAccessor;
 use proptest::prelude::*;
-use t2spline::job::{Job, Model, RunOutput, Samples, Settings};
-use t2spline::{strategies, Alpha};
+use t2spline::job::{Job, Model, Overrides, RunOutput, Samples, Settings};
+use t2spline::{strategies, Alpha, TypeReduction};
 use t2spline_io::{
     render_csv, write_json_pretty, write_parquet, write_summary_parquet, JobSummary,
 };
@@ -122,6 +122,8 @@ fn check(result: &RunOutput) {
 fn settings(a: f64, samples: Samples, derivatives: Option<usize>) -> Settings {
     Settings {
         alpha: Alpha::try_new(a).unwrap(),
+        type_reduction: t2spline::TypeReduction::Paper,
+        unused_alpha: None,
         samples,
         derivatives,
     }
@@ -168,10 +170,18 @@ proptest! {
         a in 0.0..=1.0f64,
         su in 2usize..9,
         sv in 2usize..9,
+        type_reduction in proptest::sample::select(TypeReduction::ALL.to_vec()),
     ) {
         let samples = if model.is_surface() { Samples::Grid([su, sv]) } else { Samples::Along(su) };
-        let job = Job { description: Some("a, \"quoted\" one".into()), alpha: None, samples, model };
-        check(&job.run(&settings(a, samples, None)).unwrap());
+        // Every reduction: `alpha_used`, and a null regime for all but the paper's.
+        let job = Job {
+            description: Some("a, \"quoted\" one".into()),
+            alpha: Some(Alpha::try_new(a).unwrap()),
+            type_reduction,
+            samples,
+            ..Job::new(model)
+        };
+        check(&job.run(&job.settings(&Overrides::default()).unwrap()).unwrap());
     }
 }
 
@@ -181,6 +191,7 @@ fn a_summary_with_nulls() {
         name: name.into(),
         file: format!("jobs/{name}.json"),
         status: if ok { "ok" } else { "invalid" }.into(),
+        type_reduction: ok.then(|| "paper".into()),
         regime: ok.then(|| "alpha > h".into()),
         alpha: ok.then_some(0.8),
         error_max: ok.then_some(0.044),
@@ -201,8 +212,8 @@ fn a_summary_with_nulls() {
     assert_eq!(
         rows,
         [
-            r#"{name: "a", file: "jobs/a.json", status: "ok", regime: "alpha > h", alpha: 0.8, error_max: 0.044, error_rms: 1E-20, message: null}"#,
-            r#"{name: "b", file: "jobs/b.json", status: "invalid", regime: null, alpha: null, error_max: null, error_rms: null, message: "jobs/b.json:1:2: alhpa: unknown key"}"#
+            r#"{name: "a", file: "jobs/a.json", status: "ok", type_reduction: "paper", regime: "alpha > h", alpha: 0.8, error_max: 0.044, error_rms: 1E-20, message: null}"#,
+            r#"{name: "b", file: "jobs/b.json", status: "invalid", type_reduction: null, regime: null, alpha: null, error_max: null, error_rms: null, message: "jobs/b.json:1:2: alhpa: unknown key"}"#
         ]
     );
 }

@@ -3,8 +3,8 @@
 //! serde; every f64 exactly.
 
 use proptest::prelude::*;
-use t2spline::job::{Job, Model, Samples, Settings, MAX_SAMPLES};
-use t2spline::{strategies, Alpha, FuzzyCurve};
+use t2spline::job::{Job, Model, Overrides, Samples, Settings, MAX_SAMPLES};
+use t2spline::{strategies, Alpha, FuzzyCurve, TypeReduction};
 use t2spline_io::to_json_pretty;
 
 /// Descriptions with quotes, escapes and non-ASCII text, and arbitrary ones.
@@ -45,13 +45,17 @@ fn job<const D: usize>(model: impl Fn(FuzzyCurve<D>) -> Model) -> impl Strategy<
         alpha(),
         samples(),
         description(),
+        proptest::sample::select(TypeReduction::ALL.to_vec()),
     )
-        .prop_map(move |(c, alpha, samples, description)| Job {
-            description,
-            alpha,
-            samples: Samples::Along(samples),
-            model: model(c),
-        })
+        .prop_map(
+            move |(c, alpha, samples, description, type_reduction)| Job {
+                description,
+                alpha,
+                type_reduction,
+                samples: Samples::Along(samples),
+                model: model(c),
+            },
+        )
 }
 
 fn any_job() -> impl Strategy<Value = Job> {
@@ -75,10 +79,12 @@ fn surface_job() -> impl Strategy<Value = Job> {
         alpha(),
         grid(),
         description(),
+        proptest::sample::select(TypeReduction::ALL.to_vec()),
     )
-        .prop_map(|(s, alpha, samples, description)| Job {
+        .prop_map(|(s, alpha, samples, description, type_reduction)| Job {
             description,
             alpha,
+            type_reduction,
             samples: Samples::Grid(samples),
             model: Model::Surface(s),
         })
@@ -123,11 +129,13 @@ proptest! {
     fn result_json_round_trips_exactly(
         job in any_job(),
         a in 0.0..=1.0f64,
-        samples in 2usize..40,
+        samples in 2u64..40,
     ) {
-        let alpha = Alpha::try_new(a).unwrap();
-        let samples = Samples::Along(samples);
-        let result = job.run(&Settings { alpha, samples, derivatives: None }).unwrap();
+        // The job's own type reduction: `alpha_used` and a null regime too.
+        let settings = job
+            .settings(&Overrides { alpha: Some(a), samples: Some(vec![samples]), ..Overrides::default() })
+            .unwrap();
+        let result = job.run(&settings).unwrap();
         let (text, back) = written(&result);
         prop_assert_eq!(back, serde_json::to_value(&result).unwrap(), "{}", text);
     }
@@ -142,12 +150,13 @@ proptest! {
     fn surface_result_json_round_trips_exactly(
         job in surface_job(),
         a in 0.0..=1.0f64,
-        su in 2usize..9,
-        sv in 2usize..9,
+        su in 2u64..9,
+        sv in 2u64..9,
     ) {
-        let alpha = Alpha::try_new(a).unwrap();
-        let samples = Samples::Grid([su, sv]);
-        let result = job.run(&Settings { alpha, samples, derivatives: None }).unwrap();
+        let settings = job
+            .settings(&Overrides { alpha: Some(a), samples: Some(vec![su, sv]), ..Overrides::default() })
+            .unwrap();
+        let result = job.run(&settings).unwrap();
         let (text, back) = written(&result);
         prop_assert_eq!(back, serde_json::to_value(&result).unwrap(), "{}", text);
     }
@@ -170,6 +179,8 @@ fn the_example_job_round_trips_and_its_result_too() {
 
     let settings = Settings {
         alpha: job.alpha.unwrap(),
+        type_reduction: t2spline::TypeReduction::Paper,
+        unused_alpha: None,
         samples: job.samples,
         derivatives: None,
     };

@@ -5,11 +5,10 @@
 //! core's curves directly (a zoom's curves on its own parameters, the
 //! distance at many alphas); plotting never recomputes the method.
 
-use t2spline::job::{Job, Model, ModelVisitor, Points, RunOutput, Settings};
-use t2spline::job::{Samples, Spline};
+use t2spline::job::{Job, Model, ModelVisitor, Overrides, Points, RunOutput, Samples, Spline};
 use t2spline::pipeline::euclidean_norm;
 use t2spline::sampling::{Params, Sampler};
-use t2spline::{Alpha, Axis, FuzzyCurve, FuzzySurface, Nt2Number};
+use t2spline::{Alpha, Axis, FuzzyCurve, FuzzySurface, Nt2Number, TypeReduction};
 
 use crate::Error;
 
@@ -47,14 +46,25 @@ pub fn figure_samples(model: &Model) -> usize {
         .clamp(MIN_FIGURE_SAMPLES, MAX_FIGURE_SAMPLES)
 }
 
-/// The result of the job at `alpha`, sampled for figures: a curve at
-/// [`figure_samples`], a surface on [`surface_grid`].
+/// The result of the job at `alpha` with the job's type reduction, sampled
+/// for figures: a curve at [`figure_samples`], a surface on [`surface_grid`]
+/// (a reduction other than the paper's does not use `alpha` and cuts stage 2
+/// at 0, as `t2spline run` does).
 ///
 /// # Errors
 /// [`Error::Core`] if the run fails (it does not for a validated job without
 /// derivatives).
 pub fn compute(job: &Job, alpha: Alpha) -> Result<RunOutput, Error> {
-    compute_within(job, alpha, MAX_SURFACE_GRID)
+    compute_with(job, alpha, job.type_reduction)
+}
+
+/// The result of the job at `alpha` with the type reduction `method`
+/// (SPEC §10), sampled for figures, as [`compute`].
+///
+/// # Errors
+/// As [`compute`].
+pub fn compute_with(job: &Job, alpha: Alpha, method: TypeReduction) -> Result<RunOutput, Error> {
+    compute_within(job, alpha, method, MAX_SURFACE_GRID)
 }
 
 /// The most grid points per direction of a surface in the report, whose
@@ -62,34 +72,52 @@ pub fn compute(job: &Job, alpha: Alpha) -> Result<RunOutput, Error> {
 /// per surface.
 pub const REPORT_SURFACE_GRID: usize = 25;
 
-/// [`compute`] with a surface's grid at most `max` points per direction.
+/// [`compute_with`] with a surface's grid at most `max` points per direction.
 ///
 /// # Errors
 /// As [`compute`].
-pub fn compute_within(job: &Job, alpha: Alpha, max: usize) -> Result<RunOutput, Error> {
+pub fn compute_within(
+    job: &Job,
+    alpha: Alpha,
+    method: TypeReduction,
+    max: usize,
+) -> Result<RunOutput, Error> {
     let samples = match surface_grid(&job.model) {
         Some(grid) => Samples::Grid(grid.map(|n| n.min(max))),
         None => Samples::Along(figure_samples(&job.model)),
     };
-    run_with(job, alpha, samples)
+    run_with(job, alpha, method, samples)
 }
 
-/// The result of the job at `alpha` with the job's own samples, as
-/// `t2spline run --alpha A` computes it (a curve or a surface).
+/// The result of the job at `alpha` with the type reduction `method` and the
+/// job's own samples, as `t2spline run --alpha A --type-reduction M`
+/// computes it (a curve or a surface).
 ///
 /// # Errors
 /// [`Error::Core`] if the run fails (it does not for a validated job without
 /// derivatives).
-pub fn run_job(job: &Job, alpha: Alpha) -> Result<RunOutput, Error> {
-    run_with(job, alpha, job.samples)
+pub fn run_job(job: &Job, alpha: Alpha, method: TypeReduction) -> Result<RunOutput, Error> {
+    run_with(job, alpha, method, job.samples)
 }
 
-fn run_with(job: &Job, alpha: Alpha, samples: Samples) -> Result<RunOutput, Error> {
-    Ok(job.run(&Settings {
-        alpha,
-        samples,
+/// The run with these settings, checked by the core as the command's are.
+fn run_with(
+    job: &Job,
+    alpha: Alpha,
+    method: TypeReduction,
+    samples: Samples,
+) -> Result<RunOutput, Error> {
+    let samples = match samples {
+        Samples::Along(n) => vec![n as u64],
+        Samples::Grid(grid) => grid.map(|n| n as u64).to_vec(),
+    };
+    let settings = job.settings(&Overrides {
+        alpha: Some(alpha.get()),
+        type_reduction: Some(method),
+        samples: Some(samples),
         derivatives: None,
-    })?)
+    })?;
+    Ok(job.run(&settings)?)
 }
 
 /// Grid points per knot span and direction in surface figures.
@@ -182,50 +210,62 @@ pub fn just_above(h: f64) -> Option<f64> {
         .then(|| f64::from_bits(h.to_bits() + 1))
 }
 
-/// The crisp and the defuzzified curve of `model` at `alpha` at the given
-/// parameters (any order; all in the domain).
+/// The crisp and the defuzzified curve of `model` at `alpha` with the type
+/// reduction `method` (the result's [`RunOutput::type_reduction`]), at the
+/// given parameters (any order; all in the domain).
 ///
 /// # Errors
 /// [`Error::Core`] if a parameter lies outside the domain.
-pub fn curves_at(model: &Model, alpha: Alpha, params: &[f64]) -> Result<(Points, Points), Error> {
-    struct At<'a>(Alpha, &'a [f64]);
+pub fn curves_at(
+    model: &Model,
+    alpha: Alpha,
+    method: TypeReduction,
+    params: &[f64],
+) -> Result<(Points, Points), Error> {
+    struct At<'a>(Alpha, TypeReduction, &'a [f64]);
     impl ModelVisitor for At<'_> {
         type Output = Result<(Points, Points), Error>;
         fn curve<const D: usize>(self, c: &FuzzyCurve<D>) -> Self::Output {
-            let s = c.solve(self.0);
-            let crisp = s.crisp_curve().sample_soa(self.1)?;
-            let solution = s.defuzzified_curve().sample_soa(self.1)?;
+            let s = c.solve_with(self.0, self.1);
+            let crisp = s.crisp_curve().sample_soa(self.2)?;
+            let solution = s.defuzzified_curve().sample_soa(self.2)?;
             Ok((Points::from(crisp), Points::from(solution)))
         }
         fn surface<const D: usize>(self, _: &FuzzySurface<D>) -> Self::Output {
             Err(Error::Surface)
         }
     }
-    model.visit(At(alpha, params))
+    model.visit(At(alpha, method, params))
 }
 
-/// The crisp and the defuzzified surface of `model` at `alpha` at the
-/// parameters `uv` (the ends of the largest distance, at `error.max_at`).
+/// The crisp and the defuzzified surface of `model` at `alpha` with the type
+/// reduction `method`, at the parameters `uv` (the ends of the largest
+/// distance, at `error.max_at`).
 ///
 /// # Errors
 /// [`Error::Surface`] for a curve model; [`Error::Core`] if `uv` lies
 /// outside the domain.
-pub fn surfaces_at(model: &Model, alpha: Alpha, uv: [f64; 2]) -> Result<[Vec<f64>; 2], Error> {
-    struct At(Alpha, [f64; 2]);
+pub fn surfaces_at(
+    model: &Model,
+    alpha: Alpha,
+    method: TypeReduction,
+    uv: [f64; 2],
+) -> Result<[Vec<f64>; 2], Error> {
+    struct At(Alpha, TypeReduction, [f64; 2]);
     impl ModelVisitor for At {
         type Output = Result<[Vec<f64>; 2], Error>;
         fn curve<const D: usize>(self, _: &FuzzyCurve<D>) -> Self::Output {
             Err(Error::Surface)
         }
         fn surface<const D: usize>(self, s: &FuzzySurface<D>) -> Self::Output {
-            let solution = s.solve(self.0);
-            let [u, v] = self.1;
+            let solution = s.solve_with(self.0, self.1);
+            let [u, v] = self.2;
             let crisp = solution.crisp_surface().eval(u, v)?;
             let defuzzified = solution.defuzzified_surface().eval(u, v)?;
             Ok([crisp.to_vec(), defuzzified.to_vec()])
         }
     }
-    model.visit(At(alpha, uv))
+    model.visit(At(alpha, method, uv))
 }
 
 /// Levels sampled together: bounds the memory of a sweep over many alphas
@@ -233,7 +273,8 @@ pub fn surfaces_at(model: &Model, alpha: Alpha, uv: [f64; 2]) -> Result<[Vec<f64
 const LEVELS_PER_PASS: usize = 8;
 
 /// Calls `sink(k, d)` for each alpha `alphas[k]` with the distance
-/// `d[i] = ‖D(tᵢ) − C(tᵢ)‖` between its defuzzified and the crisp curve at
+/// `d[i] = ‖D(tᵢ) − C(tᵢ)‖` between the defuzzified curve of the paper's
+/// type reduction (the one that uses alpha) and the crisp curve at
 /// `samples` uniform parameters `tᵢ`, and returns the parameters. The curves
 /// come from the library's sampling engine: per pass one [`Sampler`] for the
 /// crisp control points and the defuzzified ones of several levels (from
@@ -286,9 +327,9 @@ fn for_each_level(
     })
 }
 
-/// The distance `‖D(t) − C(t)‖` between the defuzzified and the crisp curve
-/// at each of `samples` uniform parameters, for each alpha: the parameters,
-/// then one list per alpha.
+/// The distance `‖D(t) − C(t)‖` between the defuzzified curve of the paper's
+/// type reduction and the crisp curve at each of `samples` uniform
+/// parameters, for each alpha: the parameters, then one list per alpha.
 ///
 /// # Errors
 /// [`Error::Core`] if sampling fails (never for a validated job).
@@ -303,7 +344,8 @@ pub fn distance_along(
 }
 
 /// The largest and the root-mean-square distance between the defuzzified
-/// and the crisp curve at each alpha, over `samples` uniform parameters (the
+/// curve of the paper's type reduction and the crisp curve at each alpha,
+/// over `samples` uniform parameters (the
 /// mean square by the trapezoidal rule):
 ///
 /// ```text

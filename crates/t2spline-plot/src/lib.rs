@@ -2,8 +2,9 @@
 //!
 //! Publication figures of every stage of the method (the paper's Figs. 3.1,
 //! 4.1–4.4 and 5.1–5.4, the distance along the curve for several alphas and
-//! against alpha) as SVG and PNG, and a self-contained HTML report with an
-//! alpha slider and downloads.
+//! against alpha, and the type reductions of SPEC §10 compared) as SVG and
+//! PNG, and a self-contained HTML report with an alpha slider, a
+//! type-reduction selector and downloads.
 //!
 //! - [`all_figures`]: every figure of a job at one alpha, built in data
 //!   coordinates ([`Figure`]: panels of keyed [`Mark`]s, a legend, notes) from
@@ -33,7 +34,7 @@
 //!   ]}"#, "job.json")?;
 //! let alpha = job.alpha.expect("the file gives alpha");
 //! let figures = all_figures(&job, alpha, &FigureOptions::default())?;
-//! assert_eq!(figures.len(), 7);
+//! assert_eq!(figures.len(), 8);
 //! let svg = t2spline_plot::render_svg(&figures[1]);
 //! assert!(svg.contains("Stage 1"));
 //! # Ok::<(), Box<dyn std::error::Error>>(())

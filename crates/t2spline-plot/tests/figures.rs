@@ -136,8 +136,9 @@ fn every_figure_has_title_axes_labels_and_a_legend() {
             let three_d = case.contains("3d");
             let panels = match fig.name {
                 "number" | "alpha-sweep" | "distance-alpha" => 1,
-                // The projections and the magnified panel.
-                "stage4-defuzzified" => {
+                // The projections and the magnified panel, or the distance
+                // along the curve.
+                "stage4-defuzzified" | "reductions" => {
                     if three_d {
                         4
                     } else {
@@ -485,6 +486,8 @@ fn the_distance_figure_shows_both_sides_of_the_jump_at_h() {
     let exact = |a: f64| {
         job.run(&t2spline::job::Settings {
             alpha: Alpha::try_new(a).unwrap(),
+            type_reduction: t2spline::TypeReduction::Paper,
+            unused_alpha: None,
             samples: t2spline::job::Samples::Along(2),
             derivatives: None,
         })
@@ -548,7 +551,7 @@ mod png {
     fn png_files_are_three_times_the_svg_at_300_dpi_with_text_and_series() {
         let figs = figures("examples/paper-alg-1-1.json", 0.8, NumberChoice::default());
         let files = t2spline_plot::render_files(&figs, t2spline_plot::Format::Png).unwrap();
-        assert_eq!(files.len(), 7);
+        assert_eq!(files.len(), 8);
         for (fig, (name, bytes)) in figs.iter().zip(&files) {
             assert_eq!(name, &format!("{}.png", fig.name));
             // pHYs after the header: 11811 pixels per metre both ways, unit metre.

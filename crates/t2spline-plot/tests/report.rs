@@ -31,11 +31,19 @@ fn a_report_of_200_points_stays_under_5_mb_with_every_part() {
     let grid = [100, 50, 20, 10, 4].map(|k| Stops::new(&job, start, k).alphas.len());
     assert!(grid.contains(&n), "{n} stops is one of the grids {grid:?}");
     for id in [
-        "number", "stage1", "stage2", "stage3", "stage4", "distance", "sweep", "job",
+        "number",
+        "stage1",
+        "stage2",
+        "stage3",
+        "stage4",
+        "distance",
+        "sweep",
+        "reductions",
+        "job",
     ] {
         assert!(html.contains(&format!("<section id=\"{id}\">")), "{id}");
     }
-    assert_eq!(html.matches("data-svg=").count(), 7);
+    assert_eq!(html.matches("data-svg=").count(), 8);
     assert_eq!(html.matches("data-file=\"stage").count(), 4);
     // Tables list the first 12 points and say where the others are.
     assert!(html.contains("the other 188 are in the downloads"));

@@ -7,12 +7,13 @@
 //!
 //! | Python | Rust |
 //! |---|---|
-//! | `t2spline.run(job, alpha=, samples=, derivatives=)` | `t2spline_io::parse_job` → `Job::settings` → `Job::run`, the path of `t2spline run` |
+//! | `t2spline.run(job, alpha=, type_reduction=, samples=, derivatives=)` | `t2spline_io::parse_job` → `Job::settings` → `Job::run`, the path of `t2spline run` |
 //! | `t2spline.JobError` | `t2spline_io::Error::Invalid`: the CLI's problem lines |
 //! | `FuzzyNumber`, `AlphaCut` | `Nt2Number`, `AlphaCut` (SPEC §1–§4) |
 //! | `NurbsCurve` | `NurbsCurve<2 or 3>` and its operations |
 //! | `FuzzyCurve`, `Solution` | `FuzzyCurve<2 or 3>` (stage 1, sampling engine), `Solution` (stages 2–4) |
 //! | `fit` | `t2spline::fit::FuzzyData::fit` |
+//! | `centroid` | `t2spline::reduction::discrete::SampledSet`: KM, EKM, EIASC, Nie–Tan (SPEC §10) |
 //! | `benchmark_curve` | `t2spline::sampling::benchmark_curve` |
 //!
 //! The Python package (`python/t2spline/`) adds the plotting helpers, the
@@ -32,6 +33,7 @@ mod fit;
 mod fuzzy_curve;
 mod number;
 mod nurbs_curve;
+mod reduction;
 mod run;
 mod sample;
 mod solution;
@@ -68,6 +70,7 @@ fn _t2spline(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<solution::PySolution>()?;
     m.add_function(wrap_pyfunction!(run::run, m)?)?;
     m.add_function(wrap_pyfunction!(fit::fit, m)?)?;
+    m.add_function(wrap_pyfunction!(reduction::centroid, m)?)?;
     m.add_function(wrap_pyfunction!(benchmark_curve, m)?)?;
     m.add_function(wrap_pyfunction!(errors::_panic_for_tests, m)?)?;
     Ok(())

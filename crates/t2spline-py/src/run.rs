@@ -8,10 +8,12 @@ use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
 use t2spline::job::{check_samples, Job, Overrides, Setting, Settings};
+use t2spline::TypeReduction;
 use t2spline_io::job::locate;
 use t2spline_io::Problem;
 
 use crate::errors::{core_error, internal_error, io_error, job_error, setting_error, without_gil};
+use crate::reduction;
 use crate::value::to_value;
 
 /// How messages name a job given as a dict.
@@ -88,6 +90,7 @@ fn settings(
     job: &Job,
     (text, source): (&str, &str),
     alpha: Option<f64>,
+    type_reduction: Option<TypeReduction>,
     samples: Option<SampleCounts>,
     derivatives: Option<i64>,
 ) -> PyResult<Settings> {
@@ -112,6 +115,7 @@ fn settings(
     };
     let overrides = Overrides {
         alpha,
+        type_reduction,
         samples,
         derivatives,
     };
@@ -145,7 +149,11 @@ fn settings(
 ///     A dict with the keys of a job file (SPEC §8; numpy arrays and numbers
 ///     are accepted as values), or the path of a job file.
 /// alpha : float, optional
-///     The level alpha in ``[0, 1]``, in place of the job's.
+///     The level alpha in ``[0, 1]``, in place of the job's. Only the
+///     paper's type reduction uses it: with another one, stage 2 is cut at
+///     alpha = 0 (the whole footprint), the result has ``alpha_used`` false
+///     and ``regime`` None, and an alpha given anyway (here or in the job)
+///     is checked and set aside with a ``UserWarning``.
 /// samples : int or (int, int), optional
 ///     The number of uniform parameters (2 … 1 000 000), in place of the
 ///     job's (default 101); for a surface job one count for both directions
@@ -153,6 +161,9 @@ fn settings(
 /// derivatives : int, optional
 ///     With ``K``, also the derivatives of orders ``1 … K`` of the crisp and the
 ///     defuzzified curve, and their arc lengths.
+/// type_reduction : {"paper", "centroid", "nie-tan", "alpha-planes"}, optional
+///     The type reduction of stages 3–4 (SPEC §10), in place of the job's
+///     ``"type_reduction"`` (default ``"paper"``). The result names it.
 ///
 /// Returns
 /// -------
@@ -175,7 +186,8 @@ fn settings(
 ///     and placed in its ``json.dumps(job, indent=2)`` text).
 /// ValueError
 ///     For a keyword out of range, named: ``samples: samples = 1: at least 2
-///     are needed (both ends of the domain)``.
+///     are needed (both ends of the domain)``; for an unknown
+///     ``type_reduction``.
 /// OSError
 ///     For a job file that cannot be read.
 ///
@@ -202,17 +214,41 @@ fn settings(
 ///     ...
 /// ValueError: samples: samples = 1: at least 2 are needed (both ends of the domain)
 #[pyfunction]
-#[pyo3(signature = (job, alpha=None, samples=None, derivatives=None))]
+#[pyo3(signature = (job, alpha=None, samples=None, derivatives=None, type_reduction=None))]
 pub(crate) fn run<'py>(
     py: Python<'py>,
     job: &Bound<'py, PyAny>,
     alpha: Option<f64>,
     samples: Option<SampleCounts>,
     derivatives: Option<i64>,
+    type_reduction: Option<&str>,
 ) -> PyResult<Bound<'py, PyAny>> {
+    let type_reduction = reduction::type_reduction(type_reduction)?;
     let (text, source) = job_text(job)?;
     let parsed = parse(py, &text, &source)?;
-    let settings = settings(py, &parsed, (&text, &source), alpha, samples, derivatives)?;
+    let settings = settings(
+        py,
+        &parsed,
+        (&text, &source),
+        alpha,
+        type_reduction,
+        samples,
+        derivatives,
+    )?;
+    if let Some(a) = settings.unused_alpha {
+        let source = if alpha.is_some() {
+            "alpha="
+        } else {
+            "the job's alpha "
+        };
+        let message = format!(
+            "type reduction {} does not use alpha; {source}{} is ignored (stage 2 is cut at alpha = 0, the whole footprint)",
+            settings.type_reduction,
+            a.get()
+        );
+        let category = py.get_type::<pyo3::exceptions::PyUserWarning>();
+        PyErr::warn(py, &category, &std::ffi::CString::new(message)?, 1)?;
+    }
     let tree = without_gil(py, move || {
         let output = parsed.run(&settings).map_err(Failure::from)?;
         // The CLI's last guard before writing: every number finite.

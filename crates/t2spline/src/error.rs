@@ -727,7 +727,7 @@ pub enum Error {
     /// let points = vec![Nt2Point::new([n(0.0)?, n(0.0)?]), Nt2Point::new([n(1e150)?, n(0.0)?]), Nt2Point::new([n(0.0)?, n(1.0)?])];
     /// let curve = FuzzyCurve::try_new(2, points, vec![1.0; 3], Some(vec![0.0, 0.0, 0.0, 1e-150, 1e-150, 1e-150]))?;
     /// let job = Job::new(Model::Planar(curve));
-    /// let s = job.settings(&Overrides { alpha: Some(0.5), samples: Some(vec![2]), derivatives: Some(2) })?;
+    /// let s = job.settings(&Overrides { alpha: Some(0.5), samples: Some(vec![2]), derivatives: Some(2), ..Overrides::default() })?;
     /// let e = job.run(&s).unwrap_err();
     /// assert!(matches!(e, Error::DerivativeOverflow { derivative: 2, .. }), "{e}");
     /// # Ok::<(), Error>(())

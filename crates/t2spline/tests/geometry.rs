@@ -5,7 +5,7 @@ use proptest::prelude::*;
 use t2spline::fit::{fuzzify, percentile, FuzzifyRule};
 use t2spline::job::{Geometry, Job, Model, Overrides, Parameters, Points, Sampled};
 use t2spline::strategies::{fuzzy_curve, fuzzy_surface};
-use t2spline::{Direction, NurbsCurve, NurbsSurface};
+use t2spline::{Direction, NurbsCurve, NurbsSurface, TypeReduction};
 
 /// The piece among `domains` that holds `t`: the right one at a shared end
 /// (a jump is taken from the right, SPEC §6), the last one at the end.
@@ -77,7 +77,13 @@ fn close(
     Ok(())
 }
 
-/// Every curve or surface of the geometry at every sample, against the run.
+/// Any type reduction (SPEC §10): the defuzzified curve is the reduction's.
+fn reduction() -> impl Strategy<Value = TypeReduction> {
+    proptest::sample::select(TypeReduction::ALL.to_vec())
+}
+
+/// Every curve or surface of the geometry at every sample, against the run
+/// (with the job's type reduction).
 fn agrees(job: &Job, geometry: &Geometry, tolerance: f64) -> Result<(), TestCaseError> {
     let samples = if job.model.is_surface() {
         vec![9, 7]
@@ -143,8 +149,11 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(64))]
 
     #[test]
-    fn exact_curves_are_the_run_s_curves_in_2d(c in fuzzy_curve::<2>()) {
-        let job = Job::new(Model::Planar(c));
+    fn exact_curves_are_the_run_s_curves_in_2d(
+        c in fuzzy_curve::<2>(),
+        type_reduction in reduction(),
+    ) {
+        let job = Job { type_reduction, ..Job::new(Model::Planar(c)) };
         let settings = job.settings(&Overrides { alpha: Some(0.3), ..Overrides::default() }).unwrap();
         let g = job.geometry(&settings).unwrap();
         prop_assert_eq!(g.dimension, 2);
@@ -157,8 +166,11 @@ proptest! {
     }
 
     #[test]
-    fn exact_curves_are_the_run_s_curves_in_3d(c in fuzzy_curve::<3>()) {
-        let job = Job::new(Model::Spatial(c));
+    fn exact_curves_are_the_run_s_curves_in_3d(
+        c in fuzzy_curve::<3>(),
+        type_reduction in reduction(),
+    ) {
+        let job = Job { type_reduction, ..Job::new(Model::Spatial(c)) };
         let settings = job.settings(&Overrides { alpha: Some(0.3), ..Overrides::default() }).unwrap();
         let g = job.geometry(&settings).unwrap();
         agrees(&job, &g, 1e-12)?;
@@ -166,8 +178,11 @@ proptest! {
     }
 
     #[test]
-    fn exact_surfaces_are_the_run_s_surfaces(s in fuzzy_surface::<3>()) {
-        let job = Job::new(Model::Surface(s));
+    fn exact_surfaces_are_the_run_s_surfaces(
+        s in fuzzy_surface::<3>(),
+        type_reduction in reduction(),
+    ) {
+        let job = Job { type_reduction, ..Job::new(Model::Surface(s)) };
         let settings = job.settings(&Overrides { alpha: Some(0.3), ..Overrides::default() }).unwrap();
         let g = job.geometry(&settings).unwrap();
         prop_assert!(g.curves.is_empty());

@@ -6,7 +6,9 @@
 
 use proptest::prelude::*;
 use t2spline::sampling::{Grid, GridSampler, LayerSamples, Params};
-use t2spline::{strategies, Alpha, Direction, KnotVector, Layer, NurbsSurface, Side};
+use t2spline::{
+    strategies, Alpha, Direction, KnotVector, Layer, NurbsSurface, Side, TypeReduction,
+};
 
 const TOL: f64 = 1e-12;
 
@@ -80,14 +82,18 @@ proptest! {
     }
 
     #[test]
-    fn sweep_matches_the_solution_surfaces(s in strategies::fuzzy_surface::<3>(), a in proptest::collection::vec(0.0..=1.0f64, 1..4)) {
+    fn sweep_matches_the_solution_surfaces(
+        s in strategies::fuzzy_surface::<3>(),
+        a in proptest::collection::vec(0.0..=1.0f64, 1..4),
+        method in proptest::sample::select(TypeReduction::ALL.to_vec()),
+    ) {
         let alphas: Vec<Alpha> = a.iter().map(|&x| Alpha::try_new(x).unwrap()).collect();
         let u = probes(s.knots(Direction::U), &[0.3]);
         let v = probes(s.knots(Direction::V), &[0.8]);
         let scale = s.points().iter().flat_map(|p| Layer::ALL.map(|l| p.layer(l))).flatten().fold(0.0, |m: f64, x| m.max(x.abs()));
-        let g = s.sample_sweep(&u, &v, &alphas).unwrap();
+        let g = s.sample_sweep_with(&u, &v, &alphas, method).unwrap();
         for (level, &alpha) in g.samples().levels().iter().zip(&alphas) {
-            let solution = s.solve(alpha);
+            let solution = s.solve_with(alpha, method);
             for layer in Layer::ALL.into_iter().filter(|&l| l != Layer::Crisp) {
                 match (level.alpha_cut(layer), solution.alpha_cut_surface(layer)) {
                     (Some(got), Some(surface)) => check(got, g.shape(), &u, &v, scale, |x, y| surface.eval(x, y).unwrap())?,
@@ -103,6 +109,14 @@ proptest! {
             check(level.defuzzified(), g.shape(), &u, &v, scale, |x, y| surface.eval(x, y).unwrap())?;
             let stages = solution.sample_stages(&u, &v).unwrap();
             prop_assert_eq!(stages.samples(), level);
+            // The grid engine keeps left ≤ defuzzified ≤ right exactly.
+            let [l, r] = [Side::Left, Side::Right].map(|side| level.type_reduced(side));
+            for k in 0..l.len() {
+                for d in 0..3 {
+                    let y = level.defuzzified().coord(d)[k];
+                    prop_assert!(l.coord(d)[k] <= y && y <= r.coord(d)[k], "{}: point {}", method, k);
+                }
+            }
         }
     }
 

@@ -5,6 +5,7 @@
 use proptest::prelude::*;
 use t2spline::{
     strategies, Alpha, Direction, FuzzySurface, Layer, Nt2Number, Nt2Point, NurbsSurface, Side,
+    TypeReduction,
 };
 
 mod probes;
@@ -126,8 +127,10 @@ proptest! {
     #[test]
     fn symmetric_spreads_give_zero_distance(s in strategies::fuzzy_surface::<3>(), a in 0.0..=1.0f64) {
         let s = with_points(&s, |p| Nt2Point::new(p.coords().map(|x| symmetric(&x))));
-        let d = s.solve(Alpha::try_new(a).unwrap()).distance();
-        prop_assert!(d.max <= 1e-14 * scale(&s) && d.rms <= d.max, "{:?}", d);
+        for method in TypeReduction::ALL {
+            let d = s.solve_with(Alpha::try_new(a).unwrap(), method).distance();
+            prop_assert!(d.max <= 1e-14 * scale(&s) && d.rms <= d.max, "{}: {:?}", method, d);
+        }
     }
 
     #[test]

@@ -17,8 +17,8 @@ use t2spline_io::{
     CSV_FILES, DERIVATIVES_CSV,
 };
 
-use super::run::{overrides, Destinations};
-use super::settings::{about_derivatives, settings, OptionError};
+use super::run::{overrides, Destinations, ALPHA_IGNORED};
+use super::settings::{about_derivatives, settings, unused_alpha, OptionError};
 use crate::cli::RunArgs;
 use crate::exit::{Exit, JobsFailed};
 use crate::output::{is_stdio, job_name, read_job_text, Inputs, NewFolders};
@@ -48,6 +48,8 @@ struct Batch {
 struct Outcome {
     summary: JobSummary,
     error: Option<anyhow::Error>,
+    /// A note for standard error (an alpha its type reduction does not use).
+    note: Option<String>,
     /// The files written, to be flushed to disk at the end.
     written: Vec<PathBuf>,
 }
@@ -180,16 +182,20 @@ impl Batch {
             name: job.name.clone(),
             file: job_name(&job.path),
             status: Exit::Ok.status().to_owned(),
+            type_reduction: None,
             regime: None,
             alpha: None,
             error_max: None,
             error_rms: None,
             message: None,
         };
-        let mut written = Vec::new();
-        let error = self.compute(job).and_then(|result| {
-            summary.regime = Some(result.regime.as_str().to_owned());
-            summary.alpha = Some(result.alpha);
+        let (mut written, mut note) = (Vec::new(), None);
+        let error = self.compute(job).and_then(|(result, unused)| {
+            note = unused;
+            summary.type_reduction = Some(result.type_reduction.name().to_owned());
+            // Alpha and the regime are the paper's reduction's (SPEC §10).
+            summary.regime = result.regime.map(|r| r.as_str().to_owned());
+            summary.alpha = result.alpha_used.then_some(result.alpha);
             summary.error_max = Some(result.error.max);
             summary.error_rms = Some(result.error.rms);
             let out = self.destinations(job);
@@ -205,16 +211,21 @@ impl Batch {
         Outcome {
             summary,
             error,
+            note,
             written,
         }
     }
 
-    fn compute(&self, job: &Entry) -> anyhow::Result<RunOutput> {
+    /// The job's result (each job with its own type reduction unless
+    /// `--type-reduction` overrides it), and the note on an alpha it does
+    /// not use.
+    fn compute(&self, job: &Entry) -> anyhow::Result<(RunOutput, Option<String>)> {
         let (j, text) = read_job_text(&job.path)?;
         let settings = settings(&j, &self.overrides, &job.path, &text)?;
+        let note = unused_alpha(&settings, self.overrides.alpha.is_some(), ALPHA_IGNORED);
         let result = j.run(&settings).map_err(about_derivatives)?;
         check_finite(&result)?;
-        Ok(result)
+        Ok((result, note))
     }
 }
 
@@ -262,6 +273,9 @@ pub fn run(args: RunArgs) -> anyhow::Result<()> {
     let mut worst = Exit::Ok;
     let mut stderr = std::io::stderr().lock();
     for (job, outcome) in batch.jobs.iter().zip(&outcomes) {
+        if let Some(note) = &outcome.note {
+            let _ = writeln!(stderr, "t2spline run: {}: {note}", job_name(&job.path));
+        }
         if let Some(e) = &outcome.error {
             worst = worst.worst(Exit::of(e));
             for line in message(&job.path, e) {

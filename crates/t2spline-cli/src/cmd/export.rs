@@ -1,4 +1,6 @@
-//! `t2spline export JOB.json -o FILE [--format dxf|step|iges|obj] [--alpha A]`.
+//! `t2spline export JOB.json -o FILE [--format dxf|step|iges|obj] [--alpha A]
+//! [--type-reduction NAME]`: the exact curves of the run, the defuzzified one
+//! by the chosen type reduction.
 
 use std::path::{Path, PathBuf};
 use std::time::{SystemTime, UNIX_EPOCH};
@@ -6,7 +8,7 @@ use std::time::{SystemTime, UNIX_EPOCH};
 use t2spline::job::{Job, Overrides, Settings};
 use t2spline_io::{render_cad, CadFormat, CadMeta};
 
-use super::settings::{about_option, settings, OptionError};
+use super::settings::{about_option, note_unused_alpha, settings, OptionError};
 use crate::cli::{CadFormatArg, ExportArgs};
 use crate::output::{is_stdio, job_name, read_job_text, Outputs};
 
@@ -28,9 +30,16 @@ impl Plan {
         let (job, text) = read_job_text(&args.job)?;
         let overrides = Overrides {
             alpha: args.alpha,
+            type_reduction: args.reduction.type_reduction,
             ..Overrides::default()
         };
         let settings = settings(&job, &overrides, &args.job, &text)?;
+        note_unused_alpha(
+            "export",
+            &settings,
+            args.alpha.is_some(),
+            "is ignored (the defuzzified curve does not depend on it)",
+        );
         Ok(Plan {
             job,
             source: job_name(&args.job),

@@ -1,11 +1,11 @@
 //! `t2spline plot JOB.json -o DIR [--format svg|png|both] [--point I --axis x|y|z]
-//! [--aspect equal|auto] [--view AZ,EL] [--alpha A]`.
+//! [--aspect equal|auto] [--view AZ,EL] [--alpha A] [--type-reduction NAME]`.
 
 use t2spline::job::{Job, Overrides};
 use t2spline::Axis;
 use t2spline_plot::{all_figures, render_files, Aspect, FigureOptions, Format, NumberChoice};
 
-use super::settings::{settings, OptionError};
+use super::settings::{note_unused_alpha, settings, OptionError};
 use crate::cli::{AspectArg, AxisArg, FigureArgs, FormatArg, PlotArgs, PointArg};
 use crate::output::{read_job_text, Outputs};
 
@@ -77,9 +77,22 @@ pub fn plot(args: &PlotArgs) -> anyhow::Result<()> {
     let (job, text) = read_job_text(&args.job)?;
     let overrides = Overrides {
         alpha: args.alpha,
+        type_reduction: args.reduction.type_reduction,
         ..Overrides::default()
     };
-    let alpha = settings(&job, &overrides, &args.job, &text)?.alpha;
+    let settings = settings(&job, &overrides, &args.job, &text)?;
+    note_unused_alpha(
+        "plot",
+        &settings,
+        args.alpha.is_some(),
+        "is used only by the paper's reduction in the figures number, distance-alpha and reductions (stage 2 is cut at alpha = 0)",
+    );
+    // Stages 2–4 as `run` gives them; the paper's level where it is drawn.
+    let alpha = settings.unused_alpha.unwrap_or(settings.alpha);
+    let job = Job {
+        type_reduction: settings.type_reduction,
+        ..job
+    };
     let format = match args.format {
         FormatArg::Svg => Format::Svg,
         FormatArg::Png => Format::Png,

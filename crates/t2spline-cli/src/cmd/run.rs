@@ -1,5 +1,6 @@
-//! `t2spline run JOB.json [-o OUT.json] [--alpha A] [--samples N] [--csv DIR]
-//! [--parquet FILE] [--derivatives K]`; with several jobs, `cmd/batch.rs`.
+//! `t2spline run JOB.json [-o OUT.json] [--alpha A] [--type-reduction NAME]
+//! [--samples N] [--csv DIR] [--parquet FILE] [--derivatives K]`; with
+//! several jobs, `cmd/batch.rs`.
 
 use std::path::{Path, PathBuf};
 
@@ -9,7 +10,7 @@ use t2spline_io::{
     DERIVATIVES_CSV,
 };
 
-use super::settings::settings;
+use super::settings::{note_unused_alpha, settings};
 use crate::cli::RunArgs;
 use crate::output::{is_stdio, read_job_text, to_stdout, Inputs, NewFolders};
 
@@ -78,10 +79,14 @@ impl Destinations {
     }
 }
 
+/// What an alpha does in a run whose type reduction does not use it.
+pub const ALPHA_IGNORED: &str = "is ignored (stage 2 is cut at alpha = 0, the whole footprint)";
+
 /// The settings of a run from the options.
 pub fn overrides(args: &RunArgs) -> Overrides {
     Overrides {
         alpha: args.alpha,
+        type_reduction: args.reduction.type_reduction,
         samples: args.samples.clone(),
         derivatives: args.derivatives,
     }
@@ -104,6 +109,7 @@ impl Plan {
         out.check(&Inputs::of([path]))?;
         let (job, text) = read_job_text(path)?;
         let settings = settings(&job, &overrides(&args), path, &text)?;
+        note_unused_alpha("run", &settings, args.alpha.is_some(), ALPHA_IGNORED);
         Ok(Plan { job, settings, out })
     }
 }

@@ -1,6 +1,8 @@
 //! The settings of a run from the command line: the core's checks, with
-//! messages that name the option (`--alpha`, `--samples`, `--derivatives`).
+//! messages that name the option (`--alpha`, `--samples`, `--derivatives`),
+//! and the note for an alpha that the type reduction does not use.
 
+use std::io::Write as _;
 use std::path::Path;
 
 use t2spline::job::{Job, Overrides, Setting, Settings};
@@ -69,6 +71,31 @@ pub fn settings(
         .into(),
         other => about_option(other),
     })
+}
+
+/// That the type reduction does not use the alpha given (`--alpha` if
+/// `from_option`, else the job file's), and what that alpha still does
+/// (`effect`); `None` if every alpha given is used.
+pub fn unused_alpha(settings: &Settings, from_option: bool, effect: &str) -> Option<String> {
+    let a = settings.unused_alpha?;
+    let source = if from_option {
+        "--alpha"
+    } else {
+        "the job's alpha"
+    };
+    Some(format!(
+        "note: type reduction {} does not use alpha; {source} {} {effect}",
+        settings.type_reduction,
+        a.get()
+    ))
+}
+
+/// Says [`unused_alpha`] on standard error, in one line, for `command`.
+pub fn note_unused_alpha(command: &str, settings: &Settings, from_option: bool, effect: &str) {
+    if let Some(note) = unused_alpha(settings, from_option, effect) {
+        // A closed standard error must not stop the command.
+        let _ = writeln!(std::io::stderr().lock(), "t2spline {command}: {note}");
+    }
 }
 
 /// A derivative beyond the range of a float is the input's doing, not a bug:

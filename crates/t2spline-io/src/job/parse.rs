@@ -11,16 +11,18 @@ use std::collections::HashSet;
 use serde_json::{Map, Value};
 use t2spline::fit::FuzzyData;
 use t2spline::job::{check_samples, Job, Model, Samples, DEFAULT_SAMPLES};
-use t2spline::{Alpha, Axis, FuzzyCurve, Height, KnotVector, Nt2Number, Nt2Point, Place};
+use t2spline::{
+    Alpha, Axis, FuzzyCurve, Height, KnotVector, Nt2Number, Nt2Point, Place, TypeReduction,
+};
 
 use super::limits::{
     check_order, MAX_ARRAY, MAX_KEYS, MAX_NESTING, MAX_POINTS, MAX_PROBLEMS, MAX_VALUES,
 };
 use super::position::{self, child, element, Oversized};
 use super::surface;
-use super::walker::{kind, written, Walker};
+use super::walker::{kind, suggestion, written, Walker};
 use crate::fit_data::FitData;
-use crate::Problem;
+use crate::{printable, Problem};
 
 pub(super) const TOP_KEYS: &[&str] = &[
     "description",
@@ -29,6 +31,7 @@ pub(super) const TOP_KEYS: &[&str] = &[
     "weights",
     "knots",
     "alpha",
+    "type_reduction",
     "lower_height",
     "samples",
     "points",
@@ -309,6 +312,7 @@ impl Walker {
             return self.surface_job(o);
         }
         let header = self.header(o, TOP_KEYS, "a job needs its fuzzy control points");
+        let type_reduction = self.type_reduction(o);
         let weights = o.get("weights").and_then(|v| self.numbers(v, "weights"));
         let knots = o.get("knots").and_then(|v| {
             if v.is_object() {
@@ -335,8 +339,13 @@ impl Walker {
         if !self.problems.is_empty() {
             return None;
         }
-        let (degree, points, samples, weights) =
-            (header.degree?, header.points?, header.samples?, weights?);
+        let (degree, points, samples, weights, type_reduction) = (
+            header.degree?,
+            header.points?,
+            header.samples?,
+            weights?,
+            type_reduction?,
+        );
         let model = match points {
             Points::Planar(p) => FuzzyCurve::try_new(degree, p, weights, knots).map(Model::Planar),
             Points::Spatial(p) => {
@@ -347,6 +356,7 @@ impl Walker {
             Ok(model) => Some(Job {
                 description: header.description,
                 alpha: header.alpha,
+                type_reduction,
                 samples: Samples::Along(samples.unwrap_or(DEFAULT_SAMPLES)),
                 model,
             }),
@@ -357,6 +367,40 @@ impl Walker {
                 None
             }
         }
+    }
+
+    /// `type_reduction`: one of the [`TypeReduction::name`]s (SPEC §10),
+    /// the paper's when the key is missing. Curve and surface jobs alike.
+    pub(super) fn type_reduction(&mut self, o: &Map<String, Value>) -> Option<TypeReduction> {
+        let Some(v) = o.get("type_reduction") else {
+            return Some(TypeReduction::Paper);
+        };
+        let Some(name) = v.as_str() else {
+            self.report(
+                "type_reduction",
+                format!("expected a string, got {}", kind(v)),
+            );
+            return None;
+        };
+        let parsed = name.parse().ok();
+        if parsed.is_none() {
+            let names = TypeReduction::ALL.map(TypeReduction::name);
+            let hint = match suggestion(name, &names) {
+                Some(s) => format!("did you mean `{s}`?"),
+                None => format!("known: {}", names.join(", ")),
+            };
+            // A name is short; a long value is shown by its start.
+            let shown: String = name.chars().take(40).collect();
+            let more = if shown.len() < name.len() { "…" } else { "" };
+            self.report(
+                "type_reduction",
+                format!(
+                    "unknown type reduction `{}{more}` ({hint})",
+                    printable(&shown)
+                ),
+            );
+        }
+        parsed
     }
 
     /// A data file: the keys of a job but `weights` and `knots`, at least

@@ -62,6 +62,7 @@ impl Walker {
     pub(super) fn surface_job(&mut self, o: &Map<String, Value>) -> Option<Job> {
         let (common, degree) = self.common(o, TOP_KEYS, |w| w.degrees(o));
         let samples = self.grid_samples(o.get("samples"));
+        let type_reduction = self.type_reduction(o);
         let net = match o.get("points") {
             None => {
                 self.report("points", "missing: a job needs its fuzzy control points");
@@ -90,12 +91,19 @@ impl Walker {
         if !self.problems.is_empty() {
             return None;
         }
-        let (degree, points, samples, weights, knots) =
-            (degree?, net?.points?, samples?, weights?, knots?);
+        let (degree, points, samples, weights, knots, type_reduction) = (
+            degree?,
+            net?.points?,
+            samples?,
+            weights?,
+            knots?,
+            type_reduction?,
+        );
         match FuzzySurface::try_new(degree, points, weights, knots) {
             Ok(surface) => Some(Job {
                 description: common.description,
                 alpha: common.alpha,
+                type_reduction,
                 samples: Samples::Grid(samples),
                 model: Model::Surface(surface),
             }),

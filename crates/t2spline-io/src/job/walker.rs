@@ -169,7 +169,7 @@ pub(super) fn kind(v: &Value) -> &'static str {
 }
 
 /// The known key closest to `key` by edit distance, if it is a likely typo.
-fn suggestion(key: &str, known: &[&'static str]) -> Option<&'static str> {
+pub(super) fn suggestion(key: &str, known: &[&'static str]) -> Option<&'static str> {
     // Edit distance costs len(key)·len(known): a megabyte-long key is no typo.
     if key.chars().count() > 32 {
         return None;

@@ -4,8 +4,9 @@ use serde_json::{json, Map, Value};
 use t2spline::job::{Job, Model, ModelVisitor, Samples};
 use t2spline::{Axis, Direction, FuzzyCurve, FuzzySurface, Layer, Nt2Point};
 
-/// The job as JSON in canonical form: explicit weights and knots, and every
-/// number with its own `lower_height`. Parsing it gives back an equal job.
+/// The job as JSON in canonical form: explicit weights, knots and type
+/// reduction, and every number with its own `lower_height`. Parsing it gives
+/// back an equal job.
 ///
 /// # Examples
 /// ```
@@ -27,6 +28,7 @@ pub fn job_json(job: &Job) -> Value {
             if let Some(a) = job.alpha {
                 out.insert("alpha".into(), json!(a.get()));
             }
+            out.insert("type_reduction".into(), json!(job.type_reduction.name()));
             let samples = match job.samples {
                 Samples::Along(n) => json!(n),
                 Samples::Grid(pair) => json!(pair),

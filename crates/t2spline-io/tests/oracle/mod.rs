@@ -118,6 +118,8 @@ pub fn check_job(job: &Job) {
     let result = job
         .run(&Settings {
             alpha,
+            type_reduction: t2spline::TypeReduction::Paper,
+            unused_alpha: None,
             samples,
             derivatives: None,
         })

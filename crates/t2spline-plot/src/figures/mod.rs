@@ -10,19 +10,26 @@
 //! | `stage4-defuzzified` | crisp and defuzzified curves, largest distance, magnified | Fig. 5.4 |
 //! | `alpha-sweep` | distance along t between solution and crisp curve, several α | — |
 //! | `distance-alpha` | `error.max` and `error.rms` against α, both sides of each h | — |
+//! | `reductions` | the solution curve of every type reduction and its distance to the crisp curve | SPEC §10 |
+//!
+//! Stages 2–4 follow the run's type reduction (SPEC §10); `alpha-sweep` and
+//! `distance-alpha` show the paper's, the one that uses α.
 //!
 //! Curve figures live in [`curve`]; the layout, legend, colour bar and SVG/PNG
 //! output they use are independent of what is drawn.
 
 pub mod curve;
 mod number;
+mod number_reductions;
 pub mod style;
 pub mod surface;
 
 use t2spline::job::Job;
 use t2spline::{Alpha, Axis};
 
+pub use curve::reductions_figure;
 pub use number::number_figure;
+pub use style::reduction_label;
 
 use crate::scene::Figure;
 use crate::{data, Error};
@@ -30,7 +37,7 @@ use curve::{CurveScene, Zoom};
 use surface::{SurfaceScene, View};
 
 /// The file stems of all figures, in the order [`all_figures`] returns them.
-pub const FIGURE_NAMES: [&str; 7] = [
+pub const FIGURE_NAMES: [&str; 8] = [
     "number",
     "stage1-fuzzy",
     "stage2-alpha-cut",
@@ -38,6 +45,7 @@ pub const FIGURE_NAMES: [&str; 7] = [
     "stage4-defuzzified",
     "alpha-sweep",
     "distance-alpha",
+    "reductions",
 ];
 
 /// Which number the `number` figure shows.
@@ -104,13 +112,16 @@ pub struct FigureOptions {
 }
 
 /// Every figure of the job at `alpha`, in the order of [`FIGURE_NAMES`]; a
-/// surface job has all but `alpha-sweep`.
+/// surface job has all but `alpha-sweep` and `reductions`. Stages 2–4 follow
+/// the job's type reduction, as `t2spline run` does (a reduction other than
+/// the paper's cuts stage 2 at 0); `alpha` is the paper's level in the
+/// `number`, `distance-alpha` and `reductions` figures.
 ///
 /// # Errors
 /// [`Error::NoSuchPoint`] or [`Error::NoSuchAxis`] if `options.number` names
 /// a point or coordinate the job lacks.
 pub fn all_figures(job: &Job, alpha: Alpha, options: &FigureOptions) -> Result<Vec<Figure>, Error> {
-    let number = number_figure(job, alpha, options.number)?;
+    let number = number_figure(job, alpha, job.type_reduction, options.number)?;
     let result = data::compute(job, alpha)?;
     let heights = job.model.heights();
     if job.model.is_surface() {
@@ -133,5 +144,6 @@ pub fn all_figures(job: &Job, alpha: Alpha, options: &FigureOptions) -> Result<V
         curve::stage4_figure(job, &scene, Zoom::WhereApart)?,
         curve::sweep_figure(job)?,
         curve::distance_figure(job, alpha.get())?,
+        reductions_figure(job, alpha, options.aspect)?,
     ])
 }

@@ -1,12 +1,13 @@
 //! One fuzzy number (paper Figs. 3.1 and 4.1–4.4): its three membership
 //! functions, the footprint of uncertainty, the height h, the cut at alpha and
-//! the type-reduced triangle with its centroid.
+//! the type-reduced triangle with its centroid; and the other reductions of
+//! SPEC §10 (`number_reductions.rs`).
 
 use t2spline::job::Job;
-use t2spline::{Alpha, AlphaCut, Axis, Interval, Layer, Nt2Number, Tfn};
+use t2spline::{Alpha, AlphaCut, Axis, Interval, Layer, Nt2Number, Tfn, TypeReduction};
 
 use super::style::{layer_marker, layer_stroke, upper_band};
-use super::NumberChoice;
+use super::{number_reductions, NumberChoice};
 use crate::scene::{Figure, LegendEntry, Mark, Panel, Priority, Xy};
 use crate::style::{Marker, Shape, Stroke, GREY, INK, PURPLE};
 use crate::ticks::short;
@@ -162,8 +163,9 @@ fn reduced(p: &mut Panel, tfn: &Tfn, c: f64) {
     }
 }
 
-/// The legend of what is drawn (the LMF's cut ends only below its height).
-fn legend(lower_cut: bool) -> Vec<LegendEntry> {
+/// The legend of what is drawn (the LMF's cut ends only below its height),
+/// the paper's defuzzified value `d` named as such.
+fn legend(lower_cut: bool, d: f64) -> Vec<LegendEntry> {
     let lmf = if lower_cut {
         LegendEntry::line_marker(
             "LMF (lower, height h) and its cut ends",
@@ -190,16 +192,27 @@ fn legend(lower_cut: bool) -> Vec<LegendEntry> {
         lmf,
         LegendEntry::area("footprint of uncertainty", upper_band()),
         LegendEntry::line("type-reduced triangle", tfn_stroke()),
-        LegendEntry::marker("defuzzified value", centroid_marker()),
+        LegendEntry::marker(
+            &format!("paper: defuzzified {}", short(d, 4)),
+            centroid_marker(),
+        ),
     ]
 }
 
-/// The `number` figure for one coordinate of one control point at `alpha`.
+/// The `number` figure for one coordinate of one control point at `alpha`:
+/// the paper's cut and type reduction, and the other reductions of SPEC §10
+/// (which do not use alpha) beside them. The subtitle states the reduction
+/// `method` (the run's).
 ///
 /// # Errors
 /// [`Error::NoSuchPoint`] or [`Error::NoSuchAxis`] if the job has no such
 /// point or coordinate.
-pub fn number_figure(job: &Job, alpha: Alpha, choice: NumberChoice) -> Result<Figure, Error> {
+pub fn number_figure(
+    job: &Job,
+    alpha: Alpha,
+    method: TypeReduction,
+    choice: NumberChoice,
+) -> Result<Figure, Error> {
     let x = data::number(&job.model, choice.point, choice.axis)?;
     let c = x.alpha_cut(alpha);
     let tfn = c.type_reduce();
@@ -209,10 +222,22 @@ pub fn number_figure(job: &Job, alpha: Alpha, choice: NumberChoice) -> Result<Fi
     membership(&mut panel, &x);
     cut(&mut panel, &c, alpha.get());
     reduced(&mut panel, &tfn, x.crisp());
+    let mut legend = legend(c.lower().is_some(), tfn.defuzzify());
+    legend.extend(number_reductions::add_reductions(&mut panel, &x));
     let regime = if c.lower().is_some() {
         "α ≤ h: three cut ends averaged"
     } else {
         "α > h: no lower cut, two ends averaged"
+    };
+    let subtitle = match method {
+        TypeReduction::Paper => format!(
+            "{regime}; type-reduced ({}, {}, {}), defuzzified {}",
+            short(tfn.left(), 4),
+            short(x.crisp(), 4),
+            short(tfn.right(), 4),
+            short(tfn.defuzzify(), 4)
+        ),
+        method => number_reductions::reduction_subtitle(&x, method),
     };
     Ok(Figure::new(
         "number",
@@ -220,14 +245,8 @@ pub fn number_figure(job: &Job, alpha: Alpha, choice: NumberChoice) -> Result<Fi
             "Fuzzy number: coordinate {name} of control point {}",
             choice.point_name(&job.model)
         ),
-        format!(
-            "{regime}; type-reduced ({}, {}, {}), defuzzified {}",
-            short(tfn.left(), 4),
-            short(x.crisp(), 4),
-            short(tfn.right(), 4),
-            short(tfn.defuzzify(), 4)
-        ),
+        subtitle,
         vec![panel],
-        legend(c.lower().is_some()),
+        legend,
     ))
 }

@@ -1,9 +1,9 @@
 //! How each series of the method looks, the same in every figure.
 
-use t2spline::Layer;
+use t2spline::{Layer, TypeReduction};
 
 use crate::style::{
-    Fill, Marker, Shape, Stroke, BLACK, BLUE, GREEN, GREY, ORANGE, PURPLE, VERMILLION,
+    Fill, Marker, Shape, Stroke, BLACK, BLUE, GREEN, GREY, ORANGE, PURPLE, SKY, VERMILLION,
 };
 
 /// The layers of each function, for legends and bars: (left, right, name).
@@ -127,4 +127,41 @@ pub fn distance_stroke() -> Stroke {
 #[must_use]
 pub fn distance_marker() -> Marker {
     Marker::open(Shape::Circle, 4.0, BLACK)
+}
+
+/// A type reduction's name in legends, subtitles and the report's selector.
+#[must_use]
+pub fn reduction_label(method: TypeReduction) -> &'static str {
+    match method {
+        TypeReduction::Paper => "paper",
+        TypeReduction::Centroid => "centroid (Karnik–Mendel)",
+        TypeReduction::NieTan => "Nie–Tan",
+        TypeReduction::AlphaPlanes => "alpha-planes",
+    }
+}
+
+/// A type reduction's solution curve: a colour and a dash pattern each, so
+/// that the four stay apart in grey print too. The paper's is the purple of
+/// the type-reduced curves (stage 3); the others avoid the colours of the
+/// membership functions (blue, green, vermillion) where they are drawn
+/// beside them (the `number` figure) — Nie–Tan's blue only as a marker there.
+#[must_use]
+pub fn reduction_stroke(method: TypeReduction) -> Stroke {
+    match method {
+        TypeReduction::Paper => Stroke::dashed(PURPLE, 1.8, "7 3"),
+        TypeReduction::Centroid => Stroke::solid(SKY, 1.8),
+        TypeReduction::NieTan => Stroke::dashed(BLUE, 1.8, "2 2"),
+        TypeReduction::AlphaPlanes => Stroke::dashed(ORANGE, 1.8, "9 3 2 3"),
+    }
+}
+
+/// The marker of a type reduction's defuzzified value or largest distance.
+#[must_use]
+pub fn reduction_marker(method: TypeReduction) -> Marker {
+    match method {
+        TypeReduction::Paper => Marker::filled(Shape::Diamond, 8.0, PURPLE),
+        TypeReduction::Centroid => Marker::filled(Shape::Square, 6.5, SKY),
+        TypeReduction::NieTan => Marker::filled(Shape::Triangle, 7.5, BLUE),
+        TypeReduction::AlphaPlanes => Marker::filled(Shape::Circle, 6.5, ORANGE),
+    }
 }

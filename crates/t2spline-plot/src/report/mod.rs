@@ -6,17 +6,21 @@
 //!
 //! The slider stops on a grid of alpha ([`Stops`]: 0.01 apart for small jobs,
 //! coarser as the job grows, to keep the file within [`DATA_BUDGET`]), at
-//! every lower height h and at the starting alpha. For every stop the numbers
-//! shown, the changing parts of the figures and the downloads are computed
-//! here, in Rust, by the same library calls as `t2spline run --alpha A`, and
-//! embedded compressed ([`pack`]); the page's script only unpacks and swaps
-//! them in. Numbers are written as `run` writes them, so they agree to the
-//! last digit.
+//! every lower height h and at the starting alpha. A selector switches the
+//! type reduction of stages 3–4 (SPEC §10): the paper's has a frame per
+//! slider stop, each other reduction one frame after them (it does not use
+//! alpha). For every frame the numbers shown, the changing parts of the
+//! figures and the downloads are computed here, in Rust, by the same library
+//! calls as `t2spline run --alpha A --type-reduction NAME`, and embedded
+//! compressed ([`pack`]); the page's script only unpacks and swaps them in.
+//! Numbers are written as `run` writes them, so they agree to the last
+//! digit.
 
 mod downloads;
 mod frames;
 mod pack;
 mod page;
+mod reductions;
 mod stops;
 pub mod tables;
 
@@ -28,11 +32,11 @@ pub use stops::Stops;
 
 use serde_json::{json, Value};
 use t2spline::job::{Job, RunOutput};
-use t2spline::{Alpha, Axis, Layer};
+use t2spline::{Alpha, Axis, Layer, TypeReduction};
 
 use crate::figures::curve::{
-    distance_figure, stage1_figure, stage2_figure, stage3_figure, stage4_figure, sweep_figure,
-    CurveScene, Zoom,
+    distance_figure, reductions_figure, stage1_figure, stage2_figure, stage3_figure, stage4_figure,
+    sweep_figure, CurveScene, Zoom,
 };
 use crate::figures::surface::{self, SurfaceScene};
 use crate::figures::{number_figure, FigureOptions};
@@ -65,19 +69,27 @@ pub fn render(
 ) -> Result<String, Error> {
     let heights = job.model.heights();
     let (stops, with_files) = choose_stops(job, start, options)?;
-    let mut stop_data = Vec::with_capacity(stops.alphas.len());
+    // Frames 0..stops: the paper's reduction at every stop; then one frame
+    // per other reduction, which does not use alpha.
+    let others = reductions::frames(stops.alphas.len());
+    let initial = reductions::initial_frame(&others, job.type_reduction).unwrap_or(stops.initial);
+    let mut shown: Vec<(Alpha, TypeReduction)> = stops
+        .alphas
+        .iter()
+        // Stops lie in [0, 1].
+        .map(|&a| Ok((Alpha::try_new(a)?, TypeReduction::Paper)))
+        .collect::<Result<_, t2spline::Error>>()?;
+    shown.extend(others.iter().map(|f| (start, f.method)));
+    let mut frame_data = Vec::with_capacity(shown.len());
     let mut kinds: [Vec<Figure>; 4] = Default::default();
     let mut files: Vec<(String, Vec<String>)> = Vec::new();
-    let mut start_run = None;
-    for &a in &stops.alphas {
-        // Stops lie in [0, 1].
-        let alpha = Alpha::try_new(a)?;
-        let [number, s2, s3, s4] = stop_figures(job, alpha, &heights, options)?;
+    for &(alpha, method) in &shown {
+        let [number, s2, s3, s4] = stop_figures(job, alpha, method, &heights, options)?;
         for (list, f) in kinds.iter_mut().zip([number, s2, s3, s4]) {
             list.push(f);
         }
-        let run = data::run_job(job, alpha)?;
-        if with_files.carries(a) {
+        let run = data::run_job(job, alpha, method)?;
+        if with_files.carries(alpha.get(), method) {
             for (k, (name, text)) in files_of(&run)?.into_iter().enumerate() {
                 match files.get_mut(k) {
                     Some((_, texts)) => texts.push(text),
@@ -85,14 +97,13 @@ pub fn render(
                 }
             }
         }
-        stop_data.push(run);
-        if stop_data.len() == stops.initial + 1 {
-            start_run = stop_data.last().cloned();
-        }
+        frame_data.push(run);
     }
-    let Some(start_run) = start_run else {
+    let Some(start_run) = frame_data.get(initial).cloned() else {
         return Err(Error::Core(t2spline::Error::MissingAlpha));
     };
+    // The distance against alpha is the paper's: a frame per slider stop,
+    // shown at the slider's stop whatever the reduction.
     let distance = distance_figure(job, start.get())?;
     let distances: Vec<Figure> = stops
         .alphas
@@ -100,40 +111,46 @@ pub fn render(
         .map(|&a| with_alpha_rule(&distance, a))
         .collect();
     let probes = stops.probes(&heights);
+    let mut all_probes = probes.clone();
+    all_probes.extend(others.iter().map(|f| f.frame));
     let mut strings = Strings::default();
-    let figs: Vec<Frames> = kinds
+    let mut figs: Vec<Frames> = kinds
         .iter()
-        .chain(std::iter::once(&distances))
-        .zip(["fn-", "s2-", "s3-", "s4-", "da-"])
-        .map(|(list, prefix)| frames(list, stops.initial, &probes, prefix, &mut strings))
+        .zip(["fn-", "s2-", "s3-", "s4-"])
+        .map(|(list, prefix)| frames(list, initial, &all_probes, prefix, &mut strings))
         .collect();
+    let mut da = frames(&distances, stops.initial, &probes, "da-", &mut strings);
+    da.data["paper"] = json!(true);
+    figs.push(da);
     let table_defs = tables::tables(&start_run);
-    let stops_json: Vec<Value> = stops
-        .alphas
+    let stops_json: Vec<Value> = shown
         .iter()
-        .zip(&stop_data)
-        .map(|(a, r)| stop_json(*a, r, &heights, &table_defs))
+        .zip(&frame_data)
+        .map(|((a, _), r)| stop_json(a.get(), r, &heights, &table_defs))
         .collect();
     let data_block = json!({
-        "initial": stops.initial,
+        "initial": initial,
         "step": stops.step_text(),
+        "reductions": reductions::json(&others),
         "stops": stops_json,
         "figures": figs.iter().map(|f| f.data.clone()).collect::<Vec<_>>(),
         "strings": strings.into_json(),
         "downloads": downloads::pack(&files),
-        "files_at": with_files.index_json(&stops.alphas),
+        "files_at": with_files.index_json(&shown),
         "files_note": with_files.note(),
     });
-    let fig_result = data::compute_within(job, start, data::REPORT_SURFACE_GRID)?;
+    let fig_result =
+        data::compute_within(job, start, job.type_reduction, data::REPORT_SURFACE_GRID)?;
     let surface = job.model.is_surface();
-    let (stage1, sweep) = if surface {
+    let (stage1, sweep, compared) = if surface {
         let scene = SurfaceScene::new(&fig_result, &heights, options.view, options.aspect);
-        (static_svg(&surface::stage1_figure(&scene)), None)
+        (static_svg(&surface::stage1_figure(&scene)), None, None)
     } else {
         let scene = CurveScene::new(&fig_result, &heights, options.aspect);
         (
             static_svg(&stage1_figure(&scene)),
             Some(static_svg(&sweep_figure(job)?)),
+            Some(static_svg(&reductions_figure(job, start, options.aspect)?)),
         )
     };
     let table_html: Vec<String> = table_defs
@@ -141,25 +158,28 @@ pub fn render(
         .map(|t| tables::html(t, &start_run))
         .collect();
     let mut page = Page::default();
-    let contents = [
+    let contents: Vec<(&str, &str)> = [
         ("number", "One number"),
         ("stage1", "Stage 1"),
         ("stage2", "Stage 2"),
         ("stage3", "Stage 3"),
         ("stage4", "Stage 4"),
         ("distance", "Distance and α"),
+        ("reductions", "Type reductions"),
         ("job", "The job"),
-    ];
+    ]
+    .into_iter()
+    .filter(|(id, _)| *id != "reductions" || compared.is_some())
+    .collect();
     page.header(job.description.as_deref(), &start_run, &heights, &contents);
     page.controls(
-        &stops.alphas,
-        stops.initial,
+        &stops,
         &heights,
         &start_run,
-        &stops.step_text(),
+        &reductions::selector(job.type_reduction),
     );
     let number_caption = format!(
-        "Coordinate {} of control point {}: its upper (UMF), primary and lower (LMF) membership functions, the cut at α and the type-reduced triangle with its centroid. Other numbers: t2spline report --point {} --axis x|y|z.",
+        "Coordinate {} of control point {}: its upper (UMF), primary and lower (LMF) membership functions, the cut at α and the paper's type-reduced triangle with its centroid, and below the axis the other reductions (none uses α). Other numbers: t2spline report --point {} --axis x|y|z.",
         options.number.axis.name(),
         options.number.point_name(&job.model),
         if job.model.is_surface() { "I,J" } else { "I" }
@@ -169,13 +189,17 @@ pub fn render(
     } else {
         CURVE_CAPTIONS
     };
+    let compared_caption = format!(
+        "The solution curve of every type reduction and its distance to the crisp curve; the paper's at the starting α = {}. Each equals t2spline run --type-reduction NAME.",
+        number_text(Some(start.get()))
+    );
     for s in [
         Section { id: "number", title: "One fuzzy number (paper Figs. 3.1, 4.1–4.4)", svg: &figs[0].svg, figure: "number", caption: &number_caption, csv: None, tables: vec![] },
         Section { id: "stage1", title: captions[0], svg: &stage1, figure: "stage1-fuzzy", caption: "Does not depend on α.", csv: Some("stage1-layers.csv"), tables: vec![fuzzy_points_table(job, &start_run)] },
         Section { id: "stage2", title: "Stage 2: alpha-cut (Fig. 5.2)", svg: &figs[1].svg, figure: "stage2-alpha-cut", caption: "Cut ends of every number at α; a lower end is null above its height h.", csv: Some("stage2-alpha-cut.csv"), tables: vec![table_html[0].clone()] },
         Section { id: "stage3", title: "Stage 3: type reduction (Fig. 5.3)", svg: &figs[2].svg, figure: "stage3-type-reduced", caption: captions[1], csv: Some("stage3-type-reduced.csv"), tables: vec![table_html[1].clone()] },
         Section { id: "stage4", title: "Stage 4: defuzzification and distance (Fig. 5.4)", svg: &figs[3].svg, figure: "stage4-defuzzified", caption: captions[2], csv: Some("stage4-defuzzified.csv"), tables: vec![table_html[2].clone(), table_html[3].clone()] },
-        Section { id: "distance", title: "The distance as α varies", svg: &figs[4].svg, figure: "distance-alpha", caption: "Largest and rms distance against α, with both sides of every h; the vertical line is the shown α.", csv: None, tables: vec![] },
+        Section { id: "distance", title: "The distance as α varies", svg: &figs[4].svg, figure: "distance-alpha", caption: "Largest and rms distance against α for the paper's type reduction, with both sides of every h; the vertical line is the slider's α.", csv: None, tables: vec![] },
     ] {
         page.section(&s);
     }
@@ -185,20 +209,31 @@ pub fn render(
             title: "Where along the curve the solution moves",
             svg: sweep,
             figure: "alpha-sweep",
-            caption: "‖D(t) − C(t)‖ against t for several α; does not depend on the slider.",
+            caption: "‖D(t) − C(t)‖ against t for several α, the paper's type reduction; does not depend on the slider.",
+            csv: None,
+            tables: vec![],
+        });
+    }
+    if let Some(compared) = &compared {
+        page.section(&Section {
+            id: "reductions",
+            title: "The type reductions compared (SPEC §10)",
+            svg: compared,
+            figure: "reductions",
+            caption: &compared_caption,
             csv: None,
             tables: vec![],
         });
     }
     page.job(job_text);
     if std::env::var("T2SPLINE_DEBUG_SIZES").is_ok() {
-        let n = stops.alphas.len();
+        let n = shown.len();
         let figures = pack::packed_len(&json!([data_block["figures"], data_block["strings"]]));
         let downloads = pack::packed_len(&data_block["downloads"]);
         let numbers = pack::packed_len(&data_block["stops"]);
         let m = files.first().map_or(1, |(_, t)| t.len().max(1));
         eprintln!(
-            "stops {n}: figures {} per stop, numbers {} per stop; downloads at {m} stops, {} each",
+            "frames {n}: figures {} per frame, numbers {} per frame; downloads at {m} frames, {} each",
             figures / n,
             numbers / n,
             downloads / m
@@ -211,71 +246,82 @@ pub fn render(
 /// Titles of the stage 1 section, captions of the stage 3 and 4 sections.
 const CURVE_CAPTIONS: [&str; 3] = [
     "Stage 1: the fuzzy control points and layer curves (Fig. 5.1)",
-    "Each control point becomes a type-1 triangle (left, crisp, right).",
+    "Each control point becomes a type-1 triangle (left, crisp, right); with the centroid or alpha-planes, left and right are the centroid interval [c_l, c_r], which need not contain crisp; with Nie–Tan they are its one value.",
     "The distance between the crisp and the defuzzified curve at equal t, over the whole domain; the right panel magnifies its largest value, with both curves computed anew there.",
 ];
 
 /// [`CURVE_CAPTIONS`] of a surface job.
 const SURFACE_CAPTIONS: [&str; 3] = [
     "Stage 1: the fuzzy control net and layer surfaces",
-    "Each control point becomes a type-1 triangle (left, crisp, right); the map shows how far apart the left and right surfaces are.",
+    "Each control point becomes a type-1 triangle (left, crisp, right), or with the centroid or alpha-planes the interval [c_l, c_r], with Nie–Tan one value; the map shows how far apart the left and right surfaces are.",
     "The crisp surface coloured by its distance to the defuzzified one at equal (u, v); the map marks where the distance is largest (error.max_at).",
 ];
 
 /// The stops, and those that carry the downloads: as fine a grid as the
-/// packed size of two sample stops allows within [`DATA_BUDGET`], with the
-/// downloads at every stop while that grid is 0.05 or finer, and always for
-/// a curve. A larger surface job (sampled finely, its files are most of a
-/// stop: 2 MB at 101 × 101) carries the downloads on a coarser grid, at the
-/// start only or not at all ([`FileStops`]), so that its figures still get
-/// fine stops. The samples (α = 0.3 and 0.9) do not depend on the start, so
-/// a job gets the same grid whatever alpha its report starts at.
+/// packed size of two sample stops allows within [`DATA_BUDGET`], less the
+/// frames of the reductions other than the paper's, with the downloads at
+/// every frame while that grid is 0.05 or finer, and always for a curve. A
+/// larger surface job (sampled finely, its files are most of a stop: 2 MB at
+/// 101 × 101) carries the downloads on a coarser grid, at the start only or
+/// not at all ([`FileStops`]), so that its figures still get fine stops. The
+/// samples (α = 0.3 and 0.9, the paper's reduction) do not depend on the
+/// start, so a job gets the same grid whatever alpha its report starts at.
 fn choose_stops(
     job: &Job,
     start: Alpha,
     options: &FigureOptions,
 ) -> Result<(Stops, FileStops), Error> {
     let heights = job.model.heights();
-    let (mut whole, mut figures_cost) = (0, 0);
+    let (mut total, mut whole, mut figures_cost) = (0, 0, 0);
     for a in [0.3, 0.9] {
         let alpha = Alpha::try_new(a)?;
-        let run = data::run_job(job, alpha)?;
+        let run = data::run_job(job, alpha, TypeReduction::Paper)?;
         let files: Vec<String> = files_of(&run)?.into_iter().map(|(_, t)| t).collect();
-        let figures: Vec<String> = stop_figures(job, alpha, &heights, options)?
-            .iter()
-            .map(svg::render)
-            .collect();
-        whole += pack::packed_len(&json!(files));
-        figures_cost += pack::packed_len(&json!(figures)) * 9 / 20;
+        let figures: Vec<String> =
+            stop_figures(job, alpha, TypeReduction::Paper, &heights, options)?
+                .iter()
+                .map(svg::render)
+                .collect();
+        // Measured on jobs of 4 to 200 points: a stop's packed downloads take
+        // a third of a whole result's files packed alone (half its numbers
+        // change, and the CSV files repeat the result's), and its figure
+        // parts a bit under half of its whole figures.
+        let (f, g) = (
+            pack::packed_len(&json!(files)),
+            pack::packed_len(&json!(figures)),
+        );
+        total += f / 3 + g * 9 / 20;
+        whole += f;
+        figures_cost += g;
     }
-    // Measured on jobs of 4 to 200 points: a stop's packed downloads take a
-    // third of a whole result's files packed alone (half its numbers change,
-    // and the CSV files repeat the result's), and its figure parts a bit
-    // under half of its whole figures.
-    let (whole, figures_cost) = ((whole / 2).max(1), (figures_cost / 2).max(1));
-    let files_cost = (whole / 3).max(1);
-    let all = finest_within(job, start, files_cost + figures_cost, DATA_BUDGET);
+    let per_stop = (total / 2).max(1);
+    let others = reductions::count();
+    let budget = DATA_BUDGET.saturating_sub(others.saturating_mul(per_stop));
+    let all = finest_within(job, start, per_stop, budget);
     if all.per_unit >= FILES_EVERYWHERE || !job.model.is_surface() {
         return Ok((all, FileStops::Every));
     }
     // A surface's figures change more from stop to stop than a curve's: its
     // stored parts take about three quarters of its whole figures (measured
-    // on the terrain example and 40 × 40 nets), not 9/20.
-    let figures_cost = figures_cost * 5 / 3;
-    if whole > DATA_BUDGET / 2 {
+    // on the terrain example and 40 × 40 nets), not 9/20. The frames of the
+    // other reductions carry figures only.
+    let (whole, figures_cost) = ((whole / 2).max(1), (figures_cost * 3 / 8).max(1));
+    let files_cost = (whole / 3).max(1);
+    let budget = DATA_BUDGET.saturating_sub(others.saturating_mul(figures_cost));
+    if whole > budget / 2 {
         // A result this large takes most of a stop's time to compute (every
         // stop needs its exact distance), so the figures get half the budget.
-        let stops = finest_within(job, start, figures_cost, DATA_BUDGET / 2);
+        let stops = finest_within(job, start, figures_cost, budget / 2);
         return Ok((stops, FileStops::None(whole)));
     }
     // The start's files whole; the figures' grid within what is left.
-    let stops = finest_within(job, start, figures_cost, DATA_BUDGET - whole);
+    let stops = finest_within(job, start, figures_cost, budget - whole);
     let figures_bytes = stops.alphas.len() * figures_cost + whole;
     let files = stops::STEPS
         .iter()
         .filter(|&&n| stops.per_unit % n == 0)
         .map(|&n| Stops::new(job, start, n))
-        .find(|s| figures_bytes + s.alphas.len() * files_cost <= DATA_BUDGET)
+        .find(|s| figures_bytes + s.alphas.len() * files_cost <= budget)
         .map_or(FileStops::Start(start.get()), FileStops::Grid);
     Ok((stops, files))
 }
@@ -283,14 +329,15 @@ fn choose_stops(
 /// Grids of stops this fine or finer carry the downloads at every stop.
 const FILES_EVERYWHERE: u32 = 20;
 
-/// The stops that carry the downloads.
+/// The frames that carry the downloads.
 #[derive(Debug)]
 enum FileStops {
-    /// Every stop.
+    /// Every frame.
     Every,
-    /// The stops of a coarser grid (with every h and the start).
+    /// The paper's frames at the stops of a coarser grid (with every h and
+    /// the start).
     Grid(Stops),
-    /// Only the starting alpha.
+    /// The paper's frame at the starting alpha.
     Start(f64),
     /// None: one stop's files would take this many bytes, more than half
     /// the report's budget.
@@ -298,23 +345,24 @@ enum FileStops {
 }
 
 impl FileStops {
-    /// Whether the stop at `alpha` carries the downloads.
-    fn carries(&self, alpha: f64) -> bool {
+    /// Whether the frame at `alpha` with `method` carries the downloads.
+    fn carries(&self, alpha: f64, method: TypeReduction) -> bool {
+        let paper = method == TypeReduction::Paper;
         match self {
             FileStops::Every => true,
-            FileStops::Grid(s) => s.alphas.contains(&alpha),
-            FileStops::Start(a) => *a == alpha,
+            FileStops::Grid(s) => paper && s.alphas.contains(&alpha),
+            FileStops::Start(a) => paper && *a == alpha,
             FileStops::None(_) => false,
         }
     }
 
-    /// Per stop of `alphas`, the index of its downloads, or `null`.
-    fn index_json(&self, alphas: &[f64]) -> Value {
+    /// Per frame of `shown`, the index of its downloads, or `null`.
+    fn index_json(&self, shown: &[(Alpha, TypeReduction)]) -> Value {
         let mut next = 0;
-        alphas
+        shown
             .iter()
-            .map(|&a| {
-                if self.carries(a) {
+            .map(|&(a, method)| {
+                if self.carries(a.get(), method) {
                     next += 1;
                     json!(next - 1)
                 } else {
@@ -324,8 +372,8 @@ impl FileStops {
             .collect()
     }
 
-    /// What the page says at a stop without downloads (before "for α = A:
-    /// t2spline run JOB --alpha A"), or `null` if every stop has them.
+    /// What the page says at a frame without downloads (before the `run`
+    /// command that writes them), or `null` if every frame has them.
     fn note(&self) -> Value {
         let where_ = match self {
             FileStops::Every => return Value::Null,
@@ -347,18 +395,20 @@ impl FileStops {
     }
 }
 
-/// The figures that change with alpha: the number and stages 2–4.
+/// The figures that change with alpha and the type reduction `method`: the
+/// number and stages 2–4.
 fn stop_figures(
     job: &Job,
     alpha: Alpha,
+    method: TypeReduction,
     heights: &[f64],
     options: &FigureOptions,
 ) -> Result<[Figure; 4], Error> {
-    let r = data::compute_within(job, alpha, data::REPORT_SURFACE_GRID)?;
+    let r = data::compute_within(job, alpha, method, data::REPORT_SURFACE_GRID)?;
     if job.model.is_surface() {
         let scene = SurfaceScene::new(&r, heights, options.view, options.aspect);
         return Ok([
-            number_figure(job, alpha, options.number)?,
+            number_figure(job, alpha, method, options.number)?,
             surface::stage2_figure(&scene),
             surface::stage3_figure(&scene),
             surface::stage4_figure(job, &scene)?,
@@ -366,7 +416,7 @@ fn stop_figures(
     }
     let scene = CurveScene::new(&r, heights, options.aspect);
     Ok([
-        number_figure(job, alpha, options.number)?,
+        number_figure(job, alpha, method, options.number)?,
         stage2_figure(&scene),
         stage3_figure(&scene),
         stage4_figure(job, &scene, Zoom::Always)?,
@@ -393,7 +443,8 @@ fn static_svg(fig: &Figure) -> String {
     svg::document(&l, &fig.title, &svg::parts(fig, &l, ""), None)
 }
 
-/// One stop's numbers: alpha, regime, the distance, the table cells.
+/// One frame's numbers: alpha (null when the reduction does not use it),
+/// the reduction, regime, the distance, the table cells.
 fn stop_json(a: f64, r: &RunOutput, heights: &[f64], defs: &[tables::Table]) -> Value {
     let pair = |v: f64| json!([number_text(Some(v)), rounded(Some(v))]);
     let cells: serde_json::Map<String, Value> = defs
@@ -406,11 +457,17 @@ fn stop_json(a: f64, r: &RunOutput, heights: &[f64], defs: &[tables::Table]) -> 
         bar.insert(id.into(), pair(v));
     }
     bar.insert("m-rms".into(), pair(r.error.rms));
+    let (alpha, shown) = if r.alpha_used {
+        (json!(number_text(Some(a))), json!(rounded(Some(a))))
+    } else {
+        (Value::Null, json!("not used"))
+    };
     json!({
-        "alpha": number_text(Some(a)),
-        "shown": rounded(Some(a)),
-        "regime": r.regime,
-        "at_h": heights.contains(&a),
+        "alpha": alpha,
+        "shown": shown,
+        "reduction": r.type_reduction.name(),
+        "regime": reductions::regime_text(r),
+        "at_h": r.alpha_used && heights.contains(&a),
         "bar": bar,
         "cells": cells,
     })

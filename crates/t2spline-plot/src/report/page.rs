@@ -1,6 +1,6 @@
 //! The report's HTML: a header with the job's facts and a table of contents,
-//! the sticky bar (alpha slider, a number field, the distance, the result
-//! download), one section per figure with its downloads and tables, the job,
+//! the sticky bar (type-reduction selector, alpha slider, a number field, the
+//! distance, the result download), one section per figure with its downloads and tables, the job,
 //! and the packed data block with the script.
 
 use std::fmt::Write as _;
@@ -8,6 +8,7 @@ use std::fmt::Write as _;
 use t2spline::job::{Parameter, RunOutput};
 
 use super::tables::{number_text, rounded};
+use super::Stops;
 use crate::svg::escape;
 use crate::ticks::short;
 
@@ -124,23 +125,23 @@ impl Page {
         self.html.push_str("</nav>\n</header>\n");
     }
 
-    /// The sticky bar: slider, number field, regime, jumps to each h, the
-    /// distance at the shown alpha and the result's download.
-    pub fn controls(
-        &mut self,
-        alphas: &[f64],
-        initial: usize,
-        heights: &[f64],
-        r: &RunOutput,
-        step: &str,
-    ) {
+    /// The sticky bar: the type-reduction selector, slider at the start's
+    /// stop, number field, regime, jumps to each h, the distance of the
+    /// starting result `r` and the result's download.
+    pub fn controls(&mut self, stops: &Stops, heights: &[f64], r: &RunOutput, selector: &str) {
+        let (alphas, initial) = (&stops.alphas, stops.initial);
         let a = number_text(Some(alphas[initial]));
+        // A reduction that does not use alpha starts on its own frame.
+        let (shown, stamp) = if r.alpha_used {
+            (rounded(Some(alphas[initial])), format!("alpha-{a}"))
+        } else {
+            ("not used".to_owned(), r.type_reduction.name().to_owned())
+        };
         let _ = write!(
             self.html,
-            "<div id=\"controls\" role=\"region\" aria-label=\"alpha\">\n<div class=\"row\">\n<label for=\"alpha\">α</label>\n<input type=\"range\" id=\"alpha\" min=\"0\" max=\"{}\" step=\"1\" value=\"{initial}\" disabled>\n<input type=\"number\" id=\"alpha-field\" min=\"0\" max=\"1\" step=\"any\" value=\"{a}\" aria-label=\"alpha value\" disabled>\n<output id=\"alpha-value\" for=\"alpha\" data-value=\"{a}\">{}</output>\n<span id=\"regime\">{}</span>\n",
+            "<div id=\"controls\" role=\"region\" aria-label=\"type reduction and alpha\">\n<div class=\"row\">\n{selector}<label for=\"alpha\">α</label>\n<input type=\"range\" id=\"alpha\" min=\"0\" max=\"{}\" step=\"1\" value=\"{initial}\" disabled>\n<input type=\"number\" id=\"alpha-field\" min=\"0\" max=\"1\" step=\"any\" value=\"{a}\" aria-label=\"alpha value\" disabled>\n<output id=\"alpha-value\" for=\"alpha\" data-value=\"{a}\" data-stamp=\"{stamp}\">{shown}</output>\n<span id=\"regime\">{}</span>\n",
             alphas.len() - 1,
-            rounded(Some(alphas[initial])),
-            r.regime
+            escape(&super::reductions::regime_text(r))
         );
         for h in heights.iter().take(6) {
             if let Some(k) = alphas.iter().position(|a| a == h) {
@@ -154,10 +155,11 @@ impl Page {
         let e = &r.error;
         let _ = write!(
             self.html,
-            "</div>\n<div class=\"row\">\n<span class=\"metrics\">max distance {} at {}, rms {}</span>\n<span class=\"downloads\">result at this α: <button type=\"button\" class=\"dl\" data-file=\"result.json\">JSON</button></span>\n</div>\n<p class=\"note\" id=\"alpha-note\" aria-live=\"polite\">Stops at α = 0, {step}, …, 1 and at every h. At α = h type reduction switches from averaging three cut ends to two (SPEC §3), so the solution jumps just above h; that is the paper's method. Every number equals <code>t2spline run --alpha A</code> at the shown α (rounded where shown; exact in the downloads).</p>\n</div>\n<main>\n",
+            "</div>\n<div class=\"row\">\n<span class=\"metrics\">max distance {} at {}, rms {}</span>\n<span class=\"downloads\">result shown: <button type=\"button\" class=\"dl\" data-file=\"result.json\">JSON</button></span>\n</div>\n<p class=\"note\" id=\"alpha-note\" aria-live=\"polite\">Stops at α = 0, {}, …, 1 and at every h. At α = h type reduction switches from averaging three cut ends to two (SPEC §3), so the solution jumps just above h; that is the paper's method. Every number equals <code>t2spline run --alpha A</code> at the shown α (rounded where shown; exact in the downloads). Only the paper's type reduction uses α: with another one selected the slider rests, stage 2 is cut at α = 0 (the whole footprint) and every number equals <code>t2spline run --type-reduction NAME</code>.</p>\n</div>\n<main>\n",
             metric("m-max", e.max),
             max_at(r),
             metric("m-rms", e.rms),
+            stops.step_text(),
         );
     }
 

@@ -1,7 +1,7 @@
-// t2spline report: the alpha slider, the number field and the downloads.
-// Every number, curve and file was computed by t2spline and stored in the
-// data block (compressed); this script only unpacks it and swaps the parts
-// in (it does no arithmetic on the method).
+// t2spline report: the type-reduction selector, the alpha slider, the number
+// field and the downloads. Every number, curve and file was computed by
+// t2spline and stored in the data block (compressed); this script only
+// unpacks it and swaps the parts in (it does no arithmetic on the method).
 (function () {
   "use strict";
   var slider = document.getElementById("alpha");
@@ -10,8 +10,13 @@
   var regime = document.getElementById("regime");
   var note = document.getElementById("alpha-note");
   var controls = document.getElementById("controls");
+  var select = document.getElementById("reduction");
+  var buttons = document.querySelectorAll("button[data-stop]");
   var data = null;
   var shown = null;
+  // The frame shown: a slider stop of the paper's reduction, or the frame
+  // of another reduction (after the stops).
+  var current = null;
 
   // The sticky bar's height, so that a section jumped to starts below it.
   function barHeight() {
@@ -26,13 +31,16 @@
 
   function show(k) {
     var stop = data.stops[k];
+    current = k;
     out.textContent = stop.shown;
-    out.setAttribute("data-value", stop.alpha);
-    field.value = stop.alpha;
+    out.setAttribute("data-value", stop.alpha === null ? "" : stop.alpha);
+    out.setAttribute("data-stamp", stop.alpha === null ? stop.reduction : "alpha-" + stop.alpha);
+    if (stop.alpha !== null) field.value = stop.alpha;
     regime.textContent = stop.regime + (stop.at_h ? " (α = h: last level with three-term averages)" : "");
-    slider.setAttribute("aria-valuetext", "alpha " + stop.alpha);
+    slider.setAttribute("aria-valuetext", stop.alpha === null ? "alpha not used" : "alpha " + stop.alpha);
     data.figures.forEach(function (f, j) {
-      var frame = f.frames[k];
+      // A figure of the paper's reduction only follows the slider.
+      var frame = f.frames[f.paper ? Number(slider.value) : k];
       f.parts.forEach(function (part, i) {
         if (shown[j][i] !== frame[i]) {
           document.getElementById(f.prefix + part).innerHTML = data.strings[frame[i]];
@@ -56,21 +64,22 @@
     });
     document.body.classList.toggle("at-h", stop.at_h);
     var files = data.files_at[k] !== null;
+    var command = "t2spline run JOB " + (stop.alpha === null ? "--type-reduction " + stop.reduction : "--alpha " + stop.alpha);
     Array.prototype.forEach.call(document.querySelectorAll("button.dl[data-file]"), function (b) {
       b.disabled = !files;
-      b.title = files ? "" : "Not in the report at this α; t2spline run JOB --alpha " + stop.alpha + " writes it.";
+      b.title = files ? "" : "Not in the report here; " + command + " writes it.";
     });
     if (!files) {
-      note.textContent = data.files_note + "; for α = " + stop.alpha + ": t2spline run JOB --alpha " +
-        stop.alpha + " [--csv DIR].";
+      note.textContent = data.files_note + "; here: " + command + " [--csv DIR].";
     }
   }
 
-  // The stop nearest to a typed alpha (alphas are compared, not computed).
+  // The slider stop nearest to a typed alpha (alphas are compared, not
+  // computed); the frames of other reductions have no alpha.
   function nearest(value) {
     var best = 0;
     data.stops.forEach(function (s, k) {
-      if (Math.abs(Number(s.alpha) - value) < Math.abs(Number(data.stops[best].alpha) - value)) best = k;
+      if (s.alpha !== null && Math.abs(Number(s.alpha) - value) < Math.abs(Number(data.stops[best].alpha) - value)) best = k;
     });
     return best;
   }
@@ -98,7 +107,7 @@
   // list: a string is a number, an integer repeats an earlier one (that many
   // places after the last repeated).
   function fileText(name, k) {
-    var at = data.files_at[k === undefined ? Number(slider.value) : k];
+    var at = data.files_at[k === undefined ? current : k];
     if (at === null) return null;
     var stop = data.downloads.stops[at];
     var table = [], values = [], last = 0;
@@ -190,9 +199,25 @@
     a.click();
     setTimeout(function () { URL.revokeObjectURL(a.href); a.remove(); }, 1000);
   }
+  // "result-alpha-0.8.json", or "result-centroid.json" for a reduction
+  // that does not use alpha.
   function stamped(name) {
-    var alpha = data ? data.stops[Number(slider.value)].alpha : out.getAttribute("data-value");
-    return name.replace(/\.(json|csv|svg|png)$/, "-alpha-" + alpha + ".$1");
+    return name.replace(/\.(json|csv|svg|png)$/, "-" + out.getAttribute("data-stamp") + ".$1");
+  }
+
+  // The paper's reduction follows the slider; each other one has a frame of
+  // its own (it does not use alpha), named in data.reductions.
+  function showReduction() {
+    var frame = null;
+    data.reductions.forEach(function (r) {
+      if (r.name === select.value) frame = r.frame;
+    });
+    var paper = frame === null;
+    slider.disabled = !paper;
+    field.disabled = !paper;
+    Array.prototype.forEach.call(buttons, function (b) { b.disabled = !paper; });
+    note.textContent = "";
+    show(paper ? Number(slider.value) : frame);
   }
 
   Array.prototype.forEach.call(document.querySelectorAll("button.dl"), function (b) {
@@ -209,22 +234,24 @@
   });
 
   function ready() {
-    shown = data.figures.map(function (f) { return f.frames[data.initial].slice(); });
-    slider.disabled = false;
-    field.disabled = false;
+    shown = data.figures.map(function (f) {
+      return f.frames[f.paper ? Number(slider.value) : data.initial].slice();
+    });
+    select.disabled = false;
     slider.addEventListener("input", function () {
       note.textContent = "";
       show(Number(slider.value));
     });
     field.addEventListener("change", fromField);
-    Array.prototype.forEach.call(document.querySelectorAll("button[data-stop]"), function (b) {
+    Array.prototype.forEach.call(buttons, function (b) {
       b.addEventListener("click", function () {
         slider.value = b.getAttribute("data-stop");
         note.textContent = "";
         show(Number(slider.value));
       });
     });
-    show(Number(slider.value));
+    select.addEventListener("change", showReduction);
+    showReduction();
     document.body.setAttribute("data-ready", "1");
   }
 

@@ -8,6 +8,17 @@ fn example() -> (Job, String) {
     (t2spline_io::parse_job(&text, "example").unwrap(), text)
 }
 
+/// The report of `job` with the slider starting at 0.37.
+fn render_at_037(job: &Job, text: &str) -> String {
+    render(
+        job,
+        text,
+        Alpha::try_new(0.37).unwrap(),
+        &FigureOptions::default(),
+    )
+    .unwrap()
+}
+
 /// The report's data block, unpacked.
 fn data_block(html: &str) -> Value {
     let start = html.find("id=\"report-data\">").unwrap() + 17;
@@ -19,56 +30,139 @@ fn data_block(html: &str) -> Value {
     serde_json::from_slice(&json).unwrap()
 }
 
+/// The result of `t2spline run --alpha A --type-reduction M` on `job`,
+/// through the core's settings (not the report's own path).
+fn run(job: &Job, alpha: f64, method: TypeReduction) -> RunOutput {
+    let settings = job
+        .settings(&t2spline::job::Overrides {
+            alpha: Some(alpha),
+            type_reduction: Some(method),
+            ..Default::default()
+        })
+        .unwrap();
+    job.run(&settings).unwrap()
+}
+
+/// The report's table cells of `shown` are those of `run`.
+fn assert_same_tables(shown: &RunOutput, run: &RunOutput, what: &str) {
+    for t in tables::tables(run) {
+        assert_eq!(
+            tables::cells(&t, shown),
+            tables::cells(&t, run),
+            "{what}, {}",
+            t.id
+        );
+    }
+}
+
 #[test]
 fn table_cells_are_the_run_result_at_the_job_sampling() {
     let (job, _) = example();
     for a in Stops::new(&job, Alpha::try_new(0.8).unwrap(), 100).alphas {
         let alpha = Alpha::try_new(a).unwrap();
         let figure_result = data::compute(&job, alpha).unwrap();
-        let run_result = data::run_job(&job, alpha).unwrap();
-        for t in tables::tables(&run_result) {
-            assert_eq!(
-                tables::cells(&t, &figure_result),
-                tables::cells(&t, &run_result),
-                "alpha {a}, {}",
-                t.id
-            );
-        }
+        let run_result = run(&job, a, TypeReduction::Paper);
+        assert_same_tables(&figure_result, &run_result, &format!("alpha {a}"));
+    }
+}
+
+#[test]
+fn every_reduction_is_the_run_result() {
+    let (job, _) = example();
+    let alpha = Alpha::try_new(0.8).unwrap();
+    for method in TypeReduction::ALL {
+        let figure_result = data::compute_with(&job, alpha, method).unwrap();
+        let run_result = run(&job, 0.8, method);
+        assert_eq!(figure_result.type_reduction, method);
+        assert_same_tables(&figure_result, &run_result, method.name());
     }
 }
 
 #[test]
 fn the_report_marks_h_starts_at_the_given_alpha_and_carries_run_s_files() {
     let (job, text) = example();
-    let html = render(
-        &job,
-        &text,
-        Alpha::try_new(0.37).unwrap(),
-        &FigureOptions::default(),
-    )
-    .unwrap();
+    let html = render_at_037(&job, &text);
     assert!(html.contains("α = h = 0.6"));
-    assert!(html.contains("data-value=\"0.37\">0.37</output>"));
+    assert!(html.contains("data-value=\"0.37\" data-stamp=\"alpha-0.37\">0.37</output>"));
     assert!(html.contains("value=\"37\""), "0.37 is stop 37");
     let data = data_block(&html);
     let stops = data["stops"].as_array().unwrap();
-    assert_eq!(stops.len(), 101, "a small job gets every 0.01");
+    // 101 slider stops of the paper's reduction, one frame for each other.
+    assert_eq!(stops.len(), 104, "a small job gets every 0.01");
     assert_eq!(stops[60]["at_h"], json!(true));
     assert_eq!(stops[60]["regime"], json!("alpha <= h"));
     assert_eq!(stops[61]["regime"], json!("alpha > h"));
-    assert_eq!(data["figures"].as_array().unwrap().len(), 5);
-    // Every download at every stop is the bytes run writes.
+    assert_eq!(stops[101]["alpha"], Value::Null);
+    assert_eq!(stops[101]["shown"], json!("not used"));
+    assert_eq!(stops[101]["reduction"], json!("centroid"));
+    assert_eq!(
+        data["reductions"],
+        json!([
+            {"name": "paper", "frame": null},
+            {"name": "centroid", "frame": 101},
+            {"name": "nie-tan", "frame": 102},
+            {"name": "alpha-planes", "frame": 103},
+        ])
+    );
+    assert_eq!(data["initial"], json!(37));
+    let figures = data["figures"].as_array().unwrap();
+    assert_eq!(figures.len(), 5);
+    for f in &figures[..4] {
+        assert_eq!(
+            f["frames"].as_array().unwrap().len(),
+            104,
+            "{}",
+            f["prefix"]
+        );
+    }
+    // The distance against alpha is the paper's: a frame per slider stop.
+    assert_eq!(figures[4]["frames"].as_array().unwrap().len(), 101);
+    assert_eq!(figures[4]["paper"], json!(true));
+    assert!(html.contains("<option value=\"paper\" selected>"));
+    // Every download at every frame is the bytes run writes.
     let downloads = &data["downloads"];
-    for k in [0, 37, 60, 61, 100] {
-        let alpha = Alpha::try_new(stops[k]["alpha"].as_str().unwrap().parse().unwrap()).unwrap();
-        let files = files_of(&data::run_job(&job, alpha).unwrap()).unwrap();
+    let frames = [
+        (0, 0.0, TypeReduction::Paper),
+        (37, 0.37, TypeReduction::Paper),
+        (60, 0.6, TypeReduction::Paper),
+        (61, 0.61, TypeReduction::Paper),
+        (100, 1.0, TypeReduction::Paper),
+        (101, 0.37, TypeReduction::Centroid),
+        (102, 0.37, TypeReduction::NieTan),
+        (103, 0.37, TypeReduction::AlphaPlanes),
+    ];
+    for (k, a, method) in frames {
+        if method == TypeReduction::Paper {
+            let shown: f64 = stops[k]["alpha"].as_str().unwrap().parse().unwrap();
+            assert_eq!(shown, a, "stop {k}");
+        }
+        let files = files_of(&run(&job, a, method)).unwrap();
         assert_eq!(files.len(), downloads["files"].as_array().unwrap().len());
         for (name, text) in &files {
             assert_eq!(
                 unpack(downloads, name, k).as_deref(),
                 Some(text.as_str()),
-                "stop {k}: {name}"
+                "frame {k}: {name}"
             );
         }
     }
+}
+
+#[test]
+fn a_job_of_another_reduction_opens_on_its_frame() {
+    let (job, text) = example();
+    let job = Job {
+        type_reduction: TypeReduction::NieTan,
+        ..job
+    };
+    let html = render_at_037(&job, &text);
+    assert!(html.contains("<option value=\"nie-tan\" selected>"));
+    assert!(html.contains("data-stamp=\"nie-tan\">not used</output>"));
+    assert!(
+        html.contains("value=\"37\""),
+        "the slider rests at the start"
+    );
+    let data = data_block(&html);
+    assert_eq!(data["initial"], json!(102));
+    assert_eq!(data["stops"][102]["reduction"], json!("nie-tan"));
 }

@@ -61,6 +61,7 @@ fn example_output(alpha: f64, derivatives: Option<i64>) -> t2spline::job::RunOut
         alpha: Some(alpha),
         samples: Some(vec![11]),
         derivatives,
+        ..Overrides::default()
     };
     job.run(&job.settings(&overrides).unwrap()).unwrap()
 }
@@ -156,9 +157,8 @@ fn a_surface_run_gives_grids_of_points() {
     );
     let job = t2spline_io::read_job(std::path::Path::new(path)).unwrap();
     let overrides = Overrides {
-        alpha: None,
         samples: Some(vec![4, 3]),
-        derivatives: None,
+        ..Overrides::default()
     };
     let out = job.run(&job.settings(&overrides).unwrap()).unwrap();
     let tree = to_value(&out).unwrap();

@@ -9,6 +9,9 @@ use crate::fuzzy::{Interval, Layer, Nt2Number, Tfn};
 pub struct Alpha(f64);
 
 impl Alpha {
+    /// The level 0: the cut keeps every number whole (its whole footprint).
+    pub const ZERO: Alpha = Alpha(0.0);
+
     /// Validates a level.
     ///
     /// # Errors

@@ -8,7 +8,7 @@
 //! | name | curve | source |
 //! |---|---|---|
 //! | `crisp` | the crisp curve | SPEC §7 stage 1 |
-//! | `defuzzified` | the crisp type-2 solution at the run's alpha | SPEC §7 stage 4 |
+//! | `defuzzified` | the crisp type-2 solution at the run's alpha, by its type reduction | SPEC §7 stage 4, §10 |
 //! | `upper_left`, …, `upper_right` | the six other layer curves, before the cut | SPEC §7 stage 1 |
 //!
 //! A surface job (SPEC §9) gives the same names to its surfaces: the crisp,
@@ -26,6 +26,7 @@ use crate::error::Error;
 use crate::fuzzy::{Alpha, Layer};
 use crate::nurbs::{Direction, KnotVector, NurbsCurve, NurbsSurface};
 use crate::pipeline::{FuzzyCurve, FuzzySurface};
+use crate::reduction::TypeReduction;
 
 use super::{Job, ModelVisitor, Settings};
 
@@ -105,9 +106,9 @@ impl Geometry {
 }
 
 impl Job {
-    /// The exact curves of a run at `settings.alpha`: the crisp, the
-    /// defuzzified and the six other layer curves, named (see the module
-    /// docs). Their samples are the curves of [`Job::run`] with the same
+    /// The exact curves of a run at `settings.alpha` with
+    /// `settings.type_reduction`: the crisp, the defuzzified and the six
+    /// other layer curves, named (see the module docs). Their samples are the curves of [`Job::run`] with the same
     /// settings.
     ///
     /// # Errors
@@ -130,18 +131,19 @@ impl Job {
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn geometry(&self, settings: &Settings) -> Result<Geometry, Error> {
-        self.model.visit(Exact(settings.alpha))
+        self.model
+            .visit(Exact(settings.alpha, settings.type_reduction))
     }
 }
 
 /// [`Job::geometry`] for one kind of model.
-struct Exact(Alpha);
+struct Exact(Alpha, TypeReduction);
 
 impl ModelVisitor for Exact {
     type Output = Result<Geometry, Error>;
 
     fn curve<const D: usize>(self, curve: &FuzzyCurve<D>) -> Self::Output {
-        let defuzzified = curve.solve(self.0).defuzzified_curve();
+        let defuzzified = curve.solve_with(self.0, self.1).defuzzified_curve();
         let curves = named(curve.crisp_curve(), defuzzified, |l| curve.layer_curve(l))
             .into_iter()
             .map(|(name, c)| {
@@ -159,7 +161,7 @@ impl ModelVisitor for Exact {
     }
 
     fn surface<const D: usize>(self, surface: &FuzzySurface<D>) -> Self::Output {
-        let defuzzified = surface.solve(self.0).defuzzified_surface();
+        let defuzzified = surface.solve_with(self.0, self.1).defuzzified_surface();
         let surfaces = named(surface.crisp_surface(), defuzzified, |l| {
             surface.layer_surface(l)
         })

@@ -1,8 +1,8 @@
 //! Jobs: a fuzzy model with how to run it, and running it (SPEC §7–§8).
 //!
 //! A [`Job`] is what a job file describes, in memory: a fuzzy curve of 2 or 3
-//! dimensions ([`Model`]), the level alpha, the number of samples and a
-//! description. [`Job::settings`] combines it with what a front end overrides
+//! dimensions or a surface ([`Model`]), the level alpha, the type reduction,
+//! the number of samples and a description. [`Job::settings`] combines it with what a front end overrides
 //! ([`Overrides`]: `--alpha` on the command line, `alpha=` in Python) into
 //! checked [`Settings`], and [`Job::run`] computes every stage into a
 //! [`RunOutput`]: the one path from job to result that the command-line tool,
@@ -50,6 +50,7 @@ pub use settings::{
 
 use crate::fuzzy::{Alpha, Axis, Nt2Number, Nt2Point};
 use crate::pipeline::{FuzzyCurve, FuzzySurface};
+use crate::reduction::TypeReduction;
 
 /// A validated job (SPEC §8): the fuzzy model and how to run it.
 #[derive(Clone, Debug, PartialEq)]
@@ -57,7 +58,11 @@ pub struct Job {
     /// Free text carried along to the result.
     pub description: Option<String>,
     /// The level alpha; may be left to the front end ([`Overrides::alpha`]).
+    /// Only the paper's type reduction uses it (see [`Job::settings`]).
     pub alpha: Option<Alpha>,
+    /// The type reduction of stages 3–4 (SPEC §10; the job file's
+    /// `"type_reduction"`, default [`TypeReduction::Paper`]).
+    pub type_reduction: TypeReduction,
     /// Uniform parameters at which curves or surfaces are sampled (checked by
     /// [`Job::settings`]).
     pub samples: Samples,
@@ -67,7 +72,8 @@ pub struct Job {
 
 impl Job {
     /// A job of `model` with the defaults of SPEC §8 and §9: no description,
-    /// alpha left to the front end, [`DEFAULT_SAMPLES`] samples along a curve
+    /// alpha left to the front end, the paper's type reduction,
+    /// [`DEFAULT_SAMPLES`] samples along a curve
     /// or a grid of [`DEFAULT_SURFACE_SAMPLES`]² over a surface.
     #[must_use]
     pub fn new(model: Model) -> Job {
@@ -78,6 +84,7 @@ impl Job {
         Job {
             description: None,
             alpha: None,
+            type_reduction: TypeReduction::Paper,
             samples,
             model,
         }

@@ -10,6 +10,7 @@
 use std::fmt;
 
 use crate::fuzzy::Layer;
+use crate::reduction::TypeReduction;
 
 use super::Points;
 
@@ -30,10 +31,17 @@ pub struct RunOutput {
     pub dimension: usize,
     /// Orders, degrees, weights, knots and domain of the spline.
     pub spline: Spline,
-    /// The level alpha.
+    /// The type reduction of stages 3–4 (SPEC §10).
+    pub type_reduction: TypeReduction,
+    /// The level alpha of the cut (stage 2); 0 (the whole footprint) when
+    /// the type reduction does not use alpha.
     pub alpha: f64,
-    /// Which type-reduction rule applied (SPEC §3).
-    pub regime: Regime,
+    /// Whether stages 3–4 depend on alpha (only the paper's type reduction
+    /// uses it).
+    pub alpha_used: bool,
+    /// Which rule of SPEC §3 reduced the numbers; `None` for a type
+    /// reduction other than the paper's.
+    pub regime: Option<Regime>,
     /// Control points of every stage.
     pub control_points: ControlPoints,
     /// Curves or surfaces sampled at `samples.params`.
@@ -161,7 +169,8 @@ pub struct Distance {
     pub rms: f64,
 }
 
-/// Which rule of SPEC §3 reduced the numbers at the run's alpha.
+/// Which rule of SPEC §3 reduced the numbers at the run's alpha (the paper's
+/// type reduction).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Regime {
     /// `alpha <= h` for every number: three-term averages.

@@ -2,10 +2,11 @@
 //! curve sampled, the distance, and the derivatives when asked for.
 
 use crate::error::{Error, Place, Setting};
-use crate::fuzzy::{Alpha, Layer, Nt2Point};
+use crate::fuzzy::{Layer, Nt2Point};
 use crate::nurbs::{Direction, NurbsCurve};
 use crate::pipeline::point_stages::PointStages;
 use crate::pipeline::{FuzzyCurve, FuzzySurface, Side};
+use crate::reduction::TypeReduction;
 use crate::sampling::{CurveSamples, Params, SweepSamples};
 
 use super::output::{
@@ -15,7 +16,9 @@ use super::output::{
 use super::{Job, ModelVisitor, Points, RunOutput, Samples, Settings};
 
 impl Job {
-    /// Runs stages 1–4 at `settings.alpha` and samples every curve at
+    /// Runs stages 1–4 at `settings.alpha` with `settings.type_reduction`
+    /// (the defuzzified curve and the distance are that reduction's) and
+    /// samples every curve at
     /// `settings.samples` uniform parameters, all with the sampling engine
     /// ([`crate::sampling`]: one power form of the rational basis for every
     /// curve, multi-threaded for large jobs); with `settings.derivatives = K`
@@ -37,7 +40,7 @@ impl Job {
     /// let n = |c: f64| Nt2Number::try_new(c, [c, c], [c, c], [c, c], 0.5);
     /// let points = vec![Nt2Point::new([n(0.0)?, n(0.0)?]), Nt2Point::new([n(3.0)?, n(4.0)?])];
     /// let job = Job::new(Model::Planar(FuzzyCurve::try_new(1, points, vec![1.0, 1.0], None)?));
-    /// let s = job.settings(&Overrides { alpha: Some(0.5), samples: Some(vec![2]), derivatives: Some(2) })?;
+    /// let s = job.settings(&Overrides { alpha: Some(0.5), samples: Some(vec![2]), derivatives: Some(2), ..Overrides::default() })?;
     /// let out = job.run(&s)?;
     /// let d = out.samples.derivatives.as_ref().unwrap();
     /// assert_eq!(d.crisp[0].point(1), Some(vec![3.0, 4.0]));
@@ -61,15 +64,17 @@ impl ModelVisitor for Run<'_> {
     fn curve<const D: usize>(self, curve: &FuzzyCurve<D>) -> Self::Output {
         let Settings {
             alpha,
+            type_reduction,
             samples,
             derivatives,
+            ..
         } = *self.0;
         let Samples::Along(samples) = samples else {
             return Err(wrong_samples("a grid of samples", "a curve"));
         };
-        let solution = curve.solve(alpha);
+        let solution = curve.solve_with(alpha, type_reduction);
         // Every curve of every stage from one power form of the rational basis.
-        let sweep = curve.sample_sweep(Params::Uniform(samples), &[alpha])?;
+        let sweep = solution.sample_with_layers(Params::Uniform(samples))?;
         let d = solution.distance();
         let mut out = RunOutput {
             description: None,
@@ -81,7 +86,9 @@ impl ModelVisitor for Run<'_> {
                 knots: curve.knots().as_slice().to_vec(),
                 domain: [curve.domain().start, curve.domain().end],
             },
+            type_reduction,
             alpha: alpha.get(),
+            alpha_used: type_reduction.uses_alpha(),
             regime: regime(solution.stages()),
             control_points: control_points(curve.points(), solution.stages(), None),
             samples: sampled(
@@ -97,7 +104,8 @@ impl ModelVisitor for Run<'_> {
         };
         if let Some(order) = derivatives {
             let params = out.samples.params.along();
-            let (d, lengths) = derivative_curves(curve, alpha, params, order)?;
+            let (d, lengths) =
+                derivative_curves(curve, &solution.defuzzified_curve(), params, order)?;
             out.samples.derivatives = Some(d);
             out.samples.arc_length = Some(lengths);
         }
@@ -107,8 +115,10 @@ impl ModelVisitor for Run<'_> {
     fn surface<const D: usize>(self, surface: &FuzzySurface<D>) -> Self::Output {
         let Settings {
             alpha,
+            type_reduction,
             samples,
             derivatives,
+            ..
         } = *self.0;
         let Samples::Grid([su, sv]) = samples else {
             return Err(wrong_samples("one number of samples", "a surface"));
@@ -119,8 +129,8 @@ impl ModelVisitor for Run<'_> {
                 message: "derivatives are offered for curves; this job is a surface".into(),
             });
         }
-        let solution = surface.solve(alpha);
-        let grid = surface.sample_sweep(Params::Uniform(su), Params::Uniform(sv), &[alpha])?;
+        let solution = surface.solve_with(alpha, type_reduction);
+        let grid = solution.sample_with_layers(Params::Uniform(su), Params::Uniform(sv))?;
         let d = solution.distance();
         let [du, dv] = Direction::BOTH.map(|dir| surface.domain(dir));
         let [nu, nv] = surface.shape();
@@ -139,7 +149,9 @@ impl ModelVisitor for Run<'_> {
                 knots: Direction::BOTH.map(|dir| surface.knots(dir).as_slice().to_vec()),
                 domain: [[du.start, du.end], [dv.start, dv.end]],
             },
+            type_reduction,
             alpha: alpha.get(),
+            alpha_used: type_reduction.uses_alpha(),
             regime: regime(solution.stages()),
             control_points: control_points(surface.points(), solution.stages(), Some([nu, nv])),
             samples: sampled(
@@ -168,19 +180,23 @@ fn wrong_samples(given: &str, model: &str) -> Error {
     }
 }
 
-/// Which rule of SPEC §3 reduced the numbers.
-fn regime<const D: usize>(stages: &PointStages<D>) -> Regime {
+/// Which rule of SPEC §3 reduced the numbers; `None` if the paper's
+/// reduction did not.
+fn regime<const D: usize>(stages: &PointStages<D>) -> Option<Regime> {
+    if stages.type_reduction() != TypeReduction::Paper {
+        return None;
+    }
     let cut_points = stages.alpha_cut_points();
     let below = cut_points
         .iter()
         .flatten()
         .filter(|c| c.lower().is_some())
         .count();
-    match below {
+    Some(match below {
         0 => Regime::Above,
         n if n == cut_points.len() * D => Regime::AtOrBelow,
         _ => Regime::Mixed,
-    }
+    })
 }
 
 /// Points as a list, or as a grid of `grid`'s shape.
@@ -259,16 +275,15 @@ fn sampled<const D: usize>(
     })
 }
 
-/// The derivatives of orders `1 ..= order` of the crisp and the defuzzified
-/// curve at `params`, and their arc lengths.
+/// The derivatives of orders `1 ..= order` of the crisp curve of `curve` and
+/// of the `defuzzified` curve at `params`, and their arc lengths.
 fn derivative_curves<const D: usize>(
     curve: &FuzzyCurve<D>,
-    alpha: Alpha,
+    defuzzified: &NurbsCurve<D>,
     params: &[f64],
     order: usize,
 ) -> Result<(CrispDefuzzified<Vec<Points>>, CrispDefuzzified<f64>), Error> {
     let crisp = curve.crisp_curve();
-    let defuzzified = curve.solve(alpha).defuzzified_curve();
     let derivatives = |c: &NurbsCurve<D>, name: &'static str| -> Result<Vec<Points>, Error> {
         let mut columns = vec![vec![Vec::with_capacity(params.len()); D]; order];
         for (i, &t) in params.iter().enumerate() {
@@ -294,7 +309,7 @@ fn derivative_curves<const D: usize>(
     Ok((
         CrispDefuzzified {
             crisp: derivatives(&crisp, "crisp")?,
-            defuzzified: derivatives(&defuzzified, "defuzzified")?,
+            defuzzified: derivatives(defuzzified, "defuzzified")?,
         },
         CrispDefuzzified {
             crisp: finite_length(crisp.arc_length(), "curves.arc_length.crisp")?,

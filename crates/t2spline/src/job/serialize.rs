@@ -22,12 +22,14 @@ impl<T: Serialize> Serialize for Uv<'_, T> {
 
 impl Serialize for RunOutput {
     /// The keys in the order of the result file: `description` (if any),
-    /// `dimension`, `order`, `degree`, `weights`, `knots`, `domain`, `alpha`,
-    /// `regime`, `control_points`, `curves` or `surfaces`, `error`. A
+    /// `dimension`, `order`, `degree`, `weights`, `knots`, `domain`,
+    /// `type_reduction`, `alpha`, `alpha_used`, `regime` (`null` for a
+    /// reduction other than the paper's), `control_points`, `curves` or
+    /// `surfaces`, `error`. A
     /// surface's `order` and `degree` are pairs, its `weights` rows, its
     /// `knots` and `domain` objects with `u` and `v`.
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        let mut o = s.serialize_struct("RunOutput", 12)?;
+        let mut o = s.serialize_struct("RunOutput", 14)?;
         if let Some(d) = &self.description {
             o.serialize_field("description", d)?;
         }
@@ -62,7 +64,9 @@ impl Serialize for RunOutput {
                 "surfaces"
             }
         };
+        o.serialize_field("type_reduction", &self.type_reduction)?;
         o.serialize_field("alpha", &self.alpha)?;
+        o.serialize_field("alpha_used", &self.alpha_used)?;
         o.serialize_field("regime", &self.regime)?;
         o.serialize_field("control_points", &self.control_points)?;
         o.serialize_field(samples_key, &self.samples)?;

@@ -1,8 +1,9 @@
-//! How a job runs: the level alpha, the number of samples and the derivative
-//! order, from the job and from what a front end overrides, every value checked.
+//! How a job runs: the level alpha, the type reduction, the number of samples
+//! and the derivative order, from the job and from what a front end overrides, every value checked.
 
 use crate::error::{Error, Setting};
 use crate::fuzzy::Alpha;
+use crate::reduction::TypeReduction;
 
 use super::Job;
 
@@ -61,6 +62,8 @@ impl std::fmt::Display for Samples {
 pub struct Overrides {
     /// The level alpha.
     pub alpha: Option<f64>,
+    /// The type reduction of stages 3–4 (SPEC §10).
+    pub type_reduction: Option<TypeReduction>,
     /// The number of uniform parameters: one count, or for a surface one
     /// count for both directions or two (`[su, sv]`).
     pub samples: Option<Vec<u64>>,
@@ -71,8 +74,15 @@ pub struct Overrides {
 /// How a job runs, every value checked: build it with [`Job::settings`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Settings {
-    /// The level alpha of stages 2–4.
+    /// The level alpha of the cut (stage 2), and with the paper's type
+    /// reduction of stages 3–4 too; [`Alpha::ZERO`] (the whole footprint,
+    /// which they read) with a reduction that does not use alpha.
     pub alpha: Alpha,
+    /// The type reduction of stages 3–4 (SPEC §10).
+    pub type_reduction: TypeReduction,
+    /// An alpha that the job or the front end gave but the type reduction
+    /// does not use; front ends say so rather than ignore it silently.
+    pub unused_alpha: Option<Alpha>,
     /// Uniform parameters at which every curve or surface is sampled (at
     /// least 2 in each direction, at most [`MAX_SAMPLES`] points).
     pub samples: Samples,
@@ -85,8 +95,15 @@ impl Job {
     /// The settings of a run of this job: each override if given, else the
     /// job's value.
     ///
+    /// Alpha is the paper's parameter (SPEC §2–§3): the other type reductions
+    /// read the whole number (SPEC §10). With one of them alpha may be left
+    /// out, stage 2 is shown at [`Alpha::ZERO`] (the whole footprint), and
+    /// an alpha given anyway is checked and returned as
+    /// [`Settings::unused_alpha`].
+    ///
     /// # Errors
-    /// [`Error::MissingAlpha`] when neither gives alpha; [`Error::Setting`]
+    /// [`Error::MissingAlpha`] when neither gives alpha and the type
+    /// reduction is the paper's; [`Error::Setting`]
     /// naming the setting whose value breaks its rule: alpha outside [0, 1],
     /// samples outside `2 ..= MAX_SAMPLES` (for a surface: two counts of at
     /// least 2 whose product is at most `MAX_SAMPLES`; for a curve: one
@@ -98,7 +115,7 @@ impl Job {
     /// ```
     /// # use t2spline::job::{Overrides, Samples, Setting};
     /// # use t2spline::Error;
-    /// # use t2spline::{Alpha, FuzzyCurve, Nt2Number, Nt2Point};
+    /// # use t2spline::{Alpha, FuzzyCurve, Nt2Number, Nt2Point, TypeReduction};
     /// # use t2spline::job::{Job, Model};
     /// # let n = |c: f64| Nt2Number::try_new(c, [c - 1.0, c + 1.0], [c - 0.5, c + 0.5], [c - 0.2, c + 0.2], 0.5);
     /// # let points = vec![Nt2Point::new([n(0.0)?, n(0.0)?]), Nt2Point::new([n(1.0)?, n(1.0)?])];
@@ -109,16 +126,26 @@ impl Job {
     /// let e = job.settings(&Overrides { alpha: Some(1.5), ..Overrides::default() }).unwrap_err();
     /// assert!(matches!(e, Error::Setting { setting: Setting::Alpha, .. }));
     /// assert_eq!(e.to_string(), "alpha = 1.5 is outside [0, 1]");
+    /// // The centroid does not use alpha: stage 2 at 0, the job's 0.8 set aside.
+    /// let centroid = Overrides { type_reduction: Some(TypeReduction::Centroid), ..Overrides::default() };
+    /// let s = job.settings(&centroid)?;
+    /// assert_eq!((s.alpha, s.unused_alpha), (Alpha::ZERO, Some(Alpha::try_new(0.8)?)));
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn settings(&self, overrides: &Overrides) -> Result<Settings, Error> {
         let setting = |setting| move |message| Error::Setting { setting, message };
-        let alpha = match overrides.alpha {
-            Some(a) => Alpha::try_new(a).map_err(|e| Error::Setting {
+        let given = match overrides.alpha {
+            Some(a) => Some(Alpha::try_new(a).map_err(|e| Error::Setting {
                 setting: Setting::Alpha,
                 message: e.to_string(),
-            })?,
-            None => self.alpha.ok_or(Error::MissingAlpha)?,
+            })?),
+            None => self.alpha,
+        };
+        let type_reduction = overrides.type_reduction.unwrap_or(self.type_reduction);
+        let (alpha, unused_alpha) = if type_reduction.uses_alpha() {
+            (given.ok_or(Error::MissingAlpha)?, None)
+        } else {
+            (Alpha::ZERO, given)
         };
         let surface = matches!(self.samples, Samples::Grid(_));
         let samples = match &overrides.samples {
@@ -143,6 +170,8 @@ impl Job {
         };
         Ok(Settings {
             alpha,
+            type_reduction,
+            unused_alpha,
             samples,
             derivatives,
         })

@@ -6,6 +6,7 @@ use crate::fuzzy::{Alpha, Axis, Height, Layer, Layers, Nt2Number, Nt2Point};
 use crate::nurbs::curve::{check_weights, rational_basis_span};
 use crate::nurbs::{Domain, KnotVector, NurbsCurve};
 use crate::pipeline::Solution;
+use crate::reduction::TypeReduction;
 
 /// A rational B-spline curve whose control points are normal type-2 fuzzy points
 /// (SPEC §6, paper Def. 5.1):
@@ -189,10 +190,42 @@ impl<const D: usize> FuzzyCurve<D> {
         }))
     }
 
-    /// Runs stages 2–4 of Algorithm 1.1 at level `alpha` (SPEC §7).
+    /// Runs stages 2–4 of Algorithm 1.1 at level `alpha` with the paper's
+    /// type reduction (SPEC §7); the same as
+    /// `self.solve_with(alpha, TypeReduction::Paper)`.
     #[must_use]
     pub fn solve(&self, alpha: Alpha) -> Solution<D> {
-        Solution::new(self.clone(), alpha)
+        self.solve_with(alpha, TypeReduction::Paper)
+    }
+
+    /// Runs stages 2–4 with the type reduction `method` (SPEC §7, §10): the
+    /// cut at `alpha` (stage 2), then every control point's numbers reduced
+    /// by [`Nt2Number::reduce`] (stage 3: left and right; stage 4: the
+    /// defuzzified value). Only [`TypeReduction::Paper`] reduces the cut;
+    /// the other reductions read the whole number and do not depend on
+    /// `alpha`.
+    ///
+    /// # Examples
+    /// ```
+    /// # use t2spline::{Alpha, FuzzyCurve, Nt2Number, Nt2Point, TypeReduction};
+    /// let n = |c: f64| Nt2Number::try_new(c, [c - 0.6, c + 0.9], [c - 0.4, c + 0.6], [c - 0.2, c + 0.3], 0.6);
+    /// let points = vec![Nt2Point::new([n(0.0)?, n(0.0)?]), Nt2Point::new([n(3.0)?, n(4.0)?])];
+    /// let curve = FuzzyCurve::try_new(1, points, vec![1.0, 1.0], None)?;
+    /// let (low, high) = (Alpha::try_new(0.0)?, Alpha::try_new(0.8)?);
+    /// let centroid = curve.solve_with(low, TypeReduction::Centroid);
+    /// // Every control point is reduced as its numbers are, whatever alpha.
+    /// let c = curve.points()[1].coords()[0].centroid();
+    /// assert_eq!(centroid.type_reduced_points()[1][0].left(), c.left());
+    /// assert_eq!(centroid.defuzzified_points(), curve.solve_with(high, TypeReduction::Centroid).defuzzified_points());
+    /// // The right sides are longer: the solution moves right, by another amount per reduction.
+    /// for method in TypeReduction::ALL {
+    ///     assert!(curve.solve_with(high, method).distance().max > 0.0, "{method}");
+    /// }
+    /// # Ok::<(), t2spline::Error>(())
+    /// ```
+    #[must_use]
+    pub fn solve_with(&self, alpha: Alpha, method: TypeReduction) -> Solution<D> {
+        Solution::new(self.clone(), alpha, method)
     }
 
     /// The axes of this curve's points.

@@ -12,6 +12,7 @@ use crate::nurbs::surface::{check_params, knots_in, net_shape, net_weights, Tens
 use crate::nurbs::{Direction, Domain, KnotVector, NurbsSurface};
 use crate::pipeline::fuzzy_ops::{common_heights, from_stacked_rows, stacked_rows};
 use crate::pipeline::{FuzzyCurve, SurfaceSolution};
+use crate::reduction::TypeReduction;
 
 /// A rational B-spline surface whose control points are normal type-2 fuzzy
 /// points (SPEC §9, the paper's §6 "extended for surface design by the
@@ -192,10 +193,19 @@ impl<const D: usize> FuzzySurface<D> {
     }
 
     /// Runs stages 2–4 of Algorithm 1.1 on the control net at level `alpha`
-    /// (SPEC §7, §9).
+    /// with the paper's type reduction (SPEC §7, §9); the same as
+    /// `self.solve_with(alpha, TypeReduction::Paper)`.
     #[must_use]
     pub fn solve(&self, alpha: Alpha) -> SurfaceSolution<D> {
-        SurfaceSolution::new(self.clone(), alpha)
+        self.solve_with(alpha, TypeReduction::Paper)
+    }
+
+    /// Runs stages 2–4 on the control net with the type reduction `method`
+    /// (SPEC §9, §10), number by number exactly as
+    /// [`FuzzyCurve::solve_with`](crate::FuzzyCurve::solve_with) does.
+    #[must_use]
+    pub fn solve_with(&self, alpha: Alpha, method: TypeReduction) -> SurfaceSolution<D> {
+        SurfaceSolution::new(self.clone(), alpha, method)
     }
 
     /// The place `points[i][j].axis` of the `k`-th point of the net.

@@ -2,8 +2,9 @@
 //! crisp type-2 solution curve (SPEC §7).
 //!
 //! Stage 1 is a [`FuzzyCurve`] (control points, weights, knots) with its seven
-//! layer curves; [`FuzzyCurve::solve`] runs stages 2–4 on the control points and
-//! returns a [`Solution`], which also measures the [`Distance`] between the crisp
+//! layer curves; [`FuzzyCurve::solve`] runs stages 2–4 on the control points
+//! (with the paper's type reduction; [`FuzzyCurve::solve_with`] with any of
+//! SPEC §10) and returns a [`Solution`], which also measures the [`Distance`] between the crisp
 //! and the defuzzified curve. [`FuzzySurface`] and [`SurfaceSolution`] do the
 //! same for surfaces (SPEC §9), with the same per-number stages, and measure
 //! the [`SurfaceDistance`].

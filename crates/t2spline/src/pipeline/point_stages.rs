@@ -1,11 +1,23 @@
 //! Stages 2–4 of Algorithm 1.1 on a list of fuzzy control points, number by
-//! number (SPEC §2–§4, §7): the one place where curves ([`Solution`]) and
+//! number (SPEC §2–§4, §7, §10): the one place where curves ([`Solution`]) and
 //! surfaces ([`SurfaceSolution`]) cut, reduce and defuzzify their points.
+//!
+//! Stage 2 is the alpha-cut at the level given. Stages 3 and 4 follow the
+//! [`TypeReduction`] (SPEC §10), each number reduced by
+//! [`Nt2Number::reduce`](crate::Nt2Number::reduce):
+//!
+//! | reduction | stage 3 left, right | stage 4 |
+//! |---|---|---|
+//! | `paper` | the type-reduced triangle of the cut (SPEC §3) | its centroid (SPEC §4) |
+//! | `centroid` | `c_l`, `c_r` | `(c_l + c_r)/2` |
+//! | `nie-tan` | the Nie–Tan value | the Nie–Tan value |
+//! | `alpha-planes` | `c_l(0)`, `c_r(0)` (the widest plane) | the alpha-plane value |
 //!
 //! [`Solution`]: crate::Solution
 //! [`SurfaceSolution`]: crate::SurfaceSolution
 
-use crate::fuzzy::{Alpha, AlphaCut, Layer, Nt2Point, Tfn};
+use crate::fuzzy::{Alpha, AlphaCut, Layer, Nt2Point};
+use crate::reduction::{Reduced, TypeReduction};
 
 /// A side of a type-reduced number `(left, crisp, right)`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -17,39 +29,49 @@ pub enum Side {
 }
 
 /// The alpha-cut, type-reduced and defuzzified values of every coordinate of
-/// every control point at one level alpha (SPEC §2–§4), in the order of the
-/// points given. A net of a surface is given row by row.
+/// every control point at one level alpha and by one type reduction (SPEC
+/// §2–§4, §10), in the order of the points given. A net of a surface is given
+/// row by row.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct PointStages<const D: usize> {
     alpha: Alpha,
+    method: TypeReduction,
     alpha_cut: Vec<[AlphaCut; D]>,
-    type_reduced: Vec<[Tfn; D]>,
+    type_reduced: Vec<[Reduced; D]>,
     defuzzified: Vec<[f64; D]>,
 }
 
 impl<const D: usize> PointStages<D> {
-    /// Runs stages 2–4 on every number of `points` at level `alpha`.
-    pub(crate) fn new(points: &[Nt2Point<D>], alpha: Alpha) -> Self {
+    /// Runs stages 2–4 on every number of `points`: the cut at level `alpha`,
+    /// the reduction by `method` (which uses `alpha` only for
+    /// [`TypeReduction::Paper`]).
+    pub(crate) fn new(points: &[Nt2Point<D>], alpha: Alpha, method: TypeReduction) -> Self {
         let alpha_cut: Vec<[AlphaCut; D]> = points.iter().map(|p| p.alpha_cut(alpha)).collect();
-        let type_reduced: Vec<[Tfn; D]> = alpha_cut
+        let type_reduced: Vec<[Reduced; D]> = points
             .iter()
-            .map(|cuts| cuts.map(|c| c.type_reduce()))
+            .map(|p| p.coords().map(|x| x.reduce(method, alpha)))
             .collect();
         let defuzzified = type_reduced
             .iter()
-            .map(|tfns| tfns.map(|t| t.defuzzify()))
+            .map(|r| r.map(|r| r.defuzzified()))
             .collect();
         PointStages {
             alpha,
+            method,
             alpha_cut,
             type_reduced,
             defuzzified,
         }
     }
 
-    /// The level alpha.
+    /// The level alpha of the cut (stage 2).
     pub(crate) fn alpha(&self) -> Alpha {
         self.alpha
+    }
+
+    /// The type reduction of stages 3–4.
+    pub(crate) fn type_reduction(&self) -> TypeReduction {
+        self.method
     }
 
     /// Stage 2: the alpha-cut of every point, per coordinate.
@@ -72,8 +94,8 @@ impl<const D: usize> PointStages<D> {
             .collect()
     }
 
-    /// Stage 3: the type-reduced number of every point, per coordinate.
-    pub(crate) fn type_reduced_points(&self) -> &[[Tfn; D]] {
+    /// Stage 3: the reduced number of every point, per coordinate.
+    pub(crate) fn type_reduced_points(&self) -> &[[Reduced; D]] {
         &self.type_reduced
     }
 
@@ -81,8 +103,8 @@ impl<const D: usize> PointStages<D> {
     pub(crate) fn type_reduced_side(&self, side: Side) -> Vec<[f64; D]> {
         self.type_reduced
             .iter()
-            .map(|tfns| {
-                tfns.map(|t| match side {
+            .map(|reduced| {
+                reduced.map(|t| match side {
                     Side::Left => t.left(),
                     Side::Right => t.right(),
                 })

@@ -1,10 +1,11 @@
 //! Stages 2–4 of Algorithm 1.1 (SPEC §7): alpha-cut, type reduction and
 //! defuzzification of the control points, and the curves through them.
 
-use crate::fuzzy::{Alpha, AlphaCut, Layer, Tfn};
+use crate::fuzzy::{Alpha, AlphaCut, Layer};
 use crate::nurbs::NurbsCurve;
 use crate::pipeline::point_stages::{PointStages, Side};
 use crate::pipeline::{Distance, FuzzyCurve};
+use crate::reduction::{Reduced, TypeReduction};
 
 /// The four stages of Algorithm 1.1 at one level alpha (SPEC §7):
 ///
@@ -14,6 +15,12 @@ use crate::pipeline::{Distance, FuzzyCurve};
 ///    the left and right curves (Fig. 5.3);
 /// 4. **D-TR-α-NT2FRBsC** — defuzzified control points and the crisp solution
 ///    curve, compared with the crisp curve (Fig. 5.4).
+///
+/// Stages 3–4 reduce each number by the solution's [`TypeReduction`] (SPEC
+/// §10; [`FuzzyCurve::solve`] takes the paper's, [`FuzzyCurve::solve_with`]
+/// any): with the paper's, stage 3 is the triangle `(left, crisp, right)`;
+/// with the others, `[left, right]` is a centroid interval, which need not
+/// contain `crisp`.
 ///
 /// Every stage works on the control points, as Algorithm 1.1 does; the curves
 /// are rational B-splines through the results with the original weights and
@@ -38,8 +45,8 @@ pub struct Solution<const D: usize> {
 }
 
 impl<const D: usize> Solution<D> {
-    pub(crate) fn new(curve: FuzzyCurve<D>, alpha: Alpha) -> Self {
-        let stages = PointStages::new(curve.points(), alpha);
+    pub(crate) fn new(curve: FuzzyCurve<D>, alpha: Alpha, method: TypeReduction) -> Self {
+        let stages = PointStages::new(curve.points(), alpha, method);
         Solution { curve, stages }
     }
 
@@ -48,10 +55,17 @@ impl<const D: usize> Solution<D> {
         &self.stages
     }
 
-    /// The level alpha.
+    /// The level alpha of the cut (stage 2); stages 3–4 use it only with
+    /// [`TypeReduction::Paper`].
     #[must_use]
     pub fn alpha(&self) -> Alpha {
         self.stages.alpha()
+    }
+
+    /// The type reduction of stages 3–4 (SPEC §10).
+    #[must_use]
+    pub fn type_reduction(&self) -> TypeReduction {
+        self.stages.type_reduction()
     }
 
     /// Stage 1: the fuzzy curve.
@@ -81,9 +95,12 @@ impl<const D: usize> Solution<D> {
             .map(|points| self.curve.with_control_points(points))
     }
 
-    /// Stage 3: the type-reduced number of every control point, per coordinate.
+    /// Stage 3: every coordinate of every control point reduced by the
+    /// solution's [`TypeReduction`] ([`Nt2Number::reduce`](crate::Nt2Number::reduce)):
+    /// for the paper's, the feet of the type-reduced triangle and its
+    /// centroid; for the others, `left`/`right` need not enclose `crisp`.
     #[must_use]
-    pub fn type_reduced_points(&self) -> &[[Tfn; D]] {
+    pub fn type_reduced_points(&self) -> &[[Reduced; D]] {
         self.stages.type_reduced_points()
     }
 

@@ -1,10 +1,11 @@
 //! Stages 2–4 of Algorithm 1.1 on the control net of a fuzzy surface (SPEC
 //! §7, §9), and the surfaces through their results.
 
-use crate::fuzzy::{Alpha, AlphaCut, Layer, Tfn};
+use crate::fuzzy::{Alpha, AlphaCut, Layer};
 use crate::nurbs::NurbsSurface;
 use crate::pipeline::point_stages::{PointStages, Side};
 use crate::pipeline::{FuzzySurface, SurfaceDistance};
+use crate::reduction::{Reduced, TypeReduction};
 
 /// The four stages of Algorithm 1.1 for a fuzzy surface at one level alpha
 /// (SPEC §7, §9), computed number by number on the control net exactly as for
@@ -47,8 +48,8 @@ pub struct SurfaceSolution<const D: usize> {
 }
 
 impl<const D: usize> SurfaceSolution<D> {
-    pub(crate) fn new(surface: FuzzySurface<D>, alpha: Alpha) -> Self {
-        let stages = PointStages::new(surface.points(), alpha);
+    pub(crate) fn new(surface: FuzzySurface<D>, alpha: Alpha, method: TypeReduction) -> Self {
+        let stages = PointStages::new(surface.points(), alpha, method);
         SurfaceSolution { surface, stages }
     }
 
@@ -57,10 +58,17 @@ impl<const D: usize> SurfaceSolution<D> {
         &self.stages
     }
 
-    /// The level alpha.
+    /// The level alpha of the cut (stage 2); stages 3–4 use it only with
+    /// [`TypeReduction::Paper`].
     #[must_use]
     pub fn alpha(&self) -> Alpha {
         self.stages.alpha()
+    }
+
+    /// The type reduction of stages 3–4 (SPEC §10).
+    #[must_use]
+    pub fn type_reduction(&self) -> TypeReduction {
+        self.stages.type_reduction()
     }
 
     /// Stage 1: the fuzzy surface.
@@ -90,9 +98,12 @@ impl<const D: usize> SurfaceSolution<D> {
             .map(|points| self.surface.with_control_points(points))
     }
 
-    /// Stage 3: the type-reduced number of every control point.
+    /// Stage 3: every coordinate of every control point reduced by the
+    /// solution's [`TypeReduction`] ([`Nt2Number::reduce`](crate::Nt2Number::reduce)):
+    /// for the paper's, the feet of the type-reduced triangle and its
+    /// centroid; for the others, `left`/`right` need not enclose `crisp`.
     #[must_use]
-    pub fn type_reduced_points(&self) -> &[[Tfn; D]] {
+    pub fn type_reduced_points(&self) -> &[[Reduced; D]] {
         self.stages.type_reduced_points()
     }
 

@@ -78,6 +78,14 @@ impl fmt::Display for TypeReduction {
     }
 }
 
+#[cfg(feature = "serde")]
+impl serde::Serialize for TypeReduction {
+    /// The [`TypeReduction::name`], as in job files.
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.name())
+    }
+}
+
 impl FromStr for TypeReduction {
     type Err = String;
 

@@ -6,6 +6,7 @@ use crate::fuzzy::{Alpha, Layer};
 use crate::nurbs::NurbsCurve;
 use crate::pipeline::point_stages::PointStages;
 use crate::pipeline::{FuzzyCurve, Solution};
+use crate::reduction::TypeReduction;
 use crate::sampling::plan::Plan;
 use crate::sampling::{CurveSamples, LayerSamples, Params, Sampler, StageSamples, SweepSamples};
 
@@ -205,12 +206,45 @@ impl<const D: usize> FuzzyCurve<D> {
         params: impl Into<Params<'a>>,
         alphas: &[Alpha],
     ) -> Result<SweepSamples<D>, Error> {
-        let solutions: Vec<Solution<D>> = alphas.iter().map(|&a| self.solve(a)).collect();
+        self.sample_sweep_with(params, alphas, TypeReduction::Paper)
+    }
+
+    /// [`FuzzyCurve::sample_sweep`] with the type reduction `method` (SPEC
+    /// §10): every level's stages as [`FuzzyCurve::solve_with`] computes
+    /// them. Only the paper's reduction depends on alpha; with the others,
+    /// the levels differ in their alpha-cut curves only.
+    ///
+    /// # Errors
+    /// [`Error::OutOfDomain`] for the first parameter outside the domain.
+    ///
+    /// # Examples
+    /// ```
+    /// # use t2spline::{Alpha, FuzzyCurve, Nt2Number, Nt2Point, Side, TypeReduction};
+    /// # use t2spline::sampling::Params;
+    /// // Long right sides: the centroid lies right of crisp, both ends of it.
+    /// let n = |c: f64| Nt2Number::try_new(c, [c - 0.1, c + 3.0], [c - 0.05, c + 2.0], [c, c + 1.0], 0.5);
+    /// let points = vec![Nt2Point::new([n(0.0)?, n(0.0)?]), Nt2Point::new([n(2.0)?, n(1.0)?])];
+    /// let c = FuzzyCurve::try_new(1, points, vec![1.0, 1.0], None)?;
+    /// let sweep = c.sample_sweep_with(Params::Uniform(5), &[Alpha::try_new(0.0)?], TypeReduction::Centroid)?;
+    /// let (crisp, level) = (&sweep.layers()[t2spline::Layer::Crisp], &sweep.levels()[0]);
+    /// let left = level.type_reduced(Side::Left);
+    /// assert!((0..5).all(|i| left.point(i)[0] > crisp.point(i)[0]));
+    /// # Ok::<(), t2spline::Error>(())
+    /// ```
+    pub fn sample_sweep_with<'a>(
+        &self,
+        params: impl Into<Params<'a>>,
+        alphas: &[Alpha],
+        method: TypeReduction,
+    ) -> Result<SweepSamples<D>, Error> {
+        let solutions: Vec<Solution<D>> =
+            alphas.iter().map(|&a| self.solve_with(a, method)).collect();
         sweep(self, params.into(), &solutions, true, Vec::new())
     }
 
     /// [`FuzzyCurve::sample_sweep`] into `out`, reusing its vectors: repeated
-    /// sweeps then touch no fresh memory. On error `out` is left empty.
+    /// sweeps then touch no fresh memory. On error `out` is left empty. The
+    /// paper's type reduction.
     ///
     /// # Errors
     /// [`Error::OutOfDomain`] for the first parameter outside the domain.
@@ -246,6 +280,18 @@ impl<const D: usize> Solution<D> {
         )?;
         let (_, levels) = sweep.into_parts();
         Ok(levels.into_iter().next().expect("one level was asked for"))
+    }
+
+    /// The seven stage-1 layer curves and this solution's curves of stages
+    /// 2–4, from one sampler (what a run samples).
+    pub(crate) fn sample_with_layers(&self, params: Params<'_>) -> Result<SweepSamples<D>, Error> {
+        sweep(
+            self.fuzzy_curve(),
+            params,
+            std::slice::from_ref(self),
+            true,
+            Vec::new(),
+        )
     }
 }
 

@@ -6,6 +6,7 @@
 
 use crate::fuzzy::{Layer, Layers, Nt2Point};
 use crate::pipeline::point_stages::{PointStages, Side};
+use crate::reduction::TypeReduction;
 use crate::sampling::{Bound, CurveSamples, LayerSamples, StageSamples, SweepSamples};
 
 /// Where the channels of one level's stages are: the alpha-cut layers (none
@@ -32,7 +33,10 @@ pub(crate) struct Plan<const D: usize> {
 impl<const D: usize> Plan<D> {
     /// Plans the crisp curve of `points`, the six other layers if `layers`,
     /// and the stage 2–4 curves of every level in `stages` (computed on the
-    /// same points).
+    /// same points, each by its own type reduction). The bounds are the
+    /// orders the exact curves obey: the layers' of SPEC §1, `left ≤
+    /// defuzzified ≤ right` for every reduction, and `left ≤ crisp ≤ right`
+    /// for the paper's only.
     pub(crate) fn new(points: &[Nt2Point<D>], stages: &[&PointStages<D>], layers: bool) -> Self {
         let mut plan = Plan {
             values: Vec::new(),
@@ -58,8 +62,15 @@ impl<const D: usize> Plan<D> {
             let left = plan.push(&s.type_reduced_side(Side::Left));
             let right = plan.push(&s.type_reduced_side(Side::Right));
             let defuzzified = plan.push(s.defuzzified_points());
-            plan.bound(left, None, Some(crisp));
-            plan.bound(right, Some(crisp), None);
+            if s.type_reduction() == TypeReduction::Paper {
+                // The paper's triangle has its apex at crisp (SPEC §3).
+                plan.bound(left, None, Some(crisp));
+                plan.bound(right, Some(crisp), None);
+            } else {
+                // A centroid need not enclose crisp (SPEC §10): both ends
+                // may lie on one side of it. Only left ≤ right holds.
+                plan.bound(right, Some(left), None);
+            }
             plan.bound(defuzzified, Some(left), Some(right));
             plan.levels.push((s.alpha(), cut, left, right, defuzzified));
         }

@@ -6,6 +6,7 @@ use crate::fuzzy::Alpha;
 use crate::nurbs::{Direction, NurbsSurface};
 use crate::pipeline::point_stages::PointStages;
 use crate::pipeline::{FuzzySurface, SurfaceSolution};
+use crate::reduction::TypeReduction;
 use crate::sampling::plan::Plan;
 use crate::sampling::{
     CurveSamples, Grid, GridSampler, LayerSamples, Params, StageSamples, SweepSamples,
@@ -157,11 +158,29 @@ impl<const D: usize> FuzzySurface<D> {
         v: impl Into<Params<'b>>,
         alphas: &[Alpha],
     ) -> Result<Grid<SweepSamples<D>>, Error> {
-        let solutions: Vec<SurfaceSolution<D>> = alphas.iter().map(|&a| self.solve(a)).collect();
+        self.sample_sweep_with(u, v, alphas, TypeReduction::Paper)
+    }
+
+    /// [`FuzzySurface::sample_sweep`] with the type reduction `method` (SPEC
+    /// §10): every level's stages as
+    /// [`FuzzySurface::solve_with`] computes them.
+    ///
+    /// # Errors
+    /// As [`FuzzySurface::sample_layers`].
+    pub fn sample_sweep_with<'a, 'b>(
+        &self,
+        u: impl Into<Params<'a>>,
+        v: impl Into<Params<'b>>,
+        alphas: &[Alpha],
+        method: TypeReduction,
+    ) -> Result<Grid<SweepSamples<D>>, Error> {
+        let solutions: Vec<SurfaceSolution<D>> =
+            alphas.iter().map(|&a| self.solve_with(a, method)).collect();
         grid_sweep(self, u.into(), v.into(), &solutions, true, Vec::new())
     }
 
-    /// [`FuzzySurface::sample_sweep`] into `out`, reusing its vectors.
+    /// [`FuzzySurface::sample_sweep`] into `out`, reusing its vectors (the
+    /// paper's type reduction).
     ///
     /// # Errors
     /// As [`FuzzySurface::sample_layers`].
@@ -203,6 +222,24 @@ impl<const D: usize> SurfaceSolution<D> {
             shape: g.shape,
             samples: levels.into_iter().next().expect("one level was asked for"),
         })
+    }
+
+    /// The seven stage-1 layer surfaces and this solution's surfaces of
+    /// stages 2–4 on the grid `u × v`, from one grid sampler (what a run
+    /// samples).
+    pub(crate) fn sample_with_layers(
+        &self,
+        u: Params<'_>,
+        v: Params<'_>,
+    ) -> Result<Grid<SweepSamples<D>>, Error> {
+        grid_sweep(
+            self.fuzzy_surface(),
+            u,
+            v,
+            std::slice::from_ref(self),
+            true,
+            Vec::new(),
+        )
     }
 }
 

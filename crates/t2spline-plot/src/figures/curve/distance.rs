@@ -98,7 +98,8 @@ fn series(
 
 /// The `distance-alpha` figure: the largest and the rms distance against
 /// alpha (sampled by [`data::sampled_distances`] at [`distance_alphas`]),
-/// with the lower heights and the figure's own alpha marked.
+/// with the lower heights and the figure's own alpha marked; always the
+/// paper's type reduction (the one that uses alpha; SPEC §10).
 ///
 /// # Errors
 /// [`crate::Error::Core`] if sampling fails (never for a validated job).
@@ -174,7 +175,7 @@ pub fn distance_figure(job: &Job, alpha: f64) -> Result<Figure, crate::Error> {
                 "Distance between the crisp and the defuzzified {} as α varies",
                 &what[..what.len() - 1]
             ),
-            "α = 0, 0.01, …, 1 and both sides of every h: the solution jumps at α = h (SPEC §3)",
+            "the paper's type reduction at α = 0, 0.01, …, 1 and both sides of every h, where it jumps (SPEC §3)",
             vec![p],
             legend,
         )

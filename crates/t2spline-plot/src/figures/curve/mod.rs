@@ -1,5 +1,6 @@
 //! The figures of a curve job: the four stages of Algorithm 1.1, the distance
-//! along the curve for several alphas, and the distance against alpha.
+//! along the curve for several alphas, the distance against alpha, and the
+//! type reductions compared.
 //!
 //! Each builder reads a [`RunOutput`] (or asks [`crate::data`] for more) and
 //! is written with the series helpers below, one per thing drawn, so that a
@@ -7,6 +8,7 @@
 
 mod density;
 mod distance;
+mod reductions;
 mod stage1;
 mod stage2;
 mod stage3;
@@ -16,6 +18,7 @@ mod zoom;
 
 pub use density::Density;
 pub use distance::{alpha_rule, distance_figure};
+pub use reductions::reductions_figure;
 pub use stage1::stage1_figure;
 pub use stage2::stage2_figure;
 pub use stage3::stage3_figure;
@@ -24,7 +27,7 @@ pub use sweep::sweep_figure;
 
 use t2spline::job::{Points, RunOutput};
 
-use super::style::{crisp_marker, crisp_stroke, polygon_stroke};
+use super::style::{crisp_marker, crisp_stroke, polygon_stroke, reduction_label};
 use super::Aspect;
 use crate::scene::{LegendEntry, Mark, Panel, Priority, Xy};
 use crate::style::{Marker, Stroke};
@@ -130,10 +133,11 @@ impl<'a> CurveScene<'a> {
     }
 
     /// The notes of a figure: what the density left out (`left_out` says
-    /// what, when the derived markers are), and whether the axes are to scale.
+    /// what, when the derived markers are; `None` for a figure that draws
+    /// none), and whether the axes are to scale.
     #[must_use]
-    pub fn notes(&self, left_out: &str) -> Vec<String> {
-        let left_out = (!self.density.markers).then_some(left_out);
+    pub fn notes(&self, left_out: Option<&str>) -> Vec<String> {
+        let left_out = left_out.filter(|_| !self.density.markers);
         let mut notes: Vec<String> = self.density.note(left_out).into_iter().collect();
         if self.aspect == Aspect::Auto {
             notes.push("Axes not to scale: each is fitted to the data.".to_owned());
@@ -187,12 +191,19 @@ pub fn point_name(i: usize) -> String {
     format!("P{digits}")
 }
 
-/// "α = 0.8 > h = 0.6" and what it means, for subtitles.
+/// "α = 0.8 > h = 0.6" and what it means, for subtitles of result `r`; for
+/// a type reduction other than the paper's, that it does not use α (SPEC §10).
 #[must_use]
-pub fn alpha_phrase(alpha: f64, heights: &[f64], regime: &str) -> String {
-    let a = short(alpha, 4);
+pub fn alpha_phrase(r: &RunOutput, heights: &[f64]) -> String {
+    let a = short(r.alpha, 4);
+    let Some(regime) = r.regime.filter(|_| r.alpha_used) else {
+        return format!(
+            "{} does not use α: cut shown at α = {a}, the whole footprint",
+            reduction_label(r.type_reduction)
+        );
+    };
     match heights {
-        [h] if alpha <= *h => format!(
+        [h] if r.alpha <= *h => format!(
             "α = {a} ≤ h = {}: all three functions are cut",
             short(*h, 4)
         ),
@@ -205,6 +216,17 @@ pub fn alpha_phrase(alpha: f64, heights: &[f64], regime: &str) -> String {
             short(heights.first().copied().unwrap_or(1.0), 4),
             short(heights.last().copied().unwrap_or(1.0), 4),
         ),
+    }
+}
+
+/// `α = 0.8` for a result of the paper's type reduction, else the
+/// reduction's name.
+#[must_use]
+pub fn reduction_phrase(r: &RunOutput) -> String {
+    if r.alpha_used {
+        format!("α = {}", short(r.alpha, 4))
+    } else {
+        reduction_label(r.type_reduction).to_owned()
     }
 }
 

@@ -54,7 +54,7 @@ pub fn stage1_figure(scene: &CurveScene<'_>) -> Figure {
         ""
     };
     Figure {
-        notes: scene.notes("no interval bars"),
+        notes: scene.notes(Some("no interval bars")),
         ..Figure::new(
             "stage1-fuzzy",
             "Stage 1: normal type-2 fuzzy rational B-spline curve",

@@ -72,11 +72,11 @@ pub fn stage2_figure(scene: &CurveScene<'_>) -> Figure {
         names(p, &cp.crisp, ij, d, point_name);
     });
     Figure {
-        notes: scene.notes("cut ends not marked"),
+        notes: scene.notes(Some("cut ends not marked")),
         ..Figure::new(
             "stage2-alpha-cut",
             "Stage 2: alpha-cut of the fuzzy control points (α-NT2FRBsC)",
-            alpha_phrase(r.alpha, scene.heights, r.regime.as_str()),
+            alpha_phrase(r, scene.heights),
             panels,
             legend(r, d.markers),
         )

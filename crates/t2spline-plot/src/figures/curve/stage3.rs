@@ -115,11 +115,11 @@ pub fn stage3_figure(scene: &CurveScene<'_>) -> Figure {
         reduced_band(),
     ));
     Figure {
-        notes: scene.notes("type-reduced points not marked"),
+        notes: scene.notes(Some("type-reduced points not marked")),
         ..Figure::new(
             "stage3-type-reduced",
             "Stage 3: type reduction (TR-α-NT2FRBsC)",
-            alpha_phrase(r.alpha, scene.heights, r.regime.as_str()),
+            alpha_phrase(r, scene.heights),
             panels,
             legend,
         )

@@ -5,7 +5,10 @@ use t2spline::job::{Job, RunOutput};
 use t2spline::Alpha;
 
 use super::zoom::zoom_panel;
-use super::{crisp_curve, crisp_legend, crisp_points, line, markers, polygon, project, CurveScene};
+use super::{
+    crisp_curve, crisp_legend, crisp_points, line, markers, polygon, project, reduction_phrase,
+    CurveScene,
+};
 use crate::figures::style::{distance_marker, distance_stroke, solution_marker, solution_stroke};
 use crate::scene::{Figure, LegendEntry, Mark, Panel, Priority, Xy};
 use crate::ticks::short;
@@ -33,6 +36,7 @@ impl Ends {
         let (c, d) = data::curves_at(
             &job.model,
             Alpha::try_new(r.alpha)?,
+            r.type_reduction,
             &[data::curve_spline(r).max_at],
         )?;
         Ok(Ends {
@@ -112,13 +116,13 @@ pub fn stage4_figure(job: &Job, scene: &CurveScene<'_>, zoom: Zoom) -> Result<Fi
         distance_marker(),
     ));
     Ok(Figure {
-        notes: scene.notes("defuzzified points not marked"),
+        notes: scene.notes(Some("defuzzified points not marked")),
         ..Figure::new(
             "stage4-defuzzified",
             "Stage 4: crisp type-2 solution curve (D-TR-α-NT2FRBsC)",
             format!(
-                "α = {}: max distance {} at t = {}, rms distance {}",
-                short(r.alpha, 4),
+                "{}: max distance {} at t = {}, rms distance {}",
+                reduction_phrase(r),
                 short(e.max, 4),
                 short(data::curve_spline(r).max_at, 4),
                 short(e.rms, 4)

@@ -53,7 +53,8 @@ fn stroke(k: usize, n: usize, alpha: f64, heights: &[f64]) -> Stroke {
 }
 
 /// The `alpha-sweep` figure: `‖D(t) − C(t)‖` against t for the alphas of
-/// [`sweep_alphas`], from one sampling sweep of the library.
+/// [`sweep_alphas`], from one sampling sweep of the library, always with
+/// the paper's type reduction (the one that uses alpha; SPEC §10).
 ///
 /// # Errors
 /// [`crate::Error::Core`] if sampling fails (never for a validated job).
@@ -83,7 +84,7 @@ pub fn sweep_figure(job: &Job) -> Result<Figure, crate::Error> {
     Ok(Figure::new(
         "alpha-sweep",
         "Distance from the crisp curve along t, as α varies",
-        "‖D(t) − C(t)‖ at equal t, dashed above h; at α = 1 the distance is 0",
+        "the paper's type reduction: ‖D(t) − C(t)‖ at equal t, dashed above h; at α = 1 the distance is 0",
         vec![p],
         legend,
     ))

@@ -102,14 +102,16 @@ fn stretches(
     out
 }
 
-/// The crisp and the defuzzified curve on each stretch, stretches separated
-/// by a gap (a non-finite point).
+/// The crisp and the defuzzified curve of result `r` (its alpha and type
+/// reduction) on each stretch, stretches separated by a gap (a non-finite
+/// point).
 fn curves(
     job: &Job,
-    alpha: Alpha,
+    r: &RunOutput,
     stretches: &[[f64; 2]],
     (i, j): (usize, usize),
 ) -> Result<[Vec<Xy>; 2], Error> {
+    let alpha = Alpha::try_new(r.alpha)?;
     let mut out = [Vec::new(), Vec::new()];
     for s in stretches {
         let params: Vec<f64> = (0..ZOOM_SAMPLES)
@@ -123,7 +125,7 @@ fn curves(
                 }
             })
             .collect();
-        let (c, d) = data::curves_at(&job.model, alpha, &params)?;
+        let (c, d) = data::curves_at(&job.model, alpha, r.type_reduction, &params)?;
         for (line, pts) in out.iter_mut().zip([c, d]) {
             if !line.is_empty() {
                 line.push([f64::NAN, f64::NAN]);
@@ -153,7 +155,7 @@ pub(super) fn zoom_panel(job: &Job, r: &RunOutput, ends: &Ends) -> Result<Panel,
     let win = window(r, ends.projected(ij), ij);
     let [crisp, solution] = curves(
         job,
-        Alpha::try_new(r.alpha)?,
+        r,
         &stretches(r, win, ij, data::curve_spline(r).max_at),
         ij,
     )?;

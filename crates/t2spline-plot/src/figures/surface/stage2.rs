@@ -72,7 +72,7 @@ pub fn stage2_figure(scene: &SurfaceScene<'_>) -> Figure {
             "Stage 2: α-cut of the control net",
             format!(
                 "{}; lower cut surfaces drawn where every number has a lower cut",
-                alpha_phrase(r.alpha, scene.heights, r.regime.as_str())
+                alpha_phrase(r, scene.heights)
             ),
             vec![view, map],
             legend,

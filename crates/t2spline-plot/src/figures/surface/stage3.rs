@@ -62,7 +62,7 @@ pub fn stage3_figure(scene: &SurfaceScene<'_>) -> Figure {
         ..Figure::new(
             "stage3-type-reduced",
             "Stage 3: type-reduced surfaces",
-            alpha_phrase(r.alpha, scene.heights, r.regime.as_str()),
+            alpha_phrase(r, scene.heights),
             vec![view, map],
             legend,
         )

@@ -5,7 +5,7 @@ use t2spline::job::{Job, Parameter};
 use t2spline::Alpha;
 
 use super::{distances, Bins, SurfaceScene};
-use crate::figures::curve::largest_distance;
+use crate::figures::curve::{largest_distance, reduction_phrase};
 use crate::figures::style::{
     distance_marker, distance_stroke, polygon_stroke, solution_marker, solution_stroke,
 };
@@ -32,7 +32,8 @@ pub fn stage4_figure(job: &Job, scene: &SurfaceScene<'_>) -> Result<Figure, Erro
         Parameter::Uv(uv) => uv,
         Parameter::T(t) => [t, f64::NAN],
     };
-    let [crisp_end, solution_end] = data::surfaces_at(&job.model, Alpha::try_new(r.alpha)?, uv)?;
+    let [crisp_end, solution_end] =
+        data::surfaces_at(&job.model, Alpha::try_new(r.alpha)?, r.type_reduction, uv)?;
     let d = distances(&s.defuzzified, &s.crisp);
     let bins = Bins {
         max: e.max.max(Bins::of(&d).max),
@@ -111,8 +112,8 @@ pub fn stage4_figure(job: &Job, scene: &SurfaceScene<'_>) -> Result<Figure, Erro
             "stage4-defuzzified",
             "Stage 4: crisp type-2 solution surface",
             format!(
-                "α = {}: max distance {} at {at}, rms distance {}",
-                short(r.alpha, 4),
+                "{}: max distance {} at {at}, rms distance {}",
+                reduction_phrase(r),
                 short(e.max, 4),
                 short(e.rms, 4)
             ),
