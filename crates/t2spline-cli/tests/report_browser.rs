@@ -451,7 +451,21 @@ fn check_report(
         assert_eq!(p["disabled"], json!(true), "{name}: slider at rest");
         assert_eq!(p["slider"], paper_page["slider"], "{name}: slider kept");
         let files = page.check_numbers(job, &p);
-        page.check_files(&files, name);
+        if expected.files_everywhere {
+            page.check_files(&files, name);
+        } else {
+            // A large surface carries the files of the paper's frames only.
+            let enabled = page.exec(FILES_ENABLED, json!([]));
+            assert_eq!(enabled["enabled"], json!(false), "{name}: no files");
+            assert_eq!(enabled["text"], Value::Null, "{name}: no file text");
+            let note = page.exec(READ_PAGE, json!([]))["note"].clone();
+            assert!(
+                note.as_str()
+                    .unwrap()
+                    .contains(&format!("t2spline run JOB --type-reduction {name}")),
+                "{name}: {note}"
+            );
+        }
         assert_ne!(p["s4"], paper_page["s4"], "{name}: stage 4 changes");
     }
     page.exec(SELECT_REDUCTION, json!(["paper"]));
