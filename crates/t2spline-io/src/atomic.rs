@@ -177,9 +177,11 @@ impl<'a> Staged<'a> {
         }
         let file = Temporary::create(&builder, dir).map_err(failed)?;
         if let Some(permissions) = permissions {
-            file.file().set_permissions(permissions).map_err(failed)?;
+            file.file()
+                .and_then(|f| f.set_permissions(permissions))
+                .map_err(failed)?;
         }
-        let mut w = BufWriter::new(file.file());
+        let mut w = BufWriter::new(file.file().map_err(failed)?);
         write(&mut w).map_err(failed)?;
         w.flush().map_err(failed)?;
         drop(w);
@@ -206,7 +208,9 @@ impl<'a> Staged<'a> {
     pub fn commit(self) -> Result<(), Error> {
         if self.durable {
             for (_, shown, file) in &self.files {
-                file.file().sync_all().map_err(|e| write_error(shown, e))?;
+                file.file()
+                    .and_then(|f| f.sync_all())
+                    .map_err(|e| write_error(shown, e))?;
             }
         }
         let mut dirs: Vec<PathBuf> = Vec::new();

@@ -25,9 +25,11 @@ use serde_json::Value;
 #[must_use]
 pub fn to_json_pretty(value: &Value) -> String {
     let mut out = Vec::new();
-    // Writing a Value to memory cannot fail: its keys are strings.
+    // Writing a Value to memory cannot fail: its keys are strings. serde_json
+    // writes UTF-8, so the lossy conversion changes nothing.
+    #[allow(clippy::expect_used)]
     write_json_pretty(&mut out, value).expect("in-memory JSON of a Value");
-    String::from_utf8(out).expect("serde_json writes UTF-8")
+    String::from_utf8_lossy(&out).into_owned()
 }
 
 /// Writes `value` in the layout of [`to_json_pretty`] to `writer`, ending in a

@@ -19,6 +19,11 @@ fn live() -> MutexGuard<'static, Vec<PathBuf>> {
     LIVE.lock().unwrap_or_else(PoisonError::into_inner)
 }
 
+/// The error of a temporary file used after its rename (which consumes it).
+fn renamed() -> std::io::Error {
+    std::io::Error::other("the temporary file was already renamed")
+}
+
 /// A temporary output file, registered while it exists.
 #[derive(Debug)]
 pub(crate) struct Temporary {
@@ -35,17 +40,20 @@ impl Temporary {
         Ok(Temporary { file: Some(file) })
     }
 
-    /// The open file.
-    pub(crate) fn file(&self) -> &std::fs::File {
-        // Only `persist` takes the file, and it consumes `self`.
-        self.file.as_ref().expect("not yet renamed").as_file()
+    /// The open file. Only `persist` takes the file, and it consumes `self`,
+    /// so the error is never returned.
+    pub(crate) fn file(&self) -> std::io::Result<&std::fs::File> {
+        self.file
+            .as_ref()
+            .map(NamedTempFile::as_file)
+            .ok_or_else(renamed)
     }
 
     /// Renames the file to `path` and unregisters it.
     pub(crate) fn persist(mut self, path: &Path) -> std::io::Result<()> {
         let mut live = live();
         // Only `persist` takes the file, and it consumes `self`.
-        let file = self.file.take().expect("not yet renamed");
+        let file = self.file.take().ok_or_else(renamed)?;
         let temporary = file.path().to_owned();
         let result = file.persist(path).map(drop).map_err(|e| {
             // Not renamed: removed now, as a dropped `Staged` would.

@@ -256,7 +256,7 @@ fn data_json<const D: usize>(points: &[Nt2Point<D>], degree: usize) -> Value {
         .iter()
         .map(|p| {
             let mut o = serde_json::Map::new();
-            for (axis, x) in t2spline::Axis::first::<D>().iter().zip(p.coords()) {
+            for (axis, x) in t2spline::Axis::first::<D>().unwrap().iter().zip(p.coords()) {
                 o.insert(
                     axis.name().into(),
                     json!({"crisp": x.crisp(), "upper": [x.upper().left(), x.upper().right()],

@@ -415,9 +415,11 @@ fn surface_distances(
                 .iter()
                 .map(|&a| {
                     let d = grid(&s.solve(a).defuzzified_surface())?;
-                    let dist: Vec<f64> = (0..su * sv)
-                        .map(|i| {
-                            let (p, q) = (d.point(i), crisp.point(i));
+                    // Both grids have su·sv points.
+                    let dist: Vec<f64> = d
+                        .points()
+                        .zip(crisp.points())
+                        .map(|(p, q)| {
                             euclidean_norm(&std::array::from_fn::<f64, D, _>(|k| p[k] - q[k]))
                         })
                         .collect();

@@ -96,12 +96,14 @@ impl Rect {
         true
     }
 
-    /// The point of the rectangle nearest to `p`.
+    /// The point of the rectangle nearest to `p` (for a rectangle of
+    /// negative width or height, its far edge).
     #[must_use]
     pub fn nearest(&self, p: Px) -> Px {
+        // Not `clamp`, which panics when the bounds cross or are NaN.
         [
-            p[0].clamp(self.x, self.right()),
-            p[1].clamp(self.y, self.bottom()),
+            p[0].max(self.x).min(self.right()),
+            p[1].max(self.y).min(self.bottom()),
         ]
     }
 }

@@ -40,6 +40,22 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+// No panic reachable from input: outside tests, `unwrap`, `expect`, `panic!`
+// and `unreachable!` are refused; the few sites that cannot fail carry an
+// `#[allow]` with the invariant that makes them safe (ARCHITECTURE.md,
+// "Decisions and reasons").
+#![cfg_attr(
+    not(test),
+    deny(
+        clippy::unwrap_used,
+        clippy::expect_used,
+        clippy::panic,
+        clippy::unreachable,
+        clippy::todo,
+        clippy::unimplemented
+    )
+)]
+
 mod data;
 mod error;
 mod figures;

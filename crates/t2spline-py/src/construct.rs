@@ -165,7 +165,7 @@ impl FuzzyArrays {
         (0..self.n)
             .map(|i| {
                 let mut coords = Vec::with_capacity(D);
-                for (d, axis) in Axis::first::<D>().into_iter().enumerate() {
+                for (d, axis) in Axis::ALL.into_iter().take(D).enumerate() {
                     let k = i * D + d;
                     let number = Nt2Number::try_new(
                         self.crisp.data[k],
@@ -177,8 +177,16 @@ impl FuzzyArrays {
                     .map_err(|e| e.at(Place::new(i, axis)))?;
                     coords.push(number);
                 }
-                // One number was pushed per coordinate: D of them.
-                let coords: [Nt2Number; D] = coords.try_into().expect("D numbers");
+                // One number was pushed per coordinate, D of them: the error
+                // is never made.
+                let coords: [Nt2Number; D] =
+                    coords
+                        .try_into()
+                        .map_err(|v: Vec<_>| t2spline::Error::Length {
+                            what: "coordinates",
+                            expected: D,
+                            found: v.len(),
+                        })?;
                 Ok(Nt2Point::new(coords))
             })
             .collect()

@@ -115,6 +115,7 @@ pub(crate) fn compute<T: Send>(
 /// Panics inside [`without_gil`], so that the tests can check that a panic
 /// becomes a `RuntimeError` and the interpreter lives on. Not part of the API.
 #[pyfunction]
+#[allow(clippy::panic)] // the panic is this function's purpose
 pub(crate) fn _panic_for_tests(py: Python<'_>, message: &str) -> PyResult<()> {
     let message = message.to_owned();
     without_gil(py, move || -> () { panic!("{message}") })

@@ -24,6 +24,22 @@
 //! turned on by maturin only, so `cargo test` links libpython as a program
 //! would.
 
+// No panic reachable from input: outside tests, `unwrap`, `expect`, `panic!`
+// and `unreachable!` are refused; the few sites that cannot fail carry an
+// `#[allow]` with the invariant that makes them safe (ARCHITECTURE.md,
+// "Decisions and reasons").
+#![cfg_attr(
+    not(test),
+    deny(
+        clippy::unwrap_used,
+        clippy::expect_used,
+        clippy::panic,
+        clippy::unreachable,
+        clippy::todo,
+        clippy::unimplemented
+    )
+)]
+
 mod arrays;
 mod construct;
 mod curve_methods;

@@ -52,7 +52,7 @@ fn crisp(c: &mut Criterion) {
     let ours = curve.sample_soa(Params::Uniform(1001)).unwrap();
     let theirs = peer.sample_regular_range(0.0, 1.0, 1001);
     for (i, q) in theirs.iter().enumerate() {
-        let p = ours.point(i);
+        let p = ours.point(i).unwrap();
         assert!(
             (p[0] - q.x).abs() < 1e-12 && (p[1] - q.y).abs() < 1e-12,
             "{i}: {p:?} vs {q:?}"

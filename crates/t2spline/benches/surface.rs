@@ -30,7 +30,7 @@ fn curvo_surface(s: &NurbsSurface<3>) -> NurbsSurface3D<f64> {
         .map(|i| {
             (0..nv)
                 .map(|j| {
-                    let (p, w) = (s.control_point(i, j), s.weights()[i * nv + j]);
+                    let (p, w) = (s.control_point(i, j).unwrap(), s.weights()[i * nv + j]);
                     Point4::new(p[0] * w, p[1] * w, p[2] * w, w)
                 })
                 .collect()
@@ -63,7 +63,7 @@ fn crisp(c: &mut Criterion) {
     let theirs = peer.regular_sample_points(100, 100);
     for (a, row) in theirs.iter().enumerate() {
         for (b, q) in row.iter().enumerate() {
-            let p = ours.samples().point(ours.index(a, b));
+            let p = ours.samples().point(ours.index(a, b).unwrap()).unwrap();
             assert!(
                 (p[0] - q.x).abs() < 1e-12
                     && (p[1] - q.y).abs() < 1e-12

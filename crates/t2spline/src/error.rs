@@ -310,7 +310,7 @@ pub enum Error {
     /// let e = KnotVector::try_new(vec![0.0, 0.0, 0.7, 0.5, 1.0, 1.0], 1, 4).unwrap_err();
     /// assert_eq!(e.to_string(), "knots[3] = 0.5 is less than knots[2] = 0.7: knots must not decrease");
     /// ```
-    #[error("knots[{index}] = {} is less than knots[{}] = {}: knots must not decrease", Num(*value), index - 1, Num(*previous))]
+    #[error("knots[{index}] = {} is less than knots[{}] = {}: knots must not decrease", Num(*value), index.saturating_sub(1), Num(*previous))]
     KnotDecreasing {
         /// Index of the knot that is smaller than its predecessor.
         index: usize,
@@ -327,7 +327,7 @@ pub enum Error {
     /// let e = KnotVector::try_new(vec![0.0, 0.0, 0.0, 1.0, 1.0], 1, 3).unwrap_err();
     /// assert_eq!(e.to_string(), "knots[0..3]: the value 0 repeats 3 times, more than the order 2");
     /// ```
-    #[error("knots[{first}..{}]: the value {} repeats {multiplicity} times, more than the order {order}", first + multiplicity, Num(*value))]
+    #[error("knots[{first}..{}]: the value {} repeats {multiplicity} times, more than the order {order}", first.saturating_add(*multiplicity), Num(*value))]
     KnotMultiplicity {
         /// Index of the first copy.
         first: usize,
@@ -416,7 +416,8 @@ pub enum Error {
         end: f64,
     },
 
-    /// An arc length outside `[0, total length]` has no parameter.
+    /// An arc length outside `[0, total length]`, by more than the relative
+    /// accuracy of lengths (`LENGTH_TOLERANCE`), has no parameter.
     ///
     /// ```
     /// # use t2spline::{Error, NurbsCurve};
@@ -511,7 +512,7 @@ pub enum Error {
     /// let e = fit_curve(&[[0.0, 0.0], [1.0, 1.0]], &FitOptions::interpolation(2)).unwrap_err();
     /// assert_eq!(e.to_string(), "points: a curve of degree 2 needs at least 3 data points, got 2");
     /// ```
-    #[error("points: a curve of degree {degree} needs at least {} data points, got {count}", degree + 1)]
+    #[error("points: a curve of degree {degree} needs at least {} data points, got {count}", degree.saturating_add(1))]
     TooFewDataPoints {
         /// The degree `p`.
         degree: usize,
@@ -732,7 +733,7 @@ pub enum Error {
     /// assert!(matches!(e, Error::DerivativeOverflow { derivative: 2, .. }), "{e}");
     /// # Ok::<(), Error>(())
     /// ```
-    #[error("curves.derivatives.{curve}[{}][{sample}][{axis}] = {value} is beyond the range of a 64-bit float (about 1.8e308): the knot spans are too narrow or the coordinates too large for derivatives of order {derivative}", derivative - 1)]
+    #[error("curves.derivatives.{curve}[{}][{sample}][{axis}] = {value} is beyond the range of a 64-bit float (about 1.8e308): the knot spans are too narrow or the coordinates too large for derivatives of order {derivative}", derivative.saturating_sub(1))]
     DerivativeOverflow {
         /// `"crisp"` or `"defuzzified"`.
         curve: &'static str,
@@ -864,6 +865,58 @@ pub enum Error {
     /// ```
     #[error("umf: no sample is greater than 0, so the set has no centroid")]
     ZeroUpperMembership,
+
+    /// A point has one, two or three coordinates; a type of another
+    /// dimension `D` (e.g. `NurbsCurve::<4>`) is refused by its constructor.
+    ///
+    /// ```
+    /// # use t2spline::{Error, NurbsCurve};
+    /// let e = NurbsCurve::<4>::try_clamped(1, vec![[0.0; 4], [1.0; 4]], vec![1.0, 1.0]).unwrap_err();
+    /// assert_eq!(e, Error::Dimension { dimension: 4 });
+    /// assert_eq!(e.to_string(), "a point has 1, 2 or 3 coordinates, not 4");
+    /// ```
+    #[error("a point has 1, 2 or 3 coordinates, not {dimension}")]
+    Dimension {
+        /// The dimension asked for.
+        dimension: usize,
+    },
+
+    /// More sample values were asked for than a vector can hold.
+    ///
+    /// ```
+    /// # use t2spline::{Error, NurbsCurve};
+    /// # use t2spline::sampling::Params;
+    /// let c = NurbsCurve::try_clamped(1, vec![[0.0, 0.0], [1.0, 1.0]], vec![1.0, 1.0])?;
+    /// let e = c.sample_soa(Params::Uniform(usize::MAX)).unwrap_err();
+    /// assert_eq!(e, Error::Memory { values: usize::MAX });
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("cannot hold {values} sample values per curve in memory")]
+    Memory {
+        /// The values per curve asked for.
+        values: usize,
+    },
+
+    /// An index given to an accessor is past the end of what it indexes.
+    ///
+    /// ```
+    /// # use t2spline::{Error, KnotVector, NurbsSurface};
+    /// let knots = KnotVector::clamped_uniform(1, 2)?;
+    /// let net = vec![vec![[0.0; 3], [1.0; 3]], vec![[2.0; 3], [3.0; 3]]];
+    /// let s = NurbsSurface::try_new(net, vec![vec![1.0; 2]; 2], [knots.clone(), knots])?;
+    /// let e = s.control_point(0, 2).unwrap_err();
+    /// assert_eq!(e.to_string(), "column 2 is out of bounds: there are 2");
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("{what} {index} is out of bounds: there are {count}")]
+    Index {
+        /// What the index counts (`"row"`, `"column"`, ...).
+        what: &'static str,
+        /// The index given (0-based).
+        index: usize,
+        /// How many there are.
+        count: usize,
+    },
 }
 
 /// The message of [`Error::InDirection`]: the curve rule in the surface's words.
@@ -904,6 +957,19 @@ fn in_direction(direction: crate::nurbs::Direction, inner: &Error) -> String {
 }
 
 impl Error {
+    /// `Ok(index)` if `index < count`, else [`Error::Index`] naming `what`.
+    pub(crate) fn check_index(
+        what: &'static str,
+        index: usize,
+        count: usize,
+    ) -> Result<usize, Error> {
+        if index < count {
+            Ok(index)
+        } else {
+            Err(Error::Index { what, index, count })
+        }
+    }
+
     /// The same error as a rule of `direction` of a surface
     /// ([`Error::InDirection`]).
     pub(crate) fn in_direction(self, direction: crate::nurbs::Direction) -> Self {

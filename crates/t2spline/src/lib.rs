@@ -70,6 +70,22 @@
 //!   `serde` (Serialize for the data types), `proptest` (generators in
 //!   `strategies`).
 
+// No panic reachable from input: outside tests, `unwrap`, `expect`, `panic!`
+// and `unreachable!` are refused; the few sites that cannot fail carry an
+// `#[allow]` with the invariant that makes them safe (ARCHITECTURE.md,
+// "Decisions and reasons").
+#![cfg_attr(
+    not(test),
+    deny(
+        clippy::unwrap_used,
+        clippy::expect_used,
+        clippy::panic,
+        clippy::unreachable,
+        clippy::todo,
+        clippy::unimplemented
+    )
+)]
+
 pub mod bench;
 mod cubature;
 mod error;
@@ -84,7 +100,10 @@ pub mod pipeline;
 mod quadrature;
 pub mod reduction;
 pub mod sampling;
+// Generators for property tests: a value they cannot build is a failing
+// test, so they may `expect`.
 #[cfg(any(test, feature = "proptest"))]
+#[allow(clippy::expect_used, clippy::unwrap_used)]
 pub mod strategies;
 
 pub use error::{Error, Num, Place};

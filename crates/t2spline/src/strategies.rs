@@ -5,6 +5,28 @@ use proptest::prelude::*;
 
 use crate::{FuzzyCurve, FuzzySurface, KnotVector, Nt2Number, Nt2Point, NurbsCurve, NurbsSurface};
 
+/// A seeded source of numbers in `[0, 1)`, the same on every run and
+/// machine, for fixtures and benchmarks that need more data than a property
+/// test draws: a linear congruential generator (Knuth's MMIX constants), the
+/// top 53 bits of each state.
+///
+/// # Examples
+/// ```
+/// # use t2spline::strategies::seeded_uniform;
+/// let (mut a, mut b) = (seeded_uniform(7), seeded_uniform(7));
+/// let x = a();
+/// assert!((0.0..1.0).contains(&x) && x == b());
+/// ```
+pub fn seeded_uniform(seed: u64) -> impl FnMut() -> f64 {
+    let mut state = seed;
+    move || {
+        state = state
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    }
+}
+
 /// A lower height: often 1 or a round value, otherwise anything in `(0, 1]`.
 pub fn height() -> impl Strategy<Value = f64> + Clone {
     prop_oneof![

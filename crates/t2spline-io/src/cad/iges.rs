@@ -108,10 +108,14 @@ fn surface_parameters(s: &NurbsSurface<3>, name_de: usize) -> String {
     for direction in [Direction::U, Direction::V] {
         params.extend(s.knots(direction).as_slice().iter().map(|&u| r(u)));
     }
-    let order: Vec<(usize, usize)> = (0..nv).flat_map(|j| (0..nu).map(move |i| (i, j))).collect();
-    params.extend(order.iter().map(|&(i, j)| r(w[i * nv + j])));
-    for &(i, j) in &order {
-        params.extend(s.control_point(i, j).iter().map(|&x| r(x)));
+    // The net is stored row by row (`i·nv + j`); IGES lists it with i fastest.
+    let order: Vec<usize> = (0..nv)
+        .flat_map(|j| (0..nu).map(move |i| i * nv + j))
+        .collect();
+    params.extend(order.iter().filter_map(|&k| w.get(k)).map(|&x| r(x)));
+    let points = s.control_points();
+    for point in order.iter().filter_map(|&k| points.get(k)) {
+        params.extend(point.iter().map(|&x| r(x)));
     }
     for direction in [Direction::U, Direction::V] {
         let d = s.domain(direction);
@@ -313,27 +317,26 @@ fn token_len(text: &str) -> usize {
 
 /// Free text in lines of at most `width` characters, broken at spaces.
 fn wrap(text: &str, width: usize) -> Vec<String> {
-    let mut lines = vec![String::new()];
+    let mut lines = Vec::new();
+    let mut line = String::new();
     for word in text.split_whitespace() {
         let word: String = word
             .chars()
             .map(|c| if c.is_ascii() { c } else { '?' })
             .collect();
-        for piece in word.as_bytes().chunks(width) {
+        for piece in word.as_bytes().chunks(width.max(1)) {
             let piece = String::from_utf8_lossy(piece);
-            let line = lines
-                .last_mut()
-                .unwrap_or_else(|| unreachable!("never empty"));
             if line.is_empty() {
                 line.push_str(&piece);
             } else if line.len() + 1 + piece.len() <= width {
                 line.push(' ');
                 line.push_str(&piece);
             } else {
-                lines.push(piece.into_owned());
+                lines.push(std::mem::replace(&mut line, piece.into_owned()));
             }
         }
     }
+    lines.push(line);
     lines
 }
 

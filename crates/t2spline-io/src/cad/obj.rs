@@ -65,11 +65,10 @@ pub(super) fn render(geometry: &Geometry, meta: &CadMeta) -> String {
             let [p, q] = patch.degree();
             // The specification's order: i = 0 … K1 for j = 0, then for j = 1, …
             // (the u index varying fastest).
-            for j in 0..nv {
-                for i in 0..nu {
-                    let c = patch.control_point(i, j);
-                    let w = patch.weights()[i * nv + j];
-                    let _ = writeln!(out, "v {} {} {} {}", r(c[0]), r(c[1]), r(c[2]), r(w));
+            let (points, weights) = (patch.control_points(), patch.weights());
+            for k in (0..nv).flat_map(|j| (0..nu).map(move |i| i * nv + j)) {
+                if let (Some([x, y, z]), Some(&w)) = (points.get(k), weights.get(k)) {
+                    let _ = writeln!(out, "v {} {} {} {}", r(*x), r(*y), r(*z), r(w));
                 }
             }
             let (du, dv) = (patch.domain(Direction::U), patch.domain(Direction::V));

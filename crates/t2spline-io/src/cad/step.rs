@@ -198,15 +198,10 @@ fn surface_entity(data: &mut Data, name: &str, s: &NurbsSurface<3>) -> String {
     let [p, q] = s.degree();
     let mut rows = Vec::with_capacity(nu);
     let mut weight_rows = Vec::with_capacity(nu);
-    for i in 0..nu {
-        let row: Vec<String> = (0..nv)
-            .map(|j| point(data, s.control_point(i, j)))
-            .collect();
+    for (points, weights) in s.control_points().chunks(nv).zip(s.weights().chunks(nv)) {
+        let row: Vec<String> = points.iter().map(|&p| point(data, p)).collect();
         rows.push(format!("({})", row.join(",")));
-        let w: Vec<String> = s.weights()[i * nv..(i + 1) * nv]
-            .iter()
-            .map(|&w| r(w))
-            .collect();
+        let w: Vec<String> = weights.iter().map(|&w| r(w)).collect();
         weight_rows.push(format!("({})", w.join(",")));
     }
     let (mu, ku) = knots_with_multiplicities(s.knots(Direction::U));

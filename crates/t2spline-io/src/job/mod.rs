@@ -5,6 +5,10 @@
 //! [`Job::run`](t2spline::job::Job::run) computes; a data file becomes a
 //! [`FitData`], whose points [`t2spline::fit::FuzzyData::fit`] fits.
 
+// The input decides the indices here: no indexing that can panic (`get`,
+// iterators, `split_first`), as ARCHITECTURE.md explains.
+#![cfg_attr(not(test), deny(clippy::indexing_slicing))]
+
 pub mod limits;
 pub(crate) mod parse;
 mod position;

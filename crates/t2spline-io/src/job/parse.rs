@@ -168,7 +168,7 @@ fn syntax_problem(text: &str, e: &serde_json::Error) -> Problem {
         .split('\n')
         .nth(e.line().saturating_sub(1))
         .unwrap_or("");
-    let bytes = &line.as_bytes()[..e.column().min(line.len())];
+    let bytes = line.as_bytes().get(..e.column()).unwrap_or(line.as_bytes());
     let column = String::from_utf8_lossy(bytes).chars().count().max(1);
     Problem {
         line_column: Some((e.line().max(1), column)),

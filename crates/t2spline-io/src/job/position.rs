@@ -31,7 +31,7 @@ pub(crate) fn child(prefix: &str, key: &str) -> String {
     let plain = !key.is_empty()
         && key.len() <= MAX_KEY_CHARS
         && key.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_')
-        && !key.as_bytes()[0].is_ascii_digit();
+        && !key.as_bytes().first().is_some_and(u8::is_ascii_digit);
     match (plain, prefix.is_empty()) {
         (true, true) => key.to_owned(),
         (true, false) => format!("{prefix}.{key}"),
@@ -402,7 +402,7 @@ impl Scanner<'_, '_> {
                 _ => self.bump(),
             }
         }
-        let raw = std::str::from_utf8(&self.bytes[start..self.i]).ok()?;
+        let raw = std::str::from_utf8(self.bytes.get(start..self.i)?).ok()?;
         self.bump();
         if escaped {
             // serde_json accepted the text, so the literal decodes.

@@ -88,20 +88,18 @@ fn decode(bytes: Vec<u8>, name: &str) -> Result<String, Error> {
             "the file is UTF-16 text; save it as UTF-8".to_owned(),
         ));
     }
-    let start = if bytes.starts_with(b"\xef\xbb\xbf") {
-        3
-    } else {
-        0
-    };
-    match std::str::from_utf8(&bytes[start..]) {
+    let body = bytes.strip_prefix(b"\xef\xbb\xbf").unwrap_or(&bytes);
+    match std::str::from_utf8(body) {
         Ok(text) => Ok(text.to_owned()),
         Err(e) => {
-            let good = &bytes[start..start + e.valid_up_to()];
+            let (good, bad) = body
+                .split_at_checked(e.valid_up_to())
+                .unwrap_or((body, &[]));
             // `good` is valid UTF-8 by construction.
             let before = std::str::from_utf8(good).unwrap_or_default();
             let line = before.matches('\n').count() + 1;
             let column = before.rsplit('\n').next().unwrap_or("").chars().count() + 1;
-            let byte = bytes[start + e.valid_up_to()];
+            let byte = bad.first().copied().unwrap_or_default();
             Err(Error::Invalid {
                 file: name.to_owned(),
                 problems: vec![Problem {

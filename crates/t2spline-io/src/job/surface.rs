@@ -329,12 +329,10 @@ impl Walker {
         shape: [usize; 2],
         knots: Option<&KnotValues>,
     ) {
-        for direction in Direction::BOTH {
-            let d = direction.index();
-            let (p, n) = (degree[d], shape[d]);
+        for ((direction, p), n) in Direction::BOTH.into_iter().zip(degree).zip(shape) {
             // A degree of usize::MAX saturates to an order no net reaches.
             let order = p.saturating_add(1);
-            let problems = match knots.and_then(|k| k[d].as_deref()) {
+            let problems = match knots.and_then(|k| k.get(direction.index())?.as_deref()) {
                 Some(values) => KnotVector::problems(values, p, n),
                 None if n < order => vec![CoreError::TooFewControlPoints { order, count: n }],
                 None => Vec::new(),

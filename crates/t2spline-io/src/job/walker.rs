@@ -184,6 +184,9 @@ pub(super) fn suggestion(key: &str, known: &[&'static str]) -> Option<&'static s
 
 /// Levenshtein distance with adjacent transpositions counting 1 (optimal string
 /// alignment), so that `alhpa` is one step from `alpha`.
+// Every index lies in the table (`i ≤ a.len()`, `j ≤ b.len()`) or in the
+// words (`i − 1 < a.len()`, and `i − 2`, `j − 2` only when `i, j > 1`).
+#[allow(clippy::indexing_slicing)]
 fn edit_distance(a: &str, b: &str) -> usize {
     let (a, b): (Vec<char>, Vec<char>) = (a.chars().collect(), b.chars().collect());
     let mut d = vec![vec![0usize; b.len() + 1]; a.len() + 1];

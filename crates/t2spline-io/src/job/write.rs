@@ -92,7 +92,7 @@ pub(crate) fn model_json(model: &Model, top_height: Option<f64>) -> Map<String, 
 /// equals `top_height`, the job's top-level default.
 pub(crate) fn point_json<const D: usize>(p: &Nt2Point<D>, top_height: Option<f64>) -> Value {
     let mut out = Map::new();
-    for (axis, x) in Axis::first::<D>().iter().zip(p.coords()) {
+    for (axis, x) in Axis::ALL.iter().zip(p.coords()) {
         let pair = |l: Layer, r: Layer| json!([x.layer(l), x.layer(r)]);
         let mut number = json!({
             "crisp": x.crisp(),
@@ -100,8 +100,9 @@ pub(crate) fn point_json<const D: usize>(p: &Nt2Point<D>, top_height: Option<f64
             "primary": pair(Layer::PrimaryLeft, Layer::PrimaryRight),
             "lower": pair(Layer::LowerLeft, Layer::LowerRight),
         });
-        if top_height != Some(x.height().get()) {
-            number["lower_height"] = json!(x.height().get());
+        if let (true, Some(number)) = (top_height != Some(x.height().get()), number.as_object_mut())
+        {
+            number.insert("lower_height".into(), json!(x.height().get()));
         }
         out.insert(axis.name().into(), number);
     }

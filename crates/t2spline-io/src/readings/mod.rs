@@ -28,6 +28,10 @@
 //! The statistics that turn readings into fuzzy numbers are the core's
 //! ([`t2spline::fit::fuzzify`]); this module only reads.
 
+// The input decides the indices here: no indexing that can panic (`get`,
+// iterators, `split_first`), as ARCHITECTURE.md explains.
+#![cfg_attr(not(test), deny(clippy::indexing_slicing))]
+
 mod data;
 mod tokens;
 
@@ -165,7 +169,7 @@ pub fn parse_readings(text: &str, source: &str) -> Result<ReadingsFile, Error> {
                 .collect::<Vec<_>>()
                 .join(&delimiter.to_string());
             return Err(invalid(vec![Problem {
-                line_column: Some((header.fields[0].line, header.fields[0].column)),
+                line_column: header.fields.first().map(|f| (f.line, f.column)),
                 message: format!(
                     "expected the header `station,x,y` or `station,x,y,z` (comma or semicolon separated), got `{}`",
                     shorten(&given)
@@ -233,50 +237,68 @@ impl Rows {
         });
     }
 
+    /// The header's columns of a row of this file, `station,x,y`.
+    fn header(&self) -> String {
+        let width = self.dimension + 1;
+        let columns: Vec<&str> = self.columns.iter().take(width).copied().collect();
+        columns.join(&self.delimiter.to_string())
+    }
+
     fn row(&mut self, row: &tokens::Record) {
         let width = self.dimension + 1;
         let fields = &row.fields;
         if fields.len() < width {
-            let missing = self.columns[fields.len()..width].join(", ");
-            self.problem(
-                row.end,
-                format!(
-                    "missing column(s) {missing}: every row needs {width} values ({})",
-                    self.columns[..width].join(&self.delimiter.to_string())
-                ),
+            let missing: Vec<&str> = self
+                .columns
+                .iter()
+                .take(width)
+                .skip(fields.len())
+                .copied()
+                .collect();
+            let message = format!(
+                "missing column(s) {}: every row needs {width} values ({})",
+                missing.join(", "),
+                self.header()
             );
+            self.problem(row.end, message);
             return;
         }
         if let Some(extra) = fields.get(width) {
-            if fields[width..].iter().any(|f| !f.text.trim().is_empty()) {
-                self.problem(
-                    (extra.line, extra.column),
-                    format!(
-                        "extra column {}: every row has {width} values ({})",
-                        width + 1,
-                        self.columns[..width].join(&self.delimiter.to_string())
-                    ),
+            if fields.iter().skip(width).any(|f| !f.text.trim().is_empty()) {
+                let message = format!(
+                    "extra column {}: every row has {width} values ({})",
+                    width + 1,
+                    self.header()
                 );
+                self.problem((extra.line, extra.column), message);
                 return;
             }
         }
+        // At least `width` fields (checked above): the station, then values.
+        let Some((first, values)) = fields.split_first() else {
+            return;
+        };
         let mut point = [0.0; 3];
         let mut good = true;
-        for (axis, field) in fields[1..width].iter().enumerate() {
+        for ((axis, field), (coordinate, name)) in values
+            .iter()
+            .take(self.dimension)
+            .enumerate()
+            .zip(point.iter_mut().zip(self.columns.iter().skip(1)))
+        {
             match self.number(field) {
-                Ok(x) => point[axis] = x,
+                Ok(x) => *coordinate = x,
                 Err(message) => {
-                    let name = self.columns[axis + 1];
-                    self.problem(
-                        (field.line, field.column),
-                        format!("{name} (column {}): {message}", axis + 2),
-                    );
+                    self.problems.push(Problem {
+                        line_column: Some((field.line, field.column)),
+                        message: format!("{name} (column {}): {message}", axis + 2),
+                    });
                     good = false;
                 }
             }
         }
-        let name = fields[0].text.trim();
-        let at = (fields[0].line, fields[0].column);
+        let name = first.text.trim();
+        let at = (first.line, first.column);
         if name.is_empty() {
             self.problem(
                 at,
@@ -285,16 +307,18 @@ impl Rows {
             return;
         }
         let station = match self.current {
-            Some(s) if self.names[s] == name => s,
+            Some(s) if self.names.get(s).is_some_and(|n| n == name) => s,
             _ => match self.index.get(name) {
                 Some(&s) => {
-                    let between = self.current.map_or(String::new(), |c| {
-                        format!(
-                            ", but rows of `{}` (from line {}) came between",
-                            shorten(&self.names[c]),
-                            self.first_line[c]
-                        )
-                    });
+                    let between = self
+                        .current
+                        .and_then(|c| Some((self.names.get(c)?, self.first_line.get(c)?)))
+                        .map_or(String::new(), |(name, line)| {
+                            format!(
+                                ", but rows of `{}` (from line {line}) came between",
+                                shorten(name)
+                            )
+                        });
                     self.problem(
                         at,
                         format!(
@@ -327,9 +351,12 @@ impl Rows {
             },
         };
         self.current = Some(station);
-        self.rows[station] += 1;
-        if good {
-            self.values[station].push(point);
+        // `station` indexes the lists, which grow together.
+        if let Some(rows) = self.rows.get_mut(station) {
+            *rows += 1;
+        }
+        if let (true, Some(values)) = (good, self.values.get_mut(station)) {
+            values.push(point);
         }
     }
 
@@ -352,14 +379,15 @@ impl Rows {
 
     /// The stations and their readings, or every problem.
     fn finish(mut self) -> Result<(Vec<String>, Vec<usize>, Readings), Vec<Problem>> {
-        for s in 0..self.names.len() {
-            let count = self.rows[s];
+        for ((name, &count), &line) in self.names.iter().zip(&self.rows).zip(&self.first_line) {
             if count < MIN_READINGS && self.problems.len() <= MAX_PROBLEMS {
-                let message = format!(
-                    "station `{}`: {count} reading(s); percentiles need at least {MIN_READINGS}",
-                    shorten(&self.names[s])
-                );
-                self.problem((self.first_line[s], 1), message);
+                self.problems.push(Problem {
+                    line_column: Some((line, 1)),
+                    message: format!(
+                        "station `{}`: {count} reading(s); percentiles need at least {MIN_READINGS}",
+                        shorten(name)
+                    ),
+                });
             }
         }
         if self.names.is_empty() && self.problems.is_empty() {
@@ -380,7 +408,7 @@ impl Rows {
             Readings::Planar(
                 self.values
                     .iter()
-                    .map(|s| s.iter().map(|p| [p[0], p[1]]).collect())
+                    .map(|s| s.iter().map(|&[x, y, _]| [x, y]).collect())
                     .collect(),
             )
         } else {

@@ -98,7 +98,7 @@ pub(crate) fn records(text: &str, delimiter: char) -> Result<Vec<Record>, QuoteE
             after_quote = false;
             if end_of_line {
                 let end = (line, column);
-                let blank = fields.len() == 1 && fields[0].text.trim().is_empty();
+                let blank = matches!(&fields[..], [only] if only.text.trim().is_empty());
                 if !blank {
                     out.push(Record {
                         fields: std::mem::take(&mut fields),

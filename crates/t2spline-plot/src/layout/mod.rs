@@ -210,7 +210,9 @@ fn panel_boxes(figures: &[&Figure], page: &Page) -> Vec<PanelLayout> {
                 .map(|r| (r[0].1[1] - r[0].1[0]) / (r[0].0[1] - r[0].0[0]))
                 .fold(0.0, f64::max);
             let tallest = if page.cols > 1 { 1.0 } else { 0.8 };
-            (min_w * aspect).clamp(0.3 * min_w, tallest * min_w)
+            // Not `clamp`: with labels wider than a cell (numbers of 1e130)
+            // `min_w` is negative and the bounds cross.
+            (min_w * aspect).max(0.3 * min_w).min(tallest * min_w)
         } else {
             0.6 * min_w
         };
@@ -372,9 +374,7 @@ impl Texts {
 /// Lays out figures that share one structure (same panels, items and
 /// colour bar), fitting the ranges to the data of all of them and placing the
 /// legend and the unchanging texts where they cover nothing in any of them.
-///
-/// # Panics
-/// If `figures` is empty.
+/// No figure at all is laid out as a figure without panels.
 #[must_use]
 pub fn fit(figures: &[&Figure]) -> Layout {
     let all: Vec<usize> = (0..figures.len()).collect();
@@ -383,12 +383,15 @@ pub fn fit(figures: &[&Figure]) -> Layout {
 
 /// [`fit`], with the legend and the unchanging texts placed against the
 /// drawings of the figures `probes` (indices into `figures`) only: a handful
-/// of representative figures instead of every one.
-///
-/// # Panics
-/// If `figures` or `probes` is empty, or a probe is out of range.
+/// of representative figures instead of every one (probes out of range are
+/// left out).
 #[must_use]
 pub fn fit_probed(figures: &[&Figure], probes: &[usize]) -> Layout {
+    if figures.is_empty() {
+        let empty = Figure::new("", "", "", Vec::new(), Vec::new());
+        return fit_probed(&[&empty], &[0]);
+    }
+    // `Page::of` and `panel_boxes` read the first figure: there is one.
     let page = Page::of(figures);
     let panels = panel_boxes(figures, &page);
     let plot_bottom = panels
@@ -404,7 +407,10 @@ pub fn fit_probed(figures: &[&Figure], probes: &[usize]) -> Layout {
             h: last.plot.h - 14.0,
         })
     });
-    let probe_figs: Vec<&Figure> = probes.iter().map(|&k| figures[k]).collect();
+    let probe_figs: Vec<&Figure> = probes
+        .iter()
+        .filter_map(|&k| figures.get(k).copied())
+        .collect();
     let texts = Texts::annotations(
         figures,
         &probe_figs,

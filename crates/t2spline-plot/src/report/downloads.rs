@@ -21,6 +21,7 @@ pub fn files_of(result: &RunOutput) -> Result<Vec<(String, String)>, Error> {
     t2spline_io::check_finite(result)?;
     let mut json = Vec::new();
     // Writing to memory cannot fail, and a result has only string keys.
+    #[allow(clippy::expect_used)]
     t2spline_io::write_json_pretty(&mut json, result).expect("a result as JSON in memory");
     let mut out = vec![(
         "result.json".to_owned(),

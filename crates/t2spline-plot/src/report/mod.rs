@@ -488,7 +488,7 @@ fn fuzzy_points_table(job: &Job, r: &RunOutput) -> String {
     let cell =
         |v: Option<f64>| format!("<td data-value=\"{}\">{}</td>", number_text(v), rounded(v));
     for k in 0..shown {
-        for (a, axis) in Axis::first::<3>().iter().take(r.dimension).enumerate() {
+        for (a, axis) in Axis::ALL.iter().take(r.dimension).enumerate() {
             let _ = write!(
                 s,
                 "<tr><th scope=\"row\">{k}</th><th scope=\"row\">{}</th>{}",

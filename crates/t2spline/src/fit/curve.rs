@@ -152,8 +152,9 @@ pub fn fit_curve<const D: usize>(
 
 /// [`Error::NotFinite`] at the first non-finite coordinate.
 pub(crate) fn check_finite<const D: usize>(points: &[[f64; D]]) -> Result<(), Error> {
+    let axes = crate::Axis::first::<D>()?;
     for (i, p) in points.iter().enumerate() {
-        for (axis, &value) in crate::Axis::first::<D>().into_iter().zip(p) {
+        for (&axis, &value) in axes.iter().zip(p) {
             if !value.is_finite() {
                 return Err(Error::NotFinite {
                     place: crate::Place::new(i, axis),

@@ -111,7 +111,7 @@ fn outcome<const D: usize>(
     fit: &FuzzyFit<D>,
     model: impl FnOnce(FuzzyCurve<D>) -> Model,
 ) -> FitOutcome {
-    let mixed_heights = Axis::first::<D>()
+    let mixed_heights = Axis::of::<D>()
         .into_iter()
         .zip(fit.mixed_heights().into_iter().zip(fit.heights()))
         .filter(|(_, (mixed, _))| *mixed)

@@ -101,32 +101,34 @@ impl FuzzifyRule {
 /// Fan's type 7, computed as numpy's `np.percentile(x, q)` (see the module
 /// docs for the formula).
 ///
-/// # Panics
-/// If `sorted` is empty (debug builds also check that it is sorted).
+/// `None` if `sorted` is empty. A `q` outside `[0, 100]` is taken as the
+/// nearer end, a NaN `q` gives NaN; values that are not sorted give a value
+/// between two of them, but not a percentile.
 ///
 /// # Examples
 /// ```
 /// # use t2spline::fit::percentile;
 /// let x = [1.0, 2.0, 4.0, 8.0];
-/// assert_eq!(percentile(&x, 50.0), 3.0);   // h = 1.5: halfway from 2 to 4
-/// assert_eq!(percentile(&x, 25.0), 1.75);  // h = 0.75
-/// assert_eq!(percentile(&x, 100.0), 8.0);
+/// assert_eq!(percentile(&x, 50.0), Some(3.0));   // h = 1.5: halfway from 2 to 4
+/// assert_eq!(percentile(&x, 25.0), Some(1.75));  // h = 0.75
+/// assert_eq!(percentile(&x, 100.0), Some(8.0));
+/// assert_eq!(percentile(&[], 50.0), None);
 /// ```
 #[must_use]
-pub fn percentile(sorted: &[f64], q: f64) -> f64 {
-    debug_assert!(sorted.windows(2).all(|w| w[0] <= w[1]), "{sorted:?}");
-    let last = sorted.len() - 1;
-    // As numpy: the fraction q/100 first, then the virtual index.
-    let h = last as f64 * (q / 100.0);
+pub fn percentile(sorted: &[f64], q: f64) -> Option<f64> {
+    let last = sorted.len().checked_sub(1)?;
+    // As numpy: the fraction q/100 first, then the virtual index (a NaN or
+    // negative `h` casts to 0, one past the end is clamped).
+    let h = last as f64 * (q.clamp(0.0, 100.0) / 100.0);
     let j = (h.floor() as usize).min(last);
     let g = h - j as f64;
-    let (a, b) = (sorted[j], sorted[(j + 1).min(last)]);
+    let (a, b) = (*sorted.get(j)?, *sorted.get((j + 1).min(last))?);
     let d = b - a;
-    if g < 0.5 {
+    Some(if g < 0.5 {
         a + d * g
     } else {
         b - d * (1.0 - g)
-    }
+    })
 }
 
 /// One fuzzy number from the readings of one coordinate (sorted in place):
@@ -166,13 +168,21 @@ pub fn fuzzify_number(readings: &mut [f64], rule: &FuzzifyRule) -> Result<Nt2Num
         });
     }
     readings.sort_by(f64::total_cmp);
-    let mut q = [10.0, 25.0, 50.0, 75.0, 90.0].map(|q| percentile(readings, q));
+    let (Some(&min), Some(&max)) = (readings.first(), readings.last()) else {
+        return Err(Error::TooFewReadings {
+            station: None,
+            count: 0,
+        });
+    };
+    // Not empty (just checked), so every percentile is `Some`.
+    let mut q = [10.0, 25.0, 50.0, 75.0, 90.0].map(|q| percentile(readings, q).unwrap_or(min));
     // Exact percentiles are ordered; rounding of neighbouring interpolations
     // (two forms of the lerp) could in principle swap two by an ulp.
-    for i in 1..q.len() {
-        q[i] = q[i].max(q[i - 1]);
+    let mut previous = f64::NEG_INFINITY;
+    for x in &mut q {
+        *x = x.max(previous);
+        previous = *x;
     }
-    let (min, max) = (readings[0], readings[readings.len() - 1]);
     let [p10, p25, p50, p75, p90] = q;
     Nt2Number::try_new(
         p50,
@@ -221,7 +231,7 @@ pub fn fuzzify<const D: usize>(
                 });
             }
             let mut numbers = Vec::with_capacity(D);
-            for axis in Axis::first::<D>() {
+            for axis in Axis::first::<D>()? {
                 column.clear();
                 column.extend(readings.iter().map(|r| r[axis.index()]));
                 numbers.push(
@@ -229,10 +239,12 @@ pub fn fuzzify<const D: usize>(
                         .map_err(|e| e.at(Place::new(station, axis)))?,
                 );
             }
-            // `numbers` has one entry per axis, D in all.
-            let coords: [Nt2Number; D] = numbers
-                .try_into()
-                .unwrap_or_else(|_| unreachable!("one number per axis"));
+            // `numbers` has one entry per axis, D in all: the error is never made.
+            let coords: [Nt2Number; D] = numbers.try_into().map_err(|v: Vec<_>| Error::Length {
+                what: "coordinates",
+                expected: D,
+                found: v.len(),
+            })?;
             Ok(Nt2Point::new(coords))
         })
         .collect()
@@ -302,23 +314,23 @@ mod tests {
         // h = 1.9 → 2 + 0.9 = 2.9; h = 4.75 → 5.75; 9.5 → 10.5; 14.25 → 15.25; 17.1 → 18.1.
         let numpy = [2.9000000000000004, 5.75, 10.5, 15.25, 18.1];
         for (q, expected) in [10.0, 25.0, 50.0, 75.0, 90.0].into_iter().zip(numpy) {
-            assert_eq!(percentile(&x, q), expected, "q = {q}");
+            assert_eq!(percentile(&x, q), Some(expected), "q = {q}");
         }
         // Two readings: P_q = a + (b − a)·q/100.
-        assert_eq!(percentile(&[1.0, 3.0], 10.0), 1.2);
-        assert_eq!(percentile(&[1.0, 3.0], 75.0), 2.5);
-        assert_eq!(percentile(&[1.0, 3.0], 90.0), 2.8);
+        assert_eq!(percentile(&[1.0, 3.0], 10.0), Some(1.2));
+        assert_eq!(percentile(&[1.0, 3.0], 75.0), Some(2.5));
+        assert_eq!(percentile(&[1.0, 3.0], 90.0), Some(2.8));
         // Odd count: the median is the middle value itself.
-        assert_eq!(percentile(&[1.0, 5.0, 9.0], 50.0), 5.0);
+        assert_eq!(percentile(&[1.0, 5.0, 9.0], 50.0), Some(5.0));
         // Equal values: every percentile is that value.
-        assert_eq!(percentile(&[4.0; 7], 10.0), 4.0);
+        assert_eq!(percentile(&[4.0; 7], 10.0), Some(4.0));
     }
 
     #[test]
     fn percentile_ends_are_the_extremes() {
         let x = [-3.5, -1.0, 0.25, 7.0, 11.0];
-        assert_eq!(percentile(&x, 0.0), -3.5);
-        assert_eq!(percentile(&x, 100.0), 11.0);
+        assert_eq!(percentile(&x, 0.0), Some(-3.5));
+        assert_eq!(percentile(&x, 100.0), Some(11.0));
     }
 
     #[test]
@@ -326,8 +338,8 @@ mod tests {
         // g < 0.5 uses a + d·g: exact at g = 0; g ≥ 0.5 uses b − d·(1 − g):
         // exact at g = 1. Values far apart in magnitude show the difference.
         let x = [0.1, 1e17];
-        assert_eq!(percentile(&x, 0.0), 0.1);
-        assert_eq!(percentile(&x, 100.0), 1e17);
+        assert_eq!(percentile(&x, 0.0), Some(0.1));
+        assert_eq!(percentile(&x, 100.0), Some(1e17));
     }
 
     #[test]

@@ -259,7 +259,7 @@ fn nested_spreads<const D: usize>(
 fn violations<const D: usize>(control: &Layers<Vec<[f64; D]>>) -> Vec<OrderViolation> {
     let mut out = Vec::new();
     for i in 0..control[Layer::Crisp].len() {
-        for axis in Axis::first::<D>() {
+        for axis in Axis::of::<D>() {
             let v = Layer::ALL.map(|l| control[l][i][axis.index()]);
             for (r, rule) in RULES.iter().enumerate() {
                 if v[r] > v[r + 1] {
@@ -285,7 +285,7 @@ fn deviation<const D: usize>(fitted: &[[f64; D]], data: &[[f64; D]]) -> Deviatio
         axis: Axis::X,
     };
     for (k, (f, q)) in fitted.iter().zip(data).enumerate() {
-        for axis in Axis::first::<D>() {
+        for axis in Axis::of::<D>() {
             let e = (f[axis.index()] - q[axis.index()]).abs();
             if e > out.max {
                 out = Deviation {
@@ -442,7 +442,13 @@ impl<const D: usize> FuzzyFit<D> {
                         )
                     })
                     .collect();
-                let coords: [Nt2Number; D] = coords?.try_into().expect("one number per coordinate");
+                // One number per coordinate, D in all: the error is never made.
+                let coords: [Nt2Number; D] =
+                    coords?.try_into().map_err(|v: Vec<_>| Error::Length {
+                        what: "coordinates",
+                        expected: D,
+                        found: v.len(),
+                    })?;
                 Ok(Nt2Point::new(coords))
             })
             .collect::<Result<Vec<_>, Error>>()?;

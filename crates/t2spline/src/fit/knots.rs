@@ -91,7 +91,7 @@ pub(crate) fn check_counts(count: usize, degree: usize) -> Result<(), Error> {
     if degree == 0 {
         return Err(Error::ZeroDegreeFit);
     }
-    if count < degree + 1 {
+    if count <= degree {
         return Err(Error::TooFewDataPoints { degree, count });
     }
     Ok(())

@@ -3,6 +3,7 @@
 use std::fmt;
 
 use crate::fuzzy::{Alpha, AlphaCut, Layer, Nt2Number, Tfn};
+use crate::Error;
 
 /// A coordinate axis.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -16,19 +17,41 @@ pub enum Axis {
 }
 
 impl Axis {
-    /// The first `D` axes, in order.
+    /// The axes in order.
+    pub const ALL: [Axis; 3] = [Axis::X, Axis::Y, Axis::Z];
+
+    /// The first `D` axes, in order: the check of a dimension that every
+    /// constructor generic over `D` makes.
     ///
-    /// # Panics
-    /// If `D > 3`: points have two or three coordinates.
-    #[must_use]
-    pub fn first<const D: usize>() -> [Axis; D] {
-        std::array::from_fn(|i| [Axis::X, Axis::Y, Axis::Z][i])
+    /// # Errors
+    /// [`Error::Dimension`] unless `1 ≤ D ≤ 3`: a point has one, two or three
+    /// coordinates, each named by an axis.
+    ///
+    /// # Examples
+    /// ```
+    /// # use t2spline::{Axis, Error};
+    /// assert_eq!(Axis::first::<2>()?, [Axis::X, Axis::Y]);
+    /// assert_eq!(Axis::first::<4>(), Err(Error::Dimension { dimension: 4 }));
+    /// # Ok::<(), Error>(())
+    /// ```
+    pub fn first<const D: usize>() -> Result<[Axis; D], Error> {
+        if D == 0 || D > Axis::ALL.len() {
+            return Err(Error::Dimension { dimension: D });
+        }
+        Ok(Axis::of::<D>())
+    }
+
+    /// The first `D` axes, for a `D` a constructor has checked
+    /// ([`Axis::first`]); past the third every index names `z`, which no
+    /// checked value reaches.
+    pub(crate) fn of<const D: usize>() -> [Axis; D] {
+        std::array::from_fn(|i| Axis::from_index(i).unwrap_or(Axis::Z))
     }
 
     /// The axis with this index (`0 → x`), if any.
     #[must_use]
     pub fn from_index(i: usize) -> Option<Axis> {
-        [Axis::X, Axis::Y, Axis::Z].get(i).copied()
+        Axis::ALL.get(i).copied()
     }
 
     /// Index of the coordinate (`x → 0`).
@@ -40,7 +63,11 @@ impl Axis {
     /// The key used in job files: `"x"`, `"y"` or `"z"`.
     #[must_use]
     pub fn name(self) -> &'static str {
-        ["x", "y", "z"][self.index()]
+        match self {
+            Axis::X => "x",
+            Axis::Y => "y",
+            Axis::Z => "z",
+        }
     }
 }
 
@@ -96,13 +123,10 @@ impl<const D: usize> Nt2Point<D> {
         &self.coords
     }
 
-    /// The number of one coordinate.
-    ///
-    /// # Panics
-    /// If `axis.index() >= D`.
+    /// The number of one coordinate, if the point has that axis.
     #[must_use]
-    pub fn coord(&self, axis: Axis) -> &Nt2Number {
-        &self.coords[axis.index()]
+    pub fn coord(&self, axis: Axis) -> Option<&Nt2Number> {
+        self.coords.get(axis.index())
     }
 
     /// The crisp point.

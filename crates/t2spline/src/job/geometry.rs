@@ -201,13 +201,11 @@ fn lift_point<const D: usize>(p: &[f64; D]) -> [f64; 3] {
 
 /// The surface with three coordinates.
 fn lift_surface<const D: usize>(s: &NurbsSurface<D>) -> Result<NurbsSurface<3>, Error> {
-    let [nu, nv] = s.shape();
-    let points = (0..nu)
-        .map(|i| {
-            (0..nv)
-                .map(|j| lift_point(&s.control_point(i, j)))
-                .collect()
-        })
+    let nv = s.shape()[1];
+    let points = s
+        .control_points()
+        .chunks(nv)
+        .map(|row| row.iter().map(lift_point).collect())
         .collect();
     let weights = s.weights().chunks(nv).map(<[f64]>::to_vec).collect();
     NurbsSurface::try_new(
@@ -226,12 +224,13 @@ fn piece_ranges(knots: &KnotVector) -> Vec<(usize, usize)> {
     let domain = knots.domain();
     let mut cuts = Vec::new();
     let mut f = 0;
-    while f < u.len() {
-        let run = u[f..].iter().take_while(|&&v| v == u[f]).count();
-        if run == k && domain.start < u[f] && u[f] < domain.end {
-            cuts.push(f);
+    for run in u.chunk_by(|a, b| a == b) {
+        if let (true, Some(&v)) = (run.len() == k, run.first()) {
+            if domain.start < v && v < domain.end {
+                cuts.push(f);
+            }
         }
-        f += run;
+        f += run.len();
     }
     let mut ranges = Vec::with_capacity(cuts.len() + 1);
     let mut start = 0;
@@ -246,10 +245,29 @@ fn piece_ranges(knots: &KnotVector) -> Vec<(usize, usize)> {
 fn piece_knots(knots: &KnotVector, (start, end): (usize, usize)) -> Result<KnotVector, Error> {
     let k = knots.degree() + 1;
     KnotVector::try_new(
-        knots.as_slice()[start..end + k].to_vec(),
+        knots
+            .as_slice()
+            .get(start..end + k)
+            .unwrap_or_default()
+            .to_vec(),
         k - 1,
         end - start,
     )
+}
+
+/// Rows `u0..u1`, columns `v0..v1` of a net stored row by row, `nv` per row.
+/// Piece ranges lie within the net's shape, so every slice exists (an empty
+/// row would make `NurbsSurface::try_new` refuse the patch).
+fn sub_net<T: Copy>(
+    values: &[T],
+    nv: usize,
+    (u0, u1): (usize, usize),
+    (v0, v1): (usize, usize),
+) -> Vec<Vec<T>> {
+    let rows = values.get(u0 * nv..u1 * nv).unwrap_or_default();
+    rows.chunks(nv.max(1))
+        .map(|row| row.get(v0..v1).unwrap_or_default().to_vec())
+        .collect()
 }
 
 /// The surface cut at every interior knot of full multiplicity in u and in
@@ -264,12 +282,8 @@ fn continuous_patches(s: &NurbsSurface<3>) -> Result<Vec<NurbsSurface<3>>, Error
     let mut patches = Vec::with_capacity(ru.len() * rv.len());
     for &(u0, u1) in &ru {
         for &(v0, v1) in &rv {
-            let points = (u0..u1)
-                .map(|i| (v0..v1).map(|j| s.control_point(i, j)).collect())
-                .collect();
-            let weights = (u0..u1)
-                .map(|i| s.weights()[i * nv + v0..i * nv + v1].to_vec())
-                .collect();
+            let points = sub_net(s.control_points(), nv, (u0, u1), (v0, v1));
+            let weights = sub_net(s.weights(), nv, (u0, u1), (v0, v1));
             patches.push(NurbsSurface::try_new(
                 points,
                 weights,
@@ -304,8 +318,11 @@ fn continuous_pieces(c: &NurbsCurve<3>) -> Result<Vec<NurbsCurve<3>>, Error> {
         .into_iter()
         .map(|(start, end)| {
             NurbsCurve::try_new(
-                c.control_points()[start..end].to_vec(),
-                c.weights()[start..end].to_vec(),
+                c.control_points()
+                    .get(start..end)
+                    .unwrap_or_default()
+                    .to_vec(),
+                c.weights().get(start..end).unwrap_or_default().to_vec(),
                 piece_knots(c.knots(), (start, end))?,
             )
         })

@@ -28,6 +28,10 @@
 //! # Ok::<(), t2spline::Error>(())
 //! ```
 
+// The input decides the indices here: no indexing that can panic (`get`,
+// iterators, `split_first`), as ARCHITECTURE.md explains.
+#![cfg_attr(not(test), deny(clippy::indexing_slicing))]
+
 mod geometry;
 mod output;
 mod points;

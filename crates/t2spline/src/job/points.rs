@@ -33,7 +33,9 @@ impl<T: Copy> Points<T> {
     /// Points from one vector per coordinate, all of one length (checked in
     /// debug builds: only the crate builds them).
     pub(crate) fn from_coords(coords: Vec<Vec<T>>) -> Self {
-        debug_assert!(coords.iter().all(|c| c.len() == coords[0].len()));
+        debug_assert!(coords
+            .iter()
+            .all(|c| Some(c.len()) == coords.first().map(Vec::len)));
         Points { coords, grid: None }
     }
 
@@ -52,7 +54,7 @@ impl<T: Copy> Points<T> {
     pub fn from_points<const D: usize>(points: &[[T; D]]) -> Self {
         Points {
             coords: (0..D)
-                .map(|d| points.iter().map(|p| p[d]).collect())
+                .map(|d| points.iter().filter_map(|p| p.get(d).copied()).collect())
                 .collect(),
             grid: None,
         }
@@ -111,7 +113,13 @@ impl<T: Copy> Points<T> {
 
     /// The points in order, each as a vector of coordinates.
     pub fn rows(&self) -> impl ExactSizeIterator<Item = Vec<T>> + '_ {
-        (0..self.len()).map(|i| self.coords.iter().map(|c| c[i]).collect())
+        // Every coordinate has `len()` values (the constructors' invariant).
+        (0..self.len()).map(|i| {
+            self.coords
+                .iter()
+                .filter_map(|c| c.get(i).copied())
+                .collect()
+        })
     }
 }
 
@@ -165,8 +173,9 @@ impl<T: serde::Serialize + Copy> serde::Serialize for Shaped<'_, T> {
         impl<T: serde::Serialize> serde::Serialize for Point<'_, T> {
             fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
                 let mut seq = s.serialize_seq(Some(self.0.len()))?;
-                for c in self.0 {
-                    seq.serialize_element(&c[self.1])?;
+                // Every coordinate has a value at every index of the points.
+                for v in self.0.iter().filter_map(|c| c.get(self.1)) {
+                    seq.serialize_element(v)?;
                 }
                 seq.end()
             }

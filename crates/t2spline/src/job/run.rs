@@ -31,6 +31,8 @@ impl Job {
     /// float (a derivative grows like `(coordinate / knot span)^order`, so
     /// narrow spans or large coordinates can take it there); the other parts of
     /// a run are finite for every valid job (the core's input ranges).
+    /// Settings built by hand rather than by [`Job::settings`] are checked
+    /// again, with its errors ([`Error::Setting`]).
     ///
     /// # Examples
     /// ```
@@ -49,7 +51,8 @@ impl Job {
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn run(&self, settings: &Settings) -> Result<RunOutput, Error> {
-        let mut out = self.model.visit(Run(settings))?;
+        let settings = self.settings(&settings.as_overrides())?;
+        let mut out = self.model.visit(Run(&settings))?;
         out.description.clone_from(&self.description);
         Ok(out)
     }
@@ -226,7 +229,7 @@ fn control_points<const D: usize>(
         alpha_cut: SixLayers::from_fn(|l| {
             let cut: Vec<[Option<f64>; D]> = cut_points
                 .iter()
-                .map(|cuts| std::array::from_fn(|d| cuts[d].layer(l)))
+                .map(|cuts| std::array::from_fn(|d| cuts.get(d).and_then(|c| c.layer(l))))
                 .collect();
             shaped(Points::from_points(&cut), grid)
         }),
@@ -288,9 +291,9 @@ fn derivative_curves<const D: usize>(
         let mut columns = vec![vec![Vec::with_capacity(params.len()); D]; order];
         for (i, &t) in params.iter().enumerate() {
             let at = c.derivatives(t, order)?;
-            for (k, column) in columns.iter_mut().enumerate() {
-                for (axis, values) in column.iter_mut().enumerate() {
-                    let value = at[k + 1][axis];
+            // `at` holds the point and its derivatives of orders 1 ..= order.
+            for (k, (column, derivative)) in columns.iter_mut().zip(at.iter().skip(1)).enumerate() {
+                for (axis, (values, &value)) in column.iter_mut().zip(derivative).enumerate() {
                     if !value.is_finite() {
                         return Err(Error::DerivativeOverflow {
                             curve: name,

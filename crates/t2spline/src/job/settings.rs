@@ -91,6 +91,30 @@ pub struct Settings {
     pub derivatives: Option<usize>,
 }
 
+impl Settings {
+    /// The same values as overrides: settings made by hand (their fields are
+    /// public) go through [`Job::settings`] again before a run.
+    pub(crate) fn as_overrides(&self) -> Overrides {
+        let samples = match self.samples {
+            Samples::Along(n) => vec![n as u64],
+            Samples::Grid([u, v]) => vec![u as u64, v as u64],
+        };
+        let alpha = if self.type_reduction.uses_alpha() {
+            Some(self.alpha)
+        } else {
+            self.unused_alpha
+        };
+        Overrides {
+            alpha: alpha.map(Alpha::get),
+            type_reduction: Some(self.type_reduction),
+            samples: Some(samples),
+            derivatives: self
+                .derivatives
+                .map(|k| i64::try_from(k).unwrap_or(i64::MAX)),
+        }
+    }
+}
+
 impl Job {
     /// The settings of a run of this job: each override if given, else the
     /// job's value.
@@ -147,7 +171,7 @@ impl Job {
         } else {
             (Alpha::ZERO, given)
         };
-        let surface = matches!(self.samples, Samples::Grid(_));
+        let surface = self.model.is_surface();
         let samples = match &overrides.samples {
             Some(counts) => samples_of(counts, surface),
             None => match self.samples {

@@ -1,5 +1,60 @@
 //! B-spline basis functions (The NURBS Book, §2.2 and Algorithm A2.2).
 
+use crate::error::Error;
+#[cfg(doc)]
+use crate::nurbs::KnotVector;
+
+/// Checks that `span` has `degree` knots on either side in `knots`, as the
+/// basis at `span` reads `knots[span + 1 − degree ..= span + degree]`.
+///
+/// # Errors
+/// [`Error::Index`] naming the `span` if `span < degree` or
+/// `span + degree ≥ knots.len()`.
+pub(crate) fn check_span(knots: &[f64], degree: usize, span: usize) -> Result<(), Error> {
+    let fits = span >= degree
+        && span
+            .checked_add(degree)
+            .is_some_and(|end| end < knots.len());
+    if fits {
+        Ok(())
+    } else {
+        // The spans with `degree` knots on either side: `degree ..< len − degree`.
+        Err(Error::Index {
+            what: "span",
+            index: span,
+            count: knots.len().saturating_sub(degree),
+        })
+    }
+}
+
+/// The `p + 1` non-zero basis functions at `t` in `span` (The NURBS Book,
+/// A2.2), checked, in a new vector: `N_{span−p,p}(t) … N_{span,p}(t)`.
+///
+/// # Errors
+/// [`Error::Index`] if `span` does not have `degree` knots on either side
+/// (`degree ≤ span` and `span + degree < knots.len()`).
+///
+/// # Examples
+/// ```
+/// # use t2spline::nurbs::basis::try_basis_functions;
+/// let u = [0.0, 0.0, 0.0, 1.0, 1.0, 1.0];
+/// let n = try_basis_functions(&u, 2, 2, 0.5)?;
+/// assert_eq!(n, [0.25, 0.5, 0.25]); // Bernstein polynomials at 1/2
+/// assert!(try_basis_functions(&u, 2, 4, 0.5).is_err());
+/// # Ok::<(), t2spline::Error>(())
+/// ```
+pub fn try_basis_functions(
+    knots: &[f64],
+    degree: usize,
+    span: usize,
+    t: f64,
+) -> Result<Vec<f64>, Error> {
+    check_span(knots, degree, span)?;
+    let mut out = vec![0.0; degree + 1];
+    basis_functions(knots, degree, span, t, &mut out);
+    Ok(out)
+}
+
 /// The highest order whose evaluation needs no allocation (scratch on the
 /// stack); higher orders allocate their scratch.
 pub(crate) const STACK_ORDER: usize = 32;
@@ -16,18 +71,10 @@ pub(crate) const STACK_ORDER: usize = 32;
 /// that every denominator is positive. The values are non-negative and sum to 1
 /// for `t` in `[U[span], U[span+1]]`.
 ///
-/// # Panics
-/// If `out.len() < degree + 1` or `span + degree >= knots.len()`.
-///
-/// # Examples
-/// ```
-/// # use t2spline::nurbs::basis::basis_functions;
-/// let u = [0.0, 0.0, 0.0, 1.0, 1.0, 1.0];
-/// let mut n = [0.0; 3];
-/// basis_functions(&u, 2, 2, 0.5, &mut n);
-/// assert_eq!(n, [0.25, 0.5, 0.25]); // Bernstein polynomials at 1/2
-/// ```
-pub fn basis_functions(knots: &[f64], degree: usize, span: usize, t: f64, out: &mut [f64]) {
+/// Callers guarantee `out.len() > degree`, `degree ≤ span` and
+/// `span + degree < knots.len()` (a span of a validated [`KnotVector`]);
+/// [`try_basis_functions`] is the checked form.
+pub(crate) fn basis_functions(knots: &[f64], degree: usize, span: usize, t: f64, out: &mut [f64]) {
     // Scratch on the stack up to order STACK_ORDER (no allocation per call),
     // on the heap beyond.
     let mut stack = [0.0; 2 * STACK_ORDER];

@@ -3,7 +3,7 @@
 use crate::error::{Error, Place};
 use crate::fuzzy::Axis;
 use crate::limits::{within_magnitude, MAGNITUDE_RANGE, MAX_WEIGHT, MIN_WEIGHT};
-use crate::nurbs::basis::basis_functions;
+use crate::nurbs::basis::{basis_functions, STACK_ORDER};
 use crate::nurbs::{Domain, KnotVector};
 
 /// A rational B-spline curve in `D` dimensions (SPEC §6, paper Def. 5.1):
@@ -43,7 +43,8 @@ impl<const D: usize> NurbsCurve<D> {
     /// that is not finite and positive or outside [`MIN_WEIGHT`](crate::MIN_WEIGHT) …
     /// [`MAX_WEIGHT`](crate::MAX_WEIGHT); [`Error::NotFinite`] for a non-finite
     /// coordinate and [`Error::OutOfRange`] for one of magnitude above
-    /// [`MAX_MAGNITUDE`](crate::MAX_MAGNITUDE).
+    /// [`MAX_MAGNITUDE`](crate::MAX_MAGNITUDE); [`Error::Dimension`] unless
+    /// `1 ≤ D ≤ 3`.
     pub fn try_new(
         control_points: Vec<[f64; D]>,
         weights: Vec<f64>,
@@ -57,8 +58,9 @@ impl<const D: usize> NurbsCurve<D> {
             });
         }
         check_weights(&weights, n)?;
+        let axes = Axis::first::<D>()?;
         for (i, p) in control_points.iter().enumerate() {
-            for (axis, &value) in Axis::first::<D>().into_iter().zip(p) {
+            for (&axis, &value) in axes.iter().zip(p) {
                 if !value.is_finite() {
                     return Err(Error::NotFinite {
                         place: Place::new(i, axis),
@@ -160,9 +162,19 @@ impl<const D: usize> NurbsCurve<D> {
         Ok(self.eval_unchecked(t))
     }
 
-    /// `C(t)` for `t` in the domain.
+    /// `C(t)` for `t` in the domain, without allocation up to order
+    /// [`STACK_ORDER`].
     pub(crate) fn eval_unchecked(&self, t: f64) -> [f64; D] {
-        let (first, r) = self.rational_basis_span(t);
+        let order = self.order();
+        let mut stack = [0.0; STACK_ORDER];
+        let mut heap = Vec::new();
+        let r: &mut [f64] = if order <= STACK_ORDER {
+            &mut stack[..order]
+        } else {
+            heap.resize(order, 0.0);
+            &mut heap
+        };
+        let first = rational_basis_into(&self.knots, &self.weights, t, r);
         let mut out = [0.0; D];
         for (ri, p) in r.iter().zip(&self.control_points[first..]) {
             for (o, x) in out.iter_mut().zip(p) {
@@ -222,23 +234,30 @@ pub(crate) fn rational_basis_span(
     weights: &[f64],
     t: f64,
 ) -> (usize, Vec<f64>) {
+    let mut r = vec![0.0; knots.degree() + 1];
+    let first = rational_basis_into(knots, weights, t, &mut r);
+    (first, r)
+}
+
+/// [`rational_basis_span`] into `out` (`p + 1` values); returns the index of
+/// the first non-zero function.
+fn rational_basis_into(knots: &KnotVector, weights: &[f64], t: f64, out: &mut [f64]) -> usize {
     let p = knots.degree();
     let span = knots.find_span(t);
-    let mut n = vec![0.0; p + 1];
-    basis_functions(knots.as_slice(), p, span, t, &mut n);
+    basis_functions(knots.as_slice(), p, span, t, out);
     let first = span - p;
     let mut denominator = 0.0;
-    for (nj, w) in n.iter_mut().zip(&weights[first..]) {
+    for (nj, w) in out.iter_mut().zip(&weights[first..]) {
         *nj *= w;
         denominator += *nj;
     }
     // Σ wᵣ Nᵣ is positive and finite: the Nᵣ are non-negative and sum to 1, so
     // some Nⱼ ≥ 1/(p + 1), and every weight lies in [MIN_WEIGHT, MAX_WEIGHT] =
     // [1e-150, 1e150], so the sum lies in [1e-150/(p + 1), 1e150·(p + 1)].
-    for nj in &mut n {
+    for nj in out.iter_mut() {
         *nj /= denominator;
     }
-    (first, n)
+    first
 }
 
 /// Checks that there are `n` weights, each in [`MIN_WEIGHT`], [`MAX_WEIGHT`]];

@@ -69,6 +69,10 @@ pub(crate) fn elevate(knots: &KnotVector, rows: &[Row], t: usize) -> (KnotVector
         (knots.clone(), rows.to_vec())
     } else {
         let d = knots.domain();
+        // `segment` fails only for a parameter outside the domain or an
+        // insertion past the order; the domain's ends are inside it and are
+        // inserted up to multiplicity p only.
+        #[allow(clippy::expect_used)]
         segment(knots, rows, d.start, d.end).expect("the domain ends lie in the domain")
     };
     let width = rows[0].len();

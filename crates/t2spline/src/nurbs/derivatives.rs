@@ -30,20 +30,10 @@ pub(crate) fn check_order(order: usize) -> Result<(), Error> {
 /// ```text
 /// N'_{i,p} = p/(U[i+p] − U[i])·N_{i,p−1} − p/(U[i+p+1] − U[i+1])·N_{i+1,p−1}
 /// ```
-/// `span` must be a non-empty span with `p ≤ span` (as for
-/// [`basis_functions`](crate::nurbs::basis::basis_functions)).
-///
-/// # Examples
-/// ```
-/// # use t2spline::nurbs::derivatives::basis_derivatives;
-/// // Bernstein polynomials of degree 2 at 1/2: B' = (−1, 0, 1), B'' = (2, −4, 2).
-/// let d = basis_derivatives(&[0.0, 0.0, 0.0, 1.0, 1.0, 1.0], 2, 2, 0.5, 3);
-/// assert_eq!(d[1], [-1.0, 0.0, 1.0]);
-/// assert_eq!(d[2], [2.0, -4.0, 2.0]);
-/// assert_eq!(d[3], [0.0, 0.0, 0.0]);
-/// ```
-#[must_use]
-pub fn basis_derivatives(
+/// `span` must be a non-empty span with `p ≤ span` and `span + p` below the
+/// number of knots (a span of a validated knot vector);
+/// [`try_basis_derivatives`] is the checked form.
+pub(crate) fn basis_derivatives(
     knots: &[f64],
     degree: usize,
     span: usize,
@@ -51,6 +41,37 @@ pub fn basis_derivatives(
     n: usize,
 ) -> Vec<Vec<f64>> {
     basis_derivatives_in(knots, degree, span, t, n, |d| d)
+}
+
+/// The basis functions at `t` in `span` and their derivatives up to order
+/// `n` (The NURBS Book, A2.3), checked: `ders[k][j]` is the `k`-th derivative
+/// of `N_{span−p+j,p}`; orders above the degree are zero.
+///
+/// # Errors
+/// [`Error::Index`] if `span` does not have `degree` knots on either side
+/// (`degree ≤ span` and `span + degree < knots.len()`); [`Error::OutOfRange`]
+/// if `n` is above [`MAX_DERIVATIVE_ORDER`].
+///
+/// # Examples
+/// ```
+/// # use t2spline::nurbs::derivatives::try_basis_derivatives;
+/// // Bernstein polynomials of degree 2 at 1/2: B' = (−1, 0, 1), B'' = (2, −4, 2).
+/// let d = try_basis_derivatives(&[0.0, 0.0, 0.0, 1.0, 1.0, 1.0], 2, 2, 0.5, 3)?;
+/// assert_eq!(d[1], [-1.0, 0.0, 1.0]);
+/// assert_eq!(d[2], [2.0, -4.0, 2.0]);
+/// assert_eq!(d[3], [0.0, 0.0, 0.0]);
+/// # Ok::<(), t2spline::Error>(())
+/// ```
+pub fn try_basis_derivatives(
+    knots: &[f64],
+    degree: usize,
+    span: usize,
+    t: f64,
+    n: usize,
+) -> Result<Vec<Vec<f64>>, Error> {
+    crate::nurbs::basis::check_span(knots, degree, span)?;
+    check_order(n)?;
+    Ok(basis_derivatives(knots, degree, span, t, n))
 }
 
 /// [`basis_derivatives`] with respect to a local variable `s` with

@@ -35,6 +35,8 @@ pub(crate) mod fixtures;
 pub(crate) mod knot_insertion;
 mod knots;
 pub(crate) mod net;
+pub(crate) mod pieces;
+pub(crate) mod span_eval;
 pub(crate) mod split;
 pub(crate) mod surface;
 

@@ -46,14 +46,16 @@ impl<const D: usize> FuzzyCurve<D> {
     /// uniform default (SPEC §6).
     ///
     /// # Errors
-    /// [`Error::TooFewControlPoints`], [`Error::WeightCount`], [`Error::Weight`],
-    /// [`Error::WeightOutOfRange`], and the knot errors of [`KnotVector::try_new`].
+    /// [`Error::Dimension`] unless `1 ≤ D ≤ 3`; [`Error::TooFewControlPoints`],
+    /// [`Error::WeightCount`], [`Error::Weight`], [`Error::WeightOutOfRange`],
+    /// and the knot errors of [`KnotVector::try_new`].
     pub fn try_new(
         degree: usize,
         points: Vec<Nt2Point<D>>,
         weights: Vec<f64>,
         knots: Option<Vec<f64>>,
     ) -> Result<Self, Error> {
+        Axis::first::<D>()?;
         let n = points.len();
         let knots = match knots {
             Some(values) => KnotVector::try_new(values, degree, n)?,
@@ -231,6 +233,6 @@ impl<const D: usize> FuzzyCurve<D> {
     /// The axes of this curve's points.
     #[must_use]
     pub fn axes(&self) -> [Axis; D] {
-        Axis::first::<D>()
+        Axis::of::<D>()
     }
 }

@@ -41,9 +41,14 @@ pub(crate) fn common_heights<const D: usize>(
     points: &[Nt2Point<D>],
     place: impl Fn(usize, Axis) -> Place,
 ) -> Result<[Height; D], Error> {
-    let first = points[0].coords().map(|x| x.height());
+    // Curves and surfaces hold at least one point (their constructors check
+    // the count), so the error is never returned for them.
+    let Some(first) = points.first() else {
+        return Err(Error::TooFewControlPoints { order: 1, count: 0 });
+    };
+    let first = first.coords().map(|x| x.height());
     for (i, p) in points.iter().enumerate() {
-        for (axis, (x, h)) in Axis::first::<D>()
+        for (axis, (x, h)) in Axis::of::<D>()
             .into_iter()
             .zip(p.coords().iter().zip(&first))
         {
@@ -261,11 +266,11 @@ impl<const D: usize> FuzzyCurve<D> {
     /// ```
     #[must_use]
     pub fn bounding_box(&self) -> BoundingBox<D> {
-        Layer::ALL
-            .iter()
-            .map(|&l| self.layer_curve(l).bounding_box())
-            .reduce(BoundingBox::union)
-            .expect("seven layers")
+        let [first, rest @ ..] = Layer::ALL;
+        rest.iter()
+            .fold(self.layer_curve(first).bounding_box(), |b, &l| {
+                b.union(self.layer_curve(l).bounding_box())
+            })
     }
 }
 

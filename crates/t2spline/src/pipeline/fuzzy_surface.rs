@@ -3,7 +3,7 @@
 //! seven layers at once.
 
 use crate::error::{Error, Place};
-use crate::fuzzy::{Alpha, Height, Layer, Layers, Nt2Number, Nt2Point};
+use crate::fuzzy::{Alpha, Axis, Height, Layer, Layers, Nt2Number, Nt2Point};
 use crate::nurbs::degree_elevation::{check_elevation, elevate};
 use crate::nurbs::knot_insertion::{insert, refine};
 use crate::nurbs::net::{check_rows, Row};
@@ -60,13 +60,15 @@ impl<const D: usize> FuzzySurface<D> {
     /// [`Error::NetShape`] for rows of unequal length or weights of another
     /// shape; [`Error::InDirection`] wrapping the knot errors of
     /// [`KnotVector::try_new`] (and [`Error::TooFewControlPoints`]) of a
-    /// direction; [`Error::NetWeight`] for a bad weight.
+    /// direction; [`Error::NetWeight`] for a bad weight; [`Error::Dimension`]
+    /// unless `1 ≤ D ≤ 3`.
     pub fn try_new(
         degree: [usize; 2],
         points: Vec<Vec<Nt2Point<D>>>,
         weights: Vec<Vec<f64>>,
         knots: [Option<Vec<f64>>; 2],
     ) -> Result<Self, Error> {
+        Axis::first::<D>()?;
         let shape = net_shape(&points, "points")?;
         let [ku, kv] = knots;
         let knots = [

@@ -1,7 +1,10 @@
 //! The distance between the crisp and the defuzzified curve (SPEC §7).
 
-use crate::golden_section::golden_section_min;
+use crate::golden_section::brent_min;
+use crate::nurbs::pieces::{tame_pieces, Piece};
+use crate::nurbs::span_eval::SpanEvaluator;
 use crate::nurbs::NurbsCurve;
+use crate::quadrature::{integrate_pieces, Tolerance};
 
 /// How far the defuzzified curve `D(t)` lies from the crisp curve `C(t)` at equal
 /// parameters, over the whole domain `[a, b]` (SPEC §7):
@@ -13,10 +16,21 @@ use crate::nurbs::NurbsCurve;
 /// ```
 /// Both curves share weights and knots, so `D − C` is itself a rational
 /// B-spline whose control points are the differences `Dᵢ − Pᵢ`; `d` is its norm.
-/// Neither figure depends on the job's `samples`: `max` is found by a scan of 32
-/// steps per knot span, each local maximum of the scan refined by
-/// golden-section search (to about 1e-13 of the span in `t`), `rms` by 8-point Gauss–Legendre quadrature on quarters of each
-/// knot span. With symmetric spreads both are 0.
+/// Neither figure depends on the job's `samples`. Both work on the knot spans,
+/// cut where the weights vary by more than a factor 4 (where a rational curve
+/// can move within a small part of a span; see ARCHITECTURE.md, "Tame pieces
+/// for rational curves"):
+///
+/// - `max`: a scan of 32 steps per piece, each local maximum of the scan
+///   refined by Brent's method until its bracket is 4·10⁻⁹ of the piece wide.
+///   `d` is flat at a peak (`d(t*) − d(t) ≈ |d''|·δ²/2`), so the value is
+///   exact to rounding, while `max_at` is known only as far as rounding lets
+///   the values differ: to about √ε ≈ 10⁻⁸ of the piece. A larger distance
+///   met by the rms quadrature counts too.
+/// - `rms`: adaptive Gauss–Kronrod quadrature (7/15 points), to a relative
+///   accuracy of 10⁻¹².
+///
+/// With symmetric spreads both are 0.
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Distance {
@@ -30,28 +44,56 @@ pub struct Distance {
 
 /// Steps of the scan for the maximum, per knot span.
 const SCAN_STEPS: usize = 32;
-/// Gauss–Legendre points per quadrature cell.
-const GAUSS_POINTS: usize = 8;
-/// Quadrature cells per knot span.
-const CELLS_PER_SPAN: usize = 4;
+/// The width, relative to its piece, to which Brent's method narrows the
+/// bracket of a peak: below about 10⁻⁸ rounding decides the comparisons
+/// anyway, and the value is exact to rounding long before.
+const REFINEMENT: f64 = 1e-9;
+/// The relative accuracy aimed at for the mean square `rms²`: `rms` is then
+/// accurate to half of it, within the promised 10⁻¹².
+const MEAN_SQUARE_TARGET: f64 = 1e-13;
+/// Bisections allowed for the mean square: this many plus
+/// [`BISECTIONS_PER_PIECE`] per piece.
+const BISECTIONS: usize = 1000;
+/// See [`BISECTIONS`].
+const BISECTIONS_PER_PIECE: usize = 64;
 
 impl Distance {
     /// Measures the norm of `difference(t)` over its domain.
     ///
-    /// The mean square is formed as a weighted mean of `(d(t)/scale)²` with
-    /// weights that are fractions of the domain (each knot span's share of
-    /// `b − a`, times the quadrature weights), where `scale` is the largest
-    /// distance found by the scan. Squaring a distance near 1e-170 directly would
-    /// underflow; dividing by `b − a` at the
-    /// end would lose a domain narrower than about 1e-300.
+    /// The mean square is integrated in the variable `s = (t − a)/(b − a)`
+    /// of the unit interval, as the integral of `(d(t)/scale)²` with `scale`
+    /// the largest distance found: squaring a distance near 1e-170 directly
+    /// would underflow, and dividing by `b − a` at the end would lose a
+    /// domain narrower than about 1e-300. Every evaluation is on a chosen
+    /// knot span, without allocation ([`SpanEvaluator`]).
     pub(crate) fn of_curve<const D: usize>(difference: &NurbsCurve<D>) -> Distance {
-        let norm = |t: f64| norm(&difference.eval_unchecked(t));
         let domain = difference.domain();
-        let mut max = (norm(domain.start), domain.start);
+        let weights = difference.weights();
+        let pieces = tame_pieces(
+            difference.knots(),
+            weights,
+            |i| vec![weights[i]],
+            domain.start,
+            domain.end,
+        );
+        let mut eval = SpanEvaluator::new(difference.degree());
+        eval.set_span(difference, difference.knots().find_span(domain.start));
+        let mut max = (
+            euclidean_norm(&eval.point(difference, domain.start)),
+            domain.start,
+        );
         let mut scan = Vec::with_capacity(SCAN_STEPS + 1);
-        for (_, [a, b]) in difference.knots().spans() {
+        for &Piece {
+            span, lo: a, hi: b, ..
+        } in &pieces
+        {
+            if a >= b {
+                continue;
+            }
+            eval.set_span(difference, span);
+            let mut norm = |t: f64| distance_at(difference, &mut eval, span, t);
             let step = (b - a) / SCAN_STEPS as f64;
-            let tolerance = 1e-13 * (b - a).max(f64::MIN_POSITIVE);
+            let tolerance = REFINEMENT * (b - a).max(f64::MIN_POSITIVE);
             scan.clear();
             scan.extend((0..=SCAN_STEPS).map(|j| {
                 // `min`: in a span a few subnormal units wide the rounded step
@@ -75,7 +117,7 @@ impl Distance {
                 let falls = j == SCAN_STEPS || scan[j + 1].0 <= d;
                 if rises && falls {
                     let bracket = [scan[j.saturating_sub(1)].1, scan[(j + 1).min(SCAN_STEPS)].1];
-                    let (d, t) = golden_section_min(|t| -norm(t), bracket, tolerance);
+                    let (d, t) = brent_min(|t| -norm(t), bracket, (t, -d), tolerance);
                     if -d > max.0 {
                         max = (-d, t);
                     }
@@ -83,33 +125,78 @@ impl Distance {
             }
         }
         let scale = max.0;
-        let mut mean_square = 0.0;
+        let mut rms = 0.0;
         if scale > 0.0 {
-            let (nodes, weights) = gauss_legendre(GAUSS_POINTS);
-            let width = domain.end - domain.start;
-            for (_, [a, b]) in difference.knots().spans() {
-                // This cell's share of the domain; the Gauss weights sum to 2.
-                let share = (b - a) / width / CELLS_PER_SPAN as f64 / 2.0;
-                let cell = (b - a) / CELLS_PER_SPAN as f64;
-                for c in 0..CELLS_PER_SPAN {
-                    let (lo, half) = (a + cell * c as f64, cell / 2.0);
-                    for (x, w) in nodes.iter().zip(&weights) {
-                        let d = norm((lo + half * (1.0 + x)).clamp(a, b)) / scale;
-                        mean_square += share * w * d * d;
-                    }
-                }
+            let (mean, seen) = mean_square(difference, &pieces, scale);
+            rms = scale * mean.sqrt();
+            // The quadrature's nodes are distances too; one above the scan's
+            // maximum (a peak narrower than the scan's steps) is the maximum.
+            if seen.0 > max.0 {
+                max = seen;
             }
         }
         Distance {
             max: max.0,
             max_at: max.1,
-            rms: scale * mean_square.sqrt(),
+            rms,
         }
     }
 }
 
-fn norm<const D: usize>(v: &[f64; D]) -> f64 {
-    euclidean_norm(v)
+/// `d(t)` for `t` in the knot span `span` (chosen on `eval`), as `eval`
+/// gives the curve: at the knot that ends the span inside the domain, the
+/// value from the right. The span's polynomial gives the left limit there,
+/// which no parameter reaches where the curve jumps (a knot of full
+/// multiplicity) and which, with weights far apart, can differ from every
+/// value at parameters before it.
+fn distance_at<const D: usize>(
+    difference: &NurbsCurve<D>,
+    eval: &mut SpanEvaluator,
+    span: usize,
+    t: f64,
+) -> f64 {
+    let end = difference.knots().as_slice()[span + 1];
+    if t >= end && end < difference.domain().end {
+        euclidean_norm(&difference.eval_unchecked(t))
+    } else {
+        euclidean_norm(&eval.point(difference, t))
+    }
+}
+
+/// `1/(b − a) · ∫ₐᵇ (d(t)/scale)² dt`, integrated over `s ∈ [0, 1]` on the
+/// tame pieces, and the largest distance met on the way with its parameter.
+fn mean_square<const D: usize>(
+    difference: &NurbsCurve<D>,
+    pieces: &[Piece],
+    scale: f64,
+) -> (f64, (f64, f64)) {
+    let domain = difference.domain();
+    let width = domain.end - domain.start;
+    let to_s = |t: f64| ((t - domain.start) / width).clamp(0.0, 1.0);
+    let ranges: Vec<[f64; 2]> = pieces.iter().map(|p| [to_s(p.lo), to_s(p.hi)]).collect();
+    let mut eval = SpanEvaluator::new(difference.degree());
+    let mut chosen = usize::MAX;
+    let mut seen = (0.0, domain.start);
+    let (integral, _) = integrate_pieces(
+        |k, s| {
+            let piece = &pieces[k];
+            if piece.span != chosen {
+                eval.set_span(difference, piece.span);
+                chosen = piece.span;
+            }
+            let t = (domain.start + s * width).clamp(piece.lo, piece.hi);
+            let d = distance_at(difference, &mut eval, piece.span, t);
+            if d > seen.0 {
+                seen = (d, t);
+            }
+            let d = d / scale;
+            d * d
+        },
+        &ranges,
+        Tolerance::relative(MEAN_SQUARE_TARGET),
+        BISECTIONS.saturating_add(BISECTIONS_PER_PIECE.saturating_mul(pieces.len())),
+    );
+    (integral.value, seen)
 }
 
 /// The Euclidean norm `‖v‖₂ = √(Σ vᵢ²)`. Components from 1e-150 to 1e150
@@ -138,149 +225,5 @@ pub fn euclidean_norm(v: &[f64]) -> f64 {
     }
 }
 
-/// Nodes and weights of `n`-point Gauss–Legendre quadrature on `[−1, 1]`, by
-/// Newton's method on the Legendre polynomial `Pₙ` (Press et al., *Numerical
-/// Recipes*, §4.6), using `P_k = ((2k − 1)·x·P_{k−1} − (k − 1)·P_{k−2}) / k` and
-/// `Pₙ'(x) = n·(x·Pₙ − P_{n−1}) / (x² − 1)`.
-fn gauss_legendre(n: usize) -> (Vec<f64>, Vec<f64>) {
-    let mut nodes = Vec::with_capacity(n);
-    let mut weights = Vec::with_capacity(n);
-    for i in 1..=n {
-        let mut x = (std::f64::consts::PI * (i as f64 - 0.25) / (n as f64 + 0.5)).cos();
-        let mut derivative = 1.0;
-        for _ in 0..100 {
-            let (mut p, mut previous) = (x, 1.0);
-            for k in 2..=n {
-                let k = k as f64;
-                (p, previous) = (((2.0 * k - 1.0) * x * p - (k - 1.0) * previous) / k, p);
-            }
-            derivative = n as f64 * (x * p - previous) / (x * x - 1.0);
-            let dx = p / derivative;
-            x -= dx;
-            if dx.abs() < 1e-16 {
-                break;
-            }
-        }
-        nodes.push(x);
-        weights.push(2.0 / ((1.0 - x * x) * derivative * derivative));
-    }
-    (nodes, weights)
-}
-
 #[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn gauss_legendre_integrates_degree_15_exactly() {
-        let (x, w) = gauss_legendre(8);
-        assert!((w.iter().sum::<f64>() - 2.0).abs() < 1e-14);
-        // ∫₋₁¹ t¹⁴ dt = 2/15.
-        let i: f64 = x.iter().zip(&w).map(|(x, w)| w * x.powi(14)).sum();
-        assert!((i - 2.0 / 15.0).abs() < 1e-14, "{i}");
-    }
-
-    #[test]
-    fn issue_6_a_subnormal_domain_keeps_max_at_inside() {
-        // A domain 274 subnormal units wide: the scan step rounds up, and 31
-        // steps went past the end (found by fuzzing).
-        let end = 1.354e-321;
-        let u = crate::KnotVector::try_new(vec![0.0, 0.0, end, end], 1, 2).unwrap();
-        let c = NurbsCurve::try_new(vec![[0.0, 0.0], [3.0, 4.0]], vec![1.0, 2.0], u).unwrap();
-        let d = Distance::of_curve(&c);
-        assert!((0.0..=end).contains(&d.max_at), "{d:?}");
-        assert_eq!(d.max, 5.0);
-        assert!(d.rms > 0.0 && d.rms <= d.max, "{d:?}");
-    }
-
-    #[test]
-    fn constant_offset_has_equal_max_and_rms() {
-        // A curve with all control points at (3, 4) is the constant (3, 4).
-        let c = NurbsCurve::try_clamped(3, vec![[3.0, 4.0]; 6], vec![1.0, 2.0, 0.5, 1.0, 3.0, 1.0])
-            .unwrap();
-        let d = Distance::of_curve(&c);
-        assert!(
-            (d.max - 5.0).abs() < 1e-14 && (d.rms - 5.0).abs() < 1e-14,
-            "{d:?}"
-        );
-    }
-
-    #[test]
-    fn line_from_zero_has_known_max_and_rms() {
-        // d(t) = 2t on [0, 1]: max 2 at t = 1, rms = √(∫ 4t² dt) = 2/√3.
-        let c = NurbsCurve::try_clamped(1, vec![[0.0, 0.0], [0.0, 2.0]], vec![1.0, 1.0]).unwrap();
-        let d = Distance::of_curve(&c);
-        assert_eq!((d.max, d.max_at), (2.0, 1.0));
-        assert!((d.rms - 2.0 / 3f64.sqrt()).abs() < 1e-14, "{d:?}");
-    }
-
-    #[test]
-    fn a_peak_next_to_the_domain_start_is_refined() {
-        // y(t) = (1 − t)² + 2.02·t(1 − t) − 0.5·t²: y' = 0.02 − 3.04·t, a
-        // peak of 1 + 0.02²/6.08 at t = 0.02/3.04, inside the first scan step. The scan's
-        // best point was t = 0 itself, which was never bracketed: the shipped
-        // example reported 0.022423 at t = 0 for a peak of 0.022439 at 0.0074.
-        let c =
-            NurbsCurve::try_clamped(2, vec![[0.0, 1.0], [0.0, 1.01], [0.0, -0.5]], vec![1.0; 3])
-                .unwrap();
-        let d = Distance::of_curve(&c);
-        assert!((d.max - (1.0 + 0.0004 / 6.08)).abs() < 1e-15, "{d:?}");
-        assert!((d.max_at - 0.02 / 3.04).abs() < 1e-7, "{d:?}");
-    }
-
-    #[test]
-    fn two_peaks_never_fall_below_dense_sampling() {
-        // Two bumps of |y| on one span, a cubic with y control values
-        // (0, 1, −r, 0) and a varying weight: whichever peak is higher, the
-        // maximum must not fall below dense sampling, and some shapes must
-        // need the refinement.
-        let mut beaten = 0;
-        for i in 0..40 {
-            let r = 0.5 + i as f64 * 0.025;
-            let w = 1.0 + (i % 7) as f64 * 0.3;
-            let c = NurbsCurve::try_clamped(
-                3,
-                vec![[0.0, 0.0], [0.0, 1.0], [0.0, -r], [0.0, 0.0]],
-                vec![1.0, w, 1.0, 1.0],
-            )
-            .unwrap();
-            let d = Distance::of_curve(&c);
-            let y = |t: f64| c.eval(t).unwrap()[1].abs();
-            let n = 400_000;
-            let dense = (0..=n).map(|k| y(k as f64 / n as f64)).fold(0.0, f64::max);
-            assert!(d.max >= dense - 1e-15, "r {r}, w {w}: {d:?} vs {dense}");
-            assert!((y(d.max_at) - d.max).abs() < 1e-15);
-            let coarse = (0..=SCAN_STEPS)
-                .map(|k| y(k as f64 / SCAN_STEPS as f64))
-                .fold(0.0, f64::max);
-            beaten += usize::from(d.max > coarse + 1e-9);
-        }
-        assert!(beaten > 0, "no shape had a peak between scan points");
-    }
-
-    #[test]
-    fn interior_maximum_is_refined_between_scan_points() {
-        // An asymmetric rational arch whose peak lies between scan points.
-        let c = NurbsCurve::try_clamped(
-            2,
-            vec![[0.0, 0.0], [0.0, 2.0], [0.0, 0.0]],
-            vec![1.0, 3.0, 2.0],
-        )
-        .unwrap();
-        let d = Distance::of_curve(&c);
-        let y = |t: f64| c.eval(t).unwrap()[1];
-        let dense = (0..=200_000)
-            .map(|i| y(i as f64 / 200_000.0))
-            .fold(0.0, f64::max);
-        let coarse = (0..=32).map(|i| y(i as f64 / 32.0)).fold(0.0, f64::max);
-        assert!(
-            d.max >= dense - 1e-15 && d.max - dense < 1e-9,
-            "{d:?} vs {dense}"
-        );
-        assert!(
-            d.max - coarse > 1e-6,
-            "the scan alone was already exact: {coarse}"
-        );
-        assert!((y(d.max_at) - d.max).abs() < 1e-15);
-    }
-}
+mod tests;

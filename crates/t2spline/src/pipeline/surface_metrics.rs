@@ -122,14 +122,16 @@ impl SurfaceDistance {
 /// The largest norm of the control points that act on a patch: an upper
 /// bound of the patch's norm, which is a convex combination of them.
 fn hull_bound<const D: usize>(s: &NurbsSurface<D>, &([su, sv], _): &Patch) -> f64 {
-    let [ku, kv] = s.order();
-    let mut bound = 0.0_f64;
-    for i in su + 1 - ku..=su {
-        for j in sv + 1 - kv..=sv {
-            bound = bound.max(euclidean_norm(&s.control_point(i, j)));
-        }
-    }
-    bound * (1.0 + HULL_SLACK)
+    let ([ku, kv], nv) = (s.order(), s.shape()[1]);
+    // Rows su + 1 − ku ..= su, columns sv + 1 − kv ..= sv of the net.
+    s.control_points()
+        .chunks(nv)
+        .skip(su + 1 - ku)
+        .take(ku)
+        .flat_map(|row| row.iter().skip(sv + 1 - kv).take(kv))
+        .map(|p| euclidean_norm(p))
+        .fold(0.0_f64, f64::max)
+        * (1.0 + HULL_SLACK)
 }
 
 /// The largest distance on one patch and where it is reached.

@@ -2,18 +2,21 @@
 //! (SPEC §10).
 
 use crate::fuzzy::{Alpha, Interval, Nt2Number};
-use crate::quadrature;
+use crate::quadrature::{integrate_pieces, Tolerance};
 use crate::reduction::footprint::{self, Footprint, Frame, KmFunction, Triangles};
 
 /// The accuracy promised for [`AlphaPlanes::defuzzified`], relative to the
 /// width of the support `upper.right − upper.left`.
 pub const ALPHA_PLANES_TOLERANCE: f64 = 1e-12;
 
-/// The tolerance the quadrature aims at, per unit of local length (the
-/// support has length 1): a hundred times below the promise, because the
-/// estimate `|K₁₅ − G₇|` bounds the Gauss rule's error, and well above the
-/// rounding of ζ² ∈ [0, 1].
-const QUADRATURE_TOLERANCE: f64 = 1e-14;
+/// The absolute tolerance of each of the two integrals, in local units (the
+/// support has length 1): ten times below the promise, since the defuzzified
+/// value takes half their difference, and above QUADPACK's rounding floor
+/// `50·ε·∫ζ² ≤ 1.2e-14` (ζ² ∈ [0, 1] on at most the unit length).
+const QUADRATURE_TOLERANCE: Tolerance = Tolerance {
+    relative: 0.0,
+    absolute: 1e-13,
+};
 
 /// Bisections allowed for one of the two integrals. The integrands are smooth
 /// rational functions on each piece; a handful of bisections suffices, and
@@ -201,14 +204,16 @@ fn squared_level_integral(km: &KmFunction, b: &[f64; 7], from: f64, c_p: f64, a_
             0.0
         }
     };
-    let mut budget = BISECTIONS;
-    let mut total = 0.0;
+    // Pieces between the breakpoints, where ζ² is smooth.
+    let mut pieces = Vec::with_capacity(8);
     let mut lo = from;
     for &knot in b.iter().filter(|&&k| k > from && k < c_p).chain([&c_p]) {
-        total += quadrature::integrate(&zeta2, lo, knot, QUADRATURE_TOLERANCE, &mut budget);
+        pieces.push([lo, knot]);
         lo = knot;
     }
-    total
+    integrate_pieces(|_, c| zeta2(c), &pieces, QUADRATURE_TOLERANCE, BISECTIONS)
+        .0
+        .value
 }
 
 #[cfg(test)]

@@ -36,12 +36,15 @@ pub fn benchmark_curve() -> FuzzyCurve<2> {
         .iter()
         .map(|p| Nt2Point::new(p.map(benchmark_number)))
         .collect();
+    // Constant input, valid (the tests build it).
+    #[allow(clippy::expect_used)]
     FuzzyCurve::try_new(3, points, WEIGHTS.to_vec(), None).expect("a valid curve")
 }
 
 /// The fuzzy number of every benchmark coordinate `c`: upper feet
 /// `c − 0.3, c + 0.45`, primary feet `c − 0.2, c + 0.3`, lower feet
 /// `c − 0.1, c + 0.15`, lower height 0.6.
+#[allow(clippy::expect_used)] // the spreads are ordered, and `c` is a constant of this file
 fn benchmark_number(c: f64) -> Nt2Number {
     Nt2Number::try_new(
         c,
@@ -85,6 +88,8 @@ pub fn benchmark_surface() -> FuzzySurface<3> {
                 .collect()
         })
         .collect();
+    // Constant input, valid (the tests build it).
+    #[allow(clippy::expect_used)]
     FuzzySurface::try_new([3, 3], points, weights, [None, None]).expect("a valid surface")
 }
 
@@ -96,6 +101,7 @@ pub fn benchmark_surface() -> FuzzySurface<3> {
 /// assert_eq!((a.len(), a[3].get()), (11, 0.3));
 /// ```
 #[must_use]
+#[allow(clippy::expect_used)] // k/10 lies in [0, 1] for k in 0..=10
 pub fn benchmark_levels() -> Vec<Alpha> {
     (0..=10)
         .map(|k| Alpha::try_new(f64::from(k) / 10.0).expect("k/10 lies in [0, 1]"))

@@ -36,7 +36,7 @@ impl<const D: usize> NurbsCurve<D> {
     /// assert!(s.points().all(|[x, y]| (x.hypot(y) - 1.0).abs() < 1e-14));
     /// let t = [0.9, 0.1, 0.5]; // any order
     /// let s = c.sample_soa(&t)?;
-    /// assert!((s.point(0)[0] - c.eval(0.9)?[0]).abs() < 1e-15);
+    /// assert!((s.coord(0)[0] - c.eval(0.9)?[0]).abs() < 1e-15);
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn sample_soa<'a>(&self, params: impl Into<Params<'a>>) -> Result<CurveSamples<D>, Error> {
@@ -89,8 +89,8 @@ impl<const D: usize> FuzzyCurve<D> {
     /// ];
     /// let c = FuzzyCurve::try_new(2, points, vec![1.0, 1.0, 1.0], None)?;
     /// let s = c.sample_layers(Params::Uniform(3))?;
-    /// assert_eq!(s[Layer::Crisp].point(1), [1.0, 1.0]);
-    /// assert_eq!(s[Layer::UpperRight].point(1), [3.0, 3.0]);
+    /// assert_eq!(s[Layer::Crisp].point(1), Some([1.0, 1.0]));
+    /// assert_eq!(s[Layer::UpperRight].point(1), Some([3.0, 3.0]));
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn sample_layers<'a>(
@@ -159,6 +159,7 @@ impl<const D: usize> FuzzyCurve<D> {
         // The plan orders its channels its own way: `out[k·D + d]` is channel
         // `layer_channel(Layer::ALL[k]) + d`.
         let channels = Layer::ALL.into_iter().flat_map(|layer| {
+            #[allow(clippy::expect_used)] // `Plan::new(.., true)` plans every layer
             let first = plan
                 .layer_channel(layer)
                 .expect("a plan with layers has every layer");
@@ -168,9 +169,10 @@ impl<const D: usize> FuzzyCurve<D> {
             channels.zip(out.iter_mut().map(|o| &mut **o)).collect();
         by_channel.sort_by_key(|(channel, _)| *channel);
         let mut ordered: Vec<&mut [f64]> = by_channel.into_iter().map(|(_, o)| o).collect();
-        Sampler::new_unchecked(self.knots(), self.weights(), plan.values())
-            .with_bounds(plan.bounds())
-            .expect("the bounds name channels just made")
+        let params = params.into();
+        // The same sampler as `sample_layers`, so that both agree bit for bit.
+        Sampler::for_count_unchecked(self.knots(), self.weights(), plan.values(), params.len())
+            .with_bounds(plan.bounds())?
             .sample_into(params, &mut ordered)
     }
 
@@ -198,7 +200,7 @@ impl<const D: usize> FuzzyCurve<D> {
     /// assert!(top.alpha_cut(Layer::LowerLeft).is_none()); // 1 > h = 0.5
     /// let crisp = &sweep.layers()[Layer::Crisp];
     /// let solved = top.defuzzified();
-    /// assert!((0..101).all(|i| (solved.point(i)[1] - crisp.point(i)[1]).abs() < 1e-14));
+    /// assert!((0..101).all(|i| (solved.coord(1)[i] - crisp.coord(1)[i]).abs() < 1e-14));
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn sample_sweep<'a>(
@@ -279,6 +281,8 @@ impl<const D: usize> Solution<D> {
             Vec::new(),
         )?;
         let (_, levels) = sweep.into_parts();
+        // One solution was sampled, so there is one level.
+        #[allow(clippy::expect_used)]
         Ok(levels.into_iter().next().expect("one level was asked for"))
     }
 
@@ -307,9 +311,9 @@ fn sweep<const D: usize>(
 ) -> Result<SweepSamples<D>, Error> {
     let stages: Vec<&PointStages<D>> = solutions.iter().map(Solution::stages).collect();
     let plan = Plan::new(curve.points(), &stages, layers);
-    let sampler = Sampler::new_unchecked(curve.knots(), curve.weights(), plan.values())
-        .with_bounds(plan.bounds())
-        .expect("the bounds name channels just made");
+    let sampler =
+        Sampler::for_count_unchecked(curve.knots(), curve.weights(), plan.values(), params.len())
+            .with_bounds(plan.bounds())?;
     let out = sampler.sample_reusing(params, &mut buffers)?;
     Ok(plan.assemble(out))
 }

@@ -164,8 +164,11 @@ impl GridSampler {
     ) -> Result<Vec<Vec<f64>>, Error> {
         let (u, v) = (u.into(), v.into());
         self.check(u, v)?;
-        let n = u.len() * v.len();
-        let mut out = outputs(self.channels(), n, buffers);
+        let n = u
+            .len()
+            .checked_mul(v.len())
+            .ok_or(Error::Memory { values: usize::MAX })?;
+        let mut out = outputs(self.channels(), n, buffers)?;
         let mut slices: Vec<&mut [f64]> = out.iter_mut().map(Vec::as_mut_slice).collect();
         self.run(u, v, &mut slices);
         Ok(out)

@@ -142,6 +142,8 @@ impl<const D: usize> Plan<D> {
         let mut out: Vec<Option<Vec<f64>>> = out.into_iter().map(Some).collect();
         let mut take = |base: usize| {
             CurveSamples::from_coords(std::array::from_fn(|d| {
+                // The plan made these channels, and each is taken once.
+                #[allow(clippy::expect_used)]
                 out[base + d].take().expect("each channel is taken once")
             }))
         };

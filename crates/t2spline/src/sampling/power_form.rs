@@ -60,6 +60,14 @@ impl Span {
         }
     }
 
+    /// A span evaluated directly from the basis, without power form.
+    pub(crate) fn direct(start: f64, end: f64, first: usize) -> Self {
+        Span {
+            direct: true,
+            ..Span::new(start, end, first)
+        }
+    }
+
     /// The local variable `s` of `t`.
     #[inline(always)]
     pub(crate) fn local(&self, t: f64) -> f64 {

@@ -16,7 +16,8 @@ use crate::pipeline::Side;
 /// let c = NurbsCurve::try_clamped(1, vec![[0.0, 0.0], [2.0, 4.0]], vec![1.0, 1.0])?;
 /// let s = c.sample_soa(Params::Uniform(3))?;
 /// assert_eq!(s.coord(1), &[0.0, 2.0, 4.0]);
-/// assert_eq!(s.point(1), [1.0, 2.0]);
+/// assert_eq!(s.point(1), Some([1.0, 2.0]));
+/// assert_eq!(s.point(3), None);
 /// # Ok::<(), t2spline::Error>(())
 /// ```
 #[derive(Clone, Debug, PartialEq)]
@@ -43,13 +44,10 @@ impl<const D: usize> CurveSamples<D> {
         self.len() == 0
     }
 
-    /// The values of one coordinate (`0` is x).
-    ///
-    /// # Panics
-    /// If `axis >= D`.
+    /// The values of one coordinate (`0` is x); empty past the last one.
     #[must_use]
     pub fn coord(&self, axis: usize) -> &[f64] {
-        &self.coords[axis]
+        self.coords.get(axis).map_or(&[], Vec::as_slice)
     }
 
     /// The vectors of all coordinates.
@@ -64,12 +62,14 @@ impl<const D: usize> CurveSamples<D> {
         self.coords
     }
 
-    /// The i-th sample as a point.
-    ///
-    /// # Panics
-    /// If `i >= len()`.
+    /// The i-th sample as a point, if `i < len()`.
     #[must_use]
-    pub fn point(&self, i: usize) -> [f64; D] {
+    pub fn point(&self, i: usize) -> Option<[f64; D]> {
+        (i < self.len()).then(|| self.at(i))
+    }
+
+    /// The i-th sample, for `i < len()`: every coordinate has `len()` values.
+    fn at(&self, i: usize) -> [f64; D] {
         std::array::from_fn(|d| self.coords[d][i])
     }
 
@@ -86,7 +86,7 @@ impl<const D: usize> CurveSamples<D> {
 
     /// The samples as points, in order.
     pub fn points(&self) -> impl ExactSizeIterator<Item = [f64; D]> + '_ {
-        (0..self.len()).map(|i| self.point(i))
+        (0..self.len()).map(|i| self.at(i))
     }
 }
 
@@ -249,7 +249,8 @@ impl<const D: usize> SweepSamples<D> {
 /// let s = NurbsSurface::try_clamped([1, 1], net, vec![vec![1.0; 2]; 2])?;
 /// let g = s.sample_grid(Params::Uniform(3), Params::Uniform(5))?;
 /// assert_eq!(g.shape(), [3, 5]);
-/// assert_eq!(g.samples().point(g.index(1, 2)), [0.5, 0.5, 0.25]);
+/// assert_eq!(g.samples().point(g.index(1, 2)?), Some([0.5, 0.5, 0.25]));
+/// assert!(g.index(3, 0).is_err());
 /// # Ok::<(), t2spline::Error>(())
 /// ```
 #[derive(Clone, Debug, PartialEq)]
@@ -277,13 +278,14 @@ impl<T> Grid<T> {
 
     /// The index of the grid point `(u_a, v_b)` in every sample vector.
     ///
-    /// # Panics
-    /// If `a ≥ su` or `b ≥ sv`.
-    #[must_use]
-    pub fn index(&self, a: usize, b: usize) -> usize {
+    /// # Errors
+    /// [`Error::Index`](crate::Error::Index) naming the `u` or `v` index if
+    /// `a ≥ su` or `b ≥ sv`.
+    pub fn index(&self, a: usize, b: usize) -> Result<usize, crate::Error> {
         let [su, sv] = self.shape;
-        assert!(a < su && b < sv, "grid point ({a}, {b}) of {su} × {sv}");
-        a * sv + b
+        let a = crate::Error::check_index("u parameter", a, su)?;
+        let b = crate::Error::check_index("v parameter", b, sv)?;
+        Ok(a * sv + b)
     }
 
     /// The samples.

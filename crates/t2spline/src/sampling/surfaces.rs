@@ -149,7 +149,7 @@ impl<const D: usize> FuzzySurface<D> {
     /// let g = s.sample_sweep(Params::Uniform(21), Params::Uniform(11), &alphas)?;
     /// let crisp = &g.samples().layers()[Layer::Crisp];
     /// let top = g.samples().levels()[1].defuzzified(); // alpha = 1: the crisp surface
-    /// assert!((0..21 * 11).all(|k| (top.point(k)[2] - crisp.point(k)[2]).abs() < 1e-15));
+    /// assert!((0..21 * 11).all(|k| (top.coord(2)[k] - crisp.coord(2)[k]).abs() < 1e-15));
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn sample_sweep<'a, 'b>(
@@ -218,6 +218,8 @@ impl<const D: usize> SurfaceSolution<D> {
             Vec::new(),
         )?;
         let (_, levels) = g.samples.into_parts();
+        // One solution was sampled, so there is one level.
+        #[allow(clippy::expect_used)]
         Ok(Grid {
             shape: g.shape,
             samples: levels.into_iter().next().expect("one level was asked for"),

@@ -235,7 +235,7 @@ fn check_sampling(c: &NurbsCurve<2>, params: &[f64], scale: f64) {
         let samples = c.sample_soa(&ts).expect("parameters in the domain");
         for (i, &t) in ts.iter().enumerate() {
             let e = c.eval(t).expect("in the domain");
-            let a = samples.point(i);
+            let a = samples.point(i).unwrap();
             for k in 0..2 {
                 assert!(
                     a[k].is_finite() && (a[k] - e[k]).abs() <= tol(scale) * 16.0 + floor,

@@ -122,7 +122,8 @@ impl<const D: usize> NurbsSurface<D> {
     /// outside [`MIN_WEIGHT`](crate::MIN_WEIGHT) … [`MAX_WEIGHT`](crate::MAX_WEIGHT);
     /// [`Error::NotFinite`] / [`Error::OutOfRange`] for a coordinate that is
     /// not finite or of magnitude above [`MAX_MAGNITUDE`](crate::MAX_MAGNITUDE)
-    /// (the place is `points[i][j].x`).
+    /// (the place is `points[i][j].x`); [`Error::Dimension`] unless
+    /// `1 ≤ D ≤ 3`.
     pub fn try_new(
         points: Vec<Vec<[f64; D]>>,
         weights: Vec<Vec<f64>>,
@@ -142,9 +143,10 @@ impl<const D: usize> NurbsSurface<D> {
         }
         let weights = net_weights(&weights, shape)?;
         let points: Vec<[f64; D]> = points.into_iter().flatten().collect();
+        let axes = Axis::first::<D>()?;
         for (index, p) in points.iter().enumerate() {
             let place = |axis| Place::in_net(index / shape[1], index % shape[1], axis);
-            for (axis, &value) in Axis::first::<D>().into_iter().zip(p) {
+            for (&axis, &value) in axes.iter().zip(p) {
                 if !value.is_finite() {
                     return Err(Error::NotFinite {
                         place: place(axis),
@@ -227,16 +229,20 @@ impl<const D: usize> NurbsSurface<D> {
 
     /// The control point `Pᵢⱼ`.
     ///
-    /// # Panics
-    /// If `i ≥ nu` or `j ≥ nv`.
-    #[must_use]
-    pub fn control_point(&self, i: usize, j: usize) -> [f64; D] {
+    /// # Errors
+    /// [`Error::Index`] naming the `row` or `column` if `i ≥ nu` or `j ≥ nv`.
+    pub fn control_point(&self, i: usize, j: usize) -> Result<[f64; D], Error> {
         let [nu, nv] = self.shape();
-        assert!(
-            i < nu && j < nv,
-            "control point ({i}, {j}) of a {nu} × {nv} net"
+        let (i, j) = (
+            Error::check_index("row", i, nu)?,
+            Error::check_index("column", j, nv)?,
         );
-        self.points[i * nv + j]
+        // `i·nv + j < nu·nv`, the length of the validated net.
+        self.points.get(i * nv + j).copied().ok_or(Error::Index {
+            what: "control point",
+            index: i * nv + j,
+            count: self.points.len(),
+        })
     }
 
     /// The weights, row by row as [`NurbsSurface::control_points`].
