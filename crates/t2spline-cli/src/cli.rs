@@ -129,6 +129,31 @@ pub enum AxisArg {
     Z,
 }
 
+/// A control point for `--point`: an index, or a row and column of a net.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PointArg {
+    /// `I`: the index (of a surface: row-major, `i·nv + j`).
+    Index(usize),
+    /// `I,J`: row `i` and column `j` of a surface's net.
+    Net(usize, usize),
+}
+
+impl std::str::FromStr for PointArg {
+    type Err = String;
+
+    fn from_str(s: &str) -> Result<Self, String> {
+        let index = |t: &str| {
+            t.trim()
+                .parse::<usize>()
+                .map_err(|_| format!("`{s}` is not I or I,J with whole numbers from 0"))
+        };
+        match s.split_once(',') {
+            Some((i, j)) => Ok(PointArg::Net(index(i)?, index(j)?)),
+            None => Ok(PointArg::Index(index(s)?)),
+        }
+    }
+}
+
 /// Scaling of curve panels for `--aspect`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 pub enum AspectArg {
@@ -141,9 +166,11 @@ pub enum AspectArg {
 /// What the figures show, shared by `plot` and `report`.
 #[derive(Debug, Args)]
 pub struct FigureArgs {
-    /// The control point whose fuzzy number the `number` figure shows (from 0).
-    #[arg(long, value_name = "I", default_value_t = 0)]
-    pub point: usize,
+    /// The control point whose fuzzy number the `number` figure shows, from
+    /// 0: `I` on a curve; `I,J` (row I, column J of the net) or the row-major
+    /// index `I·nv + J` on a surface.
+    #[arg(long, value_name = "I|I,J", default_value = "0")]
+    pub point: PointArg,
     /// The coordinate whose fuzzy number the `number` figure shows.
     #[arg(long, value_enum, default_value_t = AxisArg::X)]
     pub axis: AxisArg,

@@ -279,3 +279,62 @@ fn a_bad_view_is_an_error_naming_the_flag() {
     }
     assert!(!dir.path().join("out").exists(), "nothing written on error");
 }
+
+#[test]
+fn point_names_a_net_point_by_row_and_column() {
+    let dir = tempfile::tempdir().unwrap();
+    // The terrain's net is 6 × 5: (2, 1) is point 2·5 + 1 = 11.
+    let job = surface_example("fuzzy-terrain.json");
+    let number = |point: &str| {
+        let out = dir.path().join(format!("figs-{point}"));
+        t2spline()
+            .args(["plot", job.to_str().unwrap(), "-o"])
+            .arg(&out)
+            .args(["--format", "svg", "--point", point, "--axis", "z"])
+            .assert()
+            .success();
+        std::fs::read_to_string(out.join("number.svg")).unwrap()
+    };
+    let by_net = number("2,1");
+    assert!(
+        by_net.contains("coordinate z of control point (2, 1)"),
+        "the title names (i, j)"
+    );
+    assert_eq!(by_net, number("11"), "I,J and the row-major I agree");
+    let report = dir.path().join("report");
+    t2spline()
+        .args(["report", job.to_str().unwrap(), "-o"])
+        .arg(&report)
+        .args(["--point", "5,4"])
+        .assert()
+        .success();
+    let html = std::fs::read_to_string(report.join("report.html")).unwrap();
+    assert!(html.contains("coordinate x of control point (5, 4)"));
+    assert!(html.contains("--point I,J"));
+}
+
+#[test]
+fn bad_net_points_are_errors_of_the_option() {
+    let dir = tempfile::tempdir().unwrap();
+    let terrain = surface_example("fuzzy-terrain.json");
+    let run = |job: &Path, point: &str| {
+        t2spline()
+            .args(["plot", job.to_str().unwrap(), "-o"])
+            .arg(dir.path().join("figs"))
+            .args(["--point", point])
+            .assert()
+            .code(2)
+    };
+    run(&terrain, "6,0").stderr(
+        "t2spline: --point: 6,0 lies outside the 6 × 5 control net (I from 0 to 5, J from 0 to 4)\n",
+    );
+    run(&terrain, "0,5").stderr(contains("--point: 0,5 lies outside"));
+    run(&terrain, "30").stderr(contains(
+        "--point: point 30 does not exist: the job has 30 points, 0 to 29",
+    ));
+    run(&example(), "1,2").stderr(contains(
+        "--point: 1,2 names a point of a surface's net, but this job is a curve",
+    ));
+    run(&terrain, "1,x").stderr(contains("--point"));
+    assert!(!dir.path().join("figs").exists(), "nothing written");
+}

@@ -206,6 +206,11 @@ return { files: files.map(f => [f, r.fileText(f)]),
          pngs: Array.from(document.querySelectorAll("button.dl[data-png]")).map(b => b.dataset.png) };
 "#;
 
+const FILES_ENABLED: &str = r#"
+const b = document.querySelector("button.dl[data-file]");
+return { enabled: !b.disabled, text: window.t2splineReport.fileText(b.dataset.file) };
+"#;
+
 const PNG: &str = r#"
 const done = arguments[arguments.length - 1];
 window.t2splineReport.pngBytes(arguments[0]).then(b => {
@@ -355,11 +360,13 @@ impl Page<'_> {
 struct Expected {
     figures: usize,
     png_width: u32,
+    files_everywhere: bool,
 }
 
 const CURVE: Expected = Expected {
     figures: 8,
     png_width: 3000,
+    files_everywhere: true,
 };
 
 fn check_report(
@@ -444,7 +451,21 @@ fn check_report(
         assert_eq!(p["disabled"], json!(true), "{name}: slider at rest");
         assert_eq!(p["slider"], paper_page["slider"], "{name}: slider kept");
         let files = page.check_numbers(job, &p);
-        page.check_files(&files, name);
+        if expected.files_everywhere {
+            page.check_files(&files, name);
+        } else {
+            // A large surface carries the files of the paper's frames only.
+            let enabled = page.exec(FILES_ENABLED, json!([]));
+            assert_eq!(enabled["enabled"], json!(false), "{name}: no files");
+            assert_eq!(enabled["text"], Value::Null, "{name}: no file text");
+            let note = page.exec(READ_PAGE, json!([]))["note"].clone();
+            assert!(
+                note.as_str()
+                    .unwrap()
+                    .contains(&format!("t2spline run JOB --type-reduction {name}")),
+                "{name}: {note}"
+            );
+        }
         assert_ne!(p["s4"], paper_page["s4"], "{name}: stage 4 changes");
     }
     page.exec(SELECT_REDUCTION, json!(["paper"]));
@@ -474,8 +495,38 @@ fn check_report(
         p["note"]
     );
 
+    // Which stops carry the result files (a large surface's only some): the
+    // others disable their buttons and say how to get the files.
+    let with_files: Vec<bool> = (0..=max)
+        .map(|k| {
+            page.exec(MOVE_SLIDER, json!([k]));
+            let enabled = page.exec(FILES_ENABLED, json!([]));
+            if enabled["enabled"] == json!(false) {
+                assert_eq!(enabled["text"], Value::Null, "stop {k}: no file text");
+                let note = page.exec(READ_PAGE, json!([]))["note"].clone();
+                assert!(
+                    note.as_str().unwrap().contains("t2spline run JOB --alpha"),
+                    "stop {k}: {note}"
+                );
+            }
+            enabled["enabled"] == json!(true)
+        })
+        .collect();
+    assert!(with_files.iter().any(|&f| f), "some stop carries the files");
+    assert_eq!(
+        with_files.iter().all(|&f| f),
+        expected.files_everywhere,
+        "files at every stop: {with_files:?}"
+    );
+
     // Downloads at the shown alpha: run's bytes, and the figures.
-    page.exec(MOVE_SLIDER, json!([stops_to_check[1].min(max)]));
+    let at = stops_to_check[1].min(max);
+    let at = if with_files[at] {
+        at
+    } else {
+        with_files.iter().position(|&f| f).unwrap()
+    };
+    page.exec(MOVE_SLIDER, json!([at]));
     let p = page.exec(READ_PAGE, json!([]));
     let alpha = p["alpha"].as_str().unwrap().to_owned();
     page.check_files(&run_files(job, &["--alpha", &alpha]), &alpha);
@@ -603,6 +654,7 @@ fn surface_report_in_headless_chromium_matches_t2spline_run() {
     let surface = Expected {
         figures: 6,
         png_width: 3288,
+        files_everywhere: true,
     };
     check_report(
         &chromium,
@@ -610,5 +662,17 @@ fn surface_report_in_headless_chromium_matches_t2spline_run() {
         &root.join("examples/fuzzy-cylinder.json"),
         &[0, 7],
         &surface,
+    );
+    // The terrain's files (51 × 41 samples, 1 MB packed) are in the report at
+    // the starting alpha only, so that its figures get stops 0.05 apart.
+    check_report(
+        &chromium,
+        &driver,
+        &root.join("examples/fuzzy-terrain.json"),
+        &[0, 3],
+        &Expected {
+            files_everywhere: false,
+            ..surface
+        },
     );
 }

@@ -3,6 +3,7 @@
 //!
 //! ```text
 //! cargo run --example many_points -- N [--dim 2|3] [--seed S] > job.json
+//! cargo run --example many_points -- N --net SAMPLES > surface.json
 //! ```
 //!
 //! The crisp control points follow an Archimedean spiral, 1.5 apart along it
@@ -90,23 +91,60 @@ pub fn job(n: usize, dim: usize, seed: u64) -> Value {
     })
 }
 
-// Tests include this file for `job` alone.
+/// A bicubic surface job on an `n` × `n` net sampled `samples` × `samples`:
+/// a crisp grid in x and y, a wave in z whose spreads grow with the row
+/// (`0.05 + 0.01·i`; upper −3s..+2s, primary −2s..+1.5s, lower −s..+s).
+pub fn net(n: usize, samples: usize) -> Value {
+    let fuzzy = |c: f64, s: f64| {
+        json!({"crisp": c, "upper": [c - 3.0 * s, c + 2.0 * s],
+               "primary": [c - 2.0 * s, c + 1.5 * s], "lower": [c - s, c + s]})
+    };
+    let rows: Vec<Value> = (0..n)
+        .map(|i| {
+            let x = i as f64;
+            let row: Vec<Value> = (0..n)
+                .map(|j| {
+                    let y = j as f64;
+                    let z = (x / 7.0).sin() * (y / 5.0).cos() * 4.0;
+                    json!({"x": fuzzy(x, 0.0), "y": fuzzy(y, 0.0), "z": fuzzy(z, 0.05 + 0.01 * x)})
+                })
+                .collect();
+            json!(row)
+        })
+        .collect();
+    json!({
+        "description": format!("{n} × {n} net made by the many_points example"),
+        "order": [4, 4],
+        "alpha": 0.5,
+        "lower_height": 0.6,
+        "samples": [samples, samples],
+        "points": rows,
+    })
+}
+
+// Tests include this file for `job` or `net` alone.
 #[allow(dead_code)]
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let mut n = 40usize;
     let mut dim = 2usize;
     let mut seed = 1u64;
+    let mut samples = None;
     let mut it = args.iter();
     while let Some(a) = it.next() {
         let mut value = || it.next().and_then(|v| v.parse::<u64>().ok());
         match a.as_str() {
             "--dim" => dim = value().map_or(2, |v| if v == 3 { 3 } else { 2 }),
             "--seed" => seed = value().unwrap_or(1),
+            "--net" => samples = value().and_then(|v| usize::try_from(v).ok()),
             s => n = s.parse().unwrap_or(n),
         }
     }
     // Writing to a closed pipe is not worth a panic message.
-    let _ = serde_json::to_writer(std::io::stdout(), &job(n, dim, seed));
+    let value = match samples {
+        Some(s) => net(n, s),
+        None => job(n, dim, seed),
+    };
+    let _ = serde_json::to_writer(std::io::stdout(), &value);
     println!();
 }

@@ -4,6 +4,7 @@
 use t2spline::Alpha;
 use t2spline_plot::{render_report, FigureOptions, Stops};
 
+#[allow(dead_code)]
 #[path = "../examples/many_points.rs"]
 mod many_points;
 
@@ -46,4 +47,23 @@ fn a_report_of_200_points_stays_under_5_mb_with_every_part() {
     assert_eq!(html.matches("data-file=\"stage").count(), 4);
     // Tables list the first 12 points and say where the others are.
     assert!(html.contains("the other 188 are in the downloads"));
+}
+
+#[test]
+fn a_report_of_a_40_by_40_net_sampled_finely_stays_under_5_mb() {
+    let text = many_points::net(40, 101).to_string();
+    let job = t2spline_io::parse_job(&text, "net").unwrap();
+    let start = Alpha::try_new(0.5).unwrap();
+    let html = render_report(&job, &text, start, &FigureOptions::default()).unwrap();
+    assert!(html.len() < 5_000_000, "{} bytes", html.len());
+    // Stops finer than 0.25: 0, 0.1, …, 1 and the height 0.6 at least.
+    let n = stops_in(&html);
+    assert!(n >= 11, "{n} stops");
+    let grid = [100, 50, 20, 10].map(|k| Stops::new(&job, start, k).alphas.len());
+    assert!(grid.contains(&n), "{n} stops is one of the grids {grid:?}");
+    assert!(
+        html.contains("one row and column in 4 of the net drawn"),
+        "the net is thinned and says so"
+    );
+    assert_eq!(html.matches("data-file=\"stage").count(), 4);
 }

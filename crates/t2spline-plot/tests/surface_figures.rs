@@ -10,6 +10,10 @@ use t2spline_plot::{
     all_figures, render_svg, Error, Figure, FigureOptions, Mark, NumberChoice, View,
 };
 
+#[allow(dead_code)]
+#[path = "../examples/many_points.rs"]
+mod many_points;
+
 fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
 }
@@ -200,36 +204,7 @@ fn numbers_of_the_net_are_indexed_row_by_row() {
 
 /// A fuzzy surface job of `n × n` control points (a smooth hill), bicubic.
 fn big_net(n: usize, samples: usize) -> Job {
-    let mut rows = Vec::new();
-    for i in 0..n {
-        let mut row = Vec::new();
-        for j in 0..n {
-            let (x, y) = (i as f64, j as f64);
-            let z = (x / 7.0).sin() * (y / 5.0).cos() * 4.0;
-            let fuzzy = |c: f64, s: f64| {
-                format!(
-                    r#"{{"crisp": {c}, "upper": [{}, {}], "primary": [{}, {}], "lower": [{}, {}]}}"#,
-                    c - 3.0 * s,
-                    c + 2.0 * s,
-                    c - 2.0 * s,
-                    c + 1.5 * s,
-                    c - s,
-                    c + s
-                )
-            };
-            row.push(format!(
-                r#"{{"x": {}, "y": {}, "z": {}}}"#,
-                fuzzy(x, 0.0),
-                fuzzy(y, 0.0),
-                fuzzy(z, 0.05 + 0.01 * x)
-            ));
-        }
-        rows.push(format!("[{}]", row.join(", ")));
-    }
-    let text = format!(
-        r#"{{"order": [4, 4], "alpha": 0.5, "lower_height": 0.6, "samples": [{samples}, {samples}], "points": [{}]}}"#,
-        rows.join(",\n")
-    );
+    let text = many_points::net(n, samples).to_string();
     t2spline_io::parse_job(&text, "big.json").unwrap()
 }
 

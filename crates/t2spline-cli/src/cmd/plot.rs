@@ -6,14 +6,18 @@ use t2spline::Axis;
 use t2spline_plot::{all_figures, render_files, Aspect, FigureOptions, Format, NumberChoice};
 
 use super::settings::{note_unused_alpha, settings, OptionError};
-use crate::cli::{AspectArg, AxisArg, FigureArgs, FormatArg, PlotArgs};
+use crate::cli::{AspectArg, AxisArg, FigureArgs, FormatArg, PlotArgs, PointArg};
 use crate::output::{read_job_text, Outputs};
 
-/// The figure options of `--point`, `--axis` and `--aspect`.
-pub fn figure_options(args: &FigureArgs) -> FigureOptions {
-    FigureOptions {
+/// The figure options of `--point`, `--axis` and `--aspect` for `job`.
+///
+/// # Errors
+/// An [`OptionError`] of `--point` if `I,J` is given for a curve or lies
+/// outside the net.
+pub fn figure_options(args: &FigureArgs, job: &Job) -> Result<FigureOptions, OptionError> {
+    Ok(FigureOptions {
         number: NumberChoice {
-            point: args.point,
+            point: point_index(args.point, job)?,
             axis: match args.axis {
                 AxisArg::X => Axis::X,
                 AxisArg::Y => Axis::Y,
@@ -25,7 +29,31 @@ pub fn figure_options(args: &FigureArgs) -> FigureOptions {
             AspectArg::Auto => Aspect::Auto,
         },
         view: args.view,
-    }
+    })
+}
+
+/// The row-major index of `--point` in `job` (range checked later, with the
+/// axis, by the figure).
+fn point_index(point: PointArg, job: &Job) -> Result<usize, OptionError> {
+    let (i, j) = match point {
+        PointArg::Index(k) => return Ok(k),
+        PointArg::Net(i, j) => (i, j),
+    };
+    let message = match job.model.net_shape() {
+        None => format!(
+            "{i},{j} names a point of a surface's net, but this job is a curve: give --point I"
+        ),
+        Some([nu, nv]) if i < nu && j < nv => return Ok(i * nv + j),
+        Some([nu, nv]) => format!(
+            "{i},{j} lies outside the {nu} × {nv} control net (I from 0 to {}, J from 0 to {})",
+            nu - 1,
+            nv - 1
+        ),
+    };
+    Err(OptionError {
+        option: "--point",
+        message,
+    })
 }
 
 /// A plotting error, naming the option that chose a point or axis the job lacks.
@@ -72,7 +100,8 @@ pub fn plot(args: &PlotArgs) -> anyhow::Result<()> {
     };
     // Everything is rendered before anything is written, and written all or
     // nothing; the paths written go to standard output.
-    let figures = all_figures(&job, alpha, &figure_options(&args.figures)).map_err(about_number)?;
+    let figures =
+        all_figures(&job, alpha, &figure_options(&args.figures, &job)?).map_err(about_number)?;
     let mut out = Outputs::default();
     let mut listing = String::new();
     for (name, bytes) in render_files(&figures, format)? {

@@ -38,8 +38,9 @@ pub fn report(args: &ReportArgs) -> anyhow::Result<()> {
         type_reduction: method,
         ..job
     };
-    let html = t2spline_plot::render_report(&job, &text, start, &figure_options(&args.figures))
-        .map_err(about_number)?;
+    let html =
+        t2spline_plot::render_report(&job, &text, start, &figure_options(&args.figures, &job)?)
+            .map_err(about_number)?;
     let mut out = Outputs::default();
     out.in_dir(&args.output, "report.html", html.into_bytes());
     out.to(

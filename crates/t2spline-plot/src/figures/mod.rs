@@ -51,7 +51,8 @@ pub const FIGURE_NAMES: [&str; 8] = [
 /// Which number the `number` figure shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct NumberChoice {
-    /// Control point index, from 0.
+    /// Control point index, from 0 (of a surface: `i·nv + j`, the net row by
+    /// row).
     pub point: usize,
     /// Coordinate.
     pub axis: Axis,
@@ -62,6 +63,28 @@ impl Default for NumberChoice {
         NumberChoice {
             point: 0,
             axis: Axis::X,
+        }
+    }
+}
+
+impl NumberChoice {
+    /// The chosen control point as a reader names it: its index `I` on a
+    /// curve, `(i, j)` in a surface's net (`I = i·nv + j`).
+    ///
+    /// # Examples
+    /// ```
+    /// use t2spline_plot::NumberChoice;
+    /// let job = t2spline_io::read_job("../../examples/fuzzy-terrain.json".as_ref())?;
+    /// let [_, nv] = job.model.net_shape().unwrap();
+    /// let choice = NumberChoice { point: 2 * nv + 1, ..NumberChoice::default() };
+    /// assert_eq!(choice.point_name(&job.model), "(2, 1)");
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    #[must_use]
+    pub fn point_name(&self, model: &t2spline::job::Model) -> String {
+        match model.net_shape() {
+            Some([_, nv]) if nv > 0 => format!("({}, {})", self.point / nv, self.point % nv),
+            _ => self.point.to_string(),
         }
     }
 }

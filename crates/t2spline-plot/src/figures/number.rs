@@ -243,7 +243,7 @@ pub fn number_figure(
         "number",
         format!(
             "Fuzzy number: coordinate {name} of control point {}",
-            choice.point
+            choice.point_name(&job.model)
         ),
         subtitle,
         vec![panel],

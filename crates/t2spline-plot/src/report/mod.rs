@@ -68,7 +68,7 @@ pub fn render(
     options: &FigureOptions,
 ) -> Result<String, Error> {
     let heights = job.model.heights();
-    let stops = choose_stops(job, start, options)?;
+    let (stops, with_files) = choose_stops(job, start, options)?;
     // Frames 0..stops: the paper's reduction at every stop; then one frame
     // per other reduction, which does not use alpha.
     let others = reductions::frames(stops.alphas.len());
@@ -89,10 +89,12 @@ pub fn render(
             list.push(f);
         }
         let run = data::run_job(job, alpha, method)?;
-        for (k, (name, text)) in files_of(&run)?.into_iter().enumerate() {
-            match files.get_mut(k) {
-                Some((_, texts)) => texts.push(text),
-                None => files.push((name, vec![text])),
+        if with_files.carries(alpha.get(), method) {
+            for (k, (name, text)) in files_of(&run)?.into_iter().enumerate() {
+                match files.get_mut(k) {
+                    Some((_, texts)) => texts.push(text),
+                    None => files.push((name, vec![text])),
+                }
             }
         }
         frame_data.push(run);
@@ -134,6 +136,8 @@ pub fn render(
         "figures": figs.iter().map(|f| f.data.clone()).collect::<Vec<_>>(),
         "strings": strings.into_json(),
         "downloads": downloads::pack(&files),
+        "files_at": with_files.index_json(&shown),
+        "files_note": with_files.note(),
     });
     let fig_result =
         data::compute_within(job, start, job.type_reduction, data::REPORT_SURFACE_GRID)?;
@@ -175,9 +179,10 @@ pub fn render(
         &reductions::selector(job.type_reduction),
     );
     let number_caption = format!(
-        "Coordinate {} of control point {}: its upper (UMF), primary and lower (LMF) membership functions, the cut at α and the paper's type-reduced triangle with its centroid, and below the axis the other reductions (none uses α). Other numbers: t2spline report --point I --axis x|y|z.",
+        "Coordinate {} of control point {}: its upper (UMF), primary and lower (LMF) membership functions, the cut at α and the paper's type-reduced triangle with its centroid, and below the axis the other reductions (none uses α). Other numbers: t2spline report --point {} --axis x|y|z.",
         options.number.axis.name(),
-        options.number.point
+        options.number.point_name(&job.model),
+        if job.model.is_surface() { "I,J" } else { "I" }
     );
     let captions = if surface {
         SURFACE_CAPTIONS
@@ -226,11 +231,12 @@ pub fn render(
         let figures = pack::packed_len(&json!([data_block["figures"], data_block["strings"]]));
         let downloads = pack::packed_len(&data_block["downloads"]);
         let numbers = pack::packed_len(&data_block["stops"]);
+        let m = files.first().map_or(1, |(_, t)| t.len().max(1));
         eprintln!(
-            "frames {n}: figures {} per frame, downloads {} per frame, numbers {} per frame",
+            "frames {n}: figures {} per frame, numbers {} per frame; downloads at {m} frames, {} each",
             figures / n,
-            downloads / n,
-            numbers / n
+            numbers / n,
+            downloads / m
         );
     }
     page.finish(&pack::pack(&data_block));
@@ -251,14 +257,22 @@ const SURFACE_CAPTIONS: [&str; 3] = [
     "The crisp surface coloured by its distance to the defuzzified one at equal (u, v); the map marks where the distance is largest (error.max_at).",
 ];
 
-/// The stops: as fine a grid as the packed size of two sample stops allows
-/// within [`DATA_BUDGET`], less the frames of the reductions other than the
-/// paper's. The samples (α = 0.3 and 0.9, the paper's reduction) do not
-/// depend on the start, so a job gets the same grid whatever alpha its
-/// report starts at.
-fn choose_stops(job: &Job, start: Alpha, options: &FigureOptions) -> Result<Stops, Error> {
+/// The stops, and those that carry the downloads: as fine a grid as the
+/// packed size of two sample stops allows within [`DATA_BUDGET`], less the
+/// frames of the reductions other than the paper's, with the downloads at
+/// every frame while that grid is 0.05 or finer, and always for a curve. A
+/// larger surface job (sampled finely, its files are most of a stop: 2 MB at
+/// 101 × 101) carries the downloads on a coarser grid, at the start only or
+/// not at all ([`FileStops`]), so that its figures still get fine stops. The
+/// samples (α = 0.3 and 0.9, the paper's reduction) do not depend on the
+/// start, so a job gets the same grid whatever alpha its report starts at.
+fn choose_stops(
+    job: &Job,
+    start: Alpha,
+    options: &FigureOptions,
+) -> Result<(Stops, FileStops), Error> {
     let heights = job.model.heights();
-    let mut total = 0;
+    let (mut total, mut whole, mut figures_cost) = (0, 0, 0);
     for a in [0.3, 0.9] {
         let alpha = Alpha::try_new(a)?;
         let run = data::run_job(job, alpha, TypeReduction::Paper)?;
@@ -272,12 +286,113 @@ fn choose_stops(job: &Job, start: Alpha, options: &FigureOptions) -> Result<Stop
         // a third of a whole result's files packed alone (half its numbers
         // change, and the CSV files repeat the result's), and its figure
         // parts a bit under half of its whole figures.
-        total += pack::packed_len(&json!(files)) / 3 + pack::packed_len(&json!(figures)) * 9 / 20;
+        let (f, g) = (
+            pack::packed_len(&json!(files)),
+            pack::packed_len(&json!(figures)),
+        );
+        total += f / 3 + g * 9 / 20;
+        whole += f;
+        figures_cost += g;
     }
     let per_stop = (total / 2).max(1);
     let others = reductions::count();
     let budget = DATA_BUDGET.saturating_sub(others.saturating_mul(per_stop));
-    Ok(finest_within(job, start, per_stop, budget))
+    let all = finest_within(job, start, per_stop, budget);
+    if all.per_unit >= FILES_EVERYWHERE || !job.model.is_surface() {
+        return Ok((all, FileStops::Every));
+    }
+    // A surface's figures change more from stop to stop than a curve's: its
+    // stored parts take about three quarters of its whole figures (measured
+    // on the terrain example and 40 × 40 nets), not 9/20. The frames of the
+    // other reductions carry figures only.
+    let (whole, figures_cost) = ((whole / 2).max(1), (figures_cost * 3 / 8).max(1));
+    let files_cost = (whole / 3).max(1);
+    let budget = DATA_BUDGET.saturating_sub(others.saturating_mul(figures_cost));
+    if whole > budget / 2 {
+        // A result this large takes most of a stop's time to compute (every
+        // stop needs its exact distance), so the figures get half the budget.
+        let stops = finest_within(job, start, figures_cost, budget / 2);
+        return Ok((stops, FileStops::None(whole)));
+    }
+    // The start's files whole; the figures' grid within what is left.
+    let stops = finest_within(job, start, figures_cost, budget - whole);
+    let figures_bytes = stops.alphas.len() * figures_cost + whole;
+    let files = stops::STEPS
+        .iter()
+        .filter(|&&n| stops.per_unit % n == 0)
+        .map(|&n| Stops::new(job, start, n))
+        .find(|s| figures_bytes + s.alphas.len() * files_cost <= budget)
+        .map_or(FileStops::Start(start.get()), FileStops::Grid);
+    Ok((stops, files))
+}
+
+/// Grids of stops this fine or finer carry the downloads at every stop.
+const FILES_EVERYWHERE: u32 = 20;
+
+/// The frames that carry the downloads.
+#[derive(Debug)]
+enum FileStops {
+    /// Every frame.
+    Every,
+    /// The paper's frames at the stops of a coarser grid (with every h and
+    /// the start).
+    Grid(Stops),
+    /// The paper's frame at the starting alpha.
+    Start(f64),
+    /// None: one stop's files would take this many bytes, more than half
+    /// the report's budget.
+    None(usize),
+}
+
+impl FileStops {
+    /// Whether the frame at `alpha` with `method` carries the downloads.
+    fn carries(&self, alpha: f64, method: TypeReduction) -> bool {
+        let paper = method == TypeReduction::Paper;
+        match self {
+            FileStops::Every => true,
+            FileStops::Grid(s) => paper && s.alphas.contains(&alpha),
+            FileStops::Start(a) => paper && *a == alpha,
+            FileStops::None(_) => false,
+        }
+    }
+
+    /// Per frame of `shown`, the index of its downloads, or `null`.
+    fn index_json(&self, shown: &[(Alpha, TypeReduction)]) -> Value {
+        let mut next = 0;
+        shown
+            .iter()
+            .map(|&(a, method)| {
+                if self.carries(a.get(), method) {
+                    next += 1;
+                    json!(next - 1)
+                } else {
+                    Value::Null
+                }
+            })
+            .collect()
+    }
+
+    /// What the page says at a frame without downloads (before the `run`
+    /// command that writes them), or `null` if every frame has them.
+    fn note(&self) -> Value {
+        let where_ = match self {
+            FileStops::Every => return Value::Null,
+            FileStops::Grid(s) => format!(
+                "at α = 0, {}, …, 1, at every h and at the starting α",
+                s.step_text()
+            ),
+            FileStops::Start(_) => "at the starting α only".to_owned(),
+            FileStops::None(bytes) => {
+                return json!(format!(
+                    "The result files are left out of this report: at the job's samples they would take {:.1} MB at every α",
+                    *bytes as f64 / 1e6
+                ))
+            }
+        };
+        json!(format!(
+            "To keep the report small, the result files are in it {where_}"
+        ))
+    }
 }
 
 /// The figures that change with alpha and the type reduction `method`: the

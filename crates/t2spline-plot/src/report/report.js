@@ -63,6 +63,15 @@
       e.setAttribute("data-value", stop.bar[id][0]);
     });
     document.body.classList.toggle("at-h", stop.at_h);
+    var files = data.files_at[k] !== null;
+    var command = "t2spline run JOB " + (stop.alpha === null ? "--type-reduction " + stop.reduction : "--alpha " + stop.alpha);
+    Array.prototype.forEach.call(document.querySelectorAll("button.dl[data-file]"), function (b) {
+      b.disabled = !files;
+      b.title = files ? "" : "Not in the report here; " + command + " writes it.";
+    });
+    if (!files) {
+      note.textContent = data.files_note + "; here: " + command + " [--csv DIR].";
+    }
   }
 
   // The slider stop nearest to a typed alpha (alphas are compared, not
@@ -88,7 +97,7 @@
     if (Number(data.stops[k].alpha) !== v) {
       note.textContent = "No stop at α = " + typed + ": showing the nearest, α = " + data.stops[k].alpha +
         " (stops every " + data.step + " and at every h). For α = " + typed + " exactly: t2spline run JOB --alpha " + typed + ".";
-    } else {
+    } else if (data.files_at[k] !== null) {
       note.textContent = "";
     }
   }
@@ -98,7 +107,9 @@
   // list: a string is a number, an integer repeats an earlier one (that many
   // places after the last repeated).
   function fileText(name, k) {
-    var stop = data.downloads.stops[k === undefined ? current : k];
+    var at = data.files_at[k === undefined ? current : k];
+    if (at === null) return null;
+    var stop = data.downloads.stops[at];
     var table = [], values = [], last = 0;
     stop.v.forEach(function (e) {
       if (typeof e === "string") {

@@ -170,6 +170,22 @@ impl Model {
         self.visit(Summary)
     }
 
+    /// The shape `[nu, nv]` of a surface's control net; `None` for a curve.
+    #[must_use]
+    pub fn net_shape(&self) -> Option<[usize; 2]> {
+        struct NetShape;
+        impl ModelVisitor for NetShape {
+            type Output = Option<[usize; 2]>;
+            fn curve<const D: usize>(self, _: &FuzzyCurve<D>) -> Option<[usize; 2]> {
+                None
+            }
+            fn surface<const D: usize>(self, s: &FuzzySurface<D>) -> Option<[usize; 2]> {
+                Some(s.shape())
+            }
+        }
+        self.visit(NetShape)
+    }
+
     /// The number of coordinates of a point (2 or 3).
     #[must_use]
     pub fn dimension(&self) -> usize {

@@ -37,6 +37,11 @@ use mesh::{Deep, GridRef, Paint};
 /// markers; larger ones are drawn without bars (a note says so).
 pub const FEW_NET_POINTS: usize = 144;
 
+/// A net with more rows or columns than this is drawn thinned: every k-th row
+/// and column (and the last), at most this many lines each way, with the
+/// points where they cross; a note says so.
+pub const MOST_NET_LINES: usize = 12;
+
 /// The colour of an opaque surface before shading: a light grey.
 pub const SURFACE: Color = Color(0xdc, 0xdc, 0xdc);
 
@@ -176,7 +181,29 @@ impl<'a> SurfaceScene<'a> {
         p
     }
 
-    /// The control net through `points` (rows and columns), projected.
+    /// Every how many rows and columns of the net are drawn: 1 up to
+    /// [`MOST_NET_LINES`] lines each way, else the least step that keeps
+    /// within it.
+    #[must_use]
+    pub fn net_step(&self) -> usize {
+        let most = self.net[0].max(self.net[1]);
+        if most <= MOST_NET_LINES {
+            1
+        } else {
+            // Lines 0, k, 2k, … and the last: ⌈(n − 1) / k⌉ + 1 ≤ MOST_NET_LINES.
+            (most - 1).div_ceil(MOST_NET_LINES - 1)
+        }
+    }
+
+    /// The drawn lines among `n`: every [`Self::net_step`]-th and the last.
+    fn drawn(&self, n: usize) -> impl Iterator<Item = usize> {
+        let step = self.net_step();
+        (0..n).filter(move |&i| i % step == 0 || i + 1 == n)
+    }
+
+    /// The control net through `points`, projected: its rows and columns
+    /// (every [`Self::net_step`]-th on a large net), each through all its
+    /// points.
     #[must_use]
     pub fn net_segments(&self, points: &Points) -> Vec<[Xy; 2]> {
         let p: Vec<Xy> = xyz(points)
@@ -185,26 +212,23 @@ impl<'a> SurfaceScene<'a> {
             .collect();
         let [nu, nv] = self.net;
         let mut segs = Vec::new();
-        for a in 0..nu {
-            for b in 0..nv {
-                let k = a * nv + b;
-                if b + 1 < nv {
-                    segs.push([p[k], p[k + 1]]);
-                }
-                if a + 1 < nu {
-                    segs.push([p[k], p[k + nv]]);
-                }
-            }
+        for a in self.drawn(nu) {
+            segs.extend((1..nv).map(|b| [p[a * nv + b - 1], p[a * nv + b]]));
+        }
+        for b in self.drawn(nv) {
+            segs.extend((1..nu).map(|a| [p[(a - 1) * nv + b], p[a * nv + b]]));
         }
         segs
     }
 
-    /// Points projected.
+    /// The net's points, projected: where the drawn rows and columns cross.
     #[must_use]
     pub fn projected(&self, points: &Points) -> Vec<Xy> {
-        xyz(points)
-            .into_iter()
-            .map(|q| self.camera.project(q))
+        let [nu, nv] = self.net;
+        let p = xyz(points);
+        self.drawn(nu)
+            .flat_map(|a| self.drawn(nv).map(move |b| a * nv + b))
+            .filter_map(|k| p.get(k).map(|&q| self.camera.project(q)))
             .collect()
     }
 
@@ -231,6 +255,13 @@ impl<'a> SurfaceScene<'a> {
         if !self.bars_shown() {
             notes.push(format!(
                 "{} × {} control points: interval bars left out (shown up to {FEW_NET_POINTS} points).",
+                self.net[0], self.net[1]
+            ));
+        }
+        let step = self.net_step();
+        if step > 1 {
+            notes.push(format!(
+                "{} × {} control points: one row and column in {step} of the net drawn (and the last), with the points where they cross.",
                 self.net[0], self.net[1]
             ));
         }
