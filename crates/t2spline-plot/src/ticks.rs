@@ -16,12 +16,21 @@ pub fn nice_ticks(lo: f64, hi: f64, target: usize) -> (Vec<f64>, f64) {
         .map(|m| m * mag)
         .find(|&s| s >= raw)
         .unwrap_or(10.0 * mag);
-    let first = (lo / step).ceil() as i64;
-    let last = (hi / step).floor() as i64;
+    let (first, last) = ((lo / step).ceil(), (hi / step).floor());
+    // A span near the smallest subnormal numbers makes `mag` underflow to 0
+    // (and `lo / step` infinite or NaN): the ends alone are the ticks then.
+    if !(step > 0.0 && first.is_finite() && last.is_finite() && last - first <= MAX_TICKS) {
+        return (vec![lo, hi], span);
+    }
     // Multiplying the integer index keeps ticks free of accumulated error.
-    let ticks = (first..=last).map(|i| i as f64 * step).collect();
+    let ticks = (first as i64..=last as i64)
+        .map(|i| i as f64 * step)
+        .collect();
     (ticks, step)
 }
+
+/// More ticks than any panel asks for: a guard against a degenerate step.
+const MAX_TICKS: f64 = 1000.0;
 
 /// The number of decimals that shows every multiple of `step` exactly.
 #[must_use]
@@ -94,6 +103,15 @@ pub fn short(v: f64, digits: usize) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn spans_near_the_smallest_subnormal_give_the_ends() {
+        for (lo, hi) in [(0.0, 5e-324), (0.0, 1e-320), (-5e-324, 5e-324)] {
+            let (t, _) = nice_ticks(lo, hi, 7);
+            assert!(!t.is_empty() && t.len() <= 1001, "{lo} {hi}: {t:?}");
+            assert!(t.iter().all(|v| v.is_finite()));
+        }
+    }
 
     #[test]
     fn ticks_cover_the_range_with_nice_steps() {
