@@ -73,7 +73,7 @@ fn derivatives_and_arc_lengths_match_the_library() {
         assert_eq!(length, c.arc_length());
         // The length exceeds the chord and every sampled polyline.
         let polyline: f64 = c
-            .sample(&c.domain().uniform(10_001))
+            .sample(&c.domain().uniform(10_001).unwrap())
             .unwrap()
             .windows(2)
             .map(|w| (w[1][0] - w[0][0]).hypot(w[1][1] - w[0][1]))

@@ -314,7 +314,7 @@ fn for_each_level(
                     (self.sink)(pass * LEVELS_PER_PASS + l, &d);
                 }
             }
-            Ok(c.domain().uniform(self.samples))
+            Ok(c.domain().uniform(self.samples)?)
         }
         fn surface<const D: usize>(self, _: &FuzzySurface<D>) -> Self::Output {
             Err(Error::Surface)

@@ -8,6 +8,7 @@ use t2spline::Domain;
 
 use crate::arrays::array;
 use crate::construct::count;
+use crate::errors::core_error;
 use crate::sample::check_output;
 
 /// The uniform parameters `tᵢ = a + (b − a)·i/(count − 1)` of a domain.
@@ -18,7 +19,7 @@ pub(crate) fn uniform_params<'py>(
 ) -> PyResult<Bound<'py, PyAny>> {
     let n = self::count(count, "count", 0)?;
     check_output(n, 1, "count")?;
-    array(py, domain.uniform(n), &[n])
+    array(py, domain.uniform(n).map_err(core_error)?, &[n])
 }
 
 /// `curve_methods!(Class { methods })`: the `#[pymethods]` block of `Class`

@@ -294,7 +294,7 @@ curve_methods!(PyFuzzyCurve {
             c.sample_layers_into_slices(params.params(), &mut channels(&mut buffer, 7 * d, n))
         }))?;
         let out = PyDict::new(py);
-        out.set_item("params", array(py, params.values(domain), &[n])?)?;
+        out.set_item("params", array(py, params.values(domain)?, &[n])?)?;
         // (layer, coordinate, parameter) seen as (layer, parameter, coordinate).
         let layers = transposed(&array(py, buffer, &[7, d, n])?, &[0, 2, 1])?;
         for l in Layer::ALL {

@@ -8,7 +8,7 @@ use pyo3::types::{PyBool, PyInt};
 use t2spline::sampling::Params;
 
 use crate::arrays::{array, floats, shape_text};
-use crate::errors::compute;
+use crate::errors::{compute, core_error};
 
 /// The most bytes the arrays of one sampling call may take (8 GiB, the limit
 /// of `t2spline bench`): larger requests are refused before anything is
@@ -60,10 +60,10 @@ impl ParamsArg {
     }
 
     /// The parameters themselves: the uniform ones over `domain` for a count.
-    pub(crate) fn values(&self, domain: t2spline::Domain) -> Vec<f64> {
+    pub(crate) fn values(&self, domain: t2spline::Domain) -> PyResult<Vec<f64>> {
         match self {
-            ParamsArg::Count(n) => domain.uniform(*n),
-            ParamsArg::Given(t) => t.clone(),
+            ParamsArg::Count(n) => domain.uniform(*n).map_err(core_error),
+            ParamsArg::Given(t) => Ok(t.clone()),
         }
     }
 

@@ -186,7 +186,10 @@ impl PySolution {
         let domain = by_dim!(&self.0, |s| s.fuzzy_curve().domain());
         by_dim!(&self.0, |s| {
             let stages = compute(py, || s.sample_stages(params.params()))?;
-            out.set_item("params", array(py, params.values(domain), &[params.len()])?)?;
+            out.set_item(
+                "params",
+                array(py, params.values(domain)?, &[params.len()])?,
+            )?;
             let cuts = PyDict::new(py);
             for l in six_layers() {
                 match stages.alpha_cut(l) {

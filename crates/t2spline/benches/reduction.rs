@@ -74,7 +74,10 @@ fn exact(c: &mut Criterion) {
 
 fn discrete(c: &mut Criterion) {
     const N: usize = 1000;
-    let sets: Vec<_> = numbers().iter().map(|x| (*x, sample(x, N))).collect();
+    let sets: Vec<_> = numbers()
+        .iter()
+        .map(|x| (*x, sample(x, N).unwrap()))
+        .collect();
     let (mut km, mut ekm, mut eiasc) = ([0usize; 2], [0usize; 2], [0usize; 2]);
     for (x, (xs, lmf, umf)) in &sets {
         let set = SampledSet::try_new(xs, lmf, umf).unwrap();

@@ -40,6 +40,7 @@ fn polyline(c: &NurbsCurve<2>, n: usize) -> f64 {
     let points: Vec<[f64; 2]> = c
         .domain()
         .uniform(n + 1)
+        .unwrap()
         .into_iter()
         .map(|t| c.eval(t).unwrap())
         .collect();

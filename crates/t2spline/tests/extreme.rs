@@ -194,7 +194,7 @@ fn parameters(curve: &FuzzyCurve<2>) -> Vec<f64> {
             }
         }
     }
-    t.extend(d.uniform(5));
+    t.extend(d.uniform(5).unwrap());
     t
 }
 

@@ -63,7 +63,7 @@ fn interpolation_reproduces_a_polynomial_of_the_same_degree() {
     let data: Vec<[f64; 2]> = params.iter().map(|&t| poly(t)).collect();
     let options = FitOptions::interpolation(5).with_parametrization(Parametrization::Uniform);
     let fit = fit_curve(&data, &options).unwrap();
-    for t in fit.curve.domain().uniform(201) {
+    for t in fit.curve.domain().uniform(201).unwrap() {
         let (got, want) = (fit.curve.eval(t).unwrap(), poly(t));
         assert!(
             close_point(&got, &want, 1e-12),
@@ -90,7 +90,7 @@ fn chord_length_interpolation_of_points_on_a_line_is_the_line() {
                 "degree {p}: parameter {u} != {want}"
             );
         }
-        for t in fit.curve.domain().uniform(101) {
+        for t in fit.curve.domain().uniform(101).unwrap() {
             let got = fit.curve.eval(t).unwrap();
             let want: [f64; 3] = std::array::from_fn(|d| a[d] + t * (b[d] - a[d]));
             assert!(

@@ -191,7 +191,7 @@ fn curve_operations<const D: usize>(
         returns("arc_length", || curve.arc_length());
         returns("bounding_box", || curve.bounding_box());
         returns("closest_point", || curve.closest_point(target));
-        returns("uniform", || curve.domain().uniform(n.min(64)));
+        returns("uniform", || curve.domain().uniform(n.min(64)).unwrap());
         returns("Sampler::try_new", || {
             Sampler::try_new(k, curve.weights(), &[t.to_vec()]).and_then(|s| s.sample(t))
         })
@@ -337,7 +337,10 @@ proptest! {
             }
         }
         returns("layer", || Layer::ALL.map(|l| x.layer(l)));
-        returns("discrete::sample", || t2spline::reduction::discrete::sample(&x, n.min(1 << 12)));
+        let _ = returns("discrete::sample", || {
+            t2spline::reduction::discrete::sample(&x, n.min(1 << 12))
+        });
+        assert!(t2spline::reduction::discrete::sample(&x, usize::MAX).is_err());
         let third = v.len() / 3;
         returns("SampledSet::try_new", || {
             SampledSet::try_new(&v[..third], &v[third..2 * third], &v[2 * third..]).map(|s| (s.km(), s.ekm(), s.eiasc(), s.nie_tan()))

@@ -203,7 +203,7 @@ fn continuous_centroid_is_the_limit_of_the_discrete_algorithms() {
         let exact = x.centroid();
         let mut previous: Option<f64> = None;
         for intervals in [100, 400, 1600, 6400] {
-            let (xs, lmf, umf) = sample(&x, intervals + 1);
+            let (xs, lmf, umf) = sample(&x, intervals + 1).unwrap();
             let set = SampledSet::try_new(&xs, &lmf, &umf).unwrap();
             let (km, ekm, eiasc) = (set.km(), set.ekm(), set.eiasc());
             for other in [ekm, eiasc] {

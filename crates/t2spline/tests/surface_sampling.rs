@@ -146,8 +146,8 @@ fn uniform_parameters_are_the_domain_grid_and_errors_name_the_direction() {
         .sample_grid(Params::Uniform(7), Params::Uniform(5))
         .unwrap();
     let (u, v) = (
-        s.domain(Direction::U).uniform(7),
-        s.domain(Direction::V).uniform(5),
+        s.domain(Direction::U).uniform(7).unwrap(),
+        s.domain(Direction::V).uniform(5).unwrap(),
     );
     let k = g.index(6, 4).unwrap();
     assert_eq!(g.samples().point(k), s.eval(u[6], v[4]).ok());

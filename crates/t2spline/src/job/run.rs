@@ -96,7 +96,7 @@ impl ModelVisitor for Run<'_> {
             control_points: control_points(curve.points(), solution.stages(), None),
             samples: sampled(
                 sweep,
-                Parameters::Along(curve.domain().uniform(samples)),
+                Parameters::Along(curve.domain().uniform(samples)?),
                 None,
             )?,
             error: Distance {
@@ -160,8 +160,8 @@ impl ModelVisitor for Run<'_> {
             samples: sampled(
                 grid.into_samples(),
                 Parameters::Grid {
-                    u: du.uniform(su),
-                    v: dv.uniform(sv),
+                    u: du.uniform(su)?,
+                    v: dv.uniform(sv)?,
                 },
                 Some([su, sv]),
             )?,

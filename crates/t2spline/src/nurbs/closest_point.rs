@@ -72,7 +72,7 @@ impl<const D: usize> NurbsCurve<D> {
         let mut best = at(d.start);
         let steps = SAMPLES_PER_DEGREE * self.order();
         for (span, [a, b]) in self.knots().spans() {
-            let ts = Domain { start: a, end: b }.uniform(steps + 1);
+            let ts = Domain { start: a, end: b }.uniform_small(steps + 1);
             // The end of a span is evaluated with its own piece (left limit).
             let dist: Vec<f64> = ts
                 .iter()
@@ -149,6 +149,7 @@ mod tests {
     fn brute_force<const D: usize>(c: &NurbsCurve<D>, p: [f64; D]) -> f64 {
         c.domain()
             .uniform(200_001)
+            .unwrap()
             .into_iter()
             .map(|t| norm(&sub(&c.eval(t).unwrap(), &p)))
             .fold(f64::INFINITY, f64::min)

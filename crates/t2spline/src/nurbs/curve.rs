@@ -324,7 +324,7 @@ mod tests {
     #[test]
     fn quarter_circle_has_radius_one_everywhere() {
         let c = quarter_circle();
-        for t in c.domain().uniform(1001) {
+        for t in c.domain().uniform(1001).unwrap() {
             let [x, y] = c.eval(t).unwrap();
             assert_relative_eq!(x.hypot(y), 1.0, epsilon = 1e-15);
         }

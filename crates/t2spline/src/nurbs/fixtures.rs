@@ -58,7 +58,7 @@ pub(crate) fn assert_same_geometry<const D: usize>(
     n: usize,
     tol: f64,
 ) {
-    for t in a.domain().uniform(n) {
+    for t in a.domain().uniform(n).unwrap() {
         let (p, q) = (a.eval(t).unwrap(), b.eval(t).unwrap());
         for d in 0..D {
             assert!((p[d] - q[d]).abs() < tol, "t = {t}: {p:?} vs {q:?}");

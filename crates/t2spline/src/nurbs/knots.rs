@@ -53,16 +53,36 @@ impl Domain {
     /// ```
     /// `samples = 1` gives `[a]`; `0` gives nothing.
     ///
+    /// # Errors
+    /// [`Error::Memory`](crate::Error::Memory) if `samples` values cannot be
+    /// held in memory (the allocation is tried, not assumed).
+    ///
     /// # Examples
     /// ```
     /// # use t2spline::Domain;
     /// let d = Domain { start: 0.0, end: 0.3 };
-    /// assert_eq!(d.uniform(4).last(), Some(&0.3));
+    /// assert_eq!(d.uniform(4)?.last(), Some(&0.3));
+    /// assert!(d.uniform(usize::MAX).is_err());
+    /// # Ok::<(), t2spline::Error>(())
     /// ```
-    #[must_use]
-    pub fn uniform(&self, samples: usize) -> Vec<f64> {
+    pub fn uniform(&self, samples: usize) -> Result<Vec<f64>, crate::Error> {
+        let mut out = Vec::new();
+        out.try_reserve_exact(samples)
+            .map_err(|_| crate::Error::Memory { values: samples })?;
+        out.extend(self.uniform_iter(samples));
+        Ok(out)
+    }
+
+    /// [`Domain::uniform`] for the small counts the crate itself asks for
+    /// (scans of a span: a few hundred at most), which always fit.
+    pub(crate) fn uniform_small(&self, samples: usize) -> Vec<f64> {
+        self.uniform_iter(samples).collect()
+    }
+
+    /// The values of [`Domain::uniform`], one by one.
+    fn uniform_iter(&self, samples: usize) -> impl Iterator<Item = f64> + '_ {
         let last = samples.saturating_sub(1).max(1) as f64;
-        (0..samples).map(|i| self.lerp(i as f64 / last)).collect()
+        (0..samples).map(move |i| self.lerp(i as f64 / last))
     }
 }
 
@@ -322,9 +342,21 @@ mod tests {
             start: 0.1,
             end: 0.7,
         };
-        let t = d.uniform(7);
+        let t = d.uniform(7).unwrap();
         assert_eq!(t[0], 0.1);
         assert_eq!(t[6], 0.7);
-        assert_eq!(d.uniform(1), vec![0.1]);
+        assert_eq!(d.uniform(1).unwrap(), vec![0.1]);
+        assert_eq!(d.uniform_small(7), t);
+    }
+
+    #[test]
+    fn counts_beyond_memory_are_errors() {
+        let d = Domain {
+            start: 0.0,
+            end: 1.0,
+        };
+        for n in [usize::MAX, usize::MAX / 8, 1 << 60] {
+            assert_eq!(d.uniform(n), Err(crate::Error::Memory { values: n }));
+        }
     }
 }

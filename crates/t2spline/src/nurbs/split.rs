@@ -163,7 +163,7 @@ mod tests {
             let [l, r] = c.split_at(t).unwrap();
             assert_eq!((l.domain().start, l.domain().end), (0.0, t));
             assert_eq!((r.domain().start, r.domain().end), (t, 1.0));
-            for s in c.domain().uniform(101) {
+            for s in c.domain().uniform(101).unwrap() {
                 let piece = if s <= t { &l } else { &r };
                 let (p, q) = (c.eval(s).unwrap(), piece.eval(s).unwrap());
                 assert!(

@@ -31,46 +31,51 @@ use crate::error::Error;
 use crate::fuzzy::{Membership, Nt2Number};
 use crate::limits::{within_magnitude, MAX_WEIGHT};
 
+/// Sampled membership functions: `(x, lmf, umf)`.
+pub type Samples = (Vec<f64>, Vec<f64>, Vec<f64>);
+
 /// Samples `(x, lmf, umf)` of a number's LMF and UMF (SPEC §1) at `count`
 /// uniform points of its support `[upper.left, upper.right]`, both ends
 /// included (`count` below 2 is taken as 2): the input of the discrete
 /// algorithms for a number, e.g. to compare them with the exact
 /// [`Nt2Number::centroid`].
 ///
+/// # Errors
+/// [`Error::Memory`] if `count` samples cannot be held in memory (the
+/// allocation is tried, not assumed).
+///
 /// # Examples
 /// ```
 /// # use t2spline::Nt2Number;
 /// # use t2spline::reduction::discrete::{sample, SampledSet};
 /// let x = Nt2Number::try_new(1.0, [0.4, 1.9], [0.6, 1.6], [0.8, 1.3], 0.6)?;
-/// let (xs, lmf, umf) = sample(&x, 1001);
+/// let (xs, lmf, umf) = sample(&x, 1001)?;
 /// let discrete = SampledSet::try_new(&xs, &lmf, &umf)?.ekm();
 /// assert!((discrete.left() - x.centroid().left()).abs() < 1e-6);
+/// assert!(sample(&x, usize::MAX).is_err());
 /// # Ok::<(), t2spline::Error>(())
 /// ```
-#[must_use]
-pub fn sample(x: &Nt2Number, count: usize) -> (Vec<f64>, Vec<f64>, Vec<f64>) {
+pub fn sample(x: &Nt2Number, count: usize) -> Result<Samples, Error> {
     let count = count.max(2);
     let (a, b) = (x.upper().left(), x.upper().right());
     let last = (count - 1) as f64;
+    let mut out: [Vec<f64>; 3] = Default::default();
+    for v in &mut out {
+        v.try_reserve_exact(count)
+            .map_err(|_| Error::Memory { values: count })?;
+    }
+    let [mut xs, mut lmf, mut umf] = out;
     // a + (b − a)·i/last, with the last point exactly b.
-    let xs: Vec<f64> = (0..count)
-        .map(|i| {
-            if i + 1 == count {
-                b
-            } else {
-                a + (b - a) * (i as f64 / last)
-            }
-        })
-        .collect();
-    let lmf = xs
-        .iter()
-        .map(|&v| x.membership(Membership::Lower, v))
-        .collect();
-    let umf = xs
-        .iter()
-        .map(|&v| x.membership(Membership::Upper, v))
-        .collect();
-    (xs, lmf, umf)
+    xs.extend((0..count).map(|i| {
+        if i + 1 == count {
+            b
+        } else {
+            a + (b - a) * (i as f64 / last)
+        }
+    }));
+    lmf.extend(xs.iter().map(|&v| x.membership(Membership::Lower, v)));
+    umf.extend(xs.iter().map(|&v| x.membership(Membership::Upper, v)));
+    Ok((xs, lmf, umf))
 }
 
 /// A validated interval type-2 set given by samples: `x` ascending,

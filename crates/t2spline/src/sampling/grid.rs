@@ -170,7 +170,7 @@ impl GridSampler {
             .ok_or(Error::Memory { values: usize::MAX })?;
         let mut out = outputs(self.channels(), n, buffers)?;
         let mut slices: Vec<&mut [f64]> = out.iter_mut().map(Vec::as_mut_slice).collect();
-        self.run(u, v, &mut slices);
+        self.run(u, v, &mut slices)?;
         Ok(out)
     }
 
@@ -195,8 +195,7 @@ impl GridSampler {
             "output values (one per grid point)",
         )?;
         self.check(u, v)?;
-        self.run(u, v, out);
-        Ok(())
+        self.run(u, v, out)
     }
 
     fn check(&self, u: Params<'_>, v: Params<'_>) -> Result<(), Error> {
@@ -228,11 +227,11 @@ impl GridSampler {
     }
 
     /// Runs a checked job, in parallel by grid rows when it is large enough.
-    fn run(&self, u: Params<'_>, v: Params<'_>, out: &mut [&mut [f64]]) {
-        let u = u.to_vec(self.knots[0].domain());
-        let v = v.to_vec(self.knots[1].domain());
+    fn run(&self, u: Params<'_>, v: Params<'_>, out: &mut [&mut [f64]]) -> Result<(), Error> {
+        let u = u.to_vec(self.knots[0].domain())?;
+        let v = v.to_vec(self.knots[1].domain())?;
         if u.is_empty() || v.is_empty() {
-            return;
+            return Ok(());
         }
         let columns = self.columns(&v);
         #[cfg(feature = "parallel")]
@@ -254,10 +253,11 @@ impl GridSampler {
                     let last = (first + rows).min(u.len());
                     self.rows(&u[first..last], &columns, v.len(), &mut pieces);
                 });
-                return;
+                return Ok(());
             }
         }
         self.rows(&u, &columns, v.len(), out);
+        Ok(())
     }
 
     /// Evaluates the grid rows at `u` (each of `sv` columns) into `out`.

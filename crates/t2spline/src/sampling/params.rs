@@ -77,11 +77,13 @@ impl Params<'_> {
     }
 
     /// The parameters as a vector (for `Uniform`, [`Domain::uniform`]).
-    #[must_use]
-    pub fn to_vec(&self, domain: Domain) -> Vec<f64> {
+    ///
+    /// # Errors
+    /// [`Error::Memory`] if they cannot be held in memory.
+    pub fn to_vec(&self, domain: Domain) -> Result<Vec<f64>, Error> {
         match self {
             Params::Uniform(n) => domain.uniform(*n),
-            Params::Given(t) => t.to_vec(),
+            Params::Given(t) => Ok(t.to_vec()),
         }
     }
 

@@ -49,8 +49,9 @@ pub(crate) fn wavy() -> NurbsSurface<3> {
 fn grid(s: &NurbsSurface<3>, n: usize) -> Vec<(f64, f64)> {
     let (du, dv) = (s.domain(Direction::U), s.domain(Direction::V));
     du.uniform(n)
+        .unwrap()
         .into_iter()
-        .flat_map(|u| dv.uniform(n).into_iter().map(move |v| (u, v)))
+        .flat_map(|u| dv.uniform(n).unwrap().into_iter().map(move |v| (u, v)))
         .collect()
 }
 
@@ -232,7 +233,7 @@ fn isocurves_equal_the_surface() {
     let s = wavy();
     for t in [0.0, 0.4, 0.77, 1.0] {
         let c: NurbsCurve<3> = s.isocurve(Direction::U, t).unwrap();
-        for v in s.domain(Direction::V).uniform(31) {
+        for v in s.domain(Direction::V).uniform(31).unwrap() {
             let (a, b) = (c.eval(v).unwrap(), s.eval(t, v).unwrap());
             assert!(
                 a.iter().zip(&b).all(|(x, y)| (x - y).abs() < 1e-13),
@@ -242,7 +243,7 @@ fn isocurves_equal_the_surface() {
     }
     for t in [-1.0, 0.5, 1.3, 2.0] {
         let c = s.isocurve(Direction::V, t).unwrap();
-        for u in s.domain(Direction::U).uniform(31) {
+        for u in s.domain(Direction::U).uniform(31).unwrap() {
             let (a, b) = (c.eval(u).unwrap(), s.eval(u, t).unwrap());
             assert!(
                 a.iter().zip(&b).all(|(x, y)| (x - y).abs() < 1e-13),

@@ -35,7 +35,7 @@ fn assert_same_geometry_within<const D: usize>(
 ) -> Result<(), TestCaseError> {
     let (sa, sb) = (a.solve(alpha), b.solve(alpha));
     let (da, db) = (sa.defuzzified_curve(), sb.defuzzified_curve());
-    for t in a.domain().uniform(257) {
+    for t in a.domain().uniform(257).unwrap() {
         let (la, lb) = (a.eval_layers(t).unwrap(), b.eval_layers(t).unwrap());
         for l in Layer::ALL {
             for d in 0..D {
@@ -145,7 +145,7 @@ proptest! {
         let tol = 1e-12 * scale(&c);
         let alpha = Alpha::try_new(a).unwrap();
         let (whole, l, r) = (c.solve(alpha).defuzzified_curve(), left.solve(alpha).defuzzified_curve(), right.solve(alpha).defuzzified_curve());
-        for x in domain.uniform(129) {
+        for x in domain.uniform(129).unwrap() {
             let piece = if x < t { (&left, &l) } else { (&right, &r) };
             let (la, lb) = (c.eval_layers(x).unwrap(), piece.0.eval_layers(x).unwrap());
             for layer in Layer::ALL {
