@@ -8,6 +8,7 @@
 
 mod density;
 mod distance;
+mod largest;
 mod reductions;
 mod stage1;
 mod stage2;
@@ -18,11 +19,12 @@ mod zoom;
 
 pub use density::Density;
 pub use distance::{alpha_rule, distance_figure};
+pub use largest::largest_distance;
 pub use reductions::reductions_figure;
 pub use stage1::stage1_figure;
 pub use stage2::stage2_figure;
 pub use stage3::stage3_figure;
-pub use stage4::{largest_distance, stage4_figure, Zoom};
+pub use stage4::{stage4_figure, Zoom};
 pub use sweep::sweep_figure;
 
 use t2spline::job::{Points, RunOutput};

@@ -1,16 +1,16 @@
 //! Stage 4 (paper Fig. 5.4): the crisp and the defuzzified curve, and the
 //! largest distance between them.
 
-use t2spline::job::{Job, RunOutput};
-use t2spline::Alpha;
+use t2spline::job::Job;
 
+use super::largest::{largest_distance, Ends};
 use super::zoom::zoom_panel;
 use super::{
     crisp_curve, crisp_legend, crisp_points, line, markers, polygon, project, reduction_phrase,
     CurveScene,
 };
 use crate::figures::style::{distance_marker, distance_stroke, solution_marker, solution_stroke};
-use crate::scene::{Figure, LegendEntry, Mark, Panel, Priority, Xy};
+use crate::scene::{Figure, LegendEntry};
 use crate::ticks::short;
 use crate::{data, Error};
 
@@ -22,35 +22,6 @@ pub enum Zoom {
     /// Always a magnified panel; where the curves coincide it says so (the
     /// report, whose figures keep one structure at every alpha).
     Always,
-}
-
-/// The two ends of the largest distance: the crisp and the defuzzified curve
-/// at `max_at`, by the library.
-pub(super) struct Ends {
-    pub crisp: Vec<f64>,
-    pub solution: Vec<f64>,
-}
-
-impl Ends {
-    fn of(job: &Job, r: &RunOutput) -> Result<Ends, Error> {
-        let (c, d) = data::curves_at(
-            &job.model,
-            Alpha::try_new(r.alpha)?,
-            r.type_reduction,
-            &[data::curve_spline(r).max_at],
-        )?;
-        Ok(Ends {
-            crisp: c.point(0).unwrap_or_default(),
-            solution: d.point(0).unwrap_or_default(),
-        })
-    }
-
-    pub fn projected(&self, (i, j): (usize, usize)) -> [Xy; 2] {
-        [
-            [self.crisp[i], self.crisp[j]],
-            [self.solution[i], self.solution[j]],
-        ]
-    }
 }
 
 /// Stage 4 (paper Fig. 5.4): the crisp curve and the defuzzified solution
@@ -131,35 +102,4 @@ pub fn stage4_figure(job: &Job, scene: &CurveScene<'_>, zoom: Zoom) -> Result<Fi
             legend,
         )
     })
-}
-
-/// The segment between the two ends of the largest distance, its end
-/// markers, and (with `text`) its annotation, which is always placed.
-pub fn largest_distance(p: &mut Panel, ends: [Xy; 2], text: Option<String>) {
-    p.push(
-        "distance",
-        Mark::Segments {
-            segments: vec![ends],
-            stroke: distance_stroke(),
-        },
-    );
-    p.push(
-        "distance-ends",
-        Mark::Markers {
-            points: ends.to_vec(),
-            marker: distance_marker(),
-        },
-    );
-    let mid = [
-        0.5 * (ends[0][0] + ends[1][0]),
-        0.5 * (ends[0][1] + ends[1][1]),
-    ];
-    p.push(
-        "distance-text",
-        text.map_or(Mark::Empty, |text| Mark::Label {
-            anchor: mid,
-            text,
-            priority: Priority::Always,
-        }),
-    );
 }

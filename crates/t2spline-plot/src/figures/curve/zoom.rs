@@ -6,7 +6,7 @@
 use t2spline::job::{Job, Points, RunOutput};
 use t2spline::Alpha;
 
-use super::stage4::{largest_distance, Ends};
+use super::largest::{largest_distance, Ends};
 use super::{line, markers, projections, Projection};
 use crate::figures::style::{crisp_marker, crisp_stroke, solution_marker, solution_stroke};
 use crate::scene::{Panel, Xy};
