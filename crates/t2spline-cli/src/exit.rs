@@ -22,6 +22,23 @@ use std::path::PathBuf;
 
 use t2spline_io::Error;
 
+/// A command-line option whose value breaks a rule: `--alpha: …`. Exit code 2.
+#[derive(Debug)]
+pub struct OptionError {
+    /// The option, e.g. `--alpha`.
+    pub option: &'static str,
+    /// The value and the rule.
+    pub message: String,
+}
+
+impl std::fmt::Display for OptionError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}: {}", self.option, self.message)
+    }
+}
+
+impl std::error::Error for OptionError {}
+
 /// What a failure means for the caller.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Exit {
@@ -171,7 +188,7 @@ mod tests {
             Exit::of(&anyhow::anyhow!("a bad option of fit")),
             Exit::Invalid
         );
-        let option = crate::cmd::settings::OptionError {
+        let option = OptionError {
             option: "--alpha",
             message: "m".into(),
         };

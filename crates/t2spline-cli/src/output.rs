@@ -9,7 +9,7 @@ use t2spline::job::Job;
 use t2spline_io::job::{read_text, read_text_from};
 use t2spline_io::{parse_job, write_all_atomic, Error};
 
-use crate::cmd::settings::OptionError;
+use crate::exit::OptionError;
 
 /// Whether the path names a standard stream.
 pub fn is_stdio(path: &Path) -> bool {

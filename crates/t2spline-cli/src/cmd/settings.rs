@@ -11,22 +11,7 @@ use t2spline_io::{Error, Problem};
 
 use crate::output::job_name;
 
-/// A command-line option whose value breaks a rule: `--alpha: …`. Exit code 2.
-#[derive(Debug)]
-pub struct OptionError {
-    /// The option, e.g. `--alpha`.
-    pub option: &'static str,
-    /// The value and the rule.
-    pub message: String,
-}
-
-impl std::fmt::Display for OptionError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        write!(f, "{}: {}", self.option, self.message)
-    }
-}
-
-impl std::error::Error for OptionError {}
+pub use crate::exit::OptionError;
 
 /// The option that sets `setting`.
 pub fn option_name(setting: Setting) -> &'static str {
