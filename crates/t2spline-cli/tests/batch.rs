@@ -160,6 +160,48 @@ fn a_folder_of_jobs_runs_in_name_order() {
     assert_eq!(std::fs::read(out.path().join("a.json")).unwrap(), json);
 }
 
+/// The jobs of a folder are its `*.json` files, links to files among them;
+/// a folder or a FIFO named `*.json` and files of other names are not jobs.
+#[cfg(unix)]
+#[test]
+fn a_folder_of_jobs_follows_links_and_skips_what_is_not_a_file() {
+    let input = jobs();
+    std::fs::remove_file(input.path().join("b.json")).unwrap();
+    let elsewhere = tempfile::tempdir().unwrap();
+    std::fs::copy(input.path().join("a.json"), elsewhere.path().join("x.json")).unwrap();
+    std::os::unix::fs::symlink(
+        elsewhere.path().join("x.json"),
+        input.path().join("linked.json"),
+    )
+    .unwrap();
+    std::os::unix::fs::symlink(
+        elsewhere.path().join("gone.json"),
+        input.path().join("dangling.json"),
+    )
+    .unwrap();
+    std::fs::create_dir(input.path().join("folder.json")).unwrap();
+    std::fs::write(input.path().join("notes.txt"), "not a job").unwrap();
+    let fifo = input.path().join("pipe.json");
+    assert!(std::process::Command::new("mkfifo")
+        .arg(&fifo)
+        .status()
+        .unwrap()
+        .success());
+    let out = tempfile::tempdir().unwrap();
+    let o = run(&["run", "--jobs", s(input.path()), "-o", s(out.path())]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let mut names: Vec<String> = std::fs::read_dir(out.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    assert_eq!(names, ["a.json", "c.json", "linked.json", "summary.csv"]);
+    assert_eq!(
+        std::fs::read(out.path().join("linked.json")).unwrap(),
+        std::fs::read(out.path().join("a.json")).unwrap()
+    );
+}
+
 #[test]
 fn the_exit_code_is_the_worst_failure() {
     let input = jobs();

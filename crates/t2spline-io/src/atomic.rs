@@ -263,12 +263,17 @@ pub fn sync_file_systems(paths: &[PathBuf]) -> Result<(), Error> {
     #[cfg(target_os = "linux")]
     {
         use std::os::unix::fs::MetadataExt;
-        let mut devices = Vec::new();
+        // Each folder once: a thousand outputs of a run share a few.
+        let mut folders = std::collections::BTreeMap::new();
         for path in paths {
             let dir = path
                 .parent()
                 .filter(|d| !d.as_os_str().is_empty())
                 .unwrap_or(Path::new("."));
+            folders.entry(dir).or_insert(path);
+        }
+        let mut devices = Vec::new();
+        for (dir, path) in folders {
             let folder = File::open(dir).map_err(|e| write_error(path, e))?;
             let device = folder.metadata().map_err(|e| write_error(path, e))?.dev();
             if !devices.contains(&device) {

@@ -78,8 +78,19 @@ fn folder_jobs(dir: &Path) -> Result<Vec<PathBuf>, t2spline_io::Error> {
     };
     let mut jobs = Vec::new();
     for entry in std::fs::read_dir(dir).map_err(failed)? {
-        let path = entry.map_err(failed)?.path();
-        if path.extension().is_some_and(|e| e == "json") && path.is_file() {
+        let entry = entry.map_err(failed)?;
+        let path = entry.path();
+        if path.extension().is_none_or(|e| e != "json") {
+            continue;
+        }
+        // The folder's listing tells a plain file without a further look;
+        // a link (or a file system that does not say) is followed.
+        let file = match entry.file_type() {
+            Ok(kind) if kind.is_file() => true,
+            Ok(kind) if kind.is_dir() => false,
+            _ => path.is_file(),
+        };
+        if file {
             jobs.push(path);
         }
     }
@@ -154,9 +165,13 @@ impl Batch {
     /// No output overwrites a job file (`--jobs DIR -o DIR`).
     fn check_outputs(&self) -> anyhow::Result<()> {
         let inputs = Inputs::of(self.jobs.iter().map(|j| j.path.as_path()));
-        for job in &self.jobs {
-            self.destinations(job).check(&inputs)?;
-        }
+        // In parallel, a look at each output; the first error in job order.
+        let checks: Vec<anyhow::Result<()>> = self
+            .jobs
+            .par_iter()
+            .map(|job| self.destinations(job).check(&inputs))
+            .collect();
+        checks.into_iter().collect::<anyhow::Result<()>>()?;
         inputs.check("--output", &self.output.join(SUMMARY_CSV))?;
         if let Some(dir) = &self.parquet {
             inputs.check("--parquet", &dir.join(SUMMARY_PARQUET))?;

@@ -41,7 +41,10 @@ pub fn read_text(path: &Path) -> Result<String, Error> {
     if metadata.is_file() && metadata.len() > MAX_FILE_BYTES {
         return Err(whole_file(&name, file_too_large(Some(metadata.len()))));
     }
-    read_limited(file, &name).map_err(|e| match e {
+    // The size known, the text is read in one call and the end found by a
+    // second, where an empty buffer would grow through a dozen reads.
+    let size = usize::try_from(metadata.len()).unwrap_or(0);
+    read_limited(file, &name, size).map_err(|e| match e {
         Error::Read { source, .. } => failed(source),
         other => other,
     })
@@ -54,11 +57,17 @@ pub fn read_text(path: &Path) -> Result<String, Error> {
 /// [`Error::Read`] (with `name` as its path) if reading fails, and the
 /// [`Error::Invalid`] cases of [`read_text`].
 pub fn read_text_from(reader: impl Read, name: &str) -> Result<String, Error> {
-    read_limited(reader, name)
+    read_limited(reader, name, 0)
 }
 
-fn read_limited(reader: impl Read, name: &str) -> Result<String, Error> {
+/// Reads `reader` to its end or to one byte past [`MAX_FILE_BYTES`], with
+/// room for `expected` bytes at the start (a file's size, else 0).
+fn read_limited(reader: impl Read, name: &str, expected: usize) -> Result<String, Error> {
     let mut bytes = Vec::new();
+    // A file larger than the limit was refused before; a wrong size (a file
+    // growing, `/proc`) only means more reads.
+    let limit = usize::try_from(MAX_FILE_BYTES).unwrap_or(usize::MAX);
+    let _ = bytes.try_reserve_exact(expected.min(limit).saturating_add(1));
     reader
         .take(MAX_FILE_BYTES + 1)
         .read_to_end(&mut bytes)
