@@ -1,5 +1,6 @@
-//! Ctrl-C, `SIGTERM` and `SIGHUP` remove the temporary files of outputs
-//! still being written (up to hundreds of megabytes of `.t2spline-*.tmp`),
+//! Ctrl-C, `SIGTERM` and `SIGHUP` remove the named temporary files of
+//! outputs still being written (up to hundreds of megabytes of
+//! `.t2spline-*.tmp`; new files on Linux have no name until complete),
 //! then end the program by the signal, as it would have ended without a
 //! handler (the shell sees 130 for Ctrl-C, 143 for `SIGTERM`).
 

@@ -237,17 +237,20 @@ fn walk(dir: &Path) -> Vec<PathBuf> {
     out
 }
 
+/// A result replacing an existing file is written under a temporary name;
+/// Ctrl-C or `SIGTERM` while it is written removes that file and leaves the
+/// old result as it was.
 #[test]
 fn a_signal_while_writing_removes_the_temporary_files() {
     use std::os::unix::process::ExitStatusExt;
     for (signal, number) in [("TERM", 15), ("INT", 2)] {
         let dir = tempfile::tempdir().unwrap();
         let out = dir.path().join("out.json");
-        let csv = dir.path().join("csv");
+        std::fs::write(&out, "the last run's result").unwrap();
         // Large enough to be caught while writing, even in an optimised build.
         let mut child = bin()
             .args(["run", s(&example()), "--samples", "1000000"])
-            .args(["-o", s(&out), "--csv", s(&csv)])
+            .args(["-o", s(&out)])
             .stderr(Stdio::null())
             .spawn()
             .unwrap();
@@ -267,11 +270,47 @@ fn a_signal_while_writing_removes_the_temporary_files() {
         assert!(sent.success());
         let status = child.wait().unwrap();
         assert_eq!(status.signal(), Some(number), "{status:?}");
+        assert_eq!(walk(dir.path()), std::slice::from_ref(&out), "SIG{signal}");
         assert_eq!(
-            temporaries(dir.path()),
-            Vec::<PathBuf>::new(),
+            std::fs::read_to_string(&out).unwrap(),
+            "the last run's result",
             "SIG{signal}"
         );
-        assert!(!out.exists(), "SIG{signal}: a result appeared");
     }
+}
+
+/// On Linux a new output has no name until it is complete, so that even
+/// `SIGKILL`, which no handler sees, leaves nothing behind.
+#[cfg(target_os = "linux")]
+#[test]
+fn a_killed_run_leaves_no_file_behind() {
+    use std::os::unix::process::ExitStatusExt;
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out.json");
+    let csv = dir.path().join("csv");
+    let mut child = bin()
+        .args(["run", s(&example()), "--samples", "1000000"])
+        .args(["-o", s(&out), "--csv", s(&csv)])
+        .stderr(Stdio::null())
+        .spawn()
+        .unwrap();
+    // Writing has begun when the program holds a file open in the folder.
+    let fds = PathBuf::from(format!("/proc/{}/fd", child.id()));
+    let writing = || {
+        std::fs::read_dir(&fds)
+            .into_iter()
+            .flatten()
+            .flatten()
+            .any(|fd| std::fs::read_link(fd.path()).is_ok_and(|to| to.starts_with(dir.path())))
+    };
+    let start = std::time::Instant::now();
+    while !writing() {
+        assert!(child.try_wait().unwrap().is_none(), "ended before writing");
+        assert!(start.elapsed().as_secs() < 300, "no output was opened");
+        std::thread::sleep(std::time::Duration::from_millis(5));
+    }
+    child.kill().unwrap();
+    let status = child.wait().unwrap();
+    assert_eq!(status.signal(), Some(9), "{status:?}");
+    assert_eq!(walk(dir.path()), Vec::<PathBuf>::new());
 }

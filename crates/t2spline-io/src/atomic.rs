@@ -2,7 +2,8 @@
 //!
 //! Every output is written to a temporary file in its own folder (so that the
 //! final rename stays on one file system and is atomic), flushed to disk, and
-//! only then renamed over the target. A run that writes several files stages
+//! only then renamed over the target, or linked to its name where it is new
+//! (a file without a name until then, on Linux: see `temporary.rs`). A run that writes several files stages
 //! all of them first and renames them only when every one is complete, so a
 //! failure while writing (a full disk, a missing folder) leaves every existing
 //! output as it was. Temporary files are removed on failure, and on Ctrl-C
@@ -168,14 +169,7 @@ impl<'a> Staged<'a> {
             Some(d) if !d.as_os_str().is_empty() => d,
             _ => Path::new("."),
         };
-        let mut builder = tempfile::Builder::new();
-        builder.prefix(".t2spline-").suffix(".tmp");
-        #[cfg(unix)]
-        {
-            use std::os::unix::fs::PermissionsExt;
-            builder.permissions(std::fs::Permissions::from_mode(0o666));
-        }
-        let file = Temporary::create(&builder, dir).map_err(failed)?;
+        let file = Temporary::create(dir, permissions.is_some()).map_err(failed)?;
         if let Some(permissions) = permissions {
             file.file()
                 .and_then(|f| f.set_permissions(permissions))
