@@ -84,19 +84,26 @@ pub fn render(
     let mut kinds: [Vec<Figure>; 4] = Default::default();
     let mut files: Vec<(String, Vec<String>)> = Vec::new();
     for &(alpha, method) in &shown {
-        let [number, s2, s3, s4] = stop_figures(job, alpha, method, &heights, options)?;
-        for (list, f) in kinds.iter_mut().zip([number, s2, s3, s4]) {
+        let (figures, figure_run) = stop_figures(job, alpha, method, &heights, options)?;
+        for (list, f) in kinds.iter_mut().zip(figures) {
             list.push(f);
         }
-        let run = data::run_job(job, alpha, method)?;
-        if with_files.carries(alpha.get(), method) {
+        // The numbers a stop shows (control points, the distance's max, its
+        // place and rms) do not depend on the samples, so the run its
+        // figures were drawn from gives them; only the files need the run
+        // at the job's own samples.
+        let run = if with_files.carries(alpha.get(), method) {
+            let run = data::run_job(job, alpha, method)?;
             for (k, (name, text)) in files_of(&run)?.into_iter().enumerate() {
                 match files.get_mut(k) {
                     Some((_, texts)) => texts.push(text),
                     None => files.push((name, vec![text])),
                 }
             }
-        }
+            run
+        } else {
+            figure_run
+        };
         frame_data.push(run);
     }
     let Some(start_run) = frame_data.get(initial).cloned() else {
@@ -279,6 +286,7 @@ fn choose_stops(
         let files: Vec<String> = files_of(&run)?.into_iter().map(|(_, t)| t).collect();
         let figures: Vec<String> =
             stop_figures(job, alpha, TypeReduction::Paper, &heights, options)?
+                .0
                 .iter()
                 .map(svg::render)
                 .collect();
@@ -396,31 +404,34 @@ impl FileStops {
 }
 
 /// The figures that change with alpha and the type reduction `method`: the
-/// number and stages 2–4.
+/// number and stages 2–4, with the run (at the figures' samples) they were
+/// drawn from.
 fn stop_figures(
     job: &Job,
     alpha: Alpha,
     method: TypeReduction,
     heights: &[f64],
     options: &FigureOptions,
-) -> Result<[Figure; 4], Error> {
+) -> Result<([Figure; 4], RunOutput), Error> {
     let r = data::compute_within(job, alpha, method, data::REPORT_SURFACE_GRID)?;
-    if job.model.is_surface() {
+    let figures = if job.model.is_surface() {
         let scene = SurfaceScene::new(&r, heights, options.view, options.aspect);
-        return Ok([
+        [
             number_figure(job, alpha, method, options.number)?,
             surface::stage2_figure(&scene),
             surface::stage3_figure(&scene),
             surface::stage4_figure(job, &scene)?,
-        ]);
-    }
-    let scene = CurveScene::new(&r, heights, options.aspect);
-    Ok([
-        number_figure(job, alpha, method, options.number)?,
-        stage2_figure(&scene),
-        stage3_figure(&scene),
-        stage4_figure(job, &scene, Zoom::Always)?,
-    ])
+        ]
+    } else {
+        let scene = CurveScene::new(&r, heights, options.aspect);
+        [
+            number_figure(job, alpha, method, options.number)?,
+            stage2_figure(&scene),
+            stage3_figure(&scene),
+            stage4_figure(job, &scene, Zoom::Always)?,
+        ]
+    };
+    Ok((figures, r))
 }
 
 /// The distance figure with its alpha line at `alpha`.

@@ -78,6 +78,38 @@ fn every_reduction_is_the_run_result() {
     }
 }
 
+/// A stop whose files the report leaves out shows the numbers of the run its
+/// figures were drawn from: for surfaces too they are those of the run at
+/// the job's own samples.
+#[test]
+fn surface_stops_show_the_run_result_at_the_job_sampling() {
+    for name in ["fuzzy-terrain.json", "fuzzy-cylinder.json"] {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("../../examples")
+            .join(name);
+        let text = std::fs::read_to_string(&path).unwrap();
+        let job = t2spline_io::parse_job(&text, name).unwrap();
+        for a in [0.0, 0.35, 1.0] {
+            let alpha = Alpha::try_new(a).unwrap();
+            for method in TypeReduction::ALL {
+                let figure_result =
+                    data::compute_within(&job, alpha, method, data::REPORT_SURFACE_GRID).unwrap();
+                let run_result = run(&job, a, method);
+                assert_ne!(
+                    figure_result.samples.crisp.len(),
+                    run_result.samples.crisp.len(),
+                    "{name}: the figures are sampled otherwise than the job"
+                );
+                assert_same_tables(
+                    &figure_result,
+                    &run_result,
+                    &format!("{name} {a} {method:?}"),
+                );
+            }
+        }
+    }
+}
+
 #[test]
 fn the_report_marks_h_starts_at_the_given_alpha_and_carries_run_s_files() {
     let (job, text) = example();
