@@ -143,18 +143,25 @@ fn every_good_job_is_written_and_every_bad_one_reported() {
         .starts_with(b"PAR1"));
 }
 
-#[test]
-fn a_folder_of_jobs_runs_in_name_order() {
-    let input = jobs();
-    std::fs::remove_file(input.path().join("b.json")).unwrap();
+/// Runs the jobs of `folder` into a new folder, which it returns with the
+/// names of the files there, sorted.
+fn run_folder(folder: &Path) -> (tempfile::TempDir, Vec<String>) {
     let out = tempfile::tempdir().unwrap();
-    let o = run(&["run", "--jobs", s(input.path()), "-o", s(out.path())]);
+    let o = run(&["run", "--jobs", s(folder), "-o", s(out.path())]);
     assert!(o.status.success(), "{}", stderr(&o));
     let mut names: Vec<String> = std::fs::read_dir(out.path())
         .unwrap()
         .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
         .collect();
     names.sort();
+    (out, names)
+}
+
+#[test]
+fn a_folder_of_jobs_runs_in_name_order() {
+    let input = jobs();
+    std::fs::remove_file(input.path().join("b.json")).unwrap();
+    let (out, names) = run_folder(input.path());
     assert_eq!(names, ["a.json", "c.json", "summary.csv"]);
     let (json, _) = alone(&input.path().join("a.json"), &[]);
     assert_eq!(std::fs::read(out.path().join("a.json")).unwrap(), json);
@@ -187,14 +194,7 @@ fn a_folder_of_jobs_follows_links_and_skips_what_is_not_a_file() {
         .status()
         .unwrap()
         .success());
-    let out = tempfile::tempdir().unwrap();
-    let o = run(&["run", "--jobs", s(input.path()), "-o", s(out.path())]);
-    assert!(o.status.success(), "{}", stderr(&o));
-    let mut names: Vec<String> = std::fs::read_dir(out.path())
-        .unwrap()
-        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
-        .collect();
-    names.sort();
+    let (out, names) = run_folder(input.path());
     assert_eq!(names, ["a.json", "c.json", "linked.json", "summary.csv"]);
     assert_eq!(
         std::fs::read(out.path().join("linked.json")).unwrap(),
