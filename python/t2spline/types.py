@@ -25,6 +25,7 @@ __all__ = [
     "Centroid",
     "CentroidMethod",
     "Deviation",
+    "DirectionName",
     "Distance",
     "FitSummary",
     "Floats",
@@ -32,8 +33,12 @@ __all__ = [
     "LayerDeviations",
     "LayerName",
     "LayerSamples",
+    "PerDirection",
     "SideName",
     "StageSamples",
+    "SurfaceDistance",
+    "SurfaceLayerSamples",
+    "SurfaceStageSamples",
     "TypeReductionName",
     "Which",
 ]
@@ -56,6 +61,13 @@ Which = Union[Literal["upper"], Literal["primary"], Literal["lower"]]
 
 #: A side of a type-reduced number.
 SideName = Union[Literal["left"], Literal["right"]]
+
+#: A parameter direction of a surface: ``u`` along the rows of the net,
+#: ``v`` along its columns.
+DirectionName = Union[Literal["u"], Literal["v"]]
+
+#: One value for both directions of a surface, or ``(u, v)``.
+PerDirection = Union[int, Tuple[int, int]]
 
 #: A type reduction of stages 3–4 (SPEC §10), as in a job's ``"type_reduction"``.
 TypeReductionName = Union[
@@ -83,8 +95,9 @@ class LayerSamples(TypedDict):
 
 
 class AlphaCuts(TypedDict):
-    """``Solution.alpha_cut``: each layer's cut control points ``(n, d)``, NaN
-    where a lower cut is absent."""
+    """``Solution.alpha_cut``: each layer's cut control points ``(n, d)``
+    (``SurfaceSolution.alpha_cut``: ``(nu, nv, d)``), NaN where a lower cut
+    is absent."""
 
     upper_left: Floats
     primary_left: Floats
@@ -95,8 +108,9 @@ class AlphaCuts(TypedDict):
 
 
 class AlphaCutCurves(TypedDict):
-    """The sampled alpha-cut curves ``(m, d)``; ``None`` for a lower layer that
-    some number does not have at this alpha."""
+    """The sampled alpha-cut curves ``(m, d)`` (or surfaces ``(su, sv, d)``);
+    ``None`` for a lower layer that some number does not have at this
+    alpha."""
 
     upper_left: Floats
     primary_left: Floats
@@ -122,6 +136,43 @@ class Distance(TypedDict):
 
     max: float
     max_at: float
+    rms: float
+
+
+class SurfaceLayerSamples(TypedDict):
+    """``FuzzySurface.sample``: the parameters ``u`` ``(su,)`` and ``v``
+    ``(sv,)``, and each layer on the grid ``(su, sv, d)``."""
+
+    u: Floats
+    v: Floats
+    upper_left: Floats
+    primary_left: Floats
+    lower_left: Floats
+    crisp: Floats
+    lower_right: Floats
+    primary_right: Floats
+    upper_right: Floats
+
+
+class SurfaceStageSamples(TypedDict):
+    """``SurfaceSolution.sample``: the surfaces of stages 2–4 on the grid
+    ``u × v``, each ``(su, sv, d)``."""
+
+    u: Floats
+    v: Floats
+    alpha_cut: AlphaCutCurves
+    type_reduced_left: Floats
+    type_reduced_right: Floats
+    defuzzified: Floats
+
+
+class SurfaceDistance(TypedDict):
+    """``SurfaceSolution.distance``: the largest distance (and its ``(u,
+    v)``) and the root mean square distance between the crisp and the
+    defuzzified surface."""
+
+    max: float
+    max_at: Tuple[float, float]
     rms: float
 
 
