@@ -81,10 +81,9 @@ CentroidMethod = Union[Literal["km"], Literal["ekm"], Literal["eiasc"], Literal[
 Job = Union[Dict[str, Any], str, "os.PathLike[str]"]
 
 
-class LayerSamples(TypedDict):
-    """``FuzzyCurve.sample``: the parameters ``(m,)`` and each layer ``(m, d)``."""
+class _SevenLayers(TypedDict):
+    """The seven layers of SPEC §1, each sampled."""
 
-    params: Floats
     upper_left: Floats
     primary_left: Floats
     lower_left: Floats
@@ -92,6 +91,12 @@ class LayerSamples(TypedDict):
     lower_right: Floats
     primary_right: Floats
     upper_right: Floats
+
+
+class LayerSamples(_SevenLayers):
+    """``FuzzyCurve.sample``: the parameters ``(m,)`` and each layer ``(m, d)``."""
+
+    params: Floats
 
 
 class AlphaCuts(TypedDict):
@@ -139,19 +144,12 @@ class Distance(TypedDict):
     rms: float
 
 
-class SurfaceLayerSamples(TypedDict):
+class SurfaceLayerSamples(_SevenLayers):
     """``FuzzySurface.sample``: the parameters ``u`` ``(su,)`` and ``v``
     ``(sv,)``, and each layer on the grid ``(su, sv, d)``."""
 
     u: Floats
     v: Floats
-    upper_left: Floats
-    primary_left: Floats
-    lower_left: Floats
-    crisp: Floats
-    lower_right: Floats
-    primary_right: Floats
-    upper_right: Floats
 
 
 class SurfaceStageSamples(TypedDict):

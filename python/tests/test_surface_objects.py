@@ -287,7 +287,7 @@ def test_surface_solution_stages_and_their_surfaces() -> None:
     assert gap.max() <= distance["max"] * (1 + 1e-12)
     at = solution.defuzzified_surface().eval(*distance["max_at"]) - solution.crisp_surface().eval(*distance["max_at"])
     assert np.linalg.norm(at) == pytest.approx(distance["max"], rel=1e-14)
-    assert repr(solution) == ("SurfaceSolution(alpha=0.55, type_reduction=\"paper\", "
+    assert repr(solution) == ("SurfaceSolution(alpha=0.55, type_reduction='paper', "
                               "control_points=(4, 3, 3), degree=(2, 1))")
 
 

@@ -169,7 +169,13 @@ impl Floats {
         let mut index = vec![0; rank];
         let mut out = Vec::with_capacity(count);
         for _ in 0..count {
-            out.push(self.data[index.iter().zip(&strides).map(|(i, s)| i * s).sum::<usize>()]);
+            out.push(
+                self.data[index
+                    .iter()
+                    .zip(&strides)
+                    .map(|(i, s)| i * s)
+                    .sum::<usize>()],
+            );
             // The next multi-index in C order.
             for k in (0..rank).rev() {
                 index[k] += 1;

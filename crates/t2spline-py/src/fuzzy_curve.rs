@@ -14,10 +14,9 @@ use crate::curve_methods::curve_methods;
 use crate::dim::by_dim;
 use crate::errors::compute;
 use crate::fuzzy_methods::{fuzzy_methods, index, numbers};
-use crate::reduction::solve_settings;
 use crate::sample::{at_params, channels, output_buffer, ParamsArg};
 
-fuzzy_methods!("curve", "n" => curve_methods!(PyFuzzyCurve {
+fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
     #[new]
     #[pyo3(signature = (crisp, upper, primary, lower, lower_height, weights=None, knots=None, *, degree=None, order=None))]
     #[allow(clippy::too_many_arguments)]
@@ -122,35 +121,6 @@ fuzzy_methods!("curve", "n" => curve_methods!(PyFuzzyCurve {
             out.set_item(l.name(), layers.get_item(l.index())?)?;
         }
         Ok(out)
-    }
-
-    /// Stages 2–4 at level ``alpha`` (SPEC §7): alpha-cut, type reduction and
-    /// defuzzification of every control point; see ``Solution``.
-    ///
-    /// Parameters
-    /// ----------
-    /// alpha : float, optional
-    ///     The level in ``[0, 1]``; needed by the paper's type reduction
-    ///     only. The others read the whole number: stage 2 is cut at
-    ///     alpha = 0, and an alpha given anyway is checked and set aside with
-    ///     a ``UserWarning``, as ``run`` does.
-    /// type_reduction : {"paper", "centroid", "nie-tan", "alpha-planes"}, optional
-    ///     The type reduction of stages 3–4 (SPEC §10), default ``"paper"``.
-    ///
-    /// Raises
-    /// ------
-    /// ValueError
-    ///     If ``alpha`` is NaN or outside ``[0, 1]``, missing for the
-    ///     paper's reduction, or ``type_reduction`` is unknown.
-    #[pyo3(signature = (alpha=None, type_reduction=None))]
-    fn solve(
-        &self,
-        py: Python<'_>,
-        alpha: Option<f64>,
-        type_reduction: Option<&str>,
-    ) -> PyResult<PySolution> {
-        let (a, reduction) = solve_settings(py, alpha, type_reduction)?;
-        by_dim!(&self.0, |c| compute(py, || Ok(c.solve_with(a, reduction).into())))
     }
 
     fn __repr__(&self) -> String {

@@ -34,16 +34,54 @@ pub(crate) fn index(value: i64, count: usize, name: &str) -> PyResult<usize> {
         })
 }
 
-/// `fuzzy_methods!("kind", "net" => then!(Class, … { methods }))`: the
-/// methods of a fuzzy model whose control points form a net of shape
-/// `(net)` (`"n"`, `"nu, nv"`), added to `methods`, then handed to `then!`
-/// (`curve_methods!` or `surface_methods!`), which writes the
-/// `#[pymethods]` block: `from_job`, `crisp`, `upper`, `primary`, `lower`,
-/// `lower_height`, `layer_control_points`.
+/// `fuzzy_methods!("kind", "net", Solved => then!(Class, … { methods }))`:
+/// the methods of a fuzzy model whose control points form a net of shape
+/// `(net)` (`"n"`, `"nu, nv"`) and whose stages 2–4 are a `Solved`, added to
+/// `methods`, then handed to `then!` (`curve_methods!` or
+/// `surface_methods!`), which writes the `#[pymethods]` block: `from_job`,
+/// `crisp`, `upper`, `primary`, `lower`, `lower_height`,
+/// `layer_control_points`, `solve`.
 macro_rules! fuzzy_methods {
-    ($kind:literal, $net:literal => $then:ident!($class:ident $(, $extra:ident)* { $($own:tt)* })) => {
+    (
+        $kind:literal, $net:literal, $solved:ident =>
+        $then:ident!($class:ident $(, $extra:ident)* { $($own:tt)* })
+    ) => {
         $then!($class $(, $extra)* {
             $($own)*
+
+            /// Stages 2–4 at level ``alpha`` (SPEC §7, §9): alpha-cut, type
+            /// reduction and defuzzification of every control point, as a
+            /// ``Solution`` (of a curve) or a ``SurfaceSolution`` (of a
+            /// surface).
+            ///
+            /// Parameters
+            /// ----------
+            /// alpha : float, optional
+            ///     The level in ``[0, 1]``; needed by the paper's type reduction
+            ///     only. The others read the whole number: stage 2 is cut at
+            ///     alpha = 0, and an alpha given anyway is checked and set aside
+            ///     with a ``UserWarning``, as ``run`` does.
+            /// type_reduction : {"paper", "centroid", "nie-tan", "alpha-planes"}, optional
+            ///     The type reduction of stages 3–4 (SPEC §10), default
+            ///     ``"paper"``.
+            ///
+            /// Raises
+            /// ------
+            /// ValueError
+            ///     If ``alpha`` is NaN or outside ``[0, 1]``, missing for the
+            ///     paper's reduction, or ``type_reduction`` is unknown.
+            #[pyo3(signature = (alpha=None, type_reduction=None))]
+            fn solve(
+                &self,
+                py: Python<'_>,
+                alpha: Option<f64>,
+                type_reduction: Option<&str>,
+            ) -> PyResult<$solved> {
+                let (a, reduction) = $crate::reduction::solve_settings(py, alpha, type_reduction)?;
+                $crate::dim::by_dim!(&self.0, |c| $crate::errors::compute(py, || Ok(c
+                    .solve_with(a, reduction)
+                    .into())))
+            }
 
             #[doc = concat!("The fuzzy ", $kind, " of a job: a dict with the keys of a job file, or the")]
             /// path of one (validated as by ``t2spline run``).

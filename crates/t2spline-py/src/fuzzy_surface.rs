@@ -13,11 +13,10 @@ use crate::construct::{layer, net_weights, rows, surface_degrees, FuzzyArrays, P
 use crate::dim::by_dim;
 use crate::errors::compute;
 use crate::fuzzy_methods::{fuzzy_methods, index, numbers};
-use crate::reduction::solve_settings;
 use crate::sample::{at_pairs, GridArg};
 use crate::surface_methods::surface_methods;
 
-fuzzy_methods!("surface", "nu, nv" => surface_methods!(PyFuzzySurface, PyFuzzyCurve {
+fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzzySurface, PyFuzzyCurve {
     #[new]
     #[pyo3(signature = (crisp, upper, primary, lower, lower_height, weights=None, knots_u=None, knots_v=None, *, degree=None, order=None))]
     #[allow(clippy::too_many_arguments)]
@@ -140,36 +139,6 @@ fuzzy_methods!("surface", "nu, nv" => surface_methods!(PyFuzzySurface, PyFuzzyCu
             out.set_item(l.name(), layers.get_item(l.index())?)?;
         }
         Ok(out)
-    }
-
-    /// Stages 2–4 at level ``alpha`` on the control net (SPEC §7, §9):
-    /// alpha-cut, type reduction and defuzzification of every control point;
-    /// see ``SurfaceSolution``.
-    ///
-    /// Parameters
-    /// ----------
-    /// alpha : float, optional
-    ///     The level in ``[0, 1]``; needed by the paper's type reduction
-    ///     only. The others read the whole number: stage 2 is cut at
-    ///     alpha = 0, and an alpha given anyway is checked and set aside with
-    ///     a ``UserWarning``, as ``run`` does.
-    /// type_reduction : {"paper", "centroid", "nie-tan", "alpha-planes"}, optional
-    ///     The type reduction of stages 3–4 (SPEC §10), default ``"paper"``.
-    ///
-    /// Raises
-    /// ------
-    /// ValueError
-    ///     If ``alpha`` is NaN or outside ``[0, 1]``, missing for the
-    ///     paper's reduction, or ``type_reduction`` is unknown.
-    #[pyo3(signature = (alpha=None, type_reduction=None))]
-    fn solve(
-        &self,
-        py: Python<'_>,
-        alpha: Option<f64>,
-        type_reduction: Option<&str>,
-    ) -> PyResult<PySurfaceSolution> {
-        let (a, reduction) = solve_settings(py, alpha, type_reduction)?;
-        by_dim!(&self.0, |s| compute(py, || Ok(s.solve_with(a, reduction).into())))
     }
 
     fn __repr__(&self) -> String {

@@ -11,9 +11,7 @@ use t2spline::{Direction, NurbsSurface};
 
 use crate::arrays::{coords_last, floats, optional_vector, Floats};
 use crate::classes::{PyNurbsCurve, PyNurbsSurface};
-use crate::construct::{
-    count, knot_vector, net_weights, rows, surface_degrees, PerDirection,
-};
+use crate::construct::{count, knot_vector, net_weights, rows, surface_degrees, PerDirection};
 use crate::dim::{by_dim, ByDim};
 use crate::errors::compute;
 use crate::net::{points_array, Net};

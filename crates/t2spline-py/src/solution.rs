@@ -14,7 +14,7 @@ use crate::errors::compute;
 use crate::sample::{check_output, ParamsArg};
 use crate::stage_methods::{stage_methods, stage_samples};
 
-stage_methods!(PySolution, fuzzy_curve {
+stage_methods!(PySolution, fuzzy_curve, "n" {
     /// The fuzzy curve (stage 1) this solves.
     #[getter]
     fn fuzzy_curve(&self) -> PyFuzzyCurve {

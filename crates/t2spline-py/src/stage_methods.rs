@@ -47,13 +47,14 @@ pub(crate) fn stage_samples<const D: usize>(
     Ok(())
 }
 
-/// `stage_methods!(Class, model { methods })`: the `#[pymethods]` block of
-/// `Class` (a wrapper of a `ByDim` of solutions whose fuzzy model the core
-/// gives by the method `model`) with its own `methods` and the shared ones:
+/// `stage_methods!(Class, model, "net" { methods })`: the `#[pymethods]`
+/// block of `Class` (a wrapper of a `ByDim` of solutions whose fuzzy model
+/// the core gives by the method `model`, with control points in a net of
+/// shape `(net)`) with its own `methods` and the shared ones:
 /// `alpha`, `type_reduction`, `crisp`, `alpha_cut`, `type_reduced_left`,
 /// `type_reduced_right`, `defuzzified`.
 macro_rules! stage_methods {
-    ($class:ident, $model:ident { $($own:tt)* }) => {
+    ($class:ident, $model:ident, $net:literal { $($own:tt)* }) => {
         #[pyo3::pymethods]
         impl $class {
             $($own)*
@@ -72,7 +73,7 @@ macro_rules! stage_methods {
                 $crate::dim::by_dim!(&self.0, |s| s.type_reduction().name())
             }
 
-            /// The crisp control points, shape net + ``(d,)``.
+            #[doc = concat!("The crisp control points, shape ``(", $net, ", d)``.")]
             #[getter]
             fn crisp<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
                 $crate::dim::by_dim!(&self.0, |s| self.net_array(
@@ -82,7 +83,7 @@ macro_rules! stage_methods {
             }
 
             /// Stage 2: the alpha-cut ends of every control point, a dict of the
-            /// six non-crisp layer names to arrays of shape net + ``(d,)``. A
+            #[doc = concat!("six non-crisp layer names to arrays of shape ``(", $net, ", d)``. A")]
             /// lower end is NaN where alpha is above that number's lower height
             /// (the cut is absent, SPEC §2.2).
             #[getter]
@@ -104,7 +105,7 @@ macro_rules! stage_methods {
                 Ok(out)
             }
 
-            /// Stage 3: the left type-reduced control points, shape net + ``(d,)``.
+            #[doc = concat!("Stage 3: the left type-reduced control points, shape ``(", $net, ", d)``.")]
             #[getter]
             fn type_reduced_left<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
                 $crate::dim::by_dim!(&self.0, |s| self.net_array(
@@ -113,8 +114,7 @@ macro_rules! stage_methods {
                 ))
             }
 
-            /// Stage 3: the right type-reduced control points, shape net +
-            /// ``(d,)``.
+            #[doc = concat!("Stage 3: the right type-reduced control points, shape ``(", $net, ", d)``.")]
             #[getter]
             fn type_reduced_right<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
                 $crate::dim::by_dim!(&self.0, |s| self.net_array(
@@ -123,7 +123,7 @@ macro_rules! stage_methods {
                 ))
             }
 
-            /// Stage 4: the defuzzified control points, shape net + ``(d,)``.
+            #[doc = concat!("Stage 4: the defuzzified control points, shape ``(", $net, ", d)``.")]
             #[getter]
             fn defuzzified<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
                 $crate::dim::by_dim!(&self.0, |s| self.net_array(

@@ -13,7 +13,7 @@ use crate::errors::compute;
 use crate::sample::GridArg;
 use crate::stage_methods::{stage_methods, stage_samples};
 
-stage_methods!(PySurfaceSolution, fuzzy_surface {
+stage_methods!(PySurfaceSolution, fuzzy_surface, "nu, nv" {
     /// The fuzzy surface (stage 1) this solves.
     #[getter]
     fn fuzzy_surface(&self) -> PyFuzzySurface {
@@ -113,7 +113,7 @@ stage_methods!(PySurfaceSolution, fuzzy_surface {
             let surface = s.fuzzy_surface();
             let ([p, q], [nu, nv]) = (surface.degree(), surface.shape());
             format!(
-                "SurfaceSolution(alpha={:?}, type_reduction={:?}, control_points=({nu}, {nv}, {}), degree=({p}, {q}))",
+                "SurfaceSolution(alpha={:?}, type_reduction='{}', control_points=({nu}, {nv}, {}), degree=({p}, {q}))",
                 s.alpha().get(),
                 s.type_reduction().name(),
                 self.0.dimension(),
