@@ -1,4 +1,4 @@
-"""t2spline — normal type-2 fuzzy rational B-spline curves, numpy in and out.
+"""t2spline — normal type-2 fuzzy rational B-spline curves and surfaces, numpy in and out.
 
 Models uncertain data with rational B-spline curves whose control points are
 normal triangular type-2 fuzzy numbers (Zakaria, Wahab and Gobithaasan,
@@ -42,7 +42,15 @@ NurbsCurve
     degree elevation, splitting, arc length, closest point.
 FuzzyCurve, Solution
     Stage 1 from numpy arrays, sampled by the engine; stages 2–4 by
-    ``FuzzyCurve.solve(alpha)``.
+    ``FuzzyCurve.solve(alpha, type_reduction=)``.
+NurbsSurface
+    A rational B-spline surface (SPEC §9): evaluation broadcast over ``u``
+    and ``v``, grids by the grid engine, partial derivatives, normal,
+    isocurves, knot insertion, degree elevation, splitting.
+FuzzySurface, SurfaceSolution
+    A net of fuzzy control points and its seven layer surfaces; stages 2–4
+    on the net by ``FuzzySurface.solve(alpha, type_reduction=)``, and the
+    distance between the crisp and the defuzzified surface.
 centroid
     The centroid ``[c_l, c_r]`` of an interval type-2 set given by samples
     (Karnik–Mendel, EKM, EIASC, or the Nie–Tan value).
@@ -88,9 +96,12 @@ from ._t2spline import (
     AlphaCut,
     FuzzyCurve,
     FuzzyNumber,
+    FuzzySurface,
     JobError,
     NurbsCurve,
+    NurbsSurface,
     Solution,
+    SurfaceSolution,
     __version__,
     benchmark_curve,
     centroid,
@@ -102,9 +113,12 @@ __all__ = [
     "AlphaCut",
     "FuzzyCurve",
     "FuzzyNumber",
+    "FuzzySurface",
     "JobError",
     "NurbsCurve",
+    "NurbsSurface",
     "Solution",
+    "SurfaceSolution",
     "__version__",
     "benchmark_curve",
     "centroid",

@@ -25,6 +25,7 @@ __all__ = [
     "Centroid",
     "CentroidMethod",
     "Deviation",
+    "DirectionName",
     "Distance",
     "FitSummary",
     "Floats",
@@ -32,8 +33,12 @@ __all__ = [
     "LayerDeviations",
     "LayerName",
     "LayerSamples",
+    "PerDirection",
     "SideName",
     "StageSamples",
+    "SurfaceDistance",
+    "SurfaceLayerSamples",
+    "SurfaceStageSamples",
     "TypeReductionName",
     "Which",
 ]
@@ -57,6 +62,13 @@ Which = Union[Literal["upper"], Literal["primary"], Literal["lower"]]
 #: A side of a type-reduced number.
 SideName = Union[Literal["left"], Literal["right"]]
 
+#: A parameter direction of a surface: ``u`` along the rows of the net,
+#: ``v`` along its columns.
+DirectionName = Union[Literal["u"], Literal["v"]]
+
+#: One value for both directions of a surface, or ``(u, v)``.
+PerDirection = Union[int, Tuple[int, int]]
+
 #: A type reduction of stages 3–4 (SPEC §10), as in a job's ``"type_reduction"``.
 TypeReductionName = Union[
     Literal["paper"], Literal["centroid"], Literal["nie-tan"], Literal["alpha-planes"],
@@ -69,10 +81,9 @@ CentroidMethod = Union[Literal["km"], Literal["ekm"], Literal["eiasc"], Literal[
 Job = Union[Dict[str, Any], str, "os.PathLike[str]"]
 
 
-class LayerSamples(TypedDict):
-    """``FuzzyCurve.sample``: the parameters ``(m,)`` and each layer ``(m, d)``."""
+class _SevenLayers(TypedDict):
+    """The seven layers of SPEC §1, each sampled."""
 
-    params: Floats
     upper_left: Floats
     primary_left: Floats
     lower_left: Floats
@@ -82,9 +93,16 @@ class LayerSamples(TypedDict):
     upper_right: Floats
 
 
+class LayerSamples(_SevenLayers):
+    """``FuzzyCurve.sample``: the parameters ``(m,)`` and each layer ``(m, d)``."""
+
+    params: Floats
+
+
 class AlphaCuts(TypedDict):
-    """``Solution.alpha_cut``: each layer's cut control points ``(n, d)``, NaN
-    where a lower cut is absent."""
+    """``Solution.alpha_cut``: each layer's cut control points ``(n, d)``
+    (``SurfaceSolution.alpha_cut``: ``(nu, nv, d)``), NaN where a lower cut
+    is absent."""
 
     upper_left: Floats
     primary_left: Floats
@@ -95,8 +113,9 @@ class AlphaCuts(TypedDict):
 
 
 class AlphaCutCurves(TypedDict):
-    """The sampled alpha-cut curves ``(m, d)``; ``None`` for a lower layer that
-    some number does not have at this alpha."""
+    """The sampled alpha-cut curves ``(m, d)`` (or surfaces ``(su, sv, d)``);
+    ``None`` for a lower layer that some number does not have at this
+    alpha."""
 
     upper_left: Floats
     primary_left: Floats
@@ -122,6 +141,36 @@ class Distance(TypedDict):
 
     max: float
     max_at: float
+    rms: float
+
+
+class SurfaceLayerSamples(_SevenLayers):
+    """``FuzzySurface.sample``: the parameters ``u`` ``(su,)`` and ``v``
+    ``(sv,)``, and each layer on the grid ``(su, sv, d)``."""
+
+    u: Floats
+    v: Floats
+
+
+class SurfaceStageSamples(TypedDict):
+    """``SurfaceSolution.sample``: the surfaces of stages 2–4 on the grid
+    ``u × v``, each ``(su, sv, d)``."""
+
+    u: Floats
+    v: Floats
+    alpha_cut: AlphaCutCurves
+    type_reduced_left: Floats
+    type_reduced_right: Floats
+    defuzzified: Floats
+
+
+class SurfaceDistance(TypedDict):
+    """``SurfaceSolution.distance``: the largest distance (and its ``(u,
+    v)``) and the root mean square distance between the crisp and the
+    defuzzified surface."""
+
+    max: float
+    max_at: Tuple[float, float]
     rms: float
 
 

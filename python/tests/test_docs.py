@@ -1,11 +1,12 @@
 """The documentation runs: every example in the docstrings (the extension's,
-the package's, the plotting module's) and the notebook-style example in
-`docs/`."""
+the package's, the plotting module's), the interactive examples (`>>>`) of
+`docs/python.md`, and the notebook-style example in `docs/`."""
 
 from __future__ import annotations
 
 import doctest
 import inspect
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -38,6 +39,18 @@ def test_docstring_examples(module: ModuleType, least: int) -> None:
     assert failed == 0
     # The examples are there: a finder that found nothing would pass as well.
     assert attempted >= least
+
+
+def test_the_examples_of_the_python_page(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The `>>>` examples of docs/python.md, run from the repository root
+    (they read `examples/`)."""
+    monkeypatch.chdir(ROOT)
+    failed, attempted = doctest.testfile(
+        os.fspath(ROOT / "docs" / "python.md"), module_relative=False,
+        optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE, report=True,
+    )
+    assert failed == 0
+    assert attempted >= 15
 
 
 def test_every_public_item_has_a_docstring() -> None:

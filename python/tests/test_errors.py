@@ -315,3 +315,115 @@ def test_a_panic_becomes_a_runtime_error_and_python_goes_on() -> None:
     with pytest.raises(RuntimeError, match=r"^internal error: the Rust code panicked: boom \(please report"):
         t2spline._t2spline._panic_for_tests("boom")
     assert t2spline.run(EXAMPLE, samples=2)["curves"]["crisp"].shape == (2, 2)
+
+
+# --- surfaces: arguments and methods name their place ------------------------
+
+NET = np.array([[[0, 0, 0], [0, 1, 0], [0, 2, 1]],
+                [[1, 0, 0], [1, 1, 1], [1, 2, 0]],
+                [[2, 0, 1], [2, 1, 0], [2, 2, 2]]], dtype=float)
+
+
+def nurbs_surface(**changes: Any) -> t2spline.NurbsSurface:
+    args: Dict[str, Any] = dict(control_points=NET, degree=1)
+    args.update(changes)
+    return t2spline.NurbsSurface(**args)
+
+
+def fuzzy_surface(**changes: Any) -> t2spline.FuzzySurface:
+    args: Dict[str, Any] = dict(
+        crisp=NET, upper=NET[..., None] + S, primary=NET[..., None] + 0.5 * S,
+        lower=NET[..., None] + 0.2 * S, lower_height=0.6, degree=1,
+    )
+    args.update(changes)
+    return t2spline.FuzzySurface(**args)
+
+
+@pytest.mark.parametrize(
+    "make, changes, kind, message",
+    [
+        (nurbs_surface, {"control_points": NET[0]}, ValueError,
+         "control_points: expected shape (nu, nv, 2) or (nu, nv, 3): a net of nu × nv points in the "
+         "plane or in space, got (3, 3)"),
+        (nurbs_surface, {"control_points": NET.astype(str)}, TypeError,
+         "control_points: expected real numbers (float64)"),
+        (nurbs_surface, {"control_points": np.where(NET == 2, 1e300, NET)}, ValueError,
+         "points[0][2].y: coordinate = 1e300 is outside [-1e150, 1e150]"),
+        (nurbs_surface, {"weights": np.ones((3, 2))}, ValueError,
+         "weights: expected shape (3, 3): one per control point of the net, got (3, 2)"),
+        (nurbs_surface, {"weights": [[1, 1, 1], [0, 1, 1], [1, 1, 1]]}, ValueError,
+         "weights[1][0] = 0 must be finite and greater than 0"),
+        (nurbs_surface, {"weights": [[1, 1, 1], [1, 1, 1], [1, np.nan, 1]]}, ValueError,
+         "weights[2, 1] = NaN is not a finite number"),
+        (nurbs_surface, {"degree": (1, 3)}, ValueError,
+         "points: a surface of order 4 in v needs at least 4 control points along v, got 3"),
+        (nurbs_surface, {"degree": (1, 40)}, ValueError, "degree[1]: 40 is outside [0, 31]"),
+        (nurbs_surface, {"degree": 40}, ValueError, "degree: 40 is outside [0, 31]"),
+        (nurbs_surface, {"degree": None}, ValueError,
+         "degree[0]: missing: give degree or order (or knots_u)"),
+        (nurbs_surface, {"degree": None, "knots_u": [0, 0, 0.5, 1, 1]}, ValueError,
+         "degree[1]: missing: give degree or order (or knots_v)"),
+        (nurbs_surface, {"order": (2, 0), "degree": None}, ValueError, "order[1]: 0 is outside [1, 32]"),
+        (nurbs_surface, {"order": 2}, ValueError, "degree, order: give one of them, not both"),
+        (nurbs_surface, {"knots_v": [0, 0, 0.7, 0.2, 1]}, ValueError,
+         "knots.v[3] = 0.2 is less than knots.v[2] = 0.7"),
+        (nurbs_surface, {"knots_v": [0, 0, 0.5, 1]}, ValueError,
+         "knots.v: expected 5 values (columns + order in v), got 4"),
+        (fuzzy_surface, {"crisp": NET[0]}, ValueError,
+         "crisp: expected shape (nu, nv, 2) or (nu, nv, 3)"),
+        (fuzzy_surface, {"upper": NET}, ValueError,
+         "upper: expected shape (3, 3, 3, 2): [left, right] per coordinate of crisp, got (3, 3, 3)"),
+        (fuzzy_surface, {"lower_height": [0.5, 0.6]}, ValueError,
+         "lower_height: expected a number or an array that broadcasts to shape (3, 3, 3)"),
+        (fuzzy_surface, {"lower": NET[..., None] + np.array([0.1, 0.2])}, ValueError,
+         "points[0][0].x: the order lower.left <= crisp is broken: 0.1 > 0"),
+        (fuzzy_surface, {"lower_height": np.where(np.arange(3) == 2, 1.5, 0.5)}, ValueError,
+         "points[0][0].z: lower_height = 1.5 is outside (0, 1]"),
+        (fuzzy_surface, {"weights": [[1, 1, 1], [1, -1, 1], [1, 1, 1]]}, ValueError,
+         "weights[1][1] = -1 must be finite and greater than 0"),
+        (fuzzy_surface, {"knots_u": [0, 0, 1, 1]}, ValueError,
+         "knots.u: expected 5 values (rows + order in u), got 4"),
+    ],
+)
+def test_surface_arguments(make: Callable[..., Any], changes: Dict[str, Any], kind: type, message: str) -> None:
+    with pytest.raises(kind) as e:
+        make(**changes)
+    assert str(e.value).startswith(message), str(e.value)
+
+
+@pytest.mark.parametrize(
+    "call, message",
+    [
+        (lambda s: s.crisp_surface().eval(0.5, 2.0), "parameter v = 2 is outside the domain [0, 1]"),
+        (lambda s: s.crisp_surface().eval(np.nan, 0.5), "u = NaN is not a finite number"),
+        (lambda s: s.crisp_surface().eval([0.1, 0.2], [0.1, 0.2, 0.3]),
+         "u, v: shapes (2,) and (3,) do not broadcast together"),
+        (lambda s: s.eval_layers(0.5, [[0.1, 2.0]]), "parameter v = 2 is outside the domain [0, 1]"),
+        (lambda s: s.sample(10**6, 10**6), "u, v: a grid of 1000000 × 1000000 parameters would take"),
+        (lambda s: s.solve(0.5).sample(10**6, 10**6), "u, v: a grid of 1000000 × 1000000 parameters"),
+        (lambda s: s.crisp_surface().sample(-1, 3), "u: a count of uniform parameters must be at least 0"),
+        (lambda s: s.sample(3, [[0.5]]), "v: expected a count (int) or a 1-D array of parameters"),
+        (lambda s: s.sample([0.5, 1.5], 3), "parameter u = 1.5 is outside the domain [0, 1]"),
+        (lambda s: s.uniform_params(3, -2), "count_v: must be at least 0, got -2"),
+        (lambda s: s.insert_knot("w", 0.5), "direction: expected 'u' or 'v', got \"w\""),
+        (lambda s: s.crisp_surface().insert_knot("u", 0.5, times=3), "in u: cannot insert knot 0.5 3 times"),
+        (lambda s: s.insert_knot("v", 1.5), "parameter v = 1.5 is outside the domain [0, 1]"),
+        (lambda s: s.elevate_degree("v", times=0), "times: must be at least 1, got 0"),
+        (lambda s: s.split_at("u", 1.0), "cannot split at u = 1: it must lie strictly inside"),
+        (lambda s: s.isocurve("v", -0.1), "parameter v = -0.1 is outside the domain [0, 1]"),
+        (lambda s: s.crisp_surface().derivatives(0.5, 0.5, order=65), "derivative order = 65 is outside"),
+        (lambda s: s.point(3, 0), "i: 3 is outside [0, 2]"),
+        (lambda s: s.point(0, -1), "j: -1 is outside [0, 2]"),
+        (lambda s: s.layer_surface("upper"), "layer: expected one of upper_left, "),
+        (lambda s: s.solve(0.5).type_reduced_surface("middle"), "side: expected 'left' or 'right'"),
+        (lambda s: s.solve(0.5).alpha_cut_surface("crispy"), "layer: expected one of"),
+        (lambda s: s.solve(1.5), "alpha = 1.5 is outside [0, 1]"),
+        (lambda s: t2spline.NurbsSurface([[[0, 0, 0], [0, 1, 0]], [[0, 0, 0], [0, 1, 0]]], degree=1)
+         .normal(0.5, 0.5),
+         "the normal at (u, v) = (0.5, 0.5) is undefined: the partial derivatives are parallel or zero"),
+    ],
+)
+def test_surface_method_arguments(call: Callable[[t2spline.FuzzySurface], Any], message: str) -> None:
+    with pytest.raises(ValueError) as e:
+        call(fuzzy_surface())
+    assert str(e.value).startswith(message), str(e.value)

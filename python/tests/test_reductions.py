@@ -1,5 +1,6 @@
 """Type reductions from Python (SPEC §10): `run`'s `type_reduction=` and the
-job key equal `t2spline run --type-reduction` bit for bit, an unused alpha is
+job key equal `t2spline run --type-reduction` bit for bit, `solve(alpha,
+type_reduction=)` of curves and surfaces equals `run`'s, an unused alpha is
 warned about, and `centroid` of sampled sets against a brute force over every
 switch point and against the exact centroid of a number."""
 
@@ -15,7 +16,7 @@ import pytest
 
 import t2spline
 
-from conftest import EXAMPLE, assert_same, cli_run
+from conftest import EXAMPLE, assert_same, bits, cli_run
 
 REDUCTIONS: List[Any] = ["paper", "centroid", "nie-tan", "alpha-planes"]
 
@@ -79,6 +80,65 @@ def test_an_alpha_that_is_not_used_is_warned_about() -> None:
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         t2spline.run(EXAMPLE, type_reduction="paper", alpha=0.3)
+
+
+TERRAIN = EXAMPLE.parent / "fuzzy-terrain.json"
+
+
+@pytest.mark.parametrize("name", REDUCTIONS)
+@pytest.mark.parametrize("kind", ["curve", "surface"])
+def test_solve_takes_the_reduction_as_run_takes_it(kind: str, name: Any) -> None:
+    """The solution of `solve(alpha, type_reduction=name)` is the run's with
+    `type_reduction=name`, to the bit: the distance, the control points of
+    stages 3–4, the sampled defuzzified curve or surface."""
+    job = EXAMPLE if kind == "curve" else TERRAIN
+    alpha = json.loads(job.read_text())["alpha"]
+    r = t2spline.run(job, type_reduction=name)
+    if kind == "curve":
+        solution: Any = t2spline.FuzzyCurve.from_job(job).solve(alpha, type_reduction=name)
+        samples = solution.sample(len(r["curves"]["params"]))
+        assert np.array_equal(bits(samples["defuzzified"]), bits(r["curves"]["defuzzified"]))
+    else:
+        solution = t2spline.FuzzySurface.from_job(job).solve(alpha, type_reduction=name)
+        grids = r["surfaces"]
+        samples = solution.sample(len(grids["params"]["u"]), len(grids["params"]["v"]))
+        assert np.array_equal(bits(samples["defuzzified"]), bits(grids["defuzzified"]))
+    assert solution.type_reduction == name
+    assert solution.alpha == r["alpha"] == (alpha if name == "paper" else 0.0)
+    d = solution.distance()
+    got = np.array([d["max"], d["rms"], *np.atleast_1d(d["max_at"])])
+    want = np.array([r["error"]["max"], r["error"]["rms"], *np.atleast_1d(r["error"]["max_at"])])
+    assert np.array_equal(bits(got), bits(want))
+    cps = r["control_points"]
+    for key in ("type_reduced_left", "type_reduced_right", "defuzzified"):
+        assert np.array_equal(bits(getattr(solution, key)), bits(cps[key])), key
+    for layer, values in cps["alpha_cut"].items():
+        assert np.array_equal(bits(solution.alpha_cut[layer]), bits(values)), layer
+
+
+def test_the_reductions_of_solve_differ_as_docs_reductions_says() -> None:
+    curve = t2spline.FuzzyCurve.from_job(EXAMPLE)
+    maxima = {name: round(curve.solve(0.8, name).distance()["max"], 6) for name in REDUCTIONS}
+    assert maxima == {"paper": 0.022439, "centroid": 0.106747, "nie-tan": 0.123455,
+                      "alpha-planes": 0.096948}
+
+
+def test_solve_warns_about_an_alpha_it_does_not_use() -> None:
+    for model in (t2spline.FuzzyCurve.from_job(EXAMPLE), t2spline.FuzzySurface.from_job(TERRAIN)):
+        with pytest.warns(UserWarning, match="centroid does not use alpha; alpha=0.3 is ignored"):
+            solution = model.solve(0.3, type_reduction="centroid")
+        assert solution.alpha == 0.0
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            assert model.solve(type_reduction="nie-tan").alpha == 0.0
+            assert model.solve(0.3).alpha == 0.3
+            assert model.solve(alpha=0.3, type_reduction="paper").type_reduction == "paper"
+        with pytest.raises(ValueError, match="^alpha: missing: the paper's type reduction needs"):
+            model.solve()
+        with pytest.raises(ValueError, match=r"^alpha = 1.5 is outside \[0, 1\]"):
+            model.solve(1.5, type_reduction="centroid")  # checked even when unused
+        with pytest.raises(ValueError, match="^type_reduction: unknown type reduction `nietan`"):
+            model.solve(0.3, type_reduction="nietan")  # type: ignore[arg-type]
 
 
 def test_an_unknown_reduction_is_a_value_error() -> None:

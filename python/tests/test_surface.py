@@ -1,6 +1,8 @@
 """Surface jobs from Python: `t2spline.run` equals `t2spline run` bit for
 bit on the shipped surface examples, grids come back as `(su, sv, d)`
-arrays, and a broken surface job gives the CLI's problem lines."""
+arrays, a broken surface job gives the CLI's problem lines, and
+`FuzzySurface.from_job(job).solve(alpha)` is the run's solution to the
+bit."""
 
 from __future__ import annotations
 
@@ -14,7 +16,7 @@ import pytest
 
 import t2spline
 
-from conftest import ROOT, assert_same, cli_errors, cli_run
+from conftest import ROOT, assert_same, bits, cli_errors, cli_run
 
 TERRAIN = ROOT / "examples" / "fuzzy-terrain.json"
 CYLINDER = ROOT / "examples" / "fuzzy-cylinder.json"
@@ -79,3 +81,53 @@ def test_a_broken_surface_job_gives_the_cli_lines(cli: Path, tmp_path: Path) -> 
 def test_one_sample_in_a_direction_is_refused() -> None:
     with pytest.raises(ValueError, match="samples"):
         t2spline.run(TERRAIN, samples=(1, 5))
+
+
+@pytest.mark.parametrize("example", [TERRAIN, CYLINDER], ids=["terrain", "cylinder"])
+def test_fuzzy_surface_solve_equals_run_bit_for_bit(example: Path) -> None:
+    """`FuzzySurface.from_job(job).solve(alpha)` is the run's solution: the
+    distance, every control net of stages 2–4 and every grid, to the bit."""
+    r = t2spline.run(example)
+    surface = t2spline.FuzzySurface.from_job(example)
+    solution = surface.solve(json.loads(example.read_text())["alpha"])
+    d = solution.distance()
+    got = np.array([d["max"], d["rms"], *d["max_at"]])
+    want = np.array([r["error"]["max"], r["error"]["rms"], *r["error"]["max_at"]])
+    assert np.array_equal(bits(got), bits(want))
+    assert d["max"] > 0 and d["rms"] > 0
+    assert np.array_equal(surface.weights, r["weights"])
+    assert np.array_equal(surface.knots_u, r["knots"]["u"]) and np.array_equal(surface.knots_v, r["knots"]["v"])
+    assert [surface.degree_u, surface.degree_v] == r["degree"]
+    cps = r["control_points"]
+    for key in ("crisp", "type_reduced_left", "type_reduced_right", "defuzzified"):
+        assert np.array_equal(bits(getattr(solution, key)), bits(cps[key])), key
+    for name, values in cps["alpha_cut"].items():
+        assert np.array_equal(bits(solution.alpha_cut[name]), bits(values)), name
+    for name, values in cps["layers"].items():
+        assert np.array_equal(surface.layer_control_points(name), values), name
+    grids = r["surfaces"]
+    su, sv = len(grids["params"]["u"]), len(grids["params"]["v"])
+    layers = surface.sample(su, sv)
+    assert np.array_equal(layers["u"], grids["params"]["u"]) and np.array_equal(layers["v"], grids["params"]["v"])
+    assert np.array_equal(bits(layers["crisp"]), bits(grids["crisp"]))
+    for name, grid in grids["layers"].items():
+        assert np.array_equal(bits(layers[name]), bits(grid)), name
+    stages = solution.sample(su, sv)
+    assert np.array_equal(bits(stages["defuzzified"]), bits(grids["defuzzified"]))
+    assert np.array_equal(bits(stages["type_reduced_left"]), bits(grids["type_reduced"]["left"]))
+    assert np.array_equal(bits(stages["type_reduced_right"]), bits(grids["type_reduced"]["right"]))
+    for name, grid in grids["alpha_cut"].items():
+        assert np.array_equal(bits(stages["alpha_cut"][name]), bits(grid)), name
+
+
+def test_from_job_takes_a_dict_and_refuses_a_curve() -> None:
+    job = json.loads(TERRAIN.read_text())
+    assert t2spline.FuzzySurface.from_job(job) == t2spline.FuzzySurface.from_job(TERRAIN)
+    with pytest.raises(ValueError, match=r"the job is not a surface$"):
+        t2spline.FuzzySurface.from_job(ROOT / "examples" / "paper-alg-1-1.json")
+    with pytest.raises(ValueError, match=r"^<dict>: the job is not a curve$"):
+        t2spline.FuzzyCurve.from_job(job)
+    broken = copy.deepcopy(job)
+    broken["points"][3].pop()
+    with pytest.raises(t2spline.JobError):
+        t2spline.FuzzySurface.from_job(broken)

@@ -117,13 +117,75 @@ impl Floats {
     /// # Errors
     /// `ValueError` naming `name` for any other shape.
     pub(crate) fn points_shape(&self, name: &str) -> PyResult<(usize, usize)> {
-        match self.shape[..] {
-            [n, d @ (2 | 3)] => Ok((n, d)),
-            _ => Err(PyValueError::new_err(format!(
-                "{name}: expected shape (n, 2) or (n, 3): n points in the plane or in space, got {}",
-                shape_text(&self.shape)
-            ))),
+        let (net, d) = self.net_shape(name, 1)?;
+        Ok((net[0], d))
+    }
+
+    /// The net and the dimension `d` of an array of points in the plane or
+    /// in space: `(n, d)` for a curve (`rank` 1), `(nu, nv, d)` for a
+    /// surface (`rank` 2).
+    ///
+    /// # Errors
+    /// `ValueError` naming `name` for any other shape.
+    pub(crate) fn net_shape(&self, name: &str, rank: usize) -> PyResult<(Vec<usize>, usize)> {
+        match self.shape.split_last() {
+            Some((&d @ (2 | 3), net)) if net.len() == rank => Ok((net.to_vec(), d)),
+            _ => {
+                let (net, what) = match rank {
+                    1 => ("n", "n points"),
+                    _ => ("nu, nv", "a net of nu × nv points"),
+                };
+                Err(PyValueError::new_err(format!(
+                    "{name}: expected shape ({net}, 2) or ({net}, 3): {what} in the plane or in space, got {}",
+                    shape_text(&self.shape)
+                )))
+            }
         }
+    }
+
+    /// The values broadcast to `shape` by numpy's rule (trailing dimensions
+    /// equal or 1, missing leading ones added), in C order; `None` if they
+    /// do not broadcast.
+    pub(crate) fn broadcast_to(&self, shape: &[usize]) -> Option<Vec<f64>> {
+        let rank = shape.len();
+        if self.shape.len() > rank {
+            return None;
+        }
+        let mut dims = vec![1; rank];
+        dims[rank - self.shape.len()..].copy_from_slice(&self.shape);
+        if dims.iter().zip(shape).any(|(&g, &s)| g != s && g != 1) {
+            return None;
+        }
+        // The stride of each dimension in the data, 0 where it is repeated.
+        let mut strides = vec![0; rank];
+        let mut stride = 1;
+        for k in (0..rank).rev() {
+            if dims[k] != 1 {
+                strides[k] = stride;
+            }
+            stride *= dims[k];
+        }
+        let count: usize = shape.iter().product();
+        let mut index = vec![0; rank];
+        let mut out = Vec::with_capacity(count);
+        for _ in 0..count {
+            out.push(
+                self.data[index
+                    .iter()
+                    .zip(&strides)
+                    .map(|(i, s)| i * s)
+                    .sum::<usize>()],
+            );
+            // The next multi-index in C order.
+            for k in (0..rank).rev() {
+                index[k] += 1;
+                if index[k] < shape[k] {
+                    break;
+                }
+                index[k] = 0;
+            }
+        }
+        Some(out)
     }
 
     /// The rows of an `(n, D)` array as points.
@@ -133,6 +195,20 @@ impl Floats {
             .map(|r| std::array::from_fn(|d| r[d]))
             .collect()
     }
+}
+
+/// The shape that arrays of shapes `a` and `b` broadcast to (numpy's rule);
+/// `None` if they do not.
+pub(crate) fn broadcast_shape(a: &[usize], b: &[usize]) -> Option<Vec<usize>> {
+    let rank = a.len().max(b.len());
+    let dim = |s: &[usize], k: usize| (k + s.len()).checked_sub(rank).map_or(1, |i| s[i]);
+    (0..rank)
+        .map(|k| match (dim(a, k), dim(b, k)) {
+            (x, y) if x == y || y == 1 => Some(x),
+            (1, y) => Some(y),
+            _ => None,
+        })
+        .collect()
 }
 
 /// An optional argument read as a 1-D array of `n` values (weights, one per
@@ -169,27 +245,37 @@ pub(crate) fn array<'py>(
         .into_any())
 }
 
-/// `array.transpose(axes)`: a view, no copy.
-pub(crate) fn transposed<'py>(
-    array: &Bound<'py, PyAny>,
-    axes: &[usize],
+/// The engine's output (structure of arrays: one buffer of shape `lead +
+/// (d,) + samples`, each coordinate contiguous) seen as an array of shape
+/// `lead + samples + (d,)`, points last: a transposed view, no copy.
+/// `(d, n)` becomes `(n, d)`, `(7, d, su, sv)` becomes `(7, su, sv, d)`.
+pub(crate) fn coords_last<'py>(
+    py: Python<'py>,
+    buffer: Vec<f64>,
+    lead: &[usize],
+    d: usize,
+    samples: &[usize],
 ) -> PyResult<Bound<'py, PyAny>> {
-    array.call_method1("transpose", (axes.to_vec(),))
+    let shape: Vec<usize> = lead.iter().chain([&d]).chain(samples).copied().collect();
+    let (l, r) = (lead.len(), samples.len());
+    let axes: Vec<usize> = (0..l).chain(l + 1..=l + r).chain([l]).collect();
+    array(py, buffer, &shape)?.call_method1("transpose", (axes,))
 }
 
-/// Points given as one vector per coordinate (structure of arrays) as an
-/// `(n, d)` array: a view of one `(d, n)` buffer, so each coordinate stays
-/// contiguous.
+/// Points given as one vector per coordinate (structure of arrays) at
+/// sample points of shape `samples` (`(n,)` along a curve, `(su, sv)` on a
+/// grid) as an array of shape `samples + (d,)`: a view of one buffer, so
+/// each coordinate stays contiguous.
 pub(crate) fn columns_array<'py>(
     py: Python<'py>,
     columns: &[impl AsRef<[f64]>],
+    samples: &[usize],
 ) -> PyResult<Bound<'py, PyAny>> {
-    let n = columns.first().map_or(0, |c| c.as_ref().len());
     let data: Vec<f64> = columns
         .iter()
         .flat_map(|c| c.as_ref().iter().copied())
         .collect();
-    transposed(&array(py, data, &[columns.len(), n])?, &[1, 0])
+    coords_last(py, data, &[], columns.len(), samples)
 }
 
 /// Fixed-size points as an `(n, D)` array.
@@ -211,5 +297,35 @@ mod tests {
         assert_eq!(shape_text(&[5]), "(5,)");
         assert_eq!(shape_text(&[]), "()");
         assert_eq!(index_text(7, &[4, 2, 2]), "1, 1, 1");
+    }
+
+    #[test]
+    fn broadcasting_follows_numpy() {
+        assert_eq!(broadcast_shape(&[3, 1], &[4]), Some(vec![3, 4]));
+        assert_eq!(broadcast_shape(&[], &[2, 5]), Some(vec![2, 5]));
+        assert_eq!(broadcast_shape(&[3], &[4]), None);
+        let column = Floats {
+            shape: vec![2, 1],
+            data: vec![1.0, 2.0],
+        };
+        assert_eq!(
+            column.broadcast_to(&[2, 3]),
+            Some(vec![1.0, 1.0, 1.0, 2.0, 2.0, 2.0])
+        );
+        let row = Floats {
+            shape: vec![3],
+            data: vec![1.0, 2.0, 3.0],
+        };
+        assert_eq!(
+            row.broadcast_to(&[2, 3]),
+            Some(vec![1.0, 2.0, 3.0, 1.0, 2.0, 3.0])
+        );
+        assert_eq!(row.broadcast_to(&[3, 2]), None);
+        let number = Floats {
+            shape: vec![],
+            data: vec![0.5],
+        };
+        assert_eq!(number.broadcast_to(&[2, 2]), Some(vec![0.5; 4]));
+        assert_eq!(number.broadcast_to(&[0, 2]), Some(vec![]));
     }
 }

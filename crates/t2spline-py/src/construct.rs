@@ -1,15 +1,37 @@
-//! Reading the arguments that define curves: the degree (from `degree`,
-//! `order` or the knots), counts, and fuzzy control or data points given as
-//! arrays (`crisp (n, d)`, `upper`/`primary`/`lower (n, d, 2)`, a lower height
-//! per number or for all).
+//! Reading the arguments that define curves and surfaces: the degree (from
+//! `degree`, `order` or the knots, per direction for a surface), counts,
+//! names (layers, sides, directions), and fuzzy control or data points given
+//! as arrays (`crisp` of shape net + `(d,)`, `upper`/`primary`/`lower` of
+//! shape net + `(d, 2)`, a lower height per number or broadcast).
 
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use t2spline::{Axis, Nt2Number, Nt2Point, Place};
+use t2spline::{Axis, Direction, KnotVector, Layer, Nt2Number, Nt2Point, Place, Side};
 use t2spline_io::job::MAX_ORDER;
 
 use crate::arrays::{floats, shape_text, Floats};
 use crate::dim::{ByDim, PointList};
+use crate::net::shape;
+
+/// How the arguments that give a degree are named in messages: `degree`,
+/// `order`, `knots` for a curve; for the v direction of a surface
+/// `degree[1]` (or `degree` when one value serves both), `order[1]`,
+/// `knots_v`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct DegreeNames<'a> {
+    pub(crate) degree: &'a str,
+    pub(crate) order: &'a str,
+    pub(crate) knots: &'a str,
+}
+
+impl DegreeNames<'static> {
+    /// The names of a curve's arguments.
+    pub(crate) const CURVE: Self = DegreeNames {
+        degree: "degree",
+        order: "order",
+        knots: "knots",
+    };
+}
 
 /// The degree `p` from exactly one of `degree` and `order` (`p = k − 1`), or
 /// when neither is given from the number of knots (`p = len(knots) − n − 1`).
@@ -24,17 +46,36 @@ pub(crate) fn degree(
     knots: Option<usize>,
     control_points: usize,
 ) -> PyResult<usize> {
+    named_degree(degree, order, knots, control_points, DegreeNames::CURVE)
+}
+
+/// [`degree`] with the arguments called `names`.
+///
+/// # Errors
+/// As [`degree`].
+pub(crate) fn named_degree(
+    degree: Option<i64>,
+    order: Option<i64>,
+    knots: Option<usize>,
+    control_points: usize,
+    names: DegreeNames<'_>,
+) -> PyResult<usize> {
     let max = MAX_ORDER as i64;
+    let DegreeNames {
+        degree: dn,
+        order: on,
+        knots: kn,
+    } = names;
     match (degree, order) {
-        (Some(_), Some(_)) => Err(PyValueError::new_err(
-            "degree, order: give one of them, not both (degree = order - 1)",
-        )),
+        (Some(_), Some(_)) => Err(PyValueError::new_err(format!(
+            "{dn}, {on}: give one of them, not both (degree = order - 1)"
+        ))),
         (Some(p), None) if !(0..max).contains(&p) => Err(PyValueError::new_err(format!(
-            "degree: {p} is outside [0, {}]",
+            "{dn}: {p} is outside [0, {}]",
             max - 1
         ))),
         (None, Some(k)) if !(1..=max).contains(&k) => Err(PyValueError::new_err(format!(
-            "order: {k} is outside [1, {max}]"
+            "{on}: {k} is outside [1, {max}]"
         ))),
         // Both are within [0, MAX_ORDER] now.
         (Some(p), None) => Ok(p as usize),
@@ -44,13 +85,107 @@ pub(crate) fn degree(
                 Ok(m - control_points - 1)
             }
             Some(m) => Err(PyValueError::new_err(format!(
-                "degree: not given, and {m} knots for {control_points} control points give no degree in [0, {}] (knots = control points + degree + 1)",
+                "{dn}: not given, and {m} {kn} for {control_points} control points give no degree in [0, {}] (knots = control points + degree + 1)",
                 max - 1
             ))),
-            None => Err(PyValueError::new_err(
-                "degree: missing: give degree or order (or knots)",
-            )),
+            None => Err(PyValueError::new_err(format!(
+                "{dn}: missing: give degree or order (or {kn})"
+            ))),
         },
+    }
+}
+
+/// One value for both directions of a surface, or one per direction
+/// (`samples=(21, 11)`, `degree=(2, 1)`).
+#[derive(Clone, Copy, Debug, FromPyObject)]
+pub(crate) enum PerDirection {
+    /// The same value along u and along v.
+    One(i64),
+    /// The values along u and along v.
+    Two(i64, i64),
+}
+
+impl PerDirection {
+    /// The values along u and along v.
+    pub(crate) fn pair(self) -> [i64; 2] {
+        match self {
+            PerDirection::One(n) => [n, n],
+            PerDirection::Two(u, v) => [u, v],
+        }
+    }
+}
+
+/// The degrees `[p, q]` of a surface, each direction as [`degree`] reads a
+/// curve's: from `degree` or `order` (one value for both directions, or one
+/// per direction), else from the number of knots in that direction.
+///
+/// # Errors
+/// As [`degree`], naming the direction (`degree[1]`, `knots_v`).
+pub(crate) fn surface_degrees(
+    degree: Option<PerDirection>,
+    order: Option<PerDirection>,
+    knots: [Option<usize>; 2],
+    net: [usize; 2],
+) -> PyResult<[usize; 2]> {
+    let name = |given: Option<PerDirection>, base: &'static str, k: usize| match given {
+        Some(PerDirection::One(_)) => base.to_owned(),
+        _ => format!("{base}[{k}]"),
+    };
+    let mut out = [0; 2];
+    for (k, direction) in Direction::BOTH.into_iter().enumerate() {
+        let (dn, on) = (name(degree, "degree", k), name(order, "order", k));
+        let kn = format!("knots_{direction}");
+        out[k] = named_degree(
+            degree.map(|d| d.pair()[k]),
+            order.map(|o| o.pair()[k]),
+            knots[k],
+            net[k],
+            DegreeNames {
+                degree: &dn,
+                order: &on,
+                knots: &kn,
+            },
+        )?;
+    }
+    Ok(out)
+}
+
+/// The knot vector of one direction of a surface: `values` checked for
+/// `count` lines of the net and degree `degree`, or the clamped uniform
+/// default; errors name the direction as the core's surface constructors
+/// do (`knots.v[3] = …`, `points: a surface of order 3 in v needs …`).
+///
+/// # Errors
+/// [`t2spline::Error::InDirection`] wrapping the rule broken.
+pub(crate) fn knot_vector(
+    direction: Direction,
+    values: Option<Vec<f64>>,
+    degree: usize,
+    count: usize,
+) -> Result<KnotVector, t2spline::Error> {
+    match values {
+        Some(values) => KnotVector::try_new(values, degree, count),
+        None => KnotVector::clamped_uniform(degree, count),
+    }
+    .map_err(|e| t2spline::Error::InDirection {
+        direction,
+        inner: Box::new(e),
+    })
+}
+
+/// The weights of a net of shape `net` (`weights=`, shape `(nu, nv)`), row
+/// by row; all 1 when not given. The core checks their values.
+///
+/// # Errors
+/// The errors of reading an array; `ValueError` for another shape.
+pub(crate) fn net_weights(arg: Option<&Bound<'_, PyAny>>, net: [usize; 2]) -> PyResult<Vec<f64>> {
+    match arg.filter(|a| !a.is_none()) {
+        None => Ok(vec![1.0; net[0] * net[1]]),
+        Some(a) => {
+            let w = floats(a, "weights")?;
+            w.expect_shape("weights", &net, ": one per control point of the net")?;
+            Ok(w.data)
+        }
     }
 }
 
@@ -67,31 +202,56 @@ pub(crate) fn count(value: i64, name: &str, min: usize) -> PyResult<usize> {
         })
 }
 
-/// The values of `f` broadcast to `shape` by numpy's rule (trailing
-/// dimensions equal or 1, missing leading ones added): a number for all, a
-/// row `(d,)` per coordinate, a column `(n, 1)` per point. `None` if they do
-/// not broadcast.
-fn broadcast(f: &Floats, shape: [usize; 2]) -> Option<Vec<f64>> {
-    if f.shape.len() > 2 {
-        return None;
-    }
-    let mut dims = [1, 1];
-    dims[2 - f.shape.len()..].copy_from_slice(&f.shape);
-    if dims.iter().zip(shape).any(|(&g, s)| g != s && g != 1) {
-        return None;
-    }
-    let at = |i: usize, j: usize| f.data[(i % dims[0]) * dims[1] + j % dims[1]];
-    Some(
-        (0..shape[0])
-            .flat_map(|i| (0..shape[1]).map(move |j| (i, j)))
-            .map(|(i, j)| at(i, j))
-            .collect(),
-    )
+/// A direction from its name (`"u"`, `"v"`).
+///
+/// # Errors
+/// `ValueError` naming the argument.
+pub(crate) fn direction(name: &str) -> PyResult<Direction> {
+    Direction::BOTH
+        .into_iter()
+        .find(|d| d.to_string() == name)
+        .ok_or_else(|| {
+            PyValueError::new_err(format!("direction: expected 'u' or 'v', got {name:?}"))
+        })
 }
 
-/// Fuzzy points given as arrays, their shapes checked against each other.
+/// A layer from its name (`"upper_left"`, …, `"crisp"`, …, `"upper_right"`).
+///
+/// # Errors
+/// `ValueError` naming the argument `arg` and the names offered.
+pub(crate) fn layer(name: &str, arg: &str) -> PyResult<Layer> {
+    Layer::ALL
+        .into_iter()
+        .find(|l| l.name() == name)
+        .ok_or_else(|| {
+            let names: Vec<&str> = Layer::ALL.iter().map(|l| l.name()).collect();
+            PyValueError::new_err(format!(
+                "{arg}: expected one of {}, got {name:?}",
+                names.join(", ")
+            ))
+        })
+}
+
+/// A side of a type-reduced number from its name (`"left"`, `"right"`).
+///
+/// # Errors
+/// `ValueError` naming the argument.
+pub(crate) fn side(name: &str) -> PyResult<Side> {
+    match name {
+        "left" => Ok(Side::Left),
+        "right" => Ok(Side::Right),
+        other => Err(PyValueError::new_err(format!(
+            "side: expected 'left' or 'right', got {other:?}"
+        ))),
+    }
+}
+
+/// Fuzzy points given as arrays, their shapes checked against each other:
+/// the `n` points of a curve or the `nu × nv` net of a surface.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct FuzzyArrays {
+    /// The shape of the net: `[n]` or `[nu, nv]`.
+    pub(crate) net: Vec<usize>,
     /// Number of points.
     pub(crate) n: usize,
     /// Coordinates per point: 2 or 3.
@@ -100,28 +260,31 @@ pub(crate) struct FuzzyArrays {
     upper: Floats,
     primary: Floats,
     lower: Floats,
-    /// The lower height of every number, `(n, d)` in C order.
+    /// The lower height of every number, net + `(d,)` in C order.
     heights: Vec<f64>,
 }
 
 impl FuzzyArrays {
-    /// Reads `crisp (n, d)`, `upper`, `primary`, `lower (n, d, 2)` (`[left,
-    /// right]` last) and `lower_height` (a number, or `(n, d)`).
+    /// Reads `crisp` (net + `(d,)`), `upper`, `primary`, `lower` (net +
+    /// `(d, 2)`, `[left, right]` last) and `lower_height` (anything that
+    /// broadcasts to net + `(d,)`); the net has `rank` dimensions (1 for a
+    /// curve, 2 for a surface).
     ///
     /// # Errors
     /// `TypeError` / `ValueError` naming the argument and the shape expected.
     pub(crate) fn read(
-        crisp: &Bound<'_, PyAny>,
-        upper: &Bound<'_, PyAny>,
-        primary: &Bound<'_, PyAny>,
-        lower: &Bound<'_, PyAny>,
-        lower_height: &Bound<'_, PyAny>,
+        [crisp, upper, primary, lower, lower_height]: [&Bound<'_, PyAny>; 5],
+        rank: usize,
     ) -> PyResult<Self> {
         let crisp = floats(crisp, "crisp")?;
-        let (n, d) = crisp.points_shape("crisp")?;
+        let (net, d) = crisp.net_shape("crisp", rank)?;
         let feet = |arg, name| -> PyResult<Floats> {
             let f = floats(arg, name)?;
-            f.expect_shape(name, &[n, d, 2], ": [left, right] per coordinate of crisp")?;
+            f.expect_shape(
+                name,
+                &shape(&net, &[d, 2]),
+                ": [left, right] per coordinate of crisp",
+            )?;
             Ok(f)
         };
         let (upper, primary, lower) = (
@@ -130,15 +293,16 @@ impl FuzzyArrays {
             feet(lower, "lower")?,
         );
         let h = floats(lower_height, "lower_height")?;
-        let heights = broadcast(&h, [n, d]).ok_or_else(|| {
+        let heights = h.broadcast_to(&crisp.shape).ok_or_else(|| {
             PyValueError::new_err(format!(
                 "lower_height: expected a number or an array that broadcasts to shape {}: one per coordinate of crisp, got {}",
-                shape_text(&[n, d]),
+                shape_text(&crisp.shape),
                 shape_text(&h.shape)
             ))
         })?;
         Ok(FuzzyArrays {
-            n,
+            n: net.iter().product(),
+            net,
             d,
             crisp,
             upper,
@@ -148,15 +312,25 @@ impl FuzzyArrays {
         })
     }
 
-    /// The points in their dimension, every number checked (SPEC §1).
+    /// The points in their dimension, in net order (row by row), every
+    /// number checked (SPEC §1).
     ///
     /// # Errors
-    /// The first broken rule, naming its place (`points[2].y: the order …`).
+    /// The first broken rule, naming its place (`points[2].y: the order …`,
+    /// `points[2][1].y: …` in a net).
     pub(crate) fn points(&self) -> Result<ByDim<PointList>, t2spline::Error> {
         Ok(match self.d {
             2 => ByDim::Planar(self.points_of()?),
             _ => ByDim::Spatial(self.points_of()?),
         })
+    }
+
+    /// The place of coordinate `axis` of the `i`-th point.
+    fn place(&self, i: usize, axis: Axis) -> Place {
+        match self.net[..] {
+            [_, nv] => Place::in_net(i / nv, i % nv, axis),
+            _ => Place::new(i, axis),
+        }
     }
 
     fn points_of<const D: usize>(&self) -> Result<Vec<Nt2Point<D>>, t2spline::Error> {
@@ -174,7 +348,7 @@ impl FuzzyArrays {
                         feet(&self.lower, k),
                         self.heights[k],
                     )
-                    .map_err(|e| e.at(Place::new(i, axis)))?;
+                    .map_err(|e| e.at(self.place(i, axis)))?;
                     coords.push(number);
                 }
                 // One number was pushed per coordinate, D of them: the error
@@ -191,4 +365,11 @@ impl FuzzyArrays {
             })
             .collect()
     }
+}
+
+/// A list in net order cut into the rows of a net of shape `[nu, nv]`
+/// (`rows[i][j]`, as the core's surface constructors take them).
+pub(crate) fn rows<T>(list: Vec<T>, [nu, nv]: [usize; 2]) -> Vec<Vec<T>> {
+    let mut items = list.into_iter();
+    (0..nu).map(|_| items.by_ref().take(nv).collect()).collect()
 }

@@ -11,14 +11,16 @@ use crate::construct::count;
 use crate::errors::core_error;
 use crate::sample::check_output;
 
-/// The uniform parameters `tᵢ = a + (b − a)·i/(count − 1)` of a domain.
+/// The uniform parameters `tᵢ = a + (b − a)·i/(count − 1)` of a domain;
+/// errors name the argument `name`.
 pub(crate) fn uniform_params<'py>(
     py: Python<'py>,
     domain: Domain,
     count: i64,
+    name: &str,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let n = self::count(count, "count", 0)?;
-    check_output(n, 1, "count")?;
+    let n = self::count(count, name, 0)?;
+    check_output(n, 1, name)?;
     array(py, domain.uniform(n).map_err(core_error)?, &[n])
 }
 
@@ -85,7 +87,7 @@ macro_rules! curve_methods {
                 count: i64,
             ) -> PyResult<Bound<'py, PyAny>> {
                 let domain = $crate::dim::by_dim!(&self.0, |c| c.domain());
-                $crate::curve_methods::uniform_params(py, domain, count)
+                $crate::curve_methods::uniform_params(py, domain, count, "count")
             }
 
             /// The same curve with the knot ``u`` inserted ``times`` times

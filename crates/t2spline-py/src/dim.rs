@@ -1,11 +1,13 @@
 //! One dispatch over the dimension: Python sees one `NurbsCurve`, one
-//! `FuzzyCurve`, one `Solution` class, while the core's types carry their
-//! dimension `D` (2 or 3) in the type. [`ByDim`] holds either, and the two
+//! `NurbsSurface`, one `FuzzyCurve`, … class, while the core's types carry
+//! their dimension `D` (2 or 3) in the type. [`ByDim`] holds either, and the two
 //! macros are the only places that tell them apart: code written once for
 //! any `D` runs on both.
 
 use t2spline::job::Model;
-use t2spline::{FuzzyCurve, Nt2Point, NurbsCurve, Solution};
+use t2spline::{
+    FuzzyCurve, FuzzySurface, Nt2Point, NurbsCurve, NurbsSurface, Solution, SurfaceSolution,
+};
 
 /// A family of core types indexed by dimension.
 pub(crate) trait Family {
@@ -50,6 +52,27 @@ impl Family for Solved {
     type Of<const D: usize> = Solution<D>;
 }
 
+/// [`NurbsSurface`]s.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct NurbsNet;
+impl Family for NurbsNet {
+    type Of<const D: usize> = NurbsSurface<D>;
+}
+
+/// [`FuzzySurface`]s.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct FuzzyNet;
+impl Family for FuzzyNet {
+    type Of<const D: usize> = FuzzySurface<D>;
+}
+
+/// [`SurfaceSolution`]s.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct SolvedNet;
+impl Family for SolvedNet {
+    type Of<const D: usize> = SurfaceSolution<D>;
+}
+
 /// `by_dim!(value, |c| body)`: `body` with `c` bound to the value inside a
 /// [`ByDim`] of either dimension. The body is compiled once per dimension, so
 /// inside it `c` has a concrete type (`NurbsCurve<2>`, then `NurbsCurve<3>`)
@@ -83,7 +106,14 @@ macro_rules! from_dims {
     };
 }
 
-from_dims!(Nurbs: NurbsCurve, Fuzzy: FuzzyCurve, Solved: Solution);
+from_dims!(
+    Nurbs: NurbsCurve,
+    Fuzzy: FuzzyCurve,
+    Solved: Solution,
+    NurbsNet: NurbsSurface,
+    FuzzyNet: FuzzySurface,
+    SolvedNet: SurfaceSolution
+);
 
 impl<F: Family> ByDim<F> {
     /// The number of coordinates: 2 or 3.
@@ -95,13 +125,30 @@ impl<F: Family> ByDim<F> {
     }
 }
 
-impl ByDim<Fuzzy> {
+/// A value taken from a job's model.
+pub(crate) trait FromModel: Sized {
+    /// The value of `model`; `None` for a model of another kind.
+    fn from_model(model: Model) -> Option<Self>;
+}
+
+impl FromModel for ByDim<Fuzzy> {
     /// The fuzzy curve of a job's model; `None` for a model that is not a
     /// curve.
-    pub(crate) fn from_model(model: Model) -> Option<Self> {
+    fn from_model(model: Model) -> Option<Self> {
         match model {
             Model::Planar(c) => Some(ByDim::Planar(c)),
             Model::Spatial(c) => Some(ByDim::Spatial(c)),
+            _ => None,
+        }
+    }
+}
+
+impl FromModel for ByDim<FuzzyNet> {
+    /// The fuzzy surface of a job's model; `None` for a model that is not a
+    /// surface.
+    fn from_model(model: Model) -> Option<Self> {
+        match model {
+            Model::Surface(s) => Some(ByDim::Spatial(s)),
             _ => None,
         }
     }

@@ -8,10 +8,10 @@ use pyo3::types::{PyDict, PyList};
 use t2spline::fit::{Deviation, FitOptions, FitSummary, FuzzyData, FuzzyFitMode, Parametrization};
 use t2spline::{Layer, Layers};
 
+use crate::classes::PyFuzzyCurve;
 use crate::construct::{degree, FuzzyArrays};
-use crate::dim::ByDim;
+use crate::dim::{ByDim, FromModel};
 use crate::errors::compute;
-use crate::fuzzy_curve::PyFuzzyCurve;
 
 /// Fits a fuzzy curve to fuzzy data points (``t2spline fit``): interpolation
 /// (The NURBS Book §9.2.1) or least squares with the end points interpolated
@@ -75,7 +75,7 @@ pub(crate) fn fit<'py>(
     parametrization: &str,
     mode: &str,
 ) -> PyResult<(PyFuzzyCurve, Bound<'py, PyDict>)> {
-    let data = FuzzyArrays::read(crisp, upper, primary, lower, lower_height)?;
+    let data = FuzzyArrays::read([crisp, upper, primary, lower, lower_height], 1)?;
     let options = FitOptions {
         degree: self::degree(Some(degree), None, None, data.n)?,
         parametrization: parametrization
@@ -96,9 +96,11 @@ pub(crate) fn fit<'py>(
         points.fit(&options, mode)
     })?;
     let curve = match outcome.model {
-        Ok(model) => ByDim::from_model(model).map(PyFuzzyCurve).ok_or_else(|| {
-            crate::errors::internal_error("a fit gave a model that is not a curve")
-        })?,
+        Ok(model) => FromModel::from_model(model)
+            .map(PyFuzzyCurve)
+            .ok_or_else(|| {
+                crate::errors::internal_error("a fit gave a model that is not a curve")
+            })?,
         Err(violations) => {
             let mut lines = vec![format!(
                 "fitting every layer on its own breaks the order of SPEC §1 at {} place(s) of the control points:",

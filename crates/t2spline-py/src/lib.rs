@@ -12,6 +12,8 @@
 //! | `FuzzyNumber`, `AlphaCut` | `Nt2Number`, `AlphaCut` (SPEC §1–§4) |
 //! | `NurbsCurve` | `NurbsCurve<2 or 3>` and its operations |
 //! | `FuzzyCurve`, `Solution` | `FuzzyCurve<2 or 3>` (stage 1, sampling engine), `Solution` (stages 2–4) |
+//! | `NurbsSurface` | `NurbsSurface<3 or 2>` and its operations, the grid engine |
+//! | `FuzzySurface`, `SurfaceSolution` | `FuzzySurface<3 or 2>` (stage 1, grid engine), `SurfaceSolution` (stages 2–4) |
 //! | `fit` | `t2spline::fit::FuzzyData::fit` |
 //! | `centroid` | `t2spline::reduction::discrete::SampledSet`: KM, EKM, EIASC, Nie–Tan (SPEC §10) |
 //! | `benchmark_curve` | `t2spline::sampling::benchmark_curve` |
@@ -41,18 +43,26 @@
 )]
 
 mod arrays;
+mod classes;
 mod construct;
 mod curve_methods;
 mod dim;
 mod errors;
 mod fit;
 mod fuzzy_curve;
+mod fuzzy_methods;
+mod fuzzy_surface;
+mod net;
 mod number;
 mod nurbs_curve;
+mod nurbs_surface;
 mod reduction;
 mod run;
 mod sample;
 mod solution;
+mod stage_methods;
+mod surface_methods;
+mod surface_solution;
 mod value;
 
 use pyo3::prelude::*;
@@ -69,7 +79,7 @@ use pyo3::prelude::*;
 /// >>> benchmark_curve()
 /// FuzzyCurve(dimension=2, degree=3, order=4, control_points=(10, 2), domain=(0.0, 1.0))
 #[pyfunction]
-fn benchmark_curve() -> fuzzy_curve::PyFuzzyCurve {
+fn benchmark_curve() -> classes::PyFuzzyCurve {
     t2spline::sampling::benchmark_curve().into()
 }
 
@@ -81,9 +91,12 @@ fn _t2spline(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("JobError", m.py().get_type::<errors::JobError>())?;
     m.add_class::<number::PyFuzzyNumber>()?;
     m.add_class::<number::PyAlphaCut>()?;
-    m.add_class::<nurbs_curve::PyNurbsCurve>()?;
-    m.add_class::<fuzzy_curve::PyFuzzyCurve>()?;
-    m.add_class::<solution::PySolution>()?;
+    m.add_class::<classes::PyNurbsCurve>()?;
+    m.add_class::<classes::PyFuzzyCurve>()?;
+    m.add_class::<classes::PySolution>()?;
+    m.add_class::<classes::PyNurbsSurface>()?;
+    m.add_class::<classes::PyFuzzySurface>()?;
+    m.add_class::<classes::PySurfaceSolution>()?;
     m.add_function(wrap_pyfunction!(run::run, m)?)?;
     m.add_function(wrap_pyfunction!(fit::fit, m)?)?;
     m.add_function(wrap_pyfunction!(reduction::centroid, m)?)?;

@@ -6,70 +6,13 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use t2spline::{KnotVector, NurbsCurve};
 
-use crate::arrays::{array, floats, optional_vector, rows_array, transposed, Floats};
+use crate::arrays::{array, coords_last, floats, optional_vector, rows_array, Floats};
+use crate::classes::PyNurbsCurve;
 use crate::construct::{count, degree};
 use crate::curve_methods::curve_methods;
-use crate::dim::{by_dim, ByDim, Nurbs};
+use crate::dim::by_dim;
 use crate::errors::compute;
 use crate::sample::{at_params, channels, output_buffer, ParamsArg};
-
-/// A rational B-spline curve in the plane or in space (SPEC §6, paper
-/// Def. 5.1)::
-///
-///     C(t) = Σᵢ wᵢ Nᵢ,ₚ(t) Pᵢ / Σᵢ wᵢ Nᵢ,ₚ(t),   t in [U[p], U[n]]
-///
-/// with ``n`` control points ``Pᵢ``, weights ``wᵢ > 0``, degree ``p`` (order
-/// ``k = p + 1``) and a knot vector ``U`` of ``n + k`` non-decreasing values
-/// (default: clamped uniform). At an interior knot of full multiplicity the
-/// value from the right is taken; at the right end of the domain the last
-/// non-empty span is used.
-///
-/// Parameters
-/// ----------
-/// control_points : array_like, shape (n, 2) or (n, 3)
-/// weights : array_like, shape (n,), optional
-///     Default: all 1.
-/// knots : array_like, shape (n + degree + 1,), optional
-///     Default: clamped uniform.
-/// degree, order : int, optional
-///     Exactly one of them (``order = degree + 1``); when both are left out,
-///     the degree follows from the number of knots.
-///
-/// Raises
-/// ------
-/// TypeError, ValueError
-///     For an argument of the wrong dtype or shape (named), NaN or infinity,
-///     and every rule of SPEC §6 (too few control points, a weight that is not
-///     positive, decreasing knots, ...), naming the place.
-///
-/// Examples
-/// --------
-/// The rational quarter circle, weights ``1, √2/2, 1``:
-///
-/// >>> import numpy as np
-/// >>> arc = NurbsCurve([[1, 0], [1, 1], [0, 1]], weights=[1, np.sqrt(0.5), 1], degree=2)
-/// >>> arc
-/// NurbsCurve(dimension=2, degree=2, order=3, control_points=(3, 2), knots=(6,), domain=(0.0, 1.0))
-/// >>> points = arc.sample(101)                       # (101, 2), by the sampling engine
-/// >>> bool(np.allclose(np.hypot(points[:, 0], points[:, 1]), 1.0, rtol=0, atol=1e-14))
-/// True
-/// >>> round(arc.arc_length(), 12) == round(np.pi / 2, 12)
-/// True
-#[pyclass(frozen, eq, module = "t2spline", name = "NurbsCurve")]
-#[derive(Clone, Debug, PartialEq)]
-pub(crate) struct PyNurbsCurve(pub(crate) ByDim<Nurbs>);
-
-impl From<NurbsCurve<2>> for PyNurbsCurve {
-    fn from(curve: NurbsCurve<2>) -> Self {
-        PyNurbsCurve(curve.into())
-    }
-}
-
-impl From<NurbsCurve<3>> for PyNurbsCurve {
-    fn from(curve: NurbsCurve<3>) -> Self {
-        PyNurbsCurve(curve.into())
-    }
-}
 
 /// A curve of dimension `D` through the rows of `points`.
 fn build<const D: usize>(
@@ -173,7 +116,7 @@ curve_methods!(PyNurbsCurve {
                 .sample_into(params.params(), &mut channels(&mut buffer, d, n))
         }))?;
         // One row per coordinate: the (d, n) buffer seen as (n, d).
-        transposed(&array(py, buffer, &[d, n])?, &[1, 0])
+        coords_last(py, buffer, &[], d, &[n])
     }
 
     /// The derivatives ``C⁽ʲ⁾(t)``, ``j = 0 … order``, at every value of ``t``

@@ -1,15 +1,17 @@
 //! `t2spline.centroid`: the centroid of an interval type-2 set given by
-//! samples (`t2spline::reduction::discrete`), and the `type_reduction=`
-//! keyword read as the core's `TypeReduction`.
+//! samples (`t2spline::reduction::discrete`); the `type_reduction=` keyword
+//! read as the core's `TypeReduction`, and the level alpha that `run` and
+//! `solve` settle with it (an alpha the reduction does not use is checked,
+//! set aside and warned about).
 
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use t2spline::reduction::discrete::{SampledCentroid, SampledSet};
-use t2spline::TypeReduction;
+use t2spline::{Alpha, TypeReduction};
 
 use crate::arrays::{floats, shape_text, Floats};
-use crate::errors::compute;
+use crate::errors::{compute, core_error};
 
 /// `type_reduction=`: one of [`TypeReduction::name`], else a `ValueError`
 /// naming the keyword and the known names.
@@ -19,6 +21,56 @@ pub(crate) fn type_reduction(name: Option<&str>) -> PyResult<Option<TypeReductio
             .map_err(|e| PyValueError::new_err(format!("type_reduction: {e}")))
     })
     .transpose()
+}
+
+/// Says with a `UserWarning` that `reduction` does not use the alpha
+/// `given` (by `source`: `"alpha="`, `"the job's alpha "`), as ``t2spline
+/// run`` says it on standard error.
+///
+/// # Errors
+/// The error of the warning filter (warnings turned into errors).
+pub(crate) fn warn_unused_alpha(
+    py: Python<'_>,
+    reduction: TypeReduction,
+    source: &str,
+    given: Alpha,
+) -> PyResult<()> {
+    let message = format!(
+        "type reduction {reduction} does not use alpha; {source}{} is ignored (stage 2 is cut at alpha = 0, the whole footprint)",
+        given.get()
+    );
+    let category = py.get_type::<pyo3::exceptions::PyUserWarning>();
+    PyErr::warn(py, &category, &std::ffi::CString::new(message)?, 1)
+}
+
+/// The level and the type reduction of `solve(alpha, type_reduction)`, as
+/// `run` settles them (`Job::settings`): the paper's reduction (the default)
+/// needs alpha; the others cut stage 2 at alpha = 0, and an alpha given to
+/// them is checked and set aside with a `UserWarning`.
+///
+/// # Errors
+/// `ValueError` for an unknown reduction, an alpha outside `[0, 1]` (or
+/// NaN), or no alpha for the paper's reduction; the error of the warning
+/// filter.
+pub(crate) fn solve_settings(
+    py: Python<'_>,
+    alpha: Option<f64>,
+    type_reduction: Option<&str>,
+) -> PyResult<(Alpha, TypeReduction)> {
+    let reduction = self::type_reduction(type_reduction)?.unwrap_or_default();
+    let given = alpha.map(Alpha::try_new).transpose().map_err(core_error)?;
+    match (reduction.uses_alpha(), given) {
+        (true, Some(a)) => Ok((a, reduction)),
+        (true, None) => Err(PyValueError::new_err(
+            "alpha: missing: the paper's type reduction needs the level alpha",
+        )),
+        (false, given) => {
+            if let Some(a) = given {
+                warn_unused_alpha(py, reduction, "alpha=", a)?;
+            }
+            Ok((Alpha::ZERO, reduction))
+        }
+    }
 }
 
 /// A one-dimensional argument of `centroid`.

@@ -7,11 +7,12 @@ use std::path::PathBuf;
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
-use t2spline::job::{check_samples, Job, Overrides, Setting, Settings};
+use t2spline::job::{check_samples, Job, Model, Overrides, Setting, Settings};
 use t2spline::TypeReduction;
 use t2spline_io::job::locate;
 use t2spline_io::Problem;
 
+use crate::construct::PerDirection;
 use crate::errors::{core_error, internal_error, io_error, job_error, setting_error, without_gil};
 use crate::reduction;
 use crate::value::to_value;
@@ -64,13 +65,14 @@ fn json_default<'py>(value: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
     }
 }
 
-/// `samples=`: one count, or `(u, v)` for a surface's grid.
-#[derive(Clone, Copy, Debug, FromPyObject)]
-pub(crate) enum SampleCounts {
-    /// One count (along a curve; both directions of a surface).
-    One(i64),
-    /// Counts along u and v.
-    Two(i64, i64),
+/// The fuzzy model of a job (a dict or a path, validated as `t2spline run`
+/// validates it), and how messages name the job.
+///
+/// # Errors
+/// As [`job_text`]; `JobError` for a job that breaks the rules.
+pub(crate) fn job_model(job: &Bound<'_, PyAny>) -> PyResult<(Model, String)> {
+    let (text, source) = job_text(job)?;
+    Ok((parse(job.py(), &text, &source)?.model, source))
 }
 
 /// A validated job from its text, with the problems of the job file as a
@@ -91,15 +93,15 @@ fn settings(
     (text, source): (&str, &str),
     alpha: Option<f64>,
     type_reduction: Option<TypeReduction>,
-    samples: Option<SampleCounts>,
+    samples: Option<PerDirection>,
     derivatives: Option<i64>,
 ) -> PyResult<Settings> {
     let samples = match samples {
         None => None,
         Some(counts) => {
             let counts = match counts {
-                SampleCounts::One(n) => vec![n],
-                SampleCounts::Two(u, v) => vec![u, v],
+                PerDirection::One(n) => vec![n],
+                PerDirection::Two(u, v) => vec![u, v],
             };
             // The core takes counts as u64; a negative count gets its rule
             // here, written as given.
@@ -219,7 +221,7 @@ pub(crate) fn run<'py>(
     py: Python<'py>,
     job: &Bound<'py, PyAny>,
     alpha: Option<f64>,
-    samples: Option<SampleCounts>,
+    samples: Option<PerDirection>,
     derivatives: Option<i64>,
     type_reduction: Option<&str>,
 ) -> PyResult<Bound<'py, PyAny>> {
@@ -241,13 +243,7 @@ pub(crate) fn run<'py>(
         } else {
             "the job's alpha "
         };
-        let message = format!(
-            "type reduction {} does not use alpha; {source}{} is ignored (stage 2 is cut at alpha = 0, the whole footprint)",
-            settings.type_reduction,
-            a.get()
-        );
-        let category = py.get_type::<pyo3::exceptions::PyUserWarning>();
-        PyErr::warn(py, &category, &std::ffi::CString::new(message)?, 1)?;
+        reduction::warn_unused_alpha(py, settings.type_reduction, source, a)?;
     }
     let tree = without_gil(py, move || {
         let output = parsed.run(&settings).map_err(Failure::from)?;

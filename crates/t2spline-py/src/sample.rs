@@ -1,13 +1,15 @@
-//! Where and how to evaluate: parameters given as a count or an array,
-//! functions of `t` evaluated at every value of an array, and output buffers
-//! that the sampling engine writes into and numpy then owns.
+//! Where and how to evaluate: parameters given as a count or an array (one
+//! list along a curve, two for a surface's grid `u × v`), functions of `t`
+//! or of `(u, v)` evaluated at every value of arrays (broadcast as numpy
+//! does), and output buffers that the sampling engine writes into and numpy
+//! then owns.
 
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyInt};
 use t2spline::sampling::Params;
 
-use crate::arrays::{array, floats, shape_text};
+use crate::arrays::{array, broadcast_shape, floats, shape_text};
 use crate::errors::{compute, core_error};
 
 /// The most bytes the arrays of one sampling call may take (8 GiB, the limit
@@ -80,10 +82,18 @@ impl ParamsArg {
 /// # Errors
 /// `ValueError` naming `name` and the size.
 pub(crate) fn check_output(params: usize, per_param: usize, name: &str) -> PyResult<()> {
-    let bytes = (params as u128) * (per_param as u128) * 8;
+    check_bytes(params as u128 * per_param as u128, || {
+        format!("{name}: {params} parameters")
+    })
+}
+
+/// Refuses `values` floats beyond [`MAX_OUTPUT_BYTES`]; `what()` says whose.
+fn check_bytes(values: u128, what: impl FnOnce() -> String) -> PyResult<()> {
+    let bytes = values * 8;
     if bytes > u128::from(MAX_OUTPUT_BYTES) {
         return Err(PyValueError::new_err(format!(
-            "{name}: {params} parameters would take {:.1} GB of output, more than the limit of {:.1} GB",
+            "{} would take {:.1} GB of output, more than the limit of {:.1} GB",
+            what(),
             bytes as f64 / 1e9,
             MAX_OUTPUT_BYTES as f64 / 1e9
         )));
@@ -101,6 +111,74 @@ pub(crate) fn output_buffer(params: usize, per_param: usize, name: &str) -> PyRe
     // Zeroed memory comes from the system untouched (calloc), so the engine's
     // writes are the first: no extra pass over the output.
     Ok(vec![0.0; params * per_param])
+}
+
+/// Where to sample a surface: the grid `u × v`, each a count of uniform
+/// parameters or the parameters themselves.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct GridArg {
+    /// Along u.
+    pub(crate) u: ParamsArg,
+    /// Along v.
+    pub(crate) v: ParamsArg,
+}
+
+impl GridArg {
+    /// Reads `u` and `v` as [`ParamsArg::extract`] does.
+    ///
+    /// # Errors
+    /// As [`ParamsArg::extract`], naming `u` or `v`.
+    pub(crate) fn extract(u: &Bound<'_, PyAny>, v: &Bound<'_, PyAny>) -> PyResult<Self> {
+        Ok(GridArg {
+            u: ParamsArg::extract(u, "u")?,
+            v: ParamsArg::extract(v, "v")?,
+        })
+    }
+
+    /// `[su, sv]`: the parameters along u and along v.
+    pub(crate) fn shape(&self) -> [usize; 2] {
+        [self.u.len(), self.v.len()]
+    }
+
+    /// Refuses a grid of `per_point` values per point beyond
+    /// [`MAX_OUTPUT_BYTES`].
+    ///
+    /// # Errors
+    /// `ValueError` naming `u, v` and the size.
+    pub(crate) fn check_output(&self, per_point: usize) -> PyResult<()> {
+        let [su, sv] = self.shape();
+        check_bytes(su as u128 * sv as u128 * per_point as u128, || {
+            format!("u, v: a grid of {su} × {sv} parameters")
+        })
+    }
+
+    /// A zeroed buffer of `per_point` values per grid point, within
+    /// [`GridArg::check_output`]'s limit.
+    ///
+    /// # Errors
+    /// As [`GridArg::check_output`].
+    pub(crate) fn buffer(&self, per_point: usize) -> PyResult<Vec<f64>> {
+        self.check_output(per_point)?;
+        let [su, sv] = self.shape();
+        Ok(vec![0.0; su * sv * per_point])
+    }
+
+    /// The parameters along u and along v as arrays: the uniform ones over
+    /// the `domains` for counts.
+    ///
+    /// # Errors
+    /// The errors of [`ParamsArg::values`].
+    pub(crate) fn arrays<'py>(
+        &self,
+        py: Python<'py>,
+        domains: [t2spline::Domain; 2],
+    ) -> PyResult<[Bound<'py, PyAny>; 2]> {
+        let [su, sv] = self.shape();
+        Ok([
+            array(py, self.u.values(domains[0])?, &[su])?,
+            array(py, self.v.values(domains[1])?, &[sv])?,
+        ])
+    }
 }
 
 /// `buffer` cut into `count` slices of `len` values (empty slices for
@@ -126,17 +204,63 @@ pub(crate) fn at_params<'py>(
     f: impl Fn(f64, &mut Vec<f64>) -> Result<(), t2spline::Error> + Send + Sync,
 ) -> PyResult<Bound<'py, PyAny>> {
     let t = floats(t, "t")?;
+    at_each(py, &t.shape, tail, |k, out| f(t.data[k], out))
+}
+
+/// `f(u, v, out)` at every pair of values of `u` and `v` (numbers, or
+/// arrays that broadcast together as numpy's arrays do), each call
+/// appending `tail`'s product of values to `out`; the result has the
+/// broadcast shape followed by `tail`, and is a `float` for two numbers when
+/// `tail` is empty. Runs with the GIL released.
+///
+/// # Errors
+/// The errors of reading `u` and `v`; `ValueError` for shapes that do not
+/// broadcast; the first error of `f`.
+pub(crate) fn at_pairs<'py>(
+    py: Python<'py>,
+    u: &Bound<'py, PyAny>,
+    v: &Bound<'py, PyAny>,
+    tail: &[usize],
+    f: impl Fn(f64, f64, &mut Vec<f64>) -> Result<(), t2spline::Error> + Send + Sync,
+) -> PyResult<Bound<'py, PyAny>> {
+    let (u, v) = (floats(u, "u")?, floats(v, "v")?);
+    let not_broadcast = || {
+        PyValueError::new_err(format!(
+            "u, v: shapes {} and {} do not broadcast together",
+            shape_text(&u.shape),
+            shape_text(&v.shape)
+        ))
+    };
+    let shape = broadcast_shape(&u.shape, &v.shape).ok_or_else(not_broadcast)?;
+    let (us, vs) = (u.broadcast_to(&shape), v.broadcast_to(&shape));
+    let (us, vs) = us.zip(vs).ok_or_else(not_broadcast)?;
+    at_each(py, &shape, tail, |k, out| f(us[k], vs[k], out))
+}
+
+/// `f(k, out)` for every flat index `k` of an array of `shape`: the result
+/// of shape `shape + tail` (a `float` for a scalar and no tail), computed
+/// with the GIL released within [`MAX_OUTPUT_BYTES`].
+fn at_each<'py>(
+    py: Python<'py>,
+    shape: &[usize],
+    tail: &[usize],
+    f: impl Fn(usize, &mut Vec<f64>) -> Result<(), t2spline::Error> + Send + Sync,
+) -> PyResult<Bound<'py, PyAny>> {
+    let count: usize = shape.iter().product();
     let width = tail.iter().product::<usize>();
+    check_bytes(count as u128 * width as u128, || {
+        format!("{count} parameters of {width} values each")
+    })?;
     let values = compute(py, || {
-        let mut out = Vec::with_capacity(t.data.len() * width);
-        for &v in &t.data {
-            f(v, &mut out)?;
+        let mut out = Vec::with_capacity(count * width);
+        for k in 0..count {
+            f(k, &mut out)?;
         }
         Ok(out)
     })?;
-    if t.shape.is_empty() && tail.is_empty() {
+    if shape.is_empty() && tail.is_empty() {
         return Ok(values[0].into_pyobject(py)?.into_any());
     }
-    let shape: Vec<usize> = t.shape.iter().chain(tail).copied().collect();
+    let shape: Vec<usize> = shape.iter().chain(tail).copied().collect();
     array(py, values, &shape)
 }

@@ -1,0 +1,172 @@
+//! The methods that `FuzzyCurve` and `FuzzySurface` share, written once:
+//! reading a job's model, and the fuzzy numbers of the control points as
+//! arrays of the net's shape (`(n, d)` for a curve, `(nu, nv, d)` for a
+//! surface), with the feet of each number last.
+
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::PyTuple;
+use t2spline::Nt2Point;
+
+use crate::number::PyFuzzyNumber;
+
+/// The fuzzy numbers of `point` as a tuple, one per coordinate.
+pub(crate) fn numbers<'py, const D: usize>(
+    py: Python<'py>,
+    point: &Nt2Point<D>,
+) -> PyResult<Bound<'py, PyTuple>> {
+    PyTuple::new(py, point.coords().iter().map(|&x| PyFuzzyNumber(x)))
+}
+
+/// An index from Python, in `0 .. count`.
+///
+/// # Errors
+/// `ValueError` naming `name` and the range.
+pub(crate) fn index(value: i64, count: usize, name: &str) -> PyResult<usize> {
+    usize::try_from(value)
+        .ok()
+        .filter(|&i| i < count)
+        .ok_or_else(|| {
+            PyValueError::new_err(match count {
+                0 => format!("{name}: {value} is outside the empty range"),
+                _ => format!("{name}: {value} is outside [0, {}]", count - 1),
+            })
+        })
+}
+
+/// `fuzzy_methods!("kind", "net", Solved => then!(Class, … { methods }))`:
+/// the methods of a fuzzy model whose control points form a net of shape
+/// `(net)` (`"n"`, `"nu, nv"`) and whose stages 2–4 are a `Solved`, added to
+/// `methods`, then handed to `then!` (`curve_methods!` or
+/// `surface_methods!`), which writes the `#[pymethods]` block: `from_job`,
+/// `crisp`, `upper`, `primary`, `lower`, `lower_height`,
+/// `layer_control_points`, `solve`.
+macro_rules! fuzzy_methods {
+    (
+        $kind:literal, $net:literal, $solved:ident =>
+        $then:ident!($class:ident $(, $extra:ident)* { $($own:tt)* })
+    ) => {
+        $then!($class $(, $extra)* {
+            $($own)*
+
+            /// Stages 2–4 at level ``alpha`` (SPEC §7, §9): alpha-cut, type
+            /// reduction and defuzzification of every control point, as a
+            /// ``Solution`` (of a curve) or a ``SurfaceSolution`` (of a
+            /// surface).
+            ///
+            /// Parameters
+            /// ----------
+            /// alpha : float, optional
+            ///     The level in ``[0, 1]``; needed by the paper's type reduction
+            ///     only. The others read the whole number: stage 2 is cut at
+            ///     alpha = 0, and an alpha given anyway is checked and set aside
+            ///     with a ``UserWarning``, as ``run`` does.
+            /// type_reduction : {"paper", "centroid", "nie-tan", "alpha-planes"}, optional
+            ///     The type reduction of stages 3–4 (SPEC §10), default
+            ///     ``"paper"``.
+            ///
+            /// Raises
+            /// ------
+            /// ValueError
+            ///     If ``alpha`` is NaN or outside ``[0, 1]``, missing for the
+            ///     paper's reduction, or ``type_reduction`` is unknown.
+            #[pyo3(signature = (alpha=None, type_reduction=None))]
+            fn solve(
+                &self,
+                py: Python<'_>,
+                alpha: Option<f64>,
+                type_reduction: Option<&str>,
+            ) -> PyResult<$solved> {
+                let (a, reduction) = $crate::reduction::solve_settings(py, alpha, type_reduction)?;
+                $crate::dim::by_dim!(&self.0, |c| $crate::errors::compute(py, || Ok(c
+                    .solve_with(a, reduction)
+                    .into())))
+            }
+
+            #[doc = concat!("The fuzzy ", $kind, " of a job: a dict with the keys of a job file, or the")]
+            /// path of one (validated as by ``t2spline run``).
+            ///
+            /// Raises
+            /// ------
+            /// JobError
+            ///     For a job that breaks the rules; ``ValueError`` for a job
+            #[doc = concat!("    of another kind of model than a ", $kind, ".")]
+            #[staticmethod]
+            fn from_job(job: &Bound<'_, PyAny>) -> PyResult<Self> {
+                let (model, source) = $crate::run::job_model(job)?;
+                $crate::dim::FromModel::from_model(model).map(Self).ok_or_else(|| {
+                    pyo3::exceptions::PyValueError::new_err(format!(
+                        concat!("{}: the job is not a ", $kind),
+                        source
+                    ))
+                })
+            }
+
+            #[doc = concat!("The crisp values, shape ``(", $net, ", d)``.")]
+            #[getter]
+            fn crisp<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+                self.per_number(py, &[], |x, v| v.push(x.crisp()))
+            }
+
+            #[doc = concat!("The upper feet ``[left, right]``, shape ``(", $net, ", d, 2)``.")]
+            #[getter]
+            fn upper<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+                self.per_number(py, &[2], |x, v| v.extend([x.upper().left(), x.upper().right()]))
+            }
+
+            #[doc = concat!("The primary feet ``[left, right]``, shape ``(", $net, ", d, 2)``.")]
+            #[getter]
+            fn primary<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+                self.per_number(py, &[2], |x, v| {
+                    v.extend([x.primary().left(), x.primary().right()]);
+                })
+            }
+
+            #[doc = concat!("The lower feet ``[left, right]``, shape ``(", $net, ", d, 2)``.")]
+            #[getter]
+            fn lower<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+                self.per_number(py, &[2], |x, v| v.extend([x.lower().left(), x.lower().right()]))
+            }
+
+            #[doc = concat!("The lower height of every number, shape ``(", $net, ", d)``.")]
+            #[getter]
+            fn lower_height<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+                self.per_number(py, &[], |x, v| v.push(x.height().get()))
+            }
+
+            #[doc = concat!("The values of one layer at every control point, shape ``(", $net, ", d)``.")]
+            fn layer_control_points<'py>(
+                &self,
+                py: Python<'py>,
+                layer: &str,
+            ) -> PyResult<Bound<'py, PyAny>> {
+                let l = $crate::construct::layer(layer, "layer")?;
+                $crate::dim::by_dim!(&self.0, |c| $crate::net::points_array(
+                    py,
+                    c.points().iter().map(|p| p.layer(l)).collect(),
+                    &$crate::net::Net::net(c),
+                ))
+            }
+        });
+
+        impl $class {
+            /// One value per control point and coordinate, `f(number)` each.
+            fn per_number<'py>(
+                &self,
+                py: Python<'py>,
+                tail: &[usize],
+                f: impl Fn(&t2spline::Nt2Number, &mut Vec<f64>),
+            ) -> PyResult<Bound<'py, PyAny>> {
+                $crate::dim::by_dim!(&self.0, |c| $crate::net::per_number(
+                    py,
+                    c.points(),
+                    &$crate::net::Net::net(c),
+                    tail,
+                    &f
+                ))
+            }
+        }
+    };
+}
+
+pub(crate) use fuzzy_methods;

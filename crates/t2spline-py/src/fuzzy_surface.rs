@@ -1,0 +1,157 @@
+//! `FuzzySurface`: stage 1 of Algorithm 1.1 on a net of fuzzy control
+//! points (SPEC §9); its seven layer surfaces on a grid by the grid engine,
+//! its operations on all layers at once (`surface_methods.rs`), the fuzzy
+//! numbers of its net (`fuzzy_methods.rs`), and `solve` for stages 2–4.
+
+use pyo3::prelude::*;
+use pyo3::types::{PyDict, PyTuple};
+use t2spline::{FuzzySurface, Layer};
+
+use crate::arrays::{coords_last, optional_vector};
+use crate::classes::{PyFuzzyCurve, PyFuzzySurface, PyNurbsSurface, PySurfaceSolution};
+use crate::construct::{layer, net_weights, rows, surface_degrees, FuzzyArrays, PerDirection};
+use crate::dim::by_dim;
+use crate::errors::compute;
+use crate::fuzzy_methods::{fuzzy_methods, index, numbers};
+use crate::sample::{at_pairs, GridArg};
+use crate::surface_methods::surface_methods;
+
+fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzzySurface, PyFuzzyCurve {
+    #[new]
+    #[pyo3(signature = (crisp, upper, primary, lower, lower_height, weights=None, knots_u=None, knots_v=None, *, degree=None, order=None))]
+    #[allow(clippy::too_many_arguments)]
+    fn new(
+        py: Python<'_>,
+        crisp: &Bound<'_, PyAny>,
+        upper: &Bound<'_, PyAny>,
+        primary: &Bound<'_, PyAny>,
+        lower: &Bound<'_, PyAny>,
+        lower_height: &Bound<'_, PyAny>,
+        weights: Option<&Bound<'_, PyAny>>,
+        knots_u: Option<&Bound<'_, PyAny>>,
+        knots_v: Option<&Bound<'_, PyAny>>,
+        degree: Option<PerDirection>,
+        order: Option<PerDirection>,
+    ) -> PyResult<Self> {
+        let data = FuzzyArrays::read([crisp, upper, primary, lower, lower_height], 2)?;
+        let net = [data.net[0], data.net[1]];
+        let weights = rows(net_weights(weights, net)?, net);
+        let knots = [
+            optional_vector(knots_u, "knots_u")?,
+            optional_vector(knots_v, "knots_v")?,
+        ];
+        let lengths = knots.each_ref().map(|k| k.as_ref().map(Vec::len));
+        let degree = surface_degrees(degree, order, lengths, net)?;
+        compute(py, move || {
+            Ok(by_dim!(data.points()?, |p| FuzzySurface::try_new(
+                degree,
+                rows(p, net),
+                weights,
+                knots
+            )?
+            .into()))
+        })
+    }
+
+    /// The fuzzy control point ``P̃ᵢⱼ`` (row ``i`` along u, column ``j``
+    /// along v): one ``FuzzyNumber`` per coordinate.
+    fn point<'py>(&self, py: Python<'py>, i: i64, j: i64) -> PyResult<Bound<'py, PyTuple>> {
+        let [nu, nv] = by_dim!(&self.0, |s| s.shape());
+        let (i, j) = (index(i, nu, "i")?, index(j, nv, "j")?);
+        by_dim!(&self.0, |s| numbers(py, &s.points()[i * nv + j]))
+    }
+
+    /// The layer surface through one value of every control point, as a
+    /// ``NurbsSurface`` (``"crisp"``: the crisp surface).
+    fn layer_surface(&self, layer: &str) -> PyResult<PyNurbsSurface> {
+        let l = self::layer(layer, "layer")?;
+        Ok(by_dim!(&self.0, |s| s.layer_surface(l).into()))
+    }
+
+    /// The crisp rational B-spline surface through the crisp values.
+    fn crisp_surface(&self) -> PyNurbsSurface {
+        by_dim!(&self.0, |s| s.crisp_surface().into())
+    }
+
+    /// The seven layer surfaces at every pair of ``u`` and ``v`` (broadcast
+    /// as numpy does) by the straightforward evaluator (one rational basis
+    /// for all layers); the reference that ``sample`` is tested against.
+    ///
+    /// Returns
+    /// -------
+    /// numpy.ndarray
+    ///     Shape ``broadcast(u, v).shape + (7, d)``, layers in SPEC order
+    ///     (``upper_left`` … ``upper_right``, ``crisp`` at index 3).
+    fn eval_layers<'py>(
+        &self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let d = self.dimension();
+        by_dim!(&self.0, |s| at_pairs(py, u, v, &[7, d], |u, v, out| {
+            out.extend(s.eval_layers(u, v)?.as_array().iter().flatten());
+            Ok(())
+        }))
+    }
+
+    /// The seven layer surfaces on the grid ``u × v`` by the grid engine (one
+    /// basis evaluation per grid row and column for all layers), the SPEC §1
+    /// order of the layers kept exactly at every grid point.
+    ///
+    /// Parameters
+    /// ----------
+    /// u, v : int or array_like
+    ///     Each a count of uniform parameters over its domain, or a 1-D array
+    ///     of parameters in any order.
+    ///
+    /// Returns
+    /// -------
+    /// dict
+    ///     ``"u"`` and ``"v"``: the parameters, shapes ``(su,)`` and
+    ///     ``(sv,)``; for each layer name (``"upper_left"`` …
+    ///     ``"upper_right"``) the grid, shape ``(su, sv, d)``, views of one
+    ///     ``(7, d, su, sv)`` array.
+    fn sample<'py>(
+        &self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let grid = GridArg::extract(u, v)?;
+        let d = self.dimension();
+        grid.check_output(7 * d)?;
+        let buffer = by_dim!(&self.0, |s| compute(py, || {
+            let g = s.sample_layers(grid.u.params(), grid.v.params())?;
+            let layers = g.samples().layers();
+            Ok(Layer::ALL
+                .iter()
+                .flat_map(|&l| layers[l].coords().iter().flatten().copied())
+                .collect::<Vec<f64>>())
+        }))?;
+        let out = PyDict::new(py);
+        let [u, v] = grid.arrays(py, self.domains())?;
+        out.set_item("u", u)?;
+        out.set_item("v", v)?;
+        // (layer, coordinate, u, v) seen as (layer, u, v, coordinate).
+        let layers = coords_last(py, buffer, &[7], d, &grid.shape())?;
+        for l in Layer::ALL {
+            out.set_item(l.name(), layers.get_item(l.index())?)?;
+        }
+        Ok(out)
+    }
+
+    fn __repr__(&self) -> String {
+        let ((a, b), (c, e)) = self.domain();
+        by_dim!(&self.0, |s| {
+            let ([p, q], [nu, nv]) = (s.degree(), s.shape());
+            format!(
+                "FuzzySurface(dimension={}, degree=({p}, {q}), order=({}, {}), control_points=({nu}, {nv}, {}), domain=(({a:?}, {b:?}), ({c:?}, {e:?})))",
+                self.dimension(),
+                p + 1,
+                q + 1,
+                self.dimension(),
+            )
+        })
+    }
+}));

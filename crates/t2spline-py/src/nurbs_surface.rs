@@ -1,0 +1,239 @@
+//! `NurbsSurface`: a rational B-spline surface (SPEC §9) with the operations
+//! of the core: evaluation broadcast over arrays of `u` and `v`, the grid
+//! engine, partial derivatives, the normal, isocurves, knot insertion and
+//! refinement, degree elevation, splitting (the last ones shared with
+//! `FuzzySurface`, `surface_methods.rs`).
+
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use t2spline::nurbs::MAX_DERIVATIVE_ORDER;
+use t2spline::{Direction, NurbsSurface};
+
+use crate::arrays::{coords_last, floats, optional_vector, Floats};
+use crate::classes::{PyNurbsCurve, PyNurbsSurface};
+use crate::construct::{count, knot_vector, net_weights, rows, surface_degrees, PerDirection};
+use crate::dim::{by_dim, ByDim};
+use crate::errors::compute;
+use crate::net::{points_array, Net};
+use crate::sample::{at_pairs, channels, GridArg};
+use crate::surface_methods::surface_methods;
+
+/// A surface of dimension `D` on the net of `points`.
+fn build<const D: usize>(
+    points: &Floats,
+    net: [usize; 2],
+    weights: Vec<f64>,
+    [ku, kv]: [Option<Vec<f64>>; 2],
+    [p, q]: [usize; 2],
+) -> Result<NurbsSurface<D>, t2spline::Error> {
+    let knots = [
+        knot_vector(Direction::U, ku, p, net[0])?,
+        knot_vector(Direction::V, kv, q, net[1])?,
+    ];
+    NurbsSurface::try_new(rows(points.rows::<D>(), net), rows(weights, net), knots)
+}
+
+surface_methods!(PyNurbsSurface, PyNurbsCurve {
+    #[new]
+    #[pyo3(signature = (control_points, weights=None, knots_u=None, knots_v=None, *, degree=None, order=None))]
+    fn new(
+        py: Python<'_>,
+        control_points: &Bound<'_, PyAny>,
+        weights: Option<&Bound<'_, PyAny>>,
+        knots_u: Option<&Bound<'_, PyAny>>,
+        knots_v: Option<&Bound<'_, PyAny>>,
+        degree: Option<PerDirection>,
+        order: Option<PerDirection>,
+    ) -> PyResult<Self> {
+        let points = floats(control_points, "control_points")?;
+        let (net, d) = points.net_shape("control_points", 2)?;
+        let net = [net[0], net[1]];
+        let weights = net_weights(weights, net)?;
+        let knots = [
+            optional_vector(knots_u, "knots_u")?,
+            optional_vector(knots_v, "knots_v")?,
+        ];
+        let lengths = knots.each_ref().map(|k| k.as_ref().map(Vec::len));
+        let degree = surface_degrees(degree, order, lengths, net)?;
+        compute(py, move || {
+            Ok(match d {
+                2 => build::<2>(&points, net, weights, knots, degree)?.into(),
+                _ => build::<3>(&points, net, weights, knots, degree)?.into(),
+            })
+        })
+    }
+
+    /// The control net, shape ``(nu, nv, dimension)``.
+    #[getter]
+    fn control_points<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        by_dim!(&self.0, |s| points_array(py, s.control_points().to_vec(), &s.net()))
+    }
+
+    /// The point ``S(u, v)`` at every pair of ``u`` and ``v``, by the
+    /// straightforward evaluator (the rational basis at ``(u, v)``);
+    /// ``sample`` is the fast engine for grids.
+    ///
+    /// Parameters
+    /// ----------
+    /// u, v : float or array_like
+    ///     Parameters in the domain; arrays broadcast together as numpy's do
+    ///     (``u[:, None]`` and ``v[None, :]`` give a grid).
+    ///
+    /// Returns
+    /// -------
+    /// numpy.ndarray
+    ///     Shape ``broadcast(u, v).shape + (dimension,)``.
+    ///
+    /// Raises
+    /// ------
+    /// ValueError
+    ///     For a parameter outside its domain (``parameter v = 2 is outside
+    ///     the domain [0, 1]``), NaN or infinity, shapes that do not
+    ///     broadcast.
+    fn eval<'py>(
+        &self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let d = self.dimension();
+        by_dim!(&self.0, |s| at_pairs(py, u, v, &[d], |u, v, out| {
+            out.extend(s.eval(u, v)?);
+            Ok(())
+        }))
+    }
+
+    /// The surface on the grid ``u × v`` by the grid engine (the basis in u
+    /// once per grid row, in v once per grid column, multi-threaded by rows
+    /// for large grids); agrees with ``eval`` to rounding.
+    ///
+    /// Parameters
+    /// ----------
+    /// u, v : int or array_like
+    ///     Each a count of uniform parameters over its domain
+    ///     (``uniform_params``) or a 1-D array of parameters in any order.
+    ///
+    /// Returns
+    /// -------
+    /// numpy.ndarray
+    ///     Shape ``(len(u), len(v), dimension)``: the point ``[a, b]`` is
+    ///     ``S(u[a], v[b])``, as ``run``'s ``surfaces`` grids.
+    fn sample<'py>(
+        &self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let grid = GridArg::extract(u, v)?;
+        let ([su, sv], d) = (grid.shape(), self.dimension());
+        let mut buffer = grid.buffer(d)?;
+        by_dim!(&self.0, |s| compute(py, || s.grid_sampler().sample_into(
+            grid.u.params(),
+            grid.v.params(),
+            &mut channels(&mut buffer, d, su * sv)
+        )))?;
+        coords_last(py, buffer, &[], d, &[su, sv])
+    }
+
+    /// The partial derivatives ``∂ᵏ⁺ˡS/∂uᵏ∂vˡ`` for ``k + l <= order`` at
+    /// every pair of ``u`` and ``v`` (The NURBS Book A3.6 and A4.4);
+    /// one-sided at knots, as ``eval``.
+    ///
+    /// Returns
+    /// -------
+    /// numpy.ndarray
+    ///     Shape ``broadcast(u, v).shape + (order + 1, order + 1,
+    ///     dimension)``: ``[..., k, l, :]`` is ``∂ᵏ⁺ˡS/∂uᵏ∂vˡ``,
+    ///     ``[..., 0, 0, :]`` the point itself; NaN where ``k + l > order``
+    ///     (not computed).
+    ///
+    /// Examples
+    /// --------
+    /// >>> s = NurbsSurface([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]], degree=1)
+    /// >>> d = s.derivatives(0.25, 0.5, order=2)        # S(u, v) = (u, v, u·v)
+    /// >>> d[1, 0].tolist(), d[0, 1].tolist(), d[1, 1].tolist()   # S_u, S_v, S_uv
+    /// ([1.0, 0.0, 0.5], [0.0, 1.0, 0.25], [0.0, 0.0, 1.0])
+    #[pyo3(signature = (u, v, order=1))]
+    fn derivatives<'py>(
+        &self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+        order: i64,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let order = count(order, "order", 0)?;
+        let d = self.dimension();
+        // The order is checked by the core before anything is computed.
+        let rows = order.min(MAX_DERIVATIVE_ORDER) + 1;
+        by_dim!(&self.0, |s| at_pairs(py, u, v, &[rows, rows, d], |u, v, out| {
+            let derivatives = s.derivatives(u, v, order)?;
+            for k in 0..rows {
+                for l in 0..rows {
+                    match derivatives.get(k).and_then(|row| row.get(l)) {
+                        Some(value) => out.extend(value),
+                        None => out.extend((0..d).map(|_| f64::NAN)),
+                    }
+                }
+            }
+            Ok(())
+        }))
+    }
+
+    /// The unit normal ``S_u × S_v / |S_u × S_v|`` at every pair of ``u`` and
+    /// ``v``, one-sided at knots as ``derivatives``; shape
+    /// ``broadcast(u, v).shape + (3,)``.
+    ///
+    /// Raises
+    /// ------
+    /// ValueError
+    ///     Where ``S_u`` and ``S_v`` are parallel or zero; for a surface in
+    ///     the plane.
+    fn normal<'py>(
+        &self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        match &self.0 {
+            ByDim::Spatial(s) => at_pairs(py, u, v, &[3], |u, v, out| {
+                out.extend(s.normal(u, v)?);
+                Ok(())
+            }),
+            ByDim::Planar(_) => Err(PyValueError::new_err(
+                "normal: a surface in the plane has none (it needs 3 coordinates)",
+            )),
+        }
+    }
+
+    /// The rational basis ``Rᵢⱼ(u, v) = wᵢⱼNᵢ,ₚ(u)Mⱼ,q(v) / Σₖₗ
+    /// wₖₗNₖ,ₚ(u)Mₗ,q(v)`` of every control point at every pair of ``u`` and
+    /// ``v``: non-negative, summing to 1; shape ``broadcast(u, v).shape +
+    /// (nu, nv)``.
+    fn rational_basis<'py>(
+        &self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let net = by_dim!(&self.0, |s| s.net());
+        by_dim!(&self.0, |s| at_pairs(py, u, v, &net, |u, v, out| {
+            out.extend(s.rational_basis(u, v)?.into_iter().flatten());
+            Ok(())
+        }))
+    }
+
+    fn __repr__(&self) -> String {
+        let ((a, b), (c, e)) = self.domain();
+        by_dim!(&self.0, |s| {
+            let ([p, q], [nu, nv]) = (s.degree(), s.shape());
+            let [ku, kv] = Direction::BOTH.map(|k| s.knots(k).as_slice().len());
+            format!(
+                "NurbsSurface(dimension={}, degree=({p}, {q}), order=({}, {}), control_points=({nu}, {nv}, {}), knots=({ku}, {kv}), domain=(({a:?}, {b:?}), ({c:?}, {e:?})))",
+                self.dimension(),
+                p + 1,
+                q + 1,
+                self.dimension(),
+            )
+        })
+    }
+});

@@ -1,0 +1,123 @@
+//! `SurfaceSolution`: stages 2–4 of Algorithm 1.1 at one level alpha on the
+//! control net of a fuzzy surface (SPEC §7, §9) — the control nets of the
+//! stages (shared with `Solution`, `stage_methods.rs`), their surfaces, their
+//! grids and the distance between the crisp and the defuzzified surface.
+
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+
+use crate::classes::{PyFuzzySurface, PyNurbsSurface, PySurfaceSolution};
+use crate::construct::{layer, side};
+use crate::dim::by_dim;
+use crate::errors::compute;
+use crate::sample::GridArg;
+use crate::stage_methods::{stage_methods, stage_samples};
+
+stage_methods!(PySurfaceSolution, fuzzy_surface, "nu, nv" {
+    /// The fuzzy surface (stage 1) this solves.
+    #[getter]
+    fn fuzzy_surface(&self) -> PyFuzzySurface {
+        by_dim!(&self.0, |s| s.fuzzy_surface().clone().into())
+    }
+
+    /// The surface through one alpha-cut layer; ``None`` for a lower layer
+    /// when some number has no lower cut at this level.
+    fn alpha_cut_surface(&self, layer: &str) -> PyResult<Option<PyNurbsSurface>> {
+        let l = self::layer(layer, "layer")?;
+        Ok(by_dim!(&self.0, |s| s.alpha_cut_surface(l).map(Into::into)))
+    }
+
+    /// The surface through the left or the right type-reduced values.
+    fn type_reduced_surface(&self, side: &str) -> PyResult<PyNurbsSurface> {
+        let side = self::side(side)?;
+        Ok(by_dim!(&self.0, |s| s.type_reduced_surface(side).into()))
+    }
+
+    /// The crisp type-2 solution: the surface through the defuzzified
+    /// control net.
+    fn defuzzified_surface(&self) -> PyNurbsSurface {
+        by_dim!(&self.0, |s| s.defuzzified_surface().into())
+    }
+
+    /// The crisp surface, through the crisp control net.
+    fn crisp_surface(&self) -> PyNurbsSurface {
+        by_dim!(&self.0, |s| s.crisp_surface().into())
+    }
+
+    /// The distance ``d(u, v) = |D(u, v) − C(u, v)|`` between the
+    /// defuzzified surface ``D`` and the crisp surface ``C`` at equal
+    /// parameters over the whole domain ``[a, b] × [c, d]`` (SPEC §9)::
+    ///
+    ///     max = max d(u, v)   (at (u, v) = max_at),
+    ///     rms = sqrt( 1/((b − a)(d − c)) ∫∫ d(u, v)² du dv )
+    ///
+    /// properties of the surfaces, not of a sampling: a 17 × 17 scan of
+    /// every span rectangle refined by Nelder–Mead, and adaptive
+    /// Gauss–Legendre cubature. Zero for symmetric spreads. The numbers of
+    /// ``run``'s ``error`` for the same job, level and type reduction, bit
+    /// for bit.
+    ///
+    /// Returns
+    /// -------
+    /// dict
+    ///     ``"max"`` (float), ``"max_at"`` (a pair ``(u, v)``), ``"rms"``
+    ///     (float).
+    fn distance<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyDict>> {
+        let d = by_dim!(&self.0, |s| compute(py, || Ok(s.distance())))?;
+        let out = PyDict::new(py);
+        out.set_item("max", d.max)?;
+        out.set_item("max_at", (d.max_at[0], d.max_at[1]))?;
+        out.set_item("rms", d.rms)?;
+        Ok(out)
+    }
+
+    /// The surfaces of stages 2–4 on the grid ``u × v`` by the grid engine.
+    ///
+    /// Parameters
+    /// ----------
+    /// u, v : int or array_like
+    ///     Each a count of uniform parameters over its domain, or a 1-D array
+    ///     of parameters.
+    ///
+    /// Returns
+    /// -------
+    /// dict
+    ///     ``"u"``, ``"v"`` (shapes ``(su,)``, ``(sv,)``); ``"alpha_cut"``:
+    ///     the six alpha-cut layer surfaces (shape ``(su, sv, d)``, ``None``
+    ///     for an absent lower layer); ``"type_reduced_left"``,
+    ///     ``"type_reduced_right"`` and ``"defuzzified"`` (shape
+    ///     ``(su, sv, d)``).
+    fn sample<'py>(
+        &self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let grid = GridArg::extract(u, v)?;
+        grid.check_output(9 * self.0.dimension())?;
+        let out = PyDict::new(py);
+        let domains = by_dim!(&self.0, |s| t2spline::Direction::BOTH
+            .map(|d| s.fuzzy_surface().domain(d)));
+        let [u, v] = grid.arrays(py, domains)?;
+        out.set_item("u", u)?;
+        out.set_item("v", v)?;
+        by_dim!(&self.0, |s| {
+            let stages = compute(py, || s.sample_stages(grid.u.params(), grid.v.params()))?;
+            stage_samples(&out, stages.samples(), &grid.shape())
+        })?;
+        Ok(out)
+    }
+
+    fn __repr__(&self) -> String {
+        by_dim!(&self.0, |s| {
+            let surface = s.fuzzy_surface();
+            let ([p, q], [nu, nv]) = (surface.degree(), surface.shape());
+            format!(
+                "SurfaceSolution(alpha={:?}, type_reduction='{}', control_points=({nu}, {nv}, {}), degree=({p}, {q}))",
+                s.alpha().get(),
+                s.type_reduction().name(),
+                self.0.dimension(),
+            )
+        })
+    }
+});
