@@ -17,8 +17,8 @@
 
 use crate::font::{cap_height, line_height, text_width};
 use crate::geometry::{Px, Rect};
-use crate::layout::PanelLayout;
 use crate::obstacles::Obstacles;
+use crate::panel_layout::PanelLayout;
 use crate::scene::{Mark, Panel, Priority};
 use crate::style::font_size;
 
@@ -226,7 +226,7 @@ fn around(anchor: Px, text: &str, radii: &[f64]) -> Vec<Candidate> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::layout::AxisLayout;
+    use crate::panel_layout::AxisLayout;
     use crate::style::{Stroke, BLACK};
 
     fn layout() -> PanelLayout {

@@ -65,6 +65,7 @@ mod labels;
 mod layout;
 mod obstacles;
 mod output;
+mod panel_layout;
 #[cfg(feature = "png")]
 mod png;
 mod report;
@@ -79,9 +80,10 @@ pub use figures::surface::View;
 pub use figures::{all_figures, Aspect, FigureOptions, NumberChoice, FIGURE_NAMES};
 pub use geometry::{Px, Rect};
 pub use labels::{place as place_labels, Placed};
-pub use layout::{fit as fit_layout, AxisLayout, Layout, LegendLayout, PanelLayout};
+pub use layout::{fit as fit_layout, Layout, LegendLayout};
 pub use obstacles::{panel_obstacles, Obstacles};
 pub use output::{render_files, Format};
+pub use panel_layout::{AxisLayout, PanelLayout};
 #[cfg(feature = "png")]
 pub use png::{svg_to_png, Pixmap, PNG_DPI, PNG_SCALE};
 pub use report::{render as render_report, Stops, DATA_BUDGET};

@@ -14,7 +14,7 @@
 use std::cell::OnceCell;
 
 use crate::geometry::{Px, Rect};
-use crate::layout::PanelLayout;
+use crate::panel_layout::PanelLayout;
 use crate::scene::{Mark, Panel};
 
 /// Side of a grid cell in pixels: a few times a curve's sampling step and

@@ -17,7 +17,7 @@ use t2spline_io::{
     CSV_FILES, DERIVATIVES_CSV,
 };
 
-use super::run::{overrides, Destinations, ALPHA_IGNORED};
+use super::results::{overrides, Destinations, ALPHA_IGNORED};
 use super::settings::{about_derivatives, settings, unused_alpha, OptionError};
 use crate::cli::RunArgs;
 use crate::exit::{Exit, JobsFailed};

@@ -8,6 +8,7 @@ mod fit;
 mod fuzzify;
 mod plot;
 mod report;
+mod results;
 mod run;
 pub mod settings;
 mod validate;

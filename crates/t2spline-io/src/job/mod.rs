@@ -9,8 +9,10 @@
 // iterators, `split_first`), as ARCHITECTURE.md explains.
 #![cfg_attr(not(test), deny(clippy::indexing_slicing))]
 
+mod common;
 pub mod limits;
 pub(crate) mod parse;
+mod point;
 mod position;
 mod read;
 mod surface;

@@ -10,32 +10,18 @@ use std::collections::HashSet;
 
 use serde_json::{Map, Value};
 use t2spline::fit::FuzzyData;
-use t2spline::job::{check_samples, Job, Model, Samples, DEFAULT_SAMPLES};
-use t2spline::{
-    Alpha, Axis, FuzzyCurve, Height, KnotVector, Nt2Number, Nt2Point, Place, TypeReduction,
-};
+use t2spline::job::{Job, Model, Samples, DEFAULT_SAMPLES};
+use t2spline::{Alpha, FuzzyCurve, KnotVector, Nt2Point, Place};
 
-use super::limits::{
-    check_order, MAX_ARRAY, MAX_KEYS, MAX_NESTING, MAX_POINTS, MAX_PROBLEMS, MAX_VALUES,
-};
-use super::position::{self, child, element, Oversized};
+use super::common::{knot_error_path, TOP_KEYS};
+use super::limits::{MAX_ARRAY, MAX_KEYS, MAX_NESTING, MAX_POINTS, MAX_PROBLEMS, MAX_VALUES};
+use super::point::{complete, RawPoint};
+use super::position::{self, element, Oversized};
 use super::surface;
-use super::walker::{kind, suggestion, written, Walker};
+use super::walker::{kind, Walker};
 use crate::fit_data::FitData;
-use crate::{printable, Problem};
+use crate::Problem;
 
-pub(super) const TOP_KEYS: &[&str] = &[
-    "description",
-    "order",
-    "degree",
-    "weights",
-    "knots",
-    "alpha",
-    "type_reduction",
-    "lower_height",
-    "samples",
-    "points",
-];
 /// The keys of a data file for `t2spline fit`: those of a job but the two the
 /// fit computes.
 const DATA_KEYS: &[&str] = &[
@@ -47,8 +33,6 @@ const DATA_KEYS: &[&str] = &[
     "samples",
     "points",
 ];
-const POINT_KEYS: &[&str] = &["x", "y", "z"];
-const NUMBER_KEYS: &[&str] = &["crisp", "upper", "primary", "lower", "lower_height"];
 
 /// Parses `text` as a job, or returns every problem found, each with its line
 /// and column.
@@ -198,62 +182,7 @@ fn looks_like_csv(text: &str) -> bool {
     })
 }
 
-/// The fuzzy numbers of one point, per axis, once parsed.
-pub(super) type RawPoint = Vec<(Axis, Option<Nt2Number>)>;
-
-/// The top-level keys that every job and data file reads alike, as parsed
-/// (`None`: missing or invalid, and reported).
-pub(super) struct Common {
-    pub(super) description: Option<String>,
-    pub(super) alpha: Option<Alpha>,
-    /// The top-level lower height; `Err(())`: given but invalid (reported
-    /// here once, not again for every number that inherits it).
-    pub(super) height: Result<Option<f64>, ()>,
-}
-
 impl Walker {
-    /// The keys every file shares, in the order of the file format: unknown
-    /// keys (against `known`), `description`, the model's order (read by
-    /// `order`, as the kind of model needs), `alpha`, `lower_height`.
-    pub(super) fn common<T>(
-        &mut self,
-        o: &Map<String, Value>,
-        known: &[&'static str],
-        order: impl FnOnce(&mut Self) -> T,
-    ) -> (Common, T) {
-        self.unknown_keys(o, "", known);
-        let description = match o.get("description") {
-            None => None,
-            Some(Value::String(s)) => Some(s.clone()),
-            Some(v) => {
-                self.report("description", format!("expected a string, got {}", kind(v)));
-                None
-            }
-        };
-        let order = order(self);
-        let alpha = o.get("alpha").and_then(|v| {
-            let a = self.number(v, "alpha")?;
-            Alpha::try_new(a).map_err(|e| self.located("alpha", e)).ok()
-        });
-        let height: Result<Option<f64>, ()> = match o.get("lower_height") {
-            None => Ok(None),
-            Some(v) => match self.number(v, "lower_height").map(Height::try_new) {
-                Some(Ok(h)) => Ok(Some(h.get())),
-                Some(Err(e)) => {
-                    self.located("lower_height", e);
-                    Err(())
-                }
-                None => Err(()),
-            },
-        };
-        let common = Common {
-            description,
-            alpha,
-            height,
-        };
-        (common, order)
-    }
-
     /// The keys a job and a data file of a curve share, checked against
     /// `known`. `missing_points` says what `points` holds, for its message.
     fn header(
@@ -295,15 +224,6 @@ impl Walker {
             points,
             count: o.get("points").and_then(Value::as_array).map(Vec::len),
         }
-    }
-
-    /// A number of samples at `path`: a whole number from 2 to the limit
-    /// (SPEC §8).
-    pub(super) fn samples_in(&mut self, v: &Value, path: &str) -> Option<usize> {
-        let n = self.whole(v, path)?;
-        check_samples(n, &written(v))
-            .map_err(|rule| self.report(path, rule))
-            .ok()
     }
 
     fn job(&mut self, root: &Value) -> Option<Job> {
@@ -367,40 +287,6 @@ impl Walker {
                 None
             }
         }
-    }
-
-    /// `type_reduction`: one of the [`TypeReduction::name`]s (SPEC §10),
-    /// the paper's when the key is missing. Curve and surface jobs alike.
-    pub(super) fn type_reduction(&mut self, o: &Map<String, Value>) -> Option<TypeReduction> {
-        let Some(v) = o.get("type_reduction") else {
-            return Some(TypeReduction::Paper);
-        };
-        let Some(name) = v.as_str() else {
-            self.report(
-                "type_reduction",
-                format!("expected a string, got {}", kind(v)),
-            );
-            return None;
-        };
-        let parsed = name.parse().ok();
-        if parsed.is_none() {
-            let names = TypeReduction::ALL.map(TypeReduction::name);
-            let hint = match suggestion(name, &names) {
-                Some(s) => format!("did you mean `{s}`?"),
-                None => format!("known: {}", names.join(", ")),
-            };
-            // A name is short; a long value is shown by its start.
-            let shown: String = name.chars().take(40).collect();
-            let more = if shown.len() < name.len() { "…" } else { "" };
-            self.report(
-                "type_reduction",
-                format!(
-                    "unknown type reduction `{}{more}` ({hint})",
-                    printable(&shown)
-                ),
-            );
-        }
-        parsed
     }
 
     /// A data file: the keys of a job but `weights` and `knots`, at least
@@ -471,44 +357,6 @@ impl Walker {
         for e in weight_problems.into_iter().chain(knot_problems).flatten() {
             self.located(&curve_error_path(&e), e);
         }
-    }
-
-    /// The key that gives the order, `order` or `degree`, and its value:
-    /// exactly one of them must be given.
-    pub(super) fn order_key<'v>(
-        &mut self,
-        o: &'v Map<String, Value>,
-    ) -> Option<(&'static str, &'v Value)> {
-        match (o.get("order"), o.get("degree")) {
-            (Some(_), Some(_)) => {
-                self.located(
-                    "degree",
-                    "order, degree: give exactly one of them (order = degree + 1)",
-                );
-                None
-            }
-            (None, None) => {
-                self.report("order", "missing: give `order` (k) or `degree` (k - 1)");
-                None
-            }
-            (Some(v), None) => Some(("order", v)),
-            (None, Some(v)) => Some(("degree", v)),
-        }
-    }
-
-    /// One order `v` at `path`, given as `key` (`order` or `degree`): a
-    /// whole number, an order of at least 1, within
-    /// [`MAX_ORDER`](super::limits::MAX_ORDER). Returns the degree.
-    pub(super) fn degree_of(&mut self, key: &str, path: &str, v: &Value) -> Option<usize> {
-        let given = self.whole(v, path)?;
-        if key == "order" && given == 0 {
-            self.report(path, "order = 0: the order must be at least 1");
-            return None;
-        }
-        let order = check_order(key, given, &written(v))
-            .map_err(|rule| self.report(path, rule))
-            .ok()?;
-        Some(order - 1)
     }
 
     /// The degree of a curve, from `order` or `degree`.
@@ -585,103 +433,6 @@ impl Walker {
                 .map(Points::Planar),
         }
     }
-
-    /// One control point at `key` (`points[2]`, or `points[2][1]` in the net
-    /// of a surface): an object with a fuzzy number per coordinate, each
-    /// placed by `place` in the core's messages. `coordinates` judges which
-    /// coordinates the point has (and reports at `key`); the numbers are
-    /// checked even in a point it refuses, so that one run reports all their
-    /// problems too. `None`: not an object, or refused.
-    pub(super) fn point(
-        &mut self,
-        item: &Value,
-        key: &str,
-        place: impl Fn(Axis) -> Place,
-        height: Result<Option<f64>, ()>,
-        coordinates: impl FnOnce(&mut Self, &[&'static str]) -> bool,
-    ) -> Option<RawPoint> {
-        let o = self.object(item, key, "a point")?;
-        self.unknown_keys(o, key, POINT_KEYS);
-        let axes: Vec<Axis> = [Axis::X, Axis::Y, Axis::Z]
-            .into_iter()
-            .filter(|a| o.contains_key(a.name()))
-            .collect();
-        let names: Vec<&'static str> = axes.iter().map(|a| a.name()).collect();
-        let usable = coordinates(self, &names);
-        let point: RawPoint = axes
-            .into_iter()
-            .map(|axis| {
-                let number = self.number_of(&o[axis.name()], key, place(axis), height);
-                (axis, number)
-            })
-            .collect();
-        usable.then_some(point)
-    }
-
-    /// One fuzzy number: coordinate `place.axis` of the point at `point`.
-    fn number_of(
-        &mut self,
-        v: &Value,
-        point: &str,
-        place: Place,
-        height: Result<Option<f64>, ()>,
-    ) -> Option<Nt2Number> {
-        let key = child(point, place.axis.map_or("?", Axis::name));
-        let o = self.object(v, &key, "a fuzzy number")?;
-        self.unknown_keys(o, &key, NUMBER_KEYS);
-        let mut get = |name: &str| {
-            let v = o.get(name);
-            if v.is_none() {
-                self.report(&child(&key, name), "missing");
-            }
-            v
-        };
-        let (crisp, upper, primary, lower) =
-            (get("crisp"), get("upper"), get("primary"), get("lower"));
-        let crisp = crisp.and_then(|v| self.number(v, &child(&key, "crisp")));
-        let upper = upper.and_then(|v| self.pair(v, &child(&key, "upper")));
-        let primary = primary.and_then(|v| self.pair(v, &child(&key, "primary")));
-        let lower = lower.and_then(|v| self.pair(v, &child(&key, "lower")));
-        let own = o
-            .get("lower_height")
-            .map(|v| self.number(v, &child(&key, "lower_height")));
-        // `stand_in`: there is no valid height (reported, here or at the top
-        // level); the order is still checked, with a valid height in its place.
-        let (h, stand_in) = match (own, height) {
-            (Some(own), _) => (own?, false),
-            (None, Ok(Some(h))) => (h, false),
-            (None, Ok(None)) => {
-                self.report(
-                    &key,
-                    "no lower_height: give it in the number or at the top level of the job",
-                );
-                (1.0, true)
-            }
-            (None, Err(())) => (1.0, true),
-        };
-        let (crisp, upper, primary, lower) = (crisp?, upper?, primary?, lower?);
-        for e in Nt2Number::problems(crisp, upper, primary, lower, h) {
-            let path = match &e {
-                t2spline::Error::NotFinite { what, .. }
-                | t2spline::Error::OutOfRange { what, .. } => value_path(&key, what),
-                _ => key.clone(),
-            };
-            self.located(&path, e.at(place));
-        }
-        if stand_in {
-            return None;
-        }
-        Nt2Number::try_new(crisp, upper, primary, lower, h).ok()
-    }
-}
-
-/// The path of one of the values of the number at `number`, by its SPEC name
-/// (`upper.left` → `upper[0]`, `lower_height` → `lower_height`).
-fn value_path(number: &str, what: &str) -> String {
-    match what.split_once('.') {
-        Some((pair, side)) => element(&child(number, pair), usize::from(side == "right")),
-        None => child(number, what),
-    }
 }
 
 /// The place in the job file of a curve-level error of the core crate.
@@ -693,27 +444,6 @@ fn curve_error_path(e: &t2spline::Error) -> String {
         E::Weight { index, .. } | E::WeightOutOfRange { index, .. } => element("weights", index),
         _ => knot_error_path(e, "knots").unwrap_or_default(),
     }
-}
-
-/// The place of an error of the core crate about a knot vector, the array at
-/// `knots` (`knots`, or `knots.v` of a surface); `None` for other errors.
-pub(super) fn knot_error_path(e: &t2spline::Error, knots: &str) -> Option<String> {
-    use t2spline::Error as E;
-    match *e {
-        E::KnotCount { .. } | E::EmptyDomain { .. } => Some(knots.to_owned()),
-        E::KnotNotFinite { index, .. }
-        | E::KnotOutOfRange { index, .. }
-        | E::KnotDecreasing { index, .. }
-        | E::KnotMultiplicity { first: index, .. } => Some(element(knots, index)),
-        _ => None,
-    }
-}
-
-/// The point of `D` dimensions whose numbers were all read, if the point has
-/// exactly `D`.
-pub(super) fn complete<const D: usize>(p: RawPoint) -> Option<Nt2Point<D>> {
-    let numbers: Vec<Nt2Number> = p.into_iter().map(|(_, x)| x).collect::<Option<_>>()?;
-    numbers.try_into().ok().map(Nt2Point::new)
 }
 
 /// What a job and a data file share, as parsed (`None`: missing or invalid,

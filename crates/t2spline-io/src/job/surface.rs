@@ -1,9 +1,10 @@
 //! The rules of surface jobs (SPEC §9): a job whose `points` are rows of a
 //! net.
 //!
-//! The walkers of numbers, points, weights and knots are the curves' own
-//! ([`walker`](super::walker), [`parse`](super::parse)); what is new here is
-//! the shape of a surface job and the rules that tie its parts to the net:
+//! The walkers of keys, numbers, points, weights and knots are the curves'
+//! own ([`common`](super::common), [`point`](super::point),
+//! [`walker`](super::walker)); what is new here is the shape of a surface job
+//! and the rules that tie its parts to the net:
 //!
 //! | key | curve | surface |
 //! |---|---|---|
@@ -18,8 +19,9 @@ use t2spline::job::{check_grid_samples, Job, Model, Samples, DEFAULT_SURFACE_SAM
 use t2spline::nurbs::net_weight_problems;
 use t2spline::{Direction, Error as CoreError, FuzzySurface, KnotVector, Nt2Point, Place};
 
+use super::common::{knot_error_path, TOP_KEYS};
 use super::limits::{check_net_size, check_surface_work};
-use super::parse::{complete, knot_error_path, TOP_KEYS};
+use super::point::complete;
 use super::position::{child, element};
 use super::walker::{kind, written, Walker};
 

@@ -3,33 +3,10 @@
 
 use crate::font::text_width;
 use crate::geometry::Rect;
+use crate::panel_layout::{AxisLayout, PanelLayout};
 use crate::scene::{Figure, Mark, Panel, Xy};
 use crate::style::font_size;
-use crate::ticks::{decimals_for, nice_ticks, tick_label};
-
-use super::PanelLayout;
-
-/// One axis of a panel: its range and ticks.
-#[derive(Clone, Debug, PartialEq)]
-pub struct AxisLayout {
-    /// The data range shown.
-    pub range: [f64; 2],
-    /// Tick values.
-    pub ticks: Vec<f64>,
-    /// Decimals of the tick labels.
-    pub decimals: usize,
-}
-
-impl AxisLayout {
-    /// The tick labels.
-    #[must_use]
-    pub fn labels(&self) -> Vec<String> {
-        self.ticks
-            .iter()
-            .map(|&t| tick_label(t, self.decimals))
-            .collect()
-    }
-}
+use crate::ticks::{decimals_for, nice_ticks};
 
 /// Data bounds of a panel's items: `[x0, x1, y0, y1]`.
 pub(super) fn bounds(panel: &Panel) -> Option<[f64; 4]> {

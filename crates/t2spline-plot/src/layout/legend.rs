@@ -5,10 +5,11 @@
 use crate::font::text_width;
 use crate::geometry::{Px, Rect};
 use crate::obstacles::Obstacles;
+use crate::panel_layout::PanelLayout;
 use crate::scene::LegendEntry;
 use crate::style::font_size;
 
-use super::{PanelLayout, PAD};
+use super::PAD;
 
 /// Legend: sample width, gap, row height, padding.
 pub const LEGEND_SWATCH: f64 = 30.0;

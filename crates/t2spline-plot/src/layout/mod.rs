@@ -13,16 +13,16 @@ mod axes;
 mod legend;
 mod texts;
 
-pub use axes::{with_ranges, AxisLayout};
 pub use legend::{LegendLayout, LEGEND_ROW, LEGEND_SWATCH};
 pub use texts::{wrap, FixedLabels};
 
 use crate::font::{cap_height, line_height};
-use crate::geometry::{Px, Rect};
+use crate::geometry::Rect;
 use crate::obstacles::{add_panel, Obstacles};
-use crate::scene::{Figure, Priority, Xy};
+use crate::panel_layout::PanelLayout;
+use crate::scene::{Figure, Priority};
 use crate::style::font_size;
-use axes::{data_ranges, label_width, placed};
+use axes::{data_ranges, label_width, placed, with_ranges};
 use legend::LegendSize;
 
 /// Outer margin of the page.
@@ -33,47 +33,6 @@ pub const TICK_LEN: f64 = 5.0;
 const COLORBAR_SPACE: f64 = 96.0;
 /// Height of a line of notes.
 pub const NOTE_ROW: f64 = 14.0;
-
-/// A placed panel.
-#[derive(Clone, Debug, PartialEq)]
-pub struct PanelLayout {
-    /// The plot area in pixels.
-    pub plot: Rect,
-    /// Horizontal axis.
-    pub x: AxisLayout,
-    /// Vertical axis.
-    pub y: AxisLayout,
-}
-
-impl PanelLayout {
-    /// Data coordinates to pixels.
-    #[must_use]
-    pub fn to_px(&self, p: Xy) -> Px {
-        let [x0, x1] = self.x.range;
-        let [y0, y1] = self.y.range;
-        [
-            self.plot.x + (p[0] - x0) / (x1 - x0) * self.plot.w,
-            self.plot.bottom() - (p[1] - y0) / (y1 - y0) * self.plot.h,
-        ]
-    }
-
-    /// The pixels of the marker centres that lie in the plot area (to within
-    /// 0.01 px): markers are not clipped, so that one at the edge shows whole,
-    /// but one whose centre lies outside a zoomed panel is left out.
-    #[must_use]
-    pub fn marker_px(&self, points: &[Xy]) -> Vec<Px> {
-        let r = &self.plot;
-        let shows = |px: &Px| {
-            (r.x - 0.01..=r.right() + 0.01).contains(&px[0])
-                && (r.y - 0.01..=r.bottom() + 0.01).contains(&px[1])
-        };
-        points
-            .iter()
-            .map(|&p| self.to_px(p))
-            .filter(shows)
-            .collect()
-    }
-}
 
 /// A whole page.
 #[derive(Clone, Debug, PartialEq)]
@@ -448,7 +407,7 @@ pub fn fit_probed(figures: &[&Figure], probes: &[usize]) -> Layout {
 mod tests {
     use super::*;
     use crate::scene::LegendEntry;
-    use crate::scene::{Mark, Panel};
+    use crate::scene::{Mark, Panel, Xy};
     use crate::style::{Stroke, BLACK};
 
     fn figure(points: Vec<Xy>) -> Figure {

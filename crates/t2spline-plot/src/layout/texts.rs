@@ -5,10 +5,11 @@ use crate::font::{line_height, text_width};
 use crate::geometry::Rect;
 use crate::labels::{place, Placed};
 use crate::obstacles::Obstacles;
+use crate::panel_layout::PanelLayout;
 use crate::scene::{Figure, Mark, Panel, Priority};
 use crate::style::font_size;
 
-use super::PanelLayout;
+use super::axes::with_ranges;
 
 /// The placement of each text item of a panel that is the same in every
 /// figure laid out: `Some(placed)` (or `Some(None)`, left out) per such item,
@@ -85,7 +86,7 @@ pub(super) fn changing_rooms(
                 .collect(),
             ..p.clone()
         };
-        rooms.extend(label_room(&changing, &super::with_ranges(pl, p)));
+        rooms.extend(label_room(&changing, &with_ranges(pl, p)));
     }
     rooms
 }

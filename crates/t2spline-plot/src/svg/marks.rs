@@ -5,7 +5,7 @@ use std::fmt::Write as _;
 
 use crate::geometry::Px;
 use crate::labels::Placed;
-use crate::layout::PanelLayout;
+use crate::panel_layout::PanelLayout;
 use crate::scene::{Facet, Mark, Xy};
 use crate::simplify::simplify;
 use crate::style::{font_size, Marker, Shape, GREY, WHITE};

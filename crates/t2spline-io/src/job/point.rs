@@ -1,0 +1,121 @@
+//! A control point as read: an object with a fuzzy number per coordinate,
+//! each number checked by the core's rules (SPEC §1) and placed in the file;
+//! shared by the points of a curve and the net of a surface.
+
+use serde_json::Value;
+use t2spline::{Axis, Nt2Number, Nt2Point, Place};
+
+use super::position::{child, element};
+use super::walker::Walker;
+
+const POINT_KEYS: &[&str] = &["x", "y", "z"];
+const NUMBER_KEYS: &[&str] = &["crisp", "upper", "primary", "lower", "lower_height"];
+
+/// The fuzzy numbers of one point, per axis, once parsed.
+pub(super) type RawPoint = Vec<(Axis, Option<Nt2Number>)>;
+
+impl Walker {
+    /// One control point at `key` (`points[2]`, or `points[2][1]` in the net
+    /// of a surface): an object with a fuzzy number per coordinate, each
+    /// placed by `place` in the core's messages. `coordinates` judges which
+    /// coordinates the point has (and reports at `key`); the numbers are
+    /// checked even in a point it refuses, so that one run reports all their
+    /// problems too. `None`: not an object, or refused.
+    pub(super) fn point(
+        &mut self,
+        item: &Value,
+        key: &str,
+        place: impl Fn(Axis) -> Place,
+        height: Result<Option<f64>, ()>,
+        coordinates: impl FnOnce(&mut Self, &[&'static str]) -> bool,
+    ) -> Option<RawPoint> {
+        let o = self.object(item, key, "a point")?;
+        self.unknown_keys(o, key, POINT_KEYS);
+        let axes: Vec<Axis> = [Axis::X, Axis::Y, Axis::Z]
+            .into_iter()
+            .filter(|a| o.contains_key(a.name()))
+            .collect();
+        let names: Vec<&'static str> = axes.iter().map(|a| a.name()).collect();
+        let usable = coordinates(self, &names);
+        let point: RawPoint = axes
+            .into_iter()
+            .map(|axis| {
+                let number = self.number_of(&o[axis.name()], key, place(axis), height);
+                (axis, number)
+            })
+            .collect();
+        usable.then_some(point)
+    }
+
+    /// One fuzzy number: coordinate `place.axis` of the point at `point`.
+    fn number_of(
+        &mut self,
+        v: &Value,
+        point: &str,
+        place: Place,
+        height: Result<Option<f64>, ()>,
+    ) -> Option<Nt2Number> {
+        let key = child(point, place.axis.map_or("?", Axis::name));
+        let o = self.object(v, &key, "a fuzzy number")?;
+        self.unknown_keys(o, &key, NUMBER_KEYS);
+        let mut get = |name: &str| {
+            let v = o.get(name);
+            if v.is_none() {
+                self.report(&child(&key, name), "missing");
+            }
+            v
+        };
+        let (crisp, upper, primary, lower) =
+            (get("crisp"), get("upper"), get("primary"), get("lower"));
+        let crisp = crisp.and_then(|v| self.number(v, &child(&key, "crisp")));
+        let upper = upper.and_then(|v| self.pair(v, &child(&key, "upper")));
+        let primary = primary.and_then(|v| self.pair(v, &child(&key, "primary")));
+        let lower = lower.and_then(|v| self.pair(v, &child(&key, "lower")));
+        let own = o
+            .get("lower_height")
+            .map(|v| self.number(v, &child(&key, "lower_height")));
+        // `stand_in`: there is no valid height (reported, here or at the top
+        // level); the order is still checked, with a valid height in its place.
+        let (h, stand_in) = match (own, height) {
+            (Some(own), _) => (own?, false),
+            (None, Ok(Some(h))) => (h, false),
+            (None, Ok(None)) => {
+                self.report(
+                    &key,
+                    "no lower_height: give it in the number or at the top level of the job",
+                );
+                (1.0, true)
+            }
+            (None, Err(())) => (1.0, true),
+        };
+        let (crisp, upper, primary, lower) = (crisp?, upper?, primary?, lower?);
+        for e in Nt2Number::problems(crisp, upper, primary, lower, h) {
+            let path = match &e {
+                t2spline::Error::NotFinite { what, .. }
+                | t2spline::Error::OutOfRange { what, .. } => value_path(&key, what),
+                _ => key.clone(),
+            };
+            self.located(&path, e.at(place));
+        }
+        if stand_in {
+            return None;
+        }
+        Nt2Number::try_new(crisp, upper, primary, lower, h).ok()
+    }
+}
+
+/// The path of one of the values of the number at `number`, by its SPEC name
+/// (`upper.left` → `upper[0]`, `lower_height` → `lower_height`).
+fn value_path(number: &str, what: &str) -> String {
+    match what.split_once('.') {
+        Some((pair, side)) => element(&child(number, pair), usize::from(side == "right")),
+        None => child(number, what),
+    }
+}
+
+/// The point of `D` dimensions whose numbers were all read, if the point has
+/// exactly `D`.
+pub(super) fn complete<const D: usize>(p: RawPoint) -> Option<Nt2Point<D>> {
+    let numbers: Vec<Nt2Number> = p.into_iter().map(|(_, x)| x).collect::<Option<_>>()?;
+    numbers.try_into().ok().map(Nt2Point::new)
+}
