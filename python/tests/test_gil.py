@@ -73,3 +73,12 @@ def test_two_threads_sample_at_once_with_the_same_results() -> None:
         t.join()
     first, second = results
     assert all((first[name] == second[name]).all() for name in first)
+
+
+def test_a_thread_runs_while_a_fuzzy_surface_is_sampled_and_solved() -> None:
+    terrain = t2spline.FuzzySurface.from_job(str(EXAMPLE.parent / "fuzzy-terrain.json"))
+    stall, duration = longest_stall(lambda: terrain.sample(1000, 1000))
+    assert stall < 0.5 * duration, (stall, duration)
+    solution = terrain.solve(0.5)
+    stall, duration = longest_stall(lambda: solution.sample(1000, 1000))
+    assert stall < 0.5 * duration, (stall, duration)
