@@ -204,3 +204,76 @@ pub fn remove_temporary_files() -> usize {
     std::mem::forget(live);
     removed
 }
+
+#[cfg(test)]
+mod tests {
+    use std::io::Write;
+
+    use super::*;
+
+    /// The names in `dir`, sorted.
+    fn names(dir: &Path) -> Vec<String> {
+        let mut names: Vec<String> = std::fs::read_dir(dir)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        names.sort();
+        names
+    }
+
+    fn write(t: &Temporary, bytes: &[u8]) {
+        let mut file = t.file().unwrap();
+        file.write_all(bytes).unwrap();
+    }
+
+    #[test]
+    fn a_new_file_has_no_name_until_it_is_complete() {
+        let dir = tempfile::tempdir().unwrap();
+        let t = Temporary::create(dir.path(), false).unwrap();
+        write(&t, b"new");
+        #[cfg(target_os = "linux")]
+        assert_eq!(names(dir.path()), Vec::<String>::new());
+        t.persist(&dir.path().join("out.json")).unwrap();
+        assert_eq!(names(dir.path()), ["out.json"]);
+        assert_eq!(std::fs::read(dir.path().join("out.json")).unwrap(), b"new");
+    }
+
+    /// A file that appears under the target's name while the output is
+    /// written is replaced, as a file there from the start would be.
+    #[test]
+    fn a_target_that_appeared_meanwhile_is_replaced() {
+        let dir = tempfile::tempdir().unwrap();
+        let target = dir.path().join("out.json");
+        let t = Temporary::create(dir.path(), false).unwrap();
+        write(&t, b"new");
+        std::fs::write(&target, b"old").unwrap();
+        t.persist(&target).unwrap();
+        assert_eq!(names(dir.path()), ["out.json"]);
+        assert_eq!(std::fs::read(&target).unwrap(), b"new");
+    }
+
+    #[test]
+    fn a_replacing_file_is_named_until_renamed_and_removed_when_dropped() {
+        let dir = tempfile::tempdir().unwrap();
+        std::fs::write(dir.path().join("out.json"), b"old").unwrap();
+        let t = Temporary::create(dir.path(), true).unwrap();
+        write(&t, b"new");
+        let during = names(dir.path());
+        assert_eq!(during.len(), 2, "{during:?}");
+        assert!(during
+            .iter()
+            .any(|n| n.starts_with(".t2spline-") && n.ends_with(".tmp")));
+        drop(t);
+        assert_eq!(names(dir.path()), ["out.json"]);
+        assert_eq!(std::fs::read(dir.path().join("out.json")).unwrap(), b"old");
+    }
+
+    #[test]
+    fn a_dropped_new_file_leaves_nothing() {
+        let dir = tempfile::tempdir().unwrap();
+        let t = Temporary::create(dir.path(), false).unwrap();
+        write(&t, b"never named");
+        drop(t);
+        assert_eq!(names(dir.path()), Vec::<String>::new());
+    }
+}
