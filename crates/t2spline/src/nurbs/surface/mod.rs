@@ -21,8 +21,12 @@
 //! rows that stack a whole line of the net (`operations.rs`): no algorithm
 //! is written twice.
 
+mod bounding_box;
+pub(crate) mod closest_point;
+pub use closest_point::ClosestSurfacePoint;
 mod derivatives;
 pub(crate) mod operations;
+pub(crate) mod patches;
 
 use std::fmt;
 
@@ -595,5 +599,7 @@ impl TensorBasis {
     }
 }
 
+#[cfg(test)]
+mod extrema_tests;
 #[cfg(test)]
 mod tests;
