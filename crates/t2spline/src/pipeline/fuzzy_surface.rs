@@ -429,4 +429,58 @@ mod tests {
             prop_assert!(worst <= strategies::elevation_tolerance(&k, s.weights(), scale), "{}", worst);
         }
     }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(16))]
+
+        /// The layer-wise closest points are those of the layer surfaces; the
+        /// box is the union of the layer surfaces' boxes, spanned by the two
+        /// outer layers, and holds every layer's samples.
+        #[test]
+        fn closest_points_and_the_box_are_those_of_the_layers(
+            s in strategies::fuzzy_surface_common_height::<3>(),
+            target in prop::array::uniform3(-5.0f64..5.0),
+        ) {
+            let near = s.closest_points(target).unwrap();
+            let b = s.bounding_box();
+            let outer = s.layer_surface(Layer::UpperLeft).bounding_box();
+            let upper = s.layer_surface(Layer::UpperRight).bounding_box();
+            prop_assert_eq!(b.min, outer.min);
+            prop_assert_eq!(b.max, upper.max);
+            for l in Layer::ALL {
+                let layer = s.layer_surface(l);
+                prop_assert_eq!(near[l], layer.closest_point(target).unwrap());
+                let lb = layer.bounding_box();
+                prop_assert!(b.contains(&lb.min, 0.0) && b.contains(&lb.max, 0.0));
+            }
+            let (du, dv) = (s.domain(Direction::U), s.domain(Direction::V));
+            for u in du.uniform(21).unwrap() {
+                for v in dv.uniform(21).unwrap() {
+                    let layers = s.eval_layers(u, v).unwrap();
+                    for l in Layer::ALL {
+                        prop_assert!(b.contains(&layers[l], 1e-12));
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_target_that_is_not_finite_is_an_error() {
+        let n = |c: f64| Nt2Number::try_new(c, [c - 1.0, c + 1.0], [c, c], [c, c], 1.0).unwrap();
+        let p = |x: f64, y: f64| Nt2Point::new([n(x), n(y)]);
+        let net = vec![
+            vec![p(0.0, 0.0), p(0.0, 1.0)],
+            vec![p(1.0, 0.0), p(1.0, 1.0)],
+        ];
+        let s = FuzzySurface::try_new([1, 1], net, vec![vec![1.0; 2]; 2], [None, None]).unwrap();
+        assert!(matches!(
+            s.closest_points([0.0, f64::NEG_INFINITY]),
+            Err(Error::NotFinite { .. })
+        ));
+        let near = s.closest_points([0.5, 3.0]).unwrap();
+        assert_eq!(near[Layer::Crisp].point, [0.5, 1.0]);
+        // The upper right layer spans [1, 2]²: its nearest point is a corner.
+        assert_eq!(near[Layer::UpperRight].point, [1.0, 2.0]);
+    }
 }
