@@ -15,6 +15,8 @@
 //! | knot insertion, refinement | [`NurbsSurface::insert_knot`], [`NurbsSurface::refine_knots`] | A5.1, A5.4 on stacked rows (as A5.3, A5.5) |
 //! | degree elevation | [`NurbsSurface::elevate_degree`] | A5.9 on stacked rows (§5.5) |
 //! | splitting, sub-rectangle | [`NurbsSurface::split_at`], [`NurbsSurface::segment`] | §5.3 |
+//! | closest point | [`NurbsSurface::closest_point`] | §6.1, Eqs. 6.6–6.8 |
+//! | bounding box | [`NurbsSurface::bounding_box`] | — |
 //!
 //! The operations in one direction are the curve algorithms of
 //! `nurbs/knot_insertion.rs`, `degree_elevation.rs` and `split.rs` run on
