@@ -118,19 +118,9 @@ fn the_box_of_a_wavy_surface_holds_and_reaches_dense_samples() {
         assert!(b.contains(&p, 1e-13), "{p:?} outside {b:?}");
         sampled = sampled.with_point(p);
     }
-    for d in 0..3 {
-        assert_close(
-            s.eval(at[0][d][0], at[0][d][1]).unwrap()[d],
-            b.min[d],
-            1e-12,
-            "min",
-        );
-        assert_close(
-            s.eval(at[1][d][0], at[1][d][1]).unwrap()[d],
-            b.max[d],
-            1e-12,
-            "max",
-        );
+    for (d, ([u0, v0], [u1, v1])) in at[0].into_iter().zip(at[1]).enumerate() {
+        assert_close(s.eval(u0, v0).unwrap()[d], b.min[d], 1e-12, "min");
+        assert_close(s.eval(u1, v1).unwrap()[d], b.max[d], 1e-12, "max");
         // The sampling reaches the faces up to its own resolution.
         assert!(sampled.min[d] - b.min[d] < 1e-3 && b.max[d] - sampled.max[d] < 1e-3);
     }
@@ -218,9 +208,9 @@ proptest! {
             let p = s.eval(u, v).unwrap();
             prop_assert!(b.contains(&p, 1e-12), "{p:?} outside {b:?}");
         }
-        for d in 0..3 {
-            let lo = s.eval(at[0][d][0], at[0][d][1]).unwrap()[d];
-            let hi = s.eval(at[1][d][0], at[1][d][1]).unwrap()[d];
+        for (d, ([u0, v0], [u1, v1])) in at[0].into_iter().zip(at[1]).enumerate() {
+            let lo = s.eval(u0, v0).unwrap()[d];
+            let hi = s.eval(u1, v1).unwrap()[d];
             prop_assert!((lo - b.min[d]).abs() <= 1e-9 && (hi - b.max[d]).abs() <= 1e-9);
         }
     }
