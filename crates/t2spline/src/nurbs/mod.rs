@@ -26,7 +26,7 @@ mod arc_length;
 pub use arc_length::LENGTH_TOLERANCE;
 pub mod basis;
 mod bounding_box;
-mod closest_point;
+pub(crate) mod closest_point;
 pub(crate) mod curve;
 pub(crate) mod degree_elevation;
 pub mod derivatives;

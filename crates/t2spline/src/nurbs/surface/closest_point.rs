@@ -4,6 +4,7 @@
 use crate::error::{Error, Place};
 use crate::fuzzy::Axis;
 use crate::limits::{within_magnitude, MAGNITUDE_RANGE};
+use crate::nurbs::closest_point::{dot, sub};
 use crate::nurbs::surface::patches::{patch_min, Patch, HULL_SLACK};
 use crate::nurbs::surface::NurbsSurface;
 use crate::pipeline::euclidean_norm;
@@ -23,14 +24,6 @@ pub struct ClosestSurfacePoint<const D: usize> {
 
 /// Newton steps allowed from the refined scan minimum.
 const NEWTON_STEPS: usize = 30;
-
-fn dot<const D: usize>(a: &[f64; D], b: &[f64; D]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| x * y).sum()
-}
-
-fn sub<const D: usize>(a: &[f64; D], b: &[f64; D]) -> [f64; D] {
-    std::array::from_fn(|d| a[d] - b[d])
-}
 
 impl<const D: usize> NurbsSurface<D> {
     /// The point of the surface closest to `target`, over the whole domain
