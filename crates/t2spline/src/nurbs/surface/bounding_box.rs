@@ -54,11 +54,12 @@ impl<const D: usize> NurbsSurface<D> {
     /// ```
     #[must_use]
     pub fn bounding_box(&self) -> BoundingBox<D> {
-        self.bounding_box_reached().0
+        self.bounding_box_reached(true).0
     }
 
-    /// The bounding box and where each face is reached.
-    pub(crate) fn bounding_box_reached(&self) -> (BoundingBox<D>, FaceParams<D>) {
+    /// The bounding box and where each face is reached, with the patches
+    /// pruned by their bounds or (for the tests) every patch searched.
+    pub(crate) fn bounding_box_reached(&self, prune: bool) -> (BoundingBox<D>, FaceParams<D>) {
         let patches = self.patches();
         let corner = |&(spans, [[a0, b0], [a1, b1]]): &Patch| {
             [[a0, a1], [a0, b1], [b0, a1], [b0, b1]]
@@ -99,7 +100,7 @@ impl<const D: usize> NurbsSurface<D> {
                 let mut order: Vec<usize> = (0..patches.len()).collect();
                 order.sort_by(|&a, &b| bounds[a].total_cmp(&bounds[b]));
                 for k in order {
-                    if bounds[k] >= faces[side][d].0 {
+                    if prune && bounds[k] >= faces[side][d].0 {
                         break;
                     }
                     let patch = &patches[k];

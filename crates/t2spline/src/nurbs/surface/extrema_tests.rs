@@ -111,7 +111,7 @@ fn targets_that_are_not_finite_or_too_large_are_errors() {
 #[test]
 fn the_box_of_a_wavy_surface_holds_and_reaches_dense_samples() {
     let s = wavy();
-    let (b, at) = s.bounding_box_reached();
+    let (b, at) = s.bounding_box_reached(true);
     let mut sampled = BoundingBox::of_point(s.eval(0.0, -1.0).unwrap());
     for [u, v] in dense(&s, 301) {
         let p = s.eval(u, v).unwrap();
@@ -198,11 +198,18 @@ proptest! {
         prop_assert_eq!(pruned, every);
     }
 
+    /// Skipping the patches whose control points cannot move a face changes
+    /// nothing, to the bit.
+    #[test]
+    fn pruning_gives_the_box_of_searching_every_patch(s in surface()) {
+        prop_assert_eq!(s.bounding_box_reached(true), s.bounding_box_reached(false));
+    }
+
     /// The box holds a dense grid of samples, and each face is a value of the
     /// surface at the parameters where it is reached.
     #[test]
     fn the_box_holds_dense_samples_and_each_face_is_reached(s in surface()) {
-        let (b, at) = s.bounding_box_reached();
+        let (b, at) = s.bounding_box_reached(true);
         prop_assert_eq!(b, s.bounding_box());
         for [u, v] in dense(&s, 81) {
             let p = s.eval(u, v).unwrap();
