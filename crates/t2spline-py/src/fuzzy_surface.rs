@@ -9,6 +9,7 @@ use t2spline::{FuzzySurface, Layer};
 
 use crate::arrays::{coords_last, optional_vector};
 use crate::classes::{PyFuzzyCurve, PyFuzzySurface, PyNurbsSurface, PySurfaceSolution};
+use crate::closest::{ClosestArrays, Targets};
 use crate::construct::{layer, net_weights, rows, surface_degrees, FuzzyArrays, PerDirection};
 use crate::dim::by_dim;
 use crate::errors::compute;
@@ -71,6 +72,48 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
     /// The crisp rational B-spline surface through the crisp values.
     fn crisp_surface(&self) -> PyNurbsSurface {
         by_dim!(&self.0, |s| s.crisp_surface().into())
+    }
+
+    /// The point of every layer surface closest to ``point`` (see
+    /// ``NurbsSurface.closest_point``), layers in SPEC order
+    /// (``upper_left`` … ``upper_right``, ``crisp`` at index 3).
+    ///
+    /// Parameters
+    /// ----------
+    /// point : array_like, shape (dimension,) or (m, dimension)
+    ///
+    /// Returns
+    /// -------
+    /// (u, v, point, distance)
+    ///     For one point: arrays ``(7,)``, ``(7,)``, ``(7, dimension)`` and
+    ///     ``(7,)``; for ``m`` points: ``(m, 7)``, ``(m, 7)``,
+    ///     ``(m, 7, dimension)`` and ``(m, 7)``.
+    fn closest_points<'py>(
+        &self,
+        py: Python<'py>,
+        point: &Bound<'py, PyAny>,
+    ) -> PyResult<ClosestArrays<'py>> {
+        let d = self.dimension();
+        let targets = Targets::extract(point, d)?;
+        let found = by_dim!(&self.0, |s| compute(py, || {
+            let mut out = [vec![], vec![], vec![], vec![]];
+            for p in targets.rows() {
+                for c in s.closest_points(p)?.as_array() {
+                    out[0].push(c.u);
+                    out[1].push(c.v);
+                    out[2].extend(c.point);
+                    out[3].push(c.distance);
+                }
+            }
+            Ok(out)
+        }))?;
+        let [u, v, points, distances] = found;
+        Ok((
+            targets.pack(py, u, &[7])?,
+            targets.pack(py, v, &[7])?,
+            targets.pack(py, points, &[7, d])?,
+            targets.pack(py, distances, &[7])?,
+        ))
     }
 
     /// The seven layer surfaces at every pair of ``u`` and ``v`` (broadcast

@@ -44,6 +44,7 @@
 
 mod arrays;
 mod classes;
+mod closest;
 mod construct;
 mod curve_methods;
 mod dim;

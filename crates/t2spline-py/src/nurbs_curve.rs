@@ -2,12 +2,12 @@
 //! with the operations of the core: evaluation, derivatives, knot insertion,
 //! degree elevation, splitting, arc length, closest point.
 
-use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use t2spline::{KnotVector, NurbsCurve};
 
 use crate::arrays::{array, coords_last, floats, optional_vector, rows_array, Floats};
 use crate::classes::PyNurbsCurve;
+use crate::closest::Targets;
 use crate::construct::{count, degree};
 use crate::curve_methods::curve_methods;
 use crate::dim::by_dim;
@@ -245,19 +245,9 @@ curve_methods!(PyNurbsCurve {
         point: &Bound<'py, PyAny>,
     ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>, Bound<'py, PyAny>)> {
         let d = self.dimension();
-        let target = floats(point, "point")?;
-        let many = match target.shape[..] {
-            [k] if k == d => false,
-            [_, k] if k == d => true,
-            _ => {
-                return Err(PyValueError::new_err(format!(
-                    "point: expected shape ({d},) or (m, {d}), got {}",
-                    crate::arrays::shape_text(&target.shape)
-                )))
-            }
-        };
+        let targets = Targets::extract(point, d)?;
         let (t, points, distances) = by_dim!(&self.0, |c| compute(py, || {
-            let found: Vec<_> = target
+            let found: Vec<_> = targets
                 .rows()
                 .into_iter()
                 .map(|p| c.closest_point(p))
@@ -268,20 +258,11 @@ curve_methods!(PyNurbsCurve {
                 found.iter().map(|f| f.distance).collect::<Vec<_>>(),
             ))
         }))?;
-        if many {
-            let m = t.len();
-            Ok((
-                array(py, t, &[m])?,
-                array(py, points, &[m, d])?,
-                array(py, distances, &[m])?,
-            ))
-        } else {
-            Ok((
-                t[0].into_pyobject(py)?.into_any(),
-                array(py, points, &[d])?,
-                distances[0].into_pyobject(py)?.into_any(),
-            ))
-        }
+        Ok((
+            targets.pack(py, t, &[])?,
+            targets.pack(py, points, &[d])?,
+            targets.pack(py, distances, &[])?,
+        ))
     }
 
     /// The tight axis-aligned box of the curve ``(min, max)``, each of shape

@@ -1,8 +1,8 @@
 //! `NurbsSurface`: a rational B-spline surface (SPEC §9) with the operations
 //! of the core: evaluation broadcast over arrays of `u` and `v`, the grid
-//! engine, partial derivatives, the normal, isocurves, knot insertion and
-//! refinement, degree elevation, splitting (the last ones shared with
-//! `FuzzySurface`, `surface_methods.rs`).
+//! engine, partial derivatives, the normal, the closest point, isocurves,
+//! knot insertion and refinement, degree elevation, splitting, the bounding
+//! box (the last ones shared with `FuzzySurface`, `surface_methods.rs`).
 
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -11,6 +11,7 @@ use t2spline::{Direction, NurbsSurface};
 
 use crate::arrays::{coords_last, floats, optional_vector, Floats};
 use crate::classes::{PyNurbsCurve, PyNurbsSurface};
+use crate::closest::{ClosestArrays, Targets};
 use crate::construct::{count, knot_vector, net_weights, rows, surface_degrees, PerDirection};
 use crate::dim::{by_dim, ByDim};
 use crate::errors::compute;
@@ -220,6 +221,56 @@ surface_methods!(PyNurbsSurface, PyNurbsCurve {
             out.extend(s.rational_basis(u, v)?.into_iter().flatten());
             Ok(())
         }))
+    }
+
+    /// The point of the surface closest to ``point``: a global minimum over
+    /// the domain (each knot-span patch pruned by the box of its control
+    /// points, else scanned, refined by Nelder–Mead inside the patch and
+    /// polished by Newton's method on the normal equations, The NURBS Book
+    /// §6.1); borders and corners included.
+    ///
+    /// Parameters
+    /// ----------
+    /// point : array_like, shape (dimension,) or (m, dimension)
+    ///
+    /// Returns
+    /// -------
+    /// (u, v, point, distance)
+    ///     For one point: two floats, an array ``(dimension,)`` and a float;
+    ///     for ``m`` points: arrays ``(m,)``, ``(m,)``, ``(m, dimension)``
+    ///     and ``(m,)``.
+    ///
+    /// Examples
+    /// --------
+    /// >>> s = NurbsSurface([[[0, 0, 0], [0, 2, 0]], [[3, 0, 0], [3, 2, 0]]], degree=1)
+    /// >>> u, v, p, d = s.closest_point([1.2, 0.5, 4.0])     # S(u, v) = (3u, 2v, 0)
+    /// >>> round(u, 12), round(v, 12), round(d, 12)
+    /// (0.4, 0.25, 4.0)
+    fn closest_point<'py>(
+        &self,
+        py: Python<'py>,
+        point: &Bound<'py, PyAny>,
+    ) -> PyResult<ClosestArrays<'py>> {
+        let d = self.dimension();
+        let targets = Targets::extract(point, d)?;
+        let found = by_dim!(&self.0, |s| compute(py, || {
+            let mut out = [vec![], vec![], vec![], vec![]];
+            for p in targets.rows() {
+                let c = s.closest_point(p)?;
+                out[0].push(c.u);
+                out[1].push(c.v);
+                out[2].extend(c.point);
+                out[3].push(c.distance);
+            }
+            Ok(out)
+        }))?;
+        let [u, v, points, distances] = found;
+        Ok((
+            targets.pack(py, u, &[])?,
+            targets.pack(py, v, &[])?,
+            targets.pack(py, points, &[d])?,
+            targets.pack(py, distances, &[])?,
+        ))
     }
 
     fn __repr__(&self) -> String {

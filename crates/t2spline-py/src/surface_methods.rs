@@ -8,7 +8,7 @@
 /// `Class` (a wrapper of a `ByDim` of surfaces whose isocurves are `Curve`s)
 /// with its own `methods` and the shared ones: `dimension`, `degree_u`,
 /// `degree_v`, `order`, `shape`, `weights`, `knots_u`, `knots_v`, `domain`,
-/// `uniform_params`, `isocurve`, `insert_knot`, `refine_knots`,
+/// `uniform_params`, `bounding_box`, `isocurve`, `insert_knot`, `refine_knots`,
 /// `elevate_degree`, `split_at`, `segment`.
 macro_rules! surface_methods {
     ($class:ident, $curve:ident { $($own:tt)* }) => {
@@ -91,6 +91,26 @@ macro_rules! surface_methods {
                 Ok((
                     $crate::curve_methods::uniform_params(py, u, count_u, "count_u")?,
                     $crate::curve_methods::uniform_params(py, v, count_v, "count_v")?,
+                ))
+            }
+
+            /// The tight axis-aligned box of the surface ``(min, max)``, each
+            /// of shape ``(dimension,)`` (per knot-span patch: the box of its
+            /// control points as a bound, refined by the extrema of each
+            /// coordinate); for a fuzzy surface the box of all seven layer
+            /// surfaces.
+            fn bounding_box<'py>(
+                &self,
+                py: Python<'py>,
+            ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+                let d = self.dimension();
+                let (lo, hi) = $crate::dim::by_dim!(&self.0, |s| $crate::errors::compute(py, || {
+                    let b = s.bounding_box();
+                    Ok((b.min.to_vec(), b.max.to_vec()))
+                }))?;
+                Ok((
+                    $crate::arrays::array(py, lo, &[d])?,
+                    $crate::arrays::array(py, hi, &[d])?,
                 ))
             }
 

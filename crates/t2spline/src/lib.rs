@@ -113,7 +113,8 @@ pub use fuzzy::{
 };
 pub use limits::{MAX_MAGNITUDE, MAX_WEIGHT, MIN_WEIGHT};
 pub use nurbs::{
-    BoundingBox, ClosestPoint, Direction, Domain, KnotVector, NurbsCurve, NurbsSurface,
+    BoundingBox, ClosestPoint, ClosestSurfacePoint, Direction, Domain, KnotVector, NurbsCurve,
+    NurbsSurface,
 };
 pub use pipeline::{
     Distance, FuzzyCurve, FuzzySurface, Side, Solution, SurfaceDistance, SurfaceSolution,

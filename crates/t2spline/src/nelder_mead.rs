@@ -1,7 +1,9 @@
 //! The Nelder–Mead simplex search for a minimum of a function of two
 //! variables in a rectangle (Nelder and Mead 1965; the coefficients of Lagarias
-//! et al., *SIAM J. Optim.* 9, 1998). Used to refine the maximum of the
-//! distance between two surfaces ([`crate::SurfaceDistance`]).
+//! et al., *SIAM J. Optim.* 9, 1998). Used to refine the extrema found by
+//! the patch search of surfaces (`nurbs/surface/patches.rs`): the maximum of
+//! the distance between two surfaces ([`crate::SurfaceDistance`]), the
+//! closest point and the bounding box.
 
 /// The smallest value of `f` found near `start` in the rectangle
 /// `[lo₀, hi₀] × [lo₁, hi₁]`, as `(f(x), x)`.

@@ -290,6 +290,11 @@ fn surface_operations<const D: usize>(
         returns("surface elevate_degree", || s.elevate_degree(d, n)).ok();
     }
     returns("sample_grid", || s.sample_grid(t, t)).ok();
+    // NaN, ∞ and huge targets are errors.
+    let target: [f64; D] = std::array::from_fn(|d| t.get(d).copied().unwrap_or(0.5));
+    let near = returns("surface closest_point", || s.closest_point(target));
+    assert_eq!(near.is_err(), !target.iter().all(|x| x.abs() <= 1e150));
+    returns("surface bounding_box", || s.bounding_box());
     let huge = Params::Uniform(1 << 33);
     assert!(returns("sample_grid huge", || s.sample_grid(huge, huge)).is_err());
 }
@@ -307,6 +312,9 @@ fn fuzzy_surface_operations<const D: usize>(rows: usize, flat: &[f64], t: &[f64]
     returns("FuzzySurface::sample_layers", || s.sample_layers(t, t)).ok();
     let solution = returns("FuzzySurface::solve", || s.solve(alpha));
     returns("SurfaceSolution::distance", || solution.distance());
+    let target: [f64; D] = std::array::from_fn(|d| t.get(d).copied().unwrap_or(0.5));
+    returns("FuzzySurface::closest_points", || s.closest_points(target)).ok();
+    returns("FuzzySurface::bounding_box", || s.bounding_box());
 }
 
 /// Calls `$f::<D>` for D = 1 ..= 5.

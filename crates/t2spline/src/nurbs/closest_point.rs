@@ -20,11 +20,13 @@ const SAMPLES_PER_DEGREE: usize = 8;
 /// Newton steps allowed from one start.
 const NEWTON_STEPS: usize = 50;
 
-fn dot<const D: usize>(a: &[f64; D], b: &[f64; D]) -> f64 {
+/// `a·b`.
+pub(crate) fn dot<const D: usize>(a: &[f64; D], b: &[f64; D]) -> f64 {
     a.iter().zip(b).map(|(x, y)| x * y).sum()
 }
 
-fn sub<const D: usize>(a: &[f64; D], b: &[f64; D]) -> [f64; D] {
+/// `a − b`.
+pub(crate) fn sub<const D: usize>(a: &[f64; D], b: &[f64; D]) -> [f64; D] {
     std::array::from_fn(|d| a[d] - b[d])
 }
 

@@ -7,9 +7,10 @@ use crate::fuzzy::{Alpha, Axis, Height, Layer, Layers, Nt2Number, Nt2Point};
 use crate::nurbs::degree_elevation::{check_elevation, elevate};
 use crate::nurbs::knot_insertion::{insert, refine};
 use crate::nurbs::net::{check_rows, Row};
+use crate::nurbs::surface::closest_point::check_target;
 use crate::nurbs::surface::operations::{isocurve_rows, map_net, segment_net, split_net, RowNet};
 use crate::nurbs::surface::{check_params, knots_in, net_shape, net_weights, TensorBasis};
-use crate::nurbs::{Direction, Domain, KnotVector, NurbsSurface};
+use crate::nurbs::{BoundingBox, ClosestSurfacePoint, Direction, Domain, KnotVector, NurbsSurface};
 use crate::pipeline::fuzzy_ops::{common_heights, from_stacked_rows, stacked_rows};
 use crate::pipeline::{FuzzyCurve, SurfaceSolution};
 use crate::reduction::TypeReduction;
@@ -192,6 +193,53 @@ impl<const D: usize> FuzzySurface<D> {
                 Nt2Number::from_layers_unchecked(&layers.map(|p| p[d]), heights[d])
             }))
         }))
+    }
+
+    /// The point of every layer surface closest to `target` (see
+    /// [`NurbsSurface::closest_point`]). Other per-layer quantities come from
+    /// [`FuzzySurface::layer_surface`].
+    ///
+    /// # Errors
+    /// [`Error::NotFinite`] or [`Error::OutOfRange`] naming the axis if a
+    /// coordinate of `target` is not finite or of magnitude above
+    /// [`MAX_MAGNITUDE`](crate::MAX_MAGNITUDE).
+    pub fn closest_points(
+        &self,
+        target: [f64; D],
+    ) -> Result<Layers<ClosestSurfacePoint<D>>, Error> {
+        check_target(&target)?;
+        Ok(Layers::from_fn(|l| {
+            self.layer_surface(l).closest_point_searching(target, true)
+        }))
+    }
+
+    /// The bounding box of all seven layer surfaces (see
+    /// [`NurbsSurface::bounding_box`]): the region the fuzzy surface can
+    /// occupy. Since the layers are ordered at every `(u, v)`, its lower
+    /// corner comes from the `upper_left` surface and its upper corner from
+    /// the `upper_right` surface.
+    ///
+    /// # Examples
+    /// ```
+    /// # use t2spline::{FuzzySurface, Nt2Number, Nt2Point};
+    /// let n = |c: f64| Nt2Number::try_new(c, [c - 1.0, c + 2.0], [c, c], [c, c], 1.0);
+    /// let p = |x: f64, y: f64| Ok::<_, t2spline::Error>(Nt2Point::new([n(x)?, n(y)?, n(x + y)?]));
+    /// let net = vec![vec![p(0.0, 0.0)?, p(0.0, 1.0)?], vec![p(1.0, 0.0)?, p(1.0, 1.0)?]];
+    /// let s = FuzzySurface::try_new([1, 1], net, vec![vec![1.0; 2]; 2], [None, None])?;
+    /// let b = s.bounding_box();
+    /// let want = [[-1.0, -1.0, -1.0], [3.0, 3.0, 4.0]];
+    /// for (got, want) in [b.min, b.max].iter().flatten().zip(want.iter().flatten()) {
+    ///     assert!((got - want).abs() < 1e-15);
+    /// }
+    /// # Ok::<(), t2spline::Error>(())
+    /// ```
+    #[must_use]
+    pub fn bounding_box(&self) -> BoundingBox<D> {
+        let [first, rest @ ..] = Layer::ALL;
+        rest.iter()
+            .fold(self.layer_surface(first).bounding_box(), |b, &l| {
+                b.union(self.layer_surface(l).bounding_box())
+            })
     }
 
     /// Runs stages 2–4 of Algorithm 1.1 on the control net at level `alpha`
@@ -383,5 +431,59 @@ mod tests {
             let (_, worst) = s.map_rows(direction, |k, r| Ok(elevate(k, r, 1))).unwrap();
             prop_assert!(worst <= strategies::elevation_tolerance(&k, s.weights(), scale), "{}", worst);
         }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(16))]
+
+        /// The layer-wise closest points are those of the layer surfaces; the
+        /// box is the union of the layer surfaces' boxes, spanned by the two
+        /// outer layers, and holds every layer's samples.
+        #[test]
+        fn closest_points_and_the_box_are_those_of_the_layers(
+            s in strategies::fuzzy_surface_common_height::<3>(),
+            target in prop::array::uniform3(-5.0f64..5.0),
+        ) {
+            let near = s.closest_points(target).unwrap();
+            let b = s.bounding_box();
+            let outer = s.layer_surface(Layer::UpperLeft).bounding_box();
+            let upper = s.layer_surface(Layer::UpperRight).bounding_box();
+            prop_assert_eq!(b.min, outer.min);
+            prop_assert_eq!(b.max, upper.max);
+            for l in Layer::ALL {
+                let layer = s.layer_surface(l);
+                prop_assert_eq!(near[l], layer.closest_point(target).unwrap());
+                let lb = layer.bounding_box();
+                prop_assert!(b.contains(&lb.min, 0.0) && b.contains(&lb.max, 0.0));
+            }
+            let (du, dv) = (s.domain(Direction::U), s.domain(Direction::V));
+            for u in du.uniform(21).unwrap() {
+                for v in dv.uniform(21).unwrap() {
+                    let layers = s.eval_layers(u, v).unwrap();
+                    for l in Layer::ALL {
+                        prop_assert!(b.contains(&layers[l], 1e-12));
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_target_that_is_not_finite_is_an_error() {
+        let n = |c: f64| Nt2Number::try_new(c, [c - 1.0, c + 1.0], [c, c], [c, c], 1.0).unwrap();
+        let p = |x: f64, y: f64| Nt2Point::new([n(x), n(y)]);
+        let net = vec![
+            vec![p(0.0, 0.0), p(0.0, 1.0)],
+            vec![p(1.0, 0.0), p(1.0, 1.0)],
+        ];
+        let s = FuzzySurface::try_new([1, 1], net, vec![vec![1.0; 2]; 2], [None, None]).unwrap();
+        assert!(matches!(
+            s.closest_points([0.0, f64::NEG_INFINITY]),
+            Err(Error::NotFinite { .. })
+        ));
+        let near = s.closest_points([0.5, 3.0]).unwrap();
+        assert_eq!(near[Layer::Crisp].point, [0.5, 1.0]);
+        // The upper right layer spans [1, 2]²: its nearest point is a corner.
+        assert_eq!(near[Layer::UpperRight].point, [1.0, 2.0]);
     }
 }

@@ -2,7 +2,7 @@
 //! domain (SPEC §9).
 
 use crate::cubature::Cubature;
-use crate::nelder_mead::nelder_mead_min;
+use crate::nurbs::surface::patches::{patch_min, Patch, HULL_SLACK};
 use crate::nurbs::{Direction, NurbsSurface};
 use crate::pipeline::euclidean_norm;
 
@@ -49,36 +49,15 @@ pub struct SurfaceDistance {
     pub rms: f64,
 }
 
-/// Scan steps per span, in each direction.
-const SCAN_STEPS: usize = 16;
-/// The simplex size at which the refinement stops, relative to the rectangle.
-const REFINE_TOLERANCE: f64 = 1e-10;
-/// Evaluations per Nelder–Mead run.
-const REFINE_EVALUATIONS: usize = 2000;
 /// The cubature's tolerance relative to the mean square.
 const CUBATURE_TOLERANCE: f64 = 1e-13;
 /// Cell subdivisions of the cubature over the whole domain.
 const SUBDIVISIONS: usize = 20_000;
 
-/// The relative margin of the convex hull bound for the rounding of an
-/// evaluation (at most `ku·kv ≤ 1024` terms of relative error `2⁻⁵³` each,
-/// about `2.3·10⁻¹³`), with room to spare.
-const HULL_SLACK: f64 = 1e-9;
-
-/// A span rectangle: its span indices and its ranges in u and v.
-type Patch = ([usize; 2], [[f64; 2]; 2]);
-
 impl SurfaceDistance {
     /// Measures the norm of `difference(u, v)` over its domain.
     pub(crate) fn of_surface<const D: usize>(difference: &NurbsSurface<D>) -> SurfaceDistance {
-        let spans: Vec<Vec<(usize, [f64; 2])>> = Direction::BOTH
-            .iter()
-            .map(|&d| difference.knots(d).spans().collect())
-            .collect();
-        let patches: Vec<Patch> = spans[0]
-            .iter()
-            .flat_map(|&(su, ru)| spans[1].iter().map(move |&(sv, rv)| ([su, sv], [ru, rv])))
-            .collect();
+        let patches = difference.patches();
         // By the convex hull property (positive weights), `d` on a patch is at
         // most the largest norm of the patch's difference control points
         // (plus rounding: a few units in the last place per basis term,
@@ -121,84 +100,20 @@ impl SurfaceDistance {
 
 /// The largest norm of the control points that act on a patch: an upper
 /// bound of the patch's norm, which is a convex combination of them.
-fn hull_bound<const D: usize>(s: &NurbsSurface<D>, &([su, sv], _): &Patch) -> f64 {
-    let ([ku, kv], nv) = (s.order(), s.shape()[1]);
-    // Rows su + 1 − ku ..= su, columns sv + 1 − kv ..= sv of the net.
-    s.control_points()
-        .chunks(nv)
-        .skip(su + 1 - ku)
-        .take(ku)
-        .flat_map(|row| row.iter().skip(sv + 1 - kv).take(kv))
+fn hull_bound<const D: usize>(s: &NurbsSurface<D>, patch: &Patch) -> f64 {
+    s.patch_points(patch)
         .map(|p| euclidean_norm(p))
         .fold(0.0_f64, f64::max)
         * (1.0 + HULL_SLACK)
 }
 
-/// The largest distance on one patch and where it is reached.
-fn patch_max<const D: usize>(
-    s: &NurbsSurface<D>,
-    &(spans, [[a0, b0], [a1, b1]]): &Patch,
-) -> (f64, [f64; 2]) {
-    let norm = |[u, v]: [f64; 2]| euclidean_norm(&s.eval_in_spans(spans, u, v));
-    let at = |k: usize, a: f64, b: f64| {
-        if k == SCAN_STEPS {
-            b
-        } else {
-            (a + (b - a) * (k as f64 / SCAN_STEPS as f64)).min(b)
-        }
-    };
-    let n = SCAN_STEPS + 1;
-    let grid: Vec<[f64; 2]> = (0..n * n)
-        .map(|k| [at(k / n, a0, b0), at(k % n, a1, b1)])
-        .collect();
-    let values: Vec<f64> = grid.iter().map(|&x| norm(x)).collect();
-    let mut best = (values[0], grid[0]);
-    let steps = [(b0 - a0) / SCAN_STEPS as f64, (b1 - a1) / SCAN_STEPS as f64];
-    let tolerance = [REFINE_TOLERANCE * (b0 - a0), REFINE_TOLERANCE * (b1 - a1)];
-    let bounds = [[a0, a1], [b0, b1]];
-    for k in 0..n * n {
-        let d = values[k];
-        if d > best.0 {
-            best = (d, grid[k]);
-        }
-        if d > 0.0 && is_local_max(&values, n, k) {
-            let minus = |x: [f64; 2]| -norm(x);
-            // Started again from its result with a small simplex, as is
-            // usual for Nelder–Mead, which can stop on a flattened simplex.
-            let first =
-                nelder_mead_min(minus, grid[k], steps, bounds, tolerance, REFINE_EVALUATIONS);
-            let small = [steps[0] / 8.0, steps[1] / 8.0];
-            let again =
-                nelder_mead_min(minus, first.1, small, bounds, tolerance, REFINE_EVALUATIONS);
-            let (v, x) = if again.0 < first.0 { again } else { first };
-            if -v > best.0 {
-                best = (-v, x);
-            }
-        }
-    }
-    best
-}
-
-/// Whether scan value `k` of an `n × n` grid is a local maximum: above its
-/// neighbours that come before it and not below those after it, so that a
-/// flat region counts once.
-fn is_local_max(values: &[f64], n: usize, k: usize) -> bool {
-    let (i, j) = ((k / n) as isize, (k % n) as isize);
-    let d = values[k];
-    for di in -1..=1isize {
-        for dj in -1..=1isize {
-            let (a, b) = (i + di, j + dj);
-            if (di, dj) == (0, 0) || a < 0 || b < 0 || a >= n as isize || b >= n as isize {
-                continue;
-            }
-            let m = a as usize * n + b as usize;
-            let other = values[m];
-            if (m < k && other >= d) || (m > k && other > d) {
-                return false;
-            }
-        }
-    }
-    true
+/// The largest distance on one patch and where it is reached: the smallest
+/// value of `−d` ([`patch_min`]), refined from the scan's local maxima of
+/// positive `d`.
+fn patch_max<const D: usize>(s: &NurbsSurface<D>, patch: &Patch) -> (f64, [f64; 2]) {
+    let minus = |[u, v]: [f64; 2]| -euclidean_norm(&s.eval_in_spans(patch.0, u, v));
+    let (value, at) = patch_min(patch, minus, |v| v < 0.0);
+    (-value, at)
 }
 
 /// The mean of `(d/scale)²` over the domain: per patch, its share of the
@@ -240,20 +155,14 @@ mod tests {
 
     /// Every patch measured, in the net's order: what the bound skips.
     fn every_patch<const D: usize>(s: &NurbsSurface<D>) -> (f64, [f64; 2]) {
-        let spans: Vec<Vec<(usize, [f64; 2])>> = Direction::BOTH
-            .iter()
-            .map(|&d| s.knots(d).spans().collect())
-            .collect();
         let mut best = (
             0.0,
             [s.domain(Direction::U).start, s.domain(Direction::V).start],
         );
-        for &(su, ru) in &spans[0] {
-            for &(sv, rv) in &spans[1] {
-                let found = patch_max(s, &([su, sv], [ru, rv]));
-                if found.0 > best.0 {
-                    best = found;
-                }
+        for patch in s.patches() {
+            let found = patch_max(s, &patch);
+            if found.0 > best.0 {
+                best = found;
             }
         }
         best

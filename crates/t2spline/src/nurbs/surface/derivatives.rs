@@ -53,9 +53,22 @@ impl<const D: usize> NurbsSurface<D> {
     /// [`NurbsSurface::derivatives`] for `(u, v)` in the domain.
     pub(crate) fn derivatives_unchecked(&self, u: f64, v: f64, order: usize) -> Vec<Vec<[f64; D]>> {
         let (ku, kv) = (self.knots(Direction::U), self.knots(Direction::V));
+        self.derivatives_in_spans([ku.find_span(u), kv.find_span(v)], u, v, order)
+    }
+
+    /// The partial derivatives of the polynomial piece of the non-empty span
+    /// rectangle `spans` at `(u, v)` in its closure (one-sided from inside on
+    /// its borders), as [`NurbsSurface::derivatives`].
+    pub(crate) fn derivatives_in_spans(
+        &self,
+        [su, sv]: [usize; 2],
+        u: f64,
+        v: f64,
+        order: usize,
+    ) -> Vec<Vec<[f64; D]>> {
+        let (ku, kv) = (self.knots(Direction::U), self.knots(Direction::V));
         let (p, q) = (ku.degree(), kv.degree());
         let nv = kv.count();
-        let (su, sv) = (ku.find_span(u), kv.find_span(v));
         let du = basis_derivatives(ku.as_slice(), p, su, u, order.min(p));
         let dv = basis_derivatives(kv.as_slice(), q, sv, v, order.min(q));
         let (fu, fv) = (su - p, sv - q);

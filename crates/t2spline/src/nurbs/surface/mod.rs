@@ -15,14 +15,20 @@
 //! | knot insertion, refinement | [`NurbsSurface::insert_knot`], [`NurbsSurface::refine_knots`] | A5.1, A5.4 on stacked rows (as A5.3, A5.5) |
 //! | degree elevation | [`NurbsSurface::elevate_degree`] | A5.9 on stacked rows (§5.5) |
 //! | splitting, sub-rectangle | [`NurbsSurface::split_at`], [`NurbsSurface::segment`] | §5.3 |
+//! | closest point | [`NurbsSurface::closest_point`] | §6.1, Eqs. 6.6–6.8 |
+//! | bounding box | [`NurbsSurface::bounding_box`] | — |
 //!
 //! The operations in one direction are the curve algorithms of
 //! `nurbs/knot_insertion.rs`, `degree_elevation.rs` and `split.rs` run on
 //! rows that stack a whole line of the net (`operations.rs`): no algorithm
 //! is written twice.
 
+mod bounding_box;
+pub(crate) mod closest_point;
+pub use closest_point::ClosestSurfacePoint;
 mod derivatives;
 pub(crate) mod operations;
+pub(crate) mod patches;
 
 use std::fmt;
 
@@ -595,5 +601,7 @@ impl TensorBasis {
     }
 }
 
+#[cfg(test)]
+mod extrema_tests;
 #[cfg(test)]
 mod tests;

@@ -6,7 +6,7 @@ use crate::nurbs::NurbsCurve;
 
 /// The quarter cylinder of radius `r` about the z axis, height 2: rational
 /// quadratic in u (weights 1, √2/2, 1), linear in v.
-fn quarter_cylinder(r: f64) -> NurbsSurface<3> {
+pub(crate) fn quarter_cylinder(r: f64) -> NurbsSurface<3> {
     let w = std::f64::consts::FRAC_1_SQRT_2;
     let net = vec![
         vec![[r, 0.0, 0.0], [r, 0.0, 2.0]],
