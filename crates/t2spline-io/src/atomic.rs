@@ -3,10 +3,10 @@
 //! Every output is written to a temporary file in its own folder (so that the
 //! final rename stays on one file system and is atomic), flushed to disk, and
 //! only then renamed over the target, or linked to its name where it is new
-//! (a file without a name until then, on Linux: see `temporary.rs`). A run that writes several files stages
-//! all of them first and renames them only when every one is complete, so a
-//! failure while writing (a full disk, a missing folder) leaves every existing
-//! output as it was. Temporary files are removed on failure, and on Ctrl-C
+//! (a file without a name until then, on Linux: see `temporary.rs`). A run
+//! that writes several files stages all of them first and renames them only
+//! when every one is complete, so a failure while writing (a full disk, a
+//! missing folder) leaves every existing output as it was. Temporary files are removed on failure, and on Ctrl-C
 //! or `SIGTERM` by a front end that calls [`remove_temporary_files`](crate::remove_temporary_files).
 //!
 //! What a path names decides how it is written (see `target.rs`): a symbolic
@@ -20,7 +20,7 @@ use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 
 use crate::target::{resolve, Target};
-use crate::temporary::Temporary;
+use crate::temporary::{folder, Temporary};
 use crate::Error;
 
 /// Writes `bytes` to `path` atomically: into a temporary file in the same folder,
@@ -165,11 +165,7 @@ impl<'a> Staged<'a> {
             }
             Target::File { path, permissions } => (path, permissions),
         };
-        let dir = match target.parent() {
-            Some(d) if !d.as_os_str().is_empty() => d,
-            _ => Path::new("."),
-        };
-        let file = Temporary::create(dir, permissions.is_some()).map_err(failed)?;
+        let file = Temporary::create(&target, permissions.is_some()).map_err(failed)?;
         if let Some(permissions) = permissions {
             file.file()
                 .and_then(|f| f.set_permissions(permissions))
@@ -210,11 +206,7 @@ impl<'a> Staged<'a> {
         let mut dirs: Vec<PathBuf> = Vec::new();
         for (target, shown, file) in self.files {
             file.persist(&target).map_err(|e| write_error(&shown, e))?;
-            let dir = target
-                .parent()
-                .filter(|d| !d.as_os_str().is_empty())
-                .unwrap_or(Path::new("."))
-                .to_owned();
+            let dir = folder(&target).to_owned();
             if !dirs.contains(&dir) {
                 dirs.push(dir);
             }
@@ -260,11 +252,7 @@ pub fn sync_file_systems(paths: &[PathBuf]) -> Result<(), Error> {
         // Each folder once: a thousand outputs of a run share a few.
         let mut folders = std::collections::BTreeMap::new();
         for path in paths {
-            let dir = path
-                .parent()
-                .filter(|d| !d.as_os_str().is_empty())
-                .unwrap_or(Path::new("."));
-            folders.entry(dir).or_insert(path);
+            folders.entry(folder(path)).or_insert(path);
         }
         let mut devices = Vec::new();
         for (dir, path) in folders {

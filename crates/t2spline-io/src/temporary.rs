@@ -34,6 +34,13 @@ fn renamed() -> std::io::Error {
     std::io::Error::other("the temporary file was already renamed")
 }
 
+/// The folder of the file at `path`: its parent, or `.` for a bare name.
+pub(crate) fn folder(path: &Path) -> &Path {
+    path.parent()
+        .filter(|d| !d.as_os_str().is_empty())
+        .unwrap_or(Path::new("."))
+}
+
 /// Names a named temporary file: `.t2spline-XXXXXX.tmp`, created with the
 /// permissions of a new file (`0666` less the umask).
 fn builder() -> tempfile::Builder<'static, 'static> {
@@ -54,11 +61,7 @@ enum Kind {
     Named(NamedTempFile),
     /// A file without a name in the target's folder (Linux `O_TMPFILE`).
     #[cfg(target_os = "linux")]
-    Unnamed {
-        file: File,
-        /// Its folder, where a temporary name is made if the target exists.
-        dir: PathBuf,
-    },
+    Unnamed(File),
 }
 
 /// A temporary output file, registered while it has a name.
@@ -69,19 +72,17 @@ pub(crate) struct Temporary {
 }
 
 impl Temporary {
-    /// Creates a temporary file in `dir` for a new output without a name
-    /// where the system can; for an output `replacing` a file, or where the
-    /// system cannot, named `.t2spline-*.tmp` and registered.
-    pub(crate) fn create(dir: &Path, replacing: bool) -> std::io::Result<Self> {
+    /// Creates a temporary file beside `target`, for a new output without a
+    /// name where the system can; for an output `replacing` a file, or where
+    /// the system cannot, named `.t2spline-*.tmp` and registered.
+    pub(crate) fn create(target: &Path, replacing: bool) -> std::io::Result<Self> {
+        let dir = folder(target);
         #[cfg(not(target_os = "linux"))]
         let _ = replacing;
         #[cfg(target_os = "linux")]
         if let Some(file) = (!replacing).then(|| unnamed::create(dir)).flatten() {
             return Ok(Temporary {
-                kind: Some(Kind::Unnamed {
-                    file,
-                    dir: dir.to_owned(),
-                }),
+                kind: Some(Kind::Unnamed(file)),
             });
         }
         let mut live = live();
@@ -98,7 +99,7 @@ impl Temporary {
         match self.kind.as_ref().ok_or_else(renamed)? {
             Kind::Named(file) => Ok(file.as_file()),
             #[cfg(target_os = "linux")]
-            Kind::Unnamed { file, .. } => Ok(file),
+            Kind::Unnamed(file) => Ok(file),
         }
     }
 
@@ -121,7 +122,7 @@ impl Temporary {
                 result
             }
             #[cfg(target_os = "linux")]
-            Kind::Unnamed { file, dir } => unnamed::name(&file, &dir, path),
+            Kind::Unnamed(file) => unnamed::name(&file, path),
         }
     }
 }
@@ -170,8 +171,8 @@ mod unnamed {
     }
 
     /// Gives `file` the name `path`: one link if `path` does not exist,
-    /// else a link under a temporary name in `dir` renamed over `path`.
-    pub(super) fn name(file: &File, dir: &Path, path: &Path) -> std::io::Result<()> {
+    /// else a link under a temporary name beside it renamed over `path`.
+    pub(super) fn name(file: &File, path: &Path) -> std::io::Result<()> {
         let fd = format!("/proc/self/fd/{}", file.as_raw_fd());
         let link = |to: &Path| linkat(CWD, fd.as_str(), CWD, to, AtFlags::SYMLINK_FOLLOW);
         match link(path) {
@@ -179,8 +180,9 @@ mod unnamed {
             other => return other.map_err(std::io::Error::from),
         }
         // Removed again if the rename fails.
-        let temporary =
-            super::builder().make_in(dir, |to| link(to).map_err(std::io::Error::from))?;
+        let temporary = super::builder().make_in(super::folder(path), |to| {
+            link(to).map_err(std::io::Error::from)
+        })?;
         temporary.persist(path).map(drop).map_err(|e| e.error)
     }
 }
@@ -229,7 +231,7 @@ mod tests {
     #[test]
     fn a_new_file_has_no_name_until_it_is_complete() {
         let dir = tempfile::tempdir().unwrap();
-        let t = Temporary::create(dir.path(), false).unwrap();
+        let t = Temporary::create(&dir.path().join("out.json"), false).unwrap();
         write(&t, b"new");
         #[cfg(target_os = "linux")]
         assert_eq!(names(dir.path()), Vec::<String>::new());
@@ -244,7 +246,7 @@ mod tests {
     fn a_target_that_appeared_meanwhile_is_replaced() {
         let dir = tempfile::tempdir().unwrap();
         let target = dir.path().join("out.json");
-        let t = Temporary::create(dir.path(), false).unwrap();
+        let t = Temporary::create(&dir.path().join("out.json"), false).unwrap();
         write(&t, b"new");
         std::fs::write(&target, b"old").unwrap();
         t.persist(&target).unwrap();
@@ -256,7 +258,7 @@ mod tests {
     fn a_replacing_file_is_named_until_renamed_and_removed_when_dropped() {
         let dir = tempfile::tempdir().unwrap();
         std::fs::write(dir.path().join("out.json"), b"old").unwrap();
-        let t = Temporary::create(dir.path(), true).unwrap();
+        let t = Temporary::create(&dir.path().join("out.json"), true).unwrap();
         write(&t, b"new");
         let during = names(dir.path());
         assert_eq!(during.len(), 2, "{during:?}");
@@ -271,7 +273,7 @@ mod tests {
     #[test]
     fn a_dropped_new_file_leaves_nothing() {
         let dir = tempfile::tempdir().unwrap();
-        let t = Temporary::create(dir.path(), false).unwrap();
+        let t = Temporary::create(&dir.path().join("out.json"), false).unwrap();
         write(&t, b"never named");
         drop(t);
         assert_eq!(names(dir.path()), Vec::<String>::new());
