@@ -83,8 +83,13 @@ pub fn render(
     let mut frame_data = Vec::with_capacity(shown.len());
     let mut kinds: [Vec<Figure>; 4] = Default::default();
     let mut files: Vec<(String, Vec<String>)> = Vec::new();
-    for &(alpha, method) in &shown {
+    // The start's figure run also draws the figures that do not change.
+    let mut start_figure_run = None;
+    for (k, &(alpha, method)) in shown.iter().enumerate() {
         let (figures, figure_run) = stop_figures(job, alpha, method, &heights, options)?;
+        if k == initial {
+            start_figure_run = Some(figure_run.clone());
+        }
         for (list, f) in kinds.iter_mut().zip(figures) {
             list.push(f);
         }
@@ -146,8 +151,10 @@ pub fn render(
         "files_at": with_files.index_json(&shown),
         "files_note": with_files.note(),
     });
-    let fig_result =
-        data::compute_within(job, start, job.type_reduction, data::REPORT_SURFACE_GRID)?;
+    // Frame `initial` is the start, with the job's reduction.
+    let Some(fig_result) = start_figure_run else {
+        return Err(Error::Core(t2spline::Error::MissingAlpha));
+    };
     let surface = job.model.is_surface();
     let (stage1, sweep, compared) = if surface {
         let scene = SurfaceScene::new(&fig_result, &heights, options.view, options.aspect);
