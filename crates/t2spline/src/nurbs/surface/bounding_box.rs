@@ -83,18 +83,17 @@ impl<const D: usize> NurbsSurface<D> {
                 }
             }
         }
+        let boxes: Vec<BoundingBox<D>> = patches.iter().map(|p| self.patch_box(p)).collect();
+        // `d` picks the coordinate of the faces, the boxes and the surface.
+        #[allow(clippy::needless_range_loop)]
         for d in 0..D {
             for (side, sign) in [(0, 1.0), (1, -1.0)] {
                 // The smallest of ±x_d over the points acting on each patch.
-                let bounds: Vec<f64> = patches
+                let bounds: Vec<f64> = boxes
                     .iter()
-                    .map(|patch| {
-                        let (lo, size) = self
-                            .patch_points(patch)
-                            .fold((f64::INFINITY, 0.0_f64), |(lo, size), p| {
-                                (lo.min(sign * p[d]), size.max(p[d].abs()))
-                            });
-                        lo - HULL_SLACK * size
+                    .map(|b| {
+                        let lo = if side == 0 { b.min[d] } else { -b.max[d] };
+                        lo - HULL_SLACK * b.min[d].abs().max(b.max[d].abs())
                     })
                     .collect();
                 let mut order: Vec<usize> = (0..patches.len()).collect();

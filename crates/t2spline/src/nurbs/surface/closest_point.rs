@@ -7,6 +7,7 @@ use crate::limits::{within_magnitude, MAGNITUDE_RANGE};
 use crate::nurbs::closest_point::{dot, sub};
 use crate::nurbs::surface::patches::{patch_min, Patch, HULL_SLACK};
 use crate::nurbs::surface::NurbsSurface;
+use crate::nurbs::BoundingBox;
 use crate::pipeline::euclidean_norm;
 
 /// The result of [`NurbsSurface::closest_point`].
@@ -117,14 +118,7 @@ impl<const D: usize> NurbsSurface<D> {
     /// A lower bound of the distance from `target` to a patch: the distance
     /// to the bounding box of its control points, widened for rounding.
     fn distance_bound(&self, patch: &Patch, target: &[f64; D]) -> f64 {
-        let mut lo = [f64::INFINITY; D];
-        let mut hi = [f64::NEG_INFINITY; D];
-        for p in self.patch_points(patch) {
-            for d in 0..D {
-                lo[d] = lo[d].min(p[d]);
-                hi[d] = hi[d].max(p[d]);
-            }
-        }
+        let BoundingBox { min: lo, max: hi } = self.patch_box(patch);
         let gap: [f64; D] = std::array::from_fn(|d| {
             let slack = HULL_SLACK * lo[d].abs().max(hi[d].abs());
             (lo[d] - slack - target[d])

@@ -9,6 +9,7 @@
 
 use crate::nelder_mead::nelder_mead_min;
 use crate::nurbs::surface::{Direction, NurbsSurface};
+use crate::nurbs::BoundingBox;
 
 /// A span rectangle: its span indices `[su, sv]` and its ranges in u and v.
 pub(crate) type Patch = ([usize; 2], [[f64; 2]; 2]);
@@ -50,6 +51,15 @@ impl<const D: usize> NurbsSurface<D> {
             .skip(su + 1 - ku)
             .take(ku)
             .flat_map(move |row| row.iter().skip(sv + 1 - kv).take(kv))
+    }
+
+    /// The box of the control points acting on a patch, which holds the
+    /// patch (convex hull property) but for rounding ([`HULL_SLACK`]).
+    pub(crate) fn patch_box(&self, patch: &Patch) -> BoundingBox<D> {
+        let mut points = self.patch_points(patch);
+        // A patch has at least one point acting on it (orders ≥ 1).
+        let first = points.next().copied().unwrap_or([0.0; D]);
+        points.fold(BoundingBox::of_point(first), |b, p| b.with_point(*p))
     }
 }
 
