@@ -153,7 +153,10 @@ impl<const D: usize> NurbsSurface<D> {
         let mut best = self.candidate(spans, x, target);
         // Near the minimum the distance changes by less than its rounding, so
         // progress is judged by the residual of the normal equations; a step
-        // may not raise the distance beyond rounding.
+        // may not raise the distance beyond rounding, which is that of
+        // evaluating the point (a few ulps of its size, not of the distance:
+        // a point at 1.5 from the origin and 0.2 from the target rounds by
+        // 10⁻¹⁵ of the distance).
         let mut residual = f64::INFINITY;
         for _ in 0..NEWTON_STEPS {
             let Some((next, r)) = self.newton_step(patch, [best.u, best.v], target) else {
@@ -164,7 +167,8 @@ impl<const D: usize> NurbsSurface<D> {
             }
             residual = r;
             let trial = self.candidate(spans, next, target);
-            if trial.distance > best.distance * (1.0 + 4.0 * f64::EPSILON) {
+            let rounding = 16.0 * f64::EPSILON * (euclidean_norm(&best.point) + best.distance);
+            if trial.distance > best.distance + rounding {
                 break;
             }
             best = trial;
