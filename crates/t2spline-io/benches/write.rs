@@ -7,6 +7,9 @@
 //! and is dropped before the commit, so neither the flush to disk nor the
 //! rename is timed; the plain write goes the same way.
 //!
+//! The group `write-small` writes the example at its own samples (72 kB)
+//! into memory: the formatting alone, which each job of a run of many pays.
+//!
 //! ```sh
 //! cargo bench -p t2spline-io --bench write
 //! T2SPLINE_BENCH_SAMPLES=100000 cargo bench -p t2spline-io --bench write   # quicker
@@ -28,11 +31,16 @@ fn example() -> RunOutput {
         .ok()
         .and_then(|s| s.parse().ok())
         .unwrap_or(1_000_000);
+    example_at(Some(samples))
+}
+
+/// The example at `samples` samples (`None`: the job's own).
+fn example_at(samples: Option<u64>) -> RunOutput {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/paper-alg-1-1.json");
     let job = t2spline_io::read_job(&path).expect("the shipped example");
     let settings = job
         .settings(&Overrides {
-            samples: Some(vec![samples]),
+            samples: samples.map(|n| vec![n]),
             ..Overrides::default()
         })
         .expect("valid settings");
@@ -153,5 +161,22 @@ fn parquet(
     });
 }
 
-criterion_group!(benches, bench);
+/// The example at its own samples (72 kB of JSON), written into memory: the
+/// formatting alone, as each job of a run of many pays it.
+fn small(c: &mut Criterion) {
+    let result = example_at(None);
+    let mut out = Vec::new();
+    write_json_pretty(&mut out, &result).expect("in memory");
+    let mut g = c.benchmark_group("write-small");
+    g.throughput(Throughput::Bytes(out.len() as u64));
+    g.bench_function("json-in-memory", |b| {
+        b.iter(|| {
+            out.clear();
+            write_json_pretty(&mut out, black_box(&result)).expect("in memory");
+        });
+    });
+    g.finish();
+}
+
+criterion_group!(benches, small, bench);
 criterion_main!(benches);

@@ -30,6 +30,7 @@ use downloads::unpack;
 use stops::finest_within;
 pub use stops::Stops;
 
+use rayon::prelude::*;
 use serde_json::{json, Value};
 use t2spline::job::{Job, RunOutput};
 use t2spline::{Alpha, Axis, Layer, TypeReduction};
@@ -80,36 +81,40 @@ pub fn render(
         .map(|&a| Ok((Alpha::try_new(a)?, TypeReduction::Paper)))
         .collect::<Result<_, t2spline::Error>>()?;
     shown.extend(others.iter().map(|f| (start, f.method)));
+    // Every frame on its own, in parallel; then gathered in order.
+    let computed: Vec<Result<Frame, Error>> = shown
+        .par_iter()
+        .enumerate()
+        .map(|(k, &(alpha, method))| {
+            Frame::compute(
+                job,
+                alpha,
+                method,
+                &heights,
+                options,
+                &with_files,
+                k == initial,
+            )
+        })
+        .collect();
     let mut frame_data = Vec::with_capacity(shown.len());
     let mut kinds: [Vec<Figure>; 4] = Default::default();
     let mut files: Vec<(String, Vec<String>)> = Vec::new();
     // The start's figure run also draws the figures that do not change.
     let mut start_figure_run = None;
-    for (k, &(alpha, method)) in shown.iter().enumerate() {
-        let (figures, figure_run) = stop_figures(job, alpha, method, &heights, options)?;
-        if k == initial {
-            start_figure_run = Some(figure_run.clone());
-        }
-        for (list, f) in kinds.iter_mut().zip(figures) {
+    for frame in computed {
+        let frame = frame?;
+        start_figure_run = start_figure_run.or(frame.figure_run);
+        for (list, f) in kinds.iter_mut().zip(frame.figures) {
             list.push(f);
         }
-        // The numbers a stop shows (control points, the distance's max, its
-        // place and rms) do not depend on the samples, so the run its
-        // figures were drawn from gives them; only the files need the run
-        // at the job's own samples.
-        let run = if with_files.carries(alpha.get(), method) {
-            let run = data::run_job(job, alpha, method)?;
-            for (k, (name, text)) in files_of(&run)?.into_iter().enumerate() {
-                match files.get_mut(k) {
-                    Some((_, texts)) => texts.push(text),
-                    None => files.push((name, vec![text])),
-                }
+        for (k, (name, text)) in frame.files.into_iter().enumerate() {
+            match files.get_mut(k) {
+                Some((_, texts)) => texts.push(text),
+                None => files.push((name, vec![text])),
             }
-            run
-        } else {
-            figure_run
-        };
-        frame_data.push(run);
+        }
+        frame_data.push(frame.run);
     }
     let Some(start_run) = frame_data.get(initial).cloned() else {
         return Err(Error::Core(t2spline::Error::MissingAlpha));
@@ -286,25 +291,33 @@ fn choose_stops(
     options: &FigureOptions,
 ) -> Result<(Stops, FileStops), Error> {
     let heights = job.model.heights();
+    // The packed sizes of each sample stop's files and figures, the two
+    // stops in parallel.
+    let sizes: Vec<Result<(usize, usize), Error>> = [0.3, 0.9]
+        .par_iter()
+        .map(|&a| {
+            let alpha = Alpha::try_new(a)?;
+            let run = data::run_job(job, alpha, TypeReduction::Paper)?;
+            let files: Vec<String> = files_of(&run)?.into_iter().map(|(_, t)| t).collect();
+            let figures: Vec<String> =
+                stop_figures(job, alpha, TypeReduction::Paper, &heights, options)?
+                    .0
+                    .iter()
+                    .map(svg::render)
+                    .collect();
+            Ok((
+                pack::packed_len(&json!(files)),
+                pack::packed_len(&json!(figures)),
+            ))
+        })
+        .collect();
     let (mut total, mut whole, mut figures_cost) = (0, 0, 0);
-    for a in [0.3, 0.9] {
-        let alpha = Alpha::try_new(a)?;
-        let run = data::run_job(job, alpha, TypeReduction::Paper)?;
-        let files: Vec<String> = files_of(&run)?.into_iter().map(|(_, t)| t).collect();
-        let figures: Vec<String> =
-            stop_figures(job, alpha, TypeReduction::Paper, &heights, options)?
-                .0
-                .iter()
-                .map(svg::render)
-                .collect();
+    for size in sizes {
+        let (f, g) = size?;
         // Measured on jobs of 4 to 200 points: a stop's packed downloads take
         // a third of a whole result's files packed alone (half its numbers
         // change, and the CSV files repeat the result's), and its figure
         // parts a bit under half of its whole figures.
-        let (f, g) = (
-            pack::packed_len(&json!(files)),
-            pack::packed_len(&json!(figures)),
-        );
         total += f / 3 + g * 9 / 20;
         whole += f;
         figures_cost += g;
@@ -407,6 +420,51 @@ impl FileStops {
         json!(format!(
             "To keep the report small, the result files are in it {where_}"
         ))
+    }
+}
+
+/// What one frame of the report holds.
+struct Frame {
+    /// The figures that change: the number and stages 2–4.
+    figures: [Figure; 4],
+    /// The run whose numbers the frame shows.
+    run: RunOutput,
+    /// The downloads, if the frame carries them: (file name, text).
+    files: Vec<(String, String)>,
+    /// The run the figures were drawn from, kept for the start's frame.
+    figure_run: Option<RunOutput>,
+}
+
+impl Frame {
+    /// The frame at `alpha` with `method`; `start` keeps its figure run.
+    fn compute(
+        job: &Job,
+        alpha: Alpha,
+        method: TypeReduction,
+        heights: &[f64],
+        options: &FigureOptions,
+        with_files: &FileStops,
+        start: bool,
+    ) -> Result<Frame, Error> {
+        let (figures, figure_run) = stop_figures(job, alpha, method, heights, options)?;
+        let kept = start.then(|| figure_run.clone());
+        // The numbers a stop shows (control points, the distance's max, its
+        // place and rms) do not depend on the samples, so the run its
+        // figures were drawn from gives them; only the files need the run
+        // at the job's own samples.
+        let (run, files) = if with_files.carries(alpha.get(), method) {
+            let run = data::run_job(job, alpha, method)?;
+            let files = files_of(&run)?;
+            (run, files)
+        } else {
+            (figure_run, Vec::new())
+        };
+        Ok(Frame {
+            figures,
+            run,
+            files,
+            figure_run: kept,
+        })
     }
 }
 
