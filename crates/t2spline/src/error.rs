@@ -829,6 +829,33 @@ pub enum Error {
         v: f64,
     },
 
+    /// A quantity of one layer surface (or layer curve) of a fuzzy model is
+    /// undefined: `inner` is the error of that layer's crisp computation,
+    /// `layer` names the layer.
+    ///
+    /// ```
+    /// # use t2spline::{Error, FuzzySurface, Layer, Nt2Number, Nt2Point};
+    /// let exact = |c: f64| Nt2Number::try_new(c, [c, c], [c, c], [c, c], 1.0);
+    /// let p = |x: f64, y: f64| Ok::<_, Error>(Nt2Point::new([exact(x)?, exact(y)?, exact(0.0)?]));
+    /// // P₀₁.y has the upper foot 0 on the left: in the upper_left layer the
+    /// // edge u = 0 collapses to a point.
+    /// let y = Nt2Number::try_new(1.0, [0.0, 2.0], [0.5, 1.5], [0.8, 1.2], 0.5)?;
+    /// let p01 = Nt2Point::new([exact(0.0)?, y, exact(0.0)?]);
+    /// let net = vec![vec![p(0.0, 0.0)?, p01], vec![p(1.0, 0.0)?, p(1.0, 1.0)?]];
+    /// let s = FuzzySurface::try_new([1, 1], net, vec![vec![1.0; 2]; 2], [None, None])?;
+    /// let e = s.curvatures(0.0, 0.5).unwrap_err();
+    /// assert!(matches!(&e, Error::InLayer { layer: Layer::UpperLeft, inner } if matches!(**inner, Error::SingularNormal { .. })));
+    /// assert!(e.to_string().starts_with("layer upper_left: the normal at (u, v) = (0, 0.5) is undefined"));
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("layer {layer}: {inner}")]
+    InLayer {
+        /// The layer.
+        layer: crate::fuzzy::Layer,
+        /// The error of that layer.
+        inner: Box<Error>,
+    },
+
     /// A sample of a sampled interval type-2 set breaks a rule of
     /// [`SampledSet::try_new`](crate::reduction::discrete::SampledSet::try_new):
     /// finite values, `x` within [`MAX_MAGNITUDE`](crate::MAX_MAGNITUDE) and not
@@ -975,6 +1002,14 @@ impl Error {
     pub(crate) fn in_direction(self, direction: crate::nurbs::Direction) -> Self {
         Error::InDirection {
             direction,
+            inner: Box::new(self),
+        }
+    }
+
+    /// The same error, as the error of one layer of a fuzzy model.
+    pub(crate) fn in_layer(self, layer: crate::fuzzy::Layer) -> Self {
+        Error::InLayer {
+            layer,
             inner: Box::new(self),
         }
     }

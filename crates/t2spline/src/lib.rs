@@ -114,7 +114,7 @@ pub use fuzzy::{
 pub use limits::{MAX_MAGNITUDE, MAX_WEIGHT, MIN_WEIGHT};
 pub use nurbs::{
     BoundingBox, ClosestPoint, ClosestSurfacePoint, Direction, Domain, KnotVector, NurbsCurve,
-    NurbsSurface,
+    NurbsSurface, SurfaceCurvature,
 };
 pub use pipeline::{
     Distance, FuzzyCurve, FuzzySurface, Side, Solution, SurfaceDistance, SurfaceSolution,

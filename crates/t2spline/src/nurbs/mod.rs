@@ -46,4 +46,6 @@ pub use curve::{weight_problems, NurbsCurve};
 pub use degree_elevation::MAX_ELEVATED_DEGREE;
 pub use derivatives::MAX_DERIVATIVE_ORDER;
 pub use knots::{Domain, KnotVector};
-pub use surface::{net_weight_problems, ClosestSurfacePoint, Direction, NurbsSurface};
+pub use surface::{
+    net_weight_problems, ClosestSurfacePoint, Direction, NurbsSurface, SurfaceCurvature,
+};

@@ -10,7 +10,9 @@ use crate::nurbs::net::{check_rows, Row};
 use crate::nurbs::surface::closest_point::check_target;
 use crate::nurbs::surface::operations::{isocurve_rows, map_net, segment_net, split_net, RowNet};
 use crate::nurbs::surface::{check_params, knots_in, net_shape, net_weights, TensorBasis};
-use crate::nurbs::{BoundingBox, ClosestSurfacePoint, Direction, Domain, KnotVector, NurbsSurface};
+use crate::nurbs::{
+    BoundingBox, ClosestSurfacePoint, Direction, Domain, KnotVector, NurbsSurface, SurfaceCurvature,
+};
 use crate::pipeline::fuzzy_ops::{common_heights, from_stacked_rows, stacked_rows};
 use crate::pipeline::{FuzzyCurve, SurfaceSolution};
 use crate::reduction::TypeReduction;
@@ -393,6 +395,53 @@ fn rebuild<const D: usize>(
         FuzzySurface::from_parts_unchecked(points, weights, knots),
         worst,
     ))
+}
+
+impl FuzzySurface<3> {
+    /// The curvature of every layer surface at `(u, v)` (see
+    /// [`NurbsSurface::curvature`]): Gaussian, mean and principal curvatures
+    /// and principal directions, each layer with its own normal. Unlike the
+    /// points, the curvatures of the layers are not ordered.
+    ///
+    /// # Errors
+    /// [`Error::InDirection`] wrapping [`Error::OutOfDomain`] if `u` or `v` is
+    /// NaN or outside its domain; [`Error::InLayer`] naming the first layer
+    /// (in SPEC order) whose curvature is undefined, wrapping its
+    /// [`Error::SingularNormal`] or [`Error::IllConditioned`].
+    ///
+    /// # Examples
+    /// A fuzzy quarter cylinder whose radius is the fuzzy number
+    /// `(1, [0.5, 2], [0.7, 1.5], [0.9, 1.2])`: each layer is a cylinder of
+    /// radius `r` and curvatures `[0, −1/r]`.
+    /// ```
+    /// # use t2spline::{FuzzySurface, Layer, Nt2Number, Nt2Point};
+    /// let r = Nt2Number::try_new(1.0, [0.5, 2.0], [0.7, 1.5], [0.9, 1.2], 0.5)?;
+    /// let zero = Nt2Number::try_new(0.0, [0.0, 0.0], [0.0, 0.0], [0.0, 0.0], 0.5)?;
+    /// let z = |h: f64| Nt2Number::try_new(h, [h, h], [h, h], [h, h], 0.5);
+    /// let p = |x: &Nt2Number, y: &Nt2Number, h: f64| Ok::<_, t2spline::Error>(Nt2Point::new([x.clone(), y.clone(), z(h)?]));
+    /// let net = vec![
+    ///     vec![p(&r, &zero, 0.0)?, p(&r, &zero, 1.0)?],
+    ///     vec![p(&r, &r, 0.0)?, p(&r, &r, 1.0)?],
+    ///     vec![p(&zero, &r, 0.0)?, p(&zero, &r, 1.0)?],
+    /// ];
+    /// let w = std::f64::consts::FRAC_1_SQRT_2;
+    /// let s = FuzzySurface::try_new([2, 1], net, vec![vec![1.0; 2], vec![w; 2], vec![1.0; 2]], [None, None])?;
+    /// let c = s.curvatures(0.4, 0.5)?;
+    /// assert!((c[Layer::Crisp].principal[1] + 1.0).abs() < 1e-14);
+    /// assert!((c[Layer::UpperLeft].principal[1] + 2.0).abs() < 1e-14); // r = 0.5
+    /// assert!((c[Layer::UpperRight].mean + 0.25).abs() < 1e-14); // r = 2
+    /// # Ok::<(), t2spline::Error>(())
+    /// ```
+    pub fn curvatures(&self, u: f64, v: f64) -> Result<Layers<SurfaceCurvature>, Error> {
+        check_params(&self.knots, u, v)?;
+        let mut values = Vec::with_capacity(Layer::ALL.len());
+        for layer in Layer::ALL {
+            let c = self.layer_surface(layer).curvature_unchecked(u, v);
+            values.push(c.map_err(|e| e.in_layer(layer))?);
+        }
+        // Seven values, one per layer in order.
+        Ok(Layers::from_fn(|l| values[l.index()]))
+    }
 }
 
 #[cfg(test)]

@@ -152,13 +152,28 @@ impl NurbsSurface<3> {
     pub fn normal(&self, u: f64, v: f64) -> Result<[f64; 3], Error> {
         self.check(u, v)?;
         let d = self.derivatives_unchecked(u, v, 1);
-        let (a, b) = (d[1][0], d[0][1]);
-        let cross = [
-            a[1] * b[2] - a[2] * b[1],
-            a[2] * b[0] - a[0] * b[2],
-            a[0] * b[1] - a[1] * b[0],
-        ];
-        let length = euclidean_norm(&cross);
+        Ok(self.unit_normal(u, v, &d[1][0], &d[0][1])?.0)
+    }
+
+    /// The unit normal `n = S_u × S_v / ‖S_u × S_v‖` at `(u, v)` from the
+    /// partial derivatives `su`, `sv` there, and the sine of the angle between
+    /// them; the test of [`NurbsSurface::normal`], shared by every quantity
+    /// that needs the normal. The cross product is taken of
+    /// the unit vectors, so that derivatives near the float range do not
+    /// overflow it.
+    ///
+    /// # Errors
+    /// [`Error::SingularNormal`] where `S_u` and `S_v` are parallel or zero.
+    pub(crate) fn unit_normal(
+        &self,
+        u: f64,
+        v: f64,
+        su: &[f64; 3],
+        sv: &[f64; 3],
+    ) -> Result<([f64; 3], f64), Error> {
+        let (lu, lv) = (euclidean_norm(su), euclidean_norm(sv));
+        let cross = cross(&su.map(|x| x / lu), &sv.map(|x| x / lv));
+        let sine = euclidean_norm(&cross);
         let span = |direction: Direction, t: f64| {
             let k = self.knots(direction);
             let i = k.find_span(t);
@@ -166,12 +181,13 @@ impl NurbsSurface<3> {
         };
         let (hu, hv) = (span(Direction::U, u), span(Direction::V, v));
         let size = self.net_size();
-        // NaN (never expected) counts as singular too.
-        let ok = length * hu * hv > 1e-14 * size * size;
+        // ‖S_u × S_v‖·hu·hv > 10⁻¹⁴·s²; NaN (from a zero derivative) counts
+        // as singular.
+        let ok = sine * (lu * hu) * (lv * hv) > 1e-14 * size * size;
         if !ok {
             return Err(Error::SingularNormal { u, v });
         }
-        Ok(cross.map(|x| x / length))
+        Ok((cross.map(|x| x / sine), sine))
     }
 
     /// The diagonal of the bounding box of the control points (at least the
@@ -187,4 +203,13 @@ impl NurbsSurface<3> {
         }
         euclidean_norm(&[hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]]).max(f64::MIN_POSITIVE)
     }
+}
+
+/// The cross product `a × b`.
+pub(crate) fn cross(a: &[f64; 3], b: &[f64; 3]) -> [f64; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
 }

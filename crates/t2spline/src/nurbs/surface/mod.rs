@@ -11,6 +11,7 @@
 //! |---|---|---|
 //! | point, rational basis | [`NurbsSurface::eval`], [`NurbsSurface::rational_basis`] | SPEC §9 |
 //! | partial derivatives of any order, normal | [`NurbsSurface::derivatives`], [`NurbsSurface::normal`] | The NURBS Book A3.6, A4.4 |
+//! | Gaussian, mean and principal curvatures, principal directions | [`NurbsSurface::curvature`] | do Carmo §3-3 |
 //! | isoparametric curves | [`NurbsSurface::isocurve`] | §4.5 |
 //! | knot insertion, refinement | [`NurbsSurface::insert_knot`], [`NurbsSurface::refine_knots`] | A5.1, A5.4 on stacked rows (as A5.3, A5.5) |
 //! | degree elevation | [`NurbsSurface::elevate_degree`] | A5.9 on stacked rows (§5.5) |
@@ -26,7 +27,9 @@
 mod bounding_box;
 pub(crate) mod closest_point;
 pub use closest_point::ClosestSurfacePoint;
-mod derivatives;
+mod curvature;
+pub use curvature::SurfaceCurvature;
+pub(crate) mod derivatives;
 pub(crate) mod operations;
 pub(crate) mod patches;
 
@@ -601,6 +604,8 @@ impl TensorBasis {
     }
 }
 
+#[cfg(test)]
+mod curvature_tests;
 #[cfg(test)]
 mod extrema_tests;
 #[cfg(test)]
