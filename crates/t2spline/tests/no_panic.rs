@@ -295,6 +295,13 @@ fn surface_operations<const D: usize>(
     let near = returns("surface closest_point", || s.closest_point(target));
     assert_eq!(near.is_err(), !target.iter().all(|x| x.abs() <= 1e150));
     returns("surface bounding_box", || s.bounding_box());
+    // The quantities of surfaces in space only.
+    if let Some(s) = (&s as &dyn std::any::Any).downcast_ref::<NurbsSurface<3>>() {
+        for (&u, &v) in t.iter().zip(t.iter().rev()) {
+            returns("surface normal", || s.normal(u, v)).ok();
+            returns("surface curvature", || s.curvature(u, v)).ok();
+        }
+    }
     let huge = Params::Uniform(1 << 33);
     assert!(returns("sample_grid huge", || s.sample_grid(huge, huge)).is_err());
 }
@@ -315,6 +322,11 @@ fn fuzzy_surface_operations<const D: usize>(rows: usize, flat: &[f64], t: &[f64]
     let target: [f64; D] = std::array::from_fn(|d| t.get(d).copied().unwrap_or(0.5));
     returns("FuzzySurface::closest_points", || s.closest_points(target)).ok();
     returns("FuzzySurface::bounding_box", || s.bounding_box());
+    if let Some(s) = (&s as &dyn std::any::Any).downcast_ref::<FuzzySurface<3>>() {
+        for (&u, &v) in t.iter().zip(t.iter().rev()) {
+            returns("FuzzySurface::curvatures", || s.curvatures(u, v)).ok();
+        }
+    }
 }
 
 /// Calls `$f::<D>` for D = 1 ..= 5.

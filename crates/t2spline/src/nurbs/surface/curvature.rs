@@ -70,14 +70,16 @@ impl NurbsSurface<3> {
     /// matrix of `S_u, S_v` in that frame, `II` the matrix of `L, M, N`):
     ///
     /// ```text
-    /// W = | w₁₁ w₁₂ |   H = (w₁₁ + w₂₂)/2,   K = w₁₁w₂₂ − w₁₂²,
+    /// W = | w₁₁ w₁₂ |   H = (w₁₁ + w₂₂)/2,   K = det W = (LN − M²)·det J⁻¹²,
     ///     | w₁₂ w₂₂ |   r = √(((w₁₁ − w₂₂)/2)² + w₁₂²),   k₁,₂ = H ± r,
     ///                   e₁ = cos φ·a + sin φ·b,   φ = ½·atan2(2w₁₂, w₁₁ − w₂₂) ∈ (−π/2, π/2],
     ///                   e₂ = n × e₁
     /// ```
     /// The same numbers as the formulas above, but the discriminant `r²` is a
-    /// sum of squares (never negative from rounding) and the directions are
-    /// orthonormal by construction. Where `k₁ − k₂` is within rounding of 0
+    /// sum of squares (never negative from rounding), the principal
+    /// curvature of smaller magnitude is taken as `K/(H ± r)` (no
+    /// cancellation where one is near 0), and the directions are orthonormal
+    /// by construction. Where `k₁ − k₂` is within rounding of 0
     /// (an umbilic: a sphere, a plane) `φ = 0`; where `w₁₂` alone is, it
     /// counts as 0 (`φ = 0` or `π/2`).
     ///
@@ -132,8 +134,18 @@ impl NurbsSurface<3> {
         let w12 = p11 * (l * p12 + m * p22);
         let w22 = l * p12 * p12 + 2.0 * m * p12 * p22 + nn * p22 * p22;
         let mean = 0.5 * (w11 + w22);
-        let gaussian = w11 * w22 - w12 * w12;
+        // det W = det II · det J⁻¹² = (LN − M²)·(p11·p22)²: no cancellation
+        // beyond that of LN − M².
+        let gaussian = (l * nn - m * m) * (p11 * p22) * (p11 * p22);
         let half_gap = (0.5 * (w11 - w22)).hypot(w12);
+        // The root of larger magnitude by H ± r, the other as K over it (the
+        // stable form of a quadratic's roots).
+        let larger = mean + half_gap.copysign(mean);
+        let smaller = if larger == 0.0 {
+            0.0
+        } else {
+            gaussian / larger
+        };
         // The size the rounding of W is relative to: the second derivatives
         // mapped into the frame.
         let scale = (p11 * p11 + p12 * p12 + p22 * p22)
@@ -153,7 +165,7 @@ impl NurbsSurface<3> {
         let c = SurfaceCurvature {
             gaussian,
             mean,
-            principal: [mean + half_gap, mean - half_gap],
+            principal: [larger.max(smaller), larger.min(smaller)],
             directions: [e1, e2],
         };
         check_finite(&c)?;

@@ -53,7 +53,10 @@ fn assert_frame(c: &SurfaceCurvature, n: &[f64; 3], tol: f64, at: (f64, f64)) {
     assert!(dot(e1, e2).abs() <= tol, "{at:?}: {c:?}");
     assert!(dot(e1, n).abs() <= tol && dot(e2, n).abs() <= tol, "{at:?}");
     let handed = cross(e1, e2);
-    assert!(handed.iter().zip(n).all(|(a, b)| (a - b).abs() <= tol), "{at:?}");
+    assert!(
+        handed.iter().zip(n).all(|(a, b)| (a - b).abs() <= tol),
+        "{at:?}"
+    );
 }
 
 /// K and H by the classical formulas of the fundamental forms (do Carmo
@@ -65,7 +68,10 @@ fn classical(s: &NurbsSurface<3>, u: f64, v: f64) -> (f64, f64) {
     let (e, f, g) = (dot(su, su), dot(su, sv), dot(sv, sv));
     let (l, m, nn) = (dot(&d[2][0], &n), dot(&d[1][1], &n), dot(&d[0][2], &n));
     let det = e * g - f * f;
-    ((l * nn - m * m) / det, (e * nn - 2.0 * f * m + g * l) / (2.0 * det))
+    (
+        (l * nn - m * m) / det,
+        (e * nn - 2.0 * f * m + g * l) / (2.0 * det),
+    )
 }
 
 #[test]
@@ -84,7 +90,11 @@ fn a_plane_has_no_curvature_and_the_frame_of_s_u() {
         })
         .collect();
     let weights = (0..4)
-        .map(|i| (0..4).map(|j| 0.5 + f64::from((i * 5 + j * 3) % 4)).collect())
+        .map(|i| {
+            (0..4)
+                .map(|j| 0.5 + f64::from((i * 5 + j * 3) % 4))
+                .collect()
+        })
         .collect();
     let s = NurbsSurface::try_clamped([3, 3], net, weights).unwrap();
     for (u, v) in grid(9, 0.0, 1.0) {
@@ -97,7 +107,10 @@ fn a_plane_has_no_curvature_and_the_frame_of_s_u() {
         // The umbilic choice: e₁ = S_u/‖S_u‖.
         let su = s.derivatives(u, v, 1).unwrap()[1][0];
         let a = su.map(|x| x / euclidean_norm(&su));
-        assert!(c.directions[0].iter().zip(&a).all(|(x, y)| (x - y).abs() < 1e-15));
+        assert!(c.directions[0]
+            .iter()
+            .zip(&a)
+            .all(|(x, y)| (x - y).abs() < 1e-15));
     }
 }
 
@@ -124,7 +137,10 @@ fn a_sphere_is_umbilic_with_curvature_one_over_r() {
             let su = s.derivatives(u, v, 1).unwrap()[1][0];
             let a = su.map(|x| x / euclidean_norm(&su));
             assert!(
-                c.directions[0].iter().zip(&a).all(|(x, y)| (x - y).abs() < 1e-15),
+                c.directions[0]
+                    .iter()
+                    .zip(&a)
+                    .all(|(x, y)| (x - y).abs() < 1e-15),
                 "umbilic choice at ({u}, {v}): {c:?}"
             );
         }
@@ -173,8 +189,14 @@ fn the_saddle_z_equals_xy_matches_the_monge_patch() {
         let (x, y) = (2.0 * u - 1.0, 2.0 * v - 1.0);
         let q = 1.0 + x * x + y * y;
         let c = s.curvature(u, v).unwrap();
-        assert!((c.gaussian + 1.0 / (q * q)).abs() < 1e-15, "({x}, {y}): {c:?}");
-        assert!((c.mean + x * y / q.powf(1.5)).abs() < 1e-15, "({x}, {y}): {c:?}");
+        assert!(
+            (c.gaussian + 1.0 / (q * q)).abs() < 1e-15,
+            "({x}, {y}): {c:?}"
+        );
+        assert!(
+            (c.mean + x * y / q.powf(1.5)).abs() < 1e-15,
+            "({x}, {y}): {c:?}"
+        );
         assert_frame(&c, &s.normal(u, v).unwrap(), 1e-15, (u, v));
     }
 }
@@ -184,12 +206,21 @@ fn curvature_agrees_with_the_classical_formulas() {
     let s = super::tests::wavy();
     let (du, dv) = (s.domain(Direction::U), s.domain(Direction::V));
     for (a, b) in grid(13, 0.0, 1.0) {
-        let (u, v) = (du.start + a * (du.end - du.start), dv.start + b * (dv.end - dv.start));
+        let (u, v) = (
+            du.start + a * (du.end - du.start),
+            dv.start + b * (dv.end - dv.start),
+        );
         let c = s.curvature(u, v).unwrap();
         let (k, h) = classical(&s, u, v);
         let scale = c.principal[0].abs().max(c.principal[1].abs());
-        assert!((c.gaussian - k).abs() <= 1e-12 * scale * scale, "({u}, {v}): {c:?} vs {k}");
-        assert!((c.mean - h).abs() <= 1e-12 * scale, "({u}, {v}): {c:?} vs {h}");
+        assert!(
+            (c.gaussian - k).abs() <= 1e-12 * scale * scale,
+            "({u}, {v}): {c:?} vs {k}"
+        );
+        assert!(
+            (c.mean - h).abs() <= 1e-12 * scale,
+            "({u}, {v}): {c:?} vs {h}"
+        );
         assert!(c.principal[0] >= c.principal[1]);
         assert_frame(&c, &s.normal(u, v).unwrap(), 1e-14, (u, v));
     }
@@ -220,7 +251,12 @@ fn swapping_u_and_v_reverses_the_normal_and_the_signs() {
 #[test]
 fn errors_out_of_the_domain_at_a_singular_normal_and_beyond_the_floats() {
     let s = sphere_octant(1.0);
-    for (u, v) in [(1.5, 0.5), (0.5, -0.1), (f64::NAN, 0.5), (0.5, f64::INFINITY)] {
+    for (u, v) in [
+        (1.5, 0.5),
+        (0.5, -0.1),
+        (f64::NAN, 0.5),
+        (0.5, f64::INFINITY),
+    ] {
         assert!(
             matches!(s.curvature(u, v), Err(Error::InDirection { ref inner, .. }) if matches!(**inner, Error::OutOfDomain { .. })),
             "({u}, {v})"
@@ -244,7 +280,10 @@ fn errors_out_of_the_domain_at_a_singular_normal_and_beyond_the_floats() {
     assert!(
         matches!(
             s.curvature(5e-151, 0.5),
-            Err(Error::IllConditioned { operation: "curvature", .. })
+            Err(Error::IllConditioned {
+                operation: "curvature",
+                ..
+            })
         ),
         "{:?}",
         s.curvature(5e-151, 0.5)
@@ -281,7 +320,11 @@ fn a_fuzzy_surface_gives_the_curvature_of_each_layer() {
     for (u, v) in [(0.2, 0.3), (0.0, 0.0), (0.9, 1.0)] {
         let layers = s.curvatures(u, v).unwrap();
         for l in Layer::ALL {
-            assert_eq!(layers[l], s.layer_surface(l).curvature(u, v).unwrap(), "{l}");
+            assert_eq!(
+                layers[l],
+                s.layer_surface(l).curvature(u, v).unwrap(),
+                "{l}"
+            );
         }
         // Each layer scales the octant: a sphere of radius 2·(1 + spread).
         let k = |f: f64| 1.0 / (2.0 * f);
