@@ -36,6 +36,7 @@ __all__ = [
     "PerDirection",
     "SideName",
     "StageSamples",
+    "SurfaceCurvature",
     "SurfaceDistance",
     "SurfaceLayerSamples",
     "SurfaceStageSamples",
@@ -172,6 +173,21 @@ class SurfaceDistance(TypedDict):
     max: float
     max_at: Tuple[float, float]
     rms: float
+
+
+class SurfaceCurvature(TypedDict):
+    """``NurbsSurface.curvature``: at every ``(u, v)`` (shape ``s``, the
+    broadcast shape of ``u`` and ``v``) the Gaussian curvature ``gaussian``
+    ``s``, the mean curvature ``mean`` ``s``, the principal curvatures
+    ``principal`` ``s + (2,)`` (``k1 >= k2``) and their unit directions
+    ``directions`` ``s + (2, 3)``. ``FuzzySurface.curvatures``: the same with
+    the seven layers after ``s`` (``s + (7,)``, ``s + (7, 2)``, ``s + (7, 2,
+    3)``)."""
+
+    gaussian: Floats
+    mean: Floats
+    principal: Floats
+    directions: Floats
 
 
 class Centroid(TypedDict):

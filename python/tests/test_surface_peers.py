@@ -3,8 +3,10 @@ on random rational surfaces: geomdl 5.4.0 (NURBS-Python, The NURBS Book's
 algorithms in pure Python) and splipy (SINTEF's spline library, tensor
 products on projective control points `(w·P, w)`). Evaluation (both peers,
 `eval` and the grid engine), partial derivatives and normals (geomdl),
-knot insertion and degree elevation (splipy's nets), every layer of a
-fuzzy surface (geomdl). Differences are relative to the size of the net."""
+the curvature against the fundamental forms of geomdl's derivatives
+(neither peer computes surface curvature), knot insertion and degree
+elevation (splipy's nets), every layer of a fuzzy surface (geomdl).
+Differences are relative to the size of the net."""
 
 from __future__ import annotations
 
@@ -137,6 +139,61 @@ def derivative_errors() -> Dict[str, float]:
     return worst
 
 
+def classical_curvature(d: np.ndarray) -> Tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """K, H, (k1, k2) and the principal directions from partial derivatives
+    ``d[..., k, l, :]`` by the fundamental forms (do Carmo §3-3), the
+    directions from numpy's eigenvectors of the Weingarten matrix I⁻¹·II."""
+    su, sv, suu, suv, svv = d[..., 1, 0, :], d[..., 0, 1, :], d[..., 2, 0, :], d[..., 1, 1, :], d[..., 0, 2, :]
+    n = np.cross(su, sv)
+    n /= np.linalg.norm(n, axis=-1, keepdims=True)
+    dot = lambda a, b: (a * b).sum(-1)  # noqa: E731
+    first = np.stack([np.stack([dot(su, su), dot(su, sv)], -1), np.stack([dot(su, sv), dot(sv, sv)], -1)], -2)
+    second = np.stack([np.stack([dot(suu, n), dot(suv, n)], -1), np.stack([dot(suv, n), dot(svv, n)], -1)], -2)
+    values, vectors = np.linalg.eig(np.linalg.solve(first, second))
+    values, vectors = values.real, vectors.real
+    order = np.argsort(-values, axis=-1)
+    principal = np.take_along_axis(values, order, -1)
+    vectors = np.take_along_axis(vectors, order[..., None, :], -1)
+    directions = vectors[..., 0, :, None] * su[..., None, :] + vectors[..., 1, :, None] * sv[..., None, :]
+    directions /= np.linalg.norm(directions, axis=-1, keepdims=True)
+    return np.linalg.det(second) / np.linalg.det(first), principal.sum(-1) / 2, principal, directions
+
+
+def curvature_errors() -> Dict[str, float]:
+    """Largest differences of `curvature` from the fundamental forms of
+    geomdl's derivatives, relative to the largest principal curvature of the
+    case: K (relative to its square), H, k1 and k2; the principal directions
+    (the sine of the angle) where k1 − k2 is at least a tenth of that scale. Points
+    where the normal is (nearly) singular, as in `derivative_errors`, are
+    not compared."""
+    rng = np.random.default_rng(14)
+    worst = {"gaussian": 0.0, "mean": 0.0, "principal": 0.0, "directions": 0.0, "points compared": 0.0}
+    for case in cases():
+        s, g = ours(case), geomdl_surface(case)
+        u = probes(rng, case["knots"][0], case["degree"][0])
+        v = probes(rng, case["knots"][1], case["degree"][1])
+        theirs = np.array([[g.derivatives(a, b, 2) for b in v] for a in u])
+        su, sv = theirs[:, :, 1, 0], theirs[:, :, 0, 1]
+        length = np.linalg.norm(np.cross(su, sv), axis=-1)
+        regular = length > 1e-6 * np.linalg.norm(su, axis=-1) * np.linalg.norm(sv, axis=-1)
+        if not regular.any():
+            continue
+        k, h, principal, directions = (x[regular] for x in classical_curvature(theirs))
+        c = s.curvature(np.broadcast_to(u[:, None], regular.shape)[regular],
+                        np.broadcast_to(v[None, :], regular.shape)[regular])
+        scale = max(float(np.abs(c["principal"]).max()), 1e-3)
+        worst["gaussian"] = max(worst["gaussian"], float(np.abs(c["gaussian"] - k).max()) / scale**2)
+        worst["mean"] = max(worst["mean"], float(np.abs(c["mean"] - h).max()) / scale)
+        worst["principal"] = max(worst["principal"], float(np.abs(c["principal"] - principal).max()) / scale)
+        apart = c["principal"][:, 0] - c["principal"][:, 1] >= 0.1 * scale
+        # The sine of the angle between the two, whatever their signs.
+        sine = np.linalg.norm(np.cross(c["directions"][apart], directions[apart]), axis=-1)
+        if sine.size:
+            worst["directions"] = max(worst["directions"], float(sine.max()))
+        worst["points compared"] += int(regular.sum())
+    return worst
+
+
 def operation_errors() -> Dict[str, float]:
     """Largest differences of the nets after knot insertion (twice at a
     random parameter) and degree elevation (by one) in each direction from
@@ -178,6 +235,13 @@ def test_derivatives_and_normals_equal_geomdl() -> None:
     assert worst["derivatives"] <= 1e-10, worst
     assert worst["normal"] <= 1e-10, worst
     assert worst["normals compared"] >= CASES // 2, worst
+
+
+def test_curvature_equals_the_fundamental_forms_of_geomdls_derivatives() -> None:
+    worst = curvature_errors()
+    assert max(worst["gaussian"], worst["mean"], worst["principal"]) <= 1e-10, worst
+    assert worst["directions"] <= 1e-10, worst
+    assert worst["points compared"] >= 10 * CASES, worst
 
 
 def test_insertion_and_elevation_give_splipys_nets() -> None:

@@ -1,7 +1,8 @@
 //! `FuzzySurface`: stage 1 of Algorithm 1.1 on a net of fuzzy control
 //! points (SPEC §9); its seven layer surfaces on a grid by the grid engine,
-//! its operations on all layers at once (`surface_methods.rs`), the fuzzy
-//! numbers of its net (`fuzzy_methods.rs`), and `solve` for stages 2–4.
+//! the curvature of each layer, its operations on all layers at once
+//! (`surface_methods.rs`), the fuzzy numbers of its net
+//! (`fuzzy_methods.rs`), and `solve` for stages 2–4.
 
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
@@ -11,6 +12,7 @@ use crate::arrays::{coords_last, optional_vector};
 use crate::classes::{PyFuzzyCurve, PyFuzzySurface, PyNurbsSurface, PySurfaceSolution};
 use crate::closest::{ClosestArrays, Targets};
 use crate::construct::{layer, net_weights, rows, surface_degrees, FuzzyArrays, PerDirection};
+use crate::curvature::{curvature_dict, spatial};
 use crate::dim::by_dim;
 use crate::errors::compute;
 use crate::fuzzy_methods::{fuzzy_methods, index, numbers};
@@ -114,6 +116,38 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
             targets.pack(py, points, &[7, d])?,
             targets.pack(py, distances, &[7])?,
         ))
+    }
+
+    /// The curvature of every layer surface at every pair of ``u`` and ``v``
+    /// (see ``NurbsSurface.curvature``), layers in SPEC order
+    /// (``upper_left`` … ``upper_right``, ``crisp`` at index 3); each layer
+    /// with its own normal. Unlike the points, the layers' curvatures are not
+    /// ordered.
+    ///
+    /// Returns
+    /// -------
+    /// dict
+    ///     ``"gaussian"`` and ``"mean"``: shape ``broadcast(u, v).shape +
+    ///     (7,)``; ``"principal"``: that ``+ (2,)``; ``"directions"``: that
+    ///     ``+ (2, 3)``.
+    ///
+    /// Raises
+    /// ------
+    /// ValueError
+    ///     For a parameter outside its domain; where the normal of a layer
+    ///     is undefined (the message names the layer); for a surface in the
+    ///     plane.
+    fn curvatures<'py>(
+        &self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let s = spatial(&self.0, "curvatures")?;
+        curvature_dict(py, u, v, &[7], |u, v, out| {
+            out.extend(s.curvatures(u, v)?.into_array());
+            Ok(())
+        })
     }
 
     /// The seven layer surfaces at every pair of ``u`` and ``v`` (broadcast

@@ -46,6 +46,7 @@ mod arrays;
 mod classes;
 mod closest;
 mod construct;
+mod curvature;
 mod curve_methods;
 mod dim;
 mod errors;

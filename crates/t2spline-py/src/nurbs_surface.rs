@@ -1,11 +1,11 @@
 //! `NurbsSurface`: a rational B-spline surface (SPEC §9) with the operations
 //! of the core: evaluation broadcast over arrays of `u` and `v`, the grid
-//! engine, partial derivatives, the normal, the closest point, isocurves,
+//! engine, partial derivatives, the normal, the curvature, the closest point, isocurves,
 //! knot insertion and refinement, degree elevation, splitting, the bounding
 //! box (the last ones shared with `FuzzySurface`, `surface_methods.rs`).
 
-use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
+use pyo3::types::PyDict;
 use t2spline::nurbs::MAX_DERIVATIVE_ORDER;
 use t2spline::{Direction, NurbsSurface};
 
@@ -13,7 +13,8 @@ use crate::arrays::{coords_last, floats, optional_vector, Floats};
 use crate::classes::{PyNurbsCurve, PyNurbsSurface};
 use crate::closest::{ClosestArrays, Targets};
 use crate::construct::{count, knot_vector, net_weights, rows, surface_degrees, PerDirection};
-use crate::dim::{by_dim, ByDim};
+use crate::curvature::{curvature_dict, spatial};
+use crate::dim::by_dim;
 use crate::errors::compute;
 use crate::net::{points_array, Net};
 use crate::sample::{at_pairs, channels, GridArg};
@@ -195,15 +196,59 @@ surface_methods!(PyNurbsSurface, PyNurbsCurve {
         u: &Bound<'py, PyAny>,
         v: &Bound<'py, PyAny>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        match &self.0 {
-            ByDim::Spatial(s) => at_pairs(py, u, v, &[3], |u, v, out| {
-                out.extend(s.normal(u, v)?);
-                Ok(())
-            }),
-            ByDim::Planar(_) => Err(PyValueError::new_err(
-                "normal: a surface in the plane has none (it needs 3 coordinates)",
-            )),
-        }
+        let s = spatial(&self.0, "normal")?;
+        at_pairs(py, u, v, &[3], |u, v, out| {
+            out.extend(s.normal(u, v)?);
+            Ok(())
+        })
+    }
+
+    /// The curvature at every pair of ``u`` and ``v``: Gaussian curvature
+    /// ``K``, mean curvature ``H``, the principal curvatures ``k1 >= k2``
+    /// and their unit directions in space, from the first and second
+    /// fundamental forms (do Carmo §3-3); one-sided at knots as
+    /// ``derivatives``.
+    ///
+    /// Signs follow ``normal``: a normal curvature is positive where the
+    /// surface bends toward the normal ``S_u × S_v / |S_u × S_v|``. At an
+    /// umbilic (``k1 = k2`` within rounding: a sphere, a plane) the
+    /// directions are ``S_u/|S_u|`` and ``normal × S_u/|S_u|``.
+    ///
+    /// Returns
+    /// -------
+    /// dict
+    ///     ``"gaussian"`` and ``"mean"``: shape ``broadcast(u, v).shape``
+    ///     (0-d arrays for two numbers); ``"principal"``: that ``+ (2,)``,
+    ///     ``[k1, k2]``; ``"directions"``: that ``+ (2, 3)``, ``[e1, e2]``
+    ///     with ``(e1, e2, normal)`` right-handed and orthonormal.
+    ///
+    /// Raises
+    /// ------
+    /// ValueError
+    ///     For a parameter outside its domain; where the normal is
+    ///     undefined (as ``normal``); for a surface in the plane.
+    ///
+    /// Examples
+    /// --------
+    /// >>> w = 0.5 ** 0.5                     # a quarter cylinder of radius 2 about z
+    /// >>> s = NurbsSurface([[[2, 0, 0], [2, 0, 1]], [[2, 2, 0], [2, 2, 1]], [[0, 2, 0], [0, 2, 1]]],
+    /// ...                  weights=[[1, 1], [w, w], [1, 1]], degree=(2, 1))
+    /// >>> c = s.curvature([0.2, 0.7], 0.5)
+    /// >>> c["principal"].round(12).tolist()  # none along the axis, -1/2 around it
+    /// [[0.0, -0.5], [0.0, -0.5]]
+    /// >>> c["directions"][0, 0].round(12).tolist()
+    /// [0.0, 0.0, 1.0]
+    fn curvature<'py>(
+        &self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        let s = spatial(&self.0, "curvature")?;
+        curvature_dict(py, u, v, &[], |u, v, out| {
+            out.push(s.curvature(u, v)?);
+            Ok(())
+        })
     }
 
     /// The rational basis ``Rᵢⱼ(u, v) = wᵢⱼNᵢ,ₚ(u)Mⱼ,q(v) / Σₖₗ

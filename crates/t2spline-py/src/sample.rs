@@ -223,18 +223,40 @@ pub(crate) fn at_pairs<'py>(
     tail: &[usize],
     f: impl Fn(f64, f64, &mut Vec<f64>) -> Result<(), t2spline::Error> + Send + Sync,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let (u, v) = (floats(u, "u")?, floats(v, "v")?);
-    let not_broadcast = || {
-        PyValueError::new_err(format!(
-            "u, v: shapes {} and {} do not broadcast together",
-            shape_text(&u.shape),
-            shape_text(&v.shape)
-        ))
-    };
-    let shape = broadcast_shape(&u.shape, &v.shape).ok_or_else(not_broadcast)?;
-    let (us, vs) = (u.broadcast_to(&shape), v.broadcast_to(&shape));
-    let (us, vs) = us.zip(vs).ok_or_else(not_broadcast)?;
-    at_each(py, &shape, tail, |k, out| f(us[k], vs[k], out))
+    let Pairs { shape, u, v } = Pairs::extract(u, v)?;
+    at_each(py, &shape, tail, |k, out| f(u[k], v[k], out))
+}
+
+/// The values of `u` and `v` broadcast together (numpy's rule), in C order.
+pub(crate) struct Pairs {
+    /// The broadcast shape.
+    pub(crate) shape: Vec<usize>,
+    /// `u` at every index of `shape`.
+    pub(crate) u: Vec<f64>,
+    /// `v` at every index of `shape`.
+    pub(crate) v: Vec<f64>,
+}
+
+impl Pairs {
+    /// Reads `u` and `v` and broadcasts them together.
+    ///
+    /// # Errors
+    /// The errors of reading `u` and `v`; `ValueError` for shapes that do not
+    /// broadcast.
+    pub(crate) fn extract(u: &Bound<'_, PyAny>, v: &Bound<'_, PyAny>) -> PyResult<Self> {
+        let (u, v) = (floats(u, "u")?, floats(v, "v")?);
+        let not_broadcast = || {
+            PyValueError::new_err(format!(
+                "u, v: shapes {} and {} do not broadcast together",
+                shape_text(&u.shape),
+                shape_text(&v.shape)
+            ))
+        };
+        let shape = broadcast_shape(&u.shape, &v.shape).ok_or_else(not_broadcast)?;
+        let (us, vs) = (u.broadcast_to(&shape), v.broadcast_to(&shape));
+        let (u, v) = us.zip(vs).ok_or_else(not_broadcast)?;
+        Ok(Pairs { shape, u, v })
+    }
 }
 
 /// `f(k, out)` for every flat index `k` of an array of `shape`: the result

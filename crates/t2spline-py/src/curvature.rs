@@ -1,0 +1,82 @@
+//! The curvature of surfaces in space as numpy arrays: `NurbsSurface.curvature`
+//! and `FuzzySurface.curvatures` give a dict of `gaussian`, `mean`,
+//! `principal` and `directions` at every pair of `u` and `v` (broadcast as
+//! numpy does), and the refusal of quantities that need a normal on surfaces
+//! in the plane.
+
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use t2spline::SurfaceCurvature;
+
+use crate::arrays::array;
+use crate::dim::{ByDim, Family};
+use crate::errors::compute;
+use crate::sample::{check_output, Pairs};
+
+/// The numbers of one [`SurfaceCurvature`]: K, H, k₁, k₂, e₁ and e₂.
+const NUMBERS: usize = 10;
+
+/// The surface in space inside `value`.
+///
+/// # Errors
+/// `ValueError` naming `what` for a surface in the plane, which has no
+/// normal.
+pub(crate) fn spatial<'a, F: Family>(value: &'a ByDim<F>, what: &str) -> PyResult<&'a F::Of<3>> {
+    match value {
+        ByDim::Spatial(s) => Ok(s),
+        ByDim::Planar(_) => Err(PyValueError::new_err(format!(
+            "{what}: a surface in the plane has none (it needs 3 coordinates)"
+        ))),
+    }
+}
+
+/// `f(u, v, out)` at every pair of `u` and `v`, each call appending
+/// `layers`'s product of curvatures to `out` (one, or seven layers), as a
+/// dict of arrays: `gaussian` and `mean` of shape `broadcast(u, v).shape +
+/// layers`, `principal` that `+ (2,)`, `directions` that `+ (2, 3)`. Runs with
+/// the GIL released.
+///
+/// # Errors
+/// The errors of reading `u` and `v`, shapes that do not broadcast, an
+/// output beyond the size limit; the first error of `f`.
+pub(crate) fn curvature_dict<'py>(
+    py: Python<'py>,
+    u: &Bound<'py, PyAny>,
+    v: &Bound<'py, PyAny>,
+    layers: &[usize],
+    f: impl Fn(f64, f64, &mut Vec<SurfaceCurvature>) -> Result<(), t2spline::Error> + Send + Sync,
+) -> PyResult<Bound<'py, PyDict>> {
+    let pairs = Pairs::extract(u, v)?;
+    let per_pair: usize = layers.iter().product();
+    check_output(pairs.u.len(), per_pair * NUMBERS, "u, v")?;
+    let values = compute(py, || {
+        let mut out = Vec::with_capacity(pairs.u.len() * per_pair);
+        for (&u, &v) in pairs.u.iter().zip(&pairs.v) {
+            f(u, v, &mut out)?;
+        }
+        Ok(out)
+    })?;
+    let shape = |tail: &[usize]| -> Vec<usize> {
+        pairs
+            .shape
+            .iter()
+            .chain(layers)
+            .chain(tail)
+            .copied()
+            .collect()
+    };
+    let out = PyDict::new(py);
+    let gaussian = values.iter().map(|c| c.gaussian).collect();
+    out.set_item("gaussian", array(py, gaussian, &shape(&[]))?)?;
+    let mean = values.iter().map(|c| c.mean).collect();
+    out.set_item("mean", array(py, mean, &shape(&[]))?)?;
+    let principal = values.iter().flat_map(|c| c.principal).collect();
+    out.set_item("principal", array(py, principal, &shape(&[2]))?)?;
+    let directions = values
+        .iter()
+        .flat_map(|c| c.directions.into_iter().flatten())
+        .collect();
+    out.set_item("directions", array(py, directions, &shape(&[2, 3]))?)?;
+    Ok(out)
+}
