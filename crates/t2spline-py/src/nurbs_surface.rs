@@ -234,9 +234,9 @@ surface_methods!(PyNurbsSurface, PyNurbsCurve {
     /// >>> s = NurbsSurface([[[2, 0, 0], [2, 0, 1]], [[2, 2, 0], [2, 2, 1]], [[0, 2, 0], [0, 2, 1]]],
     /// ...                  weights=[[1, 1], [w, w], [1, 1]], degree=(2, 1))
     /// >>> c = s.curvature([0.2, 0.7], 0.5)
-    /// >>> c["principal"].round(12).tolist()  # none along the axis, -1/2 around it
+    /// >>> (c["principal"].round(12) + 0.0).tolist()  # none along the axis, -1/2 around it
     /// [[0.0, -0.5], [0.0, -0.5]]
-    /// >>> c["directions"][0, 0].round(12).tolist()
+    /// >>> (c["directions"][0, 0].round(12) + 0.0).tolist()
     /// [0.0, 0.0, 1.0]
     fn curvature<'py>(
         &self,
