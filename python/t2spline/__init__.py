@@ -46,8 +46,8 @@ FuzzyCurve, Solution
 NurbsSurface
     A rational B-spline surface (SPEC §9): evaluation broadcast over ``u``
     and ``v``, grids by the grid engine, partial derivatives, normal,
-    isocurves, knot insertion, degree elevation, splitting, closest point,
-    bounding box.
+    curvature, isocurves, knot insertion, degree elevation, splitting,
+    closest point, bounding box.
 FuzzySurface, SurfaceSolution
     A net of fuzzy control points and its seven layer surfaces; stages 2–4
     on the net by ``FuzzySurface.solve(alpha, type_reduction=)``, and the

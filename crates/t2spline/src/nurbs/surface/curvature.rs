@@ -35,10 +35,10 @@ pub struct SurfaceCurvature {
     pub directions: [[f64; 3]; 2],
 }
 
-/// The gap `k₁ − k₂` below which a point is taken as umbilic, relative to
-/// the size of the second derivatives seen in the tangent frame (the
-/// scale of the rounding in `k₁` and `k₂`, about 10⁻¹⁶ of it): a thousand
-/// times that rounding and more.
+/// Half the gap, `(k₁ − k₂)/2`, below which a point is taken as umbilic,
+/// relative to the size of the second derivatives seen in the tangent frame
+/// (the scale of the rounding in `k₁` and `k₂`, about 10⁻¹⁶ of it on the
+/// sphere of the tests): a thousand times that rounding and more.
 const UMBILIC_GAP: f64 = 1e-12;
 
 impl NurbsSurface<3> {
