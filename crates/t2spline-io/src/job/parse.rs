@@ -18,6 +18,7 @@ use super::limits::{MAX_ARRAY, MAX_KEYS, MAX_NESTING, MAX_POINTS, MAX_PROBLEMS, 
 use super::point::{complete, RawPoint};
 use super::position::{self, element, Oversized};
 use super::surface;
+use super::valid;
 use super::walker::{kind, Walker};
 use crate::fit_data::FitData;
 use crate::Problem;
@@ -37,20 +38,30 @@ const DATA_KEYS: &[&str] = &[
 /// Parses `text` as a job, or returns every problem found, each with its line
 /// and column.
 pub(super) fn parse(text: &str) -> Result<Job, Vec<Problem>> {
-    walk(text, Walker::job)
+    walk(text, valid::job, Walker::job)
+}
+
+/// [`parse`] by the validator alone, without the one-pass reading of a
+/// valid job, to test that the two agree.
+#[cfg(test)]
+pub(super) fn parse_walking(text: &str) -> Result<Job, Vec<Problem>> {
+    walk(text, |_| None, Walker::job)
 }
 
 /// Parses `text` as a data file for fitting, or returns every problem found,
 /// each with its line and column.
 pub(crate) fn parse_data(text: &str) -> Result<FitData, Vec<Problem>> {
-    walk(text, Walker::data)
+    walk(text, |_| None, Walker::data)
 }
 
-/// Parses `text` as JSON and reads it with `read`, collecting every problem
-/// (at most [`MAX_PROBLEMS`], then a count) and placing each at its line and
-/// column.
+/// Reads `text` with `valid`, which takes a file with no problem at all in
+/// one pass; else parses it as JSON and reads it with `read`, collecting
+/// every problem (at most [`MAX_PROBLEMS`], then a count) and placing each at
+/// its line and column. Both come after the limits on sizes, so that neither
+/// allocates beyond them.
 fn walk<T>(
     text: &str,
+    valid: impl FnOnce(&str) -> Option<T>,
     read: impl FnOnce(&mut Walker, &Value) -> Option<T>,
 ) -> Result<T, Vec<Problem>> {
     // Spreadsheet programs start UTF-8 files with a byte-order mark; editors
@@ -83,6 +94,9 @@ fn walk<T>(
             line_column: Some(at),
             message,
         }]);
+    }
+    if let Some(out) = valid(text) {
+        return Ok(out);
     }
     let value: Value = serde_json::from_str(text).map_err(|e| vec![syntax_problem(text, &e)])?;
     let mut w = Walker::default();
