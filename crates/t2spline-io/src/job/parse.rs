@@ -55,10 +55,10 @@ pub(crate) fn parse_data(text: &str) -> Result<FitData, Vec<Problem>> {
 }
 
 /// Reads `text` with `valid`, which takes a file with no problem at all in
-/// one pass; else parses it as JSON and reads it with `read`, collecting
-/// every problem (at most [`MAX_PROBLEMS`], then a count) and placing each at
-/// its line and column. Both come after the limits on sizes, so that neither
-/// allocates beyond them.
+/// one pass (keeping the limits on sizes itself); else checks those limits,
+/// parses the text as JSON and reads it with `read`, collecting every
+/// problem (at most [`MAX_PROBLEMS`], then a count) and placing each at its
+/// line and column.
 fn walk<T>(
     text: &str,
     valid: impl FnOnce(&str) -> Option<T>,
@@ -67,6 +67,9 @@ fn walk<T>(
     // Spreadsheet programs start UTF-8 files with a byte-order mark; editors
     // do not show it, so columns are counted without it.
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    if let Some(out) = valid(text) {
+        return Ok(out);
+    }
     if let Some(found) = position::oversized(text, MAX_ARRAY, MAX_KEYS, MAX_VALUES) {
         let (at, message) = match found {
             Oversized::Array(at) => (
@@ -94,9 +97,6 @@ fn walk<T>(
             line_column: Some(at),
             message,
         }]);
-    }
-    if let Some(out) = valid(text) {
-        return Ok(out);
     }
     let value: Value = serde_json::from_str(text).map_err(|e| vec![syntax_problem(text, &e)])?;
     let mut w = Walker::default();

@@ -16,7 +16,6 @@
 
 mod raw;
 
-use serde::Deserialize;
 use t2spline::job::{
     check_grid_samples, check_samples, Job, Model, Samples, DEFAULT_SAMPLES,
     DEFAULT_SURFACE_SAMPLES,
@@ -29,10 +28,7 @@ use raw::{Knots, Points, RawJob, RawNumber, Weights, Whole};
 /// The job in `text` (without a byte-order mark) if it has no problem at
 /// all; `None` if it has one, or anything this reading does not expect.
 pub(super) fn job(text: &str) -> Option<Job> {
-    let mut de = serde_json::Deserializer::from_str(text);
-    let raw = RawJob::deserialize(&mut de).ok()?;
-    de.end().ok()?;
-    build(raw)
+    build(raw::read(text)?)
 }
 
 /// The job of `raw`, every rule checked.

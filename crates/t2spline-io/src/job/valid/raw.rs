@@ -9,11 +9,19 @@
 //! `serde_json` parser (an integer `n` becomes `n as f64`, as
 //! `Value::as_f64` gives it) and keys are compared decoded, escapes
 //! included.
+//!
+//! The reading is the first to see the text, before the limits of
+//! [`limits`](super::super::limits) are counted, so it keeps them itself, as
+//! it goes ([`Count`]): it holds no more than the validator's tree could.
 
+use std::cell::Cell;
 use std::fmt;
+use std::marker::PhantomData;
 
 use serde::de::{self, DeserializeSeed, Deserializer, MapAccess, SeqAccess, Visitor};
 use t2spline::TypeReduction;
+
+use super::super::limits::{MAX_ARRAY, MAX_KEYS, MAX_VALUES};
 
 /// The keys of a job's top level, in the order of [`RawJob`]'s fields.
 const TOP: [&str; 10] = [
@@ -32,6 +40,10 @@ const POINT: [&str; 3] = ["x", "y", "z"];
 const NUMBER: [&str; 5] = ["crisp", "upper", "primary", "lower", "lower_height"];
 const DIRECTIONS: [&str; 2] = ["u", "v"];
 
+// No object of a job comes near the limit of keys; arrays and values are
+// counted.
+const _: () = assert!(TOP.len() <= MAX_KEYS);
+
 /// The top level of a job as given: each key `None` when missing.
 #[derive(Default)]
 pub(super) struct RawJob {
@@ -45,6 +57,9 @@ pub(super) struct RawJob {
     pub lower_height: Option<f64>,
     pub samples: Option<Whole>,
     pub points: Option<Points>,
+    /// The JSON values of the file, counted as
+    /// [`oversized`](super::super::position::oversized) counts them.
+    pub values: usize,
 }
 
 /// A whole number, or a pair of them (`order`, `degree`, `samples`).
@@ -87,17 +102,66 @@ pub(super) struct Points {
     pub net: Option<[usize; 2]>,
 }
 
+/// The job in `text`, or `None` at the first thing a valid job does not
+/// hold.
+pub(super) fn read(text: &str) -> Option<RawJob> {
+    let count = Count(Cell::new(1));
+    let mut de = serde_json::Deserializer::from_str(text);
+    let mut job = JobVisitor(&count).deserialize(&mut de).ok()?;
+    de.end().ok()?;
+    job.values = count.0.get();
+    Some(job)
+}
+
+/// The JSON values read so far, counted as
+/// [`oversized`](super::super::position::oversized) counts them in valid
+/// JSON (the root, then one per container and one per separator), within
+/// [`MAX_VALUES`], and no array longer than [`MAX_ARRAY`].
+struct Count(Cell<usize>);
+
+impl Count {
+    /// Counts `n` more values.
+    fn add<E: de::Error>(&self, n: usize) -> Result<(), E> {
+        let values = self.0.get() + n;
+        self.0.set(values);
+        if values > MAX_VALUES {
+            return Err(refuse());
+        }
+        Ok(())
+    }
+
+    /// Counts an array or object about to be read.
+    fn container<E: de::Error>(&self) -> Result<(), E> {
+        self.add(1)
+    }
+
+    /// Counts entry `i` (from 0) of an array or object: the separator
+    /// before it.
+    fn entry<E: de::Error>(&self, i: usize) -> Result<(), E> {
+        if i >= MAX_ARRAY {
+            return Err(refuse());
+        }
+        self.add(usize::from(i > 0))
+    }
+
+    /// Counts a pair: an array and its separator.
+    fn pair<E: de::Error>(&self) -> Result<(), E> {
+        self.add(2)
+    }
+}
+
 /// Refuses: the validator will say why.
 fn refuse<E: de::Error>() -> E {
     E::custom("not a plainly valid job")
 }
 
-/// The next key of `map` among `names`, as its index; refuses an unknown
-/// key and one already in `seen` (a bit per name).
+/// The next key of `map` among `names`, as its index, counted; refuses an
+/// unknown key and one already in `seen` (a bit per name).
 fn next_key<'de, A: MapAccess<'de>>(
     map: &mut A,
     names: &'static [&'static str],
     seen: &mut u32,
+    count: &Count,
 ) -> Result<Option<usize>, A::Error> {
     let Some(i) = map.next_key_seed(Key(names))? else {
         return Ok(None);
@@ -106,6 +170,7 @@ fn next_key<'de, A: MapAccess<'de>>(
     if *seen & bit != 0 {
         return Err(refuse());
     }
+    count.entry(seen.count_ones() as usize)?;
     *seen |= bit;
     Ok(Some(i))
 }
@@ -130,34 +195,38 @@ impl Visitor<'_> for Key {
     }
 }
 
-impl<'de> de::Deserialize<'de> for RawJob {
-    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
-        d.deserialize_map(JobVisitor)
+/// The top level: an object of known keys.
+struct JobVisitor<'c>(&'c Count);
+
+impl<'de> DeserializeSeed<'de> for JobVisitor<'_> {
+    type Value = RawJob;
+    fn deserialize<D: Deserializer<'de>>(self, d: D) -> Result<RawJob, D::Error> {
+        d.deserialize_map(self)
     }
 }
 
-struct JobVisitor;
-
-impl<'de> Visitor<'de> for JobVisitor {
+impl<'de> Visitor<'de> for JobVisitor<'_> {
     type Value = RawJob;
     fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
         f.write_str("a job")
     }
     fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<RawJob, A::Error> {
+        let count = self.0;
+        count.container()?;
         let mut job = RawJob::default();
         let mut seen = 0;
-        while let Some(i) = next_key(&mut map, &TOP, &mut seen)? {
+        while let Some(i) = next_key(&mut map, &TOP, &mut seen, count)? {
             match i {
                 0 => job.description = Some(map.next_value()?),
-                1 => job.order = Some(map.next_value_seed(WholeSeed)?),
-                2 => job.degree = Some(map.next_value_seed(WholeSeed)?),
-                3 => job.weights = Some(map.next_value_seed(WeightsSeed)?),
-                4 => job.knots = Some(map.next_value_seed(KnotsSeed)?),
+                1 => job.order = Some(map.next_value_seed(WholeSeed(count))?),
+                2 => job.degree = Some(map.next_value_seed(WholeSeed(count))?),
+                3 => job.weights = Some(map.next_value_seed(WeightsSeed(count))?),
+                4 => job.knots = Some(map.next_value_seed(KnotsSeed(count))?),
                 5 => job.alpha = Some(map.next_value()?),
                 6 => job.type_reduction = Some(map.next_value_seed(TypeReductionSeed)?),
                 7 => job.lower_height = Some(map.next_value()?),
-                8 => job.samples = Some(map.next_value_seed(WholeSeed)?),
-                _ => job.points = Some(map.next_value_seed(PointsSeed)?),
+                8 => job.samples = Some(map.next_value_seed(WholeSeed(count))?),
+                _ => job.points = Some(map.next_value_seed(PointsSeed(count))?),
             }
         }
         Ok(job)
@@ -165,16 +234,16 @@ impl<'de> Visitor<'de> for JobVisitor {
 }
 
 /// A [`Whole`].
-struct WholeSeed;
+struct WholeSeed<'c>(&'c Count);
 
-impl<'de> DeserializeSeed<'de> for WholeSeed {
+impl<'de> DeserializeSeed<'de> for WholeSeed<'_> {
     type Value = Whole;
     fn deserialize<D: Deserializer<'de>>(self, d: D) -> Result<Whole, D::Error> {
         d.deserialize_any(self)
     }
 }
 
-impl<'de> Visitor<'de> for WholeSeed {
+impl<'de> Visitor<'de> for WholeSeed<'_> {
     type Value = Whole;
     fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
         f.write_str("a whole number or a pair of them")
@@ -183,6 +252,8 @@ impl<'de> Visitor<'de> for WholeSeed {
         Ok(Whole::One(n))
     }
     fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Whole, A::Error> {
+        // A third entry is refused by `serde_json` once this returns.
+        self.0.pair()?;
         let u = seq.next_element()?.ok_or_else(refuse)?;
         let v = seq.next_element()?.ok_or_else(refuse)?;
         Ok(Whole::Pair([u, v]))
@@ -210,32 +281,36 @@ impl Visitor<'_> for TypeReductionSeed {
 }
 
 /// [`Weights`]: the first entry tells a list from rows.
-struct WeightsSeed;
+struct WeightsSeed<'c>(&'c Count);
 
-impl<'de> DeserializeSeed<'de> for WeightsSeed {
+impl<'de> DeserializeSeed<'de> for WeightsSeed<'_> {
     type Value = Weights;
     fn deserialize<D: Deserializer<'de>>(self, d: D) -> Result<Weights, D::Error> {
         d.deserialize_seq(self)
     }
 }
 
-impl<'de> Visitor<'de> for WeightsSeed {
+impl<'de> Visitor<'de> for WeightsSeed<'_> {
     type Value = Weights;
     fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
         f.write_str("weights")
     }
     fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Weights, A::Error> {
-        match seq.next_element_seed(NumberOrList)?.ok_or_else(refuse)? {
-            Ok(first) => {
+        let count = self.0;
+        count.container()?;
+        count.entry(0)?;
+        match seq.next_element_seed(NumberOrList(count))? {
+            None => Err(refuse()),
+            Some(Ok(first)) => {
                 let mut list = vec![first];
-                while let Some(w) = seq.next_element()? {
+                while let Some(w) = next_counted(&mut seq, list.len(), count, PhantomData)? {
                     list.push(w);
                 }
                 Ok(Weights::List(list))
             }
-            Err(first) => {
+            Some(Err(first)) => {
                 let mut rows = vec![first];
-                while let Some(row) = seq.next_element()? {
+                while let Some(row) = next_counted(&mut seq, rows.len(), count, Numbers(count))? {
                     rows.push(row);
                 }
                 Ok(Weights::Rows(rows))
@@ -244,17 +319,31 @@ impl<'de> Visitor<'de> for WeightsSeed {
     }
 }
 
-/// A number, or a list of numbers.
-struct NumberOrList;
+/// Entry `i` of `seq`, read by `seed` and counted.
+fn next_counted<'de, A: SeqAccess<'de>, S: DeserializeSeed<'de>>(
+    seq: &mut A,
+    i: usize,
+    count: &Count,
+    seed: S,
+) -> Result<Option<S::Value>, A::Error> {
+    let next = seq.next_element_seed(seed)?;
+    if next.is_some() {
+        count.entry(i)?;
+    }
+    Ok(next)
+}
 
-impl<'de> DeserializeSeed<'de> for NumberOrList {
+/// A number, or a list of numbers.
+struct NumberOrList<'c>(&'c Count);
+
+impl<'de> DeserializeSeed<'de> for NumberOrList<'_> {
     type Value = Result<f64, Vec<f64>>;
     fn deserialize<D: Deserializer<'de>>(self, d: D) -> Result<Self::Value, D::Error> {
         d.deserialize_any(self)
     }
 }
 
-impl<'de> Visitor<'de> for NumberOrList {
+impl<'de> Visitor<'de> for NumberOrList<'_> {
     type Value = Result<f64, Vec<f64>>;
     fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
         f.write_str("a number or a list of numbers")
@@ -271,94 +360,123 @@ impl<'de> Visitor<'de> for NumberOrList {
     fn visit_f64<E: de::Error>(self, x: f64) -> Result<Self::Value, E> {
         Ok(Ok(x))
     }
-    fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Self::Value, A::Error> {
+    fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<Self::Value, A::Error> {
+        Numbers(self.0).visit_seq(seq).map(Err)
+    }
+}
+
+/// A list of numbers.
+struct Numbers<'c>(&'c Count);
+
+impl<'de> DeserializeSeed<'de> for Numbers<'_> {
+    type Value = Vec<f64>;
+    fn deserialize<D: Deserializer<'de>>(self, d: D) -> Result<Vec<f64>, D::Error> {
+        d.deserialize_seq(self)
+    }
+}
+
+impl<'de> Visitor<'de> for Numbers<'_> {
+    type Value = Vec<f64>;
+    fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+        f.write_str("a list of numbers")
+    }
+    fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Vec<f64>, A::Error> {
+        self.0.container()?;
         let mut list = Vec::new();
-        while let Some(x) = seq.next_element()? {
+        while let Some(x) = next_counted(&mut seq, list.len(), self.0, PhantomData)? {
             list.push(x);
         }
-        Ok(Err(list))
+        Ok(list)
     }
 }
 
 /// [`Knots`]: a list, or an object of directions.
-struct KnotsSeed;
+struct KnotsSeed<'c>(&'c Count);
 
-impl<'de> DeserializeSeed<'de> for KnotsSeed {
+impl<'de> DeserializeSeed<'de> for KnotsSeed<'_> {
     type Value = Knots;
     fn deserialize<D: Deserializer<'de>>(self, d: D) -> Result<Knots, D::Error> {
         d.deserialize_any(self)
     }
 }
 
-impl<'de> Visitor<'de> for KnotsSeed {
+impl<'de> Visitor<'de> for KnotsSeed<'_> {
     type Value = Knots;
     fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
         f.write_str("knots")
     }
     fn visit_seq<A: SeqAccess<'de>>(self, seq: A) -> Result<Knots, A::Error> {
-        NumberOrList.visit_seq(seq)?.err().map(Knots::List).ok_or_else(refuse)
+        Numbers(self.0).visit_seq(seq).map(Knots::List)
     }
     fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Knots, A::Error> {
+        self.0.container()?;
         let mut values = [None, None];
         let mut seen = 0;
-        while let Some(i) = next_key(&mut map, &DIRECTIONS, &mut seen)? {
+        while let Some(i) = next_key(&mut map, &DIRECTIONS, &mut seen, self.0)? {
             let slot = values.get_mut(i).ok_or_else(refuse)?;
-            *slot = Some(map.next_value()?);
+            *slot = Some(map.next_value_seed(Numbers(self.0))?);
         }
         Ok(Knots::Directions(values))
     }
 }
 
 /// [`Points`]: the first entry tells a list of points from rows of a net.
-struct PointsSeed;
+struct PointsSeed<'c>(&'c Count);
 
-impl<'de> DeserializeSeed<'de> for PointsSeed {
+impl<'de> DeserializeSeed<'de> for PointsSeed<'_> {
     type Value = Points;
     fn deserialize<D: Deserializer<'de>>(self, d: D) -> Result<Points, D::Error> {
         d.deserialize_seq(self)
     }
 }
 
-impl<'de> Visitor<'de> for PointsSeed {
+impl<'de> Visitor<'de> for PointsSeed<'_> {
     type Value = Points;
     fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
         f.write_str("points")
     }
     fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<Points, A::Error> {
+        let count = self.0;
+        count.container()?;
         let mut points = Points {
             numbers: Vec::new(),
             dimension: 0,
             net: None,
         };
-        seq.next_element_seed(Entry(&mut points))?
-            .ok_or_else(refuse)?;
-        while seq.next_element_seed(Entry(&mut points))?.is_some() {}
+        let mut i = 0;
+        while seq.next_element_seed(Entry(&mut points, count))?.is_some() {
+            count.entry(i)?;
+            i += 1;
+        }
+        if i == 0 {
+            return Err(refuse());
+        }
         Ok(points)
     }
 }
 
 /// One entry of `points`: a point of a curve or a row of a net, as the
 /// first entry was.
-struct Entry<'p>(&'p mut Points);
+struct Entry<'p, 'c>(&'p mut Points, &'c Count);
 
-impl<'de> DeserializeSeed<'de> for Entry<'_> {
+impl<'de> DeserializeSeed<'de> for Entry<'_, '_> {
     type Value = ();
     fn deserialize<D: Deserializer<'de>>(self, d: D) -> Result<(), D::Error> {
         d.deserialize_any(self)
     }
 }
 
-impl<'de> Visitor<'de> for Entry<'_> {
+impl<'de> Visitor<'de> for Entry<'_, '_> {
     type Value = ();
     fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
         f.write_str("a point or a row of points")
     }
     fn visit_map<A: MapAccess<'de>>(self, map: A) -> Result<(), A::Error> {
-        let p = self.0;
+        let Entry(p, count) = self;
         if p.net.is_some() {
             return Err(refuse());
         }
-        let [x, y, z] = PointVisitor.visit_map(map)?;
+        let [x, y, z] = PointVisitor(count).visit_map(map)?;
         let (Some(x), Some(y)) = (x, y) else {
             return Err(refuse());
         };
@@ -373,7 +491,8 @@ impl<'de> Visitor<'de> for Entry<'_> {
         Ok(())
     }
     fn visit_seq<A: SeqAccess<'de>>(self, mut seq: A) -> Result<(), A::Error> {
-        let p = self.0;
+        let Entry(p, count) = self;
+        count.container()?;
         if p.dimension == 0 {
             p.dimension = 3;
             p.net = Some([0, 0]);
@@ -382,7 +501,7 @@ impl<'de> Visitor<'de> for Entry<'_> {
             return Err(refuse());
         };
         let mut length = 0;
-        while let Some([x, y, z]) = seq.next_element_seed(PointVisitor)? {
+        while let Some([x, y, z]) = next_counted(&mut seq, length, count, PointVisitor(count))? {
             let (Some(x), Some(y), Some(z)) = (x, y, z) else {
                 return Err(refuse());
             };
@@ -399,47 +518,50 @@ impl<'de> Visitor<'de> for Entry<'_> {
 }
 
 /// A point: its numbers by axis, `None` for an axis it lacks.
-struct PointVisitor;
+struct PointVisitor<'c>(&'c Count);
 
-impl<'de> DeserializeSeed<'de> for PointVisitor {
+impl<'de> DeserializeSeed<'de> for PointVisitor<'_> {
     type Value = [Option<RawNumber>; 3];
     fn deserialize<D: Deserializer<'de>>(self, d: D) -> Result<Self::Value, D::Error> {
         d.deserialize_map(self)
     }
 }
 
-impl<'de> Visitor<'de> for PointVisitor {
+impl<'de> Visitor<'de> for PointVisitor<'_> {
     type Value = [Option<RawNumber>; 3];
     fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
         f.write_str("a point")
     }
     fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Self::Value, A::Error> {
+        self.0.container()?;
         let mut axes = [None; 3];
         let mut seen = 0;
-        while let Some(i) = next_key(&mut map, &POINT, &mut seen)? {
+        while let Some(i) = next_key(&mut map, &POINT, &mut seen, self.0)? {
             let slot = axes.get_mut(i).ok_or_else(refuse)?;
-            *slot = Some(map.next_value_seed(NumberVisitor)?);
+            *slot = Some(map.next_value_seed(NumberVisitor(self.0))?);
         }
         Ok(axes)
     }
 }
 
 /// A fuzzy number: `crisp`, `upper`, `primary` and `lower` all given.
-struct NumberVisitor;
+struct NumberVisitor<'c>(&'c Count);
 
-impl<'de> DeserializeSeed<'de> for NumberVisitor {
+impl<'de> DeserializeSeed<'de> for NumberVisitor<'_> {
     type Value = RawNumber;
     fn deserialize<D: Deserializer<'de>>(self, d: D) -> Result<RawNumber, D::Error> {
         d.deserialize_map(self)
     }
 }
 
-impl<'de> Visitor<'de> for NumberVisitor {
+impl<'de> Visitor<'de> for NumberVisitor<'_> {
     type Value = RawNumber;
     fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
         f.write_str("a fuzzy number")
     }
     fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<RawNumber, A::Error> {
+        let count = self.0;
+        count.container()?;
         let mut n = RawNumber {
             crisp: 0.0,
             upper: [0.0; 2],
@@ -448,12 +570,13 @@ impl<'de> Visitor<'de> for NumberVisitor {
             height: None,
         };
         let mut seen = 0;
-        while let Some(i) = next_key(&mut map, &NUMBER, &mut seen)? {
+        while let Some(i) = next_key(&mut map, &NUMBER, &mut seen, count)? {
+            // `[f64; 2]` refuses other lengths (`serde_json` a third entry).
             match i {
                 0 => n.crisp = map.next_value()?,
-                1 => n.upper = map.next_value()?,
-                2 => n.primary = map.next_value()?,
-                3 => n.lower = map.next_value()?,
+                1 => n.upper = count.pair().and_then(|()| map.next_value())?,
+                2 => n.primary = count.pair().and_then(|()| map.next_value())?,
+                3 => n.lower = count.pair().and_then(|()| map.next_value())?,
                 _ => n.height = Some(map.next_value()?),
             }
         }

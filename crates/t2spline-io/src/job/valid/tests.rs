@@ -5,7 +5,10 @@
 use proptest::prelude::*;
 use serde_json::{json, Value};
 
+use super::super::limits::{MAX_ARRAY, MAX_VALUES};
 use super::super::parse::{parse, parse_walking};
+use super::super::position::{oversized, Oversized};
+use super::raw;
 
 /// Jobs of the repository: the examples, the fixtures and the fuzz seeds.
 fn corpus() -> Vec<(String, String)> {
@@ -32,14 +35,23 @@ const VALID: [&str; 4] = [
     "fixtures/spiral-3d.json",
 ];
 
-/// Whether reading `text` gives what the validator gives.
+/// Whether reading `text` gives what the validator gives, and, when the
+/// one pass takes the text, counts its values as the validator's limits do.
 fn same(text: &str) -> Result<(), String> {
     let (fast, walked) = (parse(text), parse_walking(text));
-    if fast == walked {
-        Ok(())
-    } else {
-        Err(format!("read: {fast:?}\nvalidator: {walked:?}\n{text}"))
+    if fast != walked {
+        return Err(format!("read: {fast:?}\nvalidator: {walked:?}\n{text}"));
     }
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    if let Some(job) = raw::read(text) {
+        let counted = |limit| oversized(text, usize::MAX, usize::MAX, limit);
+        if counted(job.values).is_some()
+            || !matches!(counted(job.values - 1), Some(Oversized::Values(_)))
+        {
+            return Err(format!("{} values counted in\n{text}", job.values));
+        }
+    }
+    Ok(())
 }
 
 #[test]
@@ -103,6 +115,20 @@ fn edits_of_the_text_give_what_the_validator_gives() {
     for text in cases {
         same(&text).unwrap();
     }
+}
+
+#[test]
+fn the_one_pass_keeps_the_limits_of_arrays_and_values() {
+    let list = |n: usize| format!("[{}1]", "1, ".repeat(n - 1));
+    let weights = |w: String| format!(r#"{{"weights": {w}}}"#);
+    // The root, the object, the array and a separator before each but the first.
+    assert_eq!(raw::read(&weights(list(MAX_ARRAY))).unwrap().values, MAX_ARRAY + 2);
+    assert!(raw::read(&weights(list(MAX_ARRAY + 1))).is_none());
+    // Rows of 100 000 weights, each allowed: 2 values, then 100 001 a row.
+    let rows = |n: usize| weights(format!("[{}]", vec![list(100_000); n].join(", ")));
+    let most = (MAX_VALUES - 2) / 100_001;
+    assert_eq!(raw::read(&rows(most)).unwrap().values, 2 + most * 100_001);
+    assert!(raw::read(&rows(most + 1)).is_none());
 }
 
 /// A net of `n × n` crisp points at 0 of `orders`, without a height.
