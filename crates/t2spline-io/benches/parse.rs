@@ -1,8 +1,10 @@
 //! Reading job files from text: the shipped example, a curve of 100 000
 //! fuzzy points (about 21 MB) and a surface of a 100 × 100 net (about
-//! 4 MB), each through [`t2spline_io::parse_job`]. The two large jobs are
-//! written here as text the way the shipped examples write points, with
-//! numbers of a few decimals. Criterion prints each as bytes per second.
+//! 4 MB), each through [`t2spline_io::parse_job`]; and the curve again with
+//! one rule broken in its last point, to time a file that has a problem. The
+//! large jobs are written here as text the way the shipped examples write
+//! points, with numbers of a few decimals. Criterion prints each as bytes per
+//! second.
 //!
 //! ```sh
 //! cargo bench -p t2spline-io --bench parse
@@ -88,14 +90,21 @@ fn surface(n: usize) -> String {
 fn bench(c: &mut Criterion) {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/paper-alg-1-1.json");
     let example = std::fs::read_to_string(path).expect("the shipped example");
+    let long = curve(100_000);
+    // One broken rule at the end: every problem must be found and placed.
+    let crisp = long.rfind("\"crisp\": ").expect("a crisp value");
+    let after = crisp + long[crisp..].find(',').expect("more values");
+    let broken = format!("{}\"crisp\": 1e9{}", &long[..crisp], &long[after..]);
     let inputs = [
-        ("example", example, 100),
-        ("curve-100000-points", curve(100_000), 10),
-        ("surface-100x100", surface(100), 10),
+        ("example", example, 100, true),
+        ("curve-100000-points", long, 10, true),
+        ("surface-100x100", surface(100), 10, true),
+        ("curve-100000-points-last-broken", broken, 10, false),
     ];
     let mut g = c.benchmark_group("parse");
-    for (name, text, samples) in &inputs {
-        t2spline_io::parse_job(text, name).expect("a valid job");
+    for (name, text, samples, valid) in &inputs {
+        let read = t2spline_io::parse_job(text, name);
+        assert_eq!(read.is_ok(), *valid, "{:?}", read.err());
         g.sample_size(*samples);
         g.throughput(Throughput::Bytes(text.len() as u64));
         g.bench_function(*name, |b| {
