@@ -37,7 +37,12 @@ fn number(out: &mut String, c: f64, s: f64) {
 /// A point of `coordinates` fuzzy numbers around `(x, y, z)`.
 fn point(out: &mut String, xyz: [f64; 3], coordinates: usize) {
     out.push('{');
-    for (i, (name, c)) in ["x", "y", "z"].iter().zip(xyz).take(coordinates).enumerate() {
+    for (i, (name, c)) in ["x", "y", "z"]
+        .iter()
+        .zip(xyz)
+        .take(coordinates)
+        .enumerate()
+    {
         if i > 0 {
             out.push_str(", ");
         }

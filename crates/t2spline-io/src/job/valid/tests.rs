@@ -78,7 +78,8 @@ fn the_corpus_gives_what_the_validator_gives() {
 #[test]
 fn edits_of_the_text_give_what_the_validator_gives() {
     let point = r#"{"x": {"crisp": 0, "upper": [-1, 1], "primary": [-0.5, 0.5], "lower": [-0.25, 0.25]}, "y": {"crisp": 1, "upper": [0, 2], "primary": [0.5, 1.5], "lower": [0.75, 1.25]}}"#;
-    let job = |head: &str| format!(r#"{{{head} "lower_height": 0.5, "points": [{point}, {point}]}}"#);
+    let job =
+        |head: &str| format!(r#"{{{head} "lower_height": 0.5, "points": [{point}, {point}]}}"#);
     let valid = job(r#""order": 2,"#);
     assert!(super::job(&valid).is_some());
     let cases = [
@@ -96,7 +97,10 @@ fn edits_of_the_text_give_what_the_validator_gives() {
         job(r#""order": [2, 2],"#),
         job(r#""order": 2, "samples": [5, 5],"#),
         valid.replace(r#""crisp": 0,"#, r#""crisp": 0, "crisp": 0,"#),
-        valid.replace(r#""x": {"crisp": 0"#, r#""x": {"crisp": 0, "lower_height": 2"#),
+        valid.replace(
+            r#""x": {"crisp": 0"#,
+            r#""x": {"crisp": 0, "lower_height": 2"#,
+        ),
         valid.replace(r#""y": {"crisp": 1"#, r#""z": {}, "y": {"crisp": 1"#),
         // Every number with a height of its own, the top level's still read.
         valid
@@ -122,7 +126,10 @@ fn the_one_pass_keeps_the_limits_of_arrays_and_values() {
     let list = |n: usize| format!("[{}1]", "1, ".repeat(n - 1));
     let weights = |w: String| format!(r#"{{"weights": {w}}}"#);
     // The root, the object, the array and a separator before each but the first.
-    assert_eq!(raw::read(&weights(list(MAX_ARRAY))).unwrap().values, MAX_ARRAY + 2);
+    assert_eq!(
+        raw::read(&weights(list(MAX_ARRAY))).unwrap().values,
+        MAX_ARRAY + 2
+    );
     assert!(raw::read(&weights(list(MAX_ARRAY + 1))).is_none());
     // Rows of 100 000 weights, each allowed: 2 values, then 100 001 a row.
     let rows = |n: usize| weights(format!("[{}]", vec![list(100_000); n].join(", ")));
@@ -152,8 +159,8 @@ fn the_limits_of_a_net_are_kept() {
 
 #[test]
 fn a_curve_of_more_points_than_the_limit_is_refused() {
-    use super::raw::{Points, RawNumber};
     use super::super::limits::MAX_POINTS;
+    use super::raw::{Points, RawNumber};
     let zero = RawNumber {
         crisp: 0.0,
         upper: [0.0; 2],
