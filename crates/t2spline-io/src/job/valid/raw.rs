@@ -21,28 +21,20 @@ use std::marker::PhantomData;
 use serde::de::{self, DeserializeSeed, Deserializer, MapAccess, SeqAccess, Visitor};
 use t2spline::TypeReduction;
 
+use super::super::common::TOP_KEYS;
 use super::super::limits::{MAX_ARRAY, MAX_KEYS, MAX_VALUES};
 
-/// The keys of a job's top level, in the order of [`RawJob`]'s fields.
-const TOP: [&str; 10] = [
-    "description",
-    "order",
-    "degree",
-    "weights",
-    "knots",
-    "alpha",
-    "type_reduction",
-    "lower_height",
-    "samples",
-    "points",
-];
+/// The keys of a point, by axis.
 const POINT: [&str; 3] = ["x", "y", "z"];
+/// The keys of a fuzzy number, the four required first (as
+/// [`NumberVisitor`] reads them, by place).
 const NUMBER: [&str; 5] = ["crisp", "upper", "primary", "lower", "lower_height"];
+/// The keys of a surface's knots, by direction.
 const DIRECTIONS: [&str; 2] = ["u", "v"];
 
 // No object of a job comes near the limit of keys; arrays and values are
 // counted.
-const _: () = assert!(TOP.len() <= MAX_KEYS);
+const _: () = assert!(TOP_KEYS.len() <= MAX_KEYS);
 
 /// The top level of a job as given: each key `None` when missing.
 #[derive(Default)]
@@ -215,18 +207,23 @@ impl<'de> Visitor<'de> for JobVisitor<'_> {
         count.container()?;
         let mut job = RawJob::default();
         let mut seen = 0;
-        while let Some(i) = next_key(&mut map, &TOP, &mut seen, count)? {
-            match i {
-                0 => job.description = Some(map.next_value()?),
-                1 => job.order = Some(map.next_value_seed(WholeSeed(count))?),
-                2 => job.degree = Some(map.next_value_seed(WholeSeed(count))?),
-                3 => job.weights = Some(map.next_value_seed(WeightsSeed(count))?),
-                4 => job.knots = Some(map.next_value_seed(KnotsSeed(count))?),
-                5 => job.alpha = Some(map.next_value()?),
-                6 => job.type_reduction = Some(map.next_value_seed(TypeReductionSeed)?),
-                7 => job.lower_height = Some(map.next_value()?),
-                8 => job.samples = Some(map.next_value_seed(WholeSeed(count))?),
-                _ => job.points = Some(map.next_value_seed(PointsSeed(count))?),
+        while let Some(i) = next_key(&mut map, TOP_KEYS, &mut seen, count)? {
+            // Once per key of the file: matched by name, not by place in
+            // the list.
+            match TOP_KEYS.get(i).copied().unwrap_or_default() {
+                "description" => job.description = Some(map.next_value()?),
+                "order" => job.order = Some(map.next_value_seed(WholeSeed(count))?),
+                "degree" => job.degree = Some(map.next_value_seed(WholeSeed(count))?),
+                "weights" => job.weights = Some(map.next_value_seed(WeightsSeed(count))?),
+                "knots" => job.knots = Some(map.next_value_seed(KnotsSeed(count))?),
+                "alpha" => job.alpha = Some(map.next_value()?),
+                "type_reduction" => {
+                    job.type_reduction = Some(map.next_value_seed(TypeReductionSeed)?);
+                }
+                "lower_height" => job.lower_height = Some(map.next_value()?),
+                "samples" => job.samples = Some(map.next_value_seed(WholeSeed(count))?),
+                "points" => job.points = Some(map.next_value_seed(PointsSeed(count))?),
+                _ => return Err(refuse()),
             }
         }
         Ok(job)

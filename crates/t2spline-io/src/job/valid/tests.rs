@@ -5,6 +5,7 @@
 use proptest::prelude::*;
 use serde_json::{json, Value};
 
+use super::super::common::TOP_KEYS;
 use super::super::limits::{MAX_ARRAY, MAX_VALUES};
 use super::super::parse::{parse, parse_walking};
 use super::super::position::{oversized, Oversized};
@@ -212,28 +213,14 @@ fn palette() -> Vec<Value> {
     ]
 }
 
-const KEYS: [&str; 20] = [
-    "description",
-    "order",
-    "degree",
-    "weights",
-    "knots",
-    "alpha",
-    "type_reduction",
-    "lower_height",
-    "samples",
-    "points",
-    "x",
-    "y",
-    "z",
-    "crisp",
-    "upper",
-    "primary",
-    "lower",
-    "u",
-    "v",
-    "colour",
-];
+/// The keys an edit adds: the top level's, and those of points, numbers
+/// and knots, and one that no object knows.
+fn keys() -> Vec<&'static str> {
+    let inner = [
+        "x", "y", "z", "crisp", "upper", "primary", "lower", "u", "v", "colour",
+    ];
+    TOP_KEYS.iter().copied().chain(inner).collect()
+}
 
 /// Every place in `v`, as JSON pointers.
 fn places(v: &Value, at: String, out: &mut Vec<String>) {
@@ -268,7 +255,8 @@ fn edit(v: &mut Value, place: &str, how: usize, pick: usize) {
             o.shift_remove(&key);
         }
         (2, Value::Object(o)) => {
-            o.insert(KEYS[pick % KEYS.len()].to_owned(), value);
+            let keys = keys();
+            o.insert(keys[pick % keys.len()].to_owned(), value);
         }
         (1, Value::Array(a)) if !a.is_empty() => {
             a.remove(pick % a.len());
