@@ -16,6 +16,7 @@ mod point;
 mod position;
 mod read;
 mod surface;
+mod valid;
 mod walker;
 pub(crate) mod write;
 

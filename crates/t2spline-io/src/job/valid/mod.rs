@@ -1,0 +1,187 @@
+//! The common case first: a job with no problem at all, read in one typed
+//! pass.
+//!
+//! The validator ([`parse`](super::parse)) builds a `serde_json::Value` tree,
+//! walks it collecting every problem by its JSON path, and scans the text
+//! again for duplicate keys and positions: three passes and an allocation
+//! per value, key and path, needed to report every problem at its place but
+//! wasted on a file that has none. Here serde's visitors read the text
+//! straight into plain values ([`raw`]), and the rules are checked by the
+//! core's constructors and the limits of [`limits`](super::limits), as the
+//! validator checks them. Anything unexpected, and any rule broken, refuses:
+//! the text then goes to the validator, whose messages are the only ones a
+//! user sees. So a job accepted here is one the validator accepts, built the
+//! same; a test (`same_as_the_validator`) holds the two to it on broken and
+//! valid jobs.
+
+mod raw;
+
+use t2spline::job::{
+    check_grid_samples, check_samples, Job, Model, Samples, DEFAULT_SAMPLES,
+    DEFAULT_SURFACE_SAMPLES,
+};
+use t2spline::{Alpha, FuzzyCurve, FuzzySurface, Height, Nt2Number, Nt2Point, TypeReduction};
+
+use super::limits::{check_net_size, check_order, check_surface_work, MAX_POINTS};
+use raw::{Knots, Points, RawJob, RawNumber, Weights, Whole};
+
+/// The job in `text` (without a byte-order mark) if it has no problem at
+/// all; `None` if it has one, or anything this reading does not expect.
+pub(super) fn job(text: &str) -> Option<Job> {
+    build(raw::read(text)?)
+}
+
+/// The job of `raw`, every rule checked.
+fn build(raw: RawJob) -> Option<Job> {
+    let (key, order) = match (raw.order, raw.degree) {
+        (Some(order), None) => ("order", order),
+        (None, Some(degree)) => ("degree", degree),
+        _ => return None,
+    };
+    let alpha = raw.alpha.map(Alpha::try_new).transpose().ok()?;
+    let height = match raw.lower_height {
+        Some(h) => Some(Height::try_new(h).ok()?.get()),
+        None => None,
+    };
+    let points = raw.points?;
+    let model = match points.net {
+        None => {
+            let Whole::One(order) = order else {
+                return None;
+            };
+            let weights = match raw.weights {
+                Some(Weights::List(w)) => Some(w),
+                None => None,
+                Some(Weights::Rows(_)) => return None,
+            };
+            let knots = match raw.knots {
+                Some(Knots::List(k)) => Some(k),
+                None => None,
+                Some(Knots::Directions(_)) => return None,
+            };
+            curve(degree_of(key, order)?, &points, height, weights, knots)?
+        }
+        Some(shape) => {
+            let Whole::Pair(orders) = order else {
+                return None;
+            };
+            let weights = match raw.weights {
+                Some(Weights::Rows(w)) => Some(w),
+                None => None,
+                Some(Weights::List(_)) => return None,
+            };
+            let knots = match raw.knots {
+                Some(Knots::Directions(k)) => k,
+                None => [None, None],
+                Some(Knots::List(_)) => return None,
+            };
+            let degree = [degree_of(key, orders[0])?, degree_of(key, orders[1])?];
+            surface(degree, shape, &points, height, weights, knots)?
+        }
+    };
+    let samples = match (raw.samples, &model) {
+        (None, Model::Surface(_)) => Samples::Grid([DEFAULT_SURFACE_SAMPLES; 2]),
+        (None, _) => Samples::Along(DEFAULT_SAMPLES),
+        (Some(Whole::One(n)), Model::Surface(_)) => Samples::Grid(grid([n, n])?),
+        (Some(Whole::Pair(n)), Model::Surface(_)) => Samples::Grid(grid(n)?),
+        (Some(Whole::One(n)), _) => Samples::Along(check_samples(n, &n.to_string()).ok()?),
+        (Some(Whole::Pair(_)), _) => return None,
+    };
+    Some(Job {
+        description: raw.description,
+        alpha,
+        type_reduction: raw.type_reduction.unwrap_or(TypeReduction::Paper),
+        samples,
+        model,
+    })
+}
+
+/// The degree of an order given as `key` (`order` or `degree`): an order of
+/// at least 1, within [`MAX_ORDER`](super::limits::MAX_ORDER).
+fn degree_of(key: &str, given: u64) -> Option<usize> {
+    if key == "order" && given == 0 {
+        return None;
+    }
+    Some(check_order(key, given, &given.to_string()).ok()? - 1)
+}
+
+/// A grid of samples: each number and the whole grid within the limits.
+fn grid(n: [u64; 2]) -> Option<[usize; 2]> {
+    let grid = [
+        check_samples(n[0], &n[0].to_string()).ok()?,
+        check_samples(n[1], &n[1].to_string()).ok()?,
+    ];
+    check_grid_samples(grid).ok()?;
+    Some(grid)
+}
+
+/// A curve of 2 or 3 coordinates per point, within [`MAX_POINTS`].
+fn curve(
+    degree: usize,
+    points: &Points,
+    height: Option<f64>,
+    weights: Option<Vec<f64>>,
+    knots: Option<Vec<f64>>,
+) -> Option<Model> {
+    let n = points.numbers.len() / points.dimension;
+    if n > MAX_POINTS {
+        return None;
+    }
+    let weights = weights.unwrap_or_else(|| vec![1.0; n]);
+    if points.dimension == 3 {
+        let p = fuzzy_points::<3>(&points.numbers, height)?;
+        FuzzyCurve::try_new(degree, p, weights, knots)
+            .ok()
+            .map(Model::Spatial)
+    } else {
+        let p = fuzzy_points::<2>(&points.numbers, height)?;
+        FuzzyCurve::try_new(degree, p, weights, knots)
+            .ok()
+            .map(Model::Planar)
+    }
+}
+
+/// A surface of a net of `shape`, within the limits of its size and work.
+fn surface(
+    degree: [usize; 2],
+    [nu, nv]: [usize; 2],
+    points: &Points,
+    height: Option<f64>,
+    weights: Option<Vec<Vec<f64>>>,
+    knots: [Option<Vec<f64>>; 2],
+) -> Option<Model> {
+    check_net_size(nu * nv).ok()?;
+    check_surface_work([nu, nv], degree.map(|p| p + 1)).ok()?;
+    let flat = fuzzy_points::<3>(&points.numbers, height)?;
+    let mut net = Vec::with_capacity(nu);
+    let mut rest = flat.into_iter();
+    for _ in 0..nu {
+        net.push(rest.by_ref().take(nv).collect());
+    }
+    let weights = weights.unwrap_or_else(|| vec![vec![1.0; nv]; nu]);
+    FuzzySurface::try_new(degree, net, weights, knots)
+        .ok()
+        .map(Model::Surface)
+}
+
+/// The points of `D` coordinates whose numbers are `numbers`, point after
+/// point; a number without a height of its own takes `height`.
+fn fuzzy_points<const D: usize>(
+    numbers: &[RawNumber],
+    height: Option<f64>,
+) -> Option<Vec<Nt2Point<D>>> {
+    let numbers = numbers
+        .iter()
+        .map(|n| {
+            let h = n.height.or(height)?;
+            Nt2Number::try_new(n.crisp, n.upper, n.primary, n.lower, h).ok()
+        })
+        .collect::<Option<Vec<_>>>()?;
+    numbers
+        .chunks_exact(D)
+        .map(|p| p.try_into().ok().map(Nt2Point::new))
+        .collect()
+}
+
+#[cfg(test)]
+mod tests;
