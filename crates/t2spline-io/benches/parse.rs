@@ -1,7 +1,9 @@
 //! Reading job files from text: the shipped example, a curve of 100 000
 //! fuzzy points (about 21 MB) and a surface of a 100 × 100 net (about
-//! 4 MB), each through [`t2spline_io::parse_job`]; and the curve again with
-//! one rule broken in its last point, to time a file that has a problem. The
+//! 4 MB), each through [`t2spline_io::parse_job`]; the curve again with
+//! one rule broken in its last point, to time a file that has a problem; and
+//! data files for `t2spline fit` through [`t2spline_io::parse_data`]: the
+//! shipped one and 100 000 fuzzy data points (about 21 MB). The
 //! large jobs are written here as text the way the shipped examples write
 //! points, with numbers of a few decimals. Criterion prints each as bytes per
 //! second.
@@ -61,15 +63,32 @@ fn curve(n: usize) -> String {
     for i in 0..n {
         let _ = write!(out, "{}{}", if i > 0 { ", " } else { "" }, 1 + i % 3);
     }
-    out.push_str("],\n  \"points\": [\n");
+    out.push_str("],\n");
+    planar_points(&mut out, n);
+    out
+}
+
+/// A data file of `n` planar fuzzy data points for a fit of degree 3, one
+/// point per line.
+fn data(n: usize) -> String {
+    let mut out = String::from(
+        "{\n  \"description\": \"Many fuzzy measurements\",\n  \"degree\": 3,\n  \"alpha\": 0.8,\n  \"lower_height\": 0.6,\n  \"samples\": 200,\n",
+    );
+    planar_points(&mut out, n);
+    out
+}
+
+/// The key `points` and `n` planar points along a wave, then the end of the
+/// file.
+fn planar_points(out: &mut String, n: usize) {
+    out.push_str("  \"points\": [\n");
     for i in 0..n {
         let t = i as f64;
         out.push_str("    ");
-        point(&mut out, [t * 0.125, (t * 0.01).sin() * 40.0, 0.0], 2);
+        point(out, [t * 0.125, (t * 0.01).sin() * 40.0, 0.0], 2);
         out.push_str(if i + 1 < n { ",\n" } else { "\n" });
     }
     out.push_str("  ]\n}\n");
-    out
 }
 
 /// A surface job of an `n × n` net of orders 3 × 3, one point per line.
@@ -114,6 +133,23 @@ fn bench(c: &mut Criterion) {
         g.throughput(Throughput::Bytes(text.len() as u64));
         g.bench_function(*name, |b| {
             b.iter(|| t2spline_io::parse_job(black_box(text), name));
+        });
+    }
+    g.finish();
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/fit-measurements.json");
+    let example = std::fs::read_to_string(path).expect("the shipped data file");
+    let inputs = [
+        ("data-example", example, 100),
+        ("data-100000-points", data(100_000), 10),
+    ];
+    let mut g = c.benchmark_group("parse-data");
+    for (name, text, samples) in &inputs {
+        let read = t2spline_io::parse_data(text, name);
+        assert!(read.is_ok(), "{:?}", read.err());
+        g.sample_size(*samples);
+        g.throughput(Throughput::Bytes(text.len() as u64));
+        g.bench_function(*name, |b| {
+            b.iter(|| t2spline_io::parse_data(black_box(text), name));
         });
     }
     g.finish();
