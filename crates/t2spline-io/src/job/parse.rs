@@ -6,10 +6,10 @@
 //! (`points[2].y.upper[0]`); one scan of the text ([`position`](super::position))
 //! then turns the paths into lines and columns and finds duplicate keys.
 //!
-//! A job file is first offered to the one-pass reading of
-//! [`valid`](super::valid), which takes a job with no problem at all about
-//! ten times faster; every other file comes here, so that every message is
-//! this validator's.
+//! A job file, and a data file for fitting, is first offered to the
+//! one-pass reading of [`valid`](super::valid), which takes a file with no
+//! problem at all about ten times faster; every other file comes here, so
+//! that every message is this validator's.
 
 use std::collections::HashSet;
 
@@ -56,6 +56,13 @@ pub(super) fn parse_walking(text: &str) -> Result<Job, Vec<Problem>> {
 /// Parses `text` as a data file for fitting, or returns every problem found,
 /// each with its line and column.
 pub(crate) fn parse_data(text: &str) -> Result<FitData, Vec<Problem>> {
+    walk(text, valid::data, Walker::data)
+}
+
+/// [`parse_data`] by the validator alone, without the one-pass reading of
+/// a valid data file, to test that the two agree.
+#[cfg(test)]
+pub(super) fn parse_data_walking(text: &str) -> Result<FitData, Vec<Problem>> {
     walk(text, |_| None, Walker::data)
 }
 

@@ -12,9 +12,13 @@
 //! the text then goes to the validator, whose messages are the only ones a
 //! user sees. So a job accepted here is one the validator accepts, built the
 //! same; a test (`same_as_the_validator`) holds the two to it on broken and
-//! valid jobs.
+//! valid jobs. A data file for `t2spline fit` is read the same way, by the
+//! same readers ([`data`]).
 
+mod data;
 mod raw;
+
+pub(super) use data::data;
 
 use t2spline::job::{
     check_grid_samples, check_samples, Job, Model, Samples, DEFAULT_SAMPLES,
@@ -25,14 +29,18 @@ use t2spline::{Alpha, FuzzyCurve, FuzzySurface, Height, Nt2Number, Nt2Point, Typ
 use super::limits::{check_net_size, check_order, check_surface_work, MAX_POINTS};
 use raw::{Knots, Points, RawJob, RawNumber, Weights, Whole};
 
-/// The job in `text` (without a byte-order mark) if it has no problem at
-/// all; `None` if it has one, or anything this reading does not expect.
-pub(super) fn job(text: &str) -> Option<Job> {
-    build(raw::read(text)?)
+/// What a job and a data file give alike, each rule checked: the key that
+/// gives the order (`order` or `degree`, exactly one of them) and its value,
+/// `alpha`, and the top-level `lower_height`.
+struct Header {
+    key: &'static str,
+    order: Whole,
+    alpha: Option<Alpha>,
+    height: Option<f64>,
 }
 
-/// The job of `raw`, every rule checked.
-fn build(raw: RawJob) -> Option<Job> {
+/// The [`Header`] of `raw`, if its rules hold.
+fn header(raw: &RawJob) -> Option<Header> {
     let (key, order) = match (raw.order, raw.degree) {
         (Some(order), None) => ("order", order),
         (None, Some(degree)) => ("degree", degree),
@@ -43,6 +51,28 @@ fn build(raw: RawJob) -> Option<Job> {
         Some(h) => Some(Height::try_new(h).ok()?.get()),
         None => None,
     };
+    Some(Header {
+        key,
+        order,
+        alpha,
+        height,
+    })
+}
+
+/// The job in `text` (without a byte-order mark) if it has no problem at
+/// all; `None` if it has one, or anything this reading does not expect.
+pub(super) fn job(text: &str) -> Option<Job> {
+    build(raw::read(text)?)
+}
+
+/// The job of `raw`, every rule checked.
+fn build(raw: RawJob) -> Option<Job> {
+    let Header {
+        key,
+        order,
+        alpha,
+        height,
+    } = header(&raw)?;
     let points = raw.points?;
     let model = match points.net {
         None => {

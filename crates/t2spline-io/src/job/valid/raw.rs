@@ -55,6 +55,7 @@ pub(super) struct RawJob {
 }
 
 /// A whole number, or a pair of them (`order`, `degree`, `samples`).
+#[derive(Clone, Copy)]
 pub(super) enum Whole {
     One(u64),
     Pair([u64; 2]),

@@ -12,7 +12,7 @@ use super::super::position::{oversized, Oversized};
 use super::raw;
 
 /// Jobs of the repository: the examples, the fixtures and the fuzz seeds.
-fn corpus() -> Vec<(String, String)> {
+pub(super) fn corpus() -> Vec<(String, String)> {
     let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../..");
     let mut files = Vec::new();
     for dir in ["examples", "fixtures", "fuzz/seeds/job"] {
@@ -43,6 +43,12 @@ fn same(text: &str) -> Result<(), String> {
     if fast != walked {
         return Err(format!("read: {fast:?}\nvalidator: {walked:?}\n{text}"));
     }
+    counted(text)
+}
+
+/// Whether, when the one pass reads `text`, it counts its values as the
+/// validator's limits do.
+pub(super) fn counted(text: &str) -> Result<(), String> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     if let Some(job) = raw::read(text) {
         let counted = |limit| oversized(text, usize::MAX, usize::MAX, limit);
@@ -223,7 +229,7 @@ fn keys() -> Vec<&'static str> {
 }
 
 /// Every place in `v`, as JSON pointers.
-fn places(v: &Value, at: String, out: &mut Vec<String>) {
+pub(super) fn places(v: &Value, at: String, out: &mut Vec<String>) {
     match v {
         Value::Object(o) => {
             for (k, x) in o {
@@ -243,7 +249,7 @@ fn places(v: &Value, at: String, out: &mut Vec<String>) {
 /// Edits the value at `place`: replaces it, removes a member or an element,
 /// adds a member, repeats an element, or reverses an array (`how` picks,
 /// `pick` chooses the value, key or entry).
-fn edit(v: &mut Value, place: &str, how: usize, pick: usize) {
+pub(super) fn edit(v: &mut Value, place: &str, how: usize, pick: usize) {
     let palette = palette();
     let value = palette[pick % palette.len()].clone();
     let Some(target) = v.pointer_mut(place) else {
