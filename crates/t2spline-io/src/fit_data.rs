@@ -2,8 +2,9 @@
 //!
 //! A data file has the keys of a job file (SPEC §8) except `weights` and
 //! `knots`, which the fit computes; its `points` are fuzzy *data* points. It
-//! goes through the job validator ([`parse_data`](crate::parse_data)), so its
-//! messages are the same (`points[2].y: the order … is broken`). The fit
+//! is read as a job is ([`parse_data`](crate::parse_data)): in one typed
+//! pass when it has no problem, else by the job validator, so its messages
+//! are the same (`points[2].y: the order … is broken`). The fit
 //! itself is the core crate's ([`FuzzyData::fit`]); this module writes its
 //! model back as a job file that carries the data file's settings.
 
