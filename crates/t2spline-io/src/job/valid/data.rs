@@ -10,7 +10,6 @@
 //! the validator, whose messages are the only ones a user sees.
 
 use t2spline::fit::FuzzyData;
-use t2spline::job::check_samples;
 
 use super::super::limits::MAX_POINTS;
 use super::raw::{self, Whole};
@@ -41,7 +40,7 @@ pub(in super::super) fn data(text: &str) -> Option<FitData> {
     }
     let samples = match raw.samples {
         None => None,
-        Some(Whole::One(s)) => Some(check_samples(s, &s.to_string()).ok()?),
+        Some(Whole::One(s)) => Some(super::sample_count(s)?),
         Some(Whole::Pair(_)) => return None,
     };
     let points = if points.dimension == 3 {

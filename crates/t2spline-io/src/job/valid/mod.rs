@@ -114,7 +114,7 @@ fn build(raw: RawJob) -> Option<Job> {
         (None, _) => Samples::Along(DEFAULT_SAMPLES),
         (Some(Whole::One(n)), Model::Surface(_)) => Samples::Grid(grid([n, n])?),
         (Some(Whole::Pair(n)), Model::Surface(_)) => Samples::Grid(grid(n)?),
-        (Some(Whole::One(n)), _) => Samples::Along(check_samples(n, &n.to_string()).ok()?),
+        (Some(Whole::One(n)), _) => Samples::Along(sample_count(n)?),
         (Some(Whole::Pair(_)), _) => return None,
     };
     Some(Job {
@@ -132,15 +132,20 @@ fn degree_of(key: &str, given: u64) -> Option<usize> {
     if key == "order" && given == 0 {
         return None;
     }
-    Some(check_order(key, given, &given.to_string()).ok()? - 1)
+    // The text is for the message, which a refusal leaves to the validator.
+    Some(check_order(key, given, "").ok()? - 1)
+}
+
+/// A number of samples within the limits of
+/// [`check_samples`](t2spline::job::check_samples).
+fn sample_count(n: u64) -> Option<usize> {
+    // The text is for the message, which a refusal leaves to the validator.
+    check_samples(n, "").ok()
 }
 
 /// A grid of samples: each number and the whole grid within the limits.
 fn grid(n: [u64; 2]) -> Option<[usize; 2]> {
-    let grid = [
-        check_samples(n[0], &n[0].to_string()).ok()?,
-        check_samples(n[1], &n[1].to_string()).ok()?,
-    ];
+    let grid = [sample_count(n[0])?, sample_count(n[1])?];
     check_grid_samples(grid).ok()?;
     Some(grid)
 }
