@@ -37,16 +37,7 @@ pub fn read_input(path: &Path) -> Result<String, Error> {
 
 /// Reads and validates the job at `path`, or from standard input for `-`.
 pub fn read_job(path: &Path) -> Result<Job, Error> {
-    Ok(read_job_text(path)?.0)
-}
-
-/// Reads and validates the job at `path` (or standard input for `-`), and
-/// returns it with its text (the report shows it; messages place problems in
-/// it).
-pub fn read_job_text(path: &Path) -> Result<(Job, String), Error> {
-    let text = read_input(path)?;
-    let job = parse_job(&text, &job_name(path))?;
-    Ok((job, text))
+    parse_job(&read_input(path)?, &job_name(path))
 }
 
 /// Writes to standard output with `write`; a failure is an [`Error::Write`]

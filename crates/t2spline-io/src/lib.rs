@@ -17,6 +17,9 @@
 //!   Apache Parquet table, the rest of the result as key-value metadata.
 //! - [`JobSummary`], [`write_summary_csv`] (and `write_summary_parquet`): the
 //!   summary of a run of many jobs.
+//! - [`Prepared`]: the one way every front end prepares and runs a job
+//!   (read, settings checked once, run, every number finite), with errors
+//!   that keep their kind ([`RunError`]).
 //! - [`check_finite`]: the last guard before writing, naming the first NaN or
 //!   infinity of an output by its path.
 //! - [`Staged`] / [`write_atomic`]: output files that are complete or absent,
@@ -76,6 +79,7 @@ mod keys;
 mod number;
 #[cfg(feature = "parquet")]
 mod parquet;
+mod prepared;
 mod pretty;
 mod printable;
 mod readings;
@@ -93,6 +97,7 @@ pub use fit_data::FitData;
 pub use job::{job_json, parse_data, parse_job, read_data, read_job};
 #[cfg(feature = "parquet")]
 pub use parquet::{write_parquet, write_summary_parquet};
+pub use prepared::{MissingAlpha, Prepared, RunError};
 pub use pretty::{to_json_pretty, write_json_pretty};
 pub use printable::printable;
 pub use readings::{data_json, is_readings, parse_readings, read_readings, ReadingsFile, MAX_ROWS};

@@ -3,19 +3,21 @@
 
 use proptest::prelude::*;
 use serde_json::json;
-use t2spline::job::{Job, Model, Points, RunOutput, Samples, Settings};
+use t2spline::job::{Job, Model, Points, RunOutput, Samples};
 use t2spline::{strategies, Alpha, Layer};
 use t2spline_io::{render_csv, write_csv, CSV_FILES};
 
 /// The job's result at `alpha` and `samples`.
 fn compute(job: &Job, alpha: Alpha, samples: usize) -> RunOutput {
-    job.run(&Settings {
-        alpha,
-        type_reduction: t2spline::TypeReduction::Paper,
-        unused_alpha: None,
-        samples: Samples::Along(samples),
-        derivatives: None,
-    })
+    job.run(
+        &job.settings(&t2spline::job::Overrides {
+            alpha: Some(alpha.get()),
+            type_reduction: Some(t2spline::TypeReduction::Paper),
+            samples: Some(vec![samples as u64]),
+            derivatives: None,
+        })
+        .unwrap(),
+    )
     .unwrap()
 }
 
@@ -347,13 +349,7 @@ proptest! {
     ) {
         let samples = Samples::Grid([su, sv]);
         let job = Job { samples, ..Job::new(Model::Surface(surface)) };
-        let r = job.run(&Settings {
-            alpha: alpha(a),
-            type_reduction: t2spline::TypeReduction::Paper,
-            unused_alpha: None,
-            samples,
-            derivatives: None,
-        })
+        let r = job.run(&job.settings(&t2spline::job::Overrides { alpha: Some(alpha(a).get()), type_reduction: Some(t2spline::TypeReduction::Paper), samples: Some(samples.counts()), derivatives: None }).unwrap())
         .unwrap();
         let t2spline::job::Parameters::Grid { u, v } = &r.samples.params else {
             panic!("a grid")

@@ -9,8 +9,6 @@ mod positions;
 use positions::at;
 use proptest::prelude::*;
 use serde_json::{json, Value};
-use t2spline::job::{Samples, Settings};
-use t2spline::Alpha;
 use t2spline_io::job::{
     locate, read_text, read_text_from, MAX_ARRAY, MAX_FILE_BYTES, MAX_KEYS, MAX_NESTING, MAX_ORDER,
     MAX_POINTS, MAX_PROBLEMS,
@@ -475,13 +473,15 @@ fn extreme_jobs_write_only_finite_numbers() {
                 let job = t2spline_io::parse_job(&v.to_string(), "j")
                     .unwrap_or_else(|e| panic!("{e}\n{v}"));
                 let r = job
-                    .run(&Settings {
-                        alpha: Alpha::try_new(alpha).unwrap(),
-                        type_reduction: t2spline::TypeReduction::Paper,
-                        unused_alpha: None,
-                        samples: Samples::Along(33),
-                        derivatives: None,
-                    })
+                    .run(
+                        &job.settings(&t2spline::job::Overrides {
+                            alpha: Some(alpha),
+                            type_reduction: Some(t2spline::TypeReduction::Paper),
+                            samples: Some(vec![33]),
+                            derivatives: None,
+                        })
+                        .unwrap(),
+                    )
                     .unwrap();
                 check_finite(&r).unwrap();
                 let mut out = Vec::new();
@@ -506,13 +506,15 @@ fn extreme_jobs_write_only_finite_numbers() {
 fn a_non_finite_result_is_refused_by_name() {
     let job = t2spline_io::parse_job(&job(3).to_string(), "j").unwrap();
     let mut r = job
-        .run(&Settings {
-            alpha: Alpha::try_new(0.5).unwrap(),
-            type_reduction: t2spline::TypeReduction::Paper,
-            unused_alpha: None,
-            samples: Samples::Along(5),
-            derivatives: None,
-        })
+        .run(
+            &job.settings(&t2spline::job::Overrides {
+                alpha: Some(0.5),
+                type_reduction: Some(t2spline::TypeReduction::Paper),
+                samples: Some(vec![5]),
+                derivatives: None,
+            })
+            .unwrap(),
+        )
         .unwrap();
     r.samples.type_reduced.right.coord_mut(1)[3] = f64::INFINITY;
     let e = check_finite(&r).unwrap_err();

@@ -119,14 +119,14 @@ fn check(result: &RunOutput) {
     }
 }
 
-fn settings(a: f64, samples: Samples, derivatives: Option<usize>) -> Settings {
-    Settings {
-        alpha: Alpha::try_new(a).unwrap(),
-        type_reduction: t2spline::TypeReduction::Paper,
-        unused_alpha: None,
-        samples,
-        derivatives,
-    }
+fn settings(job: &Job, a: f64, samples: Samples, derivatives: Option<usize>) -> Settings {
+    job.settings(&Overrides {
+        alpha: Some(a),
+        type_reduction: Some(t2spline::TypeReduction::Paper),
+        samples: Some(samples.counts()),
+        derivatives: derivatives.map(|k| k as i64),
+    })
+    .unwrap()
 }
 
 #[test]
@@ -137,10 +137,12 @@ fn the_example_with_derivatives() {
     );
     let job = t2spline_io::read_job(std::path::Path::new(path)).unwrap();
     for (a, d) in [(0.8, None), (0.3, Some(2))] {
-        let result = job.run(&settings(a, Samples::Along(33), d)).unwrap();
+        let result = job.run(&settings(&job, a, Samples::Along(33), d)).unwrap();
         check(&result);
     }
-    let result = job.run(&settings(0.8, Samples::Along(5), None)).unwrap();
+    let result = job
+        .run(&settings(&job, 0.8, Samples::Along(5), None))
+        .unwrap();
     let mut bytes = Vec::new();
     write_parquet(&mut bytes, &result).unwrap();
     let (columns, kv) = read(bytes);

@@ -3,7 +3,7 @@
 //! serde; every f64 exactly.
 
 use proptest::prelude::*;
-use t2spline::job::{Job, Model, Overrides, Samples, Settings, MAX_SAMPLES};
+use t2spline::job::{Job, Model, Overrides, Samples, MAX_SAMPLES};
 use t2spline::{strategies, Alpha, FuzzyCurve, TypeReduction};
 use t2spline_io::to_json_pretty;
 
@@ -177,13 +177,12 @@ fn the_example_job_round_trips_and_its_result_too() {
         job
     );
 
-    let settings = Settings {
-        alpha: job.alpha.unwrap(),
-        type_reduction: t2spline::TypeReduction::Paper,
-        unused_alpha: None,
-        samples: job.samples,
-        derivatives: None,
-    };
+    let settings = job
+        .settings(&Overrides {
+            type_reduction: Some(t2spline::TypeReduction::Paper),
+            ..Overrides::default()
+        })
+        .unwrap();
     let result = job.run(&settings).unwrap();
     let (_, back) = written(&result);
     assert_eq!(back, serde_json::to_value(&result).unwrap());

@@ -484,13 +484,15 @@ fn the_distance_figure_shows_both_sides_of_the_jump_at_h() {
     );
     // The sampled maximum agrees with the run's exact error.max.
     let exact = |a: f64| {
-        job.run(&t2spline::job::Settings {
-            alpha: Alpha::try_new(a).unwrap(),
-            type_reduction: t2spline::TypeReduction::Paper,
-            unused_alpha: None,
-            samples: t2spline::job::Samples::Along(2),
-            derivatives: None,
-        })
+        job.run(
+            &job.settings(&t2spline::job::Overrides {
+                alpha: Some(a),
+                type_reduction: Some(t2spline::TypeReduction::Paper),
+                samples: Some(vec![2]),
+                derivatives: None,
+            })
+            .unwrap(),
+        )
         .unwrap()
         .error
     };

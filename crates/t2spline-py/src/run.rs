@@ -7,15 +7,19 @@ use std::path::PathBuf;
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
-use t2spline::job::{check_samples, Job, Model, Overrides, Setting, Settings};
+use t2spline::job::{check_samples, Job, Model, Overrides, Setting};
 use t2spline::TypeReduction;
-use t2spline_io::job::locate;
-use t2spline_io::Problem;
+use t2spline_io::{MissingAlpha, Prepared, RunError};
 
 use crate::construct::PerDirection;
-use crate::errors::{core_error, internal_error, io_error, job_error, setting_error, without_gil};
+use crate::errors::{core_error, internal_error, io_error, setting_error, without_gil};
 use crate::reduction;
 use crate::value::to_value;
+
+/// How a Python user gives a missing alpha.
+const GIVE_ALPHA: MissingAlpha<'static> = MissingAlpha::Refuse {
+    advice: "give it in the job or as alpha=",
+};
 
 /// How messages name a job given as a dict.
 pub(crate) const DICT_SOURCE: &str = "<dict>";
@@ -81,21 +85,17 @@ pub(crate) fn parse(py: Python<'_>, text: &str, source: &str) -> PyResult<Job> {
     without_gil(py, || t2spline_io::parse_job(text, source))?.map_err(|e| io_error(py, e))
 }
 
-/// The settings of a run, each from its keyword or else from the job.
+/// The overrides of a run's keywords.
 ///
 /// # Errors
-/// `JobError` when neither gives alpha (placed at the job's top level, as
-/// `t2spline run` places it); `ValueError` naming the keyword whose value
-/// breaks its rule.
-fn settings(
-    py: Python<'_>,
-    job: &Job,
-    (text, source): (&str, &str),
+/// `ValueError` naming `samples` for a negative count (the core takes
+/// counts as `u64`; the rule is written as given).
+fn overrides(
     alpha: Option<f64>,
     type_reduction: Option<TypeReduction>,
     samples: Option<PerDirection>,
     derivatives: Option<i64>,
-) -> PyResult<Settings> {
+) -> PyResult<Overrides> {
     let samples = match samples {
         None => None,
         Some(counts) => {
@@ -103,8 +103,6 @@ fn settings(
                 PerDirection::One(n) => vec![n],
                 PerDirection::Two(u, v) => vec![u, v],
             };
-            // The core takes counts as u64; a negative count gets its rule
-            // here, written as given.
             if let Some(n) = counts.iter().find(|&&n| n < 0) {
                 let message = match check_samples(0, &n.to_string()) {
                     Err(message) => message,
@@ -115,26 +113,25 @@ fn settings(
             Some(counts.into_iter().map(i64::unsigned_abs).collect())
         }
     };
-    let overrides = Overrides {
+    Ok(Overrides {
         alpha,
         type_reduction,
         samples,
         derivatives,
-    };
-    job.settings(&overrides).map_err(|e| match e {
-        t2spline::Error::MissingAlpha => job_error(
-            py,
-            t2spline_io::Error::Invalid {
-                file: source.to_owned(),
-                problems: vec![Problem {
-                    line_column: Some(locate(text, "alpha")),
-                    message: "alpha: missing: give it in the job or as alpha=".to_owned(),
-                }],
-            }
-            .lines(),
-        ),
-        other => core_error(other),
     })
+}
+
+/// A failure of the shared run path as a Python exception: the job's
+/// problems as a `JobError` (a missing alpha placed at the job's top level,
+/// as `t2spline run` places it), a setting's as a `ValueError` naming the
+/// keyword, a number that is not finite as an internal error.
+fn run_error(py: Python<'_>, e: RunError) -> PyErr {
+    match e {
+        RunError::File(e @ t2spline_io::Error::NotFinite { .. }) => internal_error(&e.to_string()),
+        RunError::File(e) => io_error(py, e),
+        RunError::Setting { setting, message } => setting_error(setting, &message),
+        RunError::Core(e) => core_error(e),
+    }
 }
 
 /// Runs a job as ``t2spline run`` does: every stage of Algorithm 1.1 at
@@ -226,59 +223,35 @@ pub(crate) fn run<'py>(
     type_reduction: Option<&str>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let type_reduction = reduction::type_reduction(type_reduction)?;
+    let overrides = overrides(alpha, type_reduction, samples, derivatives)?;
     let (text, source) = job_text(job)?;
     let parsed = parse(py, &text, &source)?;
-    let settings = settings(
-        py,
-        &parsed,
-        (&text, &source),
-        alpha,
-        type_reduction,
-        samples,
-        derivatives,
-    )?;
-    if let Some(a) = settings.unused_alpha {
+    let prepared = Prepared::new(parsed, &text, &source, &overrides, GIVE_ALPHA)
+        .map_err(|e| run_error(py, e))?;
+    let settings = prepared.settings();
+    if let Some(a) = settings.unused_alpha() {
         let source = if alpha.is_some() {
             "alpha="
         } else {
             "the job's alpha "
         };
-        reduction::warn_unused_alpha(py, settings.type_reduction, source, a)?;
+        reduction::warn_unused_alpha(py, settings.type_reduction(), source, a)?;
     }
     let tree = without_gil(py, move || {
-        let output = parsed.run(&settings).map_err(Failure::from)?;
-        // The CLI's last guard before writing: every number finite.
-        t2spline_io::check_finite(&output).map_err(|e| Failure::Internal(e.to_string()))?;
+        let output = prepared.run().map_err(Failure::Run)?;
         to_value(&output).map_err(|e| Failure::Internal(e.to_string()))
     })?;
     match tree {
         Ok(tree) => tree.into_py(py),
-        Err(Failure::Derivatives(message)) => Err(setting_error(Setting::Derivatives, &message)),
-        Err(Failure::Core(e)) => Err(core_error(e)),
+        Err(Failure::Run(e)) => Err(run_error(py, e)),
         Err(Failure::Internal(message)) => Err(internal_error(&message)),
     }
 }
 
 /// Why a run gave no result.
 enum Failure {
-    /// Derivatives beyond the range of a float: the input and the order
-    /// asked for, so an error about `derivatives`.
-    Derivatives(String),
-    /// Another error of the core.
-    Core(t2spline::Error),
+    /// The shared run path's error.
+    Run(RunError),
     /// What a valid job never causes.
     Internal(String),
-}
-
-impl From<t2spline::Error> for Failure {
-    fn from(e: t2spline::Error) -> Self {
-        match e {
-            t2spline::Error::DerivativeOverflow { .. }
-            | t2spline::Error::NotFinite {
-                what: "curves.arc_length.crisp" | "curves.arc_length.defuzzified",
-                ..
-            } => Failure::Derivatives(e.to_string()),
-            other => Failure::Core(other),
-        }
-    }
 }

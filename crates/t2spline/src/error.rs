@@ -746,6 +746,23 @@ pub enum Error {
         /// The value computed.
         value: f64,
     },
+    /// The arc length of a curve whose derivatives were asked of a run is
+    /// beyond the range of a float (its speed, `coordinate / knot span`,
+    /// can be).
+    ///
+    /// ```
+    /// # use t2spline::Error;
+    /// let e = Error::ArcLengthOverflow { curve: "crisp", value: f64::INFINITY };
+    /// assert_eq!(e.to_string(), "curves.arc_length.crisp = inf is not a finite number");
+    /// assert_eq!(e.setting(), Some(t2spline::job::Setting::Derivatives));
+    /// ```
+    #[error("curves.arc_length.{curve} = {value} is not a finite number")]
+    ArcLengthOverflow {
+        /// `"crisp"` or `"defuzzified"`.
+        curve: &'static str,
+        /// The value computed.
+        value: f64,
+    },
     /// A rule of one parameter direction of a surface is broken (SPEC §9):
     /// `inner` is the error the same rule gives for a curve, `direction` says
     /// whether it concerns `u` (rows of the net, `knots.u`) or `v` (columns,
@@ -984,6 +1001,29 @@ fn in_direction(direction: crate::nurbs::Direction, inner: &Error) -> String {
 }
 
 impl Error {
+    /// The setting of a run whose value caused this error, if one did: the
+    /// setting of an [`Error::Setting`], and [`Setting::Derivatives`] for a
+    /// derivative or an arc length beyond the range of a float (the order
+    /// asked for takes them there). Front ends name their own spelling of
+    /// the setting (`--derivatives`, `derivatives=`) from it.
+    ///
+    /// ```
+    /// # use t2spline::{job::Setting, Error};
+    /// let e = Error::Setting { setting: Setting::Samples, message: "samples = 1: at least 2 are needed".into() };
+    /// assert_eq!(e.setting(), Some(Setting::Samples));
+    /// assert_eq!(Error::MissingAlpha.setting(), None);
+    /// ```
+    #[must_use]
+    pub fn setting(&self) -> Option<Setting> {
+        match self {
+            Error::Setting { setting, .. } => Some(*setting),
+            Error::DerivativeOverflow { .. } | Error::ArcLengthOverflow { .. } => {
+                Some(Setting::Derivatives)
+            }
+            _ => None,
+        }
+    }
+
     /// `Ok(index)` if `index < count`, else [`Error::Index`] naming `what`.
     pub(crate) fn check_index(
         what: &'static str,

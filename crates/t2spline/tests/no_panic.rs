@@ -16,7 +16,7 @@ use returns::returns;
 use t2spline::fit::{
     fit_curve, fuzzify, fuzzify_number, percentile, FitOptions, FuzzifyRule, Parametrization,
 };
-use t2spline::job::{Job, Model, Overrides, Samples, Settings};
+use t2spline::job::{Job, Model, Overrides, Samples, MAX_DERIVATIVE_ORDER, MAX_SAMPLES};
 use t2spline::nurbs::basis::try_basis_functions;
 use t2spline::nurbs::derivatives::try_basis_derivatives;
 use t2spline::reduction::discrete::SampledSet;
@@ -428,24 +428,56 @@ proptest! {
         let pts = fuzzy_points::<2>(&[0.0; 32]);
         let curve = FuzzyCurve::try_new(1, pts, vec![1.0; 2], None).unwrap();
         let job = Job::new(Model::Planar(curve));
-        let alpha = Alpha::try_new(alpha).unwrap();
         for samples in [Samples::Along(samples), Samples::Grid([samples, u])] {
-            let settings = Settings {
-                alpha,
-                type_reduction: TypeReduction::Paper,
-                unused_alpha: None,
-                samples,
-                derivatives,
-            };
-            let out = returns("Job::run", || job.run(&settings));
-            let valid = job.settings(&Overrides {
-                alpha: Some(alpha.get()),
-                samples: Some(match samples { Samples::Along(n) => vec![n as u64], Samples::Grid([a, b]) => vec![a as u64, b as u64] }),
+            let valid = returns("Job::settings", || job.settings(&Overrides {
+                alpha: Some(alpha),
+                samples: Some(samples.counts()),
                 derivatives: derivatives.map(|k| k as i64),
                 ..Overrides::default()
+            }));
+            // Settings are made only by `Job::settings`: a curve takes one
+            // count, at most the limit, and derivatives within theirs.
+            let along = matches!(samples, Samples::Along(n) if (2..=MAX_SAMPLES).contains(&n));
+            let orders = derivatives.is_none_or(|k| {
+                (1..=MAX_DERIVATIVE_ORDER).contains(&k) && k.saturating_mul(samples.count()) <= MAX_SAMPLES
             });
-            prop_assert_eq!(out.is_ok(), valid.is_ok(), "{:?}", settings);
+            prop_assert_eq!(valid.is_ok(), along && orders, "{:?} {:?}", samples, derivatives);
+            if let Ok(settings) = valid {
+                let out = returns("Job::run", || job.run(&settings));
+                prop_assert!(out.is_ok(), "{:?}", settings);
+            }
         }
+    }
+}
+
+/// Settings made for one job run another only where they fit it: a curve's
+/// settings given to a surface job (and the reverse) are an error naming
+/// the samples, not a panic.
+#[test]
+fn settings_of_another_kind_of_job_are_errors() {
+    let pts = fuzzy_points::<2>(&[0.0; 32]);
+    let curve = Job::new(Model::Planar(
+        FuzzyCurve::try_new(1, pts, vec![1.0; 2], None).unwrap(),
+    ));
+    let n = Nt2Number::try_new(0.0, [-1.0, 1.0], [-0.5, 0.5], [-0.2, 0.2], 0.5).unwrap();
+    let net = vec![vec![Nt2Point::new([n; 3]); 2]; 2];
+    let surface = Job::new(Model::Surface(
+        FuzzySurface::try_new([1, 1], net, vec![vec![1.0; 2]; 2], [None, None]).unwrap(),
+    ));
+    let given = Overrides {
+        alpha: Some(0.5),
+        ..Overrides::default()
+    };
+    let (of_curve, of_surface) = (
+        curve.settings(&given).unwrap(),
+        surface.settings(&given).unwrap(),
+    );
+    assert!(curve.run(&of_curve).is_ok() && surface.run(&of_surface).is_ok());
+    for e in [
+        surface.run(&of_curve).unwrap_err(),
+        curve.run(&of_surface).unwrap_err(),
+    ] {
+        assert_eq!(e.setting(), Some(t2spline::job::Setting::Samples), "{e}");
     }
 }
 
@@ -465,27 +497,20 @@ fn a_curve_of_four_coordinates_is_an_error() {
 /// Derivatives at parameters outside the domain were computed from a result
 /// read back from a file and panicked; they are computed in `Job::run` now,
 /// only at the run's own parameters, and settings outside the rules (as a
-/// result read back could carry) are errors.
+/// result read back could carry) cannot be made.
 #[test]
 fn derivatives_of_settings_outside_the_rules_are_errors() {
     let pts = fuzzy_points::<2>(&[0.0; 32]);
     let curve = FuzzyCurve::try_new(1, pts, vec![1.0; 2], None).unwrap();
     let job = Job::new(Model::Planar(curve.clone()));
-    let alpha = Alpha::try_new(0.5).unwrap();
-    for (samples, derivatives) in [
-        (1, Some(1)),
-        (3, Some(0)),
-        (3, Some(usize::MAX)),
-        (usize::MAX, Some(1)),
-    ] {
-        let settings = Settings {
-            alpha,
-            type_reduction: TypeReduction::Paper,
-            unused_alpha: None,
-            samples: Samples::Along(samples),
-            derivatives,
-        };
-        assert!(job.run(&settings).is_err(), "{settings:?}");
+    for (samples, derivatives) in [(1, 1), (3, 0), (3, i64::MAX), (u64::MAX, 1)] {
+        let settings = job.settings(&Overrides {
+            alpha: Some(0.5),
+            samples: Some(vec![samples]),
+            derivatives: Some(derivatives),
+            ..Overrides::default()
+        });
+        assert!(settings.is_err(), "{samples} {derivatives}");
     }
     let crisp = curve.crisp_curve();
     for t in [-0.5, 1.5, f64::NAN, f64::INFINITY] {

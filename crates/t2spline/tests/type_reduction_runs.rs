@@ -180,8 +180,8 @@ fn alpha_is_needed_by_the_paper_only() {
                 ..Overrides::default()
             })
             .unwrap();
-        assert_eq!(s.unused_alpha, Some(Alpha::try_new(0.8).unwrap()));
-        assert_eq!(s.alpha, Alpha::ZERO);
+        assert_eq!(s.unused_alpha(), Some(Alpha::try_new(0.8).unwrap()));
+        assert_eq!(s.alpha(), Alpha::ZERO);
         // An alpha out of range is an error with every reduction.
         let bad = job.settings(&Overrides {
             alpha: Some(1.5),
@@ -197,7 +197,7 @@ fn alpha_is_needed_by_the_paper_only() {
     };
     let s = job.settings(&Overrides::default()).unwrap();
     assert_eq!(
-        (s.type_reduction, s.unused_alpha),
+        (s.type_reduction(), s.unused_alpha()),
         (TypeReduction::NieTan, None)
     );
     let s = job
@@ -208,7 +208,7 @@ fn alpha_is_needed_by_the_paper_only() {
         })
         .unwrap();
     assert_eq!(
-        (s.type_reduction, s.alpha.get()),
+        (s.type_reduction(), s.alpha().get()),
         (TypeReduction::Paper, 0.3)
     );
 }
@@ -342,7 +342,7 @@ fn surface_runs_sample_every_reduction_on_the_grid() {
             })
             .unwrap();
         let out = job.run(&settings).unwrap();
-        let solution = s.solve_with(settings.alpha, method);
+        let solution = s.solve_with(settings.alpha(), method);
         let surface = solution.defuzzified_surface();
         let t2spline::job::Parameters::Grid { u, v } = &out.samples.params else {
             panic!("a surface has a grid");

@@ -13,15 +13,15 @@ use std::path::{Path, PathBuf};
 use rayon::prelude::*;
 use t2spline::job::{Overrides, RunOutput};
 use t2spline_io::{
-    check_finite, sync_file_systems, write_summary_csv, write_summary_parquet, JobSummary, Staged,
-    CSV_FILES, DERIVATIVES_CSV,
+    sync_file_systems, write_summary_csv, write_summary_parquet, JobSummary, Staged, CSV_FILES,
+    DERIVATIVES_CSV,
 };
 
+use super::prepare::{about_run, prepare, unused_alpha, OptionError};
 use super::results::{overrides, Destinations, ALPHA_IGNORED};
-use super::settings::{about_derivatives, settings, unused_alpha, OptionError};
 use crate::cli::RunArgs;
 use crate::exit::{Exit, JobsFailed};
-use crate::output::{is_stdio, job_name, read_job_text, Inputs, NewFolders};
+use crate::output::{is_stdio, job_name, Inputs, NewFolders};
 
 /// The summary's file names.
 const SUMMARY_CSV: &str = "summary.csv";
@@ -235,12 +235,13 @@ impl Batch {
     /// `--type-reduction` overrides it), and the note on an alpha it does
     /// not use.
     fn compute(&self, job: &Entry) -> anyhow::Result<(RunOutput, Option<String>)> {
-        let (j, text) = read_job_text(&job.path)?;
-        let settings = settings(&j, &self.overrides, &job.path, &text)?;
-        let note = unused_alpha(&settings, self.overrides.alpha.is_some(), ALPHA_IGNORED);
-        let result = j.run(&settings).map_err(about_derivatives)?;
-        check_finite(&result)?;
-        Ok((result, note))
+        let prepared = prepare(&job.path, &self.overrides)?;
+        let note = unused_alpha(
+            prepared.settings(),
+            self.overrides.alpha.is_some(),
+            ALPHA_IGNORED,
+        );
+        Ok((prepared.run().map_err(about_run)?, note))
     }
 }
 

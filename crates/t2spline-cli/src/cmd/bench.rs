@@ -7,7 +7,7 @@ use t2spline::bench::{run_case, BenchCase};
 use t2spline::job::Model;
 use t2spline::sampling::{benchmark_curve, benchmark_surface};
 
-use super::settings::about_option;
+use super::prepare::about_option;
 use crate::cli::BenchArgs;
 use crate::output::read_job;
 

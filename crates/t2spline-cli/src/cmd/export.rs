@@ -5,18 +5,16 @@
 use std::path::{Path, PathBuf};
 use std::time::{SystemTime, UNIX_EPOCH};
 
-use t2spline::job::{Job, Overrides, Settings};
-use t2spline_io::{render_cad, CadFormat, CadMeta};
+use t2spline_io::{render_cad, CadFormat, CadMeta, Prepared};
 
-use super::settings::{about_option, note_unused_alpha, settings, OptionError};
+use super::prepare::{about_option, note_unused_alpha, prepare, reduction_overrides, OptionError};
 use crate::cli::{CadFormatArg, ExportArgs};
-use crate::output::{is_stdio, job_name, read_job_text, Outputs};
+use crate::output::{is_stdio, job_name, Outputs};
 
 /// An export with every input validated.
 struct Plan {
-    job: Job,
+    prepared: Prepared,
     source: String,
-    settings: Settings,
     format: CadFormat,
     output: PathBuf,
 }
@@ -27,23 +25,16 @@ impl Plan {
             Some(f) => from_arg(f),
             None => from_extension(&args.output)?,
         };
-        let (job, text) = read_job_text(&args.job)?;
-        let overrides = Overrides {
-            alpha: args.alpha,
-            type_reduction: args.reduction.type_reduction,
-            ..Overrides::default()
-        };
-        let settings = settings(&job, &overrides, &args.job, &text)?;
+        let prepared = prepare(&args.job, &reduction_overrides(args.alpha, &args.reduction))?;
         note_unused_alpha(
             "export",
-            &settings,
+            prepared.settings(),
             args.alpha.is_some(),
             "is ignored (the defuzzified curve does not depend on it)",
         );
         Ok(Plan {
-            job,
+            prepared,
             source: job_name(&args.job),
-            settings,
             format,
             output: args.output.clone(),
         })
@@ -52,7 +43,8 @@ impl Plan {
 
 pub fn export(args: &ExportArgs) -> anyhow::Result<()> {
     let plan = Plan::new(args)?;
-    let geometry = plan.job.geometry(&plan.settings).map_err(about_option)?;
+    let (job, settings) = (plan.prepared.job(), plan.prepared.settings());
+    let geometry = job.geometry(settings).map_err(about_option)?;
     let geometry = if plan.format.clamps() {
         geometry.clamped()
     } else {
@@ -67,7 +59,7 @@ pub fn export(args: &ExportArgs) -> anyhow::Result<()> {
     };
     let meta = CadMeta {
         name,
-        description: plan.job.description.clone(),
+        description: job.description.clone(),
         timestamp: timestamp(),
     };
     let text = render_cad(plan.format, &geometry, &meta, &plan.source)?;

@@ -8,7 +8,7 @@ use t2spline::fit::{Deviation, FitOptions, FitSummary, FuzzyFitMode, Parametriza
 use t2spline::Layer;
 use t2spline_io::{is_readings, parse_data, parse_job, to_json_pretty, FitData};
 
-use super::settings::OptionError;
+use super::prepare::OptionError;
 use crate::cli::FitArgs;
 use crate::output::{is_stdio, job_name, read_input, Inputs, Outputs};
 

@@ -9,7 +9,7 @@ use t2spline::Alpha;
 use t2spline_io::job::MAX_ORDER;
 use t2spline_io::{data_json, parse_data, parse_readings, to_json_pretty, FitData};
 
-use super::settings::OptionError;
+use super::prepare::OptionError;
 use crate::cli::{FuzzifyArgs, ReadingsArgs};
 use crate::output::{job_name, read_input, Outputs};
 

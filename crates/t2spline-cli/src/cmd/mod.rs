@@ -7,10 +7,10 @@ mod export;
 mod fit;
 mod fuzzify;
 mod plot;
+pub mod prepare;
 mod report;
 mod results;
 mod run;
-pub mod settings;
 mod validate;
 
 use crate::cli::{Cli, Command};

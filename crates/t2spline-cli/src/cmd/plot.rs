@@ -1,13 +1,13 @@
 //! `t2spline plot JOB.json -o DIR [--format svg|png|both] [--point I --axis x|y|z]
 //! [--aspect equal|auto] [--view AZ,EL] [--alpha A] [--type-reduction NAME]`.
 
-use t2spline::job::{Job, Overrides};
+use t2spline::job::Job;
 use t2spline::Axis;
 use t2spline_plot::{all_figures, render_files, Aspect, FigureOptions, Format, NumberChoice};
 
-use super::settings::{note_unused_alpha, settings, OptionError};
+use super::prepare::{note_unused_alpha, prepare, reduction_overrides, OptionError};
 use crate::cli::{AspectArg, AxisArg, FigureArgs, FormatArg, PlotArgs, PointArg};
-use crate::output::{read_job_text, Outputs};
+use crate::output::Outputs;
 
 /// The figure options of `--point`, `--axis` and `--aspect` for `job`.
 ///
@@ -74,25 +74,16 @@ pub fn about_number(e: t2spline_plot::Error) -> anyhow::Error {
 }
 
 pub fn plot(args: &PlotArgs) -> anyhow::Result<()> {
-    let (job, text) = read_job_text(&args.job)?;
-    let overrides = Overrides {
-        alpha: args.alpha,
-        type_reduction: args.reduction.type_reduction,
-        ..Overrides::default()
-    };
-    let settings = settings(&job, &overrides, &args.job, &text)?;
+    let prepared = prepare(&args.job, &reduction_overrides(args.alpha, &args.reduction))?;
+    let settings = prepared.settings();
     note_unused_alpha(
         "plot",
-        &settings,
+        settings,
         args.alpha.is_some(),
         "is used only by the paper's reduction in the figures number, distance-alpha and reductions (stage 2 is cut at alpha = 0)",
     );
     // Stages 2–4 as `run` gives them; the paper's level where it is drawn.
-    let alpha = settings.unused_alpha.unwrap_or(settings.alpha);
-    let job = Job {
-        type_reduction: settings.type_reduction,
-        ..job
-    };
+    let (alpha, job) = (settings.paper_alpha(), prepared.job());
     let format = match args.format {
         FormatArg::Svg => Format::Svg,
         FormatArg::Png => Format::Png,
@@ -101,7 +92,7 @@ pub fn plot(args: &PlotArgs) -> anyhow::Result<()> {
     // Everything is rendered before anything is written, and written all or
     // nothing; the paths written go to standard output.
     let figures =
-        all_figures(&job, alpha, &figure_options(&args.figures, &job)?).map_err(about_number)?;
+        all_figures(job, alpha, &figure_options(&args.figures, job)?).map_err(about_number)?;
     let mut out = Outputs::default();
     let mut listing = String::new();
     for (name, bytes) in render_files(&figures, format)? {

@@ -4,18 +4,16 @@
 
 use std::path::Path;
 
-use t2spline::job::{Job, Settings};
-use t2spline_io::{check_finite, write_json_pretty, Staged};
+use t2spline_io::{write_json_pretty, Prepared, Staged};
 
+use super::prepare::{about_run, note_unused_alpha, prepare};
 use super::results::{overrides, Destinations, ALPHA_IGNORED};
-use super::settings::{note_unused_alpha, settings};
 use crate::cli::RunArgs;
-use crate::output::{is_stdio, read_job_text, to_stdout, Inputs};
+use crate::output::{is_stdio, to_stdout, Inputs};
 
 /// A run of one job with every input validated.
 struct Plan {
-    job: Job,
-    settings: Settings,
+    prepared: Prepared,
     out: Destinations,
 }
 
@@ -27,10 +25,14 @@ impl Plan {
             parquet: args.parquet.clone(),
         };
         out.check(&Inputs::of([path]))?;
-        let (job, text) = read_job_text(path)?;
-        let settings = settings(&job, &overrides(&args), path, &text)?;
-        note_unused_alpha("run", &settings, args.alpha.is_some(), ALPHA_IGNORED);
-        Ok(Plan { job, settings, out })
+        let prepared = prepare(path, &overrides(&args))?;
+        note_unused_alpha(
+            "run",
+            prepared.settings(),
+            args.alpha.is_some(),
+            ALPHA_IGNORED,
+        );
+        Ok(Plan { prepared, out })
     }
 }
 
@@ -40,13 +42,9 @@ pub fn run(mut args: RunArgs) -> anyhow::Result<()> {
     }
     let path = args.job.remove(0);
     let plan = Plan::new(args, &path)?;
-    let result = plan
-        .job
-        .run(&plan.settings)
-        .map_err(super::settings::about_derivatives)?;
     // Nothing is written unless every number is finite (serde_json would write
-    // NaN as null).
-    check_finite(&result)?;
+    // NaN as null): the run checks it.
+    let result = plan.prepared.run().map_err(about_run)?;
     plan.out.write(Staged::default(), &result)?;
     if plan.out.json.is_none() {
         to_stdout(|w| write_json_pretty(w, &result))?;

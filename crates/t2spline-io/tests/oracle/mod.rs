@@ -23,7 +23,7 @@
 
 #![allow(dead_code)]
 
-use t2spline::job::{Job, Model, Parameter, Parameters, Samples, Settings, Spline};
+use t2spline::job::{Job, Model, Parameter, Parameters, Samples, Spline};
 use t2spline::{Alpha, Layer};
 use t2spline_io::job::read_text_from;
 use t2spline_io::{check_finite, render_csv, write_json_pretty, Error};
@@ -116,13 +116,15 @@ pub fn check_job(job: &Job) {
         Samples::Grid([u, v]) => Samples::Grid([u.min(SAMPLES), v.min(SAMPLES)]),
     };
     let result = job
-        .run(&Settings {
-            alpha,
-            type_reduction: t2spline::TypeReduction::Paper,
-            unused_alpha: None,
-            samples,
-            derivatives: None,
-        })
+        .run(
+            &job.settings(&t2spline::job::Overrides {
+                alpha: Some(alpha.get()),
+                type_reduction: Some(t2spline::TypeReduction::Paper),
+                samples: Some(samples.counts()),
+                derivatives: None,
+            })
+            .unwrap(),
+        )
         .unwrap();
     if let Err(e) = check_finite(&result) {
         panic!("{e}");

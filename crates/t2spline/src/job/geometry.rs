@@ -106,8 +106,8 @@ impl Geometry {
 }
 
 impl Job {
-    /// The exact curves of a run at `settings.alpha` with
-    /// `settings.type_reduction`: the crisp, the defuzzified and the six
+    /// The exact curves of a run at `settings.alpha()` with
+    /// `settings.type_reduction()`: the crisp, the defuzzified and the six
     /// other layer curves, named (see the module docs). Their samples are the curves of [`Job::run`] with the same
     /// settings.
     ///
@@ -132,7 +132,7 @@ impl Job {
     /// ```
     pub fn geometry(&self, settings: &Settings) -> Result<Geometry, Error> {
         self.model
-            .visit(Exact(settings.alpha, settings.type_reduction))
+            .visit(Exact(settings.alpha(), settings.type_reduction()))
     }
 }
 

@@ -1,7 +1,7 @@
 //! Running a job: every stage of Algorithm 1.1 on the control points, every
 //! curve sampled, the distance, and the derivatives when asked for.
 
-use crate::error::{Error, Place, Setting};
+use crate::error::{Error, Setting};
 use crate::fuzzy::{Layer, Nt2Point};
 use crate::nurbs::{Direction, NurbsCurve};
 use crate::pipeline::point_stages::PointStages;
@@ -31,8 +31,9 @@ impl Job {
     /// float (a derivative grows like `(coordinate / knot span)^order`, so
     /// narrow spans or large coordinates can take it there); the other parts of
     /// a run are finite for every valid job (the core's input ranges).
-    /// Settings built by hand rather than by [`Job::settings`] are checked
-    /// again, with its errors ([`Error::Setting`]).
+    /// [`Error::ArcLengthOverflow`] likewise for an arc length. Settings made
+    /// by [`Job::settings`] of another job, for another kind of model, are an
+    /// [`Error::Setting`]; they are otherwise taken as they are, checked once.
     ///
     /// # Examples
     /// ```
@@ -51,8 +52,7 @@ impl Job {
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn run(&self, settings: &Settings) -> Result<RunOutput, Error> {
-        let settings = self.settings(&settings.as_overrides())?;
-        let mut out = self.model.visit(Run(&settings))?;
+        let mut out = self.model.visit(Run(settings))?;
         out.description.clone_from(&self.description);
         Ok(out)
     }
@@ -65,13 +65,9 @@ impl ModelVisitor for Run<'_> {
     type Output = Result<RunOutput, Error>;
 
     fn curve<const D: usize>(self, curve: &FuzzyCurve<D>) -> Self::Output {
-        let Settings {
-            alpha,
-            type_reduction,
-            samples,
-            derivatives,
-            ..
-        } = *self.0;
+        let s = self.0;
+        let (alpha, type_reduction, samples, derivatives) =
+            (s.alpha(), s.type_reduction(), s.samples(), s.derivatives());
         let Samples::Along(samples) = samples else {
             return Err(wrong_samples("a grid of samples", "a curve"));
         };
@@ -116,13 +112,9 @@ impl ModelVisitor for Run<'_> {
     }
 
     fn surface<const D: usize>(self, surface: &FuzzySurface<D>) -> Self::Output {
-        let Settings {
-            alpha,
-            type_reduction,
-            samples,
-            derivatives,
-            ..
-        } = *self.0;
+        let s = self.0;
+        let (alpha, type_reduction, samples, derivatives) =
+            (s.alpha(), s.type_reduction(), s.samples(), s.derivatives());
         let Samples::Grid([su, sv]) = samples else {
             return Err(wrong_samples("one number of samples", "a surface"));
         };
@@ -315,21 +307,20 @@ fn derivative_curves<const D: usize>(
             defuzzified: derivatives(defuzzified, "defuzzified")?,
         },
         CrispDefuzzified {
-            crisp: finite_length(crisp.arc_length(), "curves.arc_length.crisp")?,
-            defuzzified: finite_length(defuzzified.arc_length(), "curves.arc_length.defuzzified")?,
+            crisp: finite_length(crisp.arc_length(), "crisp")?,
+            defuzzified: finite_length(defuzzified.arc_length(), "defuzzified")?,
         },
     ))
 }
 
 /// An arc length, or an error if it is beyond the range of a float (a speed
 /// of `coordinate / knot span` can be).
-fn finite_length(length: f64, what: &'static str) -> Result<f64, Error> {
+fn finite_length(length: f64, curve: &'static str) -> Result<f64, Error> {
     if length.is_finite() {
         Ok(length)
     } else {
-        Err(Error::NotFinite {
-            place: Place::NONE,
-            what,
+        Err(Error::ArcLengthOverflow {
+            curve,
             value: length,
         })
     }

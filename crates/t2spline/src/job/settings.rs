@@ -43,6 +43,15 @@ impl Samples {
             Samples::Grid([u, v]) => u * v,
         }
     }
+
+    /// The counts as [`Overrides::samples`] takes them: `[n]`, or `[su, sv]`.
+    #[must_use]
+    pub fn counts(self) -> Vec<u64> {
+        match self {
+            Samples::Along(n) => vec![n as u64],
+            Samples::Grid([u, v]) => vec![u as u64, v as u64],
+        }
+    }
 }
 
 impl std::fmt::Display for Samples {
@@ -71,47 +80,59 @@ pub struct Overrides {
     pub derivatives: Option<i64>,
 }
 
-/// How a job runs, every value checked: build it with [`Job::settings`].
+/// How a job runs, every value checked: made only by [`Job::settings`],
+/// read through its accessors, and never checked again ([`Job::run`] takes
+/// it as it is).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Settings {
-    /// The level alpha of the cut (stage 2), and with the paper's type
-    /// reduction of stages 3–4 too; [`Alpha::ZERO`] (the whole footprint,
-    /// which they read) with a reduction that does not use alpha.
-    pub alpha: Alpha,
-    /// The type reduction of stages 3–4 (SPEC §10).
-    pub type_reduction: TypeReduction,
-    /// An alpha that the job or the front end gave but the type reduction
-    /// does not use; front ends say so rather than ignore it silently.
-    pub unused_alpha: Option<Alpha>,
-    /// Uniform parameters at which every curve or surface is sampled (at
-    /// least 2 in each direction, at most [`MAX_SAMPLES`] points).
-    pub samples: Samples,
-    /// With `Some(K)`, the derivatives of orders `1 ..= K` of the crisp and the
-    /// defuzzified curve and their arc lengths.
-    pub derivatives: Option<usize>,
+    alpha: Alpha,
+    type_reduction: TypeReduction,
+    unused_alpha: Option<Alpha>,
+    samples: Samples,
+    derivatives: Option<usize>,
 }
 
 impl Settings {
-    /// The same values as overrides: settings made by hand (their fields are
-    /// public) go through [`Job::settings`] again before a run.
-    pub(crate) fn as_overrides(&self) -> Overrides {
-        let samples = match self.samples {
-            Samples::Along(n) => vec![n as u64],
-            Samples::Grid([u, v]) => vec![u as u64, v as u64],
-        };
-        let alpha = if self.type_reduction.uses_alpha() {
-            Some(self.alpha)
-        } else {
-            self.unused_alpha
-        };
-        Overrides {
-            alpha: alpha.map(Alpha::get),
-            type_reduction: Some(self.type_reduction),
-            samples: Some(samples),
-            derivatives: self
-                .derivatives
-                .map(|k| i64::try_from(k).unwrap_or(i64::MAX)),
-        }
+    /// The level alpha of the cut (stage 2), and with the paper's type
+    /// reduction of stages 3–4 too; [`Alpha::ZERO`] (the whole footprint,
+    /// which they read) with a reduction that does not use alpha.
+    #[must_use]
+    pub fn alpha(&self) -> Alpha {
+        self.alpha
+    }
+
+    /// The type reduction of stages 3–4 (docs/method.md §3, §9).
+    #[must_use]
+    pub fn type_reduction(&self) -> TypeReduction {
+        self.type_reduction
+    }
+
+    /// An alpha that the job or the front end gave but the type reduction
+    /// does not use; front ends say so rather than ignore it silently.
+    #[must_use]
+    pub fn unused_alpha(&self) -> Option<Alpha> {
+        self.unused_alpha
+    }
+
+    /// The level the paper's reduction would use: [`Settings::alpha`], or
+    /// the alpha set aside by a reduction that does not use it.
+    #[must_use]
+    pub fn paper_alpha(&self) -> Alpha {
+        self.unused_alpha.unwrap_or(self.alpha)
+    }
+
+    /// Uniform parameters at which every curve or surface is sampled (at
+    /// least 2 in each direction, at most [`MAX_SAMPLES`] points).
+    #[must_use]
+    pub fn samples(&self) -> Samples {
+        self.samples
+    }
+
+    /// With `Some(K)`, the derivatives of orders `1 ..= K` of the crisp and the
+    /// defuzzified curve and their arc lengths.
+    #[must_use]
+    pub fn derivatives(&self) -> Option<usize> {
+        self.derivatives
     }
 }
 
