@@ -167,14 +167,14 @@ impl Job {
     /// # let curve = FuzzyCurve::try_new(1, points, vec![1.0, 1.0], None)?;
     /// let job = Job { alpha: Some(Alpha::try_new(0.8)?), ..Job::new(Model::Planar(curve)) };
     /// let s = job.settings(&Overrides { samples: Some(vec![5]), ..Overrides::default() })?;
-    /// assert_eq!((s.alpha.get(), s.samples, s.derivatives), (0.8, Samples::Along(5), None));
+    /// assert_eq!((s.alpha().get(), s.samples(), s.derivatives()), (0.8, Samples::Along(5), None));
     /// let e = job.settings(&Overrides { alpha: Some(1.5), ..Overrides::default() }).unwrap_err();
     /// assert!(matches!(e, Error::Setting { setting: Setting::Alpha, .. }));
     /// assert_eq!(e.to_string(), "alpha = 1.5 is outside [0, 1]");
     /// // The centroid does not use alpha: stage 2 at 0, the job's 0.8 set aside.
     /// let centroid = Overrides { type_reduction: Some(TypeReduction::Centroid), ..Overrides::default() };
     /// let s = job.settings(&centroid)?;
-    /// assert_eq!((s.alpha, s.unused_alpha), (Alpha::ZERO, Some(Alpha::try_new(0.8)?)));
+    /// assert_eq!((s.alpha(), s.unused_alpha()), (Alpha::ZERO, Some(Alpha::try_new(0.8)?)));
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn settings(&self, overrides: &Overrides) -> Result<Settings, Error> {
