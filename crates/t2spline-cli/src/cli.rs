@@ -39,6 +39,15 @@ pub enum Command {
     /// Write the exact curves of a run (crisp, defuzzified, six layers) as
     /// rational B-splines in a CAD file: DXF, STEP, IGES or OBJ.
     Export(ExportArgs),
+    /// The membership grades of points in the fuzzy curve or surface as a
+    /// set: CSV with the columns x,y[,z],upper,primary,lower.
+    Membership(MembershipArgs),
+    /// The region a fuzzy curve can occupy at a level, as GeoJSON polygons
+    /// (one Feature per membership function; 3-D curves per plane).
+    Region(RegionArgs),
+    /// The fuzzy value at a station: the y-intervals of a curve at x = X0, or
+    /// the z-intervals of a surface at (X0, Y0), at each level (JSON).
+    Section(SectionArgs),
     /// Time the sampling engine: one line per case with the median of 5 runs.
     Bench(BenchArgs),
 }
@@ -335,6 +344,66 @@ pub struct ExportArgs {
     pub alpha: Option<f64>,
     #[command(flatten)]
     pub reduction: ReductionArg,
+}
+
+/// Arguments of `t2spline membership`.
+#[derive(Debug, Args)]
+pub struct MembershipArgs {
+    /// The job file; `-` reads standard input.
+    pub job: PathBuf,
+    /// The points: CSV with the header x,y (or x,y,z), one point per row.
+    pub points: PathBuf,
+    /// Write the grades here instead of standard output (`-` is standard
+    /// output).
+    #[arg(short, long, value_name = "FILE")]
+    pub output: Option<PathBuf>,
+}
+
+/// Arguments of `t2spline region`.
+#[derive(Debug, Args)]
+pub struct RegionArgs {
+    /// The job file (a curve); `-` reads standard input.
+    pub job: PathBuf,
+    /// The level alpha in [0, 1].
+    #[arg(long, value_name = "A", allow_negative_numbers = true)]
+    pub alpha: f64,
+    /// Write the GeoJSON here instead of standard output (`-` is standard
+    /// output).
+    #[arg(short, long, value_name = "FILE")]
+    pub output: Option<PathBuf>,
+    /// The largest distance between the outline and the true region [default:
+    /// 1e-6 of the diagonal of the crisp control points' bounding box].
+    #[arg(long, value_name = "T", allow_negative_numbers = true)]
+    pub tolerance: Option<f64>,
+}
+
+/// Arguments of `t2spline section`.
+#[derive(Debug, Args)]
+pub struct SectionArgs {
+    /// The job file; `-` reads standard input.
+    pub job: PathBuf,
+    /// The station of a plane curve: the vertical line x = X0.
+    #[arg(
+        long,
+        value_name = "X0",
+        allow_negative_numbers = true,
+        conflicts_with = "at"
+    )]
+    pub x: Option<f64>,
+    /// The station of a surface: the vertical line through (X0, Y0).
+    #[arg(long, value_name = "X0,Y0", allow_negative_numbers = true)]
+    pub at: Option<String>,
+    /// The levels: N equally spaced from 0 to 1 (at least 2).
+    #[arg(long, value_name = "N", default_value_t = 11)]
+    pub levels: u64,
+    /// Write the JSON here instead of standard output (`-` is standard
+    /// output).
+    #[arg(short, long, value_name = "FILE")]
+    pub output: Option<PathBuf>,
+    /// The largest error of an interval end (plane curves) [default: 1e-6 of
+    /// the diagonal of the crisp control points' bounding box].
+    #[arg(long, value_name = "T", allow_negative_numbers = true)]
+    pub tolerance: Option<f64>,
 }
 
 /// Arguments of `t2spline bench`.

@@ -83,6 +83,7 @@ mod prepared;
 mod pretty;
 mod printable;
 mod readings;
+pub mod set;
 mod summary;
 mod table;
 mod target;

@@ -941,6 +941,50 @@ pub enum Error {
         values: usize,
     },
 
+    /// A point whose membership is asked has a coordinate that is NaN or
+    /// infinite.
+    ///
+    /// ```
+    /// # use t2spline::{Error, FuzzyCurve, Nt2Number, Nt2Point};
+    /// # let n = |c: f64| Nt2Number::try_crisp(c);
+    /// # let c = FuzzyCurve::try_new(1, vec![Nt2Point::new([n(0.0)?, n(0.0)?]), Nt2Point::new([n(1.0)?, n(1.0)?])], vec![1.0, 1.0], None)?;
+    /// let e = c.memberships(&[[0.0, 0.0], [1.0, f64::NAN]]).unwrap_err();
+    /// assert_eq!(e.to_string(), "query point 1: y = NaN is not a finite number");
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("query point {index}: {axis} = {value} is not a finite number")]
+    QueryPoint {
+        /// The point's index (0-based) in the list given.
+        index: usize,
+        /// The coordinate.
+        axis: Axis,
+        /// The value.
+        value: f64,
+    },
+
+    /// The tolerance of a region's outline is not a positive finite number,
+    /// or is finer than the outline can be computed (`least`: the size of
+    /// the region's box times 1e-8, the resolution of the polygon union's
+    /// integer grid with room for rounding).
+    #[error("tolerance = {} must be a positive number of at least {}", Num(*value), Num(*least))]
+    Tolerance {
+        /// The tolerance given.
+        value: f64,
+        /// The finest tolerance allowed for this curve.
+        least: f64,
+    },
+
+    /// A membership grid asks for more cells than [`crate::set::MAX_GRID_CELLS`].
+    #[error("a membership grid of {columns} x {rows} cells is more than the limit of {limit}")]
+    GridTooLarge {
+        /// Cells along x.
+        columns: usize,
+        /// Cells along y.
+        rows: usize,
+        /// The limit on their product.
+        limit: usize,
+    },
+
     /// An index given to an accessor is past the end of what it indexes.
     ///
     /// ```

@@ -100,6 +100,7 @@ pub mod pipeline;
 mod quadrature;
 pub mod reduction;
 pub mod sampling;
+pub mod set;
 // Generators for property tests: a value they cannot build is a failing
 // test, so they may `expect`.
 #[cfg(any(test, feature = "proptest"))]

@@ -6,11 +6,14 @@ mod bench;
 mod export;
 mod fit;
 mod fuzzify;
+mod membership;
 mod plot;
 pub mod prepare;
+mod region;
 mod report;
 mod results;
 mod run;
+mod section;
 mod validate;
 
 use crate::cli::{Cli, Command};
@@ -25,6 +28,9 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<()> {
         Command::Fit(args) => fit::fit(args),
         Command::Fuzzify(args) => fuzzify::fuzzify(args),
         Command::Export(args) => export::export(&args),
+        Command::Membership(args) => membership::membership(&args),
+        Command::Region(args) => region::region(&args),
+        Command::Section(args) => section::section(&args),
         Command::Bench(args) => bench::bench(&args),
     }
 }

@@ -33,7 +33,7 @@
 #![cfg_attr(not(test), deny(clippy::indexing_slicing))]
 
 mod data;
-mod tokens;
+pub(crate) mod tokens;
 
 pub use data::data_json;
 

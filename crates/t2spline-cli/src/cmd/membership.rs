@@ -1,0 +1,75 @@
+//! `t2spline membership JOB.json POINTS.csv [-o OUT.csv]`: the membership
+//! grades of query points in the fuzzy curve or surface as a set.
+
+use t2spline::job::{Model, ModelVisitor};
+use t2spline::set::Grades;
+use t2spline::{FuzzyCurve, FuzzySurface};
+use t2spline_io::set::{read_points, write_membership_csv, QueryPoints};
+
+use super::prepare::OptionError;
+use crate::cli::MembershipArgs;
+use crate::output::{read_job, Inputs, Outputs};
+
+pub fn membership(args: &MembershipArgs) -> anyhow::Result<()> {
+    let inputs = Inputs::of([args.job.as_path(), args.points.as_path()]);
+    if let Some(out) = &args.output {
+        inputs.check("--output", out)?;
+    }
+    let job = read_job(&args.job)?;
+    let points = read_points(&args.points)?;
+    let (model_dimension, what) = match &job.model {
+        Model::Planar(_) => (2, "a plane curve"),
+        Model::Spatial(_) => (3, "a space curve"),
+        Model::Surface(_) => (3, "a surface"),
+        _ => (0, "of a kind this command does not know"),
+    };
+    if points.dimension() != model_dimension {
+        let header = if model_dimension == 2 { "x,y" } else { "x,y,z" };
+        return Err(OptionError {
+            option: "POINTS",
+            message: format!(
+                "{}: the job is {what}, so the header must be {header}",
+                t2spline_io::printable(&args.points.display().to_string())
+            ),
+        }
+        .into());
+    }
+    let bytes = job.model.visit(Grade(&points))?;
+    let mut out = Outputs::default();
+    out.to(args.output.as_deref(), bytes);
+    out.commit()
+}
+
+/// The grades of the query points, as CSV bytes.
+struct Grade<'a>(&'a QueryPoints);
+
+impl ModelVisitor for Grade<'_> {
+    type Output = anyhow::Result<Vec<u8>>;
+
+    fn curve<const D: usize>(self, curve: &FuzzyCurve<D>) -> Self::Output {
+        let points = same_dimension::<D>(self.0);
+        let grades = curve.memberships(&points)?;
+        csv(&points, &grades)
+    }
+
+    fn surface<const D: usize>(self, surface: &FuzzySurface<D>) -> Self::Output {
+        let points = same_dimension::<D>(self.0);
+        let grades = surface.memberships(&points)?;
+        csv(&points, &grades)
+    }
+}
+
+/// The points as arrays of `D` coordinates (the dimension was checked).
+fn same_dimension<const D: usize>(points: &QueryPoints) -> Vec<[f64; D]> {
+    let take = |p: &[f64]| std::array::from_fn(|c| p.get(c).copied().unwrap_or(0.0));
+    match points {
+        QueryPoints::Plane(p) => p.iter().map(|p| take(p)).collect(),
+        QueryPoints::Space(p) => p.iter().map(|p| take(p)).collect(),
+    }
+}
+
+fn csv<const D: usize>(points: &[[f64; D]], grades: &[Grades]) -> anyhow::Result<Vec<u8>> {
+    let mut bytes = Vec::new();
+    write_membership_csv(&mut bytes, points, grades)?;
+    Ok(bytes)
+}

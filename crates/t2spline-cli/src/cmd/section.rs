@@ -1,0 +1,99 @@
+//! `t2spline section JOB.json --x X0 | --at X0,Y0 [--levels N] [-o OUT.json]`:
+//! the fuzzy value at a station.
+
+use t2spline::job::Model;
+use t2spline::Alpha;
+use t2spline_io::set::{write_section_json, Station};
+
+use super::prepare::OptionError;
+use crate::cli::SectionArgs;
+use crate::output::{read_job, Inputs, Outputs};
+
+/// Levels at most.
+const MAX_LEVELS: u64 = 1001;
+
+pub fn section(args: &SectionArgs) -> anyhow::Result<()> {
+    if let Some(out) = &args.output {
+        Inputs::of([args.job.as_path()]).check("--output", out)?;
+    }
+    let levels = levels(args.levels)?;
+    let at = args.at.as_deref().map(parse_at).transpose()?;
+    let job = read_job(&args.job)?;
+    let tolerance_error = |e: t2spline::Error| match e {
+        t2spline::Error::Tolerance { .. } => anyhow::Error::from(OptionError {
+            option: "--tolerance",
+            message: e.to_string(),
+        }),
+        other => other.into(),
+    };
+    let (station, sections) = match (&job.model, args.x, at) {
+        (Model::Planar(c), Some(x0), None) => (
+            Station::X(x0),
+            c.sections(x0, &levels, args.tolerance).map_err(tolerance_error)?,
+        ),
+        (Model::Surface(s), None, Some([x0, y0])) => {
+            if args.tolerance.is_some() {
+                return Err(OptionError {
+                    option: "--tolerance",
+                    message: "applies to plane curves; a surface's interval ends are refined to about 1e-9 of its height".into(),
+                }
+                .into());
+            }
+            (Station::Xy(x0, y0), s.sections([x0, y0], &levels)?)
+        }
+        (Model::Planar(_), _, _) => return Err(missing("--x", "the job is a plane curve: give its station as --x X0")),
+        (Model::Surface(_), _, _) => return Err(missing("--at", "the job is a surface: give its station as --at X0,Y0")),
+        _ => {
+            return Err(missing(
+                "JOB",
+                "sections are taken of plane curves (--x) and surfaces (--at); for a space curve, ask `t2spline region` for its projections",
+            ))
+        }
+    };
+    let mut bytes = Vec::new();
+    write_section_json(&mut bytes, station, &sections)?;
+    let mut out = Outputs::default();
+    out.to(args.output.as_deref(), bytes);
+    out.commit()
+}
+
+fn missing(option: &'static str, message: &str) -> anyhow::Error {
+    OptionError {
+        option,
+        message: message.to_owned(),
+    }
+    .into()
+}
+
+/// `n` levels from 0 to 1.
+fn levels(n: u64) -> anyhow::Result<Vec<Alpha>> {
+    if !(2..=MAX_LEVELS).contains(&n) {
+        return Err(missing(
+            "--levels",
+            &format!("{n} is outside 2 ..= {MAX_LEVELS}"),
+        ));
+    }
+    Ok((0..n)
+        .filter_map(|k| Alpha::try_new(k as f64 / (n - 1) as f64).ok())
+        .collect())
+}
+
+/// `X0,Y0` as two finite numbers.
+fn parse_at(text: &str) -> anyhow::Result<[f64; 2]> {
+    let parts: Vec<&str> = text.split(',').map(str::trim).collect();
+    let numbers: Vec<f64> = parts
+        .iter()
+        .filter_map(|p| p.parse::<f64>().ok())
+        .filter(|x| x.is_finite())
+        .collect();
+    match (parts.len(), numbers.as_slice()) {
+        (2, &[x, y]) => Ok([x, y]),
+        _ => Err(missing(
+            "--at",
+            &format!(
+                "`{}` is not two finite numbers X0,Y0",
+                t2spline_io::printable(text)
+            ),
+        )),
+    }
+}

@@ -1,0 +1,230 @@
+//! Query points: a CSV file with the header `x,y` or `x,y,z`, one point per row.
+
+use std::path::Path;
+
+use t2spline::{Num, MAX_MAGNITUDE};
+
+use crate::job::read_text;
+use crate::readings::tokens::{records, Field};
+use crate::{Error, Problem};
+
+/// Rows of a query-point file at most (ten million: 240 MB of coordinates).
+pub const MAX_QUERY_POINTS: usize = 10_000_000;
+/// Problems listed at most; then a count of the rest.
+const MAX_PROBLEMS: usize = 20;
+
+/// The points of a query-point file, in file order.
+#[derive(Clone, Debug, PartialEq)]
+pub enum QueryPoints {
+    /// Header `x,y`.
+    Plane(Vec<[f64; 2]>),
+    /// Header `x,y,z`.
+    Space(Vec<[f64; 3]>),
+}
+
+impl QueryPoints {
+    /// The number of coordinates of each point.
+    #[must_use]
+    pub fn dimension(&self) -> usize {
+        match self {
+            QueryPoints::Plane(_) => 2,
+            QueryPoints::Space(_) => 3,
+        }
+    }
+
+    /// How many points.
+    #[must_use]
+    pub fn len(&self) -> usize {
+        match self {
+            QueryPoints::Plane(p) => p.len(),
+            QueryPoints::Space(p) => p.len(),
+        }
+    }
+
+    /// Whether there are none.
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+}
+
+/// Reads a query-point file.
+///
+/// # Errors
+/// The errors of [`read_text`] and of [`parse_points`].
+pub fn read_points(path: &Path) -> Result<QueryPoints, Error> {
+    let text = read_text(path)?;
+    parse_points(&text, &path.display().to_string())
+}
+
+/// Parses query points: a header `x,y` or `x,y,z` (comma- or
+/// semicolon-separated, as spreadsheets write; with semicolons a decimal comma
+/// counts as a point), then one finite number of magnitude at most 1e150 per
+/// field. `source` names the file in messages.
+///
+/// # Errors
+/// [`Error::Invalid`] listing every problem with its line and column: a wrong
+/// header, a missing or extra field, a value that is not a number or is out of
+/// range, unclosed quotes, no points, more than [`MAX_QUERY_POINTS`].
+///
+/// # Examples
+/// ```
+/// use t2spline_io::set::{parse_points, QueryPoints};
+/// let p = parse_points("x,y\n1,2\n3.5,-1\n", "p.csv")?;
+/// assert_eq!(p, QueryPoints::Plane(vec![[1.0, 2.0], [3.5, -1.0]]));
+/// let e = parse_points("x,y\n1,2\n3,two\n4\n", "p.csv").unwrap_err();
+/// assert_eq!(e.lines(), [
+///     "p.csv:3:3: y (column 2): `two` is not a number",
+///     "p.csv:4:2: y (column 2) is missing; every row has x,y",
+/// ]);
+/// # Ok::<(), t2spline_io::Error>(())
+/// ```
+pub fn parse_points(text: &str, source: &str) -> Result<QueryPoints, Error> {
+    let invalid = |problems: Vec<Problem>| Error::Invalid {
+        file: source.to_owned(),
+        problems,
+    };
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let first_line = text.lines().next().unwrap_or("");
+    let delimiter = if first_line.contains(';') { ';' } else { ',' };
+    let rows = records(text, delimiter).map_err(|q| {
+        invalid(vec![Problem {
+            line_column: Some((q.line, q.column)),
+            message: q.message.to_owned(),
+        }])
+    })?;
+    let mut rows = rows.into_iter();
+    let Some(header) = rows.next() else {
+        return Err(invalid(vec![Problem::new(
+            "empty: the first line must be the header x,y (or x,y,z)",
+        )]));
+    };
+    let names: Vec<String> = header
+        .fields
+        .iter()
+        .map(|f| f.text.trim().to_ascii_lowercase())
+        .collect();
+    let dimension = match names
+        .iter()
+        .map(String::as_str)
+        .collect::<Vec<_>>()
+        .as_slice()
+    {
+        ["x", "y"] => 2,
+        ["x", "y", "z"] => 3,
+        _ => {
+            return Err(invalid(vec![Problem {
+                line_column: Some((1, 1)),
+                message: format!(
+                    "the header must be x,y or x,y,z, not `{}`",
+                    crate::printable(first_line.trim_end())
+                ),
+            }]))
+        }
+    };
+    let axes = ["x", "y", "z"];
+    let mut points: Vec<[f64; 3]> = Vec::new();
+    let mut problems = Vec::new();
+    let mut more = 0usize;
+    let mut push = |problems: &mut Vec<Problem>, line, column, message| {
+        if problems.len() < MAX_PROBLEMS {
+            problems.push(Problem {
+                line_column: Some((line, column)),
+                message,
+            });
+        } else {
+            more += 1;
+        }
+    };
+    let mut count = 0usize;
+    for row in rows {
+        count += 1;
+        if count > MAX_QUERY_POINTS {
+            let line = row.fields.first().map_or(row.end.0, |f| f.line);
+            push(
+                &mut problems,
+                line,
+                1,
+                format!("more than {MAX_QUERY_POINTS} points; split the file"),
+            );
+            break;
+        }
+        let mut p = [0.0; 3];
+        for (c, axis) in axes.iter().enumerate().take(dimension) {
+            match row.fields.get(c) {
+                Some(f) => match number(f, delimiter) {
+                    Ok(x) => p[c] = x,
+                    Err(m) => push(
+                        &mut problems,
+                        f.line,
+                        f.column,
+                        format!("{axis} (column {}): {m}", c + 1),
+                    ),
+                },
+                None => push(
+                    &mut problems,
+                    row.end.0,
+                    row.end.1,
+                    format!(
+                        "{axis} (column {}) is missing; every row has {}",
+                        c + 1,
+                        axes[..dimension].join(",")
+                    ),
+                ),
+            }
+        }
+        if let Some(f) = row.fields.get(dimension) {
+            push(
+                &mut problems,
+                f.line,
+                f.column,
+                format!(
+                    "column {} is one too many; every row has {}",
+                    dimension + 1,
+                    axes[..dimension].join(",")
+                ),
+            );
+        }
+        points.push(p);
+    }
+    if more > 0 {
+        problems.push(Problem::new(format!("... and {more} more problem(s)")));
+    }
+    if points.is_empty() && problems.is_empty() {
+        problems.push(Problem::new(
+            "no points: after the header, one point per row is needed",
+        ));
+    }
+    if !problems.is_empty() {
+        return Err(invalid(problems));
+    }
+    Ok(match dimension {
+        2 => QueryPoints::Plane(points.into_iter().map(|p| [p[0], p[1]]).collect()),
+        _ => QueryPoints::Space(points),
+    })
+}
+
+/// A coordinate: a finite number of magnitude at most 1e150.
+fn number(field: &Field, delimiter: char) -> Result<f64, String> {
+    let text = field.text.trim();
+    let decimal = if delimiter == ';' && text.contains(',') && !text.contains('.') {
+        text.replacen(',', ".", 1)
+    } else {
+        text.to_owned()
+    };
+    match decimal.parse::<f64>() {
+        Ok(x) if x.is_finite() && x.abs() <= MAX_MAGNITUDE => Ok(x),
+        Ok(x) if x.is_finite() => Err(format!("{} is outside [-1e150, 1e150]", Num(x))),
+        Ok(_)
+            if !text.to_ascii_lowercase().contains("inf")
+                && !text.to_ascii_lowercase().contains("nan") =>
+        {
+            Err(format!(
+                "`{}` is outside [-1e150, 1e150]",
+                crate::printable(text)
+            ))
+        }
+        _ if text.is_empty() => Err("empty; every coordinate needs a number".into()),
+        _ => Err(format!("`{}` is not a number", crate::printable(text))),
+    }
+}

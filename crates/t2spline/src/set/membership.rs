@@ -1,0 +1,220 @@
+//! The membership grade of a point in the fuzzy curve (docs/method.md §10):
+//!
+//! ```text
+//! mu_m(p) = sup over t of  min( top(t), min over c of mu_{m,c,t}(p_c) )
+//! ```
+//! found as the distance's maximum is: every piece of every knot span scanned,
+//! every local peak of the scan refined.
+
+use crate::error::Error;
+use crate::fuzzy::Membership;
+use crate::golden_section::golden_section_min;
+use crate::pipeline::FuzzyCurve;
+use crate::set::cut_lines::{CutLines, MEMBERSHIPS};
+use crate::set::scan::{pieces, rational_basis, SpanPiece};
+
+/// The grades of one point under the three membership functions, each in
+/// `[0, 1]` (the lower in `[0, h]`), with `lower ≤ primary ≤ upper`.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct Grades {
+    /// `mu_upper(p)`: the largest level at which some curve with control
+    /// points inside their upper cuts passes through `p`.
+    pub upper: f64,
+    /// `mu_primary(p)`, the same with the primary cuts.
+    pub primary: f64,
+    /// `mu_lower(p)`, the same with the lower cuts.
+    pub lower: f64,
+}
+
+impl Grades {
+    /// The grade under `membership`.
+    #[must_use]
+    pub fn get(&self, membership: Membership) -> f64 {
+        match membership {
+            Membership::Upper => self.upper,
+            Membership::Primary => self.primary,
+            Membership::Lower => self.lower,
+        }
+    }
+
+    /// The three grades from the sups found for each function, kept in the
+    /// order `lower ≤ primary ≤ upper`, which holds exactly (every lower cut
+    /// lies inside the primary cut at the same level, and that inside the
+    /// upper) and which separate searches could break in the last bits.
+    pub(crate) fn ordered([upper, primary, lower]: [f64; 3]) -> Self {
+        let upper = upper.clamp(0.0, 1.0);
+        let primary = primary.clamp(0.0, upper);
+        Grades {
+            upper,
+            primary,
+            lower: lower.clamp(0.0, primary),
+        }
+    }
+}
+
+/// Scan steps per piece of a knot span.
+const SCAN_STEPS: usize = 32;
+/// The width, relative to its piece, to which golden sections narrow the
+/// bracket of a peak. The grade can have a corner at its peak (where two
+/// coordinates' grades cross), so it is not flat there: the bracket is
+/// narrowed far below the 1e-9 promised for the grade.
+const REFINEMENT: f64 = 1e-13;
+
+/// The membership functions of a curve, ready to grade many points.
+#[derive(Clone, Debug)]
+pub(crate) struct Grader<'a, const D: usize> {
+    curve: &'a FuzzyCurve<D>,
+    lines: [CutLines<D>; 3],
+    pieces: Vec<SpanPiece>,
+    /// Per piece and function: the top, and the box at level 0 of the
+    /// control points that count there (which holds every box of the piece).
+    hulls: Vec<[(f64, [[f64; 2]; D]); 3]>,
+}
+
+impl<'a, const D: usize> Grader<'a, D> {
+    pub(crate) fn new(curve: &'a FuzzyCurve<D>) -> Self {
+        let lines = MEMBERSHIPS.map(|m| CutLines::of(curve.points(), m));
+        let pieces = pieces(curve.knots(), curve.weights());
+        let p = curve.degree();
+        let hulls = pieces
+            .iter()
+            .map(|piece| {
+                let first = piece.first(p);
+                std::array::from_fn(|k| {
+                    let l = &lines[k];
+                    let mut hull = [[f64::INFINITY, f64::NEG_INFINITY]; D];
+                    for ends in &l.ends[first..=first + p] {
+                        for (h, e) in hull.iter_mut().zip(ends) {
+                            h[0] = h[0].min(e.foot_left);
+                            h[1] = h[1].max(e.foot_right);
+                        }
+                    }
+                    (l.top_of(first, p + 1), hull)
+                })
+            })
+            .collect();
+        Grader {
+            curve,
+            lines,
+            pieces,
+            hulls,
+        }
+    }
+
+    /// The grades of `p`.
+    pub(crate) fn grades(&self, p: &[f64; D]) -> Grades {
+        let mut best = [0.0_f64; 3];
+        let mut basis = vec![0.0; self.curve.order()];
+        let mut scan = Vec::with_capacity(SCAN_STEPS + 1);
+        for (piece, hulls) in self.pieces.iter().zip(&self.hulls) {
+            for k in 0..3 {
+                let (top, hull) = &hulls[k];
+                // The convex hull property: every box of the piece lies in the
+                // box of its control points' cuts at level 0.
+                if *top <= best[k] || !hull.iter().zip(p).all(|(h, &x)| h[0] <= x && x <= h[1]) {
+                    continue;
+                }
+                best[k] = best[k].max(self.peak(piece, k, *top, p, &mut basis, &mut scan));
+            }
+        }
+        Grades::ordered(best)
+    }
+
+    /// The largest grade of `p` on one piece under function `k`.
+    fn peak(
+        &self,
+        piece: &SpanPiece,
+        k: usize,
+        top: f64,
+        p: &[f64; D],
+        basis: &mut [f64],
+        scan: &mut Vec<(f64, f64)>,
+    ) -> f64 {
+        let (knots, weights) = (self.curve.knots(), self.curve.weights());
+        let first = piece.first(self.curve.degree());
+        let lines = &self.lines[k];
+        let mut grade = |t: f64| {
+            rational_basis(knots, weights, piece.span, t, basis);
+            lines.grade(first, basis, top, p)
+        };
+        scan.clear();
+        scan.extend(piece.params(SCAN_STEPS).map(|t| (grade(t), t)));
+        let tolerance = REFINEMENT * (piece.hi - piece.lo);
+        let mut best = f64::NEG_INFINITY;
+        for j in 0..=SCAN_STEPS {
+            let (g, _) = scan[j];
+            best = best.max(g);
+            let rises = j == 0 || scan[j - 1].0 < g;
+            let falls = j == SCAN_STEPS || scan[j + 1].0 <= g;
+            // Every local peak above the best so far is refined; a peak that
+            // is already at the top cannot rise.
+            if rises && falls && g < top && g.is_finite() {
+                let bracket = [scan[j.saturating_sub(1)].1, scan[(j + 1).min(SCAN_STEPS)].1];
+                let (neg, _) = golden_section_min(|t| -grade(t), bracket, tolerance);
+                best = best.max(-neg);
+            }
+        }
+        best
+    }
+}
+
+impl<const D: usize> FuzzyCurve<D> {
+    /// The membership grades of the point `p` in the fuzzy curve as a set
+    /// (docs/method.md §10): for each membership function `m`, the largest
+    /// level `alpha` at which some curve whose control points lie inside
+    /// their `m`-cuts at `alpha` passes through `p`; 0 where none does.
+    ///
+    /// The sup over the domain is found by a scan of every piece of every
+    /// knot span with each local peak refined by golden sections, accurate to
+    /// about 1e-12 (the grade is continuous and, on a piece, a minimum of
+    /// ratios of polynomials). Numbers with their own heights are handled:
+    /// the lower function's top at `t` is the least height of the control
+    /// points that count there.
+    ///
+    /// # Errors
+    /// [`Error::QueryPoint`] if a coordinate of `p` is NaN or infinite.
+    ///
+    /// # Examples
+    /// ```
+    /// # use t2spline::{FuzzyCurve, Nt2Number, Nt2Point};
+    /// let n = |c: f64| Nt2Number::try_new(c, [c - 1.0, c + 1.0], [c - 0.5, c + 0.5], [c - 0.25, c + 0.25], 0.5);
+    /// let points = vec![Nt2Point::new([n(0.0)?, n(0.0)?]), Nt2Point::new([n(4.0)?, n(0.0)?])];
+    /// let line = FuzzyCurve::try_new(1, points, vec![1.0, 1.0], None)?;
+    /// // On the crisp curve: 1, 1 and h.
+    /// let on = line.membership(&[2.0, 0.0])?;
+    /// assert_eq!((on.upper, on.primary, on.lower), (1.0, 1.0, 0.5));
+    /// // Half-way to the upper cut's edge in y: the upper grade is 1/2.
+    /// let off = line.membership(&[2.0, 0.5])?;
+    /// assert!((off.upper - 0.5).abs() < 1e-12 && off.primary.abs() < 1e-12);
+    /// # Ok::<(), t2spline::Error>(())
+    /// ```
+    pub fn membership(&self, p: &[f64; D]) -> Result<Grades, Error> {
+        check_point(0, p)?;
+        Ok(Grader::new(self).grades(p))
+    }
+
+    /// [`FuzzyCurve::membership`] of many points, sharing the preparation.
+    ///
+    /// # Errors
+    /// [`Error::QueryPoint`] naming the first point with a coordinate that
+    /// is NaN or infinite.
+    pub fn memberships(&self, points: &[[f64; D]]) -> Result<Vec<Grades>, Error> {
+        for (i, p) in points.iter().enumerate() {
+            check_point(i, p)?;
+        }
+        let grader = Grader::new(self);
+        Ok(points.iter().map(|p| grader.grades(p)).collect())
+    }
+}
+
+/// Refuses a query point with a coordinate that is not finite; `index` names
+/// it in the message.
+pub(crate) fn check_point<const D: usize>(index: usize, p: &[f64; D]) -> Result<(), Error> {
+    for (axis, &value) in crate::Axis::of::<D>().into_iter().zip(p) {
+        if !value.is_finite() {
+            return Err(Error::QueryPoint { index, axis, value });
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,170 @@
+//! Station sections of a plane curve: the fuzzy value of y at `x = x0`
+//! (docs/method.md §10), every height some admissible curve takes there.
+
+use crate::error::Error;
+use crate::fuzzy::{Alpha, Membership};
+use crate::pipeline::FuzzyCurve;
+use crate::set::cut_lines::MEMBERSHIPS;
+use crate::set::sweep::{hull_of, PlaneBox, Sweep, TooManyBoxes};
+
+/// The section of every membership function at one level: the intervals of
+/// the station's value, in increasing order (several where the curve passes
+/// the station more than once); `None` where the function has no cut at
+/// this level, empty where the region does not reach the station.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct SectionLevel {
+    /// The level.
+    pub alpha: f64,
+    /// The upper function's intervals.
+    pub upper: Option<Vec<[f64; 2]>>,
+    /// The primary function's intervals.
+    pub primary: Option<Vec<[f64; 2]>>,
+    /// The lower function's intervals.
+    pub lower: Option<Vec<[f64; 2]>>,
+}
+
+impl SectionLevel {
+    /// The intervals of one function.
+    #[must_use]
+    pub fn get(&self, membership: Membership) -> Option<&[[f64; 2]]> {
+        match membership {
+            Membership::Upper => self.upper.as_deref(),
+            Membership::Primary => self.primary.as_deref(),
+            Membership::Lower => self.lower.as_deref(),
+        }
+    }
+}
+
+impl FuzzyCurve<2> {
+    /// The section `{ y : (x0, y) in region }` of the region of `membership`
+    /// at `alpha`, as intervals in increasing order; `None` if the function
+    /// has no cut at `alpha` anywhere. Interval ends are within `tolerance`
+    /// (`None`: the [default](FuzzyCurve::default_tolerance)): the region's
+    /// sampled sweep (as for [`FuzzyCurve::region`], not grown) is cut by the
+    /// line, and intervals closer than half the tolerance are joined.
+    ///
+    /// # Errors
+    /// [`Error::QueryPoint`] if `x0` is not finite; [`Error::Tolerance`] as
+    /// for [`FuzzyCurve::region`].
+    ///
+    /// # Examples
+    /// ```
+    /// # use t2spline::{Alpha, FuzzyCurve, Membership, Nt2Number, Nt2Point};
+    /// let n = |c: f64| Nt2Number::try_new(c, [c - 1.0, c + 1.0], [c - 0.5, c + 0.5], [c, c], 1.0);
+    /// let points = vec![Nt2Point::new([n(0.0)?, n(0.0)?]), Nt2Point::new([n(4.0)?, n(2.0)?])];
+    /// let line = FuzzyCurve::try_new(1, points, vec![1.0, 1.0], None)?;
+    /// // At x = 2 the boxes with t in [1/4, 3/4] count: y from 0.5 − 1 to 1.5 + 1.
+    /// let s = line.section(2.0, Membership::Upper, Alpha::ZERO, Some(1e-9))?.unwrap();
+    /// assert_eq!(s.len(), 1);
+    /// assert!((s[0][0] + 0.5).abs() < 1e-8 && (s[0][1] - 2.5).abs() < 1e-8);
+    /// # Ok::<(), t2spline::Error>(())
+    /// ```
+    pub fn section(
+        &self,
+        x0: f64,
+        membership: Membership,
+        alpha: Alpha,
+        tolerance: Option<f64>,
+    ) -> Result<Option<Vec<[f64; 2]>>, Error> {
+        crate::set::membership::check_point(0, &[x0])?;
+        let tolerance = self.checked_tolerance(tolerance)?;
+        let sweep = Sweep::of(self, membership, alpha.get(), [0, 1], 0.25 * tolerance).map_err(
+            |TooManyBoxes| Error::Tolerance {
+                value: tolerance,
+                least: 2.0 * tolerance,
+            },
+        )?;
+        if sweep.runs.is_empty() {
+            return Ok(None);
+        }
+        let mut intervals = Vec::new();
+        for run in &sweep.runs {
+            if run.len() == 1 {
+                intervals.extend(cut(&run[0], &run[0], x0));
+            }
+            for w in run.windows(2) {
+                intervals.extend(cut(&w[0], &w[1], x0));
+            }
+        }
+        Ok(Some(join(intervals, 0.5 * tolerance)))
+    }
+
+    /// The sections of all three functions at each level of `levels`.
+    ///
+    /// # Errors
+    /// As [`FuzzyCurve::section`].
+    pub fn sections(
+        &self,
+        x0: f64,
+        levels: &[Alpha],
+        tolerance: Option<f64>,
+    ) -> Result<Vec<SectionLevel>, Error> {
+        levels
+            .iter()
+            .map(|&alpha| {
+                let [upper, primary, lower] =
+                    MEMBERSHIPS.map(|m| self.section(x0, m, alpha, tolerance));
+                Ok(SectionLevel {
+                    alpha: alpha.get(),
+                    upper: upper?,
+                    primary: primary?,
+                    lower: lower?,
+                })
+            })
+            .collect()
+    }
+
+    /// `tolerance`, or the default, checked as for regions.
+    fn checked_tolerance(&self, tolerance: Option<f64>) -> Result<f64, Error> {
+        let tolerance = tolerance.unwrap_or_else(|| self.default_tolerance());
+        let least = crate::set::region::LEAST_RELATIVE_TOLERANCE * self.default_tolerance()
+            / crate::set::region::DEFAULT_RELATIVE_TOLERANCE;
+        if tolerance.is_finite() && tolerance > 0.0 && tolerance >= least {
+            Ok(tolerance)
+        } else {
+            Err(Error::Tolerance {
+                value: tolerance,
+                least,
+            })
+        }
+    }
+}
+
+/// The interval where the line `x = x0` meets the convex hull of two boxes.
+fn cut(b0: &PlaneBox, b1: &PlaneBox, x0: f64) -> Option<[f64; 2]> {
+    let hull = hull_of(b0, b1, 0.0);
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+    let n = hull.len();
+    for i in 0..n {
+        let (a, b) = (hull[i], hull[(i + 1) % n]);
+        let (xa, xb) = (a[0].min(b[0]), a[0].max(b[0]));
+        if x0 < xa || x0 > xb {
+            continue;
+        }
+        let ys: [f64; 2] = if xa == xb {
+            [a[1], b[1]]
+        } else {
+            let y = a[1] + (x0 - a[0]) * (b[1] - a[1]) / (b[0] - a[0]);
+            [y, y]
+        };
+        for y in ys {
+            lo = lo.min(y);
+            hi = hi.max(y);
+        }
+    }
+    (lo <= hi).then_some([lo, hi])
+}
+
+/// The union of `intervals`, joining those less than `gap` apart.
+fn join(mut intervals: Vec<[f64; 2]>, gap: f64) -> Vec<[f64; 2]> {
+    intervals.sort_by(|a, b| a[0].total_cmp(&b[0]));
+    let mut out: Vec<[f64; 2]> = Vec::new();
+    for iv in intervals {
+        match out.last_mut() {
+            Some(last) if iv[0] <= last[1] + gap => last[1] = last[1].max(iv[1]),
+            _ => out.push(iv),
+        }
+    }
+    out
+}
