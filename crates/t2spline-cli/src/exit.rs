@@ -125,12 +125,17 @@ pub struct JobsFailed {
 
 impl std::fmt::Display for JobsFailed {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let written = if self.failed == self.total {
+            "no job's results were written"
+        } else {
+            "the others were written"
+        };
         write!(
             f,
-            "{} of {} jobs failed, the others were written (see {})",
+            "{} of {} jobs failed, {written} (see {})",
             self.failed,
             self.total,
-            self.summary.display()
+            t2spline_io::printable(&self.summary.display().to_string())
         )
     }
 }
@@ -214,5 +219,15 @@ mod tests {
             "2 of 5 jobs failed, the others were written (see out/summary.csv)"
         );
         assert_eq!(Exit::of(&anyhow::Error::new(failed)), Read);
+        let all = JobsFailed {
+            failed: 3,
+            total: 3,
+            exit: Invalid,
+            summary: PathBuf::from("out/summary.csv"),
+        };
+        assert_eq!(
+            all.to_string(),
+            "3 of 3 jobs failed, no job's results were written (see out/summary.csv)"
+        );
     }
 }
