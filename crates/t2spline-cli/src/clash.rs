@@ -42,6 +42,19 @@ fn file_id(_: &std::fs::Metadata) -> Option<FileId> {
 struct Resolved {
     key: PathBuf,
     id: Option<FileId>,
+    /// A device, FIFO or socket: written through, never replaced, so that
+    /// two outputs may share one (`-o /dev/null --parquet /dev/null`).
+    stream: bool,
+}
+
+impl Resolved {
+    fn new(key: PathBuf, meta: Option<&std::fs::Metadata>) -> Resolved {
+        Resolved {
+            key,
+            id: meta.and_then(file_id),
+            stream: meta.is_some_and(|m| !m.is_file() && !m.is_dir()),
+        }
+    }
 }
 
 /// Canonical paths of folders, each looked up once (many outputs of a run of
@@ -103,40 +116,27 @@ impl Resolver {
         let (Some(parent), Some(name)) = (path.parent(), path.file_name()) else {
             // `/`, `.` or `..`: a folder, never a file created by name.
             let key = std::fs::canonicalize(path).unwrap_or_else(|_| absolute(path));
-            let id = std::fs::metadata(path).ok().as_ref().and_then(file_id);
-            return Resolved { key, id };
+            return Resolved::new(key, std::fs::metadata(path).ok().as_ref());
         };
         let (folder, exists) = self.folder(parent);
         if !exists {
-            return Resolved {
-                key: folder.join(name),
-                id: None,
-            };
+            return Resolved::new(folder.join(name), None);
         }
         match std::fs::symlink_metadata(path) {
             Ok(meta) if meta.file_type().is_symlink() => match std::fs::canonicalize(path) {
                 Ok(key) => {
-                    let id = std::fs::metadata(&key).ok().as_ref().and_then(file_id);
-                    Resolved { key, id }
+                    let meta = std::fs::metadata(&key).ok();
+                    Resolved::new(key, meta.as_ref())
                 }
                 // A dangling link names the file that writing through it
                 // creates.
                 Err(_) => match std::fs::read_link(path) {
                     Ok(target) if links > 0 => self.resolve_within(&folder.join(target), links - 1),
-                    _ => Resolved {
-                        key: folder.join(name),
-                        id: None,
-                    },
+                    _ => Resolved::new(folder.join(name), None),
                 },
             },
-            Ok(meta) => Resolved {
-                key: folder.join(name),
-                id: file_id(&meta),
-            },
-            Err(_) => Resolved {
-                key: folder.join(name),
-                id: None,
-            },
+            Ok(meta) => Resolved::new(folder.join(name), Some(&meta)),
+            Err(_) => Resolved::new(folder.join(name), None),
         }
     }
 }
@@ -185,6 +185,9 @@ impl Claims {
 
     /// The output file `path` of `option` (standard output, `-`, is no file).
     ///
+    /// A device or FIFO is checked against the inputs only: it is written
+    /// through, never replaced, and may take several outputs.
+    ///
     /// # Errors
     /// An [`OptionError`] of `option` if `path` is an input, the file of an
     /// output claimed before, or inside a folder claimed before, or holds one.
@@ -194,6 +197,9 @@ impl Claims {
         }
         let r = self.resolver.resolve(path);
         self.not_input(option, path, &r)?;
+        if r.stream {
+            return Ok(());
+        }
         let refuse = |message: String| Err(OptionError { option, message });
         if let Some(other) = self.files.get(&r.key).or_else(|| self.folders.get(&r.key)) {
             return refuse(same(path, other));

@@ -207,6 +207,12 @@ fn two_outputs_of_one_run_never_share_a_file() {
             ),
         ],
     );
+    // A device takes several outputs: it is written through, never replaced.
+    let o = run_in(
+        d,
+        &["run", "J.json", "-o", "/dev/null", "--parquet", "/dev/null"],
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
     // Side by side, every output is written.
     let o = run_in(
         d,
