@@ -24,7 +24,9 @@
 //!
 //! Limits, checked before the memory they guard is allocated: the file size
 //! of job files ([`MAX_FILE_BYTES`](crate::job::MAX_FILE_BYTES)),
-//! [`MAX_ROWS`] rows and [`MAX_POINTS`](crate::job::MAX_POINTS) stations.
+//! [`MAX_ROWS`] readings (rows after the header, blank lines not counted;
+//! splitting stops at the first row past the limit) and
+//! [`MAX_POINTS`](crate::job::MAX_POINTS) stations.
 //! The statistics that turn readings into fuzzy numbers are the core's
 //! ([`t2spline::fit::fuzzify`]); this module only reads.
 
