@@ -5,7 +5,7 @@
 //! |---|---|
 //! | 0 | success; also when the reader of standard output closed the pipe early |
 //! | 1 | internal error: a bug (a result that is not finite); nothing was written |
-//! | 2 | invalid input: a usage error (clap), an option value that breaks a rule, an output that would overwrite an input, or a job or data file that breaks a rule or a limit (JSON syntax, keys, SPEC rules, size, encoding); also any error of another layer (the options of `fit`, a figure `plot` cannot draw), which are about the input |
+//! | 2 | invalid input: a usage error (clap), an option value that breaks a rule, an output that would overwrite an input or another output of the run, or a job or data file that breaks a rule or a limit (JSON syntax, keys, SPEC rules, size, encoding); also any error of another layer (the options of `fit`, a figure `plot` cannot draw), which are about the input |
 //! | 3 | the job cannot be read (missing, not permitted, a folder, an I/O error) |
 //! | 4 | an output cannot be written (missing folder, not permitted, disk full, standard output closed or failing, a file with several hard links); existing outputs are untouched |
 //!
@@ -125,12 +125,17 @@ pub struct JobsFailed {
 
 impl std::fmt::Display for JobsFailed {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let written = if self.failed == self.total {
+            "no job's results were written"
+        } else {
+            "the others were written"
+        };
         write!(
             f,
-            "{} of {} jobs failed, the others were written (see {})",
+            "{} of {} jobs failed, {written} (see {})",
             self.failed,
             self.total,
-            self.summary.display()
+            t2spline_io::printable(&self.summary.display().to_string())
         )
     }
 }
@@ -214,5 +219,15 @@ mod tests {
             "2 of 5 jobs failed, the others were written (see out/summary.csv)"
         );
         assert_eq!(Exit::of(&anyhow::Error::new(failed)), Read);
+        let all = JobsFailed {
+            failed: 3,
+            total: 3,
+            exit: Invalid,
+            summary: PathBuf::from("out/summary.csv"),
+        };
+        assert_eq!(
+            all.to_string(),
+            "3 of 3 jobs failed, no job's results were written (see out/summary.csv)"
+        );
     }
 }

@@ -5,6 +5,7 @@
 //! problem, `t2spline: FILE:LINE:COLUMN: PLACE: RULE`, and the exit code tells
 //! their kind (see `exit.rs` and the README).
 
+mod clash;
 mod cli;
 mod cmd;
 mod exit;

@@ -9,8 +9,6 @@ use t2spline::job::Job;
 use t2spline_io::job::{read_text, read_text_from};
 use t2spline_io::{parse_job, write_all_atomic, Error};
 
-use crate::exit::OptionError;
-
 /// Whether the path names a standard stream.
 pub fn is_stdio(path: &Path) -> bool {
     path.as_os_str() == "-"
@@ -23,6 +21,13 @@ pub fn job_name(path: &Path) -> String {
     } else {
         path.display().to_string()
     }
+}
+
+/// A path as messages show it: control characters escaped
+/// ([`t2spline_io::printable`]), as the I/O crate's messages show file names,
+/// so that a hostile name cannot write to the terminal.
+pub fn shown(path: &Path) -> String {
+    t2spline_io::printable(&path.display().to_string())
 }
 
 /// The text at `path`, or of standard input for `-`, within the size limit and
@@ -82,61 +87,6 @@ fn stdout_was_closed() -> bool {
 #[cfg(not(unix))]
 fn stdout_was_closed() -> bool {
     false
-}
-
-/// The identity of an existing file: device and inode where there are
-/// such, else the canonical path; links and hard links resolve to the file.
-#[derive(Clone, Debug, PartialEq, Eq, Hash)]
-struct FileId(#[cfg(unix)] (u64, u64), #[cfg(not(unix))] PathBuf);
-
-impl FileId {
-    fn of(path: &Path) -> Option<FileId> {
-        #[cfg(unix)]
-        {
-            use std::os::unix::fs::MetadataExt;
-            std::fs::metadata(path)
-                .ok()
-                .map(|m| FileId((m.dev(), m.ino())))
-        }
-        #[cfg(not(unix))]
-        {
-            std::fs::canonicalize(path).ok().map(FileId)
-        }
-    }
-}
-
-/// The input files of a command (job and data files), so that no output
-/// overwrites one (`t2spline run job.json -o job.json`).
-#[derive(Debug, Default)]
-pub struct Inputs {
-    files: std::collections::HashMap<FileId, PathBuf>,
-}
-
-impl Inputs {
-    /// The files among `paths` (standard input is none).
-    pub fn of<'p>(paths: impl IntoIterator<Item = &'p Path>) -> Inputs {
-        let files = paths
-            .into_iter()
-            .filter(|p| !is_stdio(p))
-            .filter_map(|p| FileId::of(p).map(|id| (id, p.to_owned())))
-            .collect();
-        Inputs { files }
-    }
-
-    /// An error about `option` if writing `output` would overwrite an input.
-    pub fn check(&self, option: &'static str, output: &Path) -> Result<(), OptionError> {
-        match FileId::of(output).and_then(|id| self.files.get(&id)) {
-            Some(input) => Err(OptionError {
-                option,
-                message: format!(
-                    "{} is the input file {}: an output never overwrites its input",
-                    output.display(),
-                    input.display()
-                ),
-            }),
-            None => Ok(()),
-        }
-    }
 }
 
 /// The folders a run creates for its outputs, so that a failed run can remove

@@ -181,11 +181,6 @@ fn a_folder_of_jobs_follows_links_and_skips_what_is_not_a_file() {
         input.path().join("linked.json"),
     )
     .unwrap();
-    std::os::unix::fs::symlink(
-        elsewhere.path().join("gone.json"),
-        input.path().join("dangling.json"),
-    )
-    .unwrap();
     std::fs::create_dir(input.path().join("folder.json")).unwrap();
     std::fs::write(input.path().join("notes.txt"), "not a job").unwrap();
     let fifo = input.path().join("pipe.json");
@@ -200,6 +195,99 @@ fn a_folder_of_jobs_follows_links_and_skips_what_is_not_a_file() {
         std::fs::read(out.path().join("linked.json")).unwrap(),
         std::fs::read(out.path().join("a.json")).unwrap()
     );
+}
+
+/// A link named `*.json` that leads nowhere is a job that cannot be read,
+/// reported by its name, not skipped without a word.
+#[cfg(unix)]
+#[test]
+fn a_dangling_link_in_a_folder_of_jobs_is_reported() {
+    let input = jobs();
+    std::fs::remove_file(input.path().join("b.json")).unwrap();
+    std::os::unix::fs::symlink("gone.json", input.path().join("dangling.json")).unwrap();
+    let out = tempfile::tempdir().unwrap();
+    let o = run(&["run", "--jobs", s(input.path()), "-o", s(out.path())]);
+    assert_eq!(o.status.code(), Some(3), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("dangling.json: cannot read"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(
+        stderr(&o).contains("1 of 3 jobs failed, the others were written"),
+        "{}",
+        stderr(&o)
+    );
+    let summary = std::fs::read_to_string(out.path().join("summary.csv")).unwrap();
+    assert!(summary.contains("dangling,"), "{summary}");
+    assert!(out.path().join("a.json").is_file());
+}
+
+#[test]
+fn when_every_job_fails_no_result_is_said_to_be_written() {
+    let input = jobs();
+    std::fs::remove_file(input.path().join("a.json")).unwrap();
+    std::fs::remove_file(input.path().join("c.json")).unwrap();
+    std::fs::write(input.path().join("d.json"), "{}").unwrap();
+    let out = tempfile::tempdir().unwrap();
+    let o = run(&["run", "--jobs", s(input.path()), "-o", s(out.path())]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let last = stderr(&o).lines().last().unwrap().to_owned();
+    assert!(
+        last.starts_with("t2spline: 2 of 2 jobs failed, no job's results were written (see "),
+        "{last}"
+    );
+    assert!(
+        !stderr(&o).contains("the others were written"),
+        "{}",
+        stderr(&o)
+    );
+}
+
+/// Control characters in a job's name reach no terminal: each line names the
+/// job once, escaped as every other message escapes names.
+#[cfg(unix)]
+#[test]
+fn hostile_job_names_are_printed_escaped_once() {
+    let input = tempfile::tempdir().unwrap();
+    let red = input.path().join("\u{1b}[31mred.json");
+    std::fs::write(&red, "{\n  \"order\": 2,\n  \"alhpa\": 0.5\n}\n").unwrap();
+    let blue = input.path().join("\u{1b}[34mblue.json");
+    std::fs::copy(example(), &blue).unwrap();
+    let out = tempfile::tempdir().unwrap();
+    let o = run(&[
+        "run",
+        "--jobs",
+        s(input.path()),
+        "-o",
+        s(out.path()),
+        "--type-reduction",
+        "centroid",
+        "--alpha",
+        "0.5",
+    ]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    let text = stderr(&o);
+    assert!(!text.contains('\u{1b}'), "{text:?}");
+    let escaped = format!("{}/\\u001b[31mred.json", input.path().display());
+    for line in text.lines().filter(|l| l.contains("red.json")) {
+        assert!(line.starts_with(&format!("t2spline: {escaped}:")), "{line}");
+        assert_eq!(line.matches("red.json").count(), 1, "{line}");
+    }
+    assert!(
+        text.contains(&format!("{escaped}:3:3: alhpa: unknown key")),
+        "{text}"
+    );
+    // The note on an alpha the reduction does not use names the job escaped.
+    assert!(
+        text.contains("\\u001b[34mblue.json: note: type reduction centroid"),
+        "{text}"
+    );
+    // Outputs that are inputs are named escaped too.
+    let o = run(&["run", "--jobs", s(input.path()), "-o", s(input.path())]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(stderr(&o).contains("is the input file"), "{}", stderr(&o));
+    assert!(!stderr(&o).contains('\u{1b}'), "{:?}", stderr(&o));
 }
 
 #[test]

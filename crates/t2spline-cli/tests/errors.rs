@@ -294,12 +294,19 @@ fn a_failed_run_leaves_existing_outputs_untouched() {
     assert_eq!(code, 2);
     // 2. The JSON output cannot be written (its name is a folder): the CSV
     //    files, written first to temporary files, are not renamed either.
-    let (code, _, stderr) = run(&["run", s(&example()), "-o", s(dir.path()), "--csv", s(&csv)]);
+    //    (A folder beside the CSV folder: one holding it would be refused,
+    //    exit 2, as an output inside another's.)
+    let folder = dir.path().join("folder.json");
+    std::fs::create_dir(&folder).unwrap();
+    let (code, _, stderr) = run(&["run", s(&example()), "-o", s(&folder), "--csv", s(&csv)]);
     assert_eq!(code, 4, "{stderr}");
+    let (code, _, stderr) = run(&["run", s(&example()), "-o", s(dir.path()), "--csv", s(&csv)]);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(stderr.contains("lies inside"), "{stderr}");
     assert_eq!(std::fs::read_to_string(&out).unwrap(), "previous result");
     assert_eq!(std::fs::read_to_string(&old_csv).unwrap(), "previous csv");
     // No temporary file is left behind anywhere.
-    for d in [dir.path(), csv.as_path()] {
+    for d in [dir.path(), csv.as_path(), folder.as_path()] {
         for entry in std::fs::read_dir(d).unwrap() {
             let name = entry.unwrap().file_name();
             assert!(

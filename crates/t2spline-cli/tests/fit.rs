@@ -236,3 +236,61 @@ fn independent_fit_is_written_when_it_is_valid() {
     assert_eq!(v["order"], json!(3));
     assert_eq!(v["lower_height"], json!(0.8));
 }
+
+/// A data file takes a job's keys but `weights` and `knots`: its
+/// `type_reduction` is carried into the job written, and an unknown key is
+/// offered only keys a data file accepts.
+#[test]
+fn a_data_file_carries_its_type_reduction_into_the_job() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut v = read_json(&example());
+    v["type_reduction"] = json!("centroid");
+    let path = write_data(dir.path(), &v);
+    let job = dir.path().join("job.json");
+    t2spline()
+        .arg("fit")
+        .arg(&path)
+        .arg("-o")
+        .arg(&job)
+        .arg("-q")
+        .assert()
+        .code(0);
+    assert_eq!(read_json(&job)["type_reduction"], json!("centroid"));
+    t2spline()
+        .arg("validate")
+        .arg(&job)
+        .assert()
+        .code(0)
+        .stdout(predicate::str::contains(
+            "alpha 0.5 (unused: type reduction centroid does not use alpha)",
+        ));
+    v["colour"] = json!("red");
+    let path = write_data(dir.path(), &v);
+    t2spline()
+        .arg("fit")
+        .arg(&path)
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains(
+            "colour: unknown key (known keys: description, order, degree, alpha, type_reduction, lower_height, samples, points)",
+        ));
+}
+
+/// `--tolerance -0` is 0, and the description says so.
+#[test]
+fn a_negative_zero_tolerance_is_described_as_zero() {
+    let readings = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/beach-readings.csv");
+    let out = t2spline()
+        .arg("fuzzify")
+        .arg(&readings)
+        .args(["--tolerance", "-0"])
+        .assert()
+        .code(0)
+        .get_output()
+        .stdout
+        .clone();
+    let v: Value = serde_json::from_slice(&out).unwrap();
+    let description = v["description"].as_str().unwrap();
+    assert!(description.contains("with T = 0 "), "{description}");
+    assert!(!description.contains("-0"), "{description}");
+}

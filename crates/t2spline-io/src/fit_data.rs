@@ -1,7 +1,8 @@
 //! Data files for `t2spline fit`: fuzzy data points in, a job file out.
 //!
 //! A data file has the keys of a job file (SPEC §8) except `weights` and
-//! `knots`, which the fit computes; its `points` are fuzzy *data* points. It
+//! `knots`, which the fit computes (`type_reduction` among them, carried to
+//! the job); its `points` are fuzzy *data* points. It
 //! is read as a job is ([`parse_data`](crate::parse_data)): in one typed
 //! pass when it has no problem, else by the job validator, so its messages
 //! are the same (`points[2].y: the order … is broken`). The fit
@@ -11,7 +12,7 @@
 use serde_json::{json, Map, Value};
 use t2spline::fit::{FuzzyData, OrderViolation};
 use t2spline::job::Model;
-use t2spline::Alpha;
+use t2spline::{Alpha, TypeReduction};
 
 use crate::job::write::model_json;
 use crate::{Error, Problem};
@@ -29,6 +30,8 @@ pub struct FitData {
     pub degree: usize,
     /// Carried to the job.
     pub alpha: Option<Alpha>,
+    /// `type_reduction`, if the file gives one; carried to the job.
+    pub type_reduction: Option<TypeReduction>,
     /// The top-level `lower_height`, if the file gives one; carried to the job.
     pub lower_height: Option<f64>,
     /// `samples`, if the file gives it; carried to the job.
@@ -52,7 +55,8 @@ impl FitData {
 
     /// The job file of a fitted model, keys in the order of SPEC §8: the
     /// file's `description`, its `order` or `degree` key, the weights and
-    /// knots of the fit, the file's `alpha`, `lower_height` and `samples`,
+    /// knots of the fit, the file's `alpha`, `type_reduction`, `lower_height`
+    /// and `samples`,
     /// and the control points (a number's `lower_height` only where it differs
     /// from the top-level one). It parses back with
     /// [`parse_job`](crate::parse_job).
@@ -92,6 +96,9 @@ impl FitData {
                 "points" => {
                     if let Some(a) = self.alpha {
                         out.insert("alpha".into(), json!(a.get()));
+                    }
+                    if let Some(t) = self.type_reduction {
+                        out.insert("type_reduction".into(), json!(t.name()));
                     }
                     if let Some(h) = self.lower_height {
                         out.insert("lower_height".into(), json!(h));

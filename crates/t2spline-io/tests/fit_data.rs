@@ -173,6 +173,61 @@ fn degree_key_samples_and_alpha_are_carried_only_when_given() {
 }
 
 #[test]
+fn a_type_reduction_is_read_and_carried_to_the_job() {
+    let mut v = profile();
+    v["type_reduction"] = json!("nie-tan");
+    let data = parse(&v).unwrap();
+    assert_eq!(data.type_reduction, Some(t2spline::TypeReduction::NieTan));
+    let job = fit(&data, &FitOptions::interpolation(3), FuzzyFitMode::Valid)
+        .unwrap()
+        .job
+        .unwrap();
+    let keys: Vec<&str> = job
+        .as_object()
+        .unwrap()
+        .keys()
+        .map(String::as_str)
+        .collect();
+    assert_eq!(
+        keys,
+        [
+            "description",
+            "order",
+            "weights",
+            "knots",
+            "alpha",
+            "type_reduction",
+            "lower_height",
+            "samples",
+            "points"
+        ]
+    );
+    assert_eq!(job["type_reduction"], json!("nie-tan"));
+    let parsed = t2spline_io::parse_job(&job.to_string(), "job.json").unwrap();
+    assert_eq!(parsed.type_reduction, t2spline::TypeReduction::NieTan);
+    // Refused as a job's would be.
+    v["type_reduction"] = json!("nie_tan");
+    assert_eq!(
+        lines(&v),
+        ["data.json: type_reduction: unknown type reduction `nie_tan` (did you mean `nie-tan`?)"]
+    );
+}
+
+#[test]
+fn an_unknown_key_is_offered_only_the_keys_a_data_file_accepts() {
+    let mut v = profile();
+    v["colour"] = json!("red");
+    v["knots"] = json!([0, 1]);
+    assert_eq!(
+        lines(&v),
+        [
+            "data.json: knots: not allowed in a data file: the fit makes the weights (all 1) and the knots",
+            "data.json: colour: unknown key (known keys: description, order, degree, alpha, type_reduction, lower_height, samples, points)",
+        ]
+    );
+}
+
+#[test]
 fn mixed_heights_give_per_number_heights() {
     let mut v = profile();
     v["points"][2]["x"]["lower_height"] = json!(0.3);

@@ -36,6 +36,19 @@ fn every_rule_is_reported_with_its_place() {
 }
 
 #[test]
+fn a_number_beyond_the_range_of_a_float_is_out_of_range() {
+    // `1e309` reads as infinite: a number all the same, beyond the limit.
+    assert_eq!(
+        lines("station,x,y\nA,1e309,1\nA,0,-1E400\nA,0,infinity\n"),
+        [
+            "r.csv:2:3: x (column 2): 1e309 is outside [-1e150, 1e150]",
+            "r.csv:3:5: y (column 3): -1E400 is outside [-1e150, 1e150]",
+            "r.csv:4:5: y (column 3): `infinity` is not a number",
+        ]
+    );
+}
+
+#[test]
 fn headers_are_checked() {
     assert_eq!(
         lines("name,x,y\nA,1,2\n"),
@@ -79,15 +92,12 @@ fn spreadsheet_dialects_read_the_same() {
 
 #[test]
 fn limits_are_checked_before_rows_are_stored() {
-    // Rows are counted from the line ends before anything is parsed.
-    let text = "\n".repeat(MAX_ROWS + 2);
-    assert_eq!(
-        lines(&text),
-        [format!(
-            "r.csv: {} lines: more than the limit of {MAX_ROWS} readings",
-            MAX_ROWS + 2
-        )]
-    );
+    // Readings are counted, not lines: blank lines past the limit are no
+    // readings (the count of readings itself is a unit test of the module).
+    let mut text = String::from("station,x,y\nA,0,0\nA,1,1\n");
+    text.push_str(&"\n".repeat(MAX_ROWS + 2));
+    let file = parse_readings(&text, "r.csv").expect("two readings and blank lines");
+    assert_eq!(file.stations, ["A"]);
     // Stations: at most as many as control points.
     let mut text = String::from("station,x,y\n");
     for i in 0..=t2spline_io::job::MAX_POINTS {

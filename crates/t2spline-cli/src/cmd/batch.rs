@@ -13,15 +13,16 @@ use std::path::{Path, PathBuf};
 use rayon::prelude::*;
 use t2spline::job::{Overrides, RunOutput};
 use t2spline_io::{
-    sync_file_systems, write_summary_csv, write_summary_parquet, JobSummary, Staged, CSV_FILES,
-    DERIVATIVES_CSV,
+    printable, sync_file_systems, write_summary_csv, write_summary_parquet, JobSummary, Staged,
+    CSV_FILES, DERIVATIVES_CSV,
 };
 
 use super::prepare::{about_run, prepare, unused_alpha, OptionError};
 use super::results::{overrides, Destinations, ALPHA_IGNORED};
+use crate::clash::Claims;
 use crate::cli::RunArgs;
 use crate::exit::{Exit, JobsFailed};
-use crate::output::{is_stdio, job_name, Inputs, NewFolders};
+use crate::output::{is_stdio, job_name, shown, NewFolders};
 
 /// The summary's file names.
 const SUMMARY_CSV: &str = "summary.csv";
@@ -70,7 +71,9 @@ fn output_name(path: &Path) -> String {
     file.strip_suffix(".json").unwrap_or(&file).to_owned()
 }
 
-/// The `*.json` files of `dir` (following links), by name.
+/// The `*.json` files of `dir` (following links), by name; a link that
+/// leads nowhere is a job too, which then fails as unreadable rather than
+/// vanish without a word.
 fn folder_jobs(dir: &Path) -> Result<Vec<PathBuf>, t2spline_io::Error> {
     let failed = |source| t2spline_io::Error::Read {
         path: dir.to_owned(),
@@ -88,7 +91,11 @@ fn folder_jobs(dir: &Path) -> Result<Vec<PathBuf>, t2spline_io::Error> {
         let file = match entry.file_type() {
             Ok(kind) if kind.is_file() => true,
             Ok(kind) if kind.is_dir() => false,
-            _ => path.is_file(),
+            _ => match std::fs::metadata(&path) {
+                Ok(meta) => meta.is_file(),
+                // Dangling, or a loop of links.
+                Err(_) => std::fs::symlink_metadata(&path).is_ok_and(|m| m.is_symlink()),
+            },
         };
         if file {
             jobs.push(path);
@@ -106,7 +113,7 @@ impl Batch {
             if found.is_empty() && paths.is_empty() {
                 return Err(usage(
                     "--jobs",
-                    format!("{} holds no *.json file", dir.display()),
+                    format!("{} holds no *.json file", shown(dir)),
                 ));
             }
             paths.extend(found);
@@ -136,16 +143,17 @@ impl Batch {
             if name.is_empty() || (name == "summary" && args.parquet.is_some()) {
                 return Err(usage(
                     "JOB",
-                    format!("{}: no output can be named after this file", path.display()),
+                    format!("{}: no output can be named after this file", shown(&path)),
                 ));
             }
             if let Some(other) = seen.insert(name.clone(), path.clone()) {
                 return Err(usage(
                     "JOB",
                     format!(
-                        "{} and {} would both write {name}.json: rename one",
-                        other.display(),
-                        path.display()
+                        "{} and {} would both write {}.json: rename one",
+                        shown(&other),
+                        shown(&path),
+                        printable(&name)
                     ),
                 ));
             }
@@ -162,19 +170,17 @@ impl Batch {
         Ok(batch)
     }
 
-    /// No output overwrites a job file (`--jobs DIR -o DIR`).
+    /// No output overwrites a job file (`--jobs DIR -o DIR`), and no two
+    /// outputs are one file or lie inside a job's CSV folder (the rule of
+    /// [`Claims`]), in job order.
     fn check_outputs(&self) -> anyhow::Result<()> {
-        let inputs = Inputs::of(self.jobs.iter().map(|j| j.path.as_path()));
-        // In parallel, a look at each output; the first error in job order.
-        let checks: Vec<anyhow::Result<()>> = self
-            .jobs
-            .par_iter()
-            .map(|job| self.destinations(job).check(&inputs))
-            .collect();
-        checks.into_iter().collect::<anyhow::Result<()>>()?;
-        inputs.check("--output", &self.output.join(SUMMARY_CSV))?;
+        let mut claims = Claims::new(self.jobs.iter().map(|j| j.path.as_path()));
+        for job in &self.jobs {
+            self.destinations(job).claim(&mut claims)?;
+        }
+        claims.file("--output", &self.output.join(SUMMARY_CSV))?;
         if let Some(dir) = &self.parquet {
-            inputs.check("--parquet", &dir.join(SUMMARY_PARQUET))?;
+            claims.file("--parquet", &dir.join(SUMMARY_PARQUET))?;
         }
         Ok(())
     }
@@ -257,9 +263,10 @@ fn files(out: &Destinations, result: &RunOutput) -> Vec<PathBuf> {
     files
 }
 
-/// The lines of a job's error, each naming the job file.
+/// The lines of a job's error, each naming the job file once, as the I/O
+/// crate's messages name it (control characters escaped).
 fn message(path: &Path, e: &anyhow::Error) -> Vec<String> {
-    let file = job_name(path);
+    let file = printable(&job_name(path));
     format!("{e:#}")
         .lines()
         .map(|line| {
@@ -290,7 +297,7 @@ pub fn run(args: RunArgs) -> anyhow::Result<()> {
     let mut stderr = std::io::stderr().lock();
     for (job, outcome) in batch.jobs.iter().zip(&outcomes) {
         if let Some(note) = &outcome.note {
-            let _ = writeln!(stderr, "t2spline run: {}: {note}", job_name(&job.path));
+            let _ = writeln!(stderr, "t2spline run: {}: {note}", shown(&job.path));
         }
         if let Some(e) = &outcome.error {
             worst = worst.worst(Exit::of(e));

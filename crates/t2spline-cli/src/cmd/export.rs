@@ -8,8 +8,9 @@ use std::time::{SystemTime, UNIX_EPOCH};
 use t2spline_io::{render_cad, CadFormat, CadMeta, Prepared};
 
 use super::prepare::{about_option, note_unused_alpha, prepare, reduction_overrides, OptionError};
+use crate::clash::Claims;
 use crate::cli::{CadFormatArg, ExportArgs};
-use crate::output::{is_stdio, job_name, Outputs};
+use crate::output::{is_stdio, job_name, shown, Outputs};
 
 /// An export with every input validated.
 struct Plan {
@@ -25,6 +26,7 @@ impl Plan {
             Some(f) => from_arg(f),
             None => from_extension(&args.output)?,
         };
+        Claims::new([args.job.as_path()]).file("--output", &args.output)?;
         let prepared = prepare(&args.job, &reduction_overrides(args.alpha, &args.reduction))?;
         note_unused_alpha(
             "export",
@@ -92,7 +94,7 @@ fn from_extension(path: &Path) -> anyhow::Result<CadFormat> {
             option: "--format",
             message: format!(
                 "missing: the extension of {} names no format (.dxf, .step, .stp, .iges, .igs, .obj); give --format dxf|step|iges|obj",
-                job_name(path)
+                if is_stdio(path) { "<stdout>".to_owned() } else { shown(path) }
             ),
         }
         .into()),

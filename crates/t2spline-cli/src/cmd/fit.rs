@@ -6,11 +6,12 @@ use std::path::PathBuf;
 use anyhow::anyhow;
 use t2spline::fit::{Deviation, FitOptions, FitSummary, FuzzyFitMode, Parametrization};
 use t2spline::Layer;
-use t2spline_io::{is_readings, parse_data, parse_job, to_json_pretty, FitData};
+use t2spline_io::{is_readings, parse_data, parse_job, printable, to_json_pretty, FitData};
 
 use super::prepare::OptionError;
+use crate::clash::Claims;
 use crate::cli::FitArgs;
-use crate::output::{is_stdio, job_name, read_input, Inputs, Outputs};
+use crate::output::{job_name, read_input, shown, Outputs};
 
 /// Condition numbers above this get a warning: the control points may then
 /// be wrong in their last eight digits or more.
@@ -35,16 +36,16 @@ impl Plan {
             .parse()
             .map_err(|e: String| anyhow!(e))?;
         let mode: FuzzyFitMode = args.fuzzy_fit.parse().map_err(|e: String| anyhow!(e))?;
-        if let Some(output) = args.output.as_deref().filter(|p| !is_stdio(p)) {
-            Inputs::of([args.data.as_path()]).check("--output", output)?;
+        if let Some(output) = &args.output {
+            Claims::new([args.data.as_path()]).file("--output", output)?;
         }
         let text = read_input(&args.data)?;
         let (data, fuzzified) = if is_readings(&args.data, &text) {
             let data = super::fuzzify::readings_data(&args.data, &text, &args.readings, None)?;
             let note = format!(
                 "{}: a readings file (CSV), fuzzified first as `t2spline fuzzify` does: {}",
-                data.source,
-                data.description.as_deref().unwrap_or_default()
+                printable(&data.source),
+                printable(data.description.as_deref().unwrap_or_default())
             );
             (data, Some(note))
         } else {
@@ -59,7 +60,7 @@ impl Plan {
                     option,
                     message: format!(
                         "only for a readings file (CSV); {} is a data file, whose numbers and degree are its own",
-                        job_name(&args.data)
+                        shown(&args.data)
                     ),
                 }
                 .into());
@@ -73,7 +74,7 @@ impl Plan {
                     option: "--control-points",
                     message: format!(
                         "{m} is outside [{min}, {max}]: at least degree + 1, at most the {max} data points of {}",
-                        data.source
+                        printable(&data.source)
                     ),
                 }
                 .into());
@@ -140,7 +141,7 @@ fn report(plan: &Plan, s: &FitSummary) -> Vec<String> {
     let mut lines: Vec<String> = plan.fuzzified.iter().cloned().collect();
     lines.push(format!(
         "{}: {} data points, degree {}, {} parameters: {method}, {} control points, condition number {:.1e}",
-        plan.data.source,
+        printable(&plan.data.source),
         s.data_points,
         plan.options.degree,
         plan.options.parametrization,

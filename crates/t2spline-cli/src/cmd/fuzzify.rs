@@ -10,6 +10,7 @@ use t2spline_io::job::MAX_ORDER;
 use t2spline_io::{data_json, parse_data, parse_readings, to_json_pretty, FitData};
 
 use super::prepare::OptionError;
+use crate::clash::Claims;
 use crate::cli::{FuzzifyArgs, ReadingsArgs};
 use crate::output::{job_name, read_input, Outputs};
 
@@ -52,7 +53,7 @@ pub(super) fn readings_data(
             option: if degree_key == "order" { "--order" } else { "--degree" },
             message: format!(
                 "{}: {} stations, but a curve of degree {degree} needs at least {}; give a lower degree",
-                file.source,
+                t2spline_io::printable(&file.source),
                 file.stations.len(),
                 degree + 1
             ),
@@ -88,6 +89,9 @@ fn degree(options: &ReadingsArgs) -> anyhow::Result<(&'static str, usize)> {
 }
 
 pub fn fuzzify(args: FuzzifyArgs) -> anyhow::Result<()> {
+    if let Some(output) = &args.output {
+        Claims::new([args.readings.as_path()]).file("--output", output)?;
+    }
     let text = read_input(&args.readings)?;
     let data = readings_data(&args.readings, &text, &args.rule, args.alpha)?;
     let json = to_json_pretty(&data_json(&data));

@@ -6,6 +6,7 @@ use t2spline::Axis;
 use t2spline_plot::{all_figures, render_files, Aspect, FigureOptions, Format, NumberChoice};
 
 use super::prepare::{note_unused_alpha, prepare, reduction_overrides, OptionError};
+use crate::clash::Claims;
 use crate::cli::{AspectArg, AxisArg, FigureArgs, FormatArg, PlotArgs, PointArg};
 use crate::output::Outputs;
 
@@ -93,9 +94,15 @@ pub fn plot(args: &PlotArgs) -> anyhow::Result<()> {
     // nothing; the paths written go to standard output.
     let figures =
         all_figures(job, alpha, &figure_options(&args.figures, job)?).map_err(about_number)?;
+    let files = render_files(&figures, format)?;
+    Claims::new([args.job.as_path()]).folder(
+        "--output",
+        &args.output,
+        files.iter().map(|(name, _)| name.as_str()),
+    )?;
     let mut out = Outputs::default();
     let mut listing = String::new();
-    for (name, bytes) in render_files(&figures, format)? {
+    for (name, bytes) in files {
         listing.push_str(&format!("{}\n", args.output.join(&name).display()));
         out.in_dir(&args.output, &name, bytes);
     }

@@ -6,13 +6,18 @@ use t2spline_io::MissingAlpha;
 
 use super::plot::{about_number, figure_options};
 use super::prepare::{note_unused_alpha, prepare_with, reduction_overrides};
+use crate::clash::Claims;
 use crate::cli::ReportArgs;
 use crate::output::Outputs;
+
+/// The file written in the output folder.
+const REPORT: &str = "report.html";
 
 /// Where the slider starts when neither `--alpha` nor the job gives alpha.
 const DEFAULT_START: f64 = 0.5;
 
 pub fn report(args: &ReportArgs) -> anyhow::Result<()> {
+    Claims::new([args.job.as_path()]).folder("--output", &args.output, [REPORT])?;
     let default_start = Alpha::try_new(DEFAULT_START)?;
     let overrides = reduction_overrides(args.alpha, &args.reduction);
     // The page shows the job's text as given.
@@ -35,10 +40,10 @@ pub fn report(args: &ReportArgs) -> anyhow::Result<()> {
         t2spline_plot::render_report(job, &text, start, &figure_options(&args.figures, job)?)
             .map_err(about_number)?;
     let mut out = Outputs::default();
-    out.in_dir(&args.output, "report.html", html.into_bytes());
+    out.in_dir(&args.output, REPORT, html.into_bytes());
     out.to(
         None,
-        format!("{}\n", args.output.join("report.html").display()).into_bytes(),
+        format!("{}\n", args.output.join(REPORT).display()).into_bytes(),
     );
     out.commit()
 }

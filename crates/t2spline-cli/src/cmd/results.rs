@@ -10,8 +10,9 @@ use t2spline_io::{
     stage_csv, write_json_pretty, write_parquet, Error, Staged, CSV_FILES, DERIVATIVES_CSV,
 };
 
+use crate::clash::Claims;
 use crate::cli::RunArgs;
-use crate::output::{Inputs, NewFolders};
+use crate::output::NewFolders;
 
 /// Where the files of one result go.
 #[derive(Debug, Default)]
@@ -25,19 +26,19 @@ pub(super) struct Destinations {
 }
 
 impl Destinations {
-    /// An error if a file written to these destinations would overwrite
-    /// one of `inputs`.
-    pub(super) fn check(&self, inputs: &Inputs) -> anyhow::Result<()> {
+    /// Claims every output of these destinations: an error if one would
+    /// overwrite an input or another output, or lie inside the CSV folder
+    /// (the rule of [`Claims`]).
+    pub(super) fn claim(&self, claims: &mut Claims) -> anyhow::Result<()> {
         if let Some(p) = &self.json {
-            inputs.check("--output", p)?;
-        }
-        if let Some(p) = &self.parquet {
-            inputs.check("--parquet", p)?;
+            claims.file("--output", p)?;
         }
         if let Some(dir) = &self.csv {
-            for name in CSV_FILES.iter().map(|f| f.0).chain([DERIVATIVES_CSV]) {
-                inputs.check("--csv", &dir.join(name))?;
-            }
+            let names = CSV_FILES.iter().map(|f| f.0).chain([DERIVATIVES_CSV]);
+            claims.folder("--csv", dir, names)?;
+        }
+        if let Some(p) = &self.parquet {
+            claims.file("--parquet", p)?;
         }
         Ok(())
     }

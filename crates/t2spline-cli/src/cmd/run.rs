@@ -8,8 +8,9 @@ use t2spline_io::{write_json_pretty, Prepared, Staged};
 
 use super::prepare::{about_run, note_unused_alpha, prepare};
 use super::results::{overrides, Destinations, ALPHA_IGNORED};
+use crate::clash::Claims;
 use crate::cli::RunArgs;
-use crate::output::{is_stdio, to_stdout, Inputs};
+use crate::output::{is_stdio, to_stdout};
 
 /// A run of one job with every input validated.
 struct Plan {
@@ -24,7 +25,7 @@ impl Plan {
             csv: args.csv.clone(),
             parquet: args.parquet.clone(),
         };
-        out.check(&Inputs::of([path]))?;
+        out.claim(&mut Claims::new([path]))?;
         let prepared = prepare(path, &overrides(&args))?;
         note_unused_alpha(
             "run",

@@ -1,16 +1,25 @@
 //! `t2spline validate JOB.json`: report every problem, or a one-line summary.
 
+use t2spline_io::printable;
+
 use crate::cli::ValidateArgs;
 use crate::output::{job_name, read_job, to_stdout};
 
 pub fn validate(args: &ValidateArgs) -> anyhow::Result<()> {
     let job = read_job(&args.job)?;
-    let alpha = job
-        .alpha
-        .map_or("not set".to_owned(), |a| a.get().to_string());
+    let alpha = match job.alpha {
+        None => "not set".to_owned(),
+        Some(a) if job.type_reduction.uses_alpha() => a.get().to_string(),
+        // The note of the commands that run the job (`unused_alpha`).
+        Some(a) => format!(
+            "{} (unused: type reduction {} does not use alpha)",
+            a.get(),
+            job.type_reduction
+        ),
+    };
     let line = format!(
         "{}: ok: {}, alpha {alpha}, {} samples\n",
-        job_name(&args.job),
+        printable(&job_name(&args.job)),
         job.model.summary(),
         job.samples,
     );

@@ -29,16 +29,20 @@ use crate::fit_data::FitData;
 use crate::Problem;
 
 /// The keys of a data file for `t2spline fit`: those of a job but the two the
-/// fit computes.
+/// fit computes ([`FIT_MAKES`]).
 const DATA_KEYS: &[&str] = &[
     "description",
     "order",
     "degree",
     "alpha",
+    "type_reduction",
     "lower_height",
     "samples",
     "points",
 ];
+
+/// The keys of a job that a data file may not have: the fit makes them.
+const FIT_MAKES: &[&str] = &["weights", "knots"];
 
 /// Parses `text` as a job, or returns every problem found, each with its line
 /// and column.
@@ -315,22 +319,28 @@ impl Walker {
         }
     }
 
-    /// A data file: the keys of a job but `weights` and `knots`, at least
+    /// A data file: the keys of a job but `weights` and `knots` (refused, and
+    /// never offered as known keys), at least
     /// `degree + 1` points, and a degree of at least 1.
     fn data(&mut self, root: &Value) -> Option<FitData> {
         self.root = "data";
         let o = self.object(root, "", "the data file")?;
-        for key in ["weights", "knots"] {
-            if o.contains_key(key) {
+        for key in FIT_MAKES {
+            if o.contains_key(*key) {
                 self.report(
                     key,
                     "not allowed in a data file: the fit makes the weights (all 1) and the knots",
                 );
             }
         }
-        let mut known = DATA_KEYS.to_vec();
-        known.extend(["weights", "knots"]);
-        let header = self.header(o, &known, "a data file needs its fuzzy data points");
+        self.refused = FIT_MAKES;
+        let header = self.header(o, DATA_KEYS, "a data file needs its fuzzy data points");
+        // Carried to the job only when given.
+        let type_reduction = if o.contains_key("type_reduction") {
+            self.type_reduction(o).map(Some)
+        } else {
+            Some(None)
+        };
         if let (Some(degree), Some(count)) = (header.degree, header.count) {
             if degree == 0 {
                 self.report(header.degree_key, t2spline::Error::ZeroDegreeFit);
@@ -351,6 +361,7 @@ impl Walker {
             degree_key: header.degree_key,
             degree: header.degree?,
             alpha: header.alpha,
+            type_reduction: type_reduction?,
             lower_height: header.lower_height,
             samples: header.samples?,
             points: match header.points? {

@@ -15,6 +15,10 @@ pub(super) struct Walker {
     pub(super) more: usize,
     /// `"job"` or `"data"`.
     pub(super) root: &'static str,
+    /// Top-level keys of a job that this file refuses with a message of its
+    /// own (a data file's `weights` and `knots`): not reported again as
+    /// unknown, and never offered as known keys.
+    pub(super) refused: &'static [&'static str],
 }
 
 impl Default for Walker {
@@ -23,6 +27,7 @@ impl Default for Walker {
             problems: Vec::new(),
             more: 0,
             root: "job",
+            refused: &[],
         }
     }
 }
@@ -75,7 +80,11 @@ impl Walker {
         prefix: &str,
         known: &[&'static str],
     ) {
-        for k in o.keys().filter(|k| !known.contains(&k.as_str())) {
+        let refused: &[&str] = if prefix.is_empty() { self.refused } else { &[] };
+        for k in o
+            .keys()
+            .filter(|k| !known.contains(&k.as_str()) && !refused.contains(&k.as_str()))
+        {
             let path = child(prefix, k);
             match suggestion(k, known) {
                 Some(s) => self.report(&path, format!("unknown key (did you mean `{s}`?)")),

@@ -28,7 +28,8 @@ impl ReadingsFile {
             self.stations.len(),
             self.readings.readings(),
             Num(rule.lower_height.get()),
-            Num(rule.tolerance),
+            // `-0` is 0 (adding 0 turns -0 into +0).
+            Num(rule.tolerance + 0.0),
         );
         FitData {
             source: self.source.clone(),
@@ -36,6 +37,7 @@ impl ReadingsFile {
             degree_key,
             degree,
             alpha,
+            type_reduction: None,
             lower_height: Some(rule.lower_height.get()),
             samples: None,
             points,

@@ -24,7 +24,9 @@
 //!
 //! Limits, checked before the memory they guard is allocated: the file size
 //! of job files ([`MAX_FILE_BYTES`](crate::job::MAX_FILE_BYTES)),
-//! [`MAX_ROWS`] rows and [`MAX_POINTS`](crate::job::MAX_POINTS) stations.
+//! [`MAX_ROWS`] readings (rows after the header, blank lines not counted;
+//! splitting stops at the first row past the limit) and
+//! [`MAX_POINTS`](crate::job::MAX_POINTS) stations.
 //! The statistics that turn readings into fuzzy numbers are the core's
 //! ([`t2spline::fit::fuzzify`]); this module only reads.
 
@@ -128,24 +130,29 @@ pub fn read_readings(path: &Path) -> Result<ReadingsFile, Error> {
 /// # Ok::<(), t2spline_io::Error>(())
 /// ```
 pub fn parse_readings(text: &str, source: &str) -> Result<ReadingsFile, Error> {
+    parse_readings_within(text, source, MAX_ROWS)
+}
+
+/// [`parse_readings`] with at most `max_rows` readings.
+fn parse_readings_within(text: &str, source: &str, max_rows: usize) -> Result<ReadingsFile, Error> {
     let invalid = |problems: Vec<Problem>| Error::Invalid {
         file: source.to_owned(),
         problems,
     };
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    // Rows are counted before any of them is stored.
-    let lines = text.lines().count();
-    if lines > MAX_ROWS + 1 {
-        return Err(invalid(vec![Problem::new(format!(
-            "{lines} lines: more than the limit of {MAX_ROWS} readings"
-        ))]));
-    }
     let first = text.lines().next().unwrap_or("");
     let delimiter = if first.contains(';') { ';' } else { ',' };
-    let records = tokens::records(text, delimiter).map_err(|e| {
-        invalid(vec![Problem {
-            line_column: Some((e.line, e.column)),
-            message: e.message.to_owned(),
+    // Readings are counted as they are split (the header and readings, not
+    // blank lines), and splitting stops past the limit.
+    let records = tokens::records(text, delimiter, max_rows.saturating_add(1)).map_err(|e| {
+        invalid(vec![match e {
+            tokens::Fault::Quote(e) => Problem {
+                line_column: Some((e.line, e.column)),
+                message: e.message.to_owned(),
+            },
+            tokens::Fault::TooMany => Problem::new(format!(
+                "more than the limit of {max_rows} readings (rows after the header; blank lines do not count)"
+            )),
         }])
     })?;
     let Some((header, rows)) = records.split_first() else {
@@ -372,6 +379,11 @@ impl Rows {
         match decimal.parse::<f64>() {
             Ok(x) if x.is_finite() && x.abs() <= MAX_MAGNITUDE => Ok(x),
             Ok(x) if x.is_finite() => Err(format!("{} is outside [-1e150, 1e150]", Num(x))),
+            // A number beyond the range of a float (`1e309`) reads as
+            // infinite; `inf` and `NaN` are not numbers of a reading.
+            Ok(x) if x.is_infinite() && !decimal.to_ascii_lowercase().contains("inf") => {
+                Err(format!("{} is outside [-1e150, 1e150]", shorten(text)))
+            }
             _ if text.is_empty() => Err("empty; every reading needs a number".into()),
             _ => Err(format!("`{}` is not a number", shorten(text))),
         }
@@ -433,4 +445,33 @@ fn shorten(text: &str) -> String {
         out.push('…');
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn problems(text: &str, max_rows: usize) -> Vec<String> {
+        match parse_readings_within(text, "r.csv", max_rows) {
+            Ok(_) => Vec::new(),
+            Err(e) => e.lines(),
+        }
+    }
+
+    #[test]
+    fn the_limit_counts_readings_not_lines() {
+        // Four readings and the header, with blank lines around them: within a
+        // limit of four readings, whatever the line count.
+        let text = "station,x,y\n\nA,0,1\nA,1,2\n\r\n   \nB,2,3\nB,3,4\n\n\n";
+        assert_eq!(problems(text, 4), Vec::<String>::new());
+        assert_eq!(
+            problems(text, 3),
+            ["r.csv: more than the limit of 3 readings (rows after the header; blank lines do not count)"]
+        );
+        // Lone carriage returns end rows for the limit as for reading.
+        assert_eq!(
+            problems("station,x,y\rA,0,1\rA,1,2\rB,2,3\rB,3,4\r", 3).len(),
+            1
+        );
+    }
 }

@@ -31,9 +31,21 @@ pub(crate) struct QuoteError {
     pub message: &'static str,
 }
 
+/// Why the text could not be split into records.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) enum Fault {
+    /// A fault of the quoting.
+    Quote(QuoteError),
+    /// More than the most records allowed (blank lines are not records); the
+    /// records past the limit are neither stored nor counted.
+    TooMany,
+}
+
 /// Splits `text` into records of fields separated by `delimiter`; blank lines
 /// are skipped. A record ends at `\n`, `\r\n` or a lone `\r` outside quotes.
-pub(crate) fn records(text: &str, delimiter: char) -> Result<Vec<Record>, QuoteError> {
+/// More than `max` records (the header among them) is [`Fault::TooMany`],
+/// found before a record past the limit is stored.
+pub(crate) fn records(text: &str, delimiter: char, max: usize) -> Result<Vec<Record>, Fault> {
     let mut out = Vec::new();
     let mut chars = text.chars().peekable();
     let (mut line, mut column) = (1, 1);
@@ -50,11 +62,11 @@ pub(crate) fn records(text: &str, delimiter: char) -> Result<Vec<Record>, QuoteE
         if let Some((qline, qcolumn)) = quoted_start {
             match c {
                 None => {
-                    return Err(QuoteError {
+                    return Err(Fault::Quote(QuoteError {
                         line: qline,
                         column: qcolumn,
                         message: "a quoted field is not closed",
-                    })
+                    }))
                 }
                 Some('"') if chars.peek() == Some(&'"') => {
                     chars.next();
@@ -100,6 +112,9 @@ pub(crate) fn records(text: &str, delimiter: char) -> Result<Vec<Record>, QuoteE
                 let end = (line, column);
                 let blank = matches!(&fields[..], [only] if only.text.trim().is_empty());
                 if !blank {
+                    if out.len() == max {
+                        return Err(Fault::TooMany);
+                    }
                     out.push(Record {
                         fields: std::mem::take(&mut fields),
                         end,
@@ -124,11 +139,11 @@ pub(crate) fn records(text: &str, delimiter: char) -> Result<Vec<Record>, QuoteE
         // `c` is neither the end nor a delimiter here.
         let ch = c.unwrap_or_default();
         if after_quote && !ch.is_whitespace() {
-            return Err(QuoteError {
+            return Err(Fault::Quote(QuoteError {
                 line,
                 column,
                 message: "text after the closing quote of a field; a quote inside a quoted field is written twice (\"\")",
-            });
+            }));
         }
         if ch == '"' && field.text.trim().is_empty() && !after_quote {
             field.text.clear();
@@ -143,6 +158,13 @@ pub(crate) fn records(text: &str, delimiter: char) -> Result<Vec<Record>, QuoteE
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn records(text: &str, delimiter: char) -> Result<Vec<Record>, QuoteError> {
+        super::records(text, delimiter, usize::MAX).map_err(|e| match e {
+            Fault::Quote(q) => q,
+            Fault::TooMany => panic!("no limit"),
+        })
+    }
 
     fn texts(r: &[Record]) -> Vec<Vec<&str>> {
         r.iter()
@@ -178,6 +200,16 @@ mod tests {
             (e.line, e.column, e.message),
             (1, 3, "a quoted field is not closed")
         );
+    }
+
+    #[test]
+    fn the_limit_counts_records_not_lines() {
+        // Three records among blank lines, CRLF, lone CR and a quoted line end.
+        let text = "h,x\n\n  \r\na,\"1\n2\"\r\n\rb,3\n\n";
+        assert_eq!(super::records(text, ',', 3).map(|r| r.len()), Ok(3));
+        assert_eq!(super::records(text, ',', 2), Err(Fault::TooMany));
+        // A lone CR ends a record for the limit too.
+        assert_eq!(super::records("h\ra\rb\r", ',', 2), Err(Fault::TooMany));
     }
 
     #[test]

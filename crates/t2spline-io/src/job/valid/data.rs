@@ -2,9 +2,8 @@
 //! pass by the readers of a job ([`raw`](super::raw)) and built as the
 //! validator's `Walker::data` builds it.
 //!
-//! A data file holds the keys of a curve job but `weights`, `knots` and
-//! `type_reduction`, which the fit makes or does not read; each of them
-//! refuses, as does a net of points (a surface), a degree of 0, fewer than
+//! A data file holds the keys of a curve job but `weights` and `knots`,
+//! which the fit makes; each of them refuses, as does a net of points (a surface), a degree of 0, fewer than
 //! `degree + 1` points or more than [`MAX_POINTS`], a pair where one number
 //! belongs, and every rule the job's reading refuses. The text then goes to
 //! the validator, whose messages are the only ones a user sees.
@@ -20,7 +19,7 @@ use crate::fit_data::FitData;
 /// at all; `None` if it has one, or anything this reading does not expect.
 pub(in super::super) fn data(text: &str) -> Option<FitData> {
     let raw = raw::read(text)?;
-    if raw.weights.is_some() || raw.knots.is_some() || raw.type_reduction.is_some() {
+    if raw.weights.is_some() || raw.knots.is_some() {
         return None;
     }
     let Header {
@@ -55,6 +54,7 @@ pub(in super::super) fn data(text: &str) -> Option<FitData> {
         degree_key: key,
         degree,
         alpha,
+        type_reduction: raw.type_reduction,
         lower_height: height,
         samples,
         points,
