@@ -229,6 +229,19 @@ fn degree_0_is_refused() {
 
 /// A surface job of degrees [2, 1] over a 3 × `nv` net, `v` knots given.
 fn surface_geometry(nv: usize, v_knots: Option<Vec<f64>>) -> Geometry {
+    let job = surface_job(nv, v_knots);
+    job.geometry(
+        &job.settings(&Overrides {
+            alpha: Some(0.5),
+            ..Overrides::default()
+        })
+        .unwrap(),
+    )
+    .unwrap()
+}
+
+/// The job of [`surface_geometry`].
+fn surface_job(nv: usize, v_knots: Option<Vec<f64>>) -> t2spline::job::Job {
     use t2spline::job::{Job, Model};
     use t2spline::{FuzzySurface, Nt2Number, Nt2Point};
     let n = |c: f64| {
@@ -252,15 +265,7 @@ fn surface_geometry(nv: usize, v_knots: Option<Vec<f64>>) -> Geometry {
         .map(|i| (0..nv).map(|j| 1.0 + (i + j) as f64 / 5.0).collect())
         .collect();
     let surface = FuzzySurface::try_new([2, 1], points, weights, [None, v_knots]).unwrap();
-    let job = Job::new(Model::Surface(surface));
-    job.geometry(
-        &job.settings(&Overrides {
-            alpha: Some(0.5),
-            ..Overrides::default()
-        })
-        .unwrap(),
-    )
-    .unwrap()
+    Job::new(Model::Surface(surface))
 }
 
 #[test]
@@ -333,4 +338,276 @@ fn surfaces_that_jump_are_written_as_patches() {
     );
     let obj = render(CadFormat::Obj, &g);
     assert_eq!(obj.matches("\nsurf ").count(), 16);
+}
+
+/// The curves of an OBJ file read back (`v`, `deg`, `curv`, `parm u`), by
+/// group, each as a core curve: the file's own numbers, not the writer's.
+fn obj_curves(text: &str) -> Vec<(String, t2spline::NurbsCurve<3>)> {
+    use t2spline::{KnotVector, NurbsCurve};
+    let (mut vertices, mut out) = (Vec::new(), Vec::new());
+    let (mut group, mut degree, mut indices) = (String::new(), 0, Vec::new());
+    for line in text.lines() {
+        let words: Vec<&str> = line.split_whitespace().collect();
+        match words.as_slice() {
+            ["v", rest @ ..] => {
+                let v: Vec<f64> = rest.iter().map(|w| w.parse().unwrap()).collect();
+                vertices.push(([v[0], v[1], v[2]], v[3]));
+            }
+            ["g", name] => group = (*name).to_owned(),
+            ["deg", p] => degree = p.parse().unwrap(),
+            ["curv", _, _, rest @ ..] => {
+                indices = rest
+                    .iter()
+                    .map(|w| w.parse::<usize>().unwrap() - 1)
+                    .collect();
+            }
+            ["parm", "u", rest @ ..] => {
+                let knots: Vec<f64> = rest.iter().map(|w| w.parse().unwrap()).collect();
+                let (points, weights) = indices.iter().map(|&i| vertices[i]).unzip();
+                let u = KnotVector::try_new(knots, degree, indices.len()).unwrap();
+                out.push((
+                    group.clone(),
+                    NurbsCurve::try_new(points, weights, u).unwrap(),
+                ));
+            }
+            _ => {}
+        }
+    }
+    out
+}
+
+/// The multiplicity lists of every `B_SPLINE_CURVE_WITH_KNOTS(…)` (one) or
+/// `B_SPLINE_SURFACE_WITH_KNOTS(…)` (two) of a STEP file, with the degrees
+/// of its `B_SPLINE_CURVE(p,…` or `B_SPLINE_SURFACE(p,q,…`.
+fn step_knot_runs(step: &str) -> Vec<(usize, Vec<usize>)> {
+    let list = |s: &str| -> Vec<usize> {
+        let inner = &s[1..s.find(')').unwrap()];
+        inner.split(',').map(|m| m.parse().unwrap()).collect()
+    };
+    let mut out = Vec::new();
+    for entity in step.lines() {
+        if let Some(at) = entity.find("B_SPLINE_CURVE_WITH_KNOTS(") {
+            let p = entity.split("B_SPLINE_CURVE(").nth(1).unwrap();
+            let p: usize = p[..p.find(',').unwrap()].parse().unwrap();
+            out.push((p, list(&entity[at + 26..])));
+        }
+        if let Some(at) = entity.find("B_SPLINE_SURFACE_WITH_KNOTS(") {
+            let pq = entity.split("B_SPLINE_SURFACE(").nth(1).unwrap();
+            let pq: Vec<usize> = pq.split(',').take(2).map(|d| d.parse().unwrap()).collect();
+            let rest = &entity[at + 28..];
+            let second = &rest[rest.find("),").unwrap() + 2..];
+            out.push((pq[0], list(rest)));
+            out.push((pq[1], list(second)));
+        }
+    }
+    out
+}
+
+/// ISO 10303-42's rule that OpenCASCADE applies to every STEP B-spline: at
+/// most `p` equal knots inside the knot vector, at most `p + 1` at its ends.
+fn assert_step_multiplicities(step: &str) {
+    let runs = step_knot_runs(step);
+    assert!(!runs.is_empty());
+    for (p, m) in runs {
+        let inner = &m[1..m.len() - 1];
+        assert!(
+            m[0] <= p + 1 && m[m.len() - 1] <= p + 1 && inner.iter().all(|&x| x <= p),
+            "degree {p}, multiplicities {m:?}"
+        );
+    }
+}
+
+/// A planar job of degree 2 (`n` points, unit spreads) with these knots.
+fn job_with_knots(n: usize, knots: &[f64]) -> t2spline::job::Job {
+    let points: Vec<_> = (0..n)
+        .map(|i| json!({"x": number(i as f64), "y": number(((i * 7) % 5) as f64)}))
+        .collect();
+    let job = json!({"degree": 2, "alpha": 0.5, "lower_height": 0.5, "points": points,
+                     "knots": knots, "samples": 41,
+                     "weights": (0..n).map(|i| 1.0 + i as f64 / 3.0).collect::<Vec<_>>()});
+    parse_job(&job.to_string(), "job.json").unwrap()
+}
+
+#[test]
+fn knots_of_full_multiplicity_at_a_domain_end_are_cut_off_before_writing() {
+    // Order 3, domain [U[2], U[4]] = [0, 0.5]: P3 acts on [0.5, 1] only. STEP
+    // wrote (3,3,1), which OpenCASCADE refuses ("Poles and degree mismatch").
+    let job = job_with_knots(4, &[0.0, 0.0, 0.0, 0.5, 0.5, 0.5, 1.0]);
+    let g = job
+        .geometry(&job.settings(&Overrides::default()).unwrap())
+        .unwrap();
+    assert!(g.curves.iter().all(|c| c.pieces.len() == 1
+        && c.pieces[0].control_points().len() == 3
+        && c.pieces[0].knots().as_slice() == [0.0, 0.0, 0.0, 0.5, 0.5, 0.5]));
+    let step = render(CadFormat::Step, &g);
+    assert!(
+        step.contains("B_SPLINE_CURVE_WITH_KNOTS((3,3),(0.0,0.5),"),
+        "{step}"
+    );
+    assert!(!step.contains("(3,3,1)"));
+    assert_step_multiplicities(&step);
+    // IGES 126: K = 2 (three control points), M = 2, the six knots, V(0) = 0,
+    // V(1) = 0.5.
+    let iges = render(CadFormat::Iges, &g);
+    let params: String = iges
+        .lines()
+        .filter(|l| &l[72..73] == "P")
+        .map(|l| l[..64].trim_end())
+        .collect();
+    assert_eq!(
+        params
+            .matches("126,2,2,1,0,0,0,0.0,0.0,0.0,0.5,0.5,0.5,")
+            .count(),
+        8,
+        "{params}"
+    );
+    let obj = render(CadFormat::Obj, &g);
+    assert_eq!(obj.matches("parm u 0.0 0.0 0.0 0.5 0.5 0.5\n").count(), 8);
+    let dxf = render(CadFormat::Dxf, &g.clamped());
+    assert_eq!(dxf.matches("\n 72\n6\n 73\n3\n").count(), 8, "{dxf}");
+}
+
+/// Every layout of knots of full multiplicity at the domain's ends (with
+/// knots beyond them at the end, the start or both, with and without a jump
+/// inside): the STEP file obeys ISO 10303-42, and the OBJ file read back
+/// gives `run`'s samples of every curve.
+#[test]
+fn curves_cut_at_their_domain_ends_read_back_as_run_samples_them() {
+    use t2spline::Layer;
+    for (n, knots) in [
+        (4, vec![0.0, 0.0, 0.0, 0.5, 0.5, 0.5, 1.0]),
+        (5, vec![0.0, 0.0, 0.0, 0.25, 0.5, 0.5, 0.5, 2.0]),
+        (5, vec![0.0, 0.0, 0.0, 0.5, 0.5, 0.5, 0.7, 1.0]),
+        (4, vec![-1.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0]),
+        (5, vec![-2.0, -1.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0]),
+        (6, vec![-1.0, 0.0, 0.0, 0.0, 0.5, 1.0, 1.0, 1.0, 3.0]),
+        (
+            8,
+            vec![-1.0, 0.0, 0.0, 0.0, 0.3, 0.5, 0.5, 0.5, 1.0, 1.0, 1.0],
+        ),
+    ] {
+        let job = job_with_knots(n, &knots);
+        let settings = job.settings(&Overrides::default()).unwrap();
+        let g = job.geometry(&settings).unwrap();
+        let run = job.run(&settings).unwrap();
+        assert_step_multiplicities(&render(CadFormat::Step, &g));
+        let curves = obj_curves(&render(CadFormat::Obj, &g));
+        assert!(
+            curves.iter().all(|(_, c)| c.knots().is_clamped()),
+            "{knots:?}"
+        );
+        for name in NAMES {
+            let sampled = match name {
+                "defuzzified" => &run.samples.defuzzified,
+                _ => run
+                    .samples
+                    .layer(*Layer::ALL.iter().find(|l| l.name() == name).unwrap()),
+            };
+            let pieces: Vec<_> = curves
+                .iter()
+                .filter(|(g, _)| g == name)
+                .map(|(_, c)| c)
+                .collect();
+            for (k, &t) in run.samples.params.along().iter().enumerate() {
+                // The right piece at a jump, as `run` samples it.
+                let piece = pieces.iter().rev().find(|c| c.domain().start <= t).unwrap();
+                let got = piece.eval(t).unwrap();
+                let want = sampled.point(k).unwrap();
+                for a in 0..2 {
+                    assert!(
+                        (got[a] - want[a]).abs() <= 1e-12 * 8.0,
+                        "{knots:?}, {name}, t = {t}: {got:?} against {want:?}"
+                    );
+                }
+                assert_eq!(got[2], 0.0);
+            }
+        }
+    }
+}
+
+#[test]
+fn surfaces_cut_at_their_domain_ends_are_exact_and_obey_step_s_rule() {
+    use t2spline::job::Model;
+    use t2spline::{Direction, Layer};
+    // v: degree 1, the knot 0.5 twice at the domain end V[3] with 1 beyond:
+    // the net's fourth column acts on [0.5, 1] only.
+    let v = vec![0.0, 0.0, 0.25, 0.5, 0.5, 1.0];
+    let g = surface_geometry(4, Some(v.clone()));
+    assert!(g.surfaces.iter().all(|s| s.patches.len() == 1
+        && s.patches[0].shape() == [3, 3]
+        && s.patches[0].knots(Direction::V).as_slice() == [0.0, 0.0, 0.25, 0.5, 0.5]));
+    let step = render(CadFormat::Step, &g);
+    assert!(
+        step.contains("B_SPLINE_SURFACE_WITH_KNOTS((3,3),(2,1,2),"),
+        "{step}"
+    );
+    assert_step_multiplicities(&step);
+    let obj = render(CadFormat::Obj, &g);
+    assert_eq!(obj.matches("parm v 0.0 0.0 0.25 0.5 0.5\n").count(), 8);
+    // On its domain [0, 1] × [0, 0.5] each patch is the job's surface.
+    let Model::Surface(fuzzy) = surface_job(4, Some(v)).model else {
+        unreachable!("a surface job")
+    };
+    for s in &g.surfaces {
+        let Some(layer) = Layer::ALL.iter().find(|l| l.name() == s.name) else {
+            continue;
+        };
+        let whole = fuzzy.layer_surface(*layer);
+        for a in 0..=8 {
+            for b in 0..=8 {
+                let (u, v) = (f64::from(a) / 8.0, f64::from(b) / 16.0);
+                let (x, y) = (s.patches[0].eval(u, v).unwrap(), whole.eval(u, v).unwrap());
+                for i in 0..3 {
+                    assert!(
+                        (x[i] - y[i]).abs() <= 1e-13,
+                        "{} ({u}, {v}): {x:?} against {y:?}",
+                        s.name
+                    );
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn control_characters_of_the_description_never_reach_a_file_raw() {
+    let description = "line one \u{1b}[31mred\u{7}\r\nline two\tends\rthree\u{85}\u{7f}";
+    let meta = CadMeta {
+        name: "curves\u{1b}.x".into(),
+        description: Some(description.into()),
+        timestamp: "2026-01-02T03:04:05".into(),
+    };
+    let curves = geometry(5, 2, None);
+    let surfaces = surface_geometry(2, None);
+    for format in CadFormat::ALL {
+        for g in [&curves, &surfaces] {
+            if format == CadFormat::Dxf && g.curves.is_empty() {
+                continue;
+            }
+            let text = render_cad(format, g, &meta, "job.json").unwrap();
+            let raw: Vec<char> = text
+                .chars()
+                .filter(|&c| c.is_control() && c != '\n')
+                .collect();
+            assert!(raw.is_empty(), "{format}: {raw:?} in\n{text}");
+            match format {
+                CadFormat::Step => assert!(
+                    text.contains("'line one \\X2\\001B\\X0\\[31mred\\X2\\0007\\X0\\"),
+                    "{text}"
+                ),
+                CadFormat::Iges => {
+                    assert!(
+                        text.contains("line one ?[31mred? line two ends three ?"),
+                        "{text}"
+                    );
+                    assert!(text.lines().all(|l| l.len() == 80));
+                }
+                CadFormat::Obj => assert!(
+                    text.contains("# line one ?[31mred?\n# line two ends\n# three??\n"),
+                    "{text}"
+                ),
+                CadFormat::Dxf => {}
+            }
+        }
+    }
 }

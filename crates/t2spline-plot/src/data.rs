@@ -89,19 +89,15 @@ pub fn compute_within(
     run_with(job, alpha, method, samples)
 }
 
-/// The result of the job at `alpha` with the type reduction `method` and the
-/// job's own samples, as `t2spline run --alpha A --type-reduction M`
-/// computes it (a curve or a surface).
+/// The result of the job at `alpha` with the type reduction `method` and
+/// `samples`, as `t2spline run --alpha A --type-reduction M --samples S`
+/// computes it (a curve or a surface), the settings checked by the core as
+/// the command's are.
 ///
 /// # Errors
 /// [`Error::Core`] if the run fails (it does not for a validated job without
 /// derivatives).
-pub fn run_job(job: &Job, alpha: Alpha, method: TypeReduction) -> Result<RunOutput, Error> {
-    run_with(job, alpha, method, job.samples)
-}
-
-/// The run with these settings, checked by the core as the command's are.
-fn run_with(
+pub fn run_with(
     job: &Job,
     alpha: Alpha,
     method: TypeReduction,

@@ -86,7 +86,7 @@ pub use output::{render_files, Format};
 pub use panel_layout::{AxisLayout, PanelLayout};
 #[cfg(feature = "png")]
 pub use png::{svg_to_png, Pixmap, PNG_DPI, PNG_SCALE};
-pub use report::{render as render_report, Stops, DATA_BUDGET};
+pub use report::{render as render_report, Stops, DATA_BUDGET, MAX_FILE_GRID, MAX_FILE_SAMPLES};
 pub use scene::{ColorBar, Facet, Figure, Item, LegendEntry, Mark, Panel, Priority, Xy};
 pub use simplify::simplify;
 pub use style::{viridis, Color, Fill, Marker, Shape, Stroke};

@@ -315,14 +315,16 @@ fn token_len(text: &str) -> usize {
     text.find([',', ';']).map_or(text.len(), |i| i + 1)
 }
 
-/// Free text in lines of at most `width` characters, broken at spaces.
+/// Free text in lines of at most `width` characters, broken at spaces;
+/// characters outside printable ASCII (control characters such as an
+/// escape, and every non-ASCII one) become `?`, as in Hollerith strings.
 fn wrap(text: &str, width: usize) -> Vec<String> {
     let mut lines = Vec::new();
     let mut line = String::new();
     for word in text.split_whitespace() {
         let word: String = word
             .chars()
-            .map(|c| if c.is_ascii() { c } else { '?' })
+            .map(|c| if (' '..='~').contains(&c) { c } else { '?' })
             .collect();
         for piece in word.as_bytes().chunks(width.max(1)) {
             let piece = String::from_utf8_lossy(piece);

@@ -27,8 +27,8 @@ pub(super) fn render(geometry: &Geometry, meta: &CadMeta) -> String {
     let mut out = String::new();
     out.push_str("# t2spline: a run's curves or surfaces as exact rational B-splines\n");
     if let Some(d) = &meta.description {
-        for line in d.lines() {
-            let _ = writeln!(out, "# {line}");
+        for line in d.lines().flat_map(|l| l.split('\r')) {
+            let _ = writeln!(out, "# {}", comment_text(line));
         }
     }
     let _ = writeln!(
@@ -95,4 +95,17 @@ pub(super) fn render(geometry: &Geometry, meta: &CadMeta) -> String {
         }
     }
     out
+}
+
+/// A line of a comment without control characters: a tab becomes a space,
+/// every other control character (an escape, a bell, DEL, C1 controls) `?`,
+/// so that no reader or terminal acts on the job's description.
+fn comment_text(line: &str) -> String {
+    line.chars()
+        .map(|c| match c {
+            '\t' => ' ',
+            c if c.is_control() => '?',
+            c => c,
+        })
+        .collect()
 }

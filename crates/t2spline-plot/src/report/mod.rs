@@ -15,6 +15,13 @@
 //! compressed ([`pack`]); the page's script only unpacks and swaps them in.
 //! Numbers are written as `run` writes them, so they agree to the last
 //! digit.
+//!
+//! The report's memory and size do not grow with the job's `samples`: the
+//! figures are drawn from a sampling of their own, and the result files are
+//! those of the job's samples up to [`MAX_FILE_SAMPLES`] per curve
+//! ([`MAX_FILE_GRID`] per direction of a surface); beyond, they are
+//! `t2spline run --samples 1001`'s (`101,101`), and the page says so and
+//! that `t2spline run` gives the full result.
 
 mod downloads;
 mod frames;
@@ -32,7 +39,7 @@ pub use stops::Stops;
 
 use rayon::prelude::*;
 use serde_json::{json, Value};
-use t2spline::job::{Job, RunOutput};
+use t2spline::job::{Job, RunOutput, Samples};
 use t2spline::{Alpha, Axis, Layer, TypeReduction};
 
 use crate::figures::curve::{
@@ -52,6 +59,59 @@ use tables::{number_text, rounded};
 /// The most bytes the packed per-stop data may take; the grid of stops is
 /// coarsened to stay within it.
 pub const DATA_BUDGET: usize = 3_500_000;
+
+/// The most samples per curve of the result files a report carries. A job
+/// sampled more finely gets, at every stop that carries files, the files of
+/// `t2spline run --samples 1001` instead, and the page says so: a page needs
+/// no more, and the memory and size of a report then no longer grow with
+/// the job's `samples` (at 30 000 samples the files of every stop took
+/// 2.9 GB, at 100 000 the report ran out of memory).
+pub const MAX_FILE_SAMPLES: usize = 1001;
+
+/// The most samples per direction of a surface's result files in a report
+/// (101 × 101 at most), as [`MAX_FILE_SAMPLES`] for a curve.
+pub const MAX_FILE_GRID: usize = 101;
+
+/// The samples of the result files a report of a job sampled at `samples`
+/// carries: the job's, at most [`MAX_FILE_SAMPLES`] along a curve and
+/// [`MAX_FILE_GRID`] in each direction of a surface.
+#[must_use]
+pub(crate) fn file_samples(samples: Samples) -> Samples {
+    match samples {
+        Samples::Along(n) => Samples::Along(n.min(MAX_FILE_SAMPLES)),
+        Samples::Grid(grid) => Samples::Grid(grid.map(|n| n.min(MAX_FILE_GRID))),
+    }
+}
+
+/// Samples as the page writes them: `1001`, or `101 × 101` for a grid.
+fn samples_text(samples: Samples) -> String {
+    match samples {
+        Samples::Along(n) => n.to_string(),
+        Samples::Grid([u, v]) => format!("{u} × {v}"),
+    }
+}
+
+/// Samples as `--samples` takes them: `1001`, or `101,101`.
+fn samples_option(samples: Samples) -> String {
+    match samples {
+        Samples::Along(n) => n.to_string(),
+        Samples::Grid([u, v]) => format!("{u},{v}"),
+    }
+}
+
+/// What the page says, under the slider, of result files sampled more
+/// coarsely than the job ([`file_samples`]); `None` when they are the job's.
+fn thinned_note(job: &Job) -> Option<String> {
+    let files = file_samples(job.samples);
+    (files != job.samples).then(|| {
+        format!(
+            "The job samples {}; to keep the report small its result files (JSON, CSV) are sampled at {}, the most a report carries: they are the bytes of <code>t2spline run JOB --samples {} --alpha A</code>. <code>t2spline run JOB</code> gives the full result at the job's samples. The figures are drawn from a sampling of their own.",
+            samples_text(job.samples),
+            samples_text(files),
+            samples_option(files),
+        )
+    })
+}
 
 /// Renders the report of `job` (whose file text is `job_text`) with the
 /// slider at `start`; `options` chooses the number shown and the aspect of
@@ -154,7 +214,7 @@ pub fn render(
         "strings": strings.into_json(),
         "downloads": downloads::pack(&files),
         "files_at": with_files.index_json(&shown),
-        "files_note": with_files.note(),
+        "files_note": with_files.note(job),
     });
     // Frame `initial` is the start, with the job's reduction.
     let Some(fig_result) = start_figure_run else {
@@ -196,6 +256,7 @@ pub fn render(
         &heights,
         &start_run,
         &reductions::selector(job.type_reduction),
+        thinned_note(job).as_deref(),
     );
     let number_caption = format!(
         "Coordinate {} of control point {}: its upper (UMF), primary and lower (LMF) membership functions, the cut at α and the paper's type-reduced triangle with its centroid, and below the axis the other reductions (none uses α). Other numbers: t2spline report --point {} --axis x|y|z.",
@@ -297,7 +358,7 @@ fn choose_stops(
         .par_iter()
         .map(|&a| {
             let alpha = Alpha::try_new(a)?;
-            let run = data::run_job(job, alpha, TypeReduction::Paper)?;
+            let run = data::run_with(job, alpha, TypeReduction::Paper, file_samples(job.samples))?;
             let files: Vec<String> = files_of(&run)?.into_iter().map(|(_, t)| t).collect();
             let figures: Vec<String> =
                 stop_figures(job, alpha, TypeReduction::Paper, &heights, options)?
@@ -400,9 +461,9 @@ impl FileStops {
             .collect()
     }
 
-    /// What the page says at a frame without downloads (before the `run`
-    /// command that writes them), or `null` if every frame has them.
-    fn note(&self) -> Value {
+    /// What the page says at a frame of `job` without downloads (before the
+    /// `run` command that writes them), or `null` if every frame has them.
+    fn note(&self, job: &Job) -> Value {
         let where_ = match self {
             FileStops::Every => return Value::Null,
             FileStops::Grid(s) => format!(
@@ -411,10 +472,16 @@ impl FileStops {
             ),
             FileStops::Start(_) => "at the starting α only".to_owned(),
             FileStops::None(bytes) => {
+                let files = file_samples(job.samples);
+                let at = if files == job.samples {
+                    "at the job's samples".to_owned()
+                } else {
+                    format!("even at {} samples", samples_text(files))
+                };
                 return json!(format!(
-                    "The result files are left out of this report: at the job's samples they would take {:.1} MB at every α",
+                    "The result files are left out of this report: {at} they would take {:.1} MB at every α",
                     *bytes as f64 / 1e6
-                ))
+                ));
             }
         };
         json!(format!(
@@ -451,9 +518,9 @@ impl Frame {
         // The numbers a stop shows (control points, the distance's max, its
         // place and rms) do not depend on the samples, so the run its
         // figures were drawn from gives them; only the files need the run
-        // at the job's own samples.
+        // at the job's own samples (at most [`MAX_FILE_SAMPLES`]).
         let (run, files) = if with_files.carries(alpha.get(), method) {
-            let run = data::run_job(job, alpha, method)?;
+            let run = data::run_with(job, alpha, method, file_samples(job.samples))?;
             let files = files_of(&run)?;
             (run, files)
         } else {

@@ -131,7 +131,14 @@ impl Page {
     /// The sticky bar: the type-reduction selector, slider at the start's
     /// stop, number field, regime, jumps to each h, the distance of the
     /// starting result `r` and the result's download.
-    pub fn controls(&mut self, stops: &Stops, heights: &[f64], r: &RunOutput, selector: &str) {
+    pub fn controls(
+        &mut self,
+        stops: &Stops,
+        heights: &[f64],
+        r: &RunOutput,
+        selector: &str,
+        files_note: Option<&str>,
+    ) {
         let (alphas, initial) = (&stops.alphas, stops.initial);
         let a = number_text(Some(alphas[initial]));
         // A reduction that does not use alpha starts on its own frame.
@@ -158,12 +165,16 @@ impl Page {
         let e = &r.error;
         let _ = write!(
             self.html,
-            "</div>\n<div class=\"row\">\n<span class=\"metrics\">max distance {} at {}, rms {}</span>\n<span class=\"downloads\">result shown: <button type=\"button\" class=\"dl\" data-file=\"result.json\">JSON</button></span>\n</div>\n<p class=\"note\" id=\"alpha-note\" aria-live=\"polite\">Stops at α = 0, {}, …, 1 and at every h. At α = h type reduction switches from averaging three cut ends to two (SPEC §3), so the solution jumps just above h; that is the paper's method. Every number equals <code>t2spline run --alpha A</code> at the shown α (rounded where shown; exact in the downloads). Only the paper's type reduction uses α: with another one selected the slider rests, stage 2 is cut at α = 0 (the whole footprint) and every number equals <code>t2spline run --type-reduction NAME</code>.</p>\n</div>\n<main>\n",
+            "</div>\n<div class=\"row\">\n<span class=\"metrics\">max distance {} at {}, rms {}</span>\n<span class=\"downloads\">result shown: <button type=\"button\" class=\"dl\" data-file=\"result.json\">JSON</button></span>\n</div>\n<p class=\"note\" id=\"alpha-note\" aria-live=\"polite\">Stops at α = 0, {}, …, 1 and at every h. At α = h type reduction switches from averaging three cut ends to two (SPEC §3), so the solution jumps just above h; that is the paper's method. Every number equals <code>t2spline run --alpha A</code> at the shown α (rounded where shown; exact in the downloads). Only the paper's type reduction uses α: with another one selected the slider rests, stage 2 is cut at α = 0 (the whole footprint) and every number equals <code>t2spline run --type-reduction NAME</code>.</p>\n",
             metric("m-max", e.max),
             max_at(r),
             metric("m-rms", e.rms),
             stops.step_text(),
         );
+        if let Some(note) = files_note {
+            let _ = writeln!(self.html, "<p class=\"note\" id=\"files-note\">{note}</p>");
+        }
+        self.html.push_str("</div>\n<main>\n");
     }
 
     /// A section with its figure, downloads and tables.

@@ -198,3 +198,94 @@ fn a_job_of_another_reduction_opens_on_its_frame() {
     assert_eq!(data["initial"], json!(102));
     assert_eq!(data["stops"][102]["reduction"], json!("nie-tan"));
 }
+
+/// The downloads of frame `k` (null where the frame carries none).
+fn frame_file(data: &Value, name: &str, k: usize) -> Option<String> {
+    let at = data["files_at"][k].as_u64()?;
+    unpack(&data["downloads"], name, usize::try_from(at).unwrap())
+}
+
+#[test]
+fn a_finely_sampled_curve_carries_thinned_files_and_says_so() {
+    // At 30 000 samples the files of every stop took 2.9 GB, and at 100 000
+    // the report ran out of memory. The report never runs the job at its own
+    // samples now: this one, at the most `validate` accepts, costs what a
+    // job of 1001 samples costs.
+    let (job, text) = example();
+    let job = Job {
+        samples: Samples::Along(1_000_000),
+        ..job
+    };
+    let html = render_at_037(&job, &text);
+    assert!(html.len() < 2 * DATA_BUDGET, "{} bytes", html.len());
+    assert!(html.contains(
+        "<p class=\"note\" id=\"files-note\">The job samples 1000000; to keep the report small its result files (JSON, CSV) are sampled at 1001, the most a report carries: they are the bytes of <code>t2spline run JOB --samples 1001 --alpha A</code>. <code>t2spline run JOB</code> gives the full result at the job's samples."
+    ));
+    let data = data_block(&html);
+    let initial = usize::try_from(data["initial"].as_u64().unwrap()).unwrap();
+    let thinned = Job {
+        samples: Samples::Along(MAX_FILE_SAMPLES),
+        ..job.clone()
+    };
+    for (name, file) in files_of(&run(&thinned, 0.37, TypeReduction::Paper)).unwrap() {
+        assert_eq!(
+            frame_file(&data, &name, initial).as_deref(),
+            Some(file.as_str()),
+            "{name}"
+        );
+    }
+    let result: Value =
+        serde_json::from_str(&frame_file(&data, "result.json", initial).unwrap()).unwrap();
+    assert_eq!(result["curves"]["params"].as_array().unwrap().len(), 1001);
+}
+
+#[test]
+fn a_job_within_the_limit_carries_its_own_samples_without_a_note() {
+    let (job, text) = example();
+    let job = Job {
+        samples: Samples::Along(MAX_FILE_SAMPLES),
+        ..job
+    };
+    assert_eq!(file_samples(job.samples), job.samples);
+    let html = render_at_037(&job, &text);
+    assert!(!html.contains("files-note"));
+    let data = data_block(&html);
+    let initial = usize::try_from(data["initial"].as_u64().unwrap()).unwrap();
+    let result: Value =
+        serde_json::from_str(&frame_file(&data, "result.json", initial).unwrap()).unwrap();
+    assert_eq!(result["curves"]["params"].as_array().unwrap().len(), 1001);
+}
+
+#[test]
+fn a_finely_sampled_surface_is_bounded_and_says_so() {
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/fuzzy-terrain.json");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let job = t2spline_io::parse_job(&text, "terrain").unwrap();
+    assert_eq!(
+        file_samples(Samples::Grid([1000, 40])),
+        Samples::Grid([101, 40])
+    );
+    let job = Job {
+        samples: Samples::Grid([1000, 1000]),
+        ..job
+    };
+    let html = render_at_037(&job, &text);
+    assert!(html.len() < 2 * DATA_BUDGET, "{} bytes", html.len());
+    assert!(html.contains(
+        "The job samples 1000 × 1000; to keep the report small its result files (JSON, CSV) are sampled at 101 × 101, the most a report carries: they are the bytes of <code>t2spline run JOB --samples 101,101 --alpha A</code>."
+    ));
+    let data = data_block(&html);
+    // One stop's files at 101 × 101 would take most of the budget: left
+    // out, and the note says at which samples.
+    let note = data["files_note"].as_str().unwrap();
+    assert!(
+        note.starts_with("The result files are left out of this report: even at 101 × 101 samples they would take "),
+        "{note}"
+    );
+    assert!(data["files_at"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .all(Value::is_null));
+}

@@ -19,8 +19,13 @@
 //! `B_SPLINE_CURVE_WITH_KNOTS`), so such a curve is given as its continuous
 //! pieces, cut at the jumps without arithmetic: each piece keeps its control
 //! points, weights and knots bit for bit, and its parameters. At a jump the
-//! run's value is the right piece's (SPEC §6: from the right). Surfaces are
-//! cut the same way in each direction, into patches.
+//! run's value is the right piece's (SPEC §6: from the right). A knot of
+//! full multiplicity at an end of the domain with knots beyond it is cut the
+//! same way: the control points and knots beyond it, which act only outside
+//! the domain, are dropped, so every piece is clamped there and the curve
+//! on its domain is unchanged (ISO 10303-42 allows no more than `p` equal
+//! knots inside a knot vector, and OpenCASCADE refuses or bends such a
+//! curve). Surfaces are cut the same way in each direction, into patches.
 
 use crate::error::Error;
 use crate::fuzzy::{Alpha, Layer};
@@ -35,8 +40,10 @@ use super::{Job, ModelVisitor, Settings};
 pub struct NamedCurve {
     /// `crisp`, `defuzzified`, or a layer's name (`upper_left`, …).
     pub name: &'static str,
-    /// The curve, cut at interior knots of full multiplicity; one piece when
-    /// it has none. Each piece keeps the curve's parameters.
+    /// The curve, cut at interior knots of full multiplicity and without the
+    /// control points beyond a knot of full multiplicity at an end of the
+    /// domain; one piece when it has none. Each piece keeps the curve's
+    /// parameters.
     pub pieces: Vec<NurbsCurve<3>>,
 }
 
@@ -217,24 +224,46 @@ fn lift_surface<const D: usize>(s: &NurbsSurface<D>) -> Result<NurbsSurface<3>, 
 
 /// The index ranges of control points of the continuous pieces of a knot
 /// vector: cut at every interior knot of full multiplicity (see
-/// [`continuous_pieces`]).
+/// [`continuous_pieces`]), and without the control points that act only
+/// outside the domain.
+///
+/// A run of `k` equal knots that holds an end of the domain, `U[p]` or
+/// `U[n]`, with knots beyond it, cuts the curve there too: the basis
+/// functions of the control points beyond the run vanish on the whole
+/// domain, so those points and their knots are dropped, and the curve on
+/// its domain is unchanged (no coefficient changes). CAD formats need the
+/// cut: ISO 10303-42 allows at most `p` equal knots inside a knot vector,
+/// and OpenCASCADE refuses such a STEP curve ("Poles and degree mismatch")
+/// and bends such an IGES curve.
+///
+/// ```text
+/// k = 3, U = (0, 0, 0, ½, ½, ½, 1), P₀ … P₃: domain [U[2], U[4]] = [0, ½]
+/// → U = (0, 0, 0, ½, ½, ½), P₀ … P₂  (P₃ acts on [½, 1] only)
+/// ```
 fn piece_ranges(knots: &KnotVector) -> Vec<(usize, usize)> {
     let k = knots.degree() + 1;
     let u = knots.as_slice();
     let domain = knots.domain();
     let mut cuts = Vec::new();
+    let (mut first, mut last) = (0, knots.count());
     let mut f = 0;
     for run in u.chunk_by(|a, b| a == b) {
         if let (true, Some(&v)) = (run.len() == k, run.first()) {
             if domain.start < v && v < domain.end {
                 cuts.push(f);
+            } else if v == domain.start {
+                // Points 0 … f − 1 end their support at or before U[p].
+                first = f;
+            } else if v == domain.end {
+                // Points f … n − 1 start their support at or after U[n].
+                last = f;
             }
         }
         f += run.len();
     }
     let mut ranges = Vec::with_capacity(cuts.len() + 1);
-    let mut start = 0;
-    for end in cuts.into_iter().chain([knots.count()]) {
+    let mut start = first;
+    for end in cuts.into_iter().chain([last]) {
         ranges.push((start, end));
         start = end;
     }
@@ -275,7 +304,7 @@ fn sub_net<T: Copy>(
 fn continuous_patches(s: &NurbsSurface<3>) -> Result<Vec<NurbsSurface<3>>, Error> {
     let (ku, kv) = (s.knots(Direction::U), s.knots(Direction::V));
     let (ru, rv) = (piece_ranges(ku), piece_ranges(kv));
-    if ru.len() == 1 && rv.len() == 1 {
+    if ru == [(0, ku.count())] && rv == [(0, kv.count())] {
         return Ok(vec![s.clone()]);
     }
     let nv = s.shape()[1];
@@ -311,7 +340,7 @@ fn lift<const D: usize>(c: &NurbsCurve<D>) -> Result<NurbsCurve<3>, Error> {
 /// right of `u`, and conversely: no coefficient changes.
 fn continuous_pieces(c: &NurbsCurve<3>) -> Result<Vec<NurbsCurve<3>>, Error> {
     let ranges = piece_ranges(c.knots());
-    if ranges.len() == 1 {
+    if ranges == [(0, c.knots().count())] {
         return Ok(vec![c.clone()]);
     }
     ranges
@@ -392,5 +421,106 @@ mod tests {
     fn full_multiplicity_at_the_domain_ends_is_no_jump() {
         let c = curve(vec![0.0, 0.0, 0.0, 1.0, 2.0, 2.0, 2.0], 2);
         assert_eq!(continuous_pieces(&c).unwrap().len(), 1);
+    }
+    /// Samples of `piece` and `c` agree on the domain of `c` (which the piece
+    /// must keep).
+    fn assert_same_curve(piece: &NurbsCurve<3>, c: &NurbsCurve<3>) {
+        assert_eq!(piece.domain(), c.domain());
+        let d = c.domain();
+        for s in 0..=40 {
+            let t = d.lerp(f64::from(s) / 40.0);
+            let (a, b) = (piece.eval(t).unwrap(), c.eval(t).unwrap());
+            for i in 0..3 {
+                assert!((a[i] - b[i]).abs() <= 1e-12, "t = {t}: {a:?} against {b:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn full_multiplicity_at_the_domain_end_with_knots_beyond_is_cut_off() {
+        // Order 3: domain [U[2], U[4]] = [0, 0.5]; P3 acts on [0.5, 1] only.
+        let c = curve(vec![0.0, 0.0, 0.0, 0.5, 0.5, 0.5, 1.0], 2);
+        let pieces = continuous_pieces(&c).unwrap();
+        assert_eq!(pieces.len(), 1);
+        let p = &pieces[0];
+        assert_eq!(p.knots().as_slice(), [0.0, 0.0, 0.0, 0.5, 0.5, 0.5]);
+        assert_eq!(p.control_points(), &c.control_points()[..3]);
+        assert_eq!(p.weights(), &c.weights()[..3]);
+        assert!(p.knots().is_clamped());
+        assert_same_curve(p, &c);
+    }
+
+    #[test]
+    fn full_multiplicity_at_the_domain_start_with_knots_before_is_cut_off() {
+        // Order 3: domain [U[2], U[4]] = [0.5, 1]; P0 acts on [0, 0.5] only.
+        let c = curve(vec![0.0, 0.5, 0.5, 0.5, 1.0, 1.0, 1.0], 2);
+        let pieces = continuous_pieces(&c).unwrap();
+        assert_eq!(pieces.len(), 1);
+        assert_eq!(pieces[0].knots().as_slice(), [0.5, 0.5, 0.5, 1.0, 1.0, 1.0]);
+        assert_eq!(pieces[0].control_points(), &c.control_points()[1..]);
+        assert_same_curve(&pieces[0], &c);
+    }
+
+    #[test]
+    fn both_ends_and_a_jump_cut_together() {
+        // Degree 2, 8 points: runs of 3 at the domain start 1, the jump 2
+        // and the domain end 3, with knots before and after.
+        let c = curve(
+            vec![0.0, 1.0, 1.0, 1.0, 1.5, 2.0, 2.0, 2.0, 3.0, 3.0, 3.0],
+            2,
+        );
+        assert_eq!((c.domain().start, c.domain().end), (1.0, 3.0));
+        let pieces = continuous_pieces(&c).unwrap();
+        let domains: Vec<_> = pieces
+            .iter()
+            .map(|p| (p.domain().start, p.domain().end))
+            .collect();
+        assert_eq!(domains, [(1.0, 2.0), (2.0, 3.0)]);
+        assert!(pieces.iter().all(|p| p.knots().is_clamped()));
+        assert_eq!(pieces[0].control_points(), &c.control_points()[1..5]);
+        assert_eq!(pieces[1].control_points(), &c.control_points()[5..8]);
+        // Degree 2 with an unclamped end run of 3 beyond the last knot.
+        let c = curve(vec![0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 2.0, 3.0], 2);
+        let pieces = continuous_pieces(&c).unwrap();
+        assert_eq!(pieces.len(), 1);
+        assert_eq!(pieces[0].control_points().len(), 3);
+        assert_same_curve(&pieces[0], &c);
+    }
+
+    #[test]
+    fn surfaces_drop_the_rows_and_columns_outside_the_domain() {
+        // u: order 3 with a run of 3 at the domain end 0.5 and the knot 1
+        // beyond; v: order 2, clamped.
+        let points: Vec<Vec<[f64; 3]>> = (0..4)
+            .map(|i| {
+                (0..3)
+                    .map(|j| [i as f64, j as f64, (i * j) as f64 * 0.25 + (i * i) as f64])
+                    .collect()
+            })
+            .collect();
+        let weights = vec![vec![1.0, 2.0, 1.0]; 4];
+        let ku = KnotVector::try_new(vec![0.0, 0.0, 0.0, 0.5, 0.5, 0.5, 1.0], 2, 4).unwrap();
+        let kv = KnotVector::try_new(vec![0.0, 0.0, 0.5, 1.0, 1.0], 1, 3).unwrap();
+        let s = NurbsSurface::try_new(points, weights, [ku, kv]).unwrap();
+        let patches = continuous_patches(&s).unwrap();
+        assert_eq!(patches.len(), 1);
+        let p = &patches[0];
+        assert_eq!(p.shape(), [3, 3]);
+        assert_eq!(
+            p.knots(Direction::U).as_slice(),
+            [0.0, 0.0, 0.0, 0.5, 0.5, 0.5]
+        );
+        for a in 0..=10 {
+            for b in 0..=10 {
+                let (u, v) = (0.05 * f64::from(a), 0.1 * f64::from(b));
+                let (x, y) = (p.eval(u, v).unwrap(), s.eval(u, v).unwrap());
+                for i in 0..3 {
+                    assert!(
+                        (x[i] - y[i]).abs() <= 1e-12,
+                        "({u}, {v}): {x:?} against {y:?}"
+                    );
+                }
+            }
+        }
     }
 }
