@@ -196,11 +196,16 @@ fn run_error(py: Python<'_>, e: RunError) -> PyErr {
 /// JobError
 ///     For a job that breaks the rules, with the lines ``t2spline run``
 ///     prints (``file:line:column: place: rule``; a dict is named ``<dict>``
-///     and placed in its ``json.dumps(job, indent=2)`` text).
+///     and placed in its ``json.dumps(job, indent=2)`` text); NaN or
+///     infinity in a dict too: ``<dict>:47:9: points[1].x.crisp: NaN is not
+///     a finite number (NaN and infinity are refused)``.
 /// ValueError
 ///     For a keyword out of range, named: ``samples: samples = 1: at least 2
 ///     are needed (both ends of the domain)``; for an unknown
 ///     ``type_reduction``.
+/// TypeError
+///     For a keyword of the wrong type, named with what it takes:
+///     ``samples: expected an int or a pair (u, v) of ints, got str``.
 /// OSError
 ///     For a job file that cannot be read.
 ///
