@@ -48,7 +48,7 @@ pub fn read_job(path: &Path) -> Result<Job, Error> {
 /// Writes to standard output with `write`; a failure is an [`Error::Write`]
 /// naming `<stdout>` (a closed pipe among them, which `main` treats as
 /// success), and so is a standard output that was closed when the program
-/// started (`t2spline run job.json >&-`).
+/// started (`t2spline run job.json >&-`; not one sent to `/dev/null`).
 pub fn to_stdout(write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>) -> Result<(), Error> {
     let failed = |source| Error::Write {
         path: PathBuf::from("<stdout>"),
@@ -61,32 +61,59 @@ pub fn to_stdout(write: impl FnOnce(&mut dyn Write) -> std::io::Result<()>) -> R
     write(&mut out).and_then(|()| out.flush()).map_err(failed)
 }
 
-/// Whether standard output was closed when the program started. Rust's
-/// runtime then opens `/dev/null` in its place, read-write, so that writes
-/// vanish without an error; a shell's `>/dev/null` opens it write-only. So
-/// `/dev/null` open for reading and writing on descriptor 1 means closed
-/// (`1<>/dev/null`, which looks the same, is taken as closed too).
+/// Whether standard output was closed when the program started
+/// (`t2spline run job.json >&-`). Rust's runtime opens `/dev/null` in place
+/// of a closed descriptor 1 before `main`, exactly as a shell's `1<>/dev/null`
+/// or Python's `stdout=subprocess.DEVNULL` open it (read-write), so the
+/// descriptor is looked at earlier still: by a function that the loader runs
+/// among the program's initialisers (`.init_array` on ELF systems,
+/// `__mod_init_func` on Apple's), before Rust's runtime starts. Standard
+/// output sent to `/dev/null` in any way is open, and written.
 #[cfg(unix)]
 fn stdout_was_closed() -> bool {
-    use rustix::fs::{fcntl_getfl, fstat, OFlags};
-    use std::os::unix::fs::MetadataExt;
-    let stdout = std::io::stdout();
-    let (Ok(flags), Ok(stat), Ok(null)) = (
-        fcntl_getfl(&stdout),
-        fstat(&stdout),
-        std::fs::metadata("/dev/null"),
-    ) else {
-        return false;
-    };
-    // `st_rdev` is a `u64` on some targets and a `c_ulong` on others.
-    #[allow(clippy::useless_conversion)]
-    let device = u64::from(stat.st_rdev);
-    flags & OFlags::RWMODE == OFlags::RDWR && device == null.rdev()
+    at_start::STDOUT_CLOSED.load(std::sync::atomic::Ordering::Relaxed)
 }
 
 #[cfg(not(unix))]
 fn stdout_was_closed() -> bool {
     false
+}
+
+#[cfg(unix)]
+mod at_start {
+    use std::sync::atomic::{AtomicBool, Ordering};
+
+    /// Whether descriptor 1 was closed at start; false where the
+    /// initialiser does not run (a target without either section).
+    pub(super) static STDOUT_CLOSED: AtomicBool = AtomicBool::new(false);
+
+    /// Records whether descriptor 1 is open: `F_GETFD` fails (`EBADF`) on a
+    /// closed descriptor only. A plain system call and an atomic store: it
+    /// needs nothing of the runtime that has not started yet, and cannot
+    /// panic.
+    extern "C" fn record() {
+        let closed = rustix::io::fcntl_getfd(rustix::stdio::stdout()).is_err();
+        STDOUT_CLOSED.store(closed, Ordering::Relaxed);
+    }
+
+    // The one `unsafe` item of the workspace (the lint is `deny`, not
+    // `forbid`, in this crate for it): a pointer to `record` in the section
+    // of initialisers, which the loader calls once before `main`. Sound
+    // because `record` is a safe `extern "C" fn` taking no arguments (the
+    // C runtime may pass `argc, argv, envp`, which the C calling convention
+    // lets a function ignore), touches only an atomic and a system call, and
+    // returns normally.
+    #[allow(unsafe_code)]
+    #[used]
+    #[cfg_attr(
+        any(target_os = "macos", target_os = "ios"),
+        link_section = "__DATA,__mod_init_func"
+    )]
+    #[cfg_attr(
+        not(any(target_os = "macos", target_os = "ios")),
+        link_section = ".init_array"
+    )]
+    static RECORD: extern "C" fn() = record;
 }
 
 /// The folders a run creates for its outputs, so that a failed run can remove

@@ -116,6 +116,53 @@ fn independent_fit_of_the_example_is_refused_and_writes_nothing() {
     assert_eq!(std::fs::read_to_string(&job).unwrap(), "old");
 }
 
+/// Data near the limit of coordinates (1e150) whose interpolant swings
+/// beyond it: the fit names the control value and the limit, in both modes,
+/// never broken orders (there are none) nor `--fuzzy-fit valid` (given).
+#[test]
+fn a_fitted_control_value_beyond_the_limit_is_named() {
+    let n = |c: f64| {
+        json!({"crisp": c, "upper": [c - 1e148, c + 1e148], "primary": [c - 5e147, c + 5e147],
+               "lower": [c - 1e147, c + 1e147]})
+    };
+    let ys = [0.0, 9e149, -9e149, 9e149, 0.0];
+    let points: Vec<Value> = ys
+        .iter()
+        .enumerate()
+        .map(|(i, &y)| json!({"x": n(i as f64 * 1e149), "y": n(y)}))
+        .collect();
+    let dir = tempfile::tempdir().unwrap();
+    let data = dir.path().join("big.json");
+    let text = json!({"degree": 3, "lower_height": 0.5, "points": points}).to_string();
+    std::fs::write(&data, text).unwrap();
+    for mode in ["valid", "independent"] {
+        let out = t2spline()
+            .arg("fit")
+            .arg(&data)
+            .args(["--fuzzy-fit", mode])
+            .assert()
+            .code(2)
+            .stdout("")
+            .get_output()
+            .clone();
+        let stderr = String::from_utf8(out.stderr).unwrap();
+        let lines: Vec<&str> = stderr.lines().collect();
+        assert_eq!(lines.len(), 1, "{mode}: {stderr}");
+        assert!(
+            predicate::str::is_match(
+                r"^t2spline: .*big\.json: control point 1, y, layer crisp: the fitted value [0-9.]+e150 is beyond the limit of coordinates, \[-1e150, 1e150\]; "
+            )
+            .unwrap()
+            .eval(lines[0]),
+            "{mode}: {stderr}"
+        );
+        assert!(
+            !stderr.contains("breaks the order") && !stderr.contains("--fuzzy-fit"),
+            "{mode}: {stderr}"
+        );
+    }
+}
+
 #[test]
 fn bad_options_are_named() {
     t2spline()

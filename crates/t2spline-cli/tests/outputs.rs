@@ -1,6 +1,7 @@
 //! Outputs that are not plain new files: devices and FIFOs written through,
 //! symbolic links followed, hard links refused, inputs never overwritten, a
-//! reused CSV folder, a closed standard output, and temporary files removed
+//! reused CSV folder, a closed standard output (and one on `/dev/null`,
+//! which is open), and temporary files removed
 //! when the program is stopped by a signal.
 #![cfg(unix)]
 
@@ -210,6 +211,48 @@ fn a_closed_standard_output_is_exit_4() {
         .output()
         .unwrap();
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+}
+
+/// Runs `t2spline args…` from a shell with standard output redirected by
+/// `redirect`.
+fn with_stdout(redirect: &str, args: &str) -> Output {
+    Command::new("sh")
+        .arg("-c")
+        .arg(format!("exec \"$0\" {args} {redirect}"))
+        .arg(env!("CARGO_BIN_EXE_t2spline"))
+        .output()
+        .unwrap()
+}
+
+/// `/dev/null` opened read-write on descriptor 1 (`1<>/dev/null`, and
+/// Python's `subprocess.DEVNULL`) looks exactly like what Rust's runtime puts
+/// in place of a closed one; it is open, and every command writes into it.
+#[test]
+fn a_standard_output_on_dev_null_is_open_however_it_was_opened() {
+    let job = s(&example()).to_owned();
+    let data = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/fit-measurements.json");
+    let dir = tempfile::tempdir().unwrap();
+    let (plots, report) = (dir.path().join("plots"), dir.path().join("report"));
+    for args in [
+        format!("run {job}"),
+        format!("validate {job}"),
+        format!("fit -q {}", s(&data)),
+        format!("plot {job} -o {} --format svg", s(&plots)),
+        format!("report {job} -o {}", s(&report)),
+    ] {
+        for redirect in ["1<>/dev/null", ">/dev/null"] {
+            let o = with_stdout(redirect, &args);
+            assert_eq!(
+                o.status.code(),
+                Some(0),
+                "{args} {redirect}: {}",
+                stderr(&o)
+            );
+            assert_eq!(stderr(&o), "", "{args} {redirect}");
+        }
+    }
+    assert!(plots.join("stage1-fuzzy.svg").is_file());
+    assert!(report.join("report.html").is_file());
 }
 
 /// The `.t2spline-*.tmp` files under `dir`.

@@ -11,6 +11,7 @@ use t2spline_io::job::MAX_ORDER;
 
 use crate::arrays::{floats, shape_text, Floats};
 use crate::dim::{ByDim, PointList};
+use crate::keyword;
 use crate::net::shape;
 
 /// How the arguments that give a degree are named in messages: `degree`,
@@ -96,8 +97,9 @@ pub(crate) fn named_degree(
 }
 
 /// One value for both directions of a surface, or one per direction
-/// (`samples=(21, 11)`, `degree=(2, 1)`).
-#[derive(Clone, Copy, Debug, FromPyObject)]
+/// (`samples=(21, 11)`, `degree=(2, 1)`), read by
+/// [`keyword::per_direction`](crate::keyword::per_direction).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum PerDirection {
     /// The same value along u and along v.
     One(i64),
@@ -205,8 +207,10 @@ pub(crate) fn count(value: i64, name: &str, min: usize) -> PyResult<usize> {
 /// A direction from its name (`"u"`, `"v"`).
 ///
 /// # Errors
-/// `ValueError` naming the argument.
-pub(crate) fn direction(name: &str) -> PyResult<Direction> {
+/// `TypeError` for anything but a `str`, `ValueError` for another name,
+/// naming the argument.
+pub(crate) fn direction(arg: &Bound<'_, PyAny>) -> PyResult<Direction> {
+    let name = keyword::text(arg, "direction")?;
     Direction::BOTH
         .into_iter()
         .find(|d| d.to_string() == name)
@@ -218,8 +222,10 @@ pub(crate) fn direction(name: &str) -> PyResult<Direction> {
 /// A layer from its name (`"upper_left"`, …, `"crisp"`, …, `"upper_right"`).
 ///
 /// # Errors
-/// `ValueError` naming the argument `arg` and the names offered.
-pub(crate) fn layer(name: &str, arg: &str) -> PyResult<Layer> {
+/// `TypeError` for anything but a `str`, `ValueError` for another name,
+/// naming the argument `arg` (and the names offered).
+pub(crate) fn layer(value: &Bound<'_, PyAny>, arg: &str) -> PyResult<Layer> {
+    let name = keyword::text(value, arg)?;
     Layer::ALL
         .into_iter()
         .find(|l| l.name() == name)
@@ -235,9 +241,10 @@ pub(crate) fn layer(name: &str, arg: &str) -> PyResult<Layer> {
 /// A side of a type-reduced number from its name (`"left"`, `"right"`).
 ///
 /// # Errors
-/// `ValueError` naming the argument.
-pub(crate) fn side(name: &str) -> PyResult<Side> {
-    match name {
+/// `TypeError` for anything but a `str`, `ValueError` for another name,
+/// naming the argument.
+pub(crate) fn side(arg: &Bound<'_, PyAny>) -> PyResult<Side> {
+    match keyword::text(arg, "side")?.as_str() {
         "left" => Ok(Side::Left),
         "right" => Ok(Side::Right),
         other => Err(PyValueError::new_err(format!(

@@ -9,6 +9,7 @@ use t2spline::Domain;
 use crate::arrays::array;
 use crate::construct::count;
 use crate::errors::core_error;
+use crate::keyword;
 use crate::sample::check_output;
 
 /// The uniform parameters `tᵢ = a + (b − a)·i/(count − 1)` of a domain;
@@ -16,10 +17,10 @@ use crate::sample::check_output;
 pub(crate) fn uniform_params<'py>(
     py: Python<'py>,
     domain: Domain,
-    count: i64,
+    count: &Bound<'py, PyAny>,
     name: &str,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let n = self::count(count, name, 0)?;
+    let n = self::count(keyword::int(count, name)?, name, 0)?;
     check_output(n, 1, name)?;
     array(py, domain.uniform(n).map_err(core_error)?, &[n])
 }
@@ -84,7 +85,7 @@ macro_rules! curve_methods {
             fn uniform_params<'py>(
                 &self,
                 py: Python<'py>,
-                count: i64,
+                count: &Bound<'py, PyAny>,
             ) -> PyResult<Bound<'py, PyAny>> {
                 let domain = $crate::dim::by_dim!(&self.0, |c| c.domain());
                 $crate::curve_methods::uniform_params(py, domain, count, "count")
@@ -108,9 +109,15 @@ macro_rules! curve_methods {
             /// >>> d = c.insert_knot(0.3)
             /// >>> d.control_points.shape, bool(abs(d.eval(0.7) - c.eval(0.7)).max() < 1e-14)
             /// ((5, 2), True)
-            #[pyo3(signature = (u, times=1))]
-            fn insert_knot(&self, py: Python<'_>, u: f64, times: i64) -> PyResult<Self> {
-                let times = $crate::construct::count(times, "times", 1)?;
+            #[pyo3(signature = (u, times=None), text_signature = "($self, u, times=1)")]
+            fn insert_knot(
+                &self,
+                py: Python<'_>,
+                u: &Bound<'_, PyAny>,
+                times: Option<&Bound<'_, PyAny>>,
+            ) -> PyResult<Self> {
+                let u = $crate::keyword::real(u, "u")?;
+                let times = $crate::keyword::times(times)?;
                 $crate::dim::by_dim!(&self.0, |c| $crate::errors::compute(py, || Ok(c
                     .insert_knot(u, times)?
                     .into())))
@@ -129,9 +136,9 @@ macro_rules! curve_methods {
             /// The same curve of degree ``degree + times`` (The NURBS Book
             /// A5.9; an unclamped curve is first cut to its domain); a fuzzy
             /// curve on all layers.
-            #[pyo3(signature = (times=1))]
-            fn elevate_degree(&self, py: Python<'_>, times: i64) -> PyResult<Self> {
-                let times = $crate::construct::count(times, "times", 1)?;
+            #[pyo3(signature = (times=None), text_signature = "($self, times=1)")]
+            fn elevate_degree(&self, py: Python<'_>, times: Option<&Bound<'_, PyAny>>) -> PyResult<Self> {
+                let times = $crate::keyword::times(times)?;
                 $crate::dim::by_dim!(&self.0, |c| $crate::errors::compute(py, || Ok(c
                     .elevate_degree(times)?
                     .into())))
@@ -139,7 +146,8 @@ macro_rules! curve_methods {
 
             /// The two curves left and right of ``t``, strictly inside the
             /// domain, with domains ``(a, t)`` and ``(t, b)``.
-            fn split_at(&self, py: Python<'_>, t: f64) -> PyResult<(Self, Self)> {
+            fn split_at(&self, py: Python<'_>, t: &Bound<'_, PyAny>) -> PyResult<(Self, Self)> {
+                let t = $crate::keyword::real(t, "t")?;
                 $crate::dim::by_dim!(&self.0, |c| $crate::errors::compute(py, || {
                     let [a, b] = c.split_at(t)?;
                     Ok((a.into(), b.into()))
@@ -147,7 +155,13 @@ macro_rules! curve_methods {
             }
 
             /// The piece of the curve over ``[a, b]``, as a curve of its own.
-            fn segment(&self, py: Python<'_>, a: f64, b: f64) -> PyResult<Self> {
+            fn segment(
+                &self,
+                py: Python<'_>,
+                a: &Bound<'_, PyAny>,
+                b: &Bound<'_, PyAny>,
+            ) -> PyResult<Self> {
+                let (a, b) = ($crate::keyword::real(a, "a")?, $crate::keyword::real(b, "b")?);
                 $crate::dim::by_dim!(&self.0, |c| $crate::errors::compute(py, || Ok(c
                     .segment(a, b)?
                     .into())))

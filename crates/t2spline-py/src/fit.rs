@@ -12,6 +12,7 @@ use crate::classes::PyFuzzyCurve;
 use crate::construct::{degree, FuzzyArrays};
 use crate::dim::{ByDim, FromModel};
 use crate::errors::compute;
+use crate::keyword;
 
 /// Fits a fuzzy curve to fuzzy data points (``t2spline fit``): interpolation
 /// (The NURBS Book §9.2.1) or least squares with the end points interpolated
@@ -61,7 +62,10 @@ use crate::errors::compute;
 /// >>> bool(summary["deviations"]["crisp"]["max"] < 1e-12)   # interpolation
 /// True
 #[pyfunction]
-#[pyo3(signature = (crisp, upper, primary, lower, lower_height, *, degree, control_points=None, parametrization="chord", mode="valid"))]
+#[pyo3(
+    signature = (crisp, upper, primary, lower, lower_height, *, degree, control_points=None, parametrization=None, mode=None),
+    text_signature = "(crisp, upper, primary, lower, lower_height, *, degree, control_points=None, parametrization='chord', mode='valid')"
+)]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn fit<'py>(
     py: Python<'py>,
@@ -70,15 +74,21 @@ pub(crate) fn fit<'py>(
     primary: &Bound<'py, PyAny>,
     lower: &Bound<'py, PyAny>,
     lower_height: &Bound<'py, PyAny>,
-    degree: i64,
-    control_points: Option<i64>,
-    parametrization: &str,
-    mode: &str,
+    degree: &Bound<'py, PyAny>,
+    control_points: Option<&Bound<'py, PyAny>>,
+    parametrization: Option<&Bound<'py, PyAny>>,
+    mode: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<(PyFuzzyCurve, Bound<'py, PyDict>)> {
+    let degree = keyword::int(degree, "degree")?;
+    let control_points = keyword::opt_int(control_points, "control_points")?;
+    let parametrization = keyword::opt_text(parametrization, "parametrization")?;
+    let mode = keyword::opt_text(mode, "mode")?;
     let data = FuzzyArrays::read([crisp, upper, primary, lower, lower_height], 1)?;
     let options = FitOptions {
         degree: self::degree(Some(degree), None, None, data.n)?,
         parametrization: parametrization
+            .as_deref()
+            .unwrap_or("chord")
             .parse::<Parametrization>()
             .map_err(|e| PyValueError::new_err(format!("parametrization: {e}")))?,
         control_points: control_points
@@ -86,6 +96,8 @@ pub(crate) fn fit<'py>(
             .transpose()?,
     };
     let mode: FuzzyFitMode = mode
+        .as_deref()
+        .unwrap_or("valid")
         .parse()
         .map_err(|e| PyValueError::new_err(format!("mode: {e}")))?;
     let outcome = compute(py, move || {

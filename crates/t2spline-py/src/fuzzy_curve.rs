@@ -14,6 +14,7 @@ use crate::curve_methods::curve_methods;
 use crate::dim::by_dim;
 use crate::errors::compute;
 use crate::fuzzy_methods::{fuzzy_methods, index, numbers};
+use crate::keyword;
 use crate::sample::{at_params, channels, output_buffer, ParamsArg};
 
 fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
@@ -29,9 +30,13 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
         lower_height: &Bound<'_, PyAny>,
         weights: Option<&Bound<'_, PyAny>>,
         knots: Option<&Bound<'_, PyAny>>,
-        degree: Option<i64>,
-        order: Option<i64>,
+        degree: Option<&Bound<'_, PyAny>>,
+        order: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
+        let (degree, order) = (
+            keyword::opt_int(degree, "degree")?,
+            keyword::opt_int(order, "order")?,
+        );
         let data = FuzzyArrays::read([crisp, upper, primary, lower, lower_height], 1)?;
         let weights = optional_vector(weights, "weights")?.unwrap_or_else(|| vec![1.0; data.n]);
         let knots = optional_vector(knots, "knots")?;
@@ -45,15 +50,19 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
     }
 
     /// The fuzzy control point ``index``: one ``FuzzyNumber`` per coordinate.
-    fn point<'py>(&self, py: Python<'py>, index: i64) -> PyResult<Bound<'py, PyTuple>> {
+    fn point<'py>(
+        &self,
+        py: Python<'py>,
+        index: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyTuple>> {
         let n = by_dim!(&self.0, |c| c.points().len());
-        let i = self::index(index, n, "index")?;
+        let i = self::index(keyword::int(index, "index")?, n, "index")?;
         by_dim!(&self.0, |c| numbers(py, &c.points()[i]))
     }
 
     /// The layer curve through one value of every control point, as a
     /// ``NurbsCurve`` (``"crisp"``: the crisp curve).
-    fn layer_curve(&self, layer: &str) -> PyResult<PyNurbsCurve> {
+    fn layer_curve(&self, layer: &Bound<'_, PyAny>) -> PyResult<PyNurbsCurve> {
         let l = self::layer(layer, "layer")?;
         Ok(by_dim!(&self.0, |c| c.layer_curve(l).into()))
     }

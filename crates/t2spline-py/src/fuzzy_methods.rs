@@ -74,10 +74,13 @@ macro_rules! fuzzy_methods {
             fn solve(
                 &self,
                 py: Python<'_>,
-                alpha: Option<f64>,
-                type_reduction: Option<&str>,
+                alpha: Option<&Bound<'_, PyAny>>,
+                type_reduction: Option<&Bound<'_, PyAny>>,
             ) -> PyResult<$solved> {
-                let (a, reduction) = $crate::reduction::solve_settings(py, alpha, type_reduction)?;
+                let alpha = $crate::keyword::opt_real(alpha, "alpha")?;
+                let type_reduction = $crate::keyword::opt_text(type_reduction, "type_reduction")?;
+                let (a, reduction) =
+                    $crate::reduction::solve_settings(py, alpha, type_reduction.as_deref())?;
                 $crate::dim::by_dim!(&self.0, |c| $crate::errors::compute(py, || Ok(c
                     .solve_with(a, reduction)
                     .into())))
@@ -138,7 +141,7 @@ macro_rules! fuzzy_methods {
             fn layer_control_points<'py>(
                 &self,
                 py: Python<'py>,
-                layer: &str,
+                layer: &Bound<'py, PyAny>,
             ) -> PyResult<Bound<'py, PyAny>> {
                 let l = $crate::construct::layer(layer, "layer")?;
                 $crate::dim::by_dim!(&self.0, |c| $crate::net::points_array(

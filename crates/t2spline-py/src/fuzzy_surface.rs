@@ -11,11 +11,12 @@ use t2spline::{FuzzySurface, Layer};
 use crate::arrays::{coords_last, optional_vector};
 use crate::classes::{PyFuzzyCurve, PyFuzzySurface, PyNurbsSurface, PySurfaceSolution};
 use crate::closest::{ClosestArrays, Targets};
-use crate::construct::{layer, net_weights, rows, surface_degrees, FuzzyArrays, PerDirection};
+use crate::construct::{layer, net_weights, rows, surface_degrees, FuzzyArrays};
 use crate::curvature::{curvature_dict, spatial};
 use crate::dim::by_dim;
 use crate::errors::compute;
 use crate::fuzzy_methods::{fuzzy_methods, index, numbers};
+use crate::keyword;
 use crate::sample::{at_pairs, GridArg};
 use crate::surface_methods::surface_methods;
 
@@ -33,9 +34,13 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
         weights: Option<&Bound<'_, PyAny>>,
         knots_u: Option<&Bound<'_, PyAny>>,
         knots_v: Option<&Bound<'_, PyAny>>,
-        degree: Option<PerDirection>,
-        order: Option<PerDirection>,
+        degree: Option<&Bound<'_, PyAny>>,
+        order: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
+        let (degree, order) = (
+            keyword::opt_per_direction(degree, "degree")?,
+            keyword::opt_per_direction(order, "order")?,
+        );
         let data = FuzzyArrays::read([crisp, upper, primary, lower, lower_height], 2)?;
         let net = [data.net[0], data.net[1]];
         let weights = rows(net_weights(weights, net)?, net);
@@ -58,15 +63,23 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
 
     /// The fuzzy control point ``P̃ᵢⱼ`` (row ``i`` along u, column ``j``
     /// along v): one ``FuzzyNumber`` per coordinate.
-    fn point<'py>(&self, py: Python<'py>, i: i64, j: i64) -> PyResult<Bound<'py, PyTuple>> {
+    fn point<'py>(
+        &self,
+        py: Python<'py>,
+        i: &Bound<'py, PyAny>,
+        j: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyTuple>> {
         let [nu, nv] = by_dim!(&self.0, |s| s.shape());
-        let (i, j) = (index(i, nu, "i")?, index(j, nv, "j")?);
+        let (i, j) = (
+            index(keyword::int(i, "i")?, nu, "i")?,
+            index(keyword::int(j, "j")?, nv, "j")?,
+        );
         by_dim!(&self.0, |s| numbers(py, &s.points()[i * nv + j]))
     }
 
     /// The layer surface through one value of every control point, as a
     /// ``NurbsSurface`` (``"crisp"``: the crisp surface).
-    fn layer_surface(&self, layer: &str) -> PyResult<PyNurbsSurface> {
+    fn layer_surface(&self, layer: &Bound<'_, PyAny>) -> PyResult<PyNurbsSurface> {
         let l = self::layer(layer, "layer")?;
         Ok(by_dim!(&self.0, |s| s.layer_surface(l).into()))
     }

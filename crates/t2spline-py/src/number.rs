@@ -8,6 +8,7 @@ use t2spline::{Alpha, AlphaCut, Membership, Nt2Number};
 
 use crate::arrays::{array, floats};
 use crate::errors::core_error;
+use crate::keyword;
 
 /// A normal triangular type-2 fuzzy number (SPEC §1, paper Def. 4.1).
 ///
@@ -65,12 +66,14 @@ impl PyFuzzyNumber {
     #[new]
     #[pyo3(signature = (crisp, upper, primary, lower, lower_height))]
     fn new(
-        crisp: f64,
+        crisp: &Bound<'_, PyAny>,
         upper: &Bound<'_, PyAny>,
         primary: &Bound<'_, PyAny>,
         lower: &Bound<'_, PyAny>,
-        lower_height: f64,
+        lower_height: &Bound<'_, PyAny>,
     ) -> PyResult<Self> {
+        let crisp = keyword::real(crisp, "crisp")?;
+        let lower_height = keyword::real(lower_height, "lower_height")?;
         let feet = |arg, name| -> PyResult<[f64; 2]> {
             let f = floats(arg, name)?;
             f.expect_shape(name, &[2], ": (left, right)")?;
@@ -139,8 +142,8 @@ impl PyFuzzyNumber {
     /// AlphaCut(alpha=0.5, crisp=1.0, upper=(0.7, 1.45), primary=(0.8, 1.3), lower=(0.9666666666666667, 1.05))
     /// >>> x.alpha_cut(0.6).lower     # at alpha = h: the single value crisp
     /// (1.0, 1.0)
-    fn alpha_cut(&self, alpha: f64) -> PyResult<PyAlphaCut> {
-        let a = self::alpha(alpha)?;
+    fn alpha_cut(&self, alpha: &Bound<'_, PyAny>) -> PyResult<PyAlphaCut> {
+        let a = self::alpha(keyword::real(alpha, "alpha")?)?;
         Ok(PyAlphaCut {
             alpha: a.get(),
             cut: self.0.alpha_cut(a),
@@ -163,7 +166,7 @@ impl PyFuzzyNumber {
     /// >>> x = FuzzyNumber(1.0, (0.4, 1.9), (0.6, 1.6), (0.8, 1.3), 0.6)
     /// >>> [round(v, 12) for v in x.type_reduce(0.6)]   # at h: three-term means
     /// [0.866666666667, 1.0, 1.2]
-    fn type_reduce(&self, alpha: f64) -> PyResult<(f64, f64, f64)> {
+    fn type_reduce(&self, alpha: &Bound<'_, PyAny>) -> PyResult<(f64, f64, f64)> {
         Ok(self.alpha_cut(alpha)?.type_reduce())
     }
 
@@ -175,10 +178,10 @@ impl PyFuzzyNumber {
     /// --------
     /// >>> FuzzyNumber(2.0, (1.0, 3.0), (1.5, 2.5), (1.8, 2.2), 0.5).defuzzify(0.3)  # symmetric
     /// 2.0
-    fn defuzzify(&self, alpha: f64) -> PyResult<f64> {
+    fn defuzzify(&self, alpha: &Bound<'_, PyAny>) -> PyResult<f64> {
         Ok(self
             .0
-            .alpha_cut(self::alpha(alpha)?)
+            .alpha_cut(self::alpha(keyword::real(alpha, "alpha")?)?)
             .type_reduce()
             .defuzzify())
     }
@@ -210,14 +213,15 @@ impl PyFuzzyNumber {
     /// >>> x = FuzzyNumber(1.0, (0.4, 1.9), (0.6, 1.6), (0.8, 1.3), 0.6)
     /// >>> x.membership([0.9, 1.0, 1.3], which="lower").round(12).tolist()
     /// [0.3, 0.6, 0.0]
-    #[pyo3(signature = (x, which = "upper"))]
+    #[pyo3(signature = (x, which = None), text_signature = "($self, x, which='upper')")]
     fn membership<'py>(
         &self,
         py: Python<'py>,
         x: &Bound<'py, PyAny>,
-        which: &str,
+        which: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let which = match which {
+        let which = keyword::opt_text(which, "which")?;
+        let which = match which.as_deref().unwrap_or("upper") {
             "upper" => Membership::Upper,
             "primary" => Membership::Primary,
             "lower" => Membership::Lower,

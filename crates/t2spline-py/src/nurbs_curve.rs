@@ -12,6 +12,7 @@ use crate::construct::{count, degree};
 use crate::curve_methods::curve_methods;
 use crate::dim::by_dim;
 use crate::errors::compute;
+use crate::keyword;
 use crate::sample::{at_params, channels, output_buffer, ParamsArg};
 
 /// A curve of dimension `D` through the rows of `points`.
@@ -39,9 +40,13 @@ curve_methods!(PyNurbsCurve {
         control_points: &Bound<'_, PyAny>,
         weights: Option<&Bound<'_, PyAny>>,
         knots: Option<&Bound<'_, PyAny>>,
-        degree: Option<i64>,
-        order: Option<i64>,
+        degree: Option<&Bound<'_, PyAny>>,
+        order: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
+        let (degree, order) = (
+            keyword::opt_int(degree, "degree")?,
+            keyword::opt_int(order, "order")?,
+        );
         let points = floats(control_points, "control_points")?;
         let (n, d) = points.points_shape("control_points")?;
         let weights = optional_vector(weights, "weights")?.unwrap_or_else(|| vec![1.0; n]);
@@ -133,14 +138,14 @@ curve_methods!(PyNurbsCurve {
     /// >>> line = NurbsCurve([[0, 0], [3, 4]], degree=1)
     /// >>> line.derivatives(0.5, order=2).tolist()
     /// [[1.5, 2.0], [3.0, 4.0], [0.0, 0.0]]
-    #[pyo3(signature = (t, order=1))]
+    #[pyo3(signature = (t, order=None), text_signature = "($self, t, order=1)")]
     fn derivatives<'py>(
         &self,
         py: Python<'py>,
         t: &Bound<'py, PyAny>,
-        order: i64,
+        order: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let order = count(order, "order", 0)?;
+        let order = count(keyword::opt_int(order, "order")?.unwrap_or(1), "order", 0)?;
         let d = self.dimension();
         // The order is checked by the core before anything is computed.
         let rows = order.min(t2spline::nurbs::MAX_DERIVATIVE_ORDER) + 1;
@@ -210,7 +215,13 @@ curve_methods!(PyNurbsCurve {
     /// domain), by adaptive Gauss–Kronrod 7/15 quadrature of ``|C'(t)|`` per
     /// knot span (tolerance 1e-10 relative).
     #[pyo3(signature = (a=None, b=None))]
-    fn arc_length(&self, py: Python<'_>, a: Option<f64>, b: Option<f64>) -> PyResult<f64> {
+    fn arc_length(
+        &self,
+        py: Python<'_>,
+        a: Option<&Bound<'_, PyAny>>,
+        b: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<f64> {
+        let (a, b) = (keyword::opt_real(a, "a")?, keyword::opt_real(b, "b")?);
         by_dim!(&self.0, |c| compute(py, || match (a, b) {
             (None, None) => Ok(c.arc_length()),
             _ => {
@@ -222,7 +233,8 @@ curve_methods!(PyNurbsCurve {
 
     /// The parameter at which the arc length from the start of the domain is
     /// ``length`` (Newton's method safeguarded by bisection).
-    fn param_at_length(&self, py: Python<'_>, length: f64) -> PyResult<f64> {
+    fn param_at_length(&self, py: Python<'_>, length: &Bound<'_, PyAny>) -> PyResult<f64> {
+        let length = keyword::real(length, "length")?;
         by_dim!(&self.0, |c| compute(py, || c.param_at_length(length)))
     }
 

@@ -12,10 +12,11 @@ use t2spline::{Direction, NurbsSurface};
 use crate::arrays::{coords_last, floats, optional_vector, Floats};
 use crate::classes::{PyNurbsCurve, PyNurbsSurface};
 use crate::closest::{ClosestArrays, Targets};
-use crate::construct::{count, knot_vector, net_weights, rows, surface_degrees, PerDirection};
+use crate::construct::{count, knot_vector, net_weights, rows, surface_degrees};
 use crate::curvature::{curvature_dict, spatial};
 use crate::dim::by_dim;
 use crate::errors::compute;
+use crate::keyword;
 use crate::net::{points_array, Net};
 use crate::sample::{at_pairs, channels, GridArg};
 use crate::surface_methods::surface_methods;
@@ -44,9 +45,13 @@ surface_methods!(PyNurbsSurface, PyNurbsCurve {
         weights: Option<&Bound<'_, PyAny>>,
         knots_u: Option<&Bound<'_, PyAny>>,
         knots_v: Option<&Bound<'_, PyAny>>,
-        degree: Option<PerDirection>,
-        order: Option<PerDirection>,
+        degree: Option<&Bound<'_, PyAny>>,
+        order: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
+        let (degree, order) = (
+            keyword::opt_per_direction(degree, "degree")?,
+            keyword::opt_per_direction(order, "order")?,
+        );
         let points = floats(control_points, "control_points")?;
         let (net, d) = points.net_shape("control_points", 2)?;
         let net = [net[0], net[1]];
@@ -155,15 +160,15 @@ surface_methods!(PyNurbsSurface, PyNurbsCurve {
     /// >>> d = s.derivatives(0.25, 0.5, order=2)        # S(u, v) = (u, v, u·v)
     /// >>> d[1, 0].tolist(), d[0, 1].tolist(), d[1, 1].tolist()   # S_u, S_v, S_uv
     /// ([1.0, 0.0, 0.5], [0.0, 1.0, 0.25], [0.0, 0.0, 1.0])
-    #[pyo3(signature = (u, v, order=1))]
+    #[pyo3(signature = (u, v, order=None), text_signature = "($self, u, v, order=1)")]
     fn derivatives<'py>(
         &self,
         py: Python<'py>,
         u: &Bound<'py, PyAny>,
         v: &Bound<'py, PyAny>,
-        order: i64,
+        order: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let order = count(order, "order", 0)?;
+        let order = count(keyword::opt_int(order, "order")?.unwrap_or(1), "order", 0)?;
         let d = self.dimension();
         // The order is checked by the core before anything is computed.
         let rows = order.min(MAX_DERIVATIVE_ORDER) + 1;

@@ -12,6 +12,7 @@ use t2spline::{Alpha, TypeReduction};
 
 use crate::arrays::{floats, shape_text, Floats};
 use crate::errors::{compute, core_error};
+use crate::keyword;
 
 /// `type_reduction=`: one of [`TypeReduction::name`], else a `ValueError`
 /// naming the keyword and the known names.
@@ -135,26 +136,28 @@ fn samples(arg: &Bound<'_, PyAny>, name: &str) -> PyResult<Floats> {
 /// >>> centroid([0.0, 1.0], [0.0, 0.5], [1.0, 1.0], method="nie-tan")["left"]
 /// 0.6
 #[pyfunction]
-#[pyo3(signature = (x, lmf, umf, method="km"))]
+#[pyo3(signature = (x, lmf, umf, method=None), text_signature = "(x, lmf, umf, method='km')")]
 pub(crate) fn centroid<'py>(
     py: Python<'py>,
     x: &Bound<'py, PyAny>,
     lmf: &Bound<'py, PyAny>,
     umf: &Bound<'py, PyAny>,
-    method: &str,
+    method: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyDict>> {
+    let method = keyword::opt_text(method, "method")?;
     // `None`: Nie–Tan, one value and no iterations.
-    let algorithm: Option<fn(&SampledSet<'_>) -> SampledCentroid> = match method {
-        "km" => Some(|s| s.km()),
-        "ekm" => Some(|s| s.ekm()),
-        "eiasc" => Some(|s| s.eiasc()),
-        "nie-tan" => None,
-        other => {
-            return Err(PyValueError::new_err(format!(
-                "method: unknown method `{other}` (known: km, ekm, eiasc, nie-tan)"
-            )))
-        }
-    };
+    let algorithm: Option<fn(&SampledSet<'_>) -> SampledCentroid> =
+        match method.as_deref().unwrap_or("km") {
+            "km" => Some(|s| s.km()),
+            "ekm" => Some(|s| s.ekm()),
+            "eiasc" => Some(|s| s.eiasc()),
+            "nie-tan" => None,
+            other => {
+                return Err(PyValueError::new_err(format!(
+                    "method: unknown method `{other}` (known: km, ekm, eiasc, nie-tan)"
+                )))
+            }
+        };
     let (x, lmf, umf) = (samples(x, "x")?, samples(lmf, "lmf")?, samples(umf, "umf")?);
     let (left, right, defuzzified, iterations) = compute(py, move || {
         let set = SampledSet::try_new(&x.data, &lmf.data, &umf.data)?;

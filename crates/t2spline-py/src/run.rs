@@ -13,6 +13,7 @@ use t2spline_io::{MissingAlpha, Prepared, RunError};
 
 use crate::construct::PerDirection;
 use crate::errors::{core_error, internal_error, io_error, setting_error, without_gil};
+use crate::keyword;
 use crate::reduction;
 use crate::value::to_value;
 
@@ -29,7 +30,9 @@ pub(crate) const DICT_SOURCE: &str = "<dict>";
 /// numbers), a path is read as `t2spline run` reads it.
 ///
 /// # Errors
-/// `TypeError` for anything else; the errors of reading a file.
+/// `TypeError` for anything else; `JobError` for NaN or infinity in a dict,
+/// each named at its place ([`crate::non_finite`]); the errors of reading a
+/// file.
 pub(crate) fn job_text(job: &Bound<'_, PyAny>) -> PyResult<(String, String)> {
     let py = job.py();
     if job.is_instance_of::<PyDict>() {
@@ -40,6 +43,17 @@ pub(crate) fn job_text(job: &Bound<'_, PyAny>) -> PyResult<(String, String)> {
         let text: String = json
             .call_method("dumps", (job,), Some(&kwargs))?
             .extract()?;
+        // `json.dumps` writes NaN and infinity as words that are not JSON.
+        let problems = crate::non_finite::problems(&text);
+        if !problems.is_empty() {
+            return Err(io_error(
+                py,
+                t2spline_io::Error::Invalid {
+                    file: DICT_SOURCE.to_owned(),
+                    problems,
+                },
+            ));
+        }
         return Ok((text, DICT_SOURCE.to_owned()));
     }
     let is_path = job.is_instance_of::<PyString>() || job.hasattr("__fspath__")?;
@@ -182,11 +196,16 @@ fn run_error(py: Python<'_>, e: RunError) -> PyErr {
 /// JobError
 ///     For a job that breaks the rules, with the lines ``t2spline run``
 ///     prints (``file:line:column: place: rule``; a dict is named ``<dict>``
-///     and placed in its ``json.dumps(job, indent=2)`` text).
+///     and placed in its ``json.dumps(job, indent=2)`` text); NaN or
+///     infinity in a dict too: ``<dict>:47:9: points[1].x.crisp: NaN is not
+///     a finite number (NaN and infinity are refused)``.
 /// ValueError
 ///     For a keyword out of range, named: ``samples: samples = 1: at least 2
 ///     are needed (both ends of the domain)``; for an unknown
 ///     ``type_reduction``.
+/// TypeError
+///     For a keyword of the wrong type, named with what it takes:
+///     ``samples: expected an int or a pair (u, v) of ints, got str``.
 /// OSError
 ///     For a job file that cannot be read.
 ///
@@ -217,12 +236,16 @@ fn run_error(py: Python<'_>, e: RunError) -> PyErr {
 pub(crate) fn run<'py>(
     py: Python<'py>,
     job: &Bound<'py, PyAny>,
-    alpha: Option<f64>,
-    samples: Option<PerDirection>,
-    derivatives: Option<i64>,
-    type_reduction: Option<&str>,
+    alpha: Option<&Bound<'py, PyAny>>,
+    samples: Option<&Bound<'py, PyAny>>,
+    derivatives: Option<&Bound<'py, PyAny>>,
+    type_reduction: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let type_reduction = reduction::type_reduction(type_reduction)?;
+    let alpha = keyword::opt_real(alpha, "alpha")?;
+    let samples = keyword::opt_per_direction(samples, "samples")?;
+    let derivatives = keyword::opt_int(derivatives, "derivatives")?;
+    let type_reduction = keyword::opt_text(type_reduction, "type_reduction")?;
+    let type_reduction = reduction::type_reduction(type_reduction.as_deref())?;
     let overrides = overrides(alpha, type_reduction, samples, derivatives)?;
     let (text, source) = job_text(job)?;
     let parsed = parse(py, &text, &source)?;

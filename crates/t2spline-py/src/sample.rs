@@ -36,7 +36,7 @@ impl ParamsArg {
     /// errors of [`floats`].
     pub(crate) fn extract(arg: &Bound<'_, PyAny>, name: &str) -> PyResult<ParamsArg> {
         if arg.is_instance_of::<PyInt>() && !arg.is_instance_of::<PyBool>() {
-            let n: i128 = arg.extract()?;
+            let n = crate::keyword::int(arg, name)?;
             return usize::try_from(n).map(ParamsArg::Count).map_err(|_| {
                 PyValueError::new_err(format!(
                     "{name}: a count of uniform parameters must be at least 0, got {n}"

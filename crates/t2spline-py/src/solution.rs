@@ -23,13 +23,13 @@ stage_methods!(PySolution, fuzzy_curve, "n" {
 
     /// The curve through one alpha-cut layer; ``None`` for a lower layer when
     /// some number has no lower cut at this level.
-    fn alpha_cut_curve(&self, layer: &str) -> PyResult<Option<PyNurbsCurve>> {
+    fn alpha_cut_curve(&self, layer: &Bound<'_, PyAny>) -> PyResult<Option<PyNurbsCurve>> {
         let l = self::layer(layer, "layer")?;
         Ok(by_dim!(&self.0, |s| s.alpha_cut_curve(l).map(Into::into)))
     }
 
     /// The curve through the left or the right type-reduced values.
-    fn type_reduced_curve(&self, side: &str) -> PyResult<PyNurbsCurve> {
+    fn type_reduced_curve(&self, side: &Bound<'_, PyAny>) -> PyResult<PyNurbsCurve> {
         let side = self::side(side)?;
         Ok(by_dim!(&self.0, |s| s.type_reduced_curve(side).into()))
     }

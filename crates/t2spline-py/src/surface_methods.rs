@@ -84,8 +84,8 @@ macro_rules! surface_methods {
             fn uniform_params<'py>(
                 &self,
                 py: Python<'py>,
-                count_u: i64,
-                count_v: i64,
+                count_u: &Bound<'py, PyAny>,
+                count_v: &Bound<'py, PyAny>,
             ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
                 let [u, v] = self.domains();
                 Ok((
@@ -125,7 +125,13 @@ macro_rules! surface_methods {
             /// >>> s = NurbsSurface([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]], degree=1)
             /// >>> s.isocurve("u", 0.25).eval(0.6).tolist()     # S(0.25, 0.6) = (u, v, u·v)
             /// [0.25, 0.6, 0.15]
-            fn isocurve(&self, py: Python<'_>, direction: &str, t: f64) -> PyResult<$curve> {
+            fn isocurve(
+                &self,
+                py: Python<'_>,
+                direction: &Bound<'_, PyAny>,
+                t: &Bound<'_, PyAny>,
+            ) -> PyResult<$curve> {
+                let t = $crate::keyword::real(t, "t")?;
                 let direction = $crate::construct::direction(direction)?;
                 $crate::dim::by_dim!(&self.0, |s| $crate::errors::compute(py, || Ok(s
                     .isocurve(direction, t)?
@@ -143,16 +149,17 @@ macro_rules! surface_methods {
             ///     If ``t`` is outside the domain of ``direction`` or would
             ///     repeat more than its order; for a fuzzy surface, when a
             ///     coordinate mixes lower heights.
-            #[pyo3(signature = (direction, t, times=1))]
+            #[pyo3(signature = (direction, t, times=None), text_signature = "($self, direction, t, times=1)")]
             fn insert_knot(
                 &self,
                 py: Python<'_>,
-                direction: &str,
-                t: f64,
-                times: i64,
+                direction: &Bound<'_, PyAny>,
+                t: &Bound<'_, PyAny>,
+                times: Option<&Bound<'_, PyAny>>,
             ) -> PyResult<Self> {
                 let direction = $crate::construct::direction(direction)?;
-                let times = $crate::construct::count(times, "times", 1)?;
+                let t = $crate::keyword::real(t, "t")?;
+                let times = $crate::keyword::times(times)?;
                 $crate::dim::by_dim!(&self.0, |s| $crate::errors::compute(py, || Ok(s
                     .insert_knot(direction, t, times)?
                     .into())))
@@ -163,7 +170,7 @@ macro_rules! surface_methods {
             fn refine_knots(
                 &self,
                 py: Python<'_>,
-                direction: &str,
+                direction: &Bound<'_, PyAny>,
                 knots: &Bound<'_, PyAny>,
             ) -> PyResult<Self> {
                 let direction = $crate::construct::direction(direction)?;
@@ -177,10 +184,15 @@ macro_rules! surface_methods {
             /// The same surface with its degree in ``direction`` raised by
             /// ``times`` (A5.9 on every line of the net; an unclamped
             /// direction is first cut to its domain).
-            #[pyo3(signature = (direction, times=1))]
-            fn elevate_degree(&self, py: Python<'_>, direction: &str, times: i64) -> PyResult<Self> {
+            #[pyo3(signature = (direction, times=None), text_signature = "($self, direction, times=1)")]
+            fn elevate_degree(
+                &self,
+                py: Python<'_>,
+                direction: &Bound<'_, PyAny>,
+                times: Option<&Bound<'_, PyAny>>,
+            ) -> PyResult<Self> {
                 let direction = $crate::construct::direction(direction)?;
-                let times = $crate::construct::count(times, "times", 1)?;
+                let times = $crate::keyword::times(times)?;
                 $crate::dim::by_dim!(&self.0, |s| $crate::errors::compute(py, || Ok(s
                     .elevate_degree(direction, times)?
                     .into())))
@@ -189,8 +201,14 @@ macro_rules! surface_methods {
             /// The two surfaces on either side of ``t`` in ``direction``,
             /// strictly inside its domain: for ``"u"`` the pieces over
             /// ``[a, t] × [c, d]`` and ``[t, b] × [c, d]``.
-            fn split_at(&self, py: Python<'_>, direction: &str, t: f64) -> PyResult<(Self, Self)> {
+            fn split_at(
+                &self,
+                py: Python<'_>,
+                direction: &Bound<'_, PyAny>,
+                t: &Bound<'_, PyAny>,
+            ) -> PyResult<(Self, Self)> {
                 let direction = $crate::construct::direction(direction)?;
+                let t = $crate::keyword::real(t, "t")?;
                 $crate::dim::by_dim!(&self.0, |s| $crate::errors::compute(py, || {
                     let [a, b] = s.split_at(direction, t)?;
                     Ok((a.into(), b.into()))
@@ -200,7 +218,13 @@ macro_rules! surface_methods {
             /// The piece of the surface over the rectangle ``u × v`` of its
             /// domain (``u = (u0, u1)``, ``v = (v0, v1)``), as a surface of
             /// its own, clamped in both directions.
-            fn segment(&self, py: Python<'_>, u: (f64, f64), v: (f64, f64)) -> PyResult<Self> {
+            fn segment(
+                &self,
+                py: Python<'_>,
+                u: &Bound<'_, PyAny>,
+                v: &Bound<'_, PyAny>,
+            ) -> PyResult<Self> {
+                let (u, v) = ($crate::keyword::real_pair(u, "u")?, $crate::keyword::real_pair(v, "v")?);
                 $crate::dim::by_dim!(&self.0, |s| $crate::errors::compute(py, || Ok(s
                     .segment([u.0, u.1], [v.0, v.1])?
                     .into())))

@@ -22,13 +22,13 @@ stage_methods!(PySurfaceSolution, fuzzy_surface, "nu, nv" {
 
     /// The surface through one alpha-cut layer; ``None`` for a lower layer
     /// when some number has no lower cut at this level.
-    fn alpha_cut_surface(&self, layer: &str) -> PyResult<Option<PyNurbsSurface>> {
+    fn alpha_cut_surface(&self, layer: &Bound<'_, PyAny>) -> PyResult<Option<PyNurbsSurface>> {
         let l = self::layer(layer, "layer")?;
         Ok(by_dim!(&self.0, |s| s.alpha_cut_surface(l).map(Into::into)))
     }
 
     /// The surface through the left or the right type-reduced values.
-    fn type_reduced_surface(&self, side: &str) -> PyResult<PyNurbsSurface> {
+    fn type_reduced_surface(&self, side: &Bound<'_, PyAny>) -> PyResult<PyNurbsSurface> {
         let side = self::side(side)?;
         Ok(by_dim!(&self.0, |s| s.type_reduced_surface(side).into()))
     }

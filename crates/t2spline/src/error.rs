@@ -657,6 +657,37 @@ pub enum Error {
         first: crate::fit::OrderViolation,
     },
 
+    /// A fitted control value lies beyond the limit of coordinates
+    /// ([`MAX_MAGNITUDE`](crate::MAX_MAGNITUDE)): the curve through the data
+    /// swings that far beyond them (data near the limit, interpolated).
+    ///
+    /// ```
+    /// # use t2spline::{Error, Layer, Nt2Number, Nt2Point};
+    /// # use t2spline::fit::{fit_fuzzy, FitOptions, FuzzyFitMode};
+    /// let n = |c: f64| Nt2Number::try_new(c, [c, c], [c, c], [c, c], 1.0);
+    /// let y = [0.0, 9e149, -9e149, 9e149, 0.0];
+    /// let data: Vec<Nt2Point<2>> = y
+    ///     .iter()
+    ///     .enumerate()
+    ///     .map(|(i, &y)| Ok(Nt2Point::new([n(i as f64)?, n(y)?])))
+    ///     .collect::<Result<_, Error>>()?;
+    /// let e = fit_fuzzy(&data, &FitOptions::interpolation(3), FuzzyFitMode::Valid).unwrap_err();
+    /// assert!(matches!(e, Error::FitBeyondLimit { layer: Some(Layer::Crisp), .. }), "{e}");
+    /// assert!(e.to_string().contains("is beyond the limit of coordinates, [-1e150, 1e150]"));
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("control point {control_point}, {axis}{}: the fitted value {} is beyond the limit of coordinates, [-1e150, 1e150]; the curve through these data swings that far beyond them, so fewer control points (least squares) or data of smaller magnitude are needed", layer.map_or(String::new(), |l| format!(", layer {l}")), Num(*value))]
+    FitBeyondLimit {
+        /// Index of the control point (0-based).
+        control_point: usize,
+        /// The coordinate.
+        axis: Axis,
+        /// The layer of a fuzzy fit; `None` for a crisp curve.
+        layer: Option<crate::fuzzy::Layer>,
+        /// The fitted value.
+        value: f64,
+    },
+
     /// A list given to the sampling engine has the wrong length.
     ///
     /// ```

@@ -8,12 +8,12 @@ use t2spline_io::set::{read_points, write_membership_csv, QueryPoints};
 
 use super::prepare::OptionError;
 use crate::cli::MembershipArgs;
-use crate::output::{read_job, Inputs, Outputs};
+use crate::clash::Claims;
+use crate::output::{read_job, Outputs};
 
 pub fn membership(args: &MembershipArgs) -> anyhow::Result<()> {
-    let inputs = Inputs::of([args.job.as_path(), args.points.as_path()]);
     if let Some(out) = &args.output {
-        inputs.check("--output", out)?;
+        Claims::new([args.job.as_path(), args.points.as_path()]).file("--output", out)?;
     }
     let job = read_job(&args.job)?;
     let points = read_points(&args.points)?;

@@ -8,11 +8,12 @@ use t2spline_io::set::{write_region_geojson, RegionFeature};
 
 use super::prepare::OptionError;
 use crate::cli::RegionArgs;
-use crate::output::{read_job, Inputs, Outputs};
+use crate::clash::Claims;
+use crate::output::{read_job, Outputs};
 
 pub fn region(args: &RegionArgs) -> anyhow::Result<()> {
     if let Some(out) = &args.output {
-        Inputs::of([args.job.as_path()]).check("--output", out)?;
+        Claims::new([args.job.as_path()]).file("--output", out)?;
     }
     let alpha = Alpha::try_new(args.alpha).map_err(|e| OptionError {
         option: "--alpha",

@@ -7,14 +7,15 @@ use t2spline_io::set::{write_section_json, Station};
 
 use super::prepare::OptionError;
 use crate::cli::SectionArgs;
-use crate::output::{read_job, Inputs, Outputs};
+use crate::clash::Claims;
+use crate::output::{read_job, Outputs};
 
 /// Levels at most.
 const MAX_LEVELS: u64 = 1001;
 
 pub fn section(args: &SectionArgs) -> anyhow::Result<()> {
     if let Some(out) = &args.output {
-        Inputs::of([args.job.as_path()]).check("--output", out)?;
+        Claims::new([args.job.as_path()]).file("--output", out)?;
     }
     let levels = levels(args.levels)?;
     let at = args.at.as_deref().map(parse_at).transpose()?;

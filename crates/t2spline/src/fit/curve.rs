@@ -118,7 +118,8 @@ pub struct CurveFit<const D: usize> {
 /// equal neighbours under chord-length or centripetal parameters;
 /// [`Error::NotFinite`] for a non-finite coordinate; [`Error::SingularFit`] if
 /// the system is singular to working precision; [`Error::IllConditionedFit`]
-/// if its condition number exceeds 10¹².
+/// if its condition number exceeds 10¹²; [`Error::FitBeyondLimit`] if a
+/// control point lies beyond [`MAX_MAGNITUDE`](crate::MAX_MAGNITUDE).
 ///
 /// # Examples
 /// Points on the parabola `y = x²` sampled at its own chord-length parameters
@@ -141,6 +142,7 @@ pub fn fit_curve<const D: usize>(
     let (params, knots) = options.parameters_and_knots(points)?;
     let design = Design::new(&params, &knots)?;
     let control = design.fit(points)?;
+    check_within_limit(&control, None)?;
     let weights = vec![1.0; design.count()];
     let curve = NurbsCurve::try_new(control, weights, knots)?;
     Ok(CurveFit {
@@ -148,6 +150,28 @@ pub fn fit_curve<const D: usize>(
         params,
         condition: design.condition(),
     })
+}
+
+/// [`Error::FitBeyondLimit`] at the first fitted control value (of `layer`)
+/// beyond [`MAX_MAGNITUDE`](crate::MAX_MAGNITUDE), or that is not finite.
+pub(crate) fn check_within_limit<const D: usize>(
+    control: &[[f64; D]],
+    layer: Option<crate::Layer>,
+) -> Result<(), Error> {
+    let axes = crate::Axis::first::<D>()?;
+    for (i, p) in control.iter().enumerate() {
+        for (&axis, &value) in axes.iter().zip(p) {
+            if !crate::limits::within_magnitude(value) {
+                return Err(Error::FitBeyondLimit {
+                    control_point: i,
+                    axis,
+                    layer,
+                    value,
+                });
+            }
+        }
+    }
+    Ok(())
 }
 
 /// [`Error::NotFinite`] at the first non-finite coordinate.

@@ -73,7 +73,8 @@ impl FuzzyData {
     ///
     /// # Errors
     /// The errors of [`fit_fuzzy`]: too few points, coincident neighbours,
-    /// a singular or ill-conditioned system, and so on.
+    /// a singular or ill-conditioned system, a control value beyond the
+    /// limit of coordinates ([`Error::FitBeyondLimit`]), and so on.
     ///
     /// # Examples
     /// ```
@@ -92,16 +93,10 @@ impl FuzzyData {
     /// ```
     pub fn fit(&self, options: &FitOptions, mode: FuzzyFitMode) -> Result<FitOutcome, Error> {
         match self {
-            FuzzyData::Planar(p) => Ok(outcome(
-                p.len(),
-                &fit_fuzzy(p, options, mode)?,
-                Model::Planar,
-            )),
-            FuzzyData::Spatial(p) => Ok(outcome(
-                p.len(),
-                &fit_fuzzy(p, options, mode)?,
-                Model::Spatial,
-            )),
+            FuzzyData::Planar(p) => outcome(p.len(), &fit_fuzzy(p, options, mode)?, Model::Planar),
+            FuzzyData::Spatial(p) => {
+                outcome(p.len(), &fit_fuzzy(p, options, mode)?, Model::Spatial)
+            }
         }
     }
 }
@@ -110,14 +105,20 @@ fn outcome<const D: usize>(
     data_points: usize,
     fit: &FuzzyFit<D>,
     model: impl FnOnce(FuzzyCurve<D>) -> Model,
-) -> FitOutcome {
+) -> Result<FitOutcome, Error> {
     let mixed_heights = Axis::of::<D>()
         .into_iter()
         .zip(fit.mixed_heights().into_iter().zip(fit.heights()))
         .filter(|(_, (mixed, _))| *mixed)
         .map(|(axis, (_, h))| (axis, h))
         .collect();
-    FitOutcome {
+    let model = match fit.to_curve() {
+        Ok(curve) => Ok(model(curve)),
+        Err(Error::UnorderedFit { .. }) => Err(fit.violations()),
+        // Any other reason is named as it is, never as broken orders.
+        Err(e) => return Err(e),
+    };
+    Ok(FitOutcome {
         summary: FitSummary {
             data_points,
             control_points: fit.knots().count(),
@@ -128,6 +129,6 @@ fn outcome<const D: usize>(
             independent_violations: fit.independent_violations().to_vec(),
             mixed_heights,
         },
-        model: fit.to_curve().map(model).map_err(|_| fit.violations()),
-    }
+        model,
+    })
 }

@@ -5,7 +5,7 @@ use std::fmt;
 use std::str::FromStr;
 
 use crate::error::Error;
-use crate::fit::curve::check_finite;
+use crate::fit::curve::{check_finite, check_within_limit};
 use crate::fit::design::Design;
 use crate::fit::FitOptions;
 use crate::fuzzy::{Axis, Height, Layer, Layers, Nt2Number, Nt2Point, RULES};
@@ -137,7 +137,9 @@ pub struct FuzzyFit<const D: usize> {
 /// footprint of uncertainty among the data.
 ///
 /// # Errors
-/// As [`fit_curve`](crate::fit::fit_curve).
+/// As [`fit_curve`](crate::fit::fit_curve); [`Error::FitBeyondLimit`] names
+/// the first control value of any layer beyond
+/// [`MAX_MAGNITUDE`](crate::MAX_MAGNITUDE).
 ///
 /// # Examples
 /// ```
@@ -180,6 +182,12 @@ pub fn fit_fuzzy<const D: usize>(
         FuzzyFitMode::Independent => independent,
         FuzzyFitMode::Valid => nested_spreads(&design, &layer_data, crisp)?,
     };
+    // The crisp layer first: the curve itself, the likeliest to swing out.
+    let crisp_first =
+        std::iter::once(Layer::Crisp).chain(Layer::ALL.into_iter().filter(|&l| l != Layer::Crisp));
+    for layer in crisp_first {
+        check_within_limit(&control[layer], Some(layer))?;
+    }
     let fitted = Layers::from_fn(|l| design.values(&control[l]));
     let deviations = Layers::from_fn(|l| deviation(&fitted[l], &layer_data[l]));
     // Spreads `layer − crisp`, fitted and in the data.
