@@ -5,7 +5,7 @@ use std::path::Path;
 use t2spline::{Num, MAX_MAGNITUDE};
 
 use crate::job::read_text;
-use crate::readings::tokens::{records, Field};
+use crate::readings::tokens::{records, Fault, Field};
 use crate::{Error, Problem};
 
 /// Rows of a query-point file at most (ten million: 240 MB of coordinates).
@@ -87,10 +87,13 @@ pub fn parse_points(text: &str, source: &str) -> Result<QueryPoints, Error> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let first_line = text.lines().next().unwrap_or("");
     let delimiter = if first_line.contains(';') { ';' } else { ',' };
-    let rows = records(text, delimiter).map_err(|q| {
-        invalid(vec![Problem {
-            line_column: Some((q.line, q.column)),
-            message: q.message.to_owned(),
+    let rows = records(text, delimiter, MAX_QUERY_POINTS.saturating_add(1)).map_err(|fault| {
+        invalid(vec![match fault {
+            Fault::Quote(q) => Problem {
+                line_column: Some((q.line, q.column)),
+                message: q.message.to_owned(),
+            },
+            Fault::TooMany => Problem::new(format!("more than {MAX_QUERY_POINTS} points; split the file")),
         }])
     })?;
     let mut rows = rows.into_iter();
@@ -136,19 +139,7 @@ pub fn parse_points(text: &str, source: &str) -> Result<QueryPoints, Error> {
             more += 1;
         }
     };
-    let mut count = 0usize;
     for row in rows {
-        count += 1;
-        if count > MAX_QUERY_POINTS {
-            let line = row.fields.first().map_or(row.end.0, |f| f.line);
-            push(
-                &mut problems,
-                line,
-                1,
-                format!("more than {MAX_QUERY_POINTS} points; split the file"),
-            );
-            break;
-        }
         let mut p = [0.0; 3];
         for (c, axis) in axes.iter().enumerate().take(dimension) {
             match row.fields.get(c) {

@@ -44,5 +44,5 @@ pub use polygon::{Polygon, Region};
 pub use region::{Plane, DEFAULT_RELATIVE_TOLERANCE, LEAST_RELATIVE_TOLERANCE};
 pub use section::SectionLevel;
 
-#[cfg(any(doc, test))]
+#[cfg(doc)]
 use crate::pipeline::FuzzyCurve;
