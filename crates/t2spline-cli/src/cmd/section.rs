@@ -6,8 +6,8 @@ use t2spline::Alpha;
 use t2spline_io::set::{write_section_json, Station};
 
 use super::prepare::OptionError;
-use crate::cli::SectionArgs;
 use crate::clash::Claims;
+use crate::cli::SectionArgs;
 use crate::output::{read_job, Outputs};
 
 /// Levels at most.
