@@ -611,3 +611,33 @@ fn control_characters_of_the_description_never_reach_a_file_raw() {
         }
     }
 }
+
+#[test]
+fn a_surface_of_degree_0_in_one_direction_is_named_a_set_of_curves() {
+    use t2spline::job::{Job, Model, Overrides};
+    use t2spline::{FuzzySurface, Nt2Number, Nt2Point};
+    // A 1 × 3 net: degree 0 along u, 1 along v.
+    let n = |c: f64| {
+        Nt2Number::try_new(c, [c - 1.0, c + 1.0], [c - 0.5, c + 0.5], [c, c], 1.0).unwrap()
+    };
+    let row: Vec<Nt2Point<3>> = (0..3)
+        .map(|j| Nt2Point::new([n(0.0), n(j as f64), n(1.0)]))
+        .collect();
+    let surface =
+        FuzzySurface::try_new([0, 1], vec![row], vec![vec![1.0; 3]], [None, None]).unwrap();
+    let mut job = Job::new(Model::Surface(surface));
+    job.alpha = Some(t2spline::Alpha::ZERO);
+    let g = job
+        .geometry(&job.settings(&Overrides::default()).unwrap())
+        .unwrap();
+    let meta = CadMeta {
+        name: "a.step".into(),
+        description: None,
+        timestamp: "2026-01-01T00:00:00".into(),
+    };
+    let e = render_cad(CadFormat::Step, &g, &meta, "job.json").unwrap_err();
+    assert_eq!(
+        e.to_string(),
+        "job.json: the surfaces have degree 0 in u (piecewise constant in u: a set of curves along v), which STEP cannot hold; export needs degree 1 or more in both directions"
+    );
+}

@@ -228,6 +228,17 @@ fn fuzzy_curve_operations<const D: usize>(
         returns("FuzzyCurve::segment", || curve.segment(u, u + 0.5)).ok();
         returns("FuzzyCurve::derivatives", || curve.derivatives(u, n)).ok();
     }
+    // The set view: grades of arbitrary points, a region and its sections.
+    let point: [f64; D] = std::array::from_fn(|c| t.get(c).copied().unwrap_or(0.5));
+    returns("FuzzyCurve::membership", || curve.membership(&point)).ok();
+    for plane in t2spline::set::Plane::ALL {
+        for m in t2spline::set::MEMBERSHIPS {
+            returns("FuzzyCurve::region_in", || {
+                curve.region_in(plane, m, alpha, None)
+            })
+            .ok();
+        }
+    }
     returns("FuzzyCurve::refine_knots", || curve.refine_knots(t)).ok();
     returns("FuzzyCurve::elevate_degree", || curve.elevate_degree(n)).ok();
     returns("axes", || curve.axes());
@@ -322,10 +333,15 @@ fn fuzzy_surface_operations<const D: usize>(rows: usize, flat: &[f64], t: &[f64]
     let target: [f64; D] = std::array::from_fn(|d| t.get(d).copied().unwrap_or(0.5));
     returns("FuzzySurface::closest_points", || s.closest_points(target)).ok();
     returns("FuzzySurface::bounding_box", || s.bounding_box());
+    returns("FuzzySurface::membership", || s.membership(&target)).ok();
     if let Some(s) = (&s as &dyn std::any::Any).downcast_ref::<FuzzySurface<3>>() {
         for (&u, &v) in t.iter().zip(t.iter().rev()) {
             returns("FuzzySurface::curvatures", || s.curvatures(u, v)).ok();
         }
+        returns("FuzzySurface::sections", || {
+            s.sections([target[0], target[1]], &[alpha])
+        })
+        .ok();
     }
 }
 

@@ -132,12 +132,36 @@ pub fn render_cad(
         });
     }
     if geometry.degree() == 0 {
+        let surface_degrees = geometry
+            .surfaces
+            .first()
+            .and_then(|s| s.patches.first())
+            .map(t2spline::NurbsSurface::degree);
+        let what = match surface_degrees {
+            None => "the curves have degree 0 (piecewise constant: a set of points)".to_owned(),
+            Some([0, 0]) => {
+                "the surfaces have degree 0 in u and in v (piecewise constant: a set of points)"
+                    .to_owned()
+            }
+            Some([0, _]) => {
+                "the surfaces have degree 0 in u (piecewise constant in u: a set of curves along v)"
+                    .to_owned()
+            }
+            Some(_) => {
+                "the surfaces have degree 0 in v (piecewise constant in v: a set of curves along u)"
+                    .to_owned()
+            }
+        };
         return Err(Error::Invalid {
             file: source.to_owned(),
             problems: vec![Problem::new(format!(
-                "the {} have degree 0 (piecewise constant: a set of points), which {} cannot hold; export needs degree 1 or more",
-                if geometry.surfaces.is_empty() { "curves" } else { "surfaces" },
-                format.name().to_uppercase()
+                "{what}, which {} cannot hold; export needs degree 1 or more{}",
+                format.name().to_uppercase(),
+                if surface_degrees.is_some() {
+                    " in both directions"
+                } else {
+                    ""
+                }
             ))],
         });
     }

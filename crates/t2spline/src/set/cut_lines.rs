@@ -20,6 +20,12 @@ use crate::fuzzy::{Membership, Nt2Point};
 pub const MEMBERSHIPS: [Membership; 3] =
     [Membership::Upper, Membership::Primary, Membership::Lower];
 
+/// The top and the two sides of up to three coordinates.
+pub(crate) const SIDES: usize = 7;
+
+/// The values of the functions of [`CutLines::sides`] at one parameter.
+pub(crate) type Sides = [f64; SIDES];
+
 /// The cut ends of one coordinate of one control point, under one membership
 /// function, as lines in alpha.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -103,14 +109,25 @@ impl<const D: usize> CutLines<D> {
     /// A_c = Σ Rᵢ foot_left,  G_c = Σ Rᵢ slope_left,  B_c, G'_c likewise on the right
     /// ```
     /// A zero slope (a crisp side) admits every level when `p` is on the
-    /// inside of that side and none otherwise.
+    /// inside of that side and none otherwise (a negative grade).
     pub(crate) fn grade(&self, first: usize, basis: &[f64], top: f64, p: &[f64; D]) -> f64 {
+        self.sides(first, basis, top, p)
+            .into_iter()
+            .fold(f64::INFINITY, f64::min)
+    }
+
+    /// The functions whose minimum is [`CutLines::grade`]: `top`, then per
+    /// coordinate the levels admitted by its left and by its right side
+    /// (`+∞` past the coordinates there are).
+    pub(crate) fn sides(&self, first: usize, basis: &[f64], top: f64, p: &[f64; D]) -> Sides {
         let sums = self.sums(first, basis);
-        let mut grade = top;
-        for (s, &x) in sums.iter().zip(p) {
-            grade = grade.min(level(x - s[0], s[1])).min(level(s[2] - x, s[3]));
+        let mut out = [f64::INFINITY; SIDES];
+        out[0] = top;
+        for (c, (s, &x)) in sums.iter().zip(p).enumerate().take((SIDES - 1) / 2) {
+            out[1 + 2 * c] = level(x - s[0], s[1]);
+            out[2 + 2 * c] = level(s[2] - x, s[3]);
         }
-        grade
+        out
     }
 }
 
@@ -132,14 +149,17 @@ impl<const D: usize> CutLines<D> {
     }
 }
 
-/// The largest alpha with `alpha · slope ≤ room`: `room/slope`, or ±∞ for a
-/// zero slope.
+/// The largest alpha with `alpha · slope ≤ room`: `room/slope`; for a zero
+/// slope (a crisp side) `+∞` on its inside, and outside a negative number
+/// that grows towards 0 with `room`, `1e12·room/(1 + |room|)`, rather than
+/// `−∞`: the searches for the sup compare values, and a flat `−∞` would hide
+/// on which side the admitted parameters lie.
 fn level(room: f64, slope: f64) -> f64 {
     if slope > 0.0 {
         room / slope
     } else if room >= 0.0 {
         f64::INFINITY
     } else {
-        f64::NEG_INFINITY
+        1e12 * room / (1.0 + room.abs())
     }
 }

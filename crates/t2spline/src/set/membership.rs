@@ -10,7 +10,7 @@ use crate::error::Error;
 use crate::fuzzy::Membership;
 use crate::golden_section::golden_section_min;
 use crate::pipeline::FuzzyCurve;
-use crate::set::cut_lines::{CutLines, MEMBERSHIPS};
+use crate::set::cut_lines::{CutLines, Sides, MEMBERSHIPS};
 use crate::set::scan::{pieces, rational_basis, SpanPiece};
 
 /// The grades of one point under the three membership functions, each in
@@ -60,6 +60,8 @@ const SCAN_STEPS: usize = 32;
 /// coordinates' grades cross), so it is not flat there: the bracket is
 /// narrowed far below the 1e-9 promised for the grade.
 const REFINEMENT: f64 = 1e-13;
+/// Bisections of a crossing of two functions: to the last bit of a piece.
+const CROSSING_BISECTIONS: usize = 64;
 
 /// The membership functions of a curve, ready to grade many points.
 #[derive(Clone, Debug)]
@@ -106,7 +108,7 @@ impl<'a, const D: usize> Grader<'a, D> {
     pub(crate) fn grades(&self, p: &[f64; D]) -> Grades {
         let mut best = [0.0_f64; 3];
         let mut basis = vec![0.0; self.curve.order()];
-        let mut scan = Vec::with_capacity(SCAN_STEPS + 1);
+        let mut scan: Vec<(f64, Sides)> = Vec::with_capacity(SCAN_STEPS + 1);
         for (piece, hulls) in self.pieces.iter().zip(&self.hulls) {
             for k in 0..3 {
                 let (top, hull) = &hulls[k];
@@ -122,6 +124,17 @@ impl<'a, const D: usize> Grader<'a, D> {
     }
 
     /// The largest grade of `p` on one piece under function `k`.
+    ///
+    /// The grade is the minimum of smooth functions (the top and each
+    /// coordinate side's admitted level, [`CutLines::sides`]), so its sup on
+    /// the piece is reached at an end, at a local maximum of one of them, or
+    /// where two of them cross. The piece is scanned; every local maximum of
+    /// each function on the scan is refined by golden sections, and every
+    /// change of sign of the difference of two functions between scan points
+    /// by bisection; the grade is evaluated at each of these candidates.
+    /// (Refining the minimum itself would not do: between two scan points it
+    /// can have two peaks, where a narrow side crosses a wide one twice.)
+    #[allow(clippy::too_many_arguments)]
     fn peak(
         &self,
         piece: &SpanPiece,
@@ -129,30 +142,63 @@ impl<'a, const D: usize> Grader<'a, D> {
         top: f64,
         p: &[f64; D],
         basis: &mut [f64],
-        scan: &mut Vec<(f64, f64)>,
+        scan: &mut Vec<(f64, Sides)>,
     ) -> f64 {
         let (knots, weights) = (self.curve.knots(), self.curve.weights());
         let first = piece.first(self.curve.degree());
         let lines = &self.lines[k];
-        let mut grade = |t: f64| {
+        let mut sides = |t: f64| {
             rational_basis(knots, weights, piece.span, t, basis);
-            lines.grade(first, basis, top, p)
+            lines.sides(first, basis, top, p)
         };
+        let min = |s: &Sides| s.iter().copied().fold(f64::INFINITY, f64::min);
         scan.clear();
-        scan.extend(piece.params(SCAN_STEPS).map(|t| (grade(t), t)));
+        scan.extend(piece.params(SCAN_STEPS).map(|t| (t, sides(t))));
         let tolerance = REFINEMENT * (piece.hi - piece.lo);
-        let mut best = f64::NEG_INFINITY;
+        let mut best = scan
+            .iter()
+            .map(|(_, s)| min(s))
+            .fold(f64::NEG_INFINITY, f64::max);
+        let used = 1 + 2 * D;
         for j in 0..=SCAN_STEPS {
-            let (g, _) = scan[j];
-            best = best.max(g);
-            let rises = j == 0 || scan[j - 1].0 < g;
-            let falls = j == SCAN_STEPS || scan[j + 1].0 <= g;
-            // Every local peak above the best so far is refined; a peak that
-            // is already at the top cannot rise.
-            if rises && falls && g < top && g.is_finite() {
-                let bracket = [scan[j.saturating_sub(1)].1, scan[(j + 1).min(SCAN_STEPS)].1];
-                let (neg, _) = golden_section_min(|t| -grade(t), bracket, tolerance);
-                best = best.max(-neg);
+            for a in 1..used {
+                // A local maximum of side `a` on the scan.
+                let v = scan[j].1[a];
+                let rises = j == 0 || scan[j - 1].1[a] < v;
+                let falls = j == SCAN_STEPS || scan[j + 1].1[a] <= v;
+                if rises && falls && v.is_finite() && v > best && j > 0 && j < SCAN_STEPS {
+                    let bracket = [scan[j - 1].0, scan[j + 1].0];
+                    let (_, t) = golden_section_min(|t| -sides(t)[a], bracket, tolerance);
+                    best = best.max(min(&sides(t)));
+                }
+            }
+            if j == SCAN_STEPS {
+                break;
+            }
+            // Crossings of two functions between scan points j and j + 1.
+            let (t0, s0) = scan[j];
+            let (t1, s1) = scan[j + 1];
+            for a in 0..used {
+                for b in a + 1..used {
+                    let (d0, d1) = (s0[a] - s0[b], s1[a] - s1[b]);
+                    if !(d0.is_finite() && d1.is_finite()) || (d0 < 0.0) == (d1 < 0.0) {
+                        continue;
+                    }
+                    let (mut lo, mut hi) = (t0, t1);
+                    for _ in 0..CROSSING_BISECTIONS {
+                        let m = 0.5 * (lo + hi);
+                        if m <= lo || m >= hi {
+                            break;
+                        }
+                        let s = sides(m);
+                        if ((s[a] - s[b]) < 0.0) == (d0 < 0.0) {
+                            lo = m;
+                        } else {
+                            hi = m;
+                        }
+                    }
+                    best = best.max(min(&sides(lo))).max(min(&sides(hi)));
+                }
             }
         }
         best
