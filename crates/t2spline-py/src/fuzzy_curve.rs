@@ -246,8 +246,8 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
     /// >>> s = np.array([-1.0, 1.0])
     /// >>> line = FuzzyCurve(c, c[..., None] + s, c[..., None] + 0.5 * s,
     /// ...                   c[..., None] + 0 * s, lower_height=1.0, degree=1)
-    /// >>> at = line.section(2.0, levels=[0.0, 1.0], tolerance=1e-9)
-    /// >>> [round(v, 6) for v in at[0]["upper"][0]]       # y from 0.5 - 1 to 1.5 + 1
+    /// >>> at = line.section(2.0, levels=[0.0, 1.0], tolerance=1e-6)
+    /// >>> [round(v, 5) for v in at[0]["upper"][0]]       # y from 0.5 - 1 to 1.5 + 1
     /// [-0.5, 2.5]
     #[pyo3(signature = (x0, levels=None, tolerance=None))]
     fn section<'py>(
