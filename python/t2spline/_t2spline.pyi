@@ -226,15 +226,15 @@ class FuzzyCurve:
     def region(
         self,
         alpha: float,
-        membership: Optional[Which] = None,
+        membership: Which = "upper",
         tolerance: Optional[float] = None,
         *,
-        plane: Optional[PlaneName] = None,
+        plane: PlaneName = "xy",
     ) -> Optional[Region]: ...
     def section(
         self,
         x0: float,
-        levels: Union[int, ArrayLike, None] = None,
+        levels: Union[int, ArrayLike] = 11,
         tolerance: Optional[float] = None,
     ) -> list[SectionLevel]: ...
     def membership_grid(
@@ -411,7 +411,7 @@ class FuzzySurface:
     def segment(self, u: Tuple[float, float], v: Tuple[float, float]) -> FuzzySurface: ...
     def membership(self, points: ArrayLike) -> Grades: ...
     def section(
-        self, x0: float, y0: float, levels: Union[int, ArrayLike, None] = None
+        self, x0: float, y0: float, levels: Union[int, ArrayLike] = 11
     ) -> list[SectionLevel]: ...
 
 @final

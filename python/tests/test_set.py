@@ -295,6 +295,19 @@ def test_membership_grid_shapes_and_values() -> None:
 # Errors.
 
 
+def test_the_signatures_show_the_defaults(curve: t2spline.FuzzyCurve) -> None:
+    import inspect
+
+    region = inspect.signature(curve.region).parameters
+    assert region["membership"].default == "upper" and region["plane"].default == "xy"
+    assert region["plane"].kind is inspect.Parameter.KEYWORD_ONLY
+    assert inspect.signature(curve.section).parameters["levels"].default == 11
+    terrain = t2spline.FuzzySurface.from_job(TERRAIN)
+    assert inspect.signature(terrain.section).parameters["levels"].default == 11
+    # None is the default too, as other methods of the package take it.
+    assert curve.region(0.0, None, None, plane=None) is not None
+
+
 def test_bad_points_are_named(curve: t2spline.FuzzyCurve) -> None:
     with pytest.raises(ValueError, match=r"points: expected shape \(\.\.\., 2\).*got \(4, 3\)"):
         curve.membership(np.zeros((4, 3)))

@@ -205,7 +205,10 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
     ///     For an alpha outside ``[0, 1]``, an unknown membership or plane,
     ///     a tolerance that is not positive or finer than the outline can be
     ///     computed, naming the argument.
-    #[pyo3(signature = (alpha, membership=None, tolerance=None, *, plane=None))]
+    #[pyo3(
+        signature = (alpha, membership=None, tolerance=None, *, plane=None),
+        text_signature = "($self, alpha, membership='upper', tolerance=None, *, plane='xy')"
+    )]
     fn region(
         &self,
         py: Python<'_>,
@@ -249,7 +252,10 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
     /// >>> at = line.section(2.0, levels=[0.0, 1.0], tolerance=1e-6)
     /// >>> [round(v, 5) for v in at[0]["upper"][0]]       # y from 0.5 - 1 to 1.5 + 1
     /// [-0.5, 2.5]
-    #[pyo3(signature = (x0, levels=None, tolerance=None))]
+    #[pyo3(
+        signature = (x0, levels=None, tolerance=None),
+        text_signature = "($self, x0, levels=11, tolerance=None)"
+    )]
     fn section<'py>(
         &self,
         py: Python<'py>,

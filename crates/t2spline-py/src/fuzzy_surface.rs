@@ -290,7 +290,7 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
     /// -------
     /// list of dict
     ///     As ``FuzzyCurve.section``, with intervals of z.
-    #[pyo3(signature = (x0, y0, levels=None))]
+    #[pyo3(signature = (x0, y0, levels=None), text_signature = "($self, x0, y0, levels=11)")]
     fn section<'py>(
         &self,
         py: Python<'py>,
