@@ -52,6 +52,12 @@ FuzzySurface, SurfaceSolution
     A net of fuzzy control points and its seven layer surfaces; stages 2–4
     on the net by ``FuzzySurface.solve(alpha, type_reduction=)``, and the
     distance between the crisp and the defuzzified surface.
+FuzzyCurve.membership, .region, .section, .membership_grid; Region
+    The fuzzy curve as a set (docs/method.md §10): membership grades of
+    points, alpha-regions as polygons (``Region``, with a GeoJSON
+    ``__geo_interface__`` that shapely opens), the fuzzy value at a station,
+    membership maps; ``FuzzySurface.membership`` and ``.section`` for
+    surfaces.
 centroid
     The centroid ``[c_l, c_r]`` of an interval type-2 set given by samples
     (Karnik–Mendel, EKM, EIASC, or the Nie–Tan value).
@@ -101,6 +107,7 @@ from ._t2spline import (
     JobError,
     NurbsCurve,
     NurbsSurface,
+    Region,
     Solution,
     SurfaceSolution,
     __version__,
@@ -118,6 +125,7 @@ __all__ = [
     "JobError",
     "NurbsCurve",
     "NurbsSurface",
+    "Region",
     "Solution",
     "SurfaceSolution",
     "__version__",

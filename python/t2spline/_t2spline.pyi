@@ -14,10 +14,15 @@ from .types import (
     Distance,
     FitSummary,
     Floats,
+    GeoMultiPolygon,
+    Grades,
     Job,
     LayerName,
     LayerSamples,
+    MembershipGrid,
     PerDirection,
+    PlaneName,
+    SectionLevel,
     SideName,
     StageSamples,
     SurfaceCurvature,
@@ -36,6 +41,7 @@ __all__ = [
     "FuzzySurface",
     "NurbsCurve",
     "NurbsSurface",
+    "Region",
     "Solution",
     "SurfaceSolution",
     "__version__",
@@ -216,6 +222,46 @@ class FuzzyCurve:
     def elevate_degree(self, times: int = 1) -> FuzzyCurve: ...
     def split_at(self, t: float) -> Tuple[FuzzyCurve, FuzzyCurve]: ...
     def segment(self, a: float, b: float) -> FuzzyCurve: ...
+    def membership(self, points: ArrayLike) -> Grades: ...
+    def region(
+        self,
+        alpha: float,
+        membership: Which = "upper",
+        tolerance: Optional[float] = None,
+        *,
+        plane: PlaneName = "xy",
+    ) -> Optional[Region]: ...
+    def section(
+        self,
+        x0: float,
+        levels: Union[int, ArrayLike] = 11,
+        tolerance: Optional[float] = None,
+    ) -> list[SectionLevel]: ...
+    def membership_grid(
+        self,
+        x_range: Tuple[float, float],
+        y_range: Tuple[float, float],
+        shape: Union[int, Tuple[int, int]],
+    ) -> MembershipGrid: ...
+
+@final
+class Region:
+    """The region of a fuzzy curve at one level, as polygons (docs/method.md §10)."""
+    @property
+    def area(self) -> float: ...
+    @property
+    def tolerance(self) -> float: ...
+    @property
+    def membership(self) -> Which: ...
+    @property
+    def alpha(self) -> float: ...
+    @property
+    def plane(self) -> PlaneName: ...
+    @property
+    def polygons(self) -> list[Tuple[Floats, list[Floats]]]: ...
+    @property
+    def __geo_interface__(self) -> GeoMultiPolygon: ...
+    def contains(self, point: ArrayLike) -> bool: ...
 
 @final
 class Solution:
@@ -363,6 +409,10 @@ class FuzzySurface:
     def elevate_degree(self, direction: DirectionName, times: int = 1) -> FuzzySurface: ...
     def split_at(self, direction: DirectionName, t: float) -> Tuple[FuzzySurface, FuzzySurface]: ...
     def segment(self, u: Tuple[float, float], v: Tuple[float, float]) -> FuzzySurface: ...
+    def membership(self, points: ArrayLike) -> Grades: ...
+    def section(
+        self, x0: float, y0: float, levels: Union[int, ArrayLike] = 11
+    ) -> list[SectionLevel]: ...
 
 @final
 class SurfaceSolution:

@@ -29,11 +29,16 @@ __all__ = [
     "Distance",
     "FitSummary",
     "Floats",
+    "GeoMultiPolygon",
+    "Grades",
     "Job",
     "LayerDeviations",
     "LayerName",
     "LayerSamples",
+    "MembershipGrid",
     "PerDirection",
+    "PlaneName",
+    "SectionLevel",
     "SideName",
     "StageSamples",
     "SurfaceCurvature",
@@ -59,6 +64,9 @@ LayerName = Union[
 
 #: A membership function of a fuzzy number.
 Which = Union[Literal["upper"], Literal["primary"], Literal["lower"]]
+
+#: A coordinate plane of a space curve's region (``FuzzyCurve.region``).
+PlaneName = Union[Literal["xy"], Literal["xz"], Literal["yz"]]
 
 #: A side of a type-reduced number.
 SideName = Union[Literal["left"], Literal["right"]]
@@ -231,3 +239,47 @@ class FitSummary(TypedDict):
     spread_deviations: LayerDeviations
     independent_violations: List[str]
     mixed_heights: Dict[str, float]
+
+
+class Grades(TypedDict):
+    """``FuzzyCurve.membership``, ``FuzzySurface.membership``: the grade of
+    every point under each membership function (docs/method.md §10), arrays
+    of the points' leading shape, ``lower <= primary <= upper``."""
+
+    upper: Floats
+    primary: Floats
+    lower: Floats
+
+
+class SectionLevel(TypedDict):
+    """One level of ``FuzzyCurve.section`` (intervals of y) or
+    ``FuzzySurface.section`` (intervals of z), as ``t2spline section``
+    writes it: each function's intervals ``[lo, hi]`` in increasing order,
+    ``None`` where it has no cut at the level, ``[]`` where the region does
+    not reach the station."""
+
+    alpha: float
+    upper: Optional[List[List[float]]]
+    primary: Optional[List[List[float]]]
+    lower: Optional[List[List[float]]]
+
+
+class MembershipGrid(TypedDict):
+    """``FuzzyCurve.membership_grid``: the cell centres ``xs`` ``(columns,)``
+    and ``ys`` ``(rows,)``, and each function's grades ``(rows, columns)``,
+    row ``j`` at ``ys[j]``."""
+
+    xs: Floats
+    ys: Floats
+    upper: Floats
+    primary: Floats
+    lower: Floats
+
+
+class GeoMultiPolygon(TypedDict):
+    """``Region.__geo_interface__``: a GeoJSON MultiPolygon (RFC 7946), each
+    polygon its closed exterior ring (counter-clockwise) and closed holes
+    (clockwise), each position ``[x, y]``."""
+
+    type: Literal["MultiPolygon"]
+    coordinates: List[List[List[List[float]]]]

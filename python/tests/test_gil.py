@@ -15,6 +15,8 @@ import threading
 import time
 from typing import Callable, List, Tuple
 
+import numpy as np
+
 import t2spline
 
 from conftest import EXAMPLE
@@ -81,4 +83,11 @@ def test_a_thread_runs_while_a_fuzzy_surface_is_sampled_and_solved() -> None:
     assert stall < 0.5 * duration, (stall, duration)
     solution = terrain.solve(0.5)
     stall, duration = longest_stall(lambda: solution.sample(1000, 1000))
+    assert stall < 0.5 * duration, (stall, duration)
+
+
+def test_a_thread_runs_while_points_are_graded() -> None:
+    curve = t2spline.benchmark_curve()
+    points = np.random.default_rng(0).uniform([0.0, -2.0], [9.0, 3.0], size=(1000, 2))
+    stall, duration = longest_stall(lambda: curve.membership(points))
     assert stall < 0.5 * duration, (stall, duration)

@@ -132,6 +132,181 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
         Ok(out)
     }
 
+    /// The membership grades of points in the fuzzy curve as a set
+    /// (docs/method.md §10): for each membership function, the largest level
+    /// alpha at which some curve with its control points inside their cuts
+    /// passes through the point; 0 where none does. A point on the crisp
+    /// curve has the grades ``(1, 1, h)``.
+    ///
+    /// Parameters
+    /// ----------
+    /// points : array_like, shape (..., d)
+    ///     Any leading shape (a single point ``(d,)`` too), the coordinates
+    ///     last.
+    ///
+    /// Returns
+    /// -------
+    /// dict
+    ///     ``"upper"``, ``"primary"``, ``"lower"``: arrays of the leading
+    ///     shape ``(...)``, with ``lower <= primary <= upper``.
+    ///
+    /// Raises
+    /// ------
+    /// ValueError
+    ///     For another last dimension than ``d``, and NaN or infinity, naming
+    ///     the index (``points[3, 1] = nan ...``).
+    ///
+    /// Examples
+    /// --------
+    /// >>> import numpy as np
+    /// >>> c = np.array([[0.0, 0.0], [4.0, 0.0]])
+    /// >>> s = np.array([-1.0, 1.0])
+    /// >>> line = FuzzyCurve(c, c[..., None] + s, c[..., None] + 0.5 * s,
+    /// ...                   c[..., None] + 0.25 * s, lower_height=0.5, degree=1)
+    /// >>> g = line.membership([[2.0, 0.0], [2.0, 0.5], [2.0, 3.0]])
+    /// >>> g["upper"], g["primary"], g["lower"]
+    /// (array([1. , 0.5, 0. ]), array([1., 0., 0.]), array([0.5, 0. , 0. ]))
+    fn membership<'py>(
+        &self,
+        py: Python<'py>,
+        points: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        crate::set::curve_membership(py, &self.0, points)
+    }
+
+    /// The region of one membership function at level ``alpha``
+    /// (docs/method.md §10): every place some curve with its control points
+    /// inside their cuts passes through, as polygons with holes within
+    /// ``tolerance`` of the true region. The band between two layer curves
+    /// is not this set: a curve can pass anywhere in the box of its cut ends.
+    ///
+    /// Parameters
+    /// ----------
+    /// alpha : float
+    ///     The level in ``[0, 1]``.
+    /// membership : {"upper", "primary", "lower"}, optional
+    ///     Default ``"upper"``.
+    /// tolerance : float, optional
+    ///     Default: 1e-6 of the diagonal of the crisp control points'
+    ///     bounding box.
+    /// plane : {"xy", "xz", "yz"}, optional
+    ///     The coordinate plane a space curve's region is projected on;
+    ///     default ``"xy"``, the only plane of a plane curve.
+    ///
+    /// Returns
+    /// -------
+    /// Region or None
+    ///     ``None`` where the function has no cut at ``alpha`` (the lower
+    ///     function above every height).
+    ///
+    /// Raises
+    /// ------
+    /// ValueError
+    ///     For an alpha outside ``[0, 1]``, an unknown membership or plane,
+    ///     a tolerance that is not positive or finer than the outline can be
+    ///     computed, naming the argument.
+    #[pyo3(
+        signature = (alpha, membership=None, tolerance=None, *, plane=None),
+        text_signature = "($self, alpha, membership='upper', tolerance=None, *, plane='xy')"
+    )]
+    fn region(
+        &self,
+        py: Python<'_>,
+        alpha: &Bound<'_, PyAny>,
+        membership: Option<&Bound<'_, PyAny>>,
+        tolerance: Option<&Bound<'_, PyAny>>,
+        plane: Option<&Bound<'_, PyAny>>,
+    ) -> PyResult<Option<crate::set::PyRegion>> {
+        crate::set::curve_region(py, &self.0, alpha, membership, tolerance, plane)
+    }
+
+    /// The fuzzy value of y at the station ``x = x0`` of a plane curve
+    /// (docs/method.md §10): at each level and for each membership function,
+    /// the intervals of y where the vertical line meets the region, as
+    /// ``t2spline section --x X0`` writes them.
+    ///
+    /// Parameters
+    /// ----------
+    /// x0 : float
+    /// levels : int or array_like, optional
+    ///     A count of levels equally spaced from 0 to 1 (2 to 1001, default
+    ///     11), or the levels themselves.
+    /// tolerance : float, optional
+    ///     The largest error of an interval end; default as for ``region``.
+    ///
+    /// Returns
+    /// -------
+    /// list of dict
+    ///     One per level: ``{"alpha": a, "upper": [[lo, hi], ...],
+    ///     "primary": ..., "lower": ...}``, intervals increasing; ``None``
+    ///     where the function has no cut at the level, ``[]`` where the
+    ///     region does not reach the station.
+    ///
+    /// Examples
+    /// --------
+    /// >>> import numpy as np
+    /// >>> c = np.array([[0.0, 0.0], [4.0, 2.0]])
+    /// >>> s = np.array([-1.0, 1.0])
+    /// >>> line = FuzzyCurve(c, c[..., None] + s, c[..., None] + 0.5 * s,
+    /// ...                   c[..., None] + 0 * s, lower_height=1.0, degree=1)
+    /// >>> at = line.section(2.0, levels=[0.0, 1.0], tolerance=1e-6)
+    /// >>> [round(v, 5) for v in at[0]["upper"][0]]       # y from 0.5 - 1 to 1.5 + 1
+    /// [-0.5, 2.5]
+    #[pyo3(
+        signature = (x0, levels=None, tolerance=None),
+        text_signature = "($self, x0, levels=11, tolerance=None)"
+    )]
+    fn section<'py>(
+        &self,
+        py: Python<'py>,
+        x0: &Bound<'py, PyAny>,
+        levels: Option<&Bound<'py, PyAny>>,
+        tolerance: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, pyo3::types::PyList>> {
+        crate::set::curve_section(py, &self.0, x0, levels, tolerance)
+    }
+
+    /// The membership grades of the cell centres of a regular grid over a
+    /// plane curve: the footprint of uncertainty as maps, for
+    /// ``matplotlib.pyplot.pcolormesh`` or ``imshow``. Each value is the
+    /// grade of its cell's centre to within the change of the grade over
+    /// half a cell.
+    ///
+    /// Parameters
+    /// ----------
+    /// x_range, y_range : (float, float)
+    ///     The grid's extent, ``lo < hi``.
+    /// shape : int or (int, int)
+    ///     The cells ``(columns, rows)`` along x and y (one int: as many
+    ///     both ways); at most 4096 × 4096 cells.
+    ///
+    /// Returns
+    /// -------
+    /// dict
+    ///     ``"xs"`` ``(columns,)`` and ``"ys"`` ``(rows,)``: the cell centres;
+    ///     ``"upper"``, ``"primary"``, ``"lower"``: ``(rows, columns)``, row
+    ///     ``j`` at ``ys[j]``.
+    ///
+    /// Examples
+    /// --------
+    /// >>> import numpy as np
+    /// >>> c = np.array([[0.0, 0.0], [4.0, 0.0]])
+    /// >>> s = np.array([-1.0, 1.0])
+    /// >>> line = FuzzyCurve(c, c[..., None] + s, c[..., None] + 0.5 * s,
+    /// ...                   c[..., None] + 0.25 * s, lower_height=0.5, degree=1)
+    /// >>> g = line.membership_grid((-2.0, 6.0), (-2.0, 2.0), (80, 40))
+    /// >>> g["xs"].shape, g["ys"].shape, g["upper"].shape
+    /// ((80,), (40,), (40, 80))
+    fn membership_grid<'py>(
+        &self,
+        py: Python<'py>,
+        x_range: &Bound<'py, PyAny>,
+        y_range: &Bound<'py, PyAny>,
+        shape: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        crate::set::curve_membership_grid(py, &self.0, x_range, y_range, shape)
+    }
+
     fn __repr__(&self) -> String {
         let (a, b) = self.domain();
         by_dim!(&self.0, |c| {

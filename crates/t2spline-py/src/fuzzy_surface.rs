@@ -231,6 +231,76 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
         Ok(out)
     }
 
+    /// The membership grades of points in the fuzzy surface as a set
+    /// (docs/method.md §10): for each membership function, the largest level
+    /// at which some surface with its control points inside their cuts
+    /// passes through the point; 0 where none does.
+    ///
+    /// Parameters
+    /// ----------
+    /// points : array_like, shape (..., d)
+    ///     Any leading shape (a single point ``(d,)`` too), the coordinates
+    ///     last.
+    ///
+    /// Returns
+    /// -------
+    /// dict
+    ///     ``"upper"``, ``"primary"``, ``"lower"``: arrays of the leading
+    ///     shape ``(...)``.
+    ///
+    /// Raises
+    /// ------
+    /// ValueError
+    ///     For another last dimension than ``d``, and NaN or infinity, naming
+    ///     the index.
+    ///
+    /// Examples
+    /// --------
+    /// >>> import numpy as np
+    /// >>> x, y = np.meshgrid([0.0, 2.0], [0.0, 2.0], indexing="ij")
+    /// >>> crisp = np.stack([x, y, 0 * x], axis=-1)        # the flat square
+    /// >>> s = np.array([-1.0, 1.0])
+    /// >>> flat = FuzzySurface(crisp, crisp[..., None] + s, crisp[..., None] + 0.5 * s,
+    /// ...                     crisp[..., None] + 0.25 * s, lower_height=0.5, degree=1)
+    /// >>> g = flat.membership([1.0, 1.0, 0.5])           # one point: arrays of shape ()
+    /// >>> round(float(g["upper"]), 9), round(float(g["lower"]), 9)
+    /// (0.5, 0.0)
+    fn membership<'py>(
+        &self,
+        py: Python<'py>,
+        points: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        crate::set::surface_membership(py, &self.0, points)
+    }
+
+    /// The fuzzy height at the location ``(x0, y0)`` of a surface in space
+    /// (docs/method.md §10): at each level and for each membership function,
+    /// the intervals of z where the vertical line meets the surface's
+    /// region, ends accurate to about 1e-9 of the region's height; as
+    /// ``t2spline section --at X0,Y0`` writes them.
+    ///
+    /// Parameters
+    /// ----------
+    /// x0, y0 : float
+    /// levels : int or array_like, optional
+    ///     A count of levels equally spaced from 0 to 1 (2 to 1001, default
+    ///     11), or the levels themselves.
+    ///
+    /// Returns
+    /// -------
+    /// list of dict
+    ///     As ``FuzzyCurve.section``, with intervals of z.
+    #[pyo3(signature = (x0, y0, levels=None), text_signature = "($self, x0, y0, levels=11)")]
+    fn section<'py>(
+        &self,
+        py: Python<'py>,
+        x0: &Bound<'py, PyAny>,
+        y0: &Bound<'py, PyAny>,
+        levels: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, pyo3::types::PyList>> {
+        crate::set::surface_section(py, &self.0, x0, y0, levels)
+    }
+
     fn __repr__(&self) -> String {
         let ((a, b), (c, e)) = self.domain();
         by_dim!(&self.0, |s| {

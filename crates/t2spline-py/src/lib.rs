@@ -14,6 +14,7 @@
 //! | `FuzzyCurve`, `Solution` | `FuzzyCurve<2 or 3>` (stage 1, sampling engine), `Solution` (stages 2–4) |
 //! | `NurbsSurface` | `NurbsSurface<3 or 2>` and its operations, the grid engine |
 //! | `FuzzySurface`, `SurfaceSolution` | `FuzzySurface<3 or 2>` (stage 1, grid engine), `SurfaceSolution` (stages 2–4) |
+//! | `FuzzyCurve.membership`, `.region` (`Region`), `.section`, `.membership_grid`; `FuzzySurface.membership`, `.section` | `t2spline::set` (docs/method.md §10): `memberships`, `region_in`, `sections`, `membership_grid` |
 //! | `fit` | `t2spline::fit::FuzzyData::fit` |
 //! | `centroid` | `t2spline::reduction::discrete::SampledSet`: KM, EKM, EIASC, Nie–Tan (SPEC §10) |
 //! | `benchmark_curve` | `t2spline::sampling::benchmark_curve` |
@@ -63,6 +64,7 @@ mod nurbs_surface;
 mod reduction;
 mod run;
 mod sample;
+mod set;
 mod solution;
 mod stage_methods;
 mod surface_methods;
@@ -101,6 +103,7 @@ fn _t2spline(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<classes::PyNurbsSurface>()?;
     m.add_class::<classes::PyFuzzySurface>()?;
     m.add_class::<classes::PySurfaceSolution>()?;
+    m.add_class::<set::PyRegion>()?;
     m.add_function(wrap_pyfunction!(run::run, m)?)?;
     m.add_function(wrap_pyfunction!(fit::fit, m)?)?;
     m.add_function(wrap_pyfunction!(reduction::centroid, m)?)?;
