@@ -1005,6 +1005,17 @@ pub enum Error {
         least: f64,
     },
 
+    /// A range of a membership grid is empty (its end not above its start).
+    #[error("the grid's {axis} range [{}, {}] is empty: its end must be above its start", Num(*lo), Num(*hi))]
+    GridRange {
+        /// The coordinate of the range.
+        axis: Axis,
+        /// The start given.
+        lo: f64,
+        /// The end given.
+        hi: f64,
+    },
+
     /// A membership grid asks for more cells than [`crate::set::MAX_GRID_CELLS`].
     #[error("a membership grid of {columns} x {rows} cells is more than the limit of {limit}")]
     GridTooLarge {

@@ -401,7 +401,7 @@ fn the_membership_grid_agrees_with_the_point_grades() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(48))]
+    #![proptest_config(ProptestConfig::with_cases(64))]
 
     #[test]
     fn grades_are_ordered_and_match_the_scan(

@@ -48,7 +48,8 @@ impl FuzzyCurve<2> {
     ///
     /// # Errors
     /// [`Error::GridTooLarge`] past [`MAX_GRID_CELLS`] or with no cell;
-    /// [`Error::QueryPoint`] if a bound is not finite or a range is empty.
+    /// [`Error::QueryPoint`] if a bound is not finite; [`Error::GridRange`]
+    /// if a range is empty.
     ///
     /// # Examples
     /// ```
@@ -79,14 +80,12 @@ impl FuzzyCurve<2> {
         for (index, p) in [[x0, y0], [x1, y1]].iter().enumerate() {
             crate::set::membership::check_point(index, p)?;
         }
-        let (dx, dy) = ((x1 - x0) / columns as f64, (y1 - y0) / rows as f64);
-        if !(dx > 0.0 && dy > 0.0 && dx.is_finite() && dy.is_finite()) {
-            return Err(Error::GridTooLarge {
-                columns,
-                rows,
-                limit: MAX_GRID_CELLS,
-            });
+        for (axis, [lo, hi]) in [(crate::Axis::X, [x0, x1]), (crate::Axis::Y, [y0, y1])] {
+            if !(lo < hi) {
+                return Err(Error::GridRange { axis, lo, hi });
+            }
         }
+        let (dx, dy) = ((x1 - x0) / columns as f64, (y1 - y0) / rows as f64);
         let xs: Vec<f64> = (0..columns).map(|i| x0 + (i as f64 + 0.5) * dx).collect();
         let ys: Vec<f64> = (0..rows).map(|j| y0 + (j as f64 + 0.5) * dy).collect();
         let [upper, primary, lower] = MEMBERSHIPS.map(|m| {

@@ -54,7 +54,7 @@ impl Grades {
 }
 
 /// Scan steps per piece of a knot span.
-const SCAN_STEPS: usize = 32;
+const SCAN_STEPS: usize = 64;
 /// The width, relative to its piece, to which golden sections narrow the
 /// bracket of a peak. The grade can have a corner at its peak (where two
 /// coordinates' grades cross), so it is not flat there: the bracket is
@@ -131,7 +131,8 @@ impl<'a, const D: usize> Grader<'a, D> {
     /// where two of them cross. The piece is scanned; every local maximum of
     /// each function on the scan is refined by golden sections, and every
     /// change of sign of the difference of two functions between scan points
-    /// by bisection; the grade is evaluated at each of these candidates.
+    /// by bisection; the grade is evaluated at each of these candidates, and
+    /// every local peak of the grade on the scan is refined as well.
     /// (Refining the minimum itself would not do: between two scan points it
     /// can have two peaks, where a narrow side crosses a wide one twice.)
     #[allow(clippy::too_many_arguments)]
@@ -160,13 +161,22 @@ impl<'a, const D: usize> Grader<'a, D> {
             .map(|(_, s)| min(s))
             .fold(f64::NEG_INFINITY, f64::max);
         let used = 1 + 2 * D;
+        for j in 1..SCAN_STEPS {
+            // Every local peak of the grade itself on the scan, refined.
+            let g = min(&scan[j].1);
+            if min(&scan[j - 1].1) < g && min(&scan[j + 1].1) <= g && g.is_finite() {
+                let bracket = [scan[j - 1].0, scan[j + 1].0];
+                let (neg, _) = golden_section_min(|t| -min(&sides(t)), bracket, tolerance);
+                best = best.max(-neg);
+            }
+        }
         for j in 0..=SCAN_STEPS {
             for a in 1..used {
                 // A local maximum of side `a` on the scan.
                 let v = scan[j].1[a];
                 let rises = j == 0 || scan[j - 1].1[a] < v;
                 let falls = j == SCAN_STEPS || scan[j + 1].1[a] <= v;
-                if rises && falls && v.is_finite() && v > best && j > 0 && j < SCAN_STEPS {
+                if rises && falls && v.is_finite() && j > 0 && j < SCAN_STEPS {
                     let bracket = [scan[j - 1].0, scan[j + 1].0];
                     let (_, t) = golden_section_min(|t| -sides(t)[a], bracket, tolerance);
                     best = best.max(min(&sides(t)));

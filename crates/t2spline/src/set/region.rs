@@ -137,8 +137,7 @@ impl<const D: usize> FuzzyCurve<D> {
             });
         }
         let tolerance = tolerance.unwrap_or_else(|| self.default_tolerance());
-        let extent = self.footprint_extent(axes);
-        let least = LEAST_RELATIVE_TOLERANCE * extent;
+        let least = self.least_tolerance(axes);
         if !(tolerance.is_finite() && tolerance > 0.0 && tolerance >= least) {
             return Err(Error::Tolerance {
                 value: tolerance,
@@ -176,6 +175,13 @@ impl<const D: usize> FuzzyCurve<D> {
         let union = union_tree(leaves);
         let polygons = union.into_iter().filter_map(Polygon::from_rings).collect();
         Ok(Some(Region::new(polygons, tolerance)))
+    }
+
+    /// The finest tolerance of an outline in the plane of `axes`:
+    /// [`LEAST_RELATIVE_TOLERANCE`] of the largest side of the box of the
+    /// upper cuts at level 0.
+    pub(crate) fn least_tolerance(&self, axes: [usize; 2]) -> f64 {
+        LEAST_RELATIVE_TOLERANCE * self.footprint_extent(axes)
     }
 
     /// The largest side of the box of the upper cuts at level 0 in the two

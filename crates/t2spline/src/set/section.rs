@@ -115,11 +115,10 @@ impl FuzzyCurve<2> {
             .collect()
     }
 
-    /// `tolerance`, or the default, checked as for regions.
+    /// `tolerance`, or the default, checked as for regions (the same least).
     fn checked_tolerance(&self, tolerance: Option<f64>) -> Result<f64, Error> {
         let tolerance = tolerance.unwrap_or_else(|| self.default_tolerance());
-        let least = crate::set::region::LEAST_RELATIVE_TOLERANCE * self.default_tolerance()
-            / crate::set::region::DEFAULT_RELATIVE_TOLERANCE;
+        let least = self.least_tolerance([0, 1]);
         if tolerance.is_finite() && tolerance > 0.0 && tolerance >= least {
             Ok(tolerance)
         } else {
