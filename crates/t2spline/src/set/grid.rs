@@ -68,7 +68,7 @@ impl FuzzyCurve<2> {
         [y0, y1]: [f64; 2],
         [columns, rows]: [usize; 2],
     ) -> Result<MembershipGrid, Error> {
-        let cells = columns.checked_mul(rows).unwrap_or(usize::MAX);
+        let cells = columns.saturating_mul(rows);
         if cells == 0 || cells > MAX_GRID_CELLS {
             return Err(Error::GridTooLarge {
                 columns,
