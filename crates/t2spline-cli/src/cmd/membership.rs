@@ -7,8 +7,8 @@ use t2spline::{FuzzyCurve, FuzzySurface};
 use t2spline_io::set::{read_points, write_membership_csv, QueryPoints};
 
 use super::prepare::OptionError;
-use crate::cli::MembershipArgs;
 use crate::clash::Claims;
+use crate::cli::MembershipArgs;
 use crate::output::{read_job, Outputs};
 
 pub fn membership(args: &MembershipArgs) -> anyhow::Result<()> {

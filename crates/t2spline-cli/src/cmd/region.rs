@@ -7,8 +7,8 @@ use t2spline::{Alpha, FuzzyCurve, Membership};
 use t2spline_io::set::{write_region_geojson, RegionFeature};
 
 use super::prepare::OptionError;
-use crate::cli::RegionArgs;
 use crate::clash::Claims;
+use crate::cli::RegionArgs;
 use crate::output::{read_job, Outputs};
 
 pub fn region(args: &RegionArgs) -> anyhow::Result<()> {

@@ -93,7 +93,9 @@ pub fn parse_points(text: &str, source: &str) -> Result<QueryPoints, Error> {
                 line_column: Some((q.line, q.column)),
                 message: q.message.to_owned(),
             },
-            Fault::TooMany => Problem::new(format!("more than {MAX_QUERY_POINTS} points; split the file")),
+            Fault::TooMany => Problem::new(format!(
+                "more than {MAX_QUERY_POINTS} points; split the file"
+            )),
         }])
     })?;
     let mut rows = rows.into_iter();
