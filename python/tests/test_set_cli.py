@@ -499,3 +499,100 @@ def test_a_bad_job_is_reported_with_its_place(cli: Path, tmp_path: Path) -> None
     err = fails(cli, "region", path, "--alpha", "0.5", "-o", out)
     assert f"{path}:" in err and "points[1].x" in err, err
     assert not out.exists()
+
+
+# ---------------------------------------------------------------- the pages
+
+SET_PAGE = ROOT / "docs" / "set.md"
+README = ROOT / "README.md"
+
+
+def transcripts(page: Path) -> List[tuple]:
+    """The `$ t2spline membership|region|section …` commands of the page's
+    text blocks with the output shown under each (up to the next `$` line or
+    the end of the block)."""
+    found = []
+    block: Optional[List[str]] = None
+    for line in page.read_text().splitlines():
+        if block is None:
+            if line.startswith("```text"):
+                block = []
+            continue
+        if line.startswith("```"):
+            found.extend(split_block(block))
+            block = None
+        else:
+            block.append(line)
+    return found
+
+
+def split_block(lines: List[str]) -> List[tuple]:
+    out: List[tuple] = []
+    for line in lines:
+        if line.startswith("$ "):
+            out.append((line[2:], []))
+        elif out:
+            out[-1][1].append(line)
+    return [(cmd, shown) for cmd, shown in out if cmd.split()[1] in ("membership", "region", "section")]
+
+
+def matches(shown: List[str], got: str) -> bool:
+    """`shown` is `got` with `…` standing for any text (an abridged output)."""
+    import re
+
+    pattern = ".*?".join(re.escape(part) for part in "\n".join(shown).split("…"))
+    return re.fullmatch(pattern, got.rstrip("\n"), flags=re.DOTALL) is not None
+
+
+@pytest.mark.parametrize("page, least", [(SET_PAGE, 7), (README, 2)], ids=["docs/set.md", "README.md"])
+def test_the_transcripts_of_the_pages(cli: Path, page: Path, least: int) -> None:
+    import shlex
+
+    found = transcripts(page)
+    assert len(found) >= least, found
+    for command, shown in found:
+        argv = shlex.split(command)
+        assert argv[0] == "t2spline"
+        done = subprocess.run([str(cli), *argv[1:]], cwd=ROOT, capture_output=True, text=True)
+        got = done.stdout if done.returncode == 0 else done.stderr
+        if done.returncode != 0:
+            assert done.returncode == 2 and done.stdout == "", command
+        assert matches(shown, got), f"{page.name}: `{command}` printed\n{got[:2000]}"
+
+
+def test_the_numbers_of_the_set_page(cli: Path) -> None:
+    page = SET_PAGE.read_text()
+    readme = README.read_text()
+    areas = {}
+    for alpha in ["0", "0.5", "0.8", "1"]:
+        found = features(region(cli, EXAMPLE, float(alpha)))
+        areas[alpha] = {m: f["properties"]["area"] for (m, _), f in found.items()}
+    for alpha in ["0", "0.5", "0.8"]:
+        cells = [f"{areas[alpha][m]:.4f}" if m in areas[alpha] else "—" for m in ("upper", "primary", "lower")]
+        assert f"| {alpha} | {' | '.join(cells)} |" in page, (alpha, cells)
+    assert set(areas["1"]) == {"upper", "primary"}
+    assert all(a < 5e-5 for a in areas["1"].values())
+    zero = areas["0"]
+    for text in (page, readme):
+        assert f"area of {zero['upper']:.2f}" in text
+    assert f"(primary {zero['primary']:.2f}, lower\n{zero['lower']:.2f})" in readme
+    # The band between the upper layer curves, as the page computes it.
+    from shapely.geometry import Polygon
+    from shapely.ops import unary_union
+
+    layers = cli_run(cli, EXAMPLE, "--samples", "2001")["curves"]["layers"]
+    a, b = layers["upper_left"], layers["upper_right"]
+    band = unary_union([Polygon([a[k], a[k + 1], b[k + 1], b[k]]).buffer(0) for k in range(len(a) - 1)])
+    assert f"covers {band.area:.2f} of it" in page
+    assert f"the {band.area:.2f} of the band" in readme
+    # The tolerance paragraph.
+    upper_fine = features(region(cli, EXAMPLE, 0.0))[("upper", "xy")]
+    upper_coarse = features(region(cli, EXAMPLE, 0.0, "--tolerance", "0.01"))[("upper", "xy")]
+
+    def vertices(f: Dict[str, Any]) -> int:
+        return sum(len(ring) for polygon in f["geometry"]["coordinates"] for ring in polygon)
+
+    assert round(upper_fine["properties"]["tolerance"], 7) == 6.1e-6
+    assert "(6.1e-6 on the example)" in page
+    assert f"region at alpha 0 has {vertices(upper_coarse)} vertices" in page
+    assert f"area of {upper_coarse['properties']['area']:.4f} instead of {vertices(upper_fine):,}".replace(",", " ") in page.replace("\n", " ")
