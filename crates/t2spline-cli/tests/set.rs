@@ -2,8 +2,9 @@
 //! docs/method.md §10): exit codes, messages naming the place and the rule,
 //! and no output file when the input is bad.
 
+use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::process::Command;
+use std::process::{Command, Stdio};
 
 fn example() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/paper-alg-1-1.json")
@@ -13,17 +14,26 @@ fn terrain() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/fuzzy-terrain.json")
 }
 
-/// Runs `t2spline args…`; (exit code, stdout, stderr).
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_t2spline"))
+/// Runs `t2spline args…` with `stdin`; (exit code, stdout, stderr).
+fn run_with(args: &[&str], stdin: &[u8]) -> (i32, String, String) {
+    let mut child = Command::new(env!("CARGO_BIN_EXE_t2spline"))
         .args(args)
-        .output()
+        .stdin(Stdio::piped())
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
         .expect("the binary runs");
+    let _ = child.stdin.take().expect("piped").write_all(stdin);
+    let out = child.wait_with_output().expect("it ends");
     (
         out.status.code().expect("exited, not killed"),
         String::from_utf8(out.stdout).expect("UTF-8"),
         String::from_utf8(out.stderr).expect("UTF-8"),
     )
+}
+
+fn run(args: &[&str]) -> (i32, String, String) {
+    run_with(args, b"")
 }
 
 fn s(p: &Path) -> &str {
@@ -177,4 +187,28 @@ fn a_level_above_h_has_no_lower_region() {
     assert!(stdout.contains("\"membership\": \"upper\""));
     assert!(stdout.contains("\"membership\": \"primary\""));
     assert!(!stdout.contains("\"membership\": \"lower\""), "{stdout}");
+}
+
+#[test]
+fn points_from_standard_input_and_not_both_inputs() {
+    let (code, stdout, stderr) =
+        run_with(&["membership", s(&example()), "-"], b"x,y\n1,1\n10,10\n");
+    assert_eq!(code, 0, "{stderr}");
+    assert_eq!(
+        stdout,
+        "x,y,upper,primary,lower\n1,1,1,1,0.6\n10,10,0,0,0\n"
+    );
+    let (code, _, stderr) = run_with(&["membership", s(&example()), "-"], b"x,y\n1,two\n");
+    assert_eq!(code, 2, "{stderr}");
+    assert_eq!(
+        stderr,
+        "t2spline: <stdin>:2:3: y (column 2): `two` is not a number\n"
+    );
+    let job = std::fs::read(example()).unwrap();
+    let (code, _, stderr) = run_with(&["membership", "-", "-"], &job);
+    assert_eq!(code, 2, "{stderr}");
+    assert_eq!(
+        stderr,
+        "t2spline: POINTS: standard input (`-`) can hold the job or the points, not both\n"
+    );
 }
