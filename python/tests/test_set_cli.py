@@ -379,6 +379,19 @@ def test_section_at_one_is_the_crisp_curve(cli: Path) -> None:
     assert a == pytest.approx(1.0, abs=1e-5) and b == pytest.approx(1.0, abs=1e-5)
 
 
+def test_a_closed_curve_crosses_a_station_twice(cli: Path, tmp_path: Path) -> None:
+    levels = section(cli, circle_job(tmp_path), "--x", "0", "--levels", "5")["levels"]
+    for lv in levels:
+        for name in ("upper", "primary", "lower"):
+            if lv[name] is None:
+                continue
+            (a, b), (c, d) = lv[name]  # below and above the centre
+            assert a <= b < 0 < c <= d, (name, lv)
+            assert a == pytest.approx(-d) and b == pytest.approx(-c)
+    ((a, b), (c, d)) = levels[-1]["upper"]
+    assert (a, b, c, d) == pytest.approx((-1, -1, 1, 1), abs=1e-6)
+
+
 def test_terrain_section_holds_the_crisp_height(cli: Path) -> None:
     result = section(cli, TERRAIN, "--at", "250,200")
     assert (result["x"], result["y"]) == (250.0, 200.0)
