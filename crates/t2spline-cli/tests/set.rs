@@ -123,6 +123,13 @@ fn option_values_that_break_a_rule() {
             "--tolerance: ",
         );
     }
+    // The finest tolerance allowed, rounded up so that the number shown is allowed.
+    refused(
+        &["region", job, "--alpha", "0.5", "--tolerance", "1e-13"],
+        "t2spline: --tolerance: tolerance = 1e-13 must be a positive number of at least 6.5e-7\n",
+    );
+    let (code, _, stderr) = run(&["region", job, "--alpha", "0.5", "--tolerance", "6.5e-7"]);
+    assert_eq!(code, 0, "{stderr}");
     refused(
         &["section", job, "--x", "3", "--levels", "1"],
         "--levels: 1 is outside 2 ..= 1001",
