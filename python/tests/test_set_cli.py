@@ -417,6 +417,29 @@ def test_terrain_section_holds_the_crisp_height(cli: Path) -> None:
     assert a == pytest.approx(z, abs=1e-6) and b == pytest.approx(z, abs=1e-6)
 
 
+def test_the_terrain_grades_its_crisp_surface_and_its_section_ends(cli: Path, tmp_path: Path) -> None:
+    """The terrain's positions are crisp: a point is graded where the surface
+    passes through its (x, y), the crisp surface's points 1, 1 and h."""
+    grid = cli_run(cli, TERRAIN, "--samples", "5,4")["surfaces"]["crisp"]
+    crisp = [p for row in grid for p in row]
+    rows = grades(cli, TERRAIN, crisp, tmp_path)
+    for row in rows:
+        assert (row["upper"], row["primary"], row["lower"]) == pytest.approx((1.0, 1.0, H), abs=1e-9), row
+    levels = section(cli, TERRAIN, "--at", "250,200")["levels"]
+    ends = [
+        (lv["alpha"], name, z)
+        for lv in levels
+        for name in ("upper", "primary", "lower")
+        for interval in lv[name] or []
+        for z in interval
+    ]
+    rows = grades(cli, TERRAIN, [[250.0, 200.0, z] for _, _, z in ends], tmp_path)
+    for (alpha, name, z), row in zip(ends, rows):
+        assert row[name] == pytest.approx(alpha, abs=1e-4), (alpha, name, z)
+    far = grades(cli, TERRAIN, [[250.0, 200.0, 120.0], [600.0, 200.0, 111.0]], tmp_path)
+    assert [r["upper"] for r in far] == [0.0, 0.0]
+
+
 # ---------------------------------------------------------------- bad input
 
 

@@ -219,3 +219,19 @@ fn points_from_standard_input_and_not_both_inputs() {
         "t2spline: POINTS: standard input (`-`) can hold the job or the points, not both\n"
     );
 }
+
+#[test]
+fn a_terrain_with_crisp_positions_grades_its_crisp_surface() {
+    // (250, 200) is the crisp surface at (u, v) = (0.5, 0.5), height 111.745625.
+    let dir = tempfile::tempdir().unwrap();
+    let points = dir.path().join("p.csv");
+    std::fs::write(&points, "x,y,z\n250,200,111.745625\n250,200,120\n").unwrap();
+    let (code, stdout, stderr) = run(&["membership", s(&terrain()), s(&points)]);
+    assert_eq!(code, 0, "{stderr}");
+    let lines: Vec<&str> = stdout.lines().collect();
+    let g: Vec<f64> = lines[1].split(',').map(|v| v.parse().unwrap()).collect();
+    assert!((g[3] - 1.0).abs() < 1e-9, "{stdout}");
+    assert!((g[4] - 1.0).abs() < 1e-9, "{stdout}");
+    assert!((g[5] - 0.6).abs() < 1e-9, "{stdout}");
+    assert_eq!(lines[2], "250,200,120,0,0,0");
+}
