@@ -185,6 +185,41 @@ def test_membership_of_a_space_curve_and_a_surface(cli: Path, tmp_path: Path) ->
     assert rows[-1][3:] == [0.0, 0.0, 0.0]
 
 
+def crisp_axes_job(tmp: Path, axes: str) -> Path:
+    """The example with the coordinates `axes` crisp (no spread)."""
+    job = json.loads(EXAMPLE.read_text())
+    for p in job["points"]:
+        for a in axes:
+            c = p[a]["crisp"]
+            p[a] = {"crisp": c, "upper": [c, c], "primary": [c, c], "lower": [c, c]}
+    path = tmp / f"crisp-{axes}.json"
+    path.write_text(json.dumps(job))
+    return path
+
+
+@pytest.mark.parametrize("axes", ["x", "xy"])
+def test_crisp_coordinates_grade_the_crisp_curve(cli: Path, tmp_path: Path, axes: str) -> None:
+    """Crisp stations (x) or crisp numbers: the grade is positive only where
+    the curve passes exactly through the point's crisp coordinates, and the
+    crisp curve's sampled points are still graded 1, 1 and h."""
+    job = crisp_axes_job(tmp_path, axes)
+    rows = grades(cli, job, crisp_points(cli, job, 23), tmp_path)
+    for row in rows:
+        assert (row["upper"], row["primary"], row["lower"]) == pytest.approx((1.0, 1.0, H), abs=1e-9), row
+    if axes == "x":
+        levels = section(cli, job, "--x", "3.5")["levels"]
+        ends = [
+            (lv["alpha"], name, y)
+            for lv in levels
+            for name in ("upper", "primary", "lower")
+            for interval in lv[name] or []
+            for y in interval
+        ]
+        rows = grades(cli, job, [[3.5, y] for _, _, y in ends], tmp_path)
+        for (alpha, name, y), row in zip(ends, rows):
+            assert row[name] == pytest.approx(alpha, abs=1e-4), (alpha, name, y)
+
+
 # ---------------------------------------------------------------- region
 
 

@@ -235,3 +235,30 @@ fn a_terrain_with_crisp_positions_grades_its_crisp_surface() {
     assert!((g[5] - 0.6).abs() < 1e-9, "{stdout}");
     assert_eq!(lines[2], "250,200,120,0,0,0");
 }
+
+#[test]
+fn a_curve_with_crisp_stations_grades_its_crisp_curve() {
+    // The example with every x crisp: (2.05, 2.875) is its crisp curve at t = 1/6.
+    let dir = tempfile::tempdir().unwrap();
+    let mut job: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(example()).unwrap()).unwrap();
+    for p in job["points"].as_array_mut().unwrap() {
+        let c = p["x"]["crisp"].clone();
+        p["x"] =
+            serde_json::json!({"crisp": c, "upper": [c, c], "primary": [c, c], "lower": [c, c]});
+    }
+    let path = dir.path().join("job.json");
+    std::fs::write(&path, job.to_string()).unwrap();
+    let points = dir.path().join("p.csv");
+    std::fs::write(&points, "x,y\n2.05,2.875\n3.5,4.8\n").unwrap();
+    let (code, stdout, stderr) = run(&["membership", s(&path), s(&points)]);
+    assert_eq!(code, 0, "{stderr}");
+    let lines: Vec<&str> = stdout.lines().collect();
+    let g: Vec<f64> = lines[1].split(',').map(|v| v.parse().unwrap()).collect();
+    assert!(
+        (g[2] - 1.0).abs() < 1e-9 && (g[3] - 1.0).abs() < 1e-9,
+        "{stdout}"
+    );
+    assert!((g[4] - 0.6).abs() < 1e-9, "{stdout}");
+    assert_eq!(lines[2], "3.5,4.8,0,0,0");
+}
