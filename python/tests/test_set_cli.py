@@ -667,3 +667,11 @@ def test_the_numbers_of_the_set_page(cli: Path) -> None:
     assert "(6.1e-6 on the example)" in page
     assert f"region at alpha 0 has {vertices(upper_coarse)} vertices" in page
     assert f"area of {upper_coarse['properties']['area']:.4f} instead of {vertices(upper_fine):,}".replace(",", " ") in page.replace("\n", " ")
+
+
+def test_the_terrain_grades_of_the_set_page(cli: Path, tmp_path: Path) -> None:
+    page = " ".join(SET_PAGE.read_text().split())
+    on, near = grades(cli, TERRAIN, [[250.0, 200.0, 111.745625], [250.0, 200.0, 111.26]], tmp_path)
+    assert (on["upper"], on["primary"], on["lower"]) == pytest.approx((1.0, 1.0, H), abs=1e-9)
+    assert "`(250, 200, 111.745625)`, on the crisp surface, has grades 1, 1 and 0.6" in page
+    assert f"`(250, 200, 111.26)`, just inside the upper interval of the section below, {near['upper']:.3f}" in page
