@@ -351,7 +351,8 @@ pub struct ExportArgs {
 pub struct MembershipArgs {
     /// The job file; `-` reads standard input.
     pub job: PathBuf,
-    /// The points: CSV with the header x,y (or x,y,z), one point per row.
+    /// The points: CSV with the header x,y (or x,y,z), one point per row;
+    /// `-` reads standard input.
     pub points: PathBuf,
     /// Write the grades here instead of standard output (`-` is standard
     /// output).

@@ -103,6 +103,32 @@ impl fmt::Display for Num {
     }
 }
 
+/// A positive number rounded up to two significant digits for a message
+/// (`6.499999999999999e-7` is shown as `6.5e-7`, `6.41e-7` as `6.5e-7`).
+struct RoundedUp(f64);
+
+impl fmt::Display for RoundedUp {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let x = self.0;
+        if !(x.is_finite() && x > 0.0) {
+            return write!(f, "{}", Num(x));
+        }
+        let mut exponent = x.log10().floor() as i32;
+        // Two digits, up; a relative 1e-12 absorbs the rounding of `x` itself.
+        let mut digits = (x / 10f64.powi(exponent - 1) * (1.0 - 1e-12)).ceil();
+        if digits >= 100.0 {
+            digits /= 10.0;
+            exponent += 1;
+        }
+        let shown = digits / 10.0;
+        if exponent == 0 {
+            write!(f, "{shown:.1}")
+        } else {
+            write!(f, "{shown:.1}e{exponent}")
+        }
+    }
+}
+
 /// A setting of a run, to name it in messages: each front end spells it its
 /// own way (`--samples` on the command line, `samples=` in Python).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -995,9 +1021,21 @@ pub enum Error {
 
     /// The tolerance of a region's outline is not a positive finite number,
     /// or is finer than the outline can be computed (`least`: the size of
-    /// the region's box times 1e-8, the resolution of the polygon union's
-    /// integer grid with room for rounding).
-    #[error("tolerance = {} must be a positive number of at least {}", Num(*value), Num(*least))]
+    /// the region's box times [`crate::set::LEAST_RELATIVE_TOLERANCE`], the
+    /// resolution of the polygon union's integer grid with room for
+    /// rounding). The message rounds `least` up to two significant digits,
+    /// so that the number it shows is allowed.
+    ///
+    /// ```
+    /// # use t2spline::{Alpha, Error, FuzzyCurve, Membership, Nt2Number, Nt2Point};
+    /// # let n = |c: f64| Nt2Number::try_new(c, [c - 1.0, c + 1.0], [c - 0.5, c + 0.5], [c - 0.25, c + 0.25], 0.5);
+    /// # let c = FuzzyCurve::try_new(1, vec![Nt2Point::new([n(0.0)?, n(0.0)?]), Nt2Point::new([n(4.0)?, n(3.0)?])], vec![1.0, 1.0], None)?;
+    /// let e = c.region(Membership::Upper, Alpha::try_new(0.5)?, Some(0.0)).unwrap_err();
+    /// assert!(matches!(e, Error::Tolerance { .. }));
+    /// assert!(e.to_string().starts_with("tolerance = 0 must be a positive number of at least "));
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("tolerance = {} must be a positive number of at least {}", Num(*value), RoundedUp(*least))]
     Tolerance {
         /// The tolerance given.
         value: f64,
@@ -1163,5 +1201,28 @@ impl Error {
             },
             other => other,
         }
+    }
+}
+
+#[cfg(test)]
+mod rounded_up {
+    use super::RoundedUp;
+
+    #[test]
+    fn two_significant_digits_never_below_the_value() {
+        for (x, shown) in [
+            (6.499999999999999e-7, "6.5e-7"),
+            (6.41e-7, "6.5e-7"),
+            (6.5e-7, "6.5e-7"),
+            (9.96e-3, "1.0e-2"),
+            (1.0, "1.0"),
+            (2.01, "2.1"),
+            (123.0, "1.3e2"),
+        ] {
+            assert_eq!(RoundedUp(x).to_string(), shown, "{x}");
+            assert!(shown.parse::<f64>().unwrap() >= x * (1.0 - 1e-12), "{x}");
+        }
+        assert_eq!(RoundedUp(0.0).to_string(), "0");
+        assert_eq!(RoundedUp(f64::NAN).to_string(), "NaN");
     }
 }

@@ -4,19 +4,26 @@
 use t2spline::job::{Model, ModelVisitor};
 use t2spline::set::Grades;
 use t2spline::{FuzzyCurve, FuzzySurface};
-use t2spline_io::set::{read_points, write_membership_csv, QueryPoints};
+use t2spline_io::set::{parse_points, write_membership_csv, QueryPoints};
 
 use super::prepare::OptionError;
 use crate::clash::Claims;
 use crate::cli::MembershipArgs;
-use crate::output::{read_job, Outputs};
+use crate::output::{is_stdio, job_name, read_input, read_job, Outputs};
 
 pub fn membership(args: &MembershipArgs) -> anyhow::Result<()> {
     if let Some(out) = &args.output {
         Claims::new([args.job.as_path(), args.points.as_path()]).file("--output", out)?;
     }
+    if is_stdio(&args.job) && is_stdio(&args.points) {
+        return Err(OptionError {
+            option: "POINTS",
+            message: "standard input (`-`) can hold the job or the points, not both".into(),
+        }
+        .into());
+    }
     let job = read_job(&args.job)?;
-    let points = read_points(&args.points)?;
+    let points = parse_points(&read_input(&args.points)?, &job_name(&args.points))?;
     let (model_dimension, what) = match &job.model {
         Model::Planar(_) => (2, "a plane curve"),
         Model::Spatial(_) => (3, "a space curve"),

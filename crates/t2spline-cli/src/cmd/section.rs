@@ -19,6 +19,9 @@ pub fn section(args: &SectionArgs) -> anyhow::Result<()> {
     }
     let levels = levels(args.levels)?;
     let at = args.at.as_deref().map(parse_at).transpose()?;
+    if let Some(x0) = args.x.filter(|x| !x.is_finite()) {
+        return Err(missing("--x", &format!("{x0} is not a finite number")));
+    }
     let job = read_job(&args.job)?;
     let tolerance_error = |e: t2spline::Error| match e {
         t2spline::Error::Tolerance { .. } => anyhow::Error::from(OptionError {

@@ -114,13 +114,97 @@ impl<'a, const D: usize> Grader<'a, D> {
                 let (top, hull) = &hulls[k];
                 // The convex hull property: every box of the piece lies in the
                 // box of its control points' cuts at level 0.
-                if *top <= best[k] || !hull.iter().zip(p).all(|(h, &x)| h[0] <= x && x <= h[1]) {
+                // The slack lets a point on a crisp coordinate's edge,
+                // rounded out of it, count (see `crisp_peak`).
+                let slack = 1e-9 * hull.iter().map(|h| h[1] - h[0]).fold(0.0_f64, f64::max);
+                if *top <= best[k]
+                    || !hull
+                        .iter()
+                        .zip(p)
+                        .all(|(h, &x)| h[0] - slack <= x && x <= h[1] + slack)
+                {
                     continue;
                 }
                 best[k] = best[k].max(self.peak(piece, k, *top, p, &mut basis, &mut scan));
+                best[k] = best[k].max(self.crisp_peak(piece, k, (*top, hull), p, &mut basis));
             }
         }
         Grades::ordered(best)
+    }
+
+    /// The largest grade of `p` on one piece under function `k` where the
+    /// curve passes through `p` in the coordinates whose cuts have no width
+    /// on the piece (crisp stations, or crisp numbers): there the box is a
+    /// point in those coordinates, so the grade is positive only at isolated
+    /// parameters, which a scan of the grade cannot hit. The parameters
+    /// nearest `p` in those coordinates are found (every local minimum of a
+    /// scan, refined); within 1e-9 of the piece's size they count as passing
+    /// through `p`, and the grade of the other coordinates there is taken
+    /// (0 when no coordinate is crisp or none is near).
+    fn crisp_peak(
+        &self,
+        piece: &SpanPiece,
+        k: usize,
+        (top, hull): (f64, &[[f64; 2]; D]),
+        p: &[f64; D],
+        basis: &mut [f64],
+    ) -> f64 {
+        let first = piece.first(self.curve.degree());
+        let lines = &self.lines[k];
+        let acting = &lines.ends[first..first + self.curve.order()];
+        let crisp: [bool; D] = std::array::from_fn(|c| {
+            acting.iter().all(|e| {
+                e[c].foot_left == e[c].foot_right
+                    && e[c].slope_left == 0.0
+                    && e[c].slope_right == 0.0
+            })
+        });
+        if !crisp.contains(&true) {
+            return 0.0;
+        }
+        let size = hull
+            .iter()
+            .map(|h| h[1] - h[0])
+            .fold(0.0_f64, f64::max)
+            .max(f64::MIN_POSITIVE);
+        let (knots, weights) = (self.curve.knots(), self.curve.weights());
+        let mut buffer = vec![0.0; basis.len()];
+        let mut sums_at = |t: f64| {
+            rational_basis(knots, weights, piece.span, t, &mut buffer);
+            lines.sums(first, &buffer)
+        };
+        let mut off = |t: f64| {
+            let sums = sums_at(t);
+            sums.iter()
+                .zip(p)
+                .zip(&crisp)
+                .filter(|(_, &c)| c)
+                .map(|((s, &x), _)| (s[0] - x) * (s[0] - x))
+                .sum::<f64>()
+                .sqrt()
+        };
+        let scan: Vec<(f64, f64)> = piece.params(SCAN_STEPS).map(|t| (off(t), t)).collect();
+        let tolerance = REFINEMENT * (piece.hi - piece.lo);
+        let mut best = 0.0_f64;
+        for j in 0..=SCAN_STEPS {
+            let (d, _) = scan[j];
+            let falls = j == 0 || scan[j - 1].0 > d;
+            let rises = j == SCAN_STEPS || scan[j + 1].0 >= d;
+            if !(falls && rises) {
+                continue;
+            }
+            let bracket = [scan[j.saturating_sub(1)].1, scan[(j + 1).min(SCAN_STEPS)].1];
+            let (d, t) = golden_section_min(&mut off, bracket, tolerance);
+            if d.is_nan() || d > 1e-9 * size {
+                continue;
+            }
+            rational_basis(knots, weights, piece.span, t, basis);
+            let sums = lines.sums(first, basis);
+            // `p` moved onto the curve in its crisp coordinates.
+            let on: [f64; D] = std::array::from_fn(|c| if crisp[c] { sums[c][0] } else { p[c] });
+            best = best.max(lines.grade(first, basis, top, &on));
+        }
+        best
     }
 
     /// The largest grade of `p` on one piece under function `k`.
@@ -220,6 +304,11 @@ impl<const D: usize> FuzzyCurve<D> {
     /// (docs/method.md §10): for each membership function `m`, the largest
     /// level `alpha` at which some curve whose control points lie inside
     /// their `m`-cuts at `alpha` passes through `p`; 0 where none does.
+    ///
+    /// Coordinates whose cuts have no width on a piece (crisp stations, or
+    /// crisp numbers) are met where the curve passes within 1e-9 of the
+    /// piece's size of `p` in them, and the grade of the other coordinates is
+    /// taken there.
     ///
     /// The sup over the domain is found by a scan of every piece of every
     /// knot span with each local peak refined by golden sections, accurate to

@@ -124,16 +124,74 @@ impl<'a, const D: usize> SurfaceGrader<'a, D> {
         let mut best = [0.0_f64; 3];
         for (k, patches) in self.patches.iter().enumerate() {
             for pl in patches {
-                if pl.top <= best[k] || !pl.hull.iter().zip(p).all(|(h, &x)| h[0] <= x && x <= h[1])
+                // The slack of the crisp coordinates (below) lets a point on
+                // the hull's edge, rounded out of it, count.
+                let slack = 1e-9 * pl.hull.iter().map(|h| h[1] - h[0]).fold(0.0_f64, f64::max);
+                if pl.top <= best[k]
+                    || !pl
+                        .hull
+                        .iter()
+                        .zip(p)
+                        .all(|(h, &x)| h[0] - slack <= x && x <= h[1] + slack)
                 {
                     continue;
                 }
                 let floor = best[k];
                 let (neg, _) = patch_min(&pl.patch, |uv| -self.grade_at(pl, uv, p), |v| -v > floor);
                 best[k] = best[k].max(-neg);
+                best[k] = best[k].max(self.crisp_axes_grade(pl, p));
             }
         }
         Grades::ordered(best)
+    }
+
+    /// The grade of `p` where the surface passes through it in the
+    /// coordinates whose cuts have no width on the patch (crisp positions, as
+    /// in a terrain): there the box is a point in those coordinates, so the
+    /// grade is positive only on that set of parameters, which a scan of the
+    /// grade cannot find. The parameters nearest `p` in those coordinates are
+    /// searched instead; within 1e-9 of the patch's size they count as
+    /// passing through `p`, and the grade of the other coordinates there is
+    /// returned (0 when no coordinate is crisp or none is near).
+    fn crisp_axes_grade(&self, pl: &PatchLines<D>, p: &[f64; D]) -> f64 {
+        let crisp: [bool; D] = std::array::from_fn(|c| {
+            pl.lines.ends.iter().all(|e| {
+                e[c].foot_left == e[c].foot_right
+                    && e[c].slope_left == 0.0
+                    && e[c].slope_right == 0.0
+            })
+        });
+        if !crisp.contains(&true) {
+            return 0.0;
+        }
+        let size = pl
+            .hull
+            .iter()
+            .map(|h| h[1] - h[0])
+            .fold(0.0_f64, f64::max)
+            .max(f64::MIN_POSITIVE);
+        let mut basis = Vec::new();
+        let off = |uv: [f64; 2]| {
+            let mut b = Vec::new();
+            self.basis(&pl.patch, uv, &mut b);
+            let sums = pl.lines.sums(0, &b);
+            sums.iter()
+                .zip(p)
+                .zip(&crisp)
+                .filter(|(_, &c)| c)
+                .map(|((s, &x), _)| (s[0] - x) * (s[0] - x))
+                .sum::<f64>()
+                .sqrt()
+        };
+        let (d, uv) = patch_min(&pl.patch, off, |_| true);
+        if d.is_nan() || d > 1e-9 * size {
+            return 0.0;
+        }
+        self.basis(&pl.patch, uv, &mut basis);
+        let sums = pl.lines.sums(0, &basis);
+        // `p` moved onto the surface in its crisp coordinates.
+        let on: [f64; D] = std::array::from_fn(|c| if crisp[c] { sums[c][0] } else { p[c] });
+        pl.lines.grade(0, &basis, pl.top, &on).max(0.0)
     }
 }
 
@@ -144,6 +202,9 @@ impl<const D: usize> FuzzySurface<D> {
     /// through `p`. The sup over `(u, v)` is found patch by patch: patches
     /// whose control points' box at level 0 misses `p` are skipped, the rest
     /// scanned on a 17 × 17 grid with every local peak refined by Nelder–Mead.
+    /// Coordinates whose cuts have no width (crisp positions, as in a
+    /// terrain) are met where the surface passes within 1e-9 of the patch's
+    /// size of `p` in them; the grade of the other coordinates is taken there.
     ///
     /// # Errors
     /// [`Error::QueryPoint`] if a coordinate of `p` is NaN or infinite.
