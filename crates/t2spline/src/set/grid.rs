@@ -81,7 +81,7 @@ impl FuzzyCurve<2> {
             crate::set::membership::check_point(index, p)?;
         }
         for (axis, [lo, hi]) in [(crate::Axis::X, [x0, x1]), (crate::Axis::Y, [y0, y1])] {
-            if !(lo < hi) {
+            if lo >= hi {
                 return Err(Error::GridRange { axis, lo, hi });
             }
         }
