@@ -193,7 +193,7 @@ fn the_example_region_holds_every_box_and_nothing_far_from_one() {
 #[test]
 fn the_example_upper_region_at_zero_has_the_area_of_its_boxes() {
     // The union of the boxes has area 18.9186 (the band between the upper
-    // layer curves, 8.29, is less than half of it); the outline, within
+    // layer curves has 10.14); the outline, within
     // 6e-6 of it, adds at most its perimeter (about 25) times that.
     let r = example()
         .region(Membership::Upper, Alpha::ZERO, None)
