@@ -12,6 +12,7 @@ use t2spline_io::job::MAX_ORDER;
 use crate::arrays::{floats, shape_text, Floats};
 use crate::dim::{ByDim, PointList};
 use crate::keyword;
+pub(crate) use crate::keyword::{count, PerDirection};
 use crate::net::shape;
 
 /// How the arguments that give a degree are named in messages: `degree`,
@@ -96,27 +97,6 @@ pub(crate) fn named_degree(
     }
 }
 
-/// One value for both directions of a surface, or one per direction
-/// (`samples=(21, 11)`, `degree=(2, 1)`), read by
-/// [`keyword::per_direction`](crate::keyword::per_direction).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum PerDirection {
-    /// The same value along u and along v.
-    One(i64),
-    /// The values along u and along v.
-    Two(i64, i64),
-}
-
-impl PerDirection {
-    /// The values along u and along v.
-    pub(crate) fn pair(self) -> [i64; 2] {
-        match self {
-            PerDirection::One(n) => [n, n],
-            PerDirection::Two(u, v) => [u, v],
-        }
-    }
-}
-
 /// The degrees `[p, q]` of a surface, each direction as [`degree`] reads a
 /// curve's: from `degree` or `order` (one value for both directions, or one
 /// per direction), else from the number of knots in that direction.
@@ -189,19 +169,6 @@ pub(crate) fn net_weights(arg: Option<&Bound<'_, PyAny>>, net: [usize; 2]) -> Py
             Ok(w.data)
         }
     }
-}
-
-/// A count from Python (`times=`, `count=`), at least `min`.
-///
-/// # Errors
-/// `ValueError` naming `name` for a smaller value.
-pub(crate) fn count(value: i64, name: &str, min: usize) -> PyResult<usize> {
-    usize::try_from(value)
-        .ok()
-        .filter(|&v| v >= min)
-        .ok_or_else(|| {
-            PyValueError::new_err(format!("{name}: must be at least {min}, got {value}"))
-        })
 }
 
 /// A direction from its name (`"u"`, `"v"`).

@@ -15,8 +15,6 @@ use pyo3::exceptions::{PyOverflowError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyList, PyString, PyTuple};
 
-use crate::construct::PerDirection;
-
 /// The Python type name of `arg`, for messages (`str`, `float`, `NoneType`).
 fn type_name(arg: &Bound<'_, PyAny>) -> String {
     arg.get_type()
@@ -146,7 +144,7 @@ pub(crate) fn real_pair(arg: &Bound<'_, PyAny>, name: &str) -> PyResult<(f64, f6
 pub(crate) fn times(arg: Option<&Bound<'_, PyAny>>) -> PyResult<usize> {
     match opt_int(arg, "times")? {
         None => Ok(1),
-        Some(n) => crate::construct::count(n, "times", 1),
+        Some(n) => count(n, "times", 1),
     }
 }
 
@@ -214,4 +212,38 @@ pub(crate) fn opt_per_direction(
     arg.filter(|a| !a.is_none())
         .map(|a| per_direction(a, name))
         .transpose()
+}
+
+/// One value for both directions of a surface, or one per direction
+/// (`samples=(21, 11)`, `degree=(2, 1)`), read by
+/// [`per_direction`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum PerDirection {
+    /// The same value along u and along v.
+    One(i64),
+    /// The values along u and along v.
+    Two(i64, i64),
+}
+
+impl PerDirection {
+    /// The values along u and along v.
+    pub(crate) fn pair(self) -> [i64; 2] {
+        match self {
+            PerDirection::One(n) => [n, n],
+            PerDirection::Two(u, v) => [u, v],
+        }
+    }
+}
+
+/// A count from Python (`times=`, `count=`), at least `min`.
+///
+/// # Errors
+/// `ValueError` naming `name` for a smaller value.
+pub(crate) fn count(value: i64, name: &str, min: usize) -> PyResult<usize> {
+    usize::try_from(value)
+        .ok()
+        .filter(|&v| v >= min)
+        .ok_or_else(|| {
+            PyValueError::new_err(format!("{name}: must be at least {min}, got {value}"))
+        })
 }
