@@ -297,8 +297,9 @@ fn crisp_numbers_give_the_curve_itself() {
     assert!(!r.contains([on[0], on[1] + 10.0 * r.tolerance()]));
 }
 
-#[test]
-fn per_number_heights_cap_the_lower_grade_by_the_points_that_count() {
+/// A polyline of degree 1 along the x axis through points of heights 0.9,
+/// 0.9 and 0.4: the first span counts points 0 and 1, the second 1 and 2.
+fn two_heights() -> FuzzyCurve<2> {
     let n = |c: f64, h: f64| {
         Nt2Number::try_new(
             c,
@@ -314,8 +315,12 @@ fn per_number_heights_cap_the_lower_grade_by_the_points_that_count() {
         Nt2Point::new([n(1.0, 0.9), n(0.0, 0.9)]),
         Nt2Point::new([n(2.0, 0.4), n(0.0, 0.4)]),
     ];
-    // Degree 1: the first span counts points 0 and 1, the second 1 and 2.
-    let c = FuzzyCurve::try_new(1, points, vec![1.0; 3], None).expect("valid");
+    FuzzyCurve::try_new(1, points, vec![1.0; 3], None).expect("valid")
+}
+
+#[test]
+fn per_number_heights_cap_the_lower_grade_by_the_points_that_count() {
+    let c = two_heights();
     let g = |x: f64| c.membership(&[x, 0.0]).expect("finite").lower;
     assert!((g(0.5) - 0.9).abs() < 1e-12, "{}", g(0.5));
     // x = 1.1: the first span's box at t = 1/2 reaches it up to
@@ -455,24 +460,9 @@ fn the_top_of_each_membership_function_is_its_largest_level_with_a_cut() {
     assert_eq!(c.membership_top(Membership::Upper), 1.0);
     assert_eq!(c.membership_top(Membership::Primary), 1.0);
     assert_eq!(c.membership_top(Membership::Lower), H);
-    // Per-number heights: degree 1 over heights 0.9, 0.9, 0.4 has spans whose
-    // least heights are 0.9 and 0.4; the lower function has cuts up to 0.9.
-    let n = |c: f64, h: f64| {
-        Nt2Number::try_new(
-            c,
-            [c - 1.0, c + 1.0],
-            [c - 0.5, c + 0.5],
-            [c - 0.2, c + 0.2],
-            h,
-        )
-        .expect("valid")
-    };
-    let points = vec![
-        Nt2Point::new([n(0.0, 0.9), n(0.0, 0.9)]),
-        Nt2Point::new([n(1.0, 0.9), n(0.0, 0.9)]),
-        Nt2Point::new([n(2.0, 0.4), n(0.0, 0.4)]),
-    ];
-    let c = FuzzyCurve::try_new(1, points, vec![1.0; 3], None).expect("valid");
+    // Per-number heights: spans whose least heights are 0.9 and 0.4; the
+    // lower function has cuts up to 0.9.
+    let c = two_heights();
     assert_eq!(c.membership_top(Membership::Lower), 0.9);
     assert!(c
         .region(Membership::Lower, alpha(0.9), None)
