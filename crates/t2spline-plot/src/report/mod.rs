@@ -397,11 +397,13 @@ fn choose_stops(
             let alpha = Alpha::try_new(a)?;
             let run = data::run_with(job, alpha, TypeReduction::Paper, file_samples(job.samples))?;
             let files: Vec<String> = files_of(&run)?.into_iter().map(|(_, t)| t).collect();
+            // Drawn as the report stores them: lines and regions simplified
+            // to the report's tolerance.
             let figures: Vec<String> =
                 stop_figures(job, alpha, TypeReduction::Paper, &heights, options)?
                     .0
                     .iter()
-                    .map(svg::render)
+                    .map(static_svg)
                     .collect();
             Ok((
                 pack::packed_len(&json!(files)),
