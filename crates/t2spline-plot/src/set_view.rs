@@ -127,7 +127,7 @@ fn footprint_box(curve: &FuzzyCurve<2>) -> Result<[[f64; 2]; 2], Error> {
     }
     if b[0][0] > b[0][1] || b[0][0].is_nan() {
         for p in curve.points() {
-            let [x, y] = p.coords().clone().map(|n| n.upper());
+            let [x, y] = (*p.coords()).map(|n| n.upper());
             add(&mut b, [x.left(), y.left()]);
             add(&mut b, [x.right(), y.right()]);
         }
