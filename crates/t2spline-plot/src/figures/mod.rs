@@ -146,23 +146,37 @@ pub fn all_figures(job: &Job, alpha: Alpha, options: &FigureOptions) -> Result<V
     }
     let scene = CurveScene::new(&result, &heights, options.aspect);
     let axes = scene.axes();
-    let (zero, at) = rayon::join(
-        || set_view::regions(&job.model, Alpha::ZERO, &axes),
-        || set_view::regions(&job.model, Alpha::try_new(result.alpha)?, &axes),
+    // The figures of the plane (plane curves) beside the others, on
+    // rayon's pool: they ask the core for maps, regions and sections.
+    let (figures, plane) = rayon::join(
+        || -> Result<Vec<Figure>, Error> {
+            let (zero, at) = rayon::join(
+                || set_view::regions(&job.model, Alpha::ZERO, &axes),
+                || set_view::regions(&job.model, Alpha::try_new(result.alpha)?, &axes),
+            );
+            Ok(vec![
+                number,
+                curve::stage1_figure(&scene, &zero?),
+                curve::stage2_figure(&scene, &at?),
+                curve::stage3_figure(&scene),
+                curve::stage4_figure(job, &scene, Zoom::WhereApart)?,
+                curve::sweep_figure(job)?,
+                curve::distance_figure(job, alpha.get())?,
+                reductions_figure(job, alpha, options.aspect)?,
+            ])
+        },
+        || -> Result<Vec<Figure>, Error> {
+            if !matches!(job.model, t2spline::job::Model::Planar(_)) {
+                return Ok(Vec::new());
+            }
+            let (map, section) = rayon::join(
+                || curve::membership_figure(job, &scene),
+                || curve::section_figure(job, &scene, options.station),
+            );
+            Ok(vec![map?, section?])
+        },
     );
-    let mut figures = vec![
-        number,
-        curve::stage1_figure(&scene, &zero?),
-        curve::stage2_figure(&scene, &at?),
-        curve::stage3_figure(&scene),
-        curve::stage4_figure(job, &scene, Zoom::WhereApart)?,
-        curve::sweep_figure(job)?,
-        curve::distance_figure(job, alpha.get())?,
-        reductions_figure(job, alpha, options.aspect)?,
-    ];
-    if matches!(job.model, t2spline::job::Model::Planar(_)) {
-        figures.push(curve::membership_figure(job, &scene)?);
-        figures.push(curve::section_figure(job, &scene, options.station)?);
-    }
+    let mut figures = figures?;
+    figures.extend(plane?);
     Ok(figures)
 }

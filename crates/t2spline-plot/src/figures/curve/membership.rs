@@ -173,8 +173,11 @@ pub fn membership_figure(job: &Job, scene: &CurveScene<'_>) -> Result<Figure, Er
     let curve = set_view::planar(&job.model)?;
     let map = set_view::membership_map(curve)?;
     let (crisp, aspect) = (&scene.r.samples.crisp, scene.aspect);
-    let upper = set_view::contours(curve, Membership::Upper, &CONTOUR_LEVELS)?;
-    let lower = set_view::contours(curve, Membership::Lower, &CONTOUR_LEVELS)?;
+    let (upper, lower) = rayon::join(
+        || set_view::contours(curve, Membership::Upper, &CONTOUR_LEVELS),
+        || set_view::contours(curve, Membership::Lower, &CONTOUR_LEVELS),
+    );
+    let (upper, lower) = (upper?, lower?);
     let panels = vec![
         panel(
             "upper grade μ_upper",
