@@ -110,7 +110,10 @@ def _band(ax: Axes, left: Optional[NDArray[np.float64]], right: Optional[NDArray
     ax.fill(*_xy(polygon, coords), color=color, alpha=alpha, linewidth=0, label=label)
 
 
-_PLANES = {(0, 1): "xy", (0, 2): "xz", (1, 2): "yz"}
+_PLANES: Mapping[Tuple[int, int], Literal["xy", "xz", "yz"]] = {
+    (0, 1): "xy", (0, 2): "xz", (1, 2): "yz"}
+_SHADES: Tuple[Tuple[Literal["upper", "lower"], str, float], ...] = (
+    ("upper", UPPER, 0.12), ("lower", LOWER, 0.32))
 
 
 def region(ax: Axes, region: Optional[Region], *, color: str = UPPER, alpha: float = 0.12,
@@ -138,10 +141,10 @@ def _regions(ax: Axes, curve: Optional[FuzzyCurve], level: float, coords: Coords
     """The upper and the lower region at ``level`` in the plane of ``coords``."""
     if curve is None:
         return
-    plane = _PLANES.get(tuple(sorted(coords)))  # type: ignore[arg-type]
-    if plane is None or tuple(coords) != tuple(sorted(coords)):
+    plane = _PLANES.get((coords[0], coords[1]))
+    if plane is None:
         raise ValueError(f"coords: regions are drawn in the planes xy, xz, yz, got {coords}")
-    for which, color, shade in (("upper", UPPER, 0.12), ("lower", LOWER, 0.32)):
+    for which, color, shade in _SHADES:
         r = curve.region(level, membership=which, plane=plane)
         region(ax, r, color=color, alpha=shade, label=f"{which} region at alpha = {level:g}")
 
@@ -274,10 +277,10 @@ def stages(result: Result, *, coords: Coords = (0, 1),
     ``curve``, stages 1 and 2 shade its regions."""
     fig = Figure(figsize=figsize, layout="constrained")
     axes = fig.subplots(2, 2)
-    for ax, draw in zip(axes.flat, (stage1, stage2)):
-        draw(ax, result, coords=coords, curve=curve)
-    for ax, draw in zip(axes.flat[2:], (stage3, stage4)):
-        draw(ax, result, coords=coords)
+    stage1(axes[0, 0], result, coords=coords, curve=curve)
+    stage2(axes[0, 1], result, coords=coords, curve=curve)
+    stage3(axes[1, 0], result, coords=coords)
+    stage4(axes[1, 1], result, coords=coords)
     for ax in axes.flat:
         ax.set_aspect("equal", adjustable="datalim")
     axes[1, 1].legend(loc="best", fontsize="small")
