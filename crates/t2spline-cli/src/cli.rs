@@ -198,6 +198,11 @@ pub struct FigureArgs {
         allow_hyphen_values = true
     )]
     pub view: t2spline_plot::View,
+    /// The station `x = X0` of the `section` figure (plane curves only):
+    /// the fuzzy value of y there. Default: x of the crisp curve at the
+    /// middle of its domain.
+    #[arg(long, value_name = "X0", allow_negative_numbers = true)]
+    pub station: Option<f64>,
 }
 
 /// Arguments of `t2spline plot`.
