@@ -8,9 +8,20 @@
 //! bytes of all values together, so that the sign, exponent and leading
 //! mantissa bytes of neighbouring samples, nearly equal on a smooth curve,
 //! sit side by side) and compressed with Snappy: 60 % of the plain size for
-//! the shipped example (see ARCHITECTURE.md); no dictionaries (useless for a
+//! the shipped example; no dictionaries (useless for a
 //! million distinct floats); page statistics on, so engines can skip pages
 //! by value.
+//!
+//! Measured on the shipped example at 10⁶ samples, with pyarrow rewriting the
+//! same table: plain 240 MB; Snappy alone 235 MB (sampled floats are noise in
+//! their low bits); byte-stream-split with Snappy 144 MB; with zstd at level 1
+//! or 3, 133 MB. Snappy is pure Rust and every Parquet reader has it, where
+//! zstd would save another 7 % for a C library in the build. Arrow arrays were
+//! left out because they would copy every column (or take ownership the
+//! writers do not have) and bring the `arrow-*` crates into the build. The
+//! other keys of the result (`alpha`, `regime`, `error`, `control_points`, the
+//! spline) go into the file's key-value metadata as JSON text, so one file
+//! carries the whole result.
 
 use std::io::Write;
 use std::sync::Arc;
