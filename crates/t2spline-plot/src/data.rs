@@ -10,7 +10,7 @@ use t2spline::sampling::{Params, Sampler};
 use t2spline::vector::euclidean_norm;
 use t2spline::{Alpha, Axis, FuzzyCurve, FuzzySurface, Nt2Number, TypeReduction};
 
-use crate::Error;
+use crate::error::Error;
 
 /// The fewest samples per curve in figures: a smooth line at print
 /// resolution for curves of a few spans.

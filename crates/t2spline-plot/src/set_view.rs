@@ -7,7 +7,7 @@ use t2spline::job::{Model, ModelVisitor};
 use t2spline::set::{MembershipGrid, Plane, Region, SectionLevel};
 use t2spline::{Alpha, FuzzyCurve, FuzzySurface, Membership};
 
-use crate::Error;
+use crate::error::Error;
 
 /// The outline tolerance of regions in figures, relative to the diagonal of
 /// the crisp control points' box (100 times the core's default): a page

@@ -33,8 +33,9 @@ pub use curve::reductions_figure;
 pub use number::number_figure;
 pub use style::reduction_label;
 
+use crate::error::Error;
 use crate::scene::Figure;
-use crate::{data, set_view, Error};
+use crate::{data, set_view};
 use curve::{CurveScene, Zoom};
 use surface::{SurfaceScene, View};
 

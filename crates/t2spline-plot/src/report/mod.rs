@@ -42,6 +42,7 @@ use serde_json::{json, Value};
 use t2spline::job::{Job, RunOutput, Samples};
 use t2spline::{Alpha, Axis, Layer, TypeReduction};
 
+use crate::error::Error;
 use crate::figures::curve::{
     distance_figure, membership_figure, reductions_figure, section_figure, stage1_figure,
     stage2_figure, stage3_figure, stage4_figure, sweep_figure, CurveScene, Zoom,
@@ -51,7 +52,7 @@ use crate::figures::{number_figure, FigureOptions};
 use crate::layout;
 use crate::scene::Figure;
 use crate::svg;
-use crate::{data, set_view, Error};
+use crate::{data, set_view};
 use frames::{frames, Frames, Strings};
 use page::{Page, Section};
 use tables::{number_text, rounded};
