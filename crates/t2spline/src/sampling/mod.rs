@@ -92,6 +92,7 @@
 mod benchmark;
 mod curves;
 mod direct;
+mod distance_sweep;
 mod grid;
 mod kernel;
 mod params;
@@ -102,6 +103,7 @@ mod samples;
 mod surfaces;
 
 pub use benchmark::{benchmark_curve, benchmark_levels, benchmark_surface};
+pub use distance_sweep::DistanceSweep;
 pub use grid::GridSampler;
 pub use params::Params;
 pub use sampler::{Bound, Sampler};
