@@ -103,4 +103,5 @@ pub use pretty::{to_json_pretty, write_json_pretty};
 pub use printable::printable;
 pub use readings::{data_json, is_readings, parse_readings, read_readings, ReadingsFile, MAX_ROWS};
 pub use summary::{write_summary_csv, JobSummary, SUMMARY_COLUMNS};
+pub use table::{sample_column_names, sample_columns, SampleColumn};
 pub use temporary::remove_temporary_files;

@@ -36,8 +36,22 @@ pub(crate) fn warn_unused_alpha(
     source: &str,
     given: Alpha,
 ) -> PyResult<()> {
+    warn_unused_alpha_of(py, "", reduction, source, given)
+}
+
+/// [`warn_unused_alpha`] for one job of many, named by `job` (`jobs[3]: `).
+///
+/// # Errors
+/// As [`warn_unused_alpha`].
+pub(crate) fn warn_unused_alpha_of(
+    py: Python<'_>,
+    job: &str,
+    reduction: TypeReduction,
+    source: &str,
+    given: Alpha,
+) -> PyResult<()> {
     let message = format!(
-        "type reduction {reduction} does not use alpha; {source}{} is ignored (stage 2 is cut at alpha = 0, the whole footprint)",
+        "{job}type reduction {reduction} does not use alpha; {source}{} is ignored (stage 2 is cut at alpha = 0, the whole footprint)",
         given.get()
     );
     let category = py.get_type::<pyo3::exceptions::PyUserWarning>();
