@@ -175,7 +175,7 @@ pub(crate) fn run_many<'py>(
         let outcome = match ran {
             Some(Ok((settings, tree))) => {
                 let prefix = format!("jobs[{k}]: ");
-                run::warn_unused_alpha(py, &settings, overrides.alpha.is_some(), &prefix)?;
+                run::warn_alpha(py, &settings, overrides.alpha.is_some(), &prefix)?;
                 tree.into_py(py)
             }
             Some(Err(failure)) => Err(failure.into_err(py)),
@@ -286,7 +286,8 @@ impl Floats {
 /// The rows of `t2spline.run_table` for one Arrow string array (not part of
 /// the API): the job texts are `data[offsets[k]:offsets[k + 1]]` (the
 /// array's buffers, read without a copy), row `k` null where `valid[k]` is
-/// false, named ``<row first + k>`` in messages. Returns a dict of columns:
+/// false, named ``<row first + k>`` in messages; the notes on a job's alpha
+/// are its row's message (no warning per row). Returns a dict of columns:
 /// lists of `str` or `None` (`status`, `message`, `type_reduction`,
 /// `regime`), and `(values, valid)` numpy pairs (`alpha`, `h`,
 /// `error_max`, `error_max_at`, `error_max_at_v`, `error_rms`); with
@@ -340,11 +341,11 @@ pub(crate) fn _run_rows<'py>(
     let mut reduction = Vec::with_capacity(n);
     let mut regime = Vec::with_capacity(n);
     let mut floats: [Floats; 6] = Default::default();
-    for (k, row) in rows.iter().enumerate() {
-        if let Some(settings) = &row.settings {
-            let prefix = format!("<row {}>: ", first + k);
-            run::warn_unused_alpha(py, settings, overrides.alpha.is_some(), &prefix)?;
-        }
+    for row in &rows {
+        let notes = row
+            .settings
+            .map(|s| run::alpha_notes(&s, overrides.alpha.is_some()))
+            .unwrap_or_default();
         let ok = row.result.as_ref().ok();
         let (max_at, max_at_v) = match ok.map(|r| r.error.max_at) {
             Some(Parameter::T(t)) => (Some(t), None),
@@ -366,7 +367,7 @@ pub(crate) fn _run_rows<'py>(
         match &row.result {
             Ok(_) => {
                 status.push("ok");
-                message.push(None);
+                message.push((!notes.is_empty()).then(|| notes.join("; ")));
             }
             Err((s, m)) => {
                 status.push(*s);

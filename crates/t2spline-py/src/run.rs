@@ -275,7 +275,7 @@ pub(crate) fn run<'py>(
     let (text, source) = job_text(job)?;
     let prepared =
         without_gil(py, || prepare(&text, &source, &overrides))?.map_err(|e| run_error(py, e))?;
-    warn_unused_alpha(py, prepared.settings(), overrides.alpha.is_some(), "")?;
+    warn_alpha(py, prepared.settings(), overrides.alpha.is_some(), "")?;
     match without_gil(py, move || execute(&prepared))? {
         Ok(tree) => tree.into_py(py),
         Err(failure) => Err(failure.into_err(py)),
@@ -307,27 +307,38 @@ pub(crate) fn execute(prepared: &Prepared) -> Result<Value, Failure> {
     to_value(&output).map_err(|e| Failure::Internal(e.to_string()))
 }
 
-/// A `UserWarning` for an alpha that the type reduction does not use
-/// (`alpha=` if `from_keyword`, else the job's), after `prefix` (which job
-/// of many); nothing if every alpha given is used.
+/// The notes on a run's alpha: that the type reduction does not use the
+/// alpha given (`alpha=` if `from_keyword`, else the job's), that alpha lies
+/// a few ulps above a number's lower height (the other side of the paper's
+/// jump); none if alpha is as meant.
+pub(crate) fn alpha_notes(settings: &Settings, from_keyword: bool) -> Vec<String> {
+    let near = settings.near_height().map(|near| near.to_string());
+    let unused = settings.unused_alpha().map(|a| {
+        let source = if from_keyword {
+            "alpha="
+        } else {
+            "the job's alpha "
+        };
+        reduction::unused_alpha(settings.type_reduction(), source, a)
+    });
+    near.into_iter().chain(unused).collect()
+}
+
+/// A `UserWarning` for each of [`alpha_notes`], after `prefix` (which job
+/// of many).
 ///
 /// # Errors
 /// The warning itself, under ``-W error``.
-pub(crate) fn warn_unused_alpha(
+pub(crate) fn warn_alpha(
     py: Python<'_>,
     settings: &Settings,
     from_keyword: bool,
     prefix: &str,
 ) -> PyResult<()> {
-    let Some(a) = settings.unused_alpha() else {
-        return Ok(());
-    };
-    let source = if from_keyword {
-        "alpha="
-    } else {
-        "the job's alpha "
-    };
-    reduction::warn_unused_alpha_of(py, prefix, settings.type_reduction(), source, a)
+    for note in alpha_notes(settings, from_keyword) {
+        reduction::warn(py, &format!("{prefix}{note}"))?;
+    }
+    Ok(())
 }
 
 /// Why a run gave no result.

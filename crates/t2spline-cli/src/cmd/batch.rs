@@ -17,7 +17,7 @@ use t2spline_io::{
     CSV_FILES, DERIVATIVES_CSV,
 };
 
-use super::prepare::{about_run, prepare, unused_alpha, OptionError};
+use super::prepare::{about_run, alpha_notes, prepare, OptionError};
 use super::results::{overrides, Destinations, ALPHA_IGNORED};
 use crate::clash::Claims;
 use crate::cli::RunArgs;
@@ -49,8 +49,9 @@ struct Batch {
 struct Outcome {
     summary: JobSummary,
     error: Option<anyhow::Error>,
-    /// A note for standard error (an alpha its type reduction does not use).
-    note: Option<String>,
+    /// Notes for standard error (an alpha its type reduction does not use,
+    /// an alpha just above a lower height).
+    notes: Vec<String>,
     /// The files written, to be flushed to disk at the end.
     written: Vec<PathBuf>,
 }
@@ -210,9 +211,9 @@ impl Batch {
             error_rms: None,
             message: None,
         };
-        let (mut written, mut note) = (Vec::new(), None);
-        let error = self.compute(job).and_then(|(result, unused)| {
-            note = unused;
+        let (mut written, mut notes) = (Vec::new(), Vec::new());
+        let error = self.compute(job).and_then(|(result, said)| {
+            notes = said;
             summary.type_reduction = Some(result.type_reduction.name().to_owned());
             // Alpha and the regime are the paper's reduction's (SPEC §10).
             summary.regime = result.regime.map(|r| r.as_str().to_owned());
@@ -232,22 +233,21 @@ impl Batch {
         Outcome {
             summary,
             error,
-            note,
+            notes,
             written,
         }
     }
 
     /// The job's result (each job with its own type reduction unless
-    /// `--type-reduction` overrides it), and the note on an alpha it does
-    /// not use.
-    fn compute(&self, job: &Entry) -> anyhow::Result<(RunOutput, Option<String>)> {
+    /// `--type-reduction` overrides it), and the notes on its alpha.
+    fn compute(&self, job: &Entry) -> anyhow::Result<(RunOutput, Vec<String>)> {
         let prepared = prepare(&job.path, &self.overrides)?;
-        let note = unused_alpha(
+        let notes = alpha_notes(
             prepared.settings(),
             self.overrides.alpha.is_some(),
             ALPHA_IGNORED,
         );
-        Ok((prepared.run().map_err(about_run)?, note))
+        Ok((prepared.run().map_err(about_run)?, notes))
     }
 }
 
@@ -296,7 +296,7 @@ pub fn run(args: RunArgs) -> anyhow::Result<()> {
     let mut worst = Exit::Ok;
     let mut stderr = std::io::stderr().lock();
     for (job, outcome) in batch.jobs.iter().zip(&outcomes) {
-        if let Some(note) = &outcome.note {
+        for note in &outcome.notes {
             let _ = writeln!(stderr, "t2spline run: {}: {note}", shown(&job.path));
         }
         if let Some(e) = &outcome.error {

@@ -33,6 +33,7 @@
 #![cfg_attr(not(test), deny(clippy::indexing_slicing))]
 
 mod geometry;
+mod near_height;
 mod output;
 mod points;
 mod run;
@@ -42,6 +43,7 @@ mod settings;
 
 pub use crate::error::Setting;
 pub use geometry::{Geometry, NamedCurve};
+pub use near_height::{NearHeight, NEAR_HEIGHT_ULPS};
 pub use output::{
     ControlPoints, CrispDefuzzified, Distance, LeftRight, Parameter, Parameters, Regime, RunOutput,
     Sampled, SixLayers, Spline,
