@@ -175,10 +175,10 @@ fn optional<T: Clone>(values: impl Iterator<Item = Option<T>>) -> (Vec<T>, Vec<i
 
 /// Writes the summary of a run of many jobs as a Parquet table with the
 /// columns of [`SUMMARY_COLUMNS`](crate::SUMMARY_COLUMNS): `name`, `file`
-/// and `status` required text, `type_reduction`, `regime` and `message`
-/// optional text,
-/// `alpha`, `error_max`, `error_rms` optional `DOUBLE` (null for a job that
-/// did not run).
+/// and `status` required text, `type_reduction`, `regime`, `description`
+/// and `message` optional text, `alpha`, `h`, `error_max`, `error_max_at`,
+/// `error_max_at_v`, `error_rms` optional `DOUBLE` (null for a job that did
+/// not run or has no such value).
 ///
 /// # Errors
 /// The errors of `writer`.
@@ -195,7 +195,8 @@ fn write_summary<W: Write + Send>(
 ) -> Result<(), ParquetError> {
     const OPTIONAL: Repetition = Repetition::OPTIONAL;
     const REQUIRED: Repetition = Repetition::REQUIRED;
-    let [name, file, status, reduction, regime, alpha, max, rms, message] = crate::SUMMARY_COLUMNS;
+    let [name, file, status, reduction, regime, alpha, h, max, max_at, max_at_v, rms, description, message] =
+        crate::SUMMARY_COLUMNS;
     let fields = vec![
         text(name, REQUIRED)?,
         text(file, REQUIRED)?,
@@ -203,8 +204,12 @@ fn write_summary<W: Write + Send>(
         text(reduction, OPTIONAL)?,
         text(regime, OPTIONAL)?,
         optional_double(alpha)?,
+        optional_double(h)?,
         optional_double(max)?,
+        optional_double(max_at)?,
+        optional_double(max_at_v)?,
         optional_double(rms)?,
+        text(description, OPTIONAL)?,
         text(message, OPTIONAL)?,
     ];
     let mut out =
@@ -231,7 +236,10 @@ fn write_summary<W: Write + Send>(
     }
     for (values, levels) in [
         numbers(&|j| j.alpha),
+        numbers(&|j| j.h),
         numbers(&|j| j.error_max),
+        numbers(&|j| j.error_max_at),
+        numbers(&|j| j.error_max_at_v),
         numbers(&|j| j.error_rms),
     ] {
         let mut c = next(&mut group)?;
@@ -239,11 +247,15 @@ fn write_summary<W: Write + Send>(
             .write_batch(&values, Some(&levels), None)?;
         c.close()?;
     }
-    let (values, levels) = strings(&|j| j.message.as_deref());
-    let mut c = next(&mut group)?;
-    c.typed::<ByteArrayType>()
-        .write_batch(&values, Some(&levels), None)?;
-    c.close()?;
+    for (values, levels) in [
+        strings(&|j| j.description.as_deref()),
+        strings(&|j| j.message.as_deref()),
+    ] {
+        let mut c = next(&mut group)?;
+        c.typed::<ByteArrayType>()
+            .write_batch(&values, Some(&levels), None)?;
+        c.close()?;
+    }
     group.close()?;
     out.close()?;
     Ok(())

@@ -14,7 +14,7 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use rayon::prelude::*;
 use t2spline::job::{Overrides, Parameter, RunOutput, Settings};
-use t2spline_io::{Prepared, RunError};
+use t2spline_io::RunError;
 
 use crate::errors::{internal_error, without_gil};
 use crate::keyword;
@@ -209,18 +209,6 @@ struct Row {
     result: Result<RunOutput, (&'static str, String)>,
 }
 
-/// The smallest lower height of a prepared job's numbers.
-fn least_height(prepared: &Prepared) -> Option<f64> {
-    prepared
-        .job()
-        .model
-        .numbers()
-        .iter()
-        .flatten()
-        .map(|x| x.height().get())
-        .reduce(f64::min)
-}
-
 /// A failure's status (`invalid`, `internal`) and its message: the error's
 /// lines joined by `; `, as `t2spline run`'s summary writes them.
 fn status(e: &RunError) -> (&'static str, String) {
@@ -256,7 +244,7 @@ fn run_row(text: Option<&[u8]>, source: &str, overrides: &Overrides) -> Row {
         }
         Ok(prepared) => Row {
             settings: Some(*prepared.settings()),
-            h: least_height(&prepared),
+            h: Some(prepared.job().model.least_height()),
             result: prepared.run().map_err(|e| status(&e)),
         },
     }

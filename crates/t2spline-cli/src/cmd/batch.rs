@@ -11,7 +11,7 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use rayon::prelude::*;
-use t2spline::job::{Overrides, RunOutput};
+use t2spline::job::{Overrides, Parameter, RunOutput};
 use t2spline_io::{
     printable, sync_file_systems, write_summary_csv, write_summary_parquet, JobSummary, Staged,
     CSV_FILES, DERIVATIVES_CSV,
@@ -102,8 +102,55 @@ fn folder_jobs(dir: &Path) -> Result<Vec<PathBuf>, t2spline_io::Error> {
             jobs.push(path);
         }
     }
-    jobs.sort();
+    jobs.sort_by(|a, b| natural_order(&a.to_string_lossy(), &b.to_string_lossy()));
     Ok(jobs)
+}
+
+/// Names in natural order: runs of digits compared as numbers (`a2` before
+/// `a10`, `a02` beside `a2`), the rest as text; equal so far, by their text.
+fn natural_order(a: &str, b: &str) -> std::cmp::Ordering {
+    /// The runs of digits and of other characters.
+    fn runs(s: &str) -> impl Iterator<Item = &str> {
+        let mut rest = s;
+        std::iter::from_fn(move || {
+            let first = rest.chars().next()?;
+            let digit = first.is_ascii_digit();
+            let end = rest
+                .find(|c: char| c.is_ascii_digit() != digit)
+                .unwrap_or(rest.len());
+            let (run, tail) = rest.split_at(end);
+            rest = tail;
+            Some(run)
+        })
+    }
+    /// A run's key: whether it is digits, and its number's length and
+    /// digits (leading zeros dropped), or its text.
+    fn key(run: &str) -> (bool, usize, &str) {
+        if run.starts_with(|c: char| c.is_ascii_digit()) {
+            let number = run.trim_start_matches('0');
+            (true, number.len(), number)
+        } else {
+            (false, 0, run)
+        }
+    }
+    let mut x = runs(a);
+    let mut y = runs(b);
+    loop {
+        match (x.next(), y.next()) {
+            (None, None) => return a.cmp(b),
+            (None, Some(_)) => return std::cmp::Ordering::Less,
+            (Some(_), None) => return std::cmp::Ordering::Greater,
+            (Some(p), Some(q)) => {
+                let order = match (key(p), key(q)) {
+                    ((true, lp, np), (true, lq, nq)) => lp.cmp(&lq).then(np.cmp(nq)),
+                    ((_, _, tp), (_, _, tq)) => tp.cmp(tq),
+                };
+                if order.is_ne() {
+                    return order;
+                }
+            }
+        }
+    }
 }
 
 impl Batch {
@@ -207,19 +254,29 @@ impl Batch {
             type_reduction: None,
             regime: None,
             alpha: None,
+            h: None,
             error_max: None,
+            error_max_at: None,
+            error_max_at_v: None,
             error_rms: None,
+            description: None,
             message: None,
         };
         let (mut written, mut notes) = (Vec::new(), Vec::new());
-        let error = self.compute(job).and_then(|(result, said)| {
+        let error = self.compute(job).and_then(|(result, h, said)| {
             notes = said;
+            summary.h = Some(h);
             summary.type_reduction = Some(result.type_reduction.name().to_owned());
             // Alpha and the regime are the paper's reduction's (SPEC §10).
             summary.regime = result.regime.map(|r| r.as_str().to_owned());
             summary.alpha = result.alpha_used.then_some(result.alpha);
             summary.error_max = Some(result.error.max);
+            (summary.error_max_at, summary.error_max_at_v) = match result.error.max_at {
+                Parameter::T(t) => (Some(t), None),
+                Parameter::Uv([u, v]) => (Some(u), Some(v)),
+            };
             summary.error_rms = Some(result.error.rms);
+            summary.description.clone_from(&result.description);
             let out = self.destinations(job);
             out.write(Staged::deferring_sync(), &result)?;
             written = files(&out, &result);
@@ -239,15 +296,17 @@ impl Batch {
     }
 
     /// The job's result (each job with its own type reduction unless
-    /// `--type-reduction` overrides it), and the notes on its alpha.
-    fn compute(&self, job: &Entry) -> anyhow::Result<(RunOutput, Vec<String>)> {
+    /// `--type-reduction` overrides it), the smallest lower height of its
+    /// numbers, and the notes on its alpha.
+    fn compute(&self, job: &Entry) -> anyhow::Result<(RunOutput, f64, Vec<String>)> {
         let prepared = prepare(&job.path, &self.overrides)?;
         let notes = alpha_notes(
             prepared.settings(),
             self.overrides.alpha.is_some(),
             ALPHA_IGNORED,
         );
-        Ok((prepared.run().map_err(about_run)?, notes))
+        let h = prepared.job().model.least_height();
+        Ok((prepared.run().map_err(about_run)?, h, notes))
     }
 }
 
@@ -334,4 +393,27 @@ pub fn run(args: RunArgs) -> anyhow::Result<()> {
         .into());
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::natural_order;
+
+    #[test]
+    fn numbers_in_names_go_in_their_order() {
+        let mut names = vec![
+            "a10.json", "a2.json", "a1.json", "b.json", "a02.json", "a.json", "a1b.json",
+            "a1a.json",
+        ];
+        names.sort_by(|a, b| natural_order(a, b));
+        assert_eq!(
+            names,
+            [
+                "a.json", "a1.json", "a1a.json", "a1b.json", "a02.json", "a2.json", "a10.json",
+                "b.json"
+            ]
+        );
+        // Long runs of digits beyond any integer type.
+        assert!(natural_order("x99999999999999999999999", "x100000000000000000000000").is_lt());
+    }
 }

@@ -140,6 +140,17 @@ impl Model {
         self.visit(Numbers)
     }
 
+    /// The smallest lower height `h` of the model's numbers: the lowest
+    /// level where the paper's reduction jumps (docs/method.md §3).
+    #[must_use]
+    pub fn least_height(&self) -> f64 {
+        self.numbers()
+            .iter()
+            .flatten()
+            .map(|x| x.height().get())
+            .fold(1.0, f64::min)
+    }
+
     /// Whether the model is a surface.
     #[must_use]
     pub fn is_surface(&self) -> bool {

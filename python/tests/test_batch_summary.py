@@ -1,0 +1,88 @@
+"""A run of many jobs as docs/output.md shows it: its transcript run as
+printed, the summary's columns (with `h`, where the distance is largest and
+the description) read back by pyarrow and equal to each job's result, and
+the jobs of a folder in natural order (`a2` before `a10`)."""
+
+from __future__ import annotations
+
+import json
+import re
+import shutil
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from conftest import EXAMPLE, ROOT
+
+pq = pytest.importorskip("pyarrow.parquet")
+
+
+def lines_folder(tmp_path: Path) -> Path:
+    """`lines/` of docs/output.md: the example as a.json, a broken b.json,
+    the 3-D test job as c.json."""
+    lines = tmp_path / "lines"
+    lines.mkdir()
+    shutil.copy(EXAMPLE, lines / "a.json")
+    (lines / "b.json").write_text('{\n  "order": 2,\n  "alhpa": 0.5\n}\n')
+    shutil.copy(ROOT / "fixtures" / "spiral-3d.json", lines / "c.json")
+    return lines
+
+
+def test_the_transcript_of_a_run_of_many_jobs(cli: Path, tmp_path: Path) -> None:
+    text = (ROOT / "docs" / "output.md").read_text()
+    block = re.search(r"```text\n(\$ t2spline run lines/\*\.json -o results\n.*?)```", text, re.S)
+    assert block, "docs/output.md has no transcript of a run of many jobs"
+    shown = block.group(1)
+    lines_folder(tmp_path)
+    done = subprocess.run(
+        [str(cli), "run", "lines/a.json", "lines/b.json", "lines/c.json", "-o", "results"],
+        cwd=tmp_path, capture_output=True, text=True,
+    )
+    summary = (tmp_path / "results" / "summary.csv").read_text()
+    got = (
+        "$ t2spline run lines/*.json -o results\n" + done.stderr
+        + f"$ echo $?\n{done.returncode}\n$ cat results/summary.csv\n" + summary
+    )
+    assert got == shown
+
+
+def test_the_summary_has_each_job_s_height_and_largest_distance(cli: Path, tmp_path: Path) -> None:
+    lines_folder(tmp_path)
+    surface = json.loads((ROOT / "examples" / "fuzzy-terrain.json").read_text())
+    surface["alpha"] = 0.3
+    (tmp_path / "lines" / "d.json").write_text(json.dumps(surface))
+    subprocess.run(
+        [str(cli), "run", "--jobs", "lines", "-o", "results", "--parquet", "parquet"],
+        cwd=tmp_path, capture_output=True,
+    )
+    rows = pq.read_table(tmp_path / "parquet" / "summary.parquet").to_pylist()
+    assert [r["name"] for r in rows] == ["a", "b", "c", "d"]
+    for row in rows:
+        if row["status"] != "ok":
+            assert row["h"] is None and row["error_max_at"] is None and row["description"] is None
+            continue
+        result = json.loads((tmp_path / "results" / f"{row['name']}.json").read_text())
+        job = json.loads((tmp_path / "lines" / f"{row['name']}.json").read_text())
+        assert row["description"] == result.get("description")
+        at = result["error"]["max_at"]
+        want_at = (at[0], at[1]) if isinstance(at, list) else (at, None)
+        assert (row["error_max_at"], row["error_max_at_v"]) == want_at
+        heights = [
+            x.get("lower_height", job.get("lower_height"))
+            for p in (job["points"] if row["name"] != "d" else [q for r in job["points"] for q in r])
+            for x in p.values()
+        ]
+        assert row["h"] == min(h for h in heights if h is not None)
+
+
+def test_the_jobs_of_a_folder_go_in_natural_order(cli: Path, tmp_path: Path) -> None:
+    folder = tmp_path / "sweep"
+    folder.mkdir()
+    names = [f"a{k}" for k in (0, 1, 2, 10, 11, 20, 100)]
+    job = json.loads(EXAMPLE.read_text())
+    for k, name in enumerate(reversed(names)):
+        (folder / f"{name}.json").write_text(json.dumps(dict(job, alpha=k / 10, samples=3)))
+    subprocess.run([str(cli), "run", "--jobs", str(folder), "-o", str(tmp_path / "out")], check=True)
+    summary = (tmp_path / "out" / "summary.csv").read_text().splitlines()[1:]
+    assert [line.split(",")[0] for line in summary] == names
