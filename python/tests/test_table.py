@@ -151,6 +151,9 @@ def test_the_table_may_come_by_the_capsule_interface_in_chunks(jobs: List[Dict[s
     assert chunked.column("job").num_chunks == 2
     got = t2spline.run_table(chunked)
     assert got.drop_columns("job").equals(whole.drop_columns("job"))
+    _, long_whole = t2spline.run_table(pa.table({"job": texts}), samples=True)
+    _, long_chunked = t2spline.run_table(chunked, samples=True)
+    assert long_chunked.equals(long_whole)
     for kind in (pa.large_string(), pa.string_view()):
         typed = pa.table({"job": pa.array(texts, kind)})
         assert t2spline.run_table(typed).equals(whole)
