@@ -2,7 +2,7 @@
 //!
 //! This crate reads and writes; the core crate `t2spline` computes.
 //!
-//! - [`parse_job`] / [`read_job`]: the job file of SPEC §8 (a curve) or §9
+//! - [`parse_job`] / [`read_job`]: the job file of docs/jobs.md (a curve) or docs/method.md §8
 //!   (a surface, its points as rows of a net), validated with every problem
 //!   reported at once, each naming its place (`points[2].y`,
 //!   `points[2][1].y`, `weights[1]`, `knots.v`) with its line and column, and

@@ -59,7 +59,7 @@ pub fn compute(job: &Job, alpha: Alpha) -> Result<RunOutput, Error> {
 }
 
 /// The result of the job at `alpha` with the type reduction `method`
-/// (SPEC §10), sampled for figures, as [`compute`].
+/// (docs/method.md §9), sampled for figures, as [`compute`].
 ///
 /// # Errors
 /// As [`compute`].

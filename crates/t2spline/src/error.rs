@@ -183,7 +183,7 @@ pub enum Error {
         value: f64,
     },
 
-    /// The seven values of a fuzzy number are out of order (SPEC §1).
+    /// The seven values of a fuzzy number are out of order (docs/method.md §1).
     ///
     /// ```
     /// # use t2spline::{Error, Nt2Number};
@@ -195,7 +195,7 @@ pub enum Error {
     Order {
         /// Where the number is.
         place: Place,
-        /// The broken inequality, in SPEC words.
+        /// The broken inequality, in the words of docs/method.md §1.
         rule: &'static str,
         /// The value on the left of the inequality.
         left: f64,
@@ -222,7 +222,7 @@ pub enum Error {
         range: &'static str,
     },
 
-    /// A curve of order `k` needs at least `k` control points (SPEC §6).
+    /// A curve of order `k` needs at least `k` control points (docs/method.md §6).
     ///
     /// ```
     /// # use t2spline::{Error, NurbsCurve};
@@ -268,7 +268,7 @@ pub enum Error {
         found: usize,
     },
 
-    /// A weight is not a finite number greater than 0 (SPEC §6).
+    /// A weight is not a finite number greater than 0 (docs/method.md §6).
     ///
     /// ```
     /// # use t2spline::{Error, NurbsCurve};
@@ -283,7 +283,7 @@ pub enum Error {
         value: f64,
     },
 
-    /// The knot vector must have `n + k` values (SPEC §6).
+    /// The knot vector must have `n + k` values (docs/method.md §6).
     ///
     /// ```
     /// # use t2spline::{Error, KnotVector};
@@ -329,7 +329,7 @@ pub enum Error {
         value: f64,
     },
 
-    /// Knots must not decrease (SPEC §6).
+    /// Knots must not decrease (docs/method.md §6).
     ///
     /// ```
     /// # use t2spline::{Error, KnotVector};
@@ -346,7 +346,7 @@ pub enum Error {
         value: f64,
     },
 
-    /// A knot repeats more than `k` times (SPEC §6).
+    /// A knot repeats more than `k` times (docs/method.md §6).
     ///
     /// ```
     /// # use t2spline::{Error, KnotVector};
@@ -365,7 +365,7 @@ pub enum Error {
         order: usize,
     },
 
-    /// The parameter domain `[U[p], U[n]]` is empty (SPEC §6).
+    /// The parameter domain `[U[p], U[n]]` is empty (docs/method.md §6).
     ///
     /// ```
     /// # use t2spline::{Error, KnotVector};
@@ -403,7 +403,7 @@ pub enum Error {
     },
 
     /// A knot cannot be inserted that many times: its multiplicity would pass
-    /// the order `k` (SPEC §6).
+    /// the order `k` (docs/method.md §6).
     ///
     /// ```
     /// # use t2spline::{Error, NurbsCurve};
@@ -506,7 +506,7 @@ pub enum Error {
 
     /// An operation that makes new fuzzy control points needs one lower height
     /// per coordinate: a combination of numbers with different heights has no
-    /// height that keeps the alpha-cut curves unchanged (SPEC §6).
+    /// height that keeps the alpha-cut curves unchanged (docs/method.md §6).
     ///
     /// ```
     /// # use t2spline::{Error, FuzzyCurve, Nt2Number, Nt2Point};
@@ -655,7 +655,7 @@ pub enum Error {
     },
 
     /// Fitting each layer on its own gave control points that break the order
-    /// of SPEC §1; the valid fit ([`FuzzyFitMode::Valid`](crate::fit::FuzzyFitMode::Valid)) avoids this.
+    /// of docs/method.md §1; the valid fit ([`FuzzyFitMode::Valid`](crate::fit::FuzzyFitMode::Valid)) avoids this.
     ///
     /// ```
     /// # use t2spline::{Error, Nt2Number, Nt2Point};
@@ -675,7 +675,7 @@ pub enum Error {
     /// assert!(matches!(fit.to_curve(), Err(Error::UnorderedFit { .. })));
     /// # Ok::<(), Error>(())
     /// ```
-    #[error("fitting every layer on its own breaks the order of SPEC §1 at {count} place(s); the first: {first}")]
+    #[error("fitting every layer on its own breaks the order of the seven values at {count} place(s); the first: {first}")]
     UnorderedFit {
         /// How many inequalities are broken.
         count: usize,
@@ -820,7 +820,7 @@ pub enum Error {
         /// The value computed.
         value: f64,
     },
-    /// A rule of one parameter direction of a surface is broken (SPEC §9):
+    /// A rule of one parameter direction of a surface is broken (docs/method.md §8):
     /// `inner` is the error the same rule gives for a curve, `direction` says
     /// whether it concerns `u` (rows of the net, `knots.u`) or `v` (columns,
     /// `knots.v`). The message names the place in the surface's terms.

@@ -80,7 +80,7 @@ impl Walker {
     }
 
     /// A number of samples at `path`: a whole number from 2 to the limit
-    /// (SPEC §8).
+    /// (docs/jobs.md).
     pub(super) fn samples_in(&mut self, v: &Value, path: &str) -> Option<usize> {
         let n = self.whole(v, path)?;
         check_samples(n, &written(v))
@@ -88,7 +88,7 @@ impl Walker {
             .ok()
     }
 
-    /// `type_reduction`: one of the [`TypeReduction::name`]s (SPEC §10),
+    /// `type_reduction`: one of the [`TypeReduction::name`]s (docs/method.md §9),
     /// the paper's when the key is missing. Curve and surface jobs alike.
     pub(super) fn type_reduction(&mut self, o: &Map<String, Value>) -> Option<TypeReduction> {
         let Some(v) = o.get("type_reduction") else {

@@ -274,7 +274,7 @@ impl Walker {
             }
             self.numbers(v, "knots")
         });
-        // Curve-level rules (SPEC §6), checked against the number of entries in
+        // Curve-level rules (docs/method.md §6), checked against the number of entries in
         // `points` even when some of them are invalid.
         let n = header.count;
         let weights = match (weights, o.contains_key("weights")) {
@@ -371,7 +371,7 @@ impl Walker {
         })
     }
 
-    /// The rules that tie points, weights and knots together (SPEC §6).
+    /// The rules that tie points, weights and knots together (docs/method.md §6).
     fn curve_rules(
         &mut self,
         degree: usize,

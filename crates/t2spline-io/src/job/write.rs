@@ -1,4 +1,4 @@
-//! Jobs written back as job files (SPEC §8).
+//! Jobs written back as job files (docs/jobs.md).
 
 use serde_json::{json, Map, Value};
 use t2spline::job::{Job, Model, ModelVisitor, Samples};
@@ -40,8 +40,8 @@ pub fn job_json(job: &Job) -> Value {
     Value::Object(out)
 }
 
-/// The model's keys of a job file, in the order of SPEC §8: `degree`,
-/// `weights`, `knots`, `points` (for a surface, SPEC §9: `degree` a pair,
+/// The model's keys of a job file, in the order of docs/jobs.md: `degree`,
+/// `weights`, `knots`, `points` (for a surface, docs/method.md §8: `degree` a pair,
 /// `weights` and `points` rows of the net, `knots` an object with `u` and
 /// `v`); a number's `lower_height` is left out when it equals `top_height`.
 pub(crate) fn model_json(model: &Model, top_height: Option<f64>) -> Map<String, Value> {

@@ -32,13 +32,13 @@ pub enum FuzzyFitMode {
     /// ```
     /// (non-negative least squares, Lawson–Hanson; ends fixed to the end
     /// data). Every increment is `≥ 0`, so the seven control values keep the
-    /// order of SPEC §1 exactly, in floating point too. When fitting each layer
+    /// order of docs/method.md §1 exactly, in floating point too. When fitting each layer
     /// on its own would already give ordered control points, the unconstrained
     /// solution is feasible and this mode returns it: the two modes agree.
     #[default]
     Valid,
     /// Each layer fitted on its own, like the crisp one. Exact for every layer
-    /// when interpolating, but the control points may break the order of SPEC
+    /// when interpolating, but the control points may break the order of docs/method.md
     /// §1 and then do not form a fuzzy curve ([`FuzzyFit::violations`]).
     Independent,
 }
@@ -74,14 +74,14 @@ impl FromStr for FuzzyFitMode {
     }
 }
 
-/// A fitted control point whose seven values break the order of SPEC §1.
+/// A fitted control point whose seven values break the order of docs/method.md §1.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct OrderViolation {
     /// Index of the control point (0-based).
     pub control_point: usize,
     /// The coordinate.
     pub axis: Axis,
-    /// The broken inequality, in SPEC words (`"primary.left <= lower.left"`).
+    /// The broken inequality, in the words of docs/method.md §1 (`"primary.left <= lower.left"`).
     pub rule: &'static str,
     /// The value on the left of the inequality.
     pub left: f64,
@@ -263,7 +263,7 @@ fn nested_spreads<const D: usize>(
     Ok(control)
 }
 
-/// Every place where the seven control values break the order of SPEC §1.
+/// Every place where the seven control values break the order of docs/method.md §1.
 fn violations<const D: usize>(control: &Layers<Vec<[f64; D]>>) -> Vec<OrderViolation> {
     let mut out = Vec::new();
     for i in 0..control[Layer::Crisp].len() {
@@ -407,14 +407,14 @@ impl<const D: usize> FuzzyFit<D> {
             )
     }
 
-    /// Where this fit's control points break the order of SPEC §1; always
+    /// Where this fit's control points break the order of docs/method.md §1; always
     /// empty for [`FuzzyFitMode::Valid`].
     #[must_use]
     pub fn violations(&self) -> Vec<OrderViolation> {
         violations(&self.control)
     }
 
-    /// Where fitting every layer on its own breaks the order of SPEC §1 for
+    /// Where fitting every layer on its own breaks the order of docs/method.md §1 for
     /// these data: computed in both modes, so that a valid fit can say whether
     /// it had to differ from the independent one.
     #[must_use]
@@ -425,7 +425,7 @@ impl<const D: usize> FuzzyFit<D> {
     /// The fitted fuzzy curve.
     ///
     /// # Errors
-    /// [`Error::UnorderedFit`] if the control points break the order of SPEC
+    /// [`Error::UnorderedFit`] if the control points break the order of docs/method.md
     /// §1 (possible only for [`FuzzyFitMode::Independent`]).
     pub fn to_curve(&self) -> Result<FuzzyCurve<D>, Error> {
         let found = self.violations();

@@ -1,4 +1,4 @@
-//! The alpha-cut of SPEC §2 (the paper's "fuzzification", Eqs. 4.1–4.2).
+//! The alpha-cut of docs/method.md §2 (the paper's "fuzzification", Eqs. 4.1–4.2).
 
 use crate::error::{Error, Place};
 use crate::fuzzy::{Interval, Layer, Nt2Number, Tfn};
@@ -44,7 +44,7 @@ impl Alpha {
     }
 }
 
-/// The alpha-cut of one [`Nt2Number`] (SPEC §2).
+/// The alpha-cut of one [`Nt2Number`] (docs/method.md §2).
 ///
 /// Upper and primary cuts always exist; the lower cut exists only for `α ≤ h`
 /// (paper Eq. 4.1) and is absent above the lower height (Eq. 4.2, where the paper
@@ -58,7 +58,7 @@ pub struct AlphaCut {
     lower: Option<Interval>,
 }
 
-/// `cut(e, s) = e + s·(crisp − e)` (SPEC §2), evaluated as `(1 − s)·e + s·crisp`
+/// `cut(e, s) = e + s·(crisp − e)` (docs/method.md §2), evaluated as `(1 − s)·e + s·crisp`
 /// so that `s = 0` gives `e` and `s = 1` gives `crisp` exactly, and kept between
 /// `e` and `crisp`, where the exact value lies, against rounding.
 fn cut(e: f64, crisp: f64, s: f64) -> f64 {
@@ -75,7 +75,7 @@ impl AlphaCut {
             cut(x.primary().right(), c, a),
         );
         // α ≤ h: the lower triangle of height h is cut at the fraction α/h of the
-        // way to its apex (SPEC §2.1). Mathematically the lower ends stay inside
+        // way to its apex (docs/method.md §2). Mathematically the lower ends stay inside
         // the primary cut (α/h ≥ α and lower ⊂ primary); `max`/`min` only guard
         // the last bit against rounding.
         let lower = (a <= h).then(|| {
@@ -131,7 +131,7 @@ impl AlphaCut {
         }
     }
 
-    /// Type reduction by the paper's "centroid min" rule (SPEC §3, Def. 4.3).
+    /// Type reduction by the paper's "centroid min" rule (docs/method.md §3, Def. 4.3).
     ///
     /// ```text
     /// α ≤ h:  left = (upper.left' + primary.left' + lower.left') / 3

@@ -2,7 +2,7 @@
 
 use std::fmt;
 
-/// One of the seven values of a normal type-2 fuzzy number, in SPEC §1 order.
+/// One of the seven values of a normal type-2 fuzzy number, in docs/method.md §1 order.
 ///
 /// A fuzzy curve has one *layer curve* per variant: the rational B-spline through
 /// that value of every control point.
@@ -31,7 +31,7 @@ pub enum Layer {
 }
 
 impl Layer {
-    /// All seven layers in SPEC §1 order.
+    /// All seven layers in docs/method.md §1 order.
     pub const ALL: [Layer; 7] = [
         Layer::UpperLeft,
         Layer::PrimaryLeft,
@@ -63,7 +63,7 @@ impl Layer {
     }
 
     /// Whether this is an end of the lower membership function, which has no
-    /// alpha-cut above its height (SPEC §2.2).
+    /// alpha-cut above its height (docs/method.md §2).
     #[must_use]
     pub fn is_lower(self) -> bool {
         matches!(self, Layer::LowerLeft | Layer::LowerRight)
@@ -97,19 +97,19 @@ impl<T> Layers<T> {
         Layers(self.0.map(f))
     }
 
-    /// The seven values in SPEC §1 order.
+    /// The seven values in docs/method.md §1 order.
     #[must_use]
     pub fn as_array(&self) -> &[T; 7] {
         &self.0
     }
 
-    /// The seven values in SPEC §1 order, by value.
+    /// The seven values in docs/method.md §1 order, by value.
     #[must_use]
     pub fn into_array(self) -> [T; 7] {
         self.0
     }
 
-    /// `(layer, value)` pairs in SPEC §1 order.
+    /// `(layer, value)` pairs in docs/method.md §1 order.
     pub fn iter(&self) -> impl Iterator<Item = (Layer, &T)> {
         Layer::ALL.into_iter().zip(self.0.iter())
     }

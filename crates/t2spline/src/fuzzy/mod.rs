@@ -1,9 +1,9 @@
-//! Normal triangular type-2 fuzzy numbers and points (SPEC §1–§5).
+//! Normal triangular type-2 fuzzy numbers and points (docs/method.md §1–§5).
 //!
 //! The flow through this module is the flow of one uncertain value through the
 //! method: an [`Nt2Number`] is cut at a level [`Alpha`] into an [`AlphaCut`]
-//! (SPEC §2), type-reduced to a type-1 triangle [`Tfn`] (SPEC §3) and defuzzified
-//! to one real number (SPEC §4). An [`Nt2Point`] does the same per coordinate.
+//! (docs/method.md §2), type-reduced to a type-1 triangle [`Tfn`] (docs/method.md §3) and defuzzified
+//! to one real number (docs/method.md §4). An [`Nt2Point`] does the same per coordinate.
 
 mod alpha_cut;
 mod layer;

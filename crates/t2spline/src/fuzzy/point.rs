@@ -1,4 +1,4 @@
-//! Normal type-2 fuzzy data points in 2-D and 3-D (SPEC §5).
+//! Normal type-2 fuzzy data points in 2-D and 3-D (docs/method.md §5).
 
 use std::fmt;
 
@@ -78,7 +78,7 @@ impl fmt::Display for Axis {
 }
 
 /// A normal type-2 fuzzy data (or control) point: one [`Nt2Number`] per
-/// coordinate (SPEC §5, the paper's NT2FDP). Every operation acts per coordinate.
+/// coordinate (docs/method.md §5, the paper's NT2FDP). Every operation acts per coordinate.
 ///
 /// # Examples
 /// ```
@@ -142,20 +142,20 @@ impl<const D: usize> Nt2Point<D> {
         self.coords.map(|x| x.layer(layer))
     }
 
-    /// The alpha-cut of every coordinate (SPEC §2).
+    /// The alpha-cut of every coordinate (docs/method.md §2).
     #[must_use]
     pub fn alpha_cut(&self, alpha: Alpha) -> [AlphaCut; D] {
         self.coords.map(|x| x.alpha_cut(alpha))
     }
 
-    /// Alpha-cut then type reduction of every coordinate (SPEC §2–§3).
+    /// Alpha-cut then type reduction of every coordinate (docs/method.md §2–§3).
     #[must_use]
     pub fn type_reduce(&self, alpha: Alpha) -> [Tfn; D] {
         self.alpha_cut(alpha).map(|c| c.type_reduce())
     }
 
     /// Alpha-cut, type reduction and defuzzification of every coordinate
-    /// (SPEC §2–§4): the paper's crisp type-2 solution point.
+    /// (docs/method.md §2–§4): the paper's crisp type-2 solution point.
     #[must_use]
     pub fn defuzzify(&self, alpha: Alpha) -> [f64; D] {
         self.type_reduce(alpha).map(|t| t.defuzzify())

@@ -11,7 +11,7 @@ use crate::sampling::CurveSamples;
 /// a point at a time is one index per coordinate.
 ///
 /// `T` is `f64`, or `Option<f64>` for the alpha-cut control points, whose lower
-/// ends are absent above a number's lower height (SPEC §2.2).
+/// ends are absent above a number's lower height (docs/method.md §2).
 ///
 /// # Examples
 /// ```

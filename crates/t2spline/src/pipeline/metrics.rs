@@ -1,4 +1,4 @@
-//! The distance between the crisp and the defuzzified curve (SPEC §7).
+//! The distance between the crisp and the defuzzified curve (docs/method.md §7).
 
 use crate::golden_section::brent_min;
 use crate::nurbs::pieces::{tame_pieces, Piece};
@@ -7,7 +7,7 @@ use crate::nurbs::NurbsCurve;
 use crate::quadrature::{integrate_pieces, Tolerance};
 
 /// How far the defuzzified curve `D(t)` lies from the crisp curve `C(t)` at equal
-/// parameters, over the whole domain `[a, b]` (SPEC §7):
+/// parameters, over the whole domain `[a, b]` (docs/method.md §7):
 ///
 /// ```text
 /// d(t) = ‖D(t) − C(t)‖₂

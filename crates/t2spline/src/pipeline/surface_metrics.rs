@@ -1,5 +1,5 @@
 //! The distance between the crisp and the defuzzified surface over the whole
-//! domain (SPEC §9).
+//! domain (docs/method.md §8).
 
 use crate::cubature::Cubature;
 use crate::nurbs::surface::patches::{patch_min, Patch, HULL_SLACK};
@@ -8,7 +8,7 @@ use crate::pipeline::euclidean_norm;
 
 /// How far the defuzzified surface `D(u, v)` lies from the crisp surface
 /// `C(u, v)` at equal parameters over the whole domain `[a, b] × [c, d]`
-/// (SPEC §9):
+/// (docs/method.md §8):
 ///
 /// ```text
 /// d(u, v) = ‖D(u, v) − C(u, v)‖₂

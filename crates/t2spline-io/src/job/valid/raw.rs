@@ -73,7 +73,7 @@ pub(super) enum Knots {
     Directions([Option<Vec<f64>>; 2]),
 }
 
-/// A fuzzy number's values as given (SPEC §1), its own height if any.
+/// A fuzzy number's values as given (docs/method.md §1), its own height if any.
 #[derive(Clone, Copy)]
 pub(super) struct RawNumber {
     pub crisp: f64,

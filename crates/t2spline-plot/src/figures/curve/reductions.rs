@@ -1,4 +1,4 @@
-//! The type reductions side by side (SPEC §10): the solution curve of every
+//! The type reductions side by side (docs/method.md §9): the solution curve of every
 //! reduction beside the crisp curve, and each one's distance to it along the
 //! curve, with the distance's maximum and root mean square in the legend.
 

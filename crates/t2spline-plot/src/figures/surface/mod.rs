@@ -1,5 +1,5 @@
 //! The figures of a surface job: the four stages of Algorithm 1.1 on a
-//! tensor-product net (SPEC §9), each a shaded 3-D view beside a map over
+//! tensor-product net (docs/method.md §8), each a shaded 3-D view beside a map over
 //! the parameters `(u, v)`.
 //!
 //! The 3-D view ([`camera`]) is an orthographic projection from a documented
