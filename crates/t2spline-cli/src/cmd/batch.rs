@@ -107,44 +107,46 @@ fn folder_jobs(dir: &Path) -> Result<Vec<PathBuf>, t2spline_io::Error> {
 }
 
 /// Names in natural order: runs of digits compared as numbers (`a2` before
-/// `a10`, `a02` beside `a2`), the rest as text; equal so far, by their text.
+/// `a10`, `a02` beside `a2`), other characters one by one, a number placed
+/// among characters as its first digit is; equal so far, by their text.
 fn natural_order(a: &str, b: &str) -> std::cmp::Ordering {
-    /// The runs of digits and of other characters.
-    fn runs(s: &str) -> impl Iterator<Item = &str> {
+    use std::cmp::Ordering;
+    /// A character, or a run of digits (leading zeros dropped).
+    enum Token<'a> {
+        Char(char),
+        Number(&'a str),
+    }
+    fn tokens(s: &str) -> impl Iterator<Item = Token<'_>> {
         let mut rest = s;
         std::iter::from_fn(move || {
             let first = rest.chars().next()?;
-            let digit = first.is_ascii_digit();
-            let end = rest
-                .find(|c: char| c.is_ascii_digit() != digit)
-                .unwrap_or(rest.len());
-            let (run, tail) = rest.split_at(end);
-            rest = tail;
-            Some(run)
+            if first.is_ascii_digit() {
+                let end = rest
+                    .find(|c: char| !c.is_ascii_digit())
+                    .unwrap_or(rest.len());
+                let (run, tail) = rest.split_at(end);
+                rest = tail;
+                Some(Token::Number(run.trim_start_matches('0')))
+            } else {
+                rest = &rest[first.len_utf8()..];
+                Some(Token::Char(first))
+            }
         })
     }
-    /// A run's key: whether it is digits, and its number's length and
-    /// digits (leading zeros dropped), or its text.
-    fn key(run: &str) -> (bool, usize, &str) {
-        if run.starts_with(|c: char| c.is_ascii_digit()) {
-            let number = run.trim_start_matches('0');
-            (true, number.len(), number)
-        } else {
-            (false, 0, run)
-        }
-    }
-    let mut x = runs(a);
-    let mut y = runs(b);
+    let compare = |x: &Token<'_>, y: &Token<'_>| match (x, y) {
+        (Token::Char(p), Token::Char(q)) => p.cmp(q),
+        (Token::Number(p), Token::Number(q)) => p.len().cmp(&q.len()).then(p.cmp(q)),
+        (Token::Char(p), Token::Number(_)) => p.cmp(&'0').then(Ordering::Greater),
+        (Token::Number(_), Token::Char(q)) => '0'.cmp(q).then(Ordering::Less),
+    };
+    let (mut x, mut y) = (tokens(a), tokens(b));
     loop {
         match (x.next(), y.next()) {
             (None, None) => return a.cmp(b),
-            (None, Some(_)) => return std::cmp::Ordering::Less,
-            (Some(_), None) => return std::cmp::Ordering::Greater,
+            (None, Some(_)) => return Ordering::Less,
+            (Some(_), None) => return Ordering::Greater,
             (Some(p), Some(q)) => {
-                let order = match (key(p), key(q)) {
-                    ((true, lp, np), (true, lq, nq)) => lp.cmp(&lq).then(np.cmp(nq)),
-                    ((_, _, tp), (_, _, tq)) => tp.cmp(tq),
-                };
+                let order = compare(&p, &q);
                 if order.is_ne() {
                     return order;
                 }
