@@ -13,7 +13,8 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyList};
 use rayon::prelude::*;
-use t2spline::job::{Overrides, Parameter, RunOutput, Settings};
+use t2spline::job::{Distance, Overrides, Parameter, Regime, RunOutput, Settings};
+use t2spline::TypeReduction;
 use t2spline_io::RunError;
 
 use crate::errors::{internal_error, without_gil};
@@ -204,9 +205,32 @@ struct Row {
     settings: Option<Settings>,
     /// The smallest lower height of its numbers, if it was read.
     h: Option<f64>,
-    /// Its result, or why there is none: the status and message of
+    /// Its run, or why there is none: the status and message of
     /// `t2spline run`'s summary of many jobs.
-    result: Result<RunOutput, (&'static str, String)>,
+    result: Result<RowRun, (&'static str, String)>,
+}
+
+/// What a row's run gave: the summary's figures, and the whole result only
+/// when its samples are asked for (a result holds every curve).
+struct RowRun {
+    type_reduction: TypeReduction,
+    regime: Option<Regime>,
+    /// The level, if the type reduction uses it.
+    alpha: Option<f64>,
+    error: Distance,
+    output: Option<RunOutput>,
+}
+
+impl RowRun {
+    fn of(output: RunOutput, keep: bool) -> RowRun {
+        RowRun {
+            type_reduction: output.type_reduction,
+            regime: output.regime,
+            alpha: output.alpha_used.then_some(output.alpha),
+            error: output.error,
+            output: keep.then_some(output),
+        }
+    }
 }
 
 /// A failure's status (`invalid`, `internal`) and its message: the error's
@@ -224,8 +248,9 @@ fn status(e: &RunError) -> (&'static str, String) {
     (status, text)
 }
 
-/// Runs the job of one row: `text` (or `None` for a null), named `source`.
-fn run_row(text: Option<&[u8]>, source: &str, overrides: &Overrides) -> Row {
+/// Runs the job of one row: `text` (or `None` for a null), named `source`;
+/// its result kept if `keep`.
+fn run_row(text: Option<&[u8]>, source: &str, overrides: &Overrides, keep: bool) -> Row {
     let failed = |status, message| Row {
         settings: None,
         h: None,
@@ -245,7 +270,10 @@ fn run_row(text: Option<&[u8]>, source: &str, overrides: &Overrides) -> Row {
         Ok(prepared) => Row {
             settings: Some(*prepared.settings()),
             h: Some(prepared.job().model.least_height()),
-            result: prepared.run().map_err(|e| status(&e)),
+            result: prepared
+                .run()
+                .map(|output| RowRun::of(output, keep))
+                .map_err(|e| status(&e)),
         },
     }
 }
@@ -320,7 +348,14 @@ pub(crate) fn _run_rows<'py>(
         texts
             .par_iter()
             .enumerate()
-            .map(|(k, text)| run_row(*text, &format!("<row {}>", first + k), &overrides))
+            .map(|(k, text)| {
+                run_row(
+                    *text,
+                    &format!("<row {}>", first + k),
+                    &overrides,
+                    with_samples,
+                )
+            })
             .collect()
     })?;
     let out = PyDict::new(py);
@@ -341,7 +376,7 @@ pub(crate) fn _run_rows<'py>(
             None => (None, None),
         };
         for (column, value) in floats.iter_mut().zip([
-            ok.filter(|r| r.alpha_used).map(|r| r.alpha),
+            ok.and_then(|r| r.alpha),
             row.h,
             ok.map(|r| r.error.max),
             max_at,
@@ -393,7 +428,9 @@ fn samples_table<'py>(py: Python<'py>, rows: &[Row], first: usize) -> PyResult<B
         let mut index: Vec<i64> = Vec::new();
         let mut columns: Vec<Floats> = names.iter().map(|_| Floats::default()).collect();
         for (k, row) in rows.iter().enumerate() {
-            let Ok(result) = &row.result else { continue };
+            let Some(result) = row.result.as_ref().ok().and_then(|r| r.output.as_ref()) else {
+                continue;
+            };
             let (have, count) = t2spline_io::sample_columns(result);
             let row_index = i64::try_from(first + k).unwrap_or(i64::MAX);
             index.extend(std::iter::repeat_n(row_index, count));
