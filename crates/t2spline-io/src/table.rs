@@ -6,7 +6,7 @@
 //! fastest) and the distance is computed row by row, so neither is stored.
 
 use t2spline::job::{Parameters, Points, RunOutput};
-use t2spline::pipeline::euclidean_norm;
+use t2spline::vector::euclidean_norm;
 use t2spline::Layer;
 
 /// The coordinate names of columns: `crisp_x`, `crisp_y`, `crisp_z`.

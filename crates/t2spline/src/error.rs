@@ -6,76 +6,8 @@
 
 use std::fmt;
 
-use crate::fuzzy::Axis;
-
-/// Where in a list (or a net) of fuzzy points a fault was found.
-///
-/// Displayed as a JSON-like path with a trailing `": "`, e.g. `points[2].y: `
-/// for a curve, `points[2][1].y: ` for the net of a surface (row `2` along u,
-/// column `1` along v), or as nothing at all when the place is unknown.
-/// Indices are 0-based, as in the `points` array of a job file.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Place {
-    /// Index of the point (0-based), if known; in a net, the row.
-    pub point: Option<usize>,
-    /// In a net of a surface, the column within the row.
-    pub column: Option<usize>,
-    /// Coordinate within the point, if known.
-    pub axis: Option<Axis>,
-}
-
-impl Place {
-    /// No place known.
-    pub const NONE: Place = Place {
-        point: None,
-        column: None,
-        axis: None,
-    };
-
-    /// The place `points[point].axis`.
-    #[must_use]
-    pub fn new(point: usize, axis: Axis) -> Self {
-        Place {
-            point: Some(point),
-            column: None,
-            axis: Some(axis),
-        }
-    }
-
-    /// The place `points[row][column].axis` in the net of a surface.
-    ///
-    /// ```
-    /// # use t2spline::{Axis, Place};
-    /// assert_eq!(Place::in_net(2, 1, Axis::Y).to_string(), "points[2][1].y: ");
-    /// ```
-    #[must_use]
-    pub fn in_net(row: usize, column: usize, axis: Axis) -> Self {
-        Place {
-            point: Some(row),
-            column: Some(column),
-            axis: Some(axis),
-        }
-    }
-}
-
-impl fmt::Display for Place {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if let Some(i) = self.point {
-            write!(f, "points[{i}]")?;
-            if let Some(j) = self.column {
-                write!(f, "[{j}]")?;
-            }
-            return match self.axis {
-                Some(a) => write!(f, ".{a}: "),
-                None => write!(f, ": "),
-            };
-        }
-        match self.axis {
-            Some(a) => write!(f, "{a}: "),
-            None => Ok(()),
-        }
-    }
-}
+use crate::place::Axis;
+pub use crate::place::Place;
 
 /// A number in a message: as `Display` writes it (`0.5`, `2`, `-3.25`), but in
 /// exponent form when that would take more than about 20 digits (`1e301`,
@@ -680,7 +612,7 @@ pub enum Error {
         /// How many inequalities are broken.
         count: usize,
         /// The first of them.
-        first: crate::fit::OrderViolation,
+        first: crate::place::OrderViolation,
     },
 
     /// A fitted control value lies beyond the limit of coordinates
@@ -709,7 +641,7 @@ pub enum Error {
         /// The coordinate.
         axis: Axis,
         /// The layer of a fuzzy fit; `None` for a crisp curve.
-        layer: Option<crate::fuzzy::Layer>,
+        layer: Option<crate::place::Layer>,
         /// The fitted value.
         value: f64,
     },
@@ -835,7 +767,7 @@ pub enum Error {
     #[error("{}", in_direction(*direction, inner))]
     InDirection {
         /// The parameter direction.
-        direction: crate::nurbs::Direction,
+        direction: crate::place::Direction,
         /// The rule broken, as for a curve in that direction.
         inner: Box<Error>,
     },
@@ -925,7 +857,7 @@ pub enum Error {
     #[error("layer {layer}: {inner}")]
     InLayer {
         /// The layer.
-        layer: crate::fuzzy::Layer,
+        layer: crate::place::Layer,
         /// The error of that layer.
         inner: Box<Error>,
     },
@@ -1088,7 +1020,7 @@ pub enum Error {
 }
 
 /// The message of [`Error::InDirection`]: the curve rule in the surface's words.
-fn in_direction(direction: crate::nurbs::Direction, inner: &Error) -> String {
+fn in_direction(direction: crate::place::Direction, inner: &Error) -> String {
     let d = direction;
     match inner {
         Error::TooFewControlPoints { order, count } => format!(
@@ -1096,8 +1028,8 @@ fn in_direction(direction: crate::nurbs::Direction, inner: &Error) -> String {
         ),
         Error::KnotCount { expected, found } => {
             let lines = match d {
-                crate::nurbs::Direction::U => "rows",
-                crate::nurbs::Direction::V => "columns",
+                crate::place::Direction::U => "rows",
+                crate::place::Direction::V => "columns",
             };
             format!("knots.{d}: expected {expected} values ({lines} + order in {d}), got {found}")
         }
@@ -1163,7 +1095,7 @@ impl Error {
 
     /// The same error as a rule of `direction` of a surface
     /// ([`Error::InDirection`]).
-    pub(crate) fn in_direction(self, direction: crate::nurbs::Direction) -> Self {
+    pub(crate) fn in_direction(self, direction: crate::place::Direction) -> Self {
         Error::InDirection {
             direction,
             inner: Box::new(self),
@@ -1171,7 +1103,7 @@ impl Error {
     }
 
     /// The same error, as the error of one layer of a fuzzy model.
-    pub(crate) fn in_layer(self, layer: crate::fuzzy::Layer) -> Self {
+    pub(crate) fn in_layer(self, layer: crate::place::Layer) -> Self {
         Error::InLayer {
             layer,
             inner: Box::new(self),

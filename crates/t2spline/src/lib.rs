@@ -87,6 +87,7 @@
 )]
 
 pub mod bench;
+mod brent;
 mod cubature;
 mod error;
 pub mod fit;
@@ -97,17 +98,19 @@ mod limits;
 mod nelder_mead;
 pub mod nurbs;
 pub mod pipeline;
+mod place;
 mod quadrature;
 pub mod reduction;
 pub mod sampling;
 pub mod set;
+pub mod vector;
 // Generators for property tests: a value they cannot build is a failing
 // test, so they may `expect`.
 #[cfg(any(test, feature = "proptest"))]
 #[allow(clippy::expect_used, clippy::unwrap_used)]
 pub mod strategies;
 
-pub use error::{Error, Num, Place};
+pub use error::{Error, Num};
 pub use fuzzy::{
     Alpha, AlphaCut, Axis, Height, Interval, Layer, Layers, Membership, Nt2Number, Nt2Point,
     Nt2Point2, Nt2Point3, Tfn,
@@ -120,4 +123,5 @@ pub use nurbs::{
 pub use pipeline::{
     Distance, FuzzyCurve, FuzzySurface, Side, Solution, SurfaceDistance, SurfaceSolution,
 };
+pub use place::Place;
 pub use reduction::{AlphaPlanes, Reduced, TypeReduction};

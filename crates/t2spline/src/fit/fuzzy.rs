@@ -11,6 +11,7 @@ use crate::fit::FitOptions;
 use crate::fuzzy::{Axis, Height, Layer, Layers, Nt2Number, Nt2Point, RULES};
 use crate::nurbs::KnotVector;
 use crate::pipeline::FuzzyCurve;
+pub use crate::place::OrderViolation;
 
 /// How the six non-crisp layers are fitted once the crisp one is.
 ///
@@ -71,31 +72,6 @@ impl FromStr for FuzzyFitMode {
                 "unknown fuzzy fit `{s}` (known: valid, independent)"
             )),
         }
-    }
-}
-
-/// A fitted control point whose seven values break the order of docs/method.md §1.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct OrderViolation {
-    /// Index of the control point (0-based).
-    pub control_point: usize,
-    /// The coordinate.
-    pub axis: Axis,
-    /// The broken inequality, in the words of docs/method.md §1 (`"primary.left <= lower.left"`).
-    pub rule: &'static str,
-    /// The value on the left of the inequality.
-    pub left: f64,
-    /// The value on the right.
-    pub right: f64,
-}
-
-impl fmt::Display for OrderViolation {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "control point {}, {}: the order {} is broken: {} > {}",
-            self.control_point, self.axis, self.rule, self.left, self.right
-        )
     }
 }
 

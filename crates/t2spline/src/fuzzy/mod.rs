@@ -9,11 +9,11 @@ mod alpha_cut;
 mod layer;
 mod number;
 mod point;
-mod type_reduce;
+mod tfn;
 
 pub use alpha_cut::{Alpha, AlphaCut};
 pub use layer::{Layer, Layers};
 pub(crate) use number::RULES;
 pub use number::{Height, Interval, Membership, Nt2Number};
 pub use point::{Axis, Nt2Point, Nt2Point2, Nt2Point3};
-pub use type_reduce::Tfn;
+pub use tfn::Tfn;

@@ -65,10 +65,10 @@ impl Domain {
     /// assert!(d.uniform(usize::MAX).is_err());
     /// # Ok::<(), t2spline::Error>(())
     /// ```
-    pub fn uniform(&self, samples: usize) -> Result<Vec<f64>, crate::Error> {
+    pub fn uniform(&self, samples: usize) -> Result<Vec<f64>, crate::error::Error> {
         let mut out = Vec::new();
         out.try_reserve_exact(samples)
-            .map_err(|_| crate::Error::Memory { values: samples })?;
+            .map_err(|_| crate::error::Error::Memory { values: samples })?;
         out.extend(self.uniform_iter(samples));
         Ok(out)
     }
@@ -356,7 +356,7 @@ mod tests {
             end: 1.0,
         };
         for n in [usize::MAX, usize::MAX / 8, 1 << 60] {
-            assert_eq!(d.uniform(n), Err(crate::Error::Memory { values: n }));
+            assert_eq!(d.uniform(n), Err(crate::error::Error::Memory { values: n }));
         }
     }
 }

@@ -27,14 +27,15 @@ pub use arc_length::LENGTH_TOLERANCE;
 pub mod basis;
 mod bounding_box;
 pub(crate) mod closest_point;
+mod curvature;
 pub(crate) mod curve;
 pub(crate) mod degree_elevation;
 pub mod derivatives;
 #[cfg(test)]
 pub(crate) mod fixtures;
+pub(crate) mod homogeneous;
 pub(crate) mod knot_insertion;
 mod knots;
-pub(crate) mod net;
 pub(crate) mod pieces;
 pub(crate) mod span_eval;
 pub(crate) mod split;

@@ -25,8 +25,8 @@
 use crate::error::{Error, Place};
 use crate::fuzzy::{Axis, Height, Layer, Layers, Nt2Number, Nt2Point};
 use crate::nurbs::degree_elevation::{check_elevation, elevate};
+use crate::nurbs::homogeneous::{check_rows, Row};
 use crate::nurbs::knot_insertion::{insert, refine};
-use crate::nurbs::net::{check_rows, Row};
 use crate::nurbs::split::{segment, split};
 use crate::nurbs::{BoundingBox, ClosestPoint, KnotVector};
 use crate::pipeline::FuzzyCurve;

@@ -5,8 +5,8 @@
 use crate::error::{Error, Place};
 use crate::fuzzy::{Alpha, Axis, Height, Layer, Layers, Nt2Number, Nt2Point};
 use crate::nurbs::degree_elevation::{check_elevation, elevate};
+use crate::nurbs::homogeneous::{check_rows, Row};
 use crate::nurbs::knot_insertion::{insert, refine};
-use crate::nurbs::net::{check_rows, Row};
 use crate::nurbs::surface::closest_point::check_target;
 use crate::nurbs::surface::operations::{isocurve_rows, map_net, segment_net, split_net, RowNet};
 use crate::nurbs::surface::{check_params, knots_in, net_shape, net_weights, TensorBasis};

@@ -9,19 +9,19 @@
 //! same for surfaces (docs/method.md §8), with the same per-number stages, and measure
 //! the [`SurfaceDistance`].
 
+mod distance;
 mod fuzzy_curve;
 mod fuzzy_ops;
 mod fuzzy_surface;
-mod metrics;
 pub(crate) mod point_stages;
-mod stages;
-mod surface_metrics;
-mod surface_stages;
+mod solution;
+mod surface_distance;
+mod surface_solution;
 
+pub use distance::Distance;
 pub use fuzzy_curve::FuzzyCurve;
 pub use fuzzy_surface::FuzzySurface;
-pub use metrics::{euclidean_norm, Distance};
 pub use point_stages::Side;
-pub use stages::Solution;
-pub use surface_metrics::SurfaceDistance;
-pub use surface_stages::SurfaceSolution;
+pub use solution::Solution;
+pub use surface_distance::SurfaceDistance;
+pub use surface_solution::SurfaceSolution;

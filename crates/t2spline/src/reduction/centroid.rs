@@ -75,7 +75,7 @@ impl Nt2Number {
 
 #[cfg(test)]
 mod tests {
-    use crate::Nt2Number;
+    use crate::fuzzy::Nt2Number;
 
     fn n(crisp: f64, upper: [f64; 2], primary: [f64; 2], lower: [f64; 2], h: f64) -> Nt2Number {
         Nt2Number::try_new(crisp, upper, primary, lower, h).unwrap()

@@ -19,6 +19,7 @@ mod centroid;
 pub mod discrete;
 mod footprint;
 mod nie_tan;
+mod paper;
 
 use std::fmt;
 use std::str::FromStr;

@@ -46,7 +46,7 @@ impl Nt2Number {
 
 #[cfg(test)]
 mod tests {
-    use crate::Nt2Number;
+    use crate::fuzzy::Nt2Number;
 
     #[test]
     fn two_triangles_by_hand() {

@@ -3,7 +3,7 @@
 //! curve, with the distance's maximum and root mean square in the legend.
 
 use t2spline::job::{Job, RunOutput};
-use t2spline::pipeline::euclidean_norm;
+use t2spline::vector::euclidean_norm;
 use t2spline::{Alpha, TypeReduction};
 
 use super::{crisp_curve, crisp_legend, crisp_points, line, polygon, project, CurveScene};

@@ -376,7 +376,7 @@ pub fn distances(a: &Points, b: &Points) -> Vec<f64> {
     let (pa, pb) = (xyz(a), xyz(b));
     pa.iter()
         .zip(&pb)
-        .map(|(p, q)| t2spline::pipeline::euclidean_norm(&[p[0] - q[0], p[1] - q[1], p[2] - q[2]]))
+        .map(|(p, q)| t2spline::vector::euclidean_norm(&[p[0] - q[0], p[1] - q[1], p[2] - q[2]]))
         .collect()
 }
 

@@ -33,53 +33,12 @@ pub(crate) mod derivatives;
 pub(crate) mod operations;
 pub(crate) mod patches;
 
-use std::fmt;
-
 use crate::error::{Error, Place};
 use crate::fuzzy::Axis;
 use crate::limits::{within_magnitude, MAGNITUDE_RANGE, MAX_WEIGHT, MIN_WEIGHT};
 use crate::nurbs::basis::{basis_functions, STACK_ORDER};
 use crate::nurbs::{Domain, KnotVector};
-
-/// A parameter direction of a surface: `U` runs along the rows of the net
-/// (index `i`), `V` along the columns (index `j`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
-pub enum Direction {
-    /// The first parameter `u` (rows `i` of the net, knots `U`, degree `p`).
-    U,
-    /// The second parameter `v` (columns `j` of the net, knots `V`, degree `q`).
-    V,
-}
-
-impl Direction {
-    /// Both directions, `U` first.
-    pub const BOTH: [Direction; 2] = [Direction::U, Direction::V];
-
-    /// `0` for `U`, `1` for `V`: the index into `[u, v]` pairs.
-    #[must_use]
-    pub fn index(self) -> usize {
-        self as usize
-    }
-
-    /// The other direction.
-    #[must_use]
-    pub fn other(self) -> Direction {
-        match self {
-            Direction::U => Direction::V,
-            Direction::V => Direction::U,
-        }
-    }
-}
-
-impl fmt::Display for Direction {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(match self {
-            Direction::U => "u",
-            Direction::V => "v",
-        })
-    }
-}
+pub use crate::place::Direction;
 
 /// A rational B-spline surface in `D` dimensions (docs/method.md §8), the tensor
 /// product of two rational B-spline curves:

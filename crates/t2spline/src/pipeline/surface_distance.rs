@@ -4,7 +4,7 @@
 use crate::cubature::Cubature;
 use crate::nurbs::surface::patches::{patch_min, Patch, HULL_SLACK};
 use crate::nurbs::{Direction, NurbsSurface};
-use crate::pipeline::euclidean_norm;
+use crate::vector::euclidean_norm;
 
 /// How far the defuzzified surface `D(u, v)` lies from the crisp surface
 /// `C(u, v)` at equal parameters over the whole domain `[a, b] × [c, d]`
