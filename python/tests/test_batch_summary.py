@@ -86,3 +86,46 @@ def test_the_jobs_of_a_folder_go_in_natural_order(cli: Path, tmp_path: Path) -> 
     subprocess.run([str(cli), "run", "--jobs", str(folder), "-o", str(tmp_path / "out")], check=True)
     summary = (tmp_path / "out" / "summary.csv").read_text().splitlines()[1:]
     assert [line.split(",")[0] for line in summary] == names
+
+
+def test_many_jobs_into_one_parquet_table(cli: Path, tmp_path: Path) -> None:
+    """`--parquet FILE.parquet`: every job's samples in one table, with `job`
+    and `alpha`, one schema whatever the regime (tables of two sweeps
+    concatenate), each job's rows equal to its own `--parquet` file."""
+    pa = pytest.importorskip("pyarrow")
+    pc = pytest.importorskip("pyarrow.compute")
+    folder = tmp_path / "sweep"
+    folder.mkdir()
+    job = json.loads(EXAMPLE.read_text())
+    alphas = {f"a{k}": k / 10 for k in range(11)}
+    for name, a in alphas.items():
+        (folder / f"{name}.json").write_text(json.dumps(dict(job, alpha=a, samples=9)))
+    (folder / "broken.json").write_text('{"order": 2}')
+    done = subprocess.run(
+        [str(cli), "run", "--jobs", str(folder), "-o", str(tmp_path / "out"), "--parquet", str(tmp_path / "all.parquet")],
+        capture_output=True, text=True,
+    )
+    assert done.returncode == 2, done.stderr
+    table = pq.read_table(tmp_path / "all.parquet")
+    names = list(alphas)
+    assert table.column("job").to_pylist() == [n for n in names for _ in range(9)]
+    assert table.column("alpha").to_pylist() == [alphas[n] for n in names for _ in range(9)]
+    assert (tmp_path / "out" / "summary.parquet").is_file()
+    for name in ("a3", "a8"):  # below and above h = 0.6
+        single = tmp_path / f"{name}.parquet"
+        subprocess.run([str(cli), "run", str(folder / f"{name}.json"), "--parquet", str(single), "-o", str(tmp_path / f"{name}.json")], check=True)
+        theirs = pq.read_table(single)
+        mine = table.filter(pc.equal(table.column("job"), name))
+        for column in table.column_names[2:]:
+            if column in theirs.column_names:
+                assert mine.column(column).to_pylist() == theirs.column(column).to_pylist(), (name, column)
+            else:
+                assert mine.column(column).null_count == 9, (name, column)
+    # Another sweep's table has the same schema: they concatenate.
+    other = tmp_path / "other"
+    other.mkdir()
+    (other / "z.json").write_text(json.dumps(dict(job, alpha=0.9, samples=4)))
+    (other / "y.json").write_text(json.dumps(dict(job, alpha=0.2, samples=4)))
+    subprocess.run([str(cli), "run", "--jobs", str(other), "-o", str(tmp_path / "o2"), "--parquet", str(tmp_path / "two.parquet")], check=True)
+    both = pa.concat_tables([table, pq.read_table(tmp_path / "two.parquet")])
+    assert both.num_rows == 11 * 9 + 8

@@ -148,6 +148,108 @@ fn write_table<W: Write + Send>(
     Ok(())
 }
 
+/// Writes the sampled curves of many runs as one Parquet table: a row per
+/// job and parameter, the job's name in `job` (text), its level in `alpha`
+/// (null where the type reduction does not use it), then the columns of
+/// [`sample_column_names`](crate::sample_column_names), one schema whatever
+/// the model and the regime (a column a job lacks is null in its rows: a
+/// plane curve's `_z`, a lower cut above `h`), and after them the
+/// derivative columns any job has (`crisp_d1_x`, …). Jobs follow in the
+/// order given; row groups hold whole jobs.
+///
+/// # Errors
+/// The errors of `writer`.
+pub fn write_jobs_parquet<W: Write + Send>(
+    writer: W,
+    jobs: &[(&str, &RunOutput)],
+) -> std::io::Result<()> {
+    write_jobs(writer, jobs).map_err(io_error)
+}
+
+fn write_jobs<W: Write + Send>(writer: W, jobs: &[(&str, &RunOutput)]) -> Result<(), ParquetError> {
+    let tables: Vec<Table<'_>> = jobs.iter().map(|(_, r)| one_table(r)).collect();
+    let mut names = crate::sample_column_names();
+    for t in &tables {
+        for c in &t.columns {
+            if !names.contains(&c.name) {
+                names.push(c.name.clone());
+            }
+        }
+    }
+    let mut fields = vec![
+        text("job", Repetition::REQUIRED)?,
+        optional_double("alpha")?,
+    ];
+    for name in &names {
+        fields.push(optional_double(name)?);
+    }
+    let mut file =
+        SerializedFileWriter::new(writer, schema(fields)?, properties(Vec::new(), false))?;
+    let mut scratch = Vec::new();
+    let mut start = 0;
+    while start < jobs.len() {
+        // Whole jobs, up to a row group's rows (at least one job).
+        let mut end = start + 1;
+        let mut rows = tables[start].rows;
+        while end < jobs.len() && rows + tables[end].rows <= ROW_GROUP {
+            rows += tables[end].rows;
+            end += 1;
+        }
+        let mut group = file.next_row_group()?;
+        let mut c = next(&mut group)?;
+        for k in start..end {
+            let name = ByteArray::from(jobs[k].0);
+            c.typed::<ByteArrayType>()
+                .write_batch(&vec![name; tables[k].rows], None, None)?;
+        }
+        c.close()?;
+        let mut c = next(&mut group)?;
+        for k in start..end {
+            let r = jobs[k].1;
+            let (values, level) = if r.alpha_used {
+                (vec![r.alpha], 1)
+            } else {
+                (Vec::new(), 0)
+            };
+            let values = values.repeat(tables[k].rows);
+            c.typed::<DoubleType>().write_batch(
+                &values,
+                Some(&vec![level; tables[k].rows]),
+                None,
+            )?;
+        }
+        c.close()?;
+        for name in &names {
+            let mut c = next(&mut group)?;
+            for table in &tables[start..end] {
+                match table.columns.iter().find(|col| &col.name == name) {
+                    Some(column) => {
+                        for chunk in (0..table.rows).step_by(CHUNK) {
+                            let span = chunk..(chunk + CHUNK).min(table.rows);
+                            let levels = vec![1; span.len()];
+                            let values = column.values.rows(span, &mut scratch);
+                            c.typed::<DoubleType>()
+                                .write_batch(values, Some(&levels), None)?;
+                        }
+                    }
+                    None => {
+                        c.typed::<DoubleType>().write_batch(
+                            &[],
+                            Some(&vec![0; table.rows]),
+                            None,
+                        )?;
+                    }
+                }
+            }
+            c.close()?;
+        }
+        group.close()?;
+        start = end;
+    }
+    file.close()?;
+    Ok(())
+}
+
 /// A `BYTE_ARRAY` column of UTF-8 text, required or optional.
 fn text(name: &str, repetition: Repetition) -> Result<Arc<Type>, ParquetError> {
     Type::primitive_type_builder(name, Physical::BYTE_ARRAY)

@@ -13,8 +13,8 @@ use std::path::{Path, PathBuf};
 use rayon::prelude::*;
 use t2spline::job::{Overrides, Parameter, RunOutput};
 use t2spline_io::{
-    printable, sync_file_systems, write_summary_csv, write_summary_parquet, JobSummary, Staged,
-    CSV_FILES, DERIVATIVES_CSV,
+    printable, sync_file_systems, write_jobs_parquet, write_summary_csv, write_summary_parquet,
+    JobSummary, Staged, CSV_FILES, DERIVATIVES_CSV,
 };
 
 use super::prepare::{about_run, alpha_notes, prepare, OptionError};
@@ -42,7 +42,10 @@ struct Batch {
     overrides: Overrides,
     output: PathBuf,
     csv: Option<PathBuf>,
+    /// The folder of one Parquet file per job (`--parquet DIR`).
     parquet: Option<PathBuf>,
+    /// The one Parquet file of every job's samples (`--parquet FILE.parquet`).
+    one_parquet: Option<PathBuf>,
 }
 
 /// What became of one job.
@@ -54,6 +57,8 @@ struct Outcome {
     notes: Vec<String>,
     /// The files written, to be flushed to disk at the end.
     written: Vec<PathBuf>,
+    /// The result, kept for the one Parquet file of every job.
+    result: Option<RunOutput>,
 }
 
 fn usage(option: &'static str, message: impl Into<String>) -> anyhow::Error {
@@ -209,12 +214,18 @@ impl Batch {
             }
             jobs.push(Entry { path, name });
         }
+        // `--parquet FILE.parquet`: one file for every job; else a folder.
+        let (parquet, one_parquet) = match args.parquet.clone() {
+            Some(p) if p.extension().is_some_and(|e| e == "parquet") => (None, Some(p)),
+            other => (other, None),
+        };
         let batch = Batch {
             jobs,
             overrides: overrides(&args),
             output,
             csv: args.csv,
-            parquet: args.parquet,
+            parquet,
+            one_parquet,
         };
         batch.check_outputs()?;
         Ok(batch)
@@ -231,6 +242,10 @@ impl Batch {
         claims.file("--output", &self.output.join(SUMMARY_CSV))?;
         if let Some(dir) = &self.parquet {
             claims.file("--parquet", &dir.join(SUMMARY_PARQUET))?;
+        }
+        if let Some(file) = &self.one_parquet {
+            claims.file("--parquet", file)?;
+            claims.file("--parquet", &self.output.join(SUMMARY_PARQUET))?;
         }
         Ok(())
     }
@@ -264,7 +279,7 @@ impl Batch {
             description: None,
             message: None,
         };
-        let (mut written, mut notes) = (Vec::new(), Vec::new());
+        let (mut written, mut notes, mut kept) = (Vec::new(), Vec::new(), None);
         let error = self.compute(job).and_then(|(result, h, said)| {
             notes = said;
             summary.h = Some(h);
@@ -282,6 +297,7 @@ impl Batch {
             let out = self.destinations(job);
             out.write(Staged::deferring_sync(), &result)?;
             written = files(&out, &result);
+            kept = self.one_parquet.is_some().then_some(result);
             Ok(())
         });
         let error = error.err();
@@ -294,6 +310,7 @@ impl Batch {
             error,
             notes,
             written,
+            result: kept,
         }
     }
 
@@ -371,14 +388,27 @@ pub fn run(args: RunArgs) -> anyhow::Result<()> {
     drop(stderr);
     let written: Vec<PathBuf> = outcomes.iter().flat_map(|o| o.written.clone()).collect();
     sync_file_systems(&written)?;
-    let rows: Vec<JobSummary> = outcomes.into_iter().map(|o| o.summary).collect();
+    let (rows, kept): (Vec<JobSummary>, Vec<Option<RunOutput>>) =
+        outcomes.into_iter().map(|o| (o.summary, o.result)).unzip();
+    let one: Vec<(&str, &RunOutput)> = batch
+        .jobs
+        .iter()
+        .zip(&kept)
+        .filter_map(|(job, r)| r.as_ref().map(|r| (job.name.as_str(), r)))
+        .collect();
     let summary = batch.output.join(SUMMARY_CSV);
     let mut staged = Staged::default();
+    if let Some(file) = &batch.one_parquet {
+        staged.add(file, |w| write_jobs_parquet(w, &one))?;
+    }
     staged.add(&summary, |w| write_summary_csv(w, &rows))?;
-    if let Some(dir) = &batch.parquet {
-        staged.add(&dir.join(SUMMARY_PARQUET), |w| {
-            write_summary_parquet(w, &rows)
-        })?;
+    let summary_parquet = match (&batch.parquet, &batch.one_parquet) {
+        (Some(dir), _) => Some(dir.join(SUMMARY_PARQUET)),
+        (None, Some(_)) => Some(batch.output.join(SUMMARY_PARQUET)),
+        (None, None) => None,
+    };
+    if let Some(path) = &summary_parquet {
+        staged.add(path, |w| write_summary_parquet(w, &rows))?;
     }
     staged.commit()?;
     let failed = rows
