@@ -219,28 +219,24 @@ fn write_jobs<W: Write + Send>(writer: W, jobs: &[(&str, &RunOutput)]) -> Result
             )?;
         }
         c.close()?;
+        // Each column of the group in one batch: the jobs' values one after
+        // another, a definition level per row (0 where a job lacks it).
+        let (mut values, mut levels) = (Vec::with_capacity(rows), Vec::with_capacity(rows));
         for name in &names {
-            let mut c = next(&mut group)?;
+            values.clear();
+            levels.clear();
             for table in &tables[start..end] {
                 match table.columns.iter().find(|col| &col.name == name) {
                     Some(column) => {
-                        for chunk in (0..table.rows).step_by(CHUNK) {
-                            let span = chunk..(chunk + CHUNK).min(table.rows);
-                            let levels = vec![1; span.len()];
-                            let values = column.values.rows(span, &mut scratch);
-                            c.typed::<DoubleType>()
-                                .write_batch(values, Some(&levels), None)?;
-                        }
+                        values.extend_from_slice(column.values.rows(0..table.rows, &mut scratch));
+                        levels.resize(levels.len() + table.rows, 1);
                     }
-                    None => {
-                        c.typed::<DoubleType>().write_batch(
-                            &[],
-                            Some(&vec![0; table.rows]),
-                            None,
-                        )?;
-                    }
+                    None => levels.resize(levels.len() + table.rows, 0),
                 }
             }
+            let mut c = next(&mut group)?;
+            c.typed::<DoubleType>()
+                .write_batch(&values, Some(&levels), None)?;
             c.close()?;
         }
         group.close()?;
