@@ -14,8 +14,8 @@ use t2spline::fit::{FuzzyData, OrderViolation};
 use t2spline::job::Model;
 use t2spline::{Alpha, TypeReduction};
 
-use crate::job::write::model_json;
-use crate::{Error, Problem};
+use crate::error::{Error, Problem};
+use crate::job_json::model_json;
 
 /// A validated data file.
 #[derive(Clone, Debug, PartialEq)]
@@ -129,11 +129,11 @@ impl FitData {
 
     /// The error for a fit whose control points break the order of docs/method.md §1:
     /// one line per broken inequality (at most
-    /// [`MAX_PROBLEMS`](crate::job::limits::MAX_PROBLEMS), then a count of the rest),
+    /// [`MAX_PROBLEMS`](crate::limits::MAX_PROBLEMS), then a count of the rest),
     /// then `advice`, each naming this file.
     #[must_use]
     pub fn order_error(&self, violations: &[OrderViolation], advice: &str) -> Error {
-        let limit = crate::job::limits::MAX_PROBLEMS;
+        let limit = crate::limits::MAX_PROBLEMS;
         let mut problems = vec![Problem::new(format!(
             "fitting every layer on its own breaks the order of the seven values at {} place(s) of the control points:",
             violations.len()

@@ -74,14 +74,17 @@ mod error;
 mod finite;
 mod fit_data;
 pub mod job;
+mod job_json;
 #[cfg(feature = "parquet")]
 mod keys;
+mod limits;
 mod number;
 #[cfg(feature = "parquet")]
 mod parquet;
 mod prepared;
 mod pretty;
 mod printable;
+mod read;
 mod readings;
 pub mod set;
 mod summary;

@@ -37,7 +37,7 @@ use std::fmt;
 use t2spline::job::Geometry;
 use t2spline::Num;
 
-use crate::{Error, Problem};
+use crate::error::{Error, Problem};
 
 /// A CAD file format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

@@ -7,9 +7,9 @@ use serde_json::{Map, Value};
 use t2spline::job::check_samples;
 use t2spline::{Alpha, Height, TypeReduction};
 
-use super::limits::check_order;
 use super::position::element;
 use super::walker::{kind, suggestion, written, Walker};
+use crate::limits::check_order;
 use crate::printable;
 
 /// The top-level keys of a job file, curve or surface.
@@ -147,7 +147,7 @@ impl Walker {
 
     /// One order `v` at `path`, given as `key` (`order` or `degree`): a
     /// whole number, an order of at least 1, within
-    /// [`MAX_ORDER`](super::limits::MAX_ORDER). Returns the degree.
+    /// [`MAX_ORDER`](crate::limits::MAX_ORDER). Returns the degree.
     pub(super) fn degree_of(&mut self, key: &str, path: &str, v: &Value) -> Option<usize> {
         let given = self.whole(v, path)?;
         if key == "order" && given == 0 {

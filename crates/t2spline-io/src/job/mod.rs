@@ -10,29 +10,27 @@
 #![cfg_attr(not(test), deny(clippy::indexing_slicing))]
 
 mod common;
-pub mod limits;
 pub(crate) mod parse;
 mod point;
 mod position;
-mod read;
 mod surface;
 mod valid;
 mod walker;
-pub(crate) mod write;
 
-pub use limits::{
+pub use crate::job_json::job_json;
+pub use crate::limits::{
     MAX_ARRAY, MAX_FILE_BYTES, MAX_KEYS, MAX_NESTING, MAX_ORDER, MAX_POINTS, MAX_PROBLEMS,
     MAX_SURFACE_WORK, MAX_VALUES,
 };
+pub use crate::read::{read_text, read_text_from};
 pub use position::{locate, LineColumn};
-pub use read::{read_text, read_text_from};
-pub use write::job_json;
 
 use std::path::Path;
 
 use t2spline::job::Job;
 
-use crate::{Error, FitData};
+use crate::error::Error;
+use crate::fit_data::FitData;
 
 /// Parses and validates a job from JSON text; `source` names the file in
 /// messages.

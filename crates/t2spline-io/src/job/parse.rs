@@ -19,14 +19,14 @@ use t2spline::job::{Job, Model, Samples, DEFAULT_SAMPLES};
 use t2spline::{Alpha, FuzzyCurve, KnotVector, Nt2Point, Place};
 
 use super::common::{knot_error_path, TOP_KEYS};
-use super::limits::{MAX_ARRAY, MAX_KEYS, MAX_NESTING, MAX_POINTS, MAX_PROBLEMS, MAX_VALUES};
 use super::point::{complete, RawPoint};
 use super::position::{self, element, Oversized};
 use super::surface;
 use super::valid;
 use super::walker::{kind, Walker};
+use crate::error::Problem;
 use crate::fit_data::FitData;
-use crate::Problem;
+use crate::limits::{MAX_ARRAY, MAX_KEYS, MAX_NESTING, MAX_POINTS, MAX_PROBLEMS, MAX_VALUES};
 
 /// The keys of a data file for `t2spline fit`: those of a job but the two the
 /// fit computes ([`FIT_MAKES`]).

@@ -20,10 +20,10 @@ use t2spline::nurbs::net_weight_problems;
 use t2spline::{Direction, Error as CoreError, FuzzySurface, KnotVector, Nt2Point, Place};
 
 use super::common::{knot_error_path, TOP_KEYS};
-use super::limits::{check_net_size, check_surface_work};
 use super::point::complete;
 use super::position::{child, element};
 use super::walker::{kind, written, Walker};
+use crate::limits::{check_net_size, check_surface_work};
 
 const KNOT_KEYS: [&str; 2] = ["u", "v"];
 
@@ -186,7 +186,7 @@ impl Walker {
     }
 
     /// The net `points[i][j]`: rows of 3-D points, all of one length, at most
-    /// [`MAX_POINTS`](super::limits::MAX_POINTS) in all (counted before any
+    /// [`MAX_POINTS`](crate::limits::MAX_POINTS) in all (counted before any
     /// point is read).
     fn net(&mut self, v: &Value, height: Result<Option<f64>, ()>) -> Option<Net> {
         let Some(rows) = v.as_array() else {

@@ -25,6 +25,9 @@
 //! `[1e-150, 1e150]`, so that every result is a finite number; the number of
 //! samples by [`t2spline::job::MAX_SAMPLES`].
 
+// The input decides sizes and indices here: no indexing that can panic.
+#![cfg_attr(not(test), deny(clippy::indexing_slicing))]
+
 /// The largest job file, in bytes (64 MiB), also for standard input. A
 /// 100 000-point 3-D job written one number per line is about 40 MB.
 pub const MAX_FILE_BYTES: u64 = 64 << 20;

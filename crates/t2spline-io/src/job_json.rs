@@ -1,4 +1,6 @@
-//! Jobs written back as job files (docs/jobs.md).
+//! Jobs written back as job files (docs/jobs.md), and the models and points
+//! of data files: the writing side of the job format, shared by the job
+//! reader (which re-exports [`job_json`]), the data of fits and readings.
 
 use serde_json::{json, Map, Value};
 use t2spline::job::{Job, Model, ModelVisitor, Samples};
