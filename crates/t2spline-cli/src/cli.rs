@@ -82,7 +82,9 @@ pub struct RunArgs {
     pub csv: Option<PathBuf>,
     /// Also write the sampled curves as one Apache Parquet table into this
     /// file; with several jobs, the folder for `NAME.parquet` per job and
-    /// `summary.parquet`.
+    /// `summary.parquet`, or a `FILE.parquet` for one table of every job's
+    /// samples (columns `job`, `alpha`, one schema whatever the regime; the
+    /// summary then in the `--output` folder).
     #[arg(long, value_name = "FILE|DIR")]
     pub parquet: Option<PathBuf>,
     /// Also compute the derivatives of orders 1 to K of the crisp and the

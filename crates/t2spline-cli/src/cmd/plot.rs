@@ -5,7 +5,7 @@ use t2spline::job::Job;
 use t2spline::Axis;
 use t2spline_plot::{all_figures, render_files, Aspect, FigureOptions, Format, NumberChoice};
 
-use super::prepare::{note_unused_alpha, prepare, reduction_overrides, OptionError};
+use super::prepare::{note_alpha, prepare, reduction_overrides, OptionError};
 use crate::clash::Claims;
 use crate::cli::{AspectArg, AxisArg, FigureArgs, FormatArg, PlotArgs, PointArg};
 use crate::output::Outputs;
@@ -98,7 +98,7 @@ pub fn about_number(e: t2spline_plot::Error) -> anyhow::Error {
 pub fn plot(args: &PlotArgs) -> anyhow::Result<()> {
     let prepared = prepare(&args.job, &reduction_overrides(args.alpha, &args.reduction))?;
     let settings = prepared.settings();
-    note_unused_alpha(
+    note_alpha(
         "plot",
         settings,
         args.alpha.is_some(),
