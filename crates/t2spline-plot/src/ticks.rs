@@ -59,19 +59,6 @@ pub fn tick_label(value: f64, decimals: usize) -> String {
     s.replace('-', "−")
 }
 
-/// A coordinate for an SVG file: two decimals, trailing zeros dropped, no `-0`,
-/// so that files are stable text.
-#[must_use]
-pub fn coord(v: f64) -> String {
-    let s = format!("{v:.2}");
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" {
-        "0".to_owned()
-    } else {
-        s.to_owned()
-    }
-}
-
 /// `v` with at most `digits` significant decimals after trimming trailing
 /// zeros, in fixed notation with an ASCII minus: `0.0448`, `6`, `-0.6`.
 #[must_use]
@@ -136,9 +123,5 @@ mod tests {
         assert_eq!(short(0.044_812, 3), "0.0448");
         assert_eq!(short(6.0, 3), "6");
         assert_eq!(short(-2.345_67, 3), "−2.35");
-        assert_eq!(coord(-0.004), "0");
-        assert_eq!(coord(12.3456), "12.35");
-        assert_eq!(coord(3.0), "3");
-        assert_eq!(coord(10.10), "10.1");
     }
 }

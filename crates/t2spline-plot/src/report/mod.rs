@@ -344,19 +344,6 @@ pub fn render(
         });
     }
     page.job(job_text);
-    if std::env::var("T2SPLINE_DEBUG_SIZES").is_ok() {
-        let n = shown.len();
-        let figures = pack::packed_len(&json!([data_block["figures"], data_block["strings"]]));
-        let downloads = pack::packed_len(&data_block["downloads"]);
-        let numbers = pack::packed_len(&data_block["stops"]);
-        let m = files.first().map_or(1, |(_, t)| t.len().max(1));
-        eprintln!(
-            "frames {n}: figures {} per frame, numbers {} per frame; downloads at {m} frames, {} each",
-            figures / n,
-            numbers / n,
-            downloads / m
-        );
-    }
     page.finish(&pack::pack(&data_block));
     Ok(page.html)
 }

@@ -3,13 +3,13 @@
 
 use std::fmt::Write as _;
 
+use super::number::coord;
 use crate::geometry::Px;
 use crate::labels::Placed;
 use crate::panel_layout::PanelLayout;
 use crate::scene::{Facet, Mark, Xy};
 use crate::simplify::simplify;
 use crate::style::{font_size, Marker, Shape, GREY, WHITE};
-use crate::ticks::coord;
 
 use super::{points_attr, stroke_attrs, text_el};
 

@@ -10,6 +10,7 @@ use std::fmt::Write as _;
 
 mod legend;
 mod marks;
+pub(crate) mod number;
 
 use crate::font::{cap_height, line_height, SVG_FONT_STACK};
 use crate::geometry::{Px, Rect};
@@ -19,7 +20,7 @@ use crate::obstacles::panel_obstacles;
 use crate::panel_layout::PanelLayout;
 use crate::scene::{Figure, Item, Mark, Panel};
 use crate::style::{font_size, Stroke, GRID, INK, WHITE};
-use crate::ticks::coord;
+use number::coord;
 
 /// One piece of a figure's SVG, with a key stable across figures of one kind.
 #[derive(Clone, Debug, PartialEq)]
