@@ -37,7 +37,7 @@ pub const MAX_ENUMERATED_LENGTH_VARIABLES: usize = 16;
 /// The relative accuracy the minimum is solved to (its certified gap).
 pub const LENGTH_MIN_TOLERANCE: f64 = 1e-9;
 /// Nodes expanded at most by branch and bound.
-const BRANCH_BUDGET: usize = 4000;
+const BRANCH_BUDGET: usize = 1000;
 /// Newton iterations at most per smoothing level.
 const NEWTON_STEPS: usize = 60;
 
@@ -408,6 +408,14 @@ struct LengthVertices<'a> {
     /// Position of each variable in `free`, if free.
     slot: Vec<Option<usize>>,
     x: Vec<f64>,
+    /// The derivatives, their norms and the length at `x`.
+    d: Vec<f64>,
+    norms: Vec<f64>,
+    total: f64,
+    /// The nodes of each free variable's control point.
+    ranges: Vec<std::ops::Range<usize>>,
+    /// Updates since the sums were last made afresh.
+    changes: usize,
 }
 
 impl<'a> LengthVertices<'a> {
@@ -416,13 +424,34 @@ impl<'a> LengthVertices<'a> {
         for (j, &v) in free.iter().enumerate() {
             slot[v] = Some(j);
         }
-        LengthVertices {
+        let ranges = free.iter().map(|&v| rule.nodes_of(v / cut.dim)).collect();
+        let mut out = LengthVertices {
             rule,
             cut,
             free,
             slot,
             x: cut.lo.clone(),
-        }
+            d: Vec::new(),
+            norms: Vec::new(),
+            total: 0.0,
+            ranges,
+            changes: 0,
+        };
+        out.refresh();
+        out
+    }
+
+    /// The sums made afresh at `x`.
+    fn refresh(&mut self) {
+        let dim = self.cut.dim;
+        derivatives(self.rule, dim, &self.x, &mut self.d);
+        self.norms = (0..self.rule.len())
+            .map(|q| norm(&self.d[q * dim..(q + 1) * dim]))
+            .collect();
+        self.total = (0..self.rule.len())
+            .map(|q| self.rule.weight[q] * self.norms[q])
+            .sum();
+        self.changes = 0;
     }
 
     fn point(&self, choice: &[bool]) -> Vec<f64> {
@@ -475,11 +504,31 @@ impl VertexProblem for LengthVertices<'_> {
         self.free.len()
     }
 
+    /// Incremental: only the variables that differ from the last vertex
+    /// change, and only the nodes where their control points count.
     fn value(&mut self, choice: &[bool]) -> f64 {
-        for (&v, &c) in self.free.iter().zip(choice) {
-            self.x[v] = if c { self.cut.hi[v] } else { self.cut.lo[v] };
+        let (rule, dim, w) = (self.rule, self.cut.dim, self.rule.width);
+        for (j, (&v, &c)) in self.free.iter().zip(choice).enumerate() {
+            let to = if c { self.cut.hi[v] } else { self.cut.lo[v] };
+            let delta = to - self.x[v];
+            if delta == 0.0 {
+                continue;
+            }
+            self.x[v] = to;
+            self.changes += 1;
+            let (i, cc) = (v / dim, v % dim);
+            for q in self.ranges[j].clone() {
+                let a = rule.r1[q * w + (i - rule.first[q])];
+                self.d[q * dim + cc] += a * delta;
+                let new = norm(&self.d[q * dim..(q + 1) * dim]);
+                self.total += rule.weight[q] * (new - self.norms[q]);
+                self.norms[q] = new;
+            }
         }
-        length(self.rule, self.cut.dim, &self.x)
+        if self.changes > 4096 {
+            self.refresh();
+        }
+        self.total
     }
 
     fn bound(&mut self, fixed: &[Option<bool>]) -> f64 {

@@ -325,16 +325,24 @@ fn nest(lists: &mut [&mut Vec<(f64, Option<Ends>)>]) {
 }
 
 /// The nested brackets of a quantity `f(box)` at every level and function.
+/// The levels are independent: with the feature `parallel` they run on
+/// rayon's pool (each bracket is computed by the same operations either
+/// way).
 fn leveled(
     boxes: &PerMembership<Vec<(f64, CutBox)>>,
-    mut f: impl FnMut(&CutBox) -> Option<Bracket>,
+    f: impl Fn(&CutBox) -> Option<Bracket> + Sync,
 ) -> PerMembership<Vec<(f64, Option<Bracket>)>> {
+    let one = |(alpha, cut): &(f64, CutBox)| (*alpha, f(cut).map(Ends::of));
     let mut all: PerMembership<Vec<(f64, Option<Ends>)>> = PerMembership::from_fn(|m| {
-        boxes
-            .get(m)
-            .iter()
-            .map(|(alpha, cut)| (*alpha, f(cut).map(Ends::of)))
-            .collect()
+        #[cfg(feature = "parallel")]
+        {
+            use rayon::prelude::*;
+            boxes.get(m).par_iter().map(one).collect()
+        }
+        #[cfg(not(feature = "parallel"))]
+        {
+            boxes.get(m).iter().map(one).collect()
+        }
     });
     {
         let PerMembership {
