@@ -56,6 +56,7 @@ mod fuzzy_curve;
 mod fuzzy_methods;
 mod fuzzy_surface;
 mod keyword;
+mod measure;
 mod net;
 mod non_finite;
 mod number;
