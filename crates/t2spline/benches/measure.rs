@@ -87,6 +87,5 @@ fn measure(c: &mut Criterion) {
     g.finish();
 }
 
-#[cfg(not(probe))]
 criterion_group!(benches, measure);
 criterion_main!(benches);

@@ -164,12 +164,9 @@ fn newton_step(hess: &[f64], band: usize, grad: &[f64], free: &[bool], step: &mu
             hess[a * (band + 1) + (b - a)]
         }
     };
-    let mut diag_max = 0.0_f64;
-    for a in 0..n {
-        if free[a] {
-            diag_max = diag_max.max(at(a, a));
-        }
-    }
+    let diag_max = (0..n)
+        .filter(|&a| free[a])
+        .fold(0.0_f64, |m, a| m.max(at(a, a)));
     let mu = 1e-13 * diag_max.max(f64::MIN_POSITIVE);
     // l[i·(band+1) + (i − j)] for j in i−band ..= i.
     let mut l = vec![0.0; n * (band + 1)];
@@ -189,7 +186,7 @@ fn newton_step(hess: &[f64], band: usize, grad: &[f64], free: &[bool], step: &mu
                 s -= l[i * (band + 1) + (i - k)] * l[j * (band + 1) + (j - k)];
             }
             if i == j {
-                if !(s > 0.0) || !s.is_finite() {
+                if s.is_nan() || s <= 0.0 || !s.is_finite() {
                     return false;
                 }
                 l[i * (band + 1)] = s.sqrt();
