@@ -146,3 +146,37 @@ def test_python_arguments_are_checked() -> None:
     # The lower function has no cut above its height 0.6.
     assert [lv["alpha"] for lv in m["length"]["lower"]] == [0.0, 0.6]
     assert math.isclose(m["length"]["upper"][2]["min"], m["length"]["primary"][2]["min"], rel_tol=0.2)
+
+
+README = ROOT / "README.md"
+METHOD = ROOT / "docs" / "method.md"
+
+
+def test_the_readme_transcript(cli: Path) -> None:
+    """The `$ t2spline measure …` block of the README, as printed (`…`
+    stands for lines left out)."""
+    import re
+    import shlex
+
+    text = README.read_text()
+    block = text.split("```text\n$ t2spline measure ", 1)[1].split("```", 1)[0]
+    command, *shown = ("t2spline measure " + block).rstrip("\n").split("\n")
+    argv = shlex.split(command)
+    done = subprocess.run([str(cli), *argv[1:]], cwd=ROOT, capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    pattern = ".*?".join(re.escape(part) for part in "\n".join(shown).split("…"))
+    assert re.fullmatch(pattern, done.stdout.rstrip("\n"), flags=re.DOTALL), done.stdout[:2000]
+
+
+def test_the_numbers_of_the_pages(cli: Path) -> None:
+    curve = t2spline.FuzzyCurve.from_job(EXAMPLE)
+    layers = [
+        curve.layer_curve(name).arc_length()
+        for name in ("upper_left", "primary_left", "lower_left", "crisp", "lower_right", "primary_right", "upper_right")
+    ]
+    assert min(layers) == layers[3]  # the crisp curve is the shortest
+    half = measured(cli, EXAMPLE)["length"]["upper"][5]
+    for page in (README.read_text(), METHOD.read_text()):
+        words = " ".join(page.split())
+        assert f"{min(layers):.2f} to {max(layers):.2f}" in words
+        assert f"from {half['min']:.4f} to {half['max']:.4f}" in words
