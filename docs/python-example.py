@@ -64,14 +64,14 @@ layers = curve.sample(400)                            # seven (400, 2) arrays, b
 stacked = np.stack([layers["upper_left"], layers["primary_left"], layers["lower_left"],
                     layers["crisp"], layers["lower_right"], layers["primary_right"],
                     layers["upper_right"]])
-assert np.all(np.diff(stacked, axis=0) >= 0), "layer curves keep the SPEC §1 order"
+assert np.all(np.diff(stacked, axis=0) >= 0), "layer curves keep the docs/method.md §1 order"
 
 # %% [markdown]
 # ## 3. The solution as alpha varies
 #
 # Stages 2–4 at each alpha: the defuzzified curve moves towards the wider
 # (right) spreads; at alpha = h the type reduction changes from three-term
-# to two-term means, so the distance jumps there (SPEC §3).
+# to two-term means, so the distance jumps there (docs/method.md §3).
 
 # %%
 alphas = np.linspace(0.0, 1.0, 101)

@@ -1,4 +1,4 @@
-"""The alpha-plane value of one number (SPEC §10) at 40 digits, from the
+"""The alpha-plane value of one number (docs/method.md §9) at 40 digits, from the
 definition alone, as an oracle for `crates/t2spline/tests/reductions.rs`.
 
 c_l(z), c_r(z): bisection on the Karnik–Mendel function of the plane at z,

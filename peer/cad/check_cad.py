@@ -378,7 +378,7 @@ def random_job(rng, case):
 
 
 def random_surface(rng, case, folder):
-    """A fuzzy surface (SPEC §9) of degrees 1-4 in each direction, knots of
+    """A fuzzy surface (docs/method.md §8) of degrees 1-4 in each direction, knots of
     one kind per direction, for the surface example."""
     degree = [1 + case % 4, 1 + (case // 4) % 4]
     every = ["clamped", "unclamped", "repeated", "jump", "outside"]

@@ -3,15 +3,15 @@
 Models uncertain data with rational B-spline curves whose control points are
 normal triangular type-2 fuzzy numbers (Zakaria, Wahab and Gobithaasan,
 "Normal Type-2 Fuzzy Rational B-spline Curve"), computed by the Rust engine
-of the t2spline project. Section numbers (SPEC §n) refer to the project's
+of the t2spline project. Section numbers (§n) refer to docs/method.md, the project's
 statement of the method.
 
-One uncertain value is seven ordered numbers and a height (SPEC §1)::
+One uncertain value is seven ordered numbers and a height (docs/method.md §1)::
 
     upper.left <= primary.left <= lower.left <= crisp
                <= lower.right <= primary.right <= upper.right,   0 < h <= 1
 
-and Algorithm 1.1 runs in four stages (SPEC §7):
+and Algorithm 1.1 runs in four stages (docs/method.md §7):
 
 1. the fuzzy control points and the seven layer curves
    ``C(t) = Σ wᵢ Nᵢ,ₚ(t) Pᵢ / Σ wᵢ Nᵢ,ₚ(t)`` through each layer's values;
@@ -31,7 +31,7 @@ run
     validator and engine as ``t2spline run``; the result file's keys, with
     numpy arrays. ``type_reduction=`` (or the job's ``"type_reduction"``)
     chooses ``"paper"`` (the default, stages 3–4 above), ``"centroid"``,
-    ``"nie-tan"`` or ``"alpha-planes"`` (SPEC §10).
+    ``"nie-tan"`` or ``"alpha-planes"`` (docs/method.md §9).
 JobError
     A job that breaks the rules (a ``ValueError``), one problem per line.
 FuzzyNumber, AlphaCut
@@ -44,7 +44,7 @@ FuzzyCurve, Solution
     Stage 1 from numpy arrays, sampled by the engine; stages 2–4 by
     ``FuzzyCurve.solve(alpha, type_reduction=)``.
 NurbsSurface
-    A rational B-spline surface (SPEC §9): evaluation broadcast over ``u``
+    A rational B-spline surface (docs/method.md §8): evaluation broadcast over ``u``
     and ``v``, grids by the grid engine, partial derivatives, normal,
     curvature, isocurves, knot insertion, degree elevation, splitting,
     closest point, bounding box.

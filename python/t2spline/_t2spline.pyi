@@ -73,11 +73,11 @@ def centroid(
     umf: ArrayLike,
     method: CentroidMethod = "km",
 ) -> Centroid:
-    """The centroid of an interval type-2 set given by samples (SPEC §10)."""
+    """The centroid of an interval type-2 set given by samples (docs/method.md §9)."""
 
 @final
 class AlphaCut:
-    """The alpha-cut of a fuzzy number (SPEC §2)."""
+    """The alpha-cut of a fuzzy number (docs/method.md §2)."""
     @property
     def alpha(self) -> float: ...
     @property
@@ -92,7 +92,7 @@ class AlphaCut:
 
 @final
 class FuzzyNumber:
-    """A normal triangular type-2 fuzzy number (SPEC §1)."""
+    """A normal triangular type-2 fuzzy number (docs/method.md §1)."""
     def __new__(
         cls,
         crisp: float,
@@ -118,7 +118,7 @@ class FuzzyNumber:
 
 @final
 class NurbsCurve:
-    """A rational B-spline curve in the plane or in space (SPEC §6)."""
+    """A rational B-spline curve in the plane or in space (docs/method.md §6)."""
     def __new__(
         cls,
         control_points: ArrayLike,
@@ -168,7 +168,7 @@ class NurbsCurve:
 
 @final
 class FuzzyCurve:
-    """A rational B-spline curve with fuzzy control points: stage 1 (SPEC §6-§7)."""
+    """A rational B-spline curve with fuzzy control points: stage 1 (docs/method.md §6–§7)."""
     def __new__(
         cls,
         crisp: ArrayLike,
@@ -272,7 +272,7 @@ class Region:
 
 @final
 class Solution:
-    """Stages 2-4 of Algorithm 1.1 at one level alpha (SPEC §7)."""
+    """Stages 2-4 of Algorithm 1.1 at one level alpha (docs/method.md §7)."""
     @property
     def alpha(self) -> float: ...
     @property
@@ -298,7 +298,7 @@ class Solution:
 
 @final
 class NurbsSurface:
-    """A rational B-spline surface (SPEC §9)."""
+    """A rational B-spline surface (docs/method.md §8)."""
     def __new__(
         cls,
         control_points: ArrayLike,
@@ -350,7 +350,7 @@ class NurbsSurface:
 
 @final
 class FuzzySurface:
-    """A rational B-spline surface with a net of fuzzy control points: stage 1 (SPEC §9)."""
+    """A rational B-spline surface with a net of fuzzy control points: stage 1 (docs/method.md §8)."""
     def __new__(
         cls,
         crisp: ArrayLike,
@@ -423,7 +423,7 @@ class FuzzySurface:
 
 @final
 class SurfaceSolution:
-    """Stages 2-4 of Algorithm 1.1 on the net of a fuzzy surface (SPEC §7, §9)."""
+    """Stages 2-4 of Algorithm 1.1 on the net of a fuzzy surface (docs/method.md §7, §8)."""
     @property
     def alpha(self) -> float: ...
     @property

@@ -224,7 +224,7 @@ def stages(result: Result, *, coords: Coords = (0, 1),
 
 
 def membership(ax: Axes, number: FuzzyNumber, *, samples: int = 401) -> Axes:
-    """The three membership functions of one fuzzy number (SPEC §1) and its
+    """The three membership functions of one fuzzy number (docs/method.md §1) and its
     footprint of uncertainty (between UMF and LMF), evaluated by the Rust
     engine at ``samples`` points over the number's support."""
     lo, hi = number.upper

@@ -65,7 +65,7 @@ Floats = NDArray[np.float64]
 # one literal of several values, and a union at run time too (which the stub
 # checker, mypy's stubtest, compares).
 
-#: The seven layers of SPEC §1, in order.
+#: The seven layers of docs/method.md §1, in order.
 LayerName = Union[
     Literal["upper_left"], Literal["primary_left"], Literal["lower_left"], Literal["crisp"],
     Literal["lower_right"], Literal["primary_right"], Literal["upper_right"],
@@ -87,7 +87,7 @@ DirectionName = Union[Literal["u"], Literal["v"]]
 #: One value for both directions of a surface, or ``(u, v)``.
 PerDirection = Union[int, Tuple[int, int]]
 
-#: A type reduction of stages 3–4 (SPEC §10), as in a job's ``"type_reduction"``.
+#: A type reduction of stages 3–4 (docs/method.md §9), as in a job's ``"type_reduction"``.
 TypeReductionName = Union[
     Literal["paper"], Literal["centroid"], Literal["nie-tan"], Literal["alpha-planes"],
 ]
@@ -100,7 +100,7 @@ Job = Union[Dict[str, Any], str, "os.PathLike[str]"]
 
 
 class _SevenLayers(TypedDict):
-    """The seven layers of SPEC §1, each sampled."""
+    """The seven layers of docs/method.md §1, each sampled."""
 
     upper_left: Floats
     primary_left: Floats

@@ -1,4 +1,4 @@
-"""The objects for notebook work against closed forms and the SPEC's
+"""The objects for notebook work against closed forms and the
 invariants: fuzzy numbers by hand, the quarter circle, operations that keep
 the curve, the engine against the straightforward evaluator, shapes and
 dtypes of every output, reprs."""
@@ -28,7 +28,7 @@ def test_alpha_cut_type_reduction_and_defuzzification_by_hand() -> None:
     # alpha = 0.8 > h: no lower cut, two-term means.
     assert X.alpha_cut(0.8).lower is None
     assert X.type_reduce(0.8) == pytest.approx((0.9, 1.0, 1.15), abs=1e-15)
-    # The jump at alpha = h (SPEC §3): three-term means at h, two just above.
+    # The jump at alpha = h (docs/method.md §3): three-term means at h, two just above.
     at, above = X.type_reduce(0.6), X.type_reduce(0.6 + 1e-12)
     assert abs(at[0] - above[0]) > 0.01
     assert X.alpha_cut(0.6).lower == (1.0, 1.0)
@@ -44,7 +44,7 @@ def test_membership_functions_are_the_three_triangles() -> None:
     close(X.membership(x, which="primary"), [[0, 0, 0.25], [1, 0.75, 0]], rtol=0, atol=1e-15)
     close(X.membership(x, which="lower"), [[0, 0, 0], [0.6, 0.3, 0]], rtol=0, atol=1e-15)
     assert X.membership(1.0).shape == ()
-    # LMF <= primary <= UMF everywhere (SPEC §10's nesting).
+    # LMF <= primary <= UMF everywhere (docs/method.md §9's nesting).
     grid = np.linspace(0, 2.5, 501)
     lmf, pmf, umf = (X.membership(grid, which=w) for w in ("lower", "primary", "upper"))
     assert np.all(lmf <= pmf) and np.all(pmf <= umf)
@@ -146,7 +146,7 @@ def test_the_engine_equals_the_straightforward_evaluator_and_keeps_the_order() -
         assert samples[name].shape == (500, 3) and samples[name].dtype == np.float64
         assert np.abs(samples[name] - reference[:, k]).max() <= 1e-12 * scale, name
     stacked = np.stack([samples[name] for name in LAYERS])
-    assert np.all(np.diff(stacked, axis=0) >= 0), "the SPEC §1 order of the layers"
+    assert np.all(np.diff(stacked, axis=0) >= 0), "the docs/method.md §1 order of the layers"
     uniform = curve.sample(11)
     assert np.array_equal(uniform["params"], curve.uniform_params(11))
     assert curve.sample(0)["crisp"].shape == (0, 3)

@@ -1,4 +1,4 @@
-"""Type reductions from Python (SPEC §10): `run`'s `type_reduction=` and the
+"""Type reductions from Python (docs/method.md §9): `run`'s `type_reduction=` and the
 job key equal `t2spline run --type-reduction` bit for bit, `solve(alpha,
 type_reduction=)` of curves and surfaces equals `run`'s, an unused alpha is
 warned about, and `centroid` of sampled sets against a brute force over every

@@ -1,6 +1,6 @@
 """`NurbsSurface`, `FuzzySurface` and `SurfaceSolution` against closed
 forms (a bilinear patch, a plane by linear precision, a quarter cylinder with
-exact weights) and the SPEC's invariants: operations that keep the surface,
+exact weights) and the invariants of docs/method.md: operations that keep the surface,
 the grid engine against the straightforward evaluator, seven ordered layers,
 shapes and dtypes of every output, broadcasting, reprs."""
 
@@ -193,7 +193,7 @@ def test_fuzzy_surface_layers_are_ordered_and_the_engine_agrees() -> None:
         assert np.array_equal(s.layer_surface(name).eval(0.4, 0.7), s.eval_layers(0.4, 0.7)[k])
         assert np.array_equal(s.layer_surface(name).control_points, s.layer_control_points(name))
     stacked = np.stack([samples[name] for name in LAYERS])
-    assert np.all(np.diff(stacked, axis=0) >= 0), "the SPEC §1 order of the layers"
+    assert np.all(np.diff(stacked, axis=0) >= 0), "the docs/method.md §1 order of the layers"
     uniform = s.sample(6, 4)
     assert [uniform["u"].tolist(), uniform["v"].tolist()] == [list(a) for a in s.uniform_params(6, 4)]
     assert np.array_equal(s.crisp_surface().control_points, s.crisp)

@@ -59,7 +59,7 @@ pub enum Command {
 /// Arguments of `t2spline run`.
 #[derive(Debug, Args)]
 pub struct RunArgs {
-    /// The job file (JSON, see SPEC §8); `-` reads standard input. Several
+    /// The job file (JSON, see docs/jobs.md); `-` reads standard input. Several
     /// job files run in parallel, one result each (see `-o`).
     #[arg(value_name = "JOB", required_unless_present = "jobs")]
     pub job: Vec<PathBuf>,

@@ -5,7 +5,7 @@
 //! |---|---|
 //! | 0 | success; also when the reader of standard output closed the pipe early |
 //! | 1 | internal error: a bug (a result that is not finite); nothing was written |
-//! | 2 | invalid input: a usage error (clap), an option value that breaks a rule, an output that would overwrite an input or another output of the run, or a job or data file that breaks a rule or a limit (JSON syntax, keys, SPEC rules, size, encoding); also any error of another layer (the options of `fit`, a figure `plot` cannot draw), which are about the input |
+//! | 2 | invalid input: a usage error (clap), an option value that breaks a rule, an output that would overwrite an input or another output of the run, or a job or data file that breaks a rule or a limit (JSON syntax, keys, the method's rules, size, encoding); also any error of another layer (the options of `fit`, a figure `plot` cannot draw), which are about the input |
 //! | 3 | the job cannot be read (missing, not permitted, a folder, an I/O error) |
 //! | 4 | an output cannot be written (missing folder, not permitted, disk full, standard output closed or failing, a file with several hard links); existing outputs are untouched |
 //!

@@ -11,7 +11,7 @@ use predicates::prelude::*;
 use serde_json::{json, Value};
 use t2spline::job::Overrides;
 
-/// The worked example of SPEC §8 (alpha 0.8 above h = 0.6, 101 samples).
+/// The worked example of docs/jobs.md (alpha 0.8 above h = 0.6, 101 samples).
 fn example() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/paper-alg-1-1.json")
 }

@@ -36,7 +36,7 @@ fn fits_the_example_into_a_job_that_runs() {
         ))
         // The README quotes these numbers.
         .stderr(predicate::str::contains(
-            "each layer fitted on its own would break the order of SPEC §1 at 35 place(s)",
+            "each layer fitted on its own would break the order of the seven values at 35 place(s)",
         ))
         .stderr(predicate::str::contains(
             "upper_left      1.606e-1  points[8].y   spread  1.606e-1  points[8].y",
@@ -108,7 +108,7 @@ fn independent_fit_of_the_example_is_refused_and_writes_nothing() {
         .assert()
         .code(2)
         .stdout("")
-        .stderr(predicate::str::contains("fitting every layer on its own breaks the order of SPEC §1 at"))
+        .stderr(predicate::str::contains("fitting every layer on its own breaks the order of the seven values at"))
         .stderr(predicate::str::is_match(
             r"t2spline: .*fit-measurements.json: control point \d+, [xy]: the order [a-z.]+ <= [a-z.]+ is broken: ",
         ).unwrap())

@@ -1,4 +1,4 @@
-//! The `t2spline` binary on surface jobs (SPEC §9), run for real: the result
+//! The `t2spline` binary on surface jobs (docs/method.md §8), run for real: the result
 //! keys and their shapes, values equal to the library's at every grid point,
 //! `validate`, `--samples U,V`, `--alpha`, `--csv DIR`, the refusals of
 //! `--derivatives`, `plot` and `report`, and every kind of bad input as a

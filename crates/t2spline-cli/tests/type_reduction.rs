@@ -1,4 +1,4 @@
-//! `--type-reduction` and the job key `type_reduction` (SPEC §10) through the
+//! `--type-reduction` and the job key `type_reduction` (docs/method.md §9) through the
 //! built binary: the flag overrides the job, the result names the reduction,
 //! an alpha the reduction does not use is noted on standard error; `plot`,
 //! `report` and `export` take the flag too, surface jobs run with every

@@ -19,9 +19,9 @@ use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 
+use crate::error::Error;
 use crate::target::{resolve, Target};
 use crate::temporary::{folder, Temporary};
-use crate::Error;
 
 /// Writes `bytes` to `path` atomically: into a temporary file in the same folder,
 /// flushed to disk, then renamed over `path`. If anything fails, `path` is left

@@ -6,29 +6,43 @@ use std::path::{Path, PathBuf};
 use t2spline::job::RunOutput;
 
 use crate::atomic::Staged;
+use crate::error::Error;
 use crate::number;
-use crate::table::{csv_tables, Table};
-use crate::Error;
+use crate::table::{stage_tables, Table};
 
-/// The files [`write_csv`] writes, with what each holds.
+/// The file of stage 1: the seven layer curves.
+pub const STAGE1_CSV: &str = "stage1-layers.csv";
+/// The file of stage 2: the alpha-cut layer curves.
+pub const STAGE2_CSV: &str = "stage2-alpha-cut.csv";
+/// The file of stage 3: the type-reduced curves.
+pub const STAGE3_CSV: &str = "stage3-type-reduced.csv";
+/// The file of stage 4: the crisp and the defuzzified curve.
+pub const STAGE4_CSV: &str = "stage4-defuzzified.csv";
+
+/// The files [`write_csv`] writes, with what each holds, in the order of the
+/// stages.
 pub const CSV_FILES: [(&str, &str); 4] = [
+    (STAGE1_CSV, "the seven layer curves of the fuzzy curve"),
     (
-        "stage1-layers.csv",
-        "the seven layer curves of the fuzzy curve",
-    ),
-    (
-        "stage2-alpha-cut.csv",
+        STAGE2_CSV,
         "the alpha-cut layer curves that exist at this alpha",
     ),
+    (STAGE3_CSV, "the type-reduced left, crisp and right curves"),
     (
-        "stage3-type-reduced.csv",
-        "the type-reduced left, crisp and right curves",
-    ),
-    (
-        "stage4-defuzzified.csv",
+        STAGE4_CSV,
         "the crisp and the defuzzified curve and their distance",
     ),
 ];
+
+/// The CSV files' tables by file name: the four stages, then
+/// [`DERIVATIVES_CSV`] when the result has derivatives.
+fn csv_tables(result: &RunOutput) -> Vec<(&'static str, Table<'_>)> {
+    let (stages, derivatives) = stage_tables(result);
+    let names = [STAGE1_CSV, STAGE2_CSV, STAGE3_CSV, STAGE4_CSV];
+    let mut tables: Vec<_> = names.into_iter().zip(stages).collect();
+    tables.extend(derivatives.map(|d| (DERIVATIVES_CSV, d)));
+    tables
+}
 
 /// Writes one table as CSV: a header of column names, then one line per
 /// row, numbers in [`number::csv`]'s form, `\n` line ends (no quoting: names

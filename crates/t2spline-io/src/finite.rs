@@ -11,7 +11,7 @@ use std::fmt;
 
 use serde::ser::{self, Impossible, Serialize};
 
-use crate::Error;
+use crate::error::Error;
 
 /// `Ok` if every `f32`/`f64` in `value` is finite.
 ///

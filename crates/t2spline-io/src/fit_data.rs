@@ -1,6 +1,6 @@
 //! Data files for `t2spline fit`: fuzzy data points in, a job file out.
 //!
-//! A data file has the keys of a job file (SPEC §8) except `weights` and
+//! A data file has the keys of a job file (docs/jobs.md) except `weights` and
 //! `knots`, which the fit computes (`type_reduction` among them, carried to
 //! the job); its `points` are fuzzy *data* points. It
 //! is read as a job is ([`parse_data`](crate::parse_data)): in one typed
@@ -14,8 +14,8 @@ use t2spline::fit::{FuzzyData, OrderViolation};
 use t2spline::job::Model;
 use t2spline::{Alpha, TypeReduction};
 
-use crate::job::write::model_json;
-use crate::{Error, Problem};
+use crate::error::{Error, Problem};
+use crate::job_json::model_json;
 
 /// A validated data file.
 #[derive(Clone, Debug, PartialEq)]
@@ -53,7 +53,7 @@ impl FitData {
         self.len() == 0
     }
 
-    /// The job file of a fitted model, keys in the order of SPEC §8: the
+    /// The job file of a fitted model, keys in the order of docs/jobs.md: the
     /// file's `description`, its `order` or `degree` key, the weights and
     /// knots of the fit, the file's `alpha`, `type_reduction`, `lower_height`
     /// and `samples`,
@@ -127,15 +127,15 @@ impl FitData {
         }
     }
 
-    /// The error for a fit whose control points break the order of SPEC §1:
+    /// The error for a fit whose control points break the order of docs/method.md §1:
     /// one line per broken inequality (at most
-    /// [`MAX_PROBLEMS`](crate::job::limits::MAX_PROBLEMS), then a count of the rest),
+    /// [`MAX_PROBLEMS`](crate::limits::MAX_PROBLEMS), then a count of the rest),
     /// then `advice`, each naming this file.
     #[must_use]
     pub fn order_error(&self, violations: &[OrderViolation], advice: &str) -> Error {
-        let limit = crate::job::limits::MAX_PROBLEMS;
+        let limit = crate::limits::MAX_PROBLEMS;
         let mut problems = vec![Problem::new(format!(
-            "fitting every layer on its own breaks the order of SPEC §1 at {} place(s) of the control points:",
+            "fitting every layer on its own breaks the order of the seven values at {} place(s) of the control points:",
             violations.len()
         ))];
         problems.extend(

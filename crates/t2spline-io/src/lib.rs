@@ -2,7 +2,7 @@
 //!
 //! This crate reads and writes; the core crate `t2spline` computes.
 //!
-//! - [`parse_job`] / [`read_job`]: the job file of SPEC §8 (a curve) or §9
+//! - [`parse_job`] / [`read_job`]: the job file of docs/jobs.md (a curve) or docs/method.md §8
 //!   (a surface, its points as rows of a net), validated with every problem
 //!   reported at once, each naming its place (`points[2].y`,
 //!   `points[2][1].y`, `weights[1]`, `knots.v`) with its line and column, and
@@ -74,14 +74,17 @@ mod error;
 mod finite;
 mod fit_data;
 pub mod job;
+mod job_json;
 #[cfg(feature = "parquet")]
 mod keys;
+mod limits;
 mod number;
 #[cfg(feature = "parquet")]
 mod parquet;
 mod prepared;
 mod pretty;
 mod printable;
+mod read;
 mod readings;
 pub mod set;
 mod summary;

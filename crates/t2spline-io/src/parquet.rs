@@ -184,18 +184,19 @@ fn optional<T: Clone>(values: impl Iterator<Item = Option<T>>) -> (Vec<T>, Vec<i
 /// The errors of `writer`.
 pub fn write_summary_parquet<W: Write + Send>(
     writer: W,
-    jobs: &[crate::JobSummary],
+    jobs: &[crate::summary::JobSummary],
 ) -> std::io::Result<()> {
     write_summary(writer, jobs).map_err(io_error)
 }
 
 fn write_summary<W: Write + Send>(
     writer: W,
-    jobs: &[crate::JobSummary],
+    jobs: &[crate::summary::JobSummary],
 ) -> Result<(), ParquetError> {
     const OPTIONAL: Repetition = Repetition::OPTIONAL;
     const REQUIRED: Repetition = Repetition::REQUIRED;
-    let [name, file, status, reduction, regime, alpha, max, rms, message] = crate::SUMMARY_COLUMNS;
+    let [name, file, status, reduction, regime, alpha, max, rms, message] =
+        crate::summary::SUMMARY_COLUMNS;
     let fields = vec![
         text(name, REQUIRED)?,
         text(file, REQUIRED)?,
@@ -210,10 +211,11 @@ fn write_summary<W: Write + Send>(
     let mut out =
         SerializedFileWriter::new(writer, schema(fields)?, properties(Vec::new(), false))?;
     let mut group = out.next_row_group()?;
-    let strings = |f: &dyn Fn(&crate::JobSummary) -> Option<&str>| {
+    let strings = |f: &dyn Fn(&crate::summary::JobSummary) -> Option<&str>| {
         optional(jobs.iter().map(|j| f(j).map(ByteArray::from)))
     };
-    let numbers = |f: &dyn Fn(&crate::JobSummary) -> Option<f64>| optional(jobs.iter().map(f));
+    let numbers =
+        |f: &dyn Fn(&crate::summary::JobSummary) -> Option<f64>| optional(jobs.iter().map(f));
     let columns_of_text = [
         strings(&|j| Some(&j.name)),
         strings(&|j| Some(&j.file)),

@@ -15,8 +15,10 @@
 use t2spline::job::{Job, Overrides, RunOutput, Setting, Settings};
 use t2spline::{Alpha, TypeReduction};
 
+use crate::error::{Error, Problem};
+use crate::finite::check_finite;
 use crate::job::locate;
-use crate::{check_finite, parse_job, Error, Problem};
+use crate::job::parse_job;
 
 /// What a run does when neither the job nor the front end gives alpha and
 /// the type reduction needs it.

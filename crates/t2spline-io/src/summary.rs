@@ -15,9 +15,9 @@ pub struct JobSummary {
     /// `internal`.
     pub status: String,
     /// The type reduction's name (`paper`, `centroid`, `nie-tan`,
-    /// `alpha-planes`; SPEC §10), if it ran.
+    /// `alpha-planes`; docs/method.md §9), if it ran.
     pub type_reduction: Option<String>,
-    /// `alpha <= h`, `alpha > h` or `mixed` (SPEC §3), if it ran with the
+    /// `alpha <= h`, `alpha > h` or `mixed` (docs/method.md §3), if it ran with the
     /// paper's type reduction.
     pub regime: Option<String>,
     /// The level alpha, if it ran with the paper's type reduction (the only

@@ -3,10 +3,10 @@
 //!
 //! Columns borrow the result's vectors (structure of arrays, [`Points`]);
 //! nothing is copied. A surface's `u` and `v` repeat over the grid (`v`
-//! fastest) and the distance is computed row by row, so neither is stored.
+//! fastest) and the distance is taken row by row from the core
+//! ([`Points::distance_at`]), so neither is stored.
 
 use t2spline::job::{Parameters, Points, RunOutput};
-use t2spline::pipeline::euclidean_norm;
 use t2spline::Layer;
 
 /// The coordinate names of columns: `crisp_x`, `crisp_y`, `crisp_z`.
@@ -33,16 +33,8 @@ impl Values<'_> {
             Values::Slice(v) => v[i],
             Values::Outer(u, sv) => u[i / sv],
             Values::Inner(v) => v[i % v.len()],
-            Values::Distance(a, b) => {
-                // Scaled, so that a distance near 1e-170 does not underflow
-                // when squared.
-                let mut d = [0.0; 3];
-                let dims = a.dimension().min(3);
-                for (axis, d) in d[..dims].iter_mut().enumerate() {
-                    *d = a.coord(axis)[i] - b.coord(axis)[i];
-                }
-                euclidean_norm(&d[..dims])
-            }
+            // Rows are counted from the points themselves, so `i` is in range.
+            Values::Distance(a, b) => a.distance_at(b, i).unwrap_or(f64::NAN),
         }
     }
 
@@ -175,10 +167,10 @@ fn distance(result: &RunOutput) -> Column<'_> {
     }
 }
 
-/// The CSV files' tables by file name: the four stages, then `derivatives`
-/// when the result has them (names from [`crate::CSV_FILES`] and
-/// [`crate::DERIVATIVES_CSV`]).
-pub(crate) fn csv_tables<'r>(result: &'r RunOutput) -> Vec<(&'static str, Table<'r>)> {
+/// The tables of the four stages, in order (stage 4 with the `distance`
+/// column), and the derivatives' table when the result has them: one CSV file
+/// each.
+pub(crate) fn stage_tables<'r>(result: &'r RunOutput) -> ([Table<'r>; 4], Option<Table<'r>>) {
     let f = Families::of(result);
     let rows = result.samples.params.count();
     let table = |family: &[(String, &'r Points)], extra: Option<Column<'r>>| {
@@ -187,19 +179,13 @@ pub(crate) fn csv_tables<'r>(result: &'r RunOutput) -> Vec<(&'static str, Table<
         columns.extend(extra);
         Table { columns, rows }
     };
-    let mut tables = vec![
-        (crate::CSV_FILES[0].0, table(&f.stage1, None)),
-        (crate::CSV_FILES[1].0, table(&f.stage2, None)),
-        (crate::CSV_FILES[2].0, table(&f.stage3, None)),
-        (
-            crate::CSV_FILES[3].0,
-            table(&f.stage4, Some(distance(result))),
-        ),
+    let stages = [
+        table(&f.stage1, None),
+        table(&f.stage2, None),
+        table(&f.stage3, None),
+        table(&f.stage4, Some(distance(result))),
     ];
-    if let Some(d) = &f.derivatives {
-        tables.push((crate::DERIVATIVES_CSV, table(d, None)));
-    }
-    tables
+    (stages, f.derivatives.as_deref().map(|d| table(d, None)))
 }
 
 /// Every sampled column of a result in one table, each curve once, with

@@ -1,4 +1,4 @@
-//! Job files (SPEC §8): every rule a file can break is reported as one line
+//! Job files (docs/jobs.md): every rule a file can break is reported as one line
 //! naming the file, the place and the rule, and all problems at once.
 
 use serde_json::{json, Value};
@@ -405,7 +405,7 @@ fn alpha_must_be_a_number_in_the_unit_interval() {
 }
 
 // ---------------------------------------------------------------------------
-// type_reduction (SPEC §10)
+// type_reduction (docs/method.md §9)
 // ---------------------------------------------------------------------------
 
 #[test]

@@ -72,7 +72,7 @@ fn grid() -> impl Strategy<Value = [usize; 2]> {
     ]
 }
 
-/// A valid surface job (SPEC §9).
+/// A valid surface job (docs/method.md §8).
 fn surface_job() -> impl Strategy<Value = Job> {
     (
         strategies::fuzzy_surface::<3>(),

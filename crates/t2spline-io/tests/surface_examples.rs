@@ -1,5 +1,5 @@
 //! The two surface examples, read from `examples/` and run through
-//! `Job::run`, against closed forms written here from SPEC §2–§4 (not from
+//! `Job::run`, against closed forms written here from docs/method.md §2–§4 (not from
 //! the library): the quarter cylinder of fuzzy radius stays a cylinder at
 //! every stage, of the radius the stages' factors predict; the terrain's
 //! solution lies below the crisp surface, furthest at the corner farthest
@@ -30,7 +30,7 @@ fn run(job: &Job, alpha: f64, samples: [u64; 2]) -> RunOutput {
 }
 
 /// The value of the number `n` (a job file's number) at one end of every
-/// stage, by SPEC §2–§4 directly: the alpha-cut feet `cut(e) = e + s·(crisp −
+/// stage, by docs/method.md §2–§4 directly: the alpha-cut feet `cut(e) = e + s·(crisp −
 /// e)` (`s = α` for upper and primary, `α/h` for lower, absent above h), the
 /// type-reduced ends (means of the cut feet of each side), and the
 /// defuzzified value (their centroid with the crisp value).
@@ -126,7 +126,7 @@ fn the_cylinder_example_is_the_quarter_cylinder_with_proportional_spreads() {
 }
 
 /// Every control value `c` of x and y is `c` times the unit number, and every
-/// stage of SPEC §2–§4 is linear in the number's values with coefficients
+/// stage of docs/method.md §2–§4 is linear in the number's values with coefficients
 /// that do not depend on them (one height): each stage maps `c` to `c·f`,
 /// with `f` the stage's value of the unit number. A rational surface is
 /// linear in its control points, so each stage's surface is the crisp

@@ -1,4 +1,4 @@
-//! Job files of surfaces (SPEC §9): what a surface job is, its defaults, and
+//! Job files of surfaces (docs/method.md §8): what a surface job is, its defaults, and
 //! every rule it can break reported at its line and column, all at once, as
 //! for curves.
 

@@ -6,8 +6,8 @@
 //! distance at many alphas); plotting never recomputes the method.
 
 use t2spline::job::{Job, Model, ModelVisitor, Overrides, Points, RunOutput, Samples, Spline};
-use t2spline::pipeline::euclidean_norm;
 use t2spline::sampling::{Params, Sampler};
+use t2spline::vector::euclidean_norm;
 use t2spline::{Alpha, Axis, FuzzyCurve, FuzzySurface, Nt2Number, TypeReduction};
 
 use crate::Error;
@@ -59,7 +59,7 @@ pub fn compute(job: &Job, alpha: Alpha) -> Result<RunOutput, Error> {
 }
 
 /// The result of the job at `alpha` with the type reduction `method`
-/// (SPEC §10), sampled for figures, as [`compute`].
+/// (docs/method.md §9), sampled for figures, as [`compute`].
 ///
 /// # Errors
 /// As [`compute`].

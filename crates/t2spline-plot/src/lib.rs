@@ -2,7 +2,7 @@
 //!
 //! Publication figures of every stage of the method (the paper's Figs. 3.1,
 //! 4.1–4.4 and 5.1–5.4, the distance along the curve for several alphas and
-//! against alpha, and the type reductions of SPEC §10 compared) as SVG and
+//! against alpha, and the type reductions of docs/method.md §9 compared) as SVG and
 //! PNG, and a self-contained HTML report with an alpha slider, a
 //! type-reduction selector and downloads.
 //!

@@ -38,7 +38,7 @@ macro_rules! classes {
 }
 
 classes! {
-/// A rational B-spline curve in the plane or in space (SPEC §6, paper
+/// A rational B-spline curve in the plane or in space (docs/method.md §6, paper
 /// Def. 5.1)::
 ///
 ///     C(t) = Σᵢ wᵢ Nᵢ,ₚ(t) Pᵢ / Σᵢ wᵢ Nᵢ,ₚ(t),   t in [U[p], U[n]]
@@ -64,7 +64,7 @@ classes! {
 /// ------
 /// TypeError, ValueError
 ///     For an argument of the wrong dtype or shape (named), NaN or infinity,
-///     and every rule of SPEC §6 (too few control points, a weight that is not
+///     and every rule of docs/method.md §6 (too few control points, a weight that is not
 ///     positive, decreasing knots, ...), naming the place.
 ///
 /// Examples
@@ -83,7 +83,7 @@ classes! {
     "NurbsCurve": PyNurbsCurve(Nurbs = NurbsCurve);
 
 /// A normal type-2 fuzzy rational B-spline curve: stage 1 of Algorithm 1.1
-/// (SPEC §6–§7, paper Def. 5.1 and Fig. 5.1).
+/// (docs/method.md §6–§7, paper Def. 5.1 and Fig. 5.1).
 ///
 /// The control points are fuzzy points, one fuzzy number (``FuzzyNumber``)
 /// per coordinate. The seven *layer curves* go through one value of every
@@ -117,7 +117,7 @@ classes! {
 /// ------
 /// TypeError, ValueError
 ///     For a wrong dtype or shape (naming the argument and the shape
-///     expected), NaN or infinity, and every rule of SPEC §1 and §6, naming
+///     expected), NaN or infinity, and every rule of docs/method.md §1 and §6, naming
 ///     the place: ``points[2].y: the order lower.left <= crisp is broken: 2.1 > 2``.
 ///
 /// Examples
@@ -134,7 +134,7 @@ classes! {
 /// array([0.9, 0.9])
     "FuzzyCurve": PyFuzzyCurve(Fuzzy = FuzzyCurve);
 
-/// Stages 2–4 of Algorithm 1.1 at one level alpha (SPEC §7, paper Figs.
+/// Stages 2–4 of Algorithm 1.1 at one level alpha (docs/method.md §7, paper Figs.
 /// 5.2–5.4), from ``FuzzyCurve.solve(alpha, type_reduction=)``.
 ///
 /// 2. alpha-cut control points (``alpha_cut``) and their curves;
@@ -145,13 +145,13 @@ classes! {
 ///    (``defuzzified``), the crisp type-2 solution curve through them, and its
 ///    distance to the crisp curve (``distance``).
 ///
-/// With another type reduction (SPEC §10: ``"centroid"``, ``"nie-tan"``,
+/// With another type reduction (docs/method.md §9: ``"centroid"``, ``"nie-tan"``,
 /// ``"alpha-planes"``) stage 2 is cut at alpha = 0 and stages 3–4 are that
 /// reduction's, exactly as ``run(..., type_reduction=)`` computes them.
 ///
 /// The stages act on the control points, number by number, as Algorithm 1.1
 /// does; with one lower height for every number this equals applying them to
-/// the curve (SPEC §6).
+/// the curve (docs/method.md §6).
 ///
 /// Examples
 /// --------
@@ -167,7 +167,7 @@ classes! {
 /// 0.0
     "Solution": PySolution(Solved = Solution);
 
-/// A rational B-spline surface in space or in the plane (SPEC §9), the
+/// A rational B-spline surface in space or in the plane (docs/method.md §8), the
 /// tensor product of two rational B-spline curves::
 ///
 ///     S(u, v) = Σᵢ Σⱼ wᵢⱼ Nᵢ,ₚ(u) Mⱼ,q(v) Pᵢⱼ / Σᵢ Σⱼ wᵢⱼ Nᵢ,ₚ(u) Mⱼ,q(v)
@@ -175,7 +175,7 @@ classes! {
 /// over ``(u, v)`` in ``[U[p], U[nu]] × [V[q], V[nv]]``, with a net of
 /// ``nu × nv`` control points ``Pᵢⱼ`` (row ``i`` along u, column ``j`` along
 /// v), weights ``wᵢⱼ > 0``, degrees ``p`` and ``q`` and a knot vector per
-/// direction (default: clamped uniform). Every rule of a curve (SPEC §6)
+/// direction (default: clamped uniform). Every rule of a curve (docs/method.md §6)
 /// holds in each direction: at an interior knot of full multiplicity the
 /// value from the right is taken, at the end of a domain the last non-empty
 /// span is used.
@@ -197,7 +197,7 @@ classes! {
 /// ------
 /// TypeError, ValueError
 ///     For an argument of the wrong dtype or shape (named), NaN or infinity,
-///     and every rule of SPEC §9 (too few control points in a direction, a
+///     and every rule of docs/method.md §8 (too few control points in a direction, a
 ///     weight that is not positive, decreasing knots, ...), naming the place:
 ///     ``weights[1][0] = 0 must be finite and greater than 0``.
 ///
@@ -222,7 +222,7 @@ classes! {
     "NurbsSurface": PyNurbsSurface(NurbsNet = NurbsSurface);
 
 /// A normal type-2 fuzzy rational B-spline surface: stage 1 of Algorithm
-/// 1.1 on a net of fuzzy control points (SPEC §9, the paper's tensor-product
+/// 1.1 on a net of fuzzy control points (docs/method.md §8, the paper's tensor-product
 /// extension).
 ///
 /// The control points ``P̃ᵢⱼ`` are fuzzy points, one fuzzy number per
@@ -255,7 +255,7 @@ classes! {
 /// ------
 /// TypeError, ValueError
 ///     For a wrong dtype or shape (naming the argument and the shape
-///     expected), NaN or infinity, and every rule of SPEC §1 and §9, naming
+///     expected), NaN or infinity, and every rule of docs/method.md §1 and §8, naming
 ///     the place: ``points[1][2].z: the order lower.left <= crisp is broken: 0.5 > 0.25``.
 ///
 /// Examples
@@ -279,7 +279,7 @@ classes! {
     "FuzzySurface": PyFuzzySurface(FuzzyNet = FuzzySurface);
 
 /// Stages 2–4 of Algorithm 1.1 at one level alpha on the control net of a
-/// fuzzy surface (SPEC §7, §9), from ``FuzzySurface.solve(alpha,
+/// fuzzy surface (docs/method.md §7, §8), from ``FuzzySurface.solve(alpha,
 /// type_reduction=)``: number by number exactly as ``Solution`` for a curve.
 ///
 /// 2. alpha-cut control nets (``alpha_cut``) and their surfaces;
@@ -289,7 +289,7 @@ classes! {
 ///    surface through it, and its distance to the crisp surface
 ///    (``distance``).
 ///
-/// With another type reduction than the paper's (SPEC §10) stage 2 is cut at
+/// With another type reduction than the paper's (docs/method.md §9) stage 2 is cut at
 /// alpha = 0 and stages 3–4 are that reduction's, exactly as
 /// ``run(..., type_reduction=)`` computes them.
 ///

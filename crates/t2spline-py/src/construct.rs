@@ -287,7 +287,7 @@ impl FuzzyArrays {
     }
 
     /// The points in their dimension, in net order (row by row), every
-    /// number checked (SPEC §1).
+    /// number checked (docs/method.md §1).
     ///
     /// # Errors
     /// The first broken rule, naming its place (`points[2].y: the order …`,

@@ -77,7 +77,7 @@ macro_rules! curve_methods {
                 (d.start, d.end)
             }
 
-            /// ``count`` uniform parameters over the domain (SPEC §8)::
+            /// ``count`` uniform parameters over the domain (docs/jobs.md)::
             ///
             ///     tᵢ = a + (b − a)·i/(count − 1),   i = 0 … count − 1, the last exactly b
             ///

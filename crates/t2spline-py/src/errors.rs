@@ -19,7 +19,7 @@ pyo3::create_exception!(
     JobError,
     PyValueError,
     "A job (a dict or a job file) that breaks the rules of the job file\n\
-     (SPEC §8); a ValueError.\n\n\
+     (docs/jobs.md); a ValueError.\n\n\
      The message holds one line per problem, as ``t2spline run`` prints them\n\
      (``file:line:column: place: rule``); ``problems`` is the list of those\n\
      lines. Every problem is reported, not only the first.\n\n\

@@ -22,7 +22,7 @@ use crate::keyword;
 /// spreads as nested non-negative increments (non-negative least squares,
 /// from the lower spreads outwards), so the control points are always valid
 /// fuzzy numbers; with ``"independent"`` each layer is fitted on its own, and
-/// a fit whose control points break the order of SPEC §1 is an error.
+/// a fit whose control points break the order of docs/method.md §1 is an error.
 ///
 /// Parameters
 /// ----------
@@ -115,7 +115,7 @@ pub(crate) fn fit<'py>(
             })?,
         Err(violations) => {
             let mut lines = vec![format!(
-                "fitting every layer on its own breaks the order of SPEC §1 at {} place(s) of the control points:",
+                "fitting every layer on its own breaks the order of the seven values at {} place(s) of the control points:",
                 violations.len()
             )];
             lines.extend(violations.iter().map(ToString::to_string));

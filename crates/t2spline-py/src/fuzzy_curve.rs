@@ -1,4 +1,4 @@
-//! `FuzzyCurve`: stage 1 of Algorithm 1.1 (SPEC §6–§7), a rational B-spline
+//! `FuzzyCurve`: stage 1 of Algorithm 1.1 (docs/method.md §6–§7), a rational B-spline
 //! whose control points are fuzzy points; its seven layer curves sampled by
 //! the engine straight into one numpy buffer, its operations on all layers
 //! at once, and `solve` for stages 2–4.
@@ -79,7 +79,7 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
     /// Returns
     /// -------
     /// numpy.ndarray
-    ///     Shape ``t.shape + (7, d)``, layers in SPEC order (``upper_left`` …
+    ///     Shape ``t.shape + (7, d)``, layers in the order of docs/method.md §1 (``upper_left`` …
     ///     ``upper_right``, ``crisp`` at index 3).
     fn eval_layers<'py>(
         &self,
@@ -95,7 +95,7 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
 
     /// The seven layer curves at many parameters by the sampling engine: one
     /// power form of the rational basis per knot span for all layers, written
-    /// straight into one numpy buffer (no per-point work in Python), the SPEC
+    /// straight into one numpy buffer (no per-point work in Python), the docs/method.md
     /// §1 order of the layers kept exactly, multi-threaded for large jobs.
     ///
     /// Parameters

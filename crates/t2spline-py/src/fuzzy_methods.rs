@@ -49,7 +49,7 @@ macro_rules! fuzzy_methods {
         $then!($class $(, $extra)* {
             $($own)*
 
-            /// Stages 2–4 at level ``alpha`` (SPEC §7, §9): alpha-cut, type
+            /// Stages 2–4 at level ``alpha`` (docs/method.md §7, §8): alpha-cut, type
             /// reduction and defuzzification of every control point, as a
             /// ``Solution`` (of a curve) or a ``SurfaceSolution`` (of a
             /// surface).
@@ -62,7 +62,7 @@ macro_rules! fuzzy_methods {
             ///     alpha = 0, and an alpha given anyway is checked and set aside
             ///     with a ``UserWarning``, as ``run`` does.
             /// type_reduction : {"paper", "centroid", "nie-tan", "alpha-planes"}, optional
-            ///     The type reduction of stages 3–4 (SPEC §10), default
+            ///     The type reduction of stages 3–4 (docs/method.md §9), default
             ///     ``"paper"``.
             ///
             /// Raises

@@ -1,5 +1,5 @@
 //! `FuzzySurface`: stage 1 of Algorithm 1.1 on a net of fuzzy control
-//! points (SPEC §9); its seven layer surfaces on a grid by the grid engine,
+//! points (docs/method.md §8); its seven layer surfaces on a grid by the grid engine,
 //! the curvature of each layer, its operations on all layers at once
 //! (`surface_methods.rs`), the fuzzy numbers of its net
 //! (`fuzzy_methods.rs`), and `solve` for stages 2–4.
@@ -90,7 +90,7 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
     }
 
     /// The point of every layer surface closest to ``point`` (see
-    /// ``NurbsSurface.closest_point``), layers in SPEC order
+    /// ``NurbsSurface.closest_point``), layers in the order of docs/method.md §1
     /// (``upper_left`` … ``upper_right``, ``crisp`` at index 3).
     ///
     /// Parameters
@@ -132,7 +132,7 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
     }
 
     /// The curvature of every layer surface at every pair of ``u`` and ``v``
-    /// (see ``NurbsSurface.curvature``), layers in SPEC order
+    /// (see ``NurbsSurface.curvature``), layers in the order of docs/method.md §1
     /// (``upper_left`` … ``upper_right``, ``crisp`` at index 3); each layer
     /// with its own normal. Unlike the points, the layers' curvatures are not
     /// ordered.
@@ -170,7 +170,7 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
     /// Returns
     /// -------
     /// numpy.ndarray
-    ///     Shape ``broadcast(u, v).shape + (7, d)``, layers in SPEC order
+    ///     Shape ``broadcast(u, v).shape + (7, d)``, layers in the order of docs/method.md §1
     ///     (``upper_left`` … ``upper_right``, ``crisp`` at index 3).
     fn eval_layers<'py>(
         &self,
@@ -186,7 +186,7 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
     }
 
     /// The seven layer surfaces on the grid ``u × v`` by the grid engine (one
-    /// basis evaluation per grid row and column for all layers), the SPEC §1
+    /// basis evaluation per grid row and column for all layers), the docs/method.md §1
     /// order of the layers kept exactly at every grid point.
     ///
     /// Parameters

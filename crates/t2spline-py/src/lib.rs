@@ -9,14 +9,14 @@
 //! |---|---|
 //! | `t2spline.run(job, alpha=, type_reduction=, samples=, derivatives=)` | `t2spline_io::parse_job` → `Job::settings` → `Job::run`, the path of `t2spline run` |
 //! | `t2spline.JobError` | `t2spline_io::Error::Invalid`: the CLI's problem lines |
-//! | `FuzzyNumber`, `AlphaCut` | `Nt2Number`, `AlphaCut` (SPEC §1–§4) |
+//! | `FuzzyNumber`, `AlphaCut` | `Nt2Number`, `AlphaCut` (docs/method.md §1–§4) |
 //! | `NurbsCurve` | `NurbsCurve<2 or 3>` and its operations |
 //! | `FuzzyCurve`, `Solution` | `FuzzyCurve<2 or 3>` (stage 1, sampling engine), `Solution` (stages 2–4) |
 //! | `NurbsSurface` | `NurbsSurface<3 or 2>` and its operations, the grid engine |
 //! | `FuzzySurface`, `SurfaceSolution` | `FuzzySurface<3 or 2>` (stage 1, grid engine), `SurfaceSolution` (stages 2–4) |
 //! | `FuzzyCurve.membership`, `.region` (`Region`), `.section`, `.membership_grid`; `FuzzySurface.membership`, `.section` | `t2spline::set` (docs/method.md §10): `memberships`, `region_in`, `sections`, `membership_grid` |
 //! | `fit` | `t2spline::fit::FuzzyData::fit` |
-//! | `centroid` | `t2spline::reduction::discrete::SampledSet`: KM, EKM, EIASC, Nie–Tan (SPEC §10) |
+//! | `centroid` | `t2spline::reduction::discrete::SampledSet`: KM, EKM, EIASC, Nie–Tan (docs/method.md §9) |
 //! | `benchmark_curve` | `t2spline::sampling::benchmark_curve` |
 //!
 //! The Python package (`python/t2spline/`) adds the plotting helpers, the

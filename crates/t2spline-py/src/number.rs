@@ -1,5 +1,5 @@
 //! `FuzzyNumber` and `AlphaCut`: one normal triangular type-2 fuzzy number
-//! (SPEC §1), its alpha-cut (§2), type reduction (§3) and defuzzification
+//! (docs/method.md §1), its alpha-cut (§2), type reduction (§3) and defuzzification
 //! (§4), and its membership functions for plotting.
 
 use pyo3::exceptions::PyValueError;
@@ -10,7 +10,7 @@ use crate::arrays::{array, floats};
 use crate::errors::core_error;
 use crate::keyword;
 
-/// A normal triangular type-2 fuzzy number (SPEC §1, paper Def. 4.1).
+/// A normal triangular type-2 fuzzy number (docs/method.md §1, paper Def. 4.1).
 ///
 /// Seven ordered values and the height ``h`` of the lower membership
 /// function::
@@ -119,7 +119,7 @@ impl PyFuzzyNumber {
         self.0.height().get()
     }
 
-    /// The alpha-cut at level ``alpha`` (SPEC §2, paper Eqs. 4.1–4.2).
+    /// The alpha-cut at level ``alpha`` (docs/method.md §2, paper Eqs. 4.1–4.2).
     ///
     /// Every end point moves towards ``crisp``::
     ///
@@ -151,7 +151,7 @@ impl PyFuzzyNumber {
     }
 
     /// The type-reduced triangle ``(left, crisp, right)`` at level ``alpha``
-    /// (SPEC §3, paper Def. 4.3)::
+    /// (docs/method.md §3, paper Def. 4.3)::
     ///
     ///     alpha <= h:  left  = (upper.left' + primary.left' + lower.left') / 3
     ///                  right = (lower.right' + primary.right' + upper.right') / 3
@@ -171,7 +171,7 @@ impl PyFuzzyNumber {
     }
 
     /// The defuzzified value at level ``alpha``: the centroid of the
-    /// type-reduced triangle, ``(left + crisp + right) / 3`` (SPEC §4, paper
+    /// type-reduced triangle, ``(left + crisp + right) / 3`` (docs/method.md §4, paper
     /// Def. 4.4).
     ///
     /// Examples
@@ -186,7 +186,7 @@ impl PyFuzzyNumber {
             .defuzzify())
     }
 
-    /// One membership function at every value of ``x`` (SPEC §1), for
+    /// One membership function at every value of ``x`` (docs/method.md §1), for
     /// plotting::
     ///
     ///     UMF     = T(x; upper.left, crisp, upper.right, 1)
@@ -252,7 +252,7 @@ impl PyFuzzyNumber {
     }
 }
 
-/// The alpha-cut of a fuzzy number at one level (SPEC §2): the cut ends of
+/// The alpha-cut of a fuzzy number at one level (docs/method.md §2): the cut ends of
 /// the upper, primary and lower membership functions; ``lower`` is ``None``
 /// above the number's lower height. Made by ``FuzzyNumber.alpha_cut``.
 ///
@@ -303,7 +303,7 @@ impl PyAlphaCut {
         self.cut.lower().map(pair)
     }
 
-    /// The type-reduced triangle ``(left, crisp, right)`` of this cut (SPEC §3;
+    /// The type-reduced triangle ``(left, crisp, right)`` of this cut (docs/method.md §3;
     /// see ``FuzzyNumber.type_reduce``).
     fn type_reduce(&self) -> (f64, f64, f64) {
         let t = self.cut.type_reduce();

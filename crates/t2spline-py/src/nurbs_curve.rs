@@ -1,4 +1,4 @@
-//! `NurbsCurve`: a rational B-spline curve in the plane or in space (SPEC §6)
+//! `NurbsCurve`: a rational B-spline curve in the plane or in space (docs/method.md §6)
 //! with the operations of the core: evaluation, derivatives, knot insertion,
 //! degree elevation, splitting, arc length, closest point.
 

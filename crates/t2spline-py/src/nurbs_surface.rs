@@ -1,4 +1,4 @@
-//! `NurbsSurface`: a rational B-spline surface (SPEC §9) with the operations
+//! `NurbsSurface`: a rational B-spline surface (docs/method.md §8) with the operations
 //! of the core: evaluation broadcast over arrays of `u` and `v`, the grid
 //! engine, partial derivatives, the normal, the curvature, the closest point, isocurves,
 //! knot insertion and refinement, degree elevation, splitting, the bounding

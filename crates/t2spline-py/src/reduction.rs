@@ -88,7 +88,7 @@ fn samples(arg: &Bound<'_, PyAny>, name: &str) -> PyResult<Floats> {
 
 /// The centroid ``[c_l, c_r]`` of an interval type-2 fuzzy set given by
 /// samples: its lower and upper membership functions ``lmf`` and ``umf`` at
-/// points ``x`` (SPEC §10). The centroid is the range of the centroids of
+/// points ``x`` (docs/method.md §9). The centroid is the range of the centroids of
 /// every type-1 set between ``lmf`` and ``umf``::
 ///
 ///     c_l = min over switch points k of  Σ_{i≤k} xᵢ·umfᵢ + Σ_{i>k} xᵢ·lmfᵢ

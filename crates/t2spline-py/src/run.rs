@@ -150,7 +150,7 @@ fn run_error(py: Python<'_>, e: RunError) -> PyErr {
 
 /// Runs a job as ``t2spline run`` does: every stage of Algorithm 1.1 at
 /// level alpha, every curve sampled at uniform parameters, and the distance
-/// between the crisp and the defuzzified curve (SPEC §7–§8).
+/// between the crisp and the defuzzified curve (docs/method.md §7–§8).
 ///
 /// The job goes through the same validator as job files
 /// (``t2spline_io::parse_job``) and the same ``Job.run`` as the command-line
@@ -159,7 +159,7 @@ fn run_error(py: Python<'_>, e: RunError) -> PyErr {
 /// Parameters
 /// ----------
 /// job : dict or str or os.PathLike
-///     A dict with the keys of a job file (SPEC §8; numpy arrays and numbers
+///     A dict with the keys of a job file (docs/jobs.md; numpy arrays and numbers
 ///     are accepted as values), or the path of a job file.
 /// alpha : float, optional
 ///     The level alpha in ``[0, 1]``, in place of the job's. Only the
@@ -175,7 +175,7 @@ fn run_error(py: Python<'_>, e: RunError) -> PyErr {
 ///     With ``K``, also the derivatives of orders ``1 … K`` of the crisp and the
 ///     defuzzified curve, and their arc lengths.
 /// type_reduction : {"paper", "centroid", "nie-tan", "alpha-planes"}, optional
-///     The type reduction of stages 3–4 (SPEC §10), in place of the job's
+///     The type reduction of stages 3–4 (docs/method.md §9), in place of the job's
 ///     ``"type_reduction"`` (default ``"paper"``). The result names it.
 ///
 /// Returns

@@ -1,4 +1,4 @@
-//! `Solution`: stages 2–4 of Algorithm 1.1 at one level alpha (SPEC §7) —
+//! `Solution`: stages 2–4 of Algorithm 1.1 at one level alpha (docs/method.md §7) —
 //! the alpha-cut, type-reduced and defuzzified control points (shared with
 //! `SurfaceSolution`, `stage_methods.rs`), their curves, their samples and
 //! the distance between the crisp and the defuzzified curve.
@@ -46,7 +46,7 @@ stage_methods!(PySolution, fuzzy_curve, "n" {
     }
 
     /// The distance ``d(t) = |D(t) − C(t)|`` between the defuzzified curve
-    /// ``D`` and the crisp curve ``C`` at equal ``t`` (SPEC §7)::
+    /// ``D`` and the crisp curve ``C`` at equal ``t`` (docs/method.md §7)::
     ///
     ///     max = max_t d(t)   (at t = max_at),   rms = sqrt( 1/(b − a) ∫ d(t)² dt )
     ///

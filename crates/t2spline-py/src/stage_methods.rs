@@ -8,7 +8,7 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use t2spline::{Layer, Side};
 
-/// The six non-crisp layers, in SPEC order: the alpha-cut ends.
+/// The six non-crisp layers, in the order of docs/method.md §1: the alpha-cut ends.
 pub(crate) fn six_layers() -> impl Iterator<Item = Layer> {
     Layer::ALL.into_iter().filter(|&l| l != Layer::Crisp)
 }
@@ -66,7 +66,7 @@ macro_rules! stage_methods {
                 $crate::dim::by_dim!(&self.0, |s| s.alpha().get())
             }
 
-            /// The type reduction of stages 3–4 (SPEC §10): ``"paper"``,
+            /// The type reduction of stages 3–4 (docs/method.md §9): ``"paper"``,
             /// ``"centroid"``, ``"nie-tan"`` or ``"alpha-planes"``.
             #[getter]
             fn type_reduction(&self) -> &'static str {
@@ -85,7 +85,7 @@ macro_rules! stage_methods {
             /// Stage 2: the alpha-cut ends of every control point, a dict of the
             #[doc = concat!("six non-crisp layer names to arrays of shape ``(", $net, ", d)``. A")]
             /// lower end is NaN where alpha is above that number's lower height
-            /// (the cut is absent, SPEC §2.2).
+            /// (the cut is absent, docs/method.md §2).
             #[getter]
             fn alpha_cut<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, pyo3::types::PyDict>> {
                 let out = pyo3::types::PyDict::new(py);

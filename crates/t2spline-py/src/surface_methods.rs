@@ -79,7 +79,7 @@ macro_rules! surface_methods {
             }
 
             /// ``count_u`` and ``count_v`` uniform parameters over the domain
-            /// in u and in v (SPEC §8), the parameters of
+            /// in u and in v (docs/jobs.md), the parameters of
             /// ``sample(count_u, count_v)``.
             fn uniform_params<'py>(
                 &self,

@@ -1,5 +1,5 @@
 //! `SurfaceSolution`: stages 2–4 of Algorithm 1.1 at one level alpha on the
-//! control net of a fuzzy surface (SPEC §7, §9) — the control nets of the
+//! control net of a fuzzy surface (docs/method.md §7, §8) — the control nets of the
 //! stages (shared with `Solution`, `stage_methods.rs`), their surfaces, their
 //! grids and the distance between the crisp and the defuzzified surface.
 
@@ -46,7 +46,7 @@ stage_methods!(PySurfaceSolution, fuzzy_surface, "nu, nv" {
 
     /// The distance ``d(u, v) = |D(u, v) − C(u, v)|`` between the
     /// defuzzified surface ``D`` and the crisp surface ``C`` at equal
-    /// parameters over the whole domain ``[a, b] × [c, d]`` (SPEC §9)::
+    /// parameters over the whole domain ``[a, b] × [c, d]`` (docs/method.md §8)::
     ///
     ///     max = max d(u, v)   (at (u, v) = max_at),
     ///     rms = sqrt( 1/((b − a)(d − c)) ∫∫ d(u, v)² du dv )

@@ -6,76 +6,8 @@
 
 use std::fmt;
 
-use crate::fuzzy::Axis;
-
-/// Where in a list (or a net) of fuzzy points a fault was found.
-///
-/// Displayed as a JSON-like path with a trailing `": "`, e.g. `points[2].y: `
-/// for a curve, `points[2][1].y: ` for the net of a surface (row `2` along u,
-/// column `1` along v), or as nothing at all when the place is unknown.
-/// Indices are 0-based, as in the `points` array of a job file.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Place {
-    /// Index of the point (0-based), if known; in a net, the row.
-    pub point: Option<usize>,
-    /// In a net of a surface, the column within the row.
-    pub column: Option<usize>,
-    /// Coordinate within the point, if known.
-    pub axis: Option<Axis>,
-}
-
-impl Place {
-    /// No place known.
-    pub const NONE: Place = Place {
-        point: None,
-        column: None,
-        axis: None,
-    };
-
-    /// The place `points[point].axis`.
-    #[must_use]
-    pub fn new(point: usize, axis: Axis) -> Self {
-        Place {
-            point: Some(point),
-            column: None,
-            axis: Some(axis),
-        }
-    }
-
-    /// The place `points[row][column].axis` in the net of a surface.
-    ///
-    /// ```
-    /// # use t2spline::{Axis, Place};
-    /// assert_eq!(Place::in_net(2, 1, Axis::Y).to_string(), "points[2][1].y: ");
-    /// ```
-    #[must_use]
-    pub fn in_net(row: usize, column: usize, axis: Axis) -> Self {
-        Place {
-            point: Some(row),
-            column: Some(column),
-            axis: Some(axis),
-        }
-    }
-}
-
-impl fmt::Display for Place {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if let Some(i) = self.point {
-            write!(f, "points[{i}]")?;
-            if let Some(j) = self.column {
-                write!(f, "[{j}]")?;
-            }
-            return match self.axis {
-                Some(a) => write!(f, ".{a}: "),
-                None => write!(f, ": "),
-            };
-        }
-        match self.axis {
-            Some(a) => write!(f, "{a}: "),
-            None => Ok(()),
-        }
-    }
-}
+use crate::place::Axis;
+pub use crate::place::Place;
 
 /// A number in a message: as `Display` writes it (`0.5`, `2`, `-3.25`), but in
 /// exponent form when that would take more than about 20 digits (`1e301`,
@@ -183,7 +115,7 @@ pub enum Error {
         value: f64,
     },
 
-    /// The seven values of a fuzzy number are out of order (SPEC §1).
+    /// The seven values of a fuzzy number are out of order (docs/method.md §1).
     ///
     /// ```
     /// # use t2spline::{Error, Nt2Number};
@@ -195,7 +127,7 @@ pub enum Error {
     Order {
         /// Where the number is.
         place: Place,
-        /// The broken inequality, in SPEC words.
+        /// The broken inequality, in the words of docs/method.md §1.
         rule: &'static str,
         /// The value on the left of the inequality.
         left: f64,
@@ -222,7 +154,7 @@ pub enum Error {
         range: &'static str,
     },
 
-    /// A curve of order `k` needs at least `k` control points (SPEC §6).
+    /// A curve of order `k` needs at least `k` control points (docs/method.md §6).
     ///
     /// ```
     /// # use t2spline::{Error, NurbsCurve};
@@ -268,7 +200,7 @@ pub enum Error {
         found: usize,
     },
 
-    /// A weight is not a finite number greater than 0 (SPEC §6).
+    /// A weight is not a finite number greater than 0 (docs/method.md §6).
     ///
     /// ```
     /// # use t2spline::{Error, NurbsCurve};
@@ -283,7 +215,7 @@ pub enum Error {
         value: f64,
     },
 
-    /// The knot vector must have `n + k` values (SPEC §6).
+    /// The knot vector must have `n + k` values (docs/method.md §6).
     ///
     /// ```
     /// # use t2spline::{Error, KnotVector};
@@ -329,7 +261,7 @@ pub enum Error {
         value: f64,
     },
 
-    /// Knots must not decrease (SPEC §6).
+    /// Knots must not decrease (docs/method.md §6).
     ///
     /// ```
     /// # use t2spline::{Error, KnotVector};
@@ -346,7 +278,7 @@ pub enum Error {
         value: f64,
     },
 
-    /// A knot repeats more than `k` times (SPEC §6).
+    /// A knot repeats more than `k` times (docs/method.md §6).
     ///
     /// ```
     /// # use t2spline::{Error, KnotVector};
@@ -365,7 +297,7 @@ pub enum Error {
         order: usize,
     },
 
-    /// The parameter domain `[U[p], U[n]]` is empty (SPEC §6).
+    /// The parameter domain `[U[p], U[n]]` is empty (docs/method.md §6).
     ///
     /// ```
     /// # use t2spline::{Error, KnotVector};
@@ -403,7 +335,7 @@ pub enum Error {
     },
 
     /// A knot cannot be inserted that many times: its multiplicity would pass
-    /// the order `k` (SPEC §6).
+    /// the order `k` (docs/method.md §6).
     ///
     /// ```
     /// # use t2spline::{Error, NurbsCurve};
@@ -506,7 +438,7 @@ pub enum Error {
 
     /// An operation that makes new fuzzy control points needs one lower height
     /// per coordinate: a combination of numbers with different heights has no
-    /// height that keeps the alpha-cut curves unchanged (SPEC §6).
+    /// height that keeps the alpha-cut curves unchanged (docs/method.md §6).
     ///
     /// ```
     /// # use t2spline::{Error, FuzzyCurve, Nt2Number, Nt2Point};
@@ -655,7 +587,7 @@ pub enum Error {
     },
 
     /// Fitting each layer on its own gave control points that break the order
-    /// of SPEC §1; the valid fit ([`FuzzyFitMode::Valid`](crate::fit::FuzzyFitMode::Valid)) avoids this.
+    /// of docs/method.md §1; the valid fit ([`FuzzyFitMode::Valid`](crate::fit::FuzzyFitMode::Valid)) avoids this.
     ///
     /// ```
     /// # use t2spline::{Error, Nt2Number, Nt2Point};
@@ -675,12 +607,12 @@ pub enum Error {
     /// assert!(matches!(fit.to_curve(), Err(Error::UnorderedFit { .. })));
     /// # Ok::<(), Error>(())
     /// ```
-    #[error("fitting every layer on its own breaks the order of SPEC §1 at {count} place(s); the first: {first}")]
+    #[error("fitting every layer on its own breaks the order of the seven values at {count} place(s); the first: {first}")]
     UnorderedFit {
         /// How many inequalities are broken.
         count: usize,
         /// The first of them.
-        first: crate::fit::OrderViolation,
+        first: crate::place::OrderViolation,
     },
 
     /// A fitted control value lies beyond the limit of coordinates
@@ -709,7 +641,7 @@ pub enum Error {
         /// The coordinate.
         axis: Axis,
         /// The layer of a fuzzy fit; `None` for a crisp curve.
-        layer: Option<crate::fuzzy::Layer>,
+        layer: Option<crate::place::Layer>,
         /// The fitted value.
         value: f64,
     },
@@ -820,7 +752,7 @@ pub enum Error {
         /// The value computed.
         value: f64,
     },
-    /// A rule of one parameter direction of a surface is broken (SPEC §9):
+    /// A rule of one parameter direction of a surface is broken (docs/method.md §8):
     /// `inner` is the error the same rule gives for a curve, `direction` says
     /// whether it concerns `u` (rows of the net, `knots.u`) or `v` (columns,
     /// `knots.v`). The message names the place in the surface's terms.
@@ -835,7 +767,7 @@ pub enum Error {
     #[error("{}", in_direction(*direction, inner))]
     InDirection {
         /// The parameter direction.
-        direction: crate::nurbs::Direction,
+        direction: crate::place::Direction,
         /// The rule broken, as for a curve in that direction.
         inner: Box<Error>,
     },
@@ -925,7 +857,7 @@ pub enum Error {
     #[error("layer {layer}: {inner}")]
     InLayer {
         /// The layer.
-        layer: crate::fuzzy::Layer,
+        layer: crate::place::Layer,
         /// The error of that layer.
         inner: Box<Error>,
     },
@@ -1114,7 +1046,7 @@ pub enum Error {
 }
 
 /// The message of [`Error::InDirection`]: the curve rule in the surface's words.
-fn in_direction(direction: crate::nurbs::Direction, inner: &Error) -> String {
+fn in_direction(direction: crate::place::Direction, inner: &Error) -> String {
     let d = direction;
     match inner {
         Error::TooFewControlPoints { order, count } => format!(
@@ -1122,8 +1054,8 @@ fn in_direction(direction: crate::nurbs::Direction, inner: &Error) -> String {
         ),
         Error::KnotCount { expected, found } => {
             let lines = match d {
-                crate::nurbs::Direction::U => "rows",
-                crate::nurbs::Direction::V => "columns",
+                crate::place::Direction::U => "rows",
+                crate::place::Direction::V => "columns",
             };
             format!("knots.{d}: expected {expected} values ({lines} + order in {d}), got {found}")
         }
@@ -1189,7 +1121,7 @@ impl Error {
 
     /// The same error as a rule of `direction` of a surface
     /// ([`Error::InDirection`]).
-    pub(crate) fn in_direction(self, direction: crate::nurbs::Direction) -> Self {
+    pub(crate) fn in_direction(self, direction: crate::place::Direction) -> Self {
         Error::InDirection {
             direction,
             inner: Box::new(self),
@@ -1197,7 +1129,7 @@ impl Error {
     }
 
     /// The same error, as the error of one layer of a fuzzy model.
-    pub(crate) fn in_layer(self, layer: crate::fuzzy::Layer) -> Self {
+    pub(crate) fn in_layer(self, layer: crate::place::Layer) -> Self {
         Error::InLayer {
             layer,
             inner: Box::new(self),

@@ -3,7 +3,7 @@
 //! Models uncertain data with rational B-spline curves whose control points are
 //! *normal triangular type-2 fuzzy numbers* (NT2TFN), following Zakaria, Wahab
 //! and Gobithaasan, "Normal Type-2 Fuzzy Rational B-spline Curve", as made
-//! precise by the project's `SPEC.md` (section numbers below refer to it).
+//! precise in docs/method.md (section numbers below refer to it).
 //!
 //! The crate has no I/O: job and result files live in `t2spline-io`, the
 //! command-line tool in `t2spline-cli`.
@@ -42,11 +42,11 @@
 //! ```
 //!
 //! ## Contents
-//! - [`fuzzy`]: [`Nt2Number`] (SPEC §1), [`Alpha`] and [`AlphaCut`] (§2), type
+//! - [`fuzzy`]: [`Nt2Number`] (docs/method.md §1), [`Alpha`] and [`AlphaCut`] (§2), type
 //!   reduction to a [`Tfn`] (§3), defuzzification (§4), [`Nt2Point`] (§5), and the
 //!   seven [`Layer`]s.
 //! - [`reduction`]: the type-2 literature's reductions of one number, exact
-//!   (§10): the interval type-2 [`Nt2Number::centroid`] (Karnik–Mendel),
+//!   (§9): the interval type-2 [`Nt2Number::centroid`] (Karnik–Mendel),
 //!   [`Nt2Number::nie_tan`], the general type-2 [`Nt2Number::alpha_planes`],
 //!   and [`Nt2Number::reduce`] by any [`TypeReduction`]; the discrete KM, EKM,
 //!   EIASC and Nie–Tan algorithms on sampled sets ([`reduction::discrete`]).
@@ -87,6 +87,7 @@
 )]
 
 pub mod bench;
+mod brent;
 mod cubature;
 mod error;
 pub mod fit;
@@ -98,17 +99,19 @@ pub mod measure;
 mod nelder_mead;
 pub mod nurbs;
 pub mod pipeline;
+mod place;
 mod quadrature;
 pub mod reduction;
 pub mod sampling;
 pub mod set;
+pub mod vector;
 // Generators for property tests: a value they cannot build is a failing
 // test, so they may `expect`.
 #[cfg(any(test, feature = "proptest"))]
 #[allow(clippy::expect_used, clippy::unwrap_used)]
 pub mod strategies;
 
-pub use error::{Error, Num, Place};
+pub use error::{Error, Num};
 pub use fuzzy::{
     Alpha, AlphaCut, Axis, Height, Interval, Layer, Layers, Membership, Nt2Number, Nt2Point,
     Nt2Point2, Nt2Point3, Tfn,
@@ -121,4 +124,5 @@ pub use nurbs::{
 pub use pipeline::{
     Distance, FuzzyCurve, FuzzySurface, Side, Solution, SurfaceDistance, SurfaceSolution,
 };
+pub use place::Place;
 pub use reduction::{AlphaPlanes, Reduced, TypeReduction};

@@ -6,7 +6,7 @@
 //!
 //! The reference is exact rational arithmetic (`num-rational` over `num-bigint`):
 //! every `f64` input is a rational number, so the Cox–de Boor definition, the
-//! rational curve, the alpha-cut, type reduction and defuzzification of SPEC
+//! rational curve, the alpha-cut, type reduction and defuzzification of docs/method.md
 //! §2–§6 can be computed with no rounding at all and compared with the library.
 //! The reference shares no code with the library: it follows the recursive
 //! definition (The NURBS Book, Eq. 2.5), not the triangular algorithm A2.2, and
@@ -37,7 +37,7 @@ mod exact {
     use num_traits::{One, Zero};
 
     /// All `count` basis functions `N_{i,p}(t)` from the recursive definition
-    /// (The NURBS Book, Eq. 2.5), `0/0 := 0`, with the conventions of SPEC §6: a
+    /// (The NURBS Book, Eq. 2.5), `0/0 := 0`, with the conventions of docs/method.md §6: a
     /// half-open span `[U[i], U[i+1])` (the value at an interior knot comes from
     /// the right), and at the right end `t = U[n]` the last non-empty span.
     pub fn basis(u: &[f64], degree: usize, count: usize, t: f64) -> Vec<Q> {
@@ -77,7 +77,7 @@ mod exact {
         n
     }
 
-    /// The rational basis `Rᵢ(t) = wᵢ Nᵢ(t) / Σ wᵣ Nᵣ(t)` (SPEC §6).
+    /// The rational basis `Rᵢ(t) = wᵢ Nᵢ(t) / Σ wᵣ Nᵣ(t)` (docs/method.md §6).
     pub fn rational_basis(weights: &[f64], knots: &[f64], degree: usize, t: f64) -> Vec<Q> {
         let n = basis(knots, degree, weights.len(), t);
         let wn: Vec<Q> = n.iter().zip(weights).map(|(n, &w)| n * q(w)).collect();
@@ -101,10 +101,10 @@ mod exact {
         combine(&rational_basis(weights, knots, degree, t), points)
     }
 
-    /// The seven values, SPEC order, and the height of a number.
+    /// The seven values, the order of docs/method.md §1, and the height of a number.
     pub type Number = ([Q; 7], Q);
 
-    /// `cut(e, s) = e + s·(crisp − e)` (SPEC §2) of all seven values; `None` for
+    /// `cut(e, s) = e + s·(crisp − e)` (docs/method.md §2) of all seven values; `None` for
     /// the lower ends when `α > h`.
     pub fn alpha_cut((v, h): &Number, alpha: &Q) -> [Option<Q>; 7] {
         let c = &v[3];
@@ -119,7 +119,7 @@ mod exact {
         })
     }
 
-    /// Type reduction (SPEC §3): `(left, crisp, right)`.
+    /// Type reduction (docs/method.md §3): `(left, crisp, right)`.
     pub fn type_reduce(cut: &[Option<Q>; 7]) -> [Q; 3] {
         let get = |i: usize| cut[i].clone().expect("present");
         let three = Q::from_integer(3.into());
@@ -134,7 +134,7 @@ mod exact {
         }
     }
 
-    /// Defuzzification (SPEC §4).
+    /// Defuzzification (docs/method.md §4).
     pub fn defuzzify(tfn: &[Q; 3]) -> Q {
         (&tfn[0] + &tfn[1] + &tfn[2]) / Q::from_integer(3.into())
     }
@@ -535,7 +535,7 @@ fn values_exactly_at_the_limits_match_exact_rationals() {
     }
 }
 
-/// Alpha exactly at the lower height h takes the three-term rule (SPEC §2.1):
+/// Alpha exactly at the lower height h takes the three-term rule (docs/method.md §2):
 /// the lower cut is the crisp value itself.
 #[test]
 fn alpha_exactly_h_cuts_the_lower_triangle_at_its_apex() {

@@ -8,7 +8,7 @@ use t2spline::strategies::{fuzzy_curve, fuzzy_surface};
 use t2spline::{Direction, NurbsCurve, NurbsSurface, TypeReduction};
 
 /// The piece among `domains` that holds `t`: the right one at a shared end
-/// (a jump is taken from the right, SPEC §6), the last one at the end.
+/// (a jump is taken from the right, docs/method.md §6), the last one at the end.
 fn holding(domains: &[(f64, f64)], t: f64) -> usize {
     let last = domains.len() - 1;
     domains
@@ -77,7 +77,7 @@ fn close(
     Ok(())
 }
 
-/// Any type reduction (SPEC §10): the defuzzified curve is the reduction's.
+/// Any type reduction (docs/method.md §9): the defuzzified curve is the reduction's.
 fn reduction() -> impl Strategy<Value = TypeReduction> {
     proptest::sample::select(TypeReduction::ALL.to_vec())
 }

@@ -1,4 +1,4 @@
-//! Property tests of the invariants of SPEC §1–§7 on random valid inputs.
+//! Property tests of the invariants of docs/method.md §1–§7 on random valid inputs.
 //!
 //! Generators come from `t2spline::strategies` (feature `proptest`, switched on
 //! for tests by the crate's self dev-dependency). Every float comparison has an
@@ -87,7 +87,7 @@ fn common_height<const D: usize>(curve: &FuzzyCurve<D>) -> f64 {
 /// ```
 /// At the right end `t = U[n]` of the domain the half-open rule would give no
 /// span (clamped) or one outside the domain (unclamped), so there the last
-/// non-empty span `[U[j], U[j+1]]`, `j < n`, is taken closed (SPEC §6).
+/// non-empty span `[U[j], U[j+1]]`, `j < n`, is taken closed (docs/method.md §6).
 fn cox_de_boor(u: &[f64], degree: usize, count: usize, t: f64) -> Vec<f64> {
     let end = u[count];
     let last = (0..count)
@@ -189,7 +189,7 @@ fn crisp_number() -> impl Strategy<Value = Nt2Number> + Clone {
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(CASES))]
 
-    /// SPEC §6: `R_i(t) ≥ 0` and `Σ R_i(t) = 1` on the whole domain.
+    /// docs/method.md §6: `R_i(t) ≥ 0` and `Σ R_i(t) = 1` on the whole domain.
     #[test]
     fn rational_basis_is_a_partition_of_unity(c in any_curve::<2>(), s in 0.0..=1.0f64) {
         for t in parameters(c.knots(), s) {
@@ -204,7 +204,7 @@ proptest! {
         }
     }
 
-    /// SPEC §6: `R_i = w_i N_i / Σ w_r N_r` with `N_i` from the Cox–de Boor
+    /// docs/method.md §6: `R_i = w_i N_i / Σ w_r N_r` with `N_i` from the Cox–de Boor
     /// definition (an independent oracle for the span search and A2.2).
     #[test]
     fn rational_basis_matches_the_definition(c in any_curve::<2>(), s in 0.0..=1.0f64) {
@@ -222,7 +222,7 @@ proptest! {
         }
     }
 
-    /// SPEC §6: with all weights equal to `w` the curve is the non-rational
+    /// docs/method.md §6: with all weights equal to `w` the curve is the non-rational
     /// B-spline `Σ N_i(t) P_i`.
     #[test]
     fn equal_weights_give_the_plain_b_spline(
@@ -243,7 +243,7 @@ proptest! {
         }
     }
 
-    /// SPEC §1, §6: the seven layer curves keep the order exactly (no tolerance:
+    /// docs/method.md §1, §6: the seven layer curves keep the order exactly (no tolerance:
     /// the basis is non-negative and every layer is summed in the same order, so
     /// rounding is monotone too), with independent heights, in 2-D and 3-D.
     #[test]
@@ -268,7 +268,7 @@ proptest! {
         check(&c3, s)?;
     }
 
-    /// SPEC §6: with one lower height, the alpha-cut, type reduction and
+    /// docs/method.md §6: with one lower height, the alpha-cut, type reduction and
     /// defuzzification of the curve point `C̃(t)` equal the stage-2/3/4 curves
     /// (built from the control points) at `t`.
     #[test]
@@ -318,7 +318,7 @@ proptest! {
         }
     }
 
-    /// SPEC §2: cuts are nested — for `α₁ ≤ α₂` each cut at `α₂` lies in the
+    /// docs/method.md §2: cuts are nested — for `α₁ ≤ α₂` each cut at `α₂` lies in the
     /// one at `α₁` — and ordered (lower ⊂ primary ⊂ upper, all containing
     /// `crisp`); the lower cut exists exactly when `α ≤ h`.
     #[test]
@@ -352,7 +352,7 @@ proptest! {
         }
     }
 
-    /// SPEC §3–§4 per number: `left ≤ crisp ≤ right`, and the centroid lies in
+    /// docs/method.md §3–§4 per number: `left ≤ crisp ≤ right`, and the centroid lies in
     /// `[left, right]` (exactly: the library clamps against rounding).
     #[test]
     fn type_reduction_brackets_crisp_and_defuzzified(
@@ -367,7 +367,7 @@ proptest! {
             "alpha = {alpha}: defuzzified {d} outside {t:?} for {x:?}");
     }
 
-    /// SPEC §3–§4, §10 on curves: the defuzzified curve between the left and
+    /// docs/method.md §3–§4, §9 on curves: the defuzzified curve between the left and
     /// the right curve for every type reduction, and for the paper's also the
     /// left curve ≤ crisp curve ≤ right curve, at every `t` (exactly, by the
     /// same monotonicity as the layer order).
@@ -393,7 +393,7 @@ proptest! {
         }
     }
 
-    /// SPEC §7, §10: symmetric spreads defuzzify to the crisp values under
+    /// docs/method.md §7, §9: symmetric spreads defuzzify to the crisp values under
     /// every type reduction, so the distance between the crisp and the
     /// defuzzified curve is 0 (up to rounding).
     #[test]
@@ -407,7 +407,7 @@ proptest! {
         }
     }
 
-    /// SPEC §1, §4: a crisp input (all seven values equal, any height) gives the
+    /// docs/method.md §1, §4: a crisp input (all seven values equal, any height) gives the
     /// crisp curve back, exactly, at every alpha.
     #[test]
     fn crisp_input_gives_the_crisp_curve(
@@ -426,7 +426,7 @@ proptest! {
         prop_assert!(d.max == 0.0 && d.rms == 0.0, "alpha = {random}: {d:?}");
     }
 
-    /// SPEC §2–§4: at `α = 1` every cut is the crisp value, so the defuzzified
+    /// docs/method.md §2–§4: at `α = 1` every cut is the crisp value, so the defuzzified
     /// control points are exactly the crisp ones and the distance is exactly 0.
     #[test]
     fn alpha_one_gives_the_crisp_control_points(c in any_fuzzy_curve::<2>()) {

@@ -64,8 +64,8 @@ struct Hand {
 }
 
 /// `cut(e, s) = e + s·(crisp − e)`; upper and primary ends use `s = α`, lower
-/// ends `s = α/h` when `α ≤ h` (SPEC §2). Type reduction averages two ends above
-/// h, three at or below (SPEC §3); defuzzified = (left + crisp + right)/3 (§4).
+/// ends `s = α/h` when `α ≤ h` (docs/method.md §2). Type reduction averages two ends above
+/// h, three at or below (docs/method.md §3); defuzzified = (left + crisp + right)/3 (§4).
 #[rustfmt::skip]
 fn hand_values() -> Vec<Hand> {
     vec![
@@ -345,7 +345,7 @@ fn alpha_one_gives_the_crisp_curve() {
 
 #[test]
 fn example_distance_is_positive_and_below_its_maximum() {
-    // Unequal spreads move the solution off the crisp curve (SPEC §7); the rms
+    // Unequal spreads move the solution off the crisp curve (docs/method.md §7); the rms
     // of a continuous distance never exceeds its maximum.
     for a in [0.3, 0.8] {
         let d = example().solve(alpha(a)).distance();
@@ -490,7 +490,7 @@ fn full_circle_from_a_triangle_has_radius_one() {
 /// crisp value, the same for every control point of one coordinate.
 type Spreads = ([f64; 3], [f64; 3]);
 
-/// The defuzzified offset of a number with `spreads` (SPEC §2–§4):
+/// The defuzzified offset of a number with `spreads` (docs/method.md §2–§4):
 ///
 /// ```text
 /// α > h:  δ = (1 − α)·((eP + eU) − (dU + dP))/6

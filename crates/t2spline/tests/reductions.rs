@@ -1,4 +1,4 @@
-//! The reductions of one number (SPEC §10) and the discrete algorithms:
+//! The reductions of one number (docs/method.md §9) and the discrete algorithms:
 //! properties, limits and independent references.
 
 use proptest::prelude::*;

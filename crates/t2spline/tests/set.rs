@@ -224,11 +224,10 @@ fn regions_shrink_as_alpha_grows_and_vanish_into_the_curve() {
         .is_none());
 }
 
-#[test]
-fn a_closed_curve_has_an_annulus() {
-    // The unit circle as a rational quadratic of 9 control points (The NURBS
-    // Book, Ex. 7.2), each coordinate ±0.1 at level 0: the region is a ring
-    // of radii about 0.9 and 1.1.
+/// The unit circle as a rational quadratic of 9 control points (The NURBS
+/// Book, Ex. 7.2), each coordinate ±0.1 at level 0 (±0.05 primary, ±0.02
+/// lower with height 0.5): its region is a ring of radii about 0.9 and 1.1.
+fn fuzzy_circle() -> FuzzyCurve<2> {
     let s = std::f64::consts::FRAC_1_SQRT_2;
     let square = [
         [1.0, 0.0],
@@ -259,7 +258,12 @@ fn a_closed_curve_has_an_annulus() {
     let knots = vec![
         0.0, 0.0, 0.0, 0.25, 0.25, 0.5, 0.5, 0.75, 0.75, 1.0, 1.0, 1.0,
     ];
-    let circle = FuzzyCurve::try_new(2, points, weights, Some(knots)).expect("valid");
+    FuzzyCurve::try_new(2, points, weights, Some(knots)).expect("valid")
+}
+
+#[test]
+fn a_closed_curve_has_an_annulus() {
+    let circle = fuzzy_circle();
     let r = circle
         .region(Membership::Upper, Alpha::ZERO, None)
         .expect("ok")
@@ -293,8 +297,9 @@ fn crisp_numbers_give_the_curve_itself() {
     assert!(!r.contains([on[0], on[1] + 10.0 * r.tolerance()]));
 }
 
-#[test]
-fn per_number_heights_cap_the_lower_grade_by_the_points_that_count() {
+/// A polyline of degree 1 along the x axis through points of heights 0.9,
+/// 0.9 and 0.4: the first span counts points 0 and 1, the second 1 and 2.
+fn two_heights() -> FuzzyCurve<2> {
     let n = |c: f64, h: f64| {
         Nt2Number::try_new(
             c,
@@ -310,8 +315,12 @@ fn per_number_heights_cap_the_lower_grade_by_the_points_that_count() {
         Nt2Point::new([n(1.0, 0.9), n(0.0, 0.9)]),
         Nt2Point::new([n(2.0, 0.4), n(0.0, 0.4)]),
     ];
-    // Degree 1: the first span counts points 0 and 1, the second 1 and 2.
-    let c = FuzzyCurve::try_new(1, points, vec![1.0; 3], None).expect("valid");
+    FuzzyCurve::try_new(1, points, vec![1.0; 3], None).expect("valid")
+}
+
+#[test]
+fn per_number_heights_cap_the_lower_grade_by_the_points_that_count() {
+    let c = two_heights();
     let g = |x: f64| c.membership(&[x, 0.0]).expect("finite").lower;
     assert!((g(0.5) - 0.9).abs() < 1e-12, "{}", g(0.5));
     // x = 1.1: the first span's box at t = 1/2 reaches it up to
@@ -419,4 +428,48 @@ proptest! {
             prop_assert!(fast >= slow[k] - 1e-9, "{k}: {fast} < {}", slow[k]);
         }
     }
+}
+
+#[test]
+fn a_region_section_is_the_station_section_and_crosses_an_annulus_twice() {
+    // At x = 0 the ring is met twice: y in about [-1.1, -0.9] and [0.9, 1.1].
+    let circle = fuzzy_circle();
+    let r = circle
+        .region(Membership::Upper, Alpha::ZERO, None)
+        .expect("ok")
+        .expect("cut");
+    let cut = r.section(0.0);
+    assert_eq!(cut.len(), 2, "{cut:?}");
+    let station = circle.sections(0.0, &[Alpha::ZERO], None).expect("ok");
+    let exact = station[0].upper.as_ref().expect("a cut");
+    assert_eq!(exact.len(), 2, "{exact:?}");
+    for (outline, exact) in cut.iter().zip(exact) {
+        // The outline holds the region and lies within the tolerance of it.
+        assert!(outline[0] <= exact[0] + 1e-12 && exact[1] <= outline[1] + 1e-12);
+        assert!(exact[0] - outline[0] <= r.tolerance() && outline[1] - exact[1] <= r.tolerance());
+        assert!(r.contains([0.0, 0.5 * (outline[0] + outline[1])]));
+    }
+    assert!(!r.contains([0.0, 0.0]));
+    // A line that misses the region meets nothing.
+    assert!(r.section(5.0).is_empty());
+}
+
+#[test]
+fn the_top_of_each_membership_function_is_its_largest_level_with_a_cut() {
+    let c = example();
+    assert_eq!(c.membership_top(Membership::Upper), 1.0);
+    assert_eq!(c.membership_top(Membership::Primary), 1.0);
+    assert_eq!(c.membership_top(Membership::Lower), H);
+    // Per-number heights: spans whose least heights are 0.9 and 0.4; the
+    // lower function has cuts up to 0.9.
+    let c = two_heights();
+    assert_eq!(c.membership_top(Membership::Lower), 0.9);
+    assert!(c
+        .region(Membership::Lower, alpha(0.9), None)
+        .expect("ok")
+        .is_some());
+    assert!(c
+        .region(Membership::Lower, alpha(0.95), None)
+        .expect("ok")
+        .is_none());
 }

@@ -1,4 +1,4 @@
-//! The distance between the crisp and the defuzzified surface (SPEC §9):
+//! The distance between the crisp and the defuzzified surface (docs/method.md §8):
 //! closed forms (constant offset, a bilinear and a biquadratic difference,
 //! whose squares integrate exactly) and bounds from brute-force fine grids.
 
@@ -7,7 +7,7 @@ use t2spline::sampling::Params;
 use t2spline::{strategies, Alpha, FuzzySurface, Nt2Number, Nt2Point, NurbsSurface};
 
 /// A number whose defuzzified value at alpha = 0 is `c + δ`: spreads `3|δ|` on
-/// one side (SPEC §3–§4 with h = 1: the reduced side is `c ± 3|δ|`, the
+/// one side (docs/method.md §3–§4 with h = 1: the reduced side is `c ± 3|δ|`, the
 /// centroid `c ± |δ|`).
 fn offset(c: f64, delta: f64) -> Nt2Number {
     let s = 3.0 * delta.abs();

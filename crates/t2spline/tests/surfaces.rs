@@ -1,4 +1,4 @@
-//! Fuzzy rational B-spline surfaces (SPEC §9): the invariants of SPEC §1 and
+//! Fuzzy rational B-spline surfaces (docs/method.md §8): the invariants of docs/method.md §1 and
 //! §6–§7 at every `(u, v)`, the operations against the original surface, and
 //! the quarter cylinder as a closed form, crisp and with a fuzzy radius.
 

@@ -1,4 +1,4 @@
-//! Runs with every type reduction (SPEC §7, §10): a job's stages 3–4 are its
+//! Runs with every type reduction (docs/method.md §7, §9): a job's stages 3–4 are its
 //! numbers reduced one by one, alpha is used by the paper's reduction only,
 //! and the sampled stage curves follow the chosen reduction.
 

@@ -214,7 +214,7 @@ impl Batch {
         let error = self.compute(job).and_then(|(result, unused)| {
             note = unused;
             summary.type_reduction = Some(result.type_reduction.name().to_owned());
-            // Alpha and the regime are the paper's reduction's (SPEC §10).
+            // Alpha and the regime are the paper's reduction's (docs/method.md §9).
             summary.regime = result.regime.map(|r| r.as_str().to_owned());
             summary.alpha = result.alpha_used.then_some(result.alpha);
             summary.error_max = Some(result.error.max);

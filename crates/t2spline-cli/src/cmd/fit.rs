@@ -165,7 +165,7 @@ fn report(plan: &Plan, s: &FitSummary) -> Vec<String> {
             "each layer fitted on its own gives valid fuzzy control points".to_owned(),
         ),
         (FuzzyFitMode::Valid, Some(first)) => lines.push(format!(
-            "each layer fitted on its own would break the order of SPEC §1 at {} place(s) (first: {first}); the spreads were fitted as nested non-negative increments instead",
+            "each layer fitted on its own would break the order of the seven values at {} place(s) (first: {first}); the spreads were fitted as nested non-negative increments instead",
             s.independent_violations.len()
         )),
         (FuzzyFitMode::Independent, Some(_)) => {}

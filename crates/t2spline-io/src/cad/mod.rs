@@ -12,7 +12,7 @@
 //! | IGES 5.3 | entity 126 (rational B-spline curve) with a name property (406 form 15) | name property, label | as they are (`V(0)`, `V(1)` give the domain) | millimetres |
 //! | OBJ | `cstype rat bspline`, `deg`, `curv`, `parm u` | group | as they are (`curv u0 u1`) | none |
 //!
-//! Surface jobs (SPEC §9) export their eight surfaces, named the same way:
+//! Surface jobs (docs/method.md §8) export their eight surfaces, named the same way:
 //! STEP `B_SPLINE_SURFACE_WITH_KNOTS` + `RATIONAL_B_SPLINE_SURFACE`, IGES
 //! entity 128, OBJ `surf` with `parm u` and `parm v`; DXF has no NURBS
 //! surface entity and refuses them.
@@ -37,7 +37,7 @@ use std::fmt;
 use t2spline::job::Geometry;
 use t2spline::Num;
 
-use crate::{Error, Problem};
+use crate::error::{Error, Problem};
 
 /// A CAD file format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

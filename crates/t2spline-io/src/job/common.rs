@@ -7,9 +7,9 @@ use serde_json::{Map, Value};
 use t2spline::job::check_samples;
 use t2spline::{Alpha, Height, TypeReduction};
 
-use super::limits::check_order;
 use super::position::element;
 use super::walker::{kind, suggestion, written, Walker};
+use crate::limits::check_order;
 use crate::printable;
 
 /// The top-level keys of a job file, curve or surface.
@@ -80,7 +80,7 @@ impl Walker {
     }
 
     /// A number of samples at `path`: a whole number from 2 to the limit
-    /// (SPEC §8).
+    /// (docs/jobs.md).
     pub(super) fn samples_in(&mut self, v: &Value, path: &str) -> Option<usize> {
         let n = self.whole(v, path)?;
         check_samples(n, &written(v))
@@ -88,7 +88,7 @@ impl Walker {
             .ok()
     }
 
-    /// `type_reduction`: one of the [`TypeReduction::name`]s (SPEC §10),
+    /// `type_reduction`: one of the [`TypeReduction::name`]s (docs/method.md §9),
     /// the paper's when the key is missing. Curve and surface jobs alike.
     pub(super) fn type_reduction(&mut self, o: &Map<String, Value>) -> Option<TypeReduction> {
         let Some(v) = o.get("type_reduction") else {
@@ -147,7 +147,7 @@ impl Walker {
 
     /// One order `v` at `path`, given as `key` (`order` or `degree`): a
     /// whole number, an order of at least 1, within
-    /// [`MAX_ORDER`](super::limits::MAX_ORDER). Returns the degree.
+    /// [`MAX_ORDER`](crate::limits::MAX_ORDER). Returns the degree.
     pub(super) fn degree_of(&mut self, key: &str, path: &str, v: &Value) -> Option<usize> {
         let given = self.whole(v, path)?;
         if key == "order" && given == 0 {

@@ -1,4 +1,4 @@
-//! Job files (SPEC §8) and data files for fitting: reading, validating every
+//! Job files (docs/jobs.md) and data files for fitting: reading, validating every
 //! rule at once, and writing back.
 //!
 //! A job file becomes the core crate's [`Job`], which
@@ -10,29 +10,27 @@
 #![cfg_attr(not(test), deny(clippy::indexing_slicing))]
 
 mod common;
-pub mod limits;
 pub(crate) mod parse;
 mod point;
 mod position;
-mod read;
 mod surface;
 mod valid;
 mod walker;
-pub(crate) mod write;
 
-pub use limits::{
+pub use crate::job_json::job_json;
+pub use crate::limits::{
     MAX_ARRAY, MAX_FILE_BYTES, MAX_KEYS, MAX_NESTING, MAX_ORDER, MAX_POINTS, MAX_PROBLEMS,
     MAX_SURFACE_WORK, MAX_VALUES,
 };
+pub use crate::read::{read_text, read_text_from};
 pub use position::{locate, LineColumn};
-pub use read::{read_text, read_text_from};
-pub use write::job_json;
 
 use std::path::Path;
 
 use t2spline::job::Job;
 
-use crate::{Error, FitData};
+use crate::error::Error;
+use crate::fit_data::FitData;
 
 /// Parses and validates a job from JSON text; `source` names the file in
 /// messages.
@@ -40,8 +38,8 @@ use crate::{Error, FitData};
 /// # Errors
 /// [`Error::Invalid`] listing every problem found: JSON syntax, duplicate,
 /// unknown or missing keys, wrong types, the limits of [`limits`], and
-/// every rule of SPEC §1, §6, §8 and, for a surface job (`points` given as
-/// rows of a net), §9. Each names its line and column (of the key or element
+/// every rule of docs/method.md §1, §6, docs/jobs.md and, for a surface job (`points` given as
+/// rows of a net), docs/method.md §8. Each names its line and column (of the key or element
 /// concerned; for a missing key, of the object that lacks it) and its place
 /// (`points[2].y`, `weights[1]`, `knots`, and in a surface job
 /// `points[2][1].y`, `weights[2][1]`, `knots.v`, ...).

@@ -19,14 +19,14 @@ use t2spline::job::{Job, Model, Samples, DEFAULT_SAMPLES};
 use t2spline::{Alpha, FuzzyCurve, KnotVector, Nt2Point, Place};
 
 use super::common::{knot_error_path, TOP_KEYS};
-use super::limits::{MAX_ARRAY, MAX_KEYS, MAX_NESTING, MAX_POINTS, MAX_PROBLEMS, MAX_VALUES};
 use super::point::{complete, RawPoint};
 use super::position::{self, element, Oversized};
 use super::surface;
 use super::valid;
 use super::walker::{kind, Walker};
+use crate::error::Problem;
 use crate::fit_data::FitData;
-use crate::Problem;
+use crate::limits::{MAX_ARRAY, MAX_KEYS, MAX_NESTING, MAX_POINTS, MAX_PROBLEMS, MAX_VALUES};
 
 /// The keys of a data file for `t2spline fit`: those of a job but the two the
 /// fit computes ([`FIT_MAKES`]).
@@ -274,7 +274,7 @@ impl Walker {
             }
             self.numbers(v, "knots")
         });
-        // Curve-level rules (SPEC §6), checked against the number of entries in
+        // Curve-level rules (docs/method.md §6), checked against the number of entries in
         // `points` even when some of them are invalid.
         let n = header.count;
         let weights = match (weights, o.contains_key("weights")) {
@@ -371,7 +371,7 @@ impl Walker {
         })
     }
 
-    /// The rules that tie points, weights and knots together (SPEC §6).
+    /// The rules that tie points, weights and knots together (docs/method.md §6).
     fn curve_rules(
         &mut self,
         degree: usize,

@@ -1,5 +1,5 @@
 //! A control point as read: an object with a fuzzy number per coordinate,
-//! each number checked by the core's rules (SPEC §1) and placed in the file;
+//! each number checked by the core's rules (docs/method.md §1) and placed in the file;
 //! shared by the points of a curve and the net of a surface.
 
 use serde_json::Value;
@@ -104,7 +104,7 @@ impl Walker {
     }
 }
 
-/// The path of one of the values of the number at `number`, by its SPEC name
+/// The path of one of the values of the number at `number`, by its name in docs/method.md §1
 /// (`upper.left` → `upper[0]`, `lower_height` → `lower_height`).
 fn value_path(number: &str, what: &str) -> String {
     match what.split_once('.') {

@@ -14,7 +14,7 @@
 use std::collections::{HashMap, HashSet};
 use std::fmt::Write;
 
-use super::limits::MAX_PROBLEMS;
+use crate::limits::MAX_PROBLEMS;
 use crate::printable::push_escaped;
 
 /// A line and a column, both from 1.

@@ -1,4 +1,4 @@
-//! The rules of surface jobs (SPEC §9): a job whose `points` are rows of a
+//! The rules of surface jobs (docs/method.md §8): a job whose `points` are rows of a
 //! net.
 //!
 //! The walkers of keys, numbers, points, weights and knots are the curves'
@@ -20,10 +20,10 @@ use t2spline::nurbs::net_weight_problems;
 use t2spline::{Direction, Error as CoreError, FuzzySurface, KnotVector, Nt2Point, Place};
 
 use super::common::{knot_error_path, TOP_KEYS};
-use super::limits::{check_net_size, check_surface_work};
 use super::point::complete;
 use super::position::{child, element};
 use super::walker::{kind, written, Walker};
+use crate::limits::{check_net_size, check_surface_work};
 
 const KNOT_KEYS: [&str; 2] = ["u", "v"];
 
@@ -59,7 +59,7 @@ struct Net {
 type KnotValues = [Option<Vec<f64>>; 2];
 
 impl Walker {
-    /// A surface job (SPEC §9): every problem of every key, then the rules
+    /// A surface job (docs/method.md §8): every problem of every key, then the rules
     /// that tie the net, weights and knots together in each direction.
     pub(super) fn surface_job(&mut self, o: &Map<String, Value>) -> Option<Job> {
         let (common, degree) = self.common(o, TOP_KEYS, |w| w.degrees(o));
@@ -186,7 +186,7 @@ impl Walker {
     }
 
     /// The net `points[i][j]`: rows of 3-D points, all of one length, at most
-    /// [`MAX_POINTS`](super::limits::MAX_POINTS) in all (counted before any
+    /// [`MAX_POINTS`](crate::limits::MAX_POINTS) in all (counted before any
     /// point is read).
     fn net(&mut self, v: &Value, height: Result<Option<f64>, ()>) -> Option<Net> {
         let Some(rows) = v.as_array() else {
@@ -323,7 +323,7 @@ impl Walker {
         valid.then_some(values)
     }
 
-    /// The rules of each direction (SPEC §6 as per §9): at least `k` control
+    /// The rules of each direction (docs/method.md §6 as per §8): at least `k` control
     /// points along it, and its knot vector's rules when given.
     fn direction_rules(
         &mut self,

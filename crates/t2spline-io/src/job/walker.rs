@@ -5,8 +5,8 @@
 
 use serde_json::{Map, Value};
 
-use super::limits::MAX_PROBLEMS;
 use super::position::{child, element};
+use crate::limits::MAX_PROBLEMS;
 
 /// The validator's state: the first [`MAX_PROBLEMS`] problems, as (JSON path,
 /// message), how many more there were, and how messages name the root.

@@ -5,8 +5,9 @@ use t2spline::fit::{FuzzifyRule, FuzzyData};
 use t2spline::{Alpha, Num};
 
 use super::ReadingsFile;
-use crate::job::write::point_json;
-use crate::{Error, FitData, Problem};
+use crate::error::{Error, Problem};
+use crate::fit_data::FitData;
+use crate::job_json::point_json;
 
 impl ReadingsFile {
     /// The data of a fit from the fuzzy data points `points` that the core

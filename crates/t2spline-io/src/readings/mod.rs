@@ -45,9 +45,9 @@ use std::path::Path;
 use t2spline::fit::{Readings, MIN_READINGS};
 use t2spline::{Num, MAX_MAGNITUDE};
 
-use crate::job::limits::{MAX_POINTS, MAX_PROBLEMS};
-use crate::job::read_text;
-use crate::{Error, Problem};
+use crate::error::{Error, Problem};
+use crate::limits::{MAX_POINTS, MAX_PROBLEMS};
+use crate::read::read_text;
 
 /// The most rows (readings) a readings file may have: 4 million, about what
 /// a 64 MiB file of short rows holds.

@@ -4,9 +4,9 @@ use std::path::Path;
 
 use t2spline::{Num, MAX_MAGNITUDE};
 
-use crate::job::read_text;
+use crate::error::{Error, Problem};
+use crate::read::read_text;
 use crate::readings::tokens::{records, Fault, Field};
-use crate::{Error, Problem};
 
 /// Rows of a query-point file at most (ten million: 240 MB of coordinates).
 pub const MAX_QUERY_POINTS: usize = 10_000_000;

@@ -10,9 +10,9 @@
 //! | `stage4-defuzzified` | crisp and defuzzified curves, largest distance, magnified | Fig. 5.4 |
 //! | `alpha-sweep` | distance along t between solution and crisp curve, several α | — |
 //! | `distance-alpha` | `error.max` and `error.rms` against α, both sides of each h | — |
-//! | `reductions` | the solution curve of every type reduction and its distance to the crisp curve | SPEC §10 |
+//! | `reductions` | the solution curve of every type reduction and its distance to the crisp curve | docs/method.md §9 |
 //!
-//! Stages 2–4 follow the run's type reduction (SPEC §10); `alpha-sweep` and
+//! Stages 2–4 follow the run's type reduction (docs/method.md §9); `alpha-sweep` and
 //! `distance-alpha` show the paper's, the one that uses α.
 //!
 //! Curve figures live in [`curve`]; the layout, legend, colour bar and SVG/PNG

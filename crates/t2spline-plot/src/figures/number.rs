@@ -1,7 +1,7 @@
 //! One fuzzy number (paper Figs. 3.1 and 4.1–4.4): its three membership
 //! functions, the footprint of uncertainty, the height h, the cut at alpha and
 //! the type-reduced triangle with its centroid; and the other reductions of
-//! SPEC §10 (`number_reductions.rs`).
+//! docs/method.md §9 (`number_reductions.rs`).
 
 use t2spline::job::Job;
 use t2spline::{Alpha, AlphaCut, Axis, Interval, Layer, Nt2Number, Tfn, TypeReduction};
@@ -200,7 +200,7 @@ fn legend(lower_cut: bool, d: f64) -> Vec<LegendEntry> {
 }
 
 /// The `number` figure for one coordinate of one control point at `alpha`:
-/// the paper's cut and type reduction, and the other reductions of SPEC §10
+/// the paper's cut and type reduction, and the other reductions of docs/method.md §9
 /// (which do not use alpha) beside them. The subtitle states the reduction
 /// `method` (the run's).
 ///

@@ -1,4 +1,4 @@
-//! The type-2 literature's reductions of one number (SPEC §10) drawn into
+//! The type-2 literature's reductions of one number (docs/method.md §9) drawn into
 //! the `number` figure, beside the paper's: the centroid interval
 //! `[c_l, c_r]`, the type-reduced set of the alpha-planes
 //! `z ↦ [c_l(z), c_r(z)]` (its membership grade is `z`, so it shares the

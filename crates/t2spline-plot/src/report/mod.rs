@@ -7,7 +7,7 @@
 //! The slider stops on a grid of alpha ([`Stops`]: 0.01 apart for small jobs,
 //! coarser as the job grows, to keep the file within [`DATA_BUDGET`]), at
 //! every lower height h and at the starting alpha. A selector switches the
-//! type reduction of stages 3–4 (SPEC §10): the paper's has a frame per
+//! type reduction of stages 3–4 (docs/method.md §9): the paper's has a frame per
 //! slider stop, each other reduction one frame after them (it does not use
 //! alpha). For every frame the numbers shown, the changing parts of the
 //! figures and the downloads are computed here, in Rust, by the same library
@@ -297,7 +297,7 @@ pub fn render(
     if let Some(compared) = &compared {
         page.section(&Section {
             id: "reductions",
-            title: "The type reductions compared (SPEC §10)",
+            title: "The type reductions compared (docs/method.md §9)",
             svg: compared,
             figure: "reductions",
             caption: &compared_caption,

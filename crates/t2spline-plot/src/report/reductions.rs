@@ -1,4 +1,4 @@
-//! The report's type-reduction selector (SPEC §10): which frame shows each
+//! The report's type-reduction selector (docs/method.md §9): which frame shows each
 //! reduction, the `<select>` element, and its entry in the data block.
 //!
 //! The paper's reduction has one frame per slider stop; each other

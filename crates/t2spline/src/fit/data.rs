@@ -35,7 +35,7 @@ pub struct FitSummary {
     /// For each layer, the largest distance between its fitted spread
     /// `layer − crisp` and the data's, at the data parameters.
     pub spread_deviations: Layers<Deviation>,
-    /// Where fitting each layer on its own breaks the order of SPEC §1.
+    /// Where fitting each layer on its own breaks the order of docs/method.md §1.
     pub independent_violations: Vec<OrderViolation>,
     /// Coordinates whose data mix lower heights, with the (smallest) height
     /// given to the control points.
@@ -49,7 +49,7 @@ pub struct FitSummary {
 pub struct FitOutcome {
     /// What the fit found.
     pub summary: FitSummary,
-    /// The fitted fuzzy curve, or every broken inequality of SPEC §1.
+    /// The fitted fuzzy curve, or every broken inequality of docs/method.md §1.
     pub model: Result<Model, Vec<OrderViolation>>,
 }
 

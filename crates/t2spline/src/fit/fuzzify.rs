@@ -3,7 +3,7 @@
 //!
 //! A surveyor who measures a station `n` times has `n` readings per
 //! coordinate, which scatter around the true value. The rule maps order
-//! statistics of the readings onto the three membership functions of SPEC §1:
+//! statistics of the readings onto the three membership functions of docs/method.md §1:
 //!
 //! ```text
 //! crisp   = median                      (P50)
@@ -25,7 +25,7 @@
 //! the usual 10–90 % range of the readings. The median is the crisp value:
 //! the apex shared by all three triangles, robust to a stray reading, and
 //! inside every interval by construction. Each percentile lies between its
-//! neighbours, so the seven values are ordered as SPEC §1 requires.
+//! neighbours, so the seven values are ordered as docs/method.md §1 requires.
 //!
 //! Percentiles are Hyndman and Fan's type 7 (linear interpolation between
 //! order statistics; numpy's default `np.percentile(x, q)`), computed the way

@@ -11,6 +11,7 @@ use crate::fit::FitOptions;
 use crate::fuzzy::{Axis, Height, Layer, Layers, Nt2Number, Nt2Point, RULES};
 use crate::nurbs::KnotVector;
 use crate::pipeline::FuzzyCurve;
+pub use crate::place::OrderViolation;
 
 /// How the six non-crisp layers are fitted once the crisp one is.
 ///
@@ -32,13 +33,13 @@ pub enum FuzzyFitMode {
     /// ```
     /// (non-negative least squares, Lawson–Hanson; ends fixed to the end
     /// data). Every increment is `≥ 0`, so the seven control values keep the
-    /// order of SPEC §1 exactly, in floating point too. When fitting each layer
+    /// order of docs/method.md §1 exactly, in floating point too. When fitting each layer
     /// on its own would already give ordered control points, the unconstrained
     /// solution is feasible and this mode returns it: the two modes agree.
     #[default]
     Valid,
     /// Each layer fitted on its own, like the crisp one. Exact for every layer
-    /// when interpolating, but the control points may break the order of SPEC
+    /// when interpolating, but the control points may break the order of docs/method.md
     /// §1 and then do not form a fuzzy curve ([`FuzzyFit::violations`]).
     Independent,
 }
@@ -71,31 +72,6 @@ impl FromStr for FuzzyFitMode {
                 "unknown fuzzy fit `{s}` (known: valid, independent)"
             )),
         }
-    }
-}
-
-/// A fitted control point whose seven values break the order of SPEC §1.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct OrderViolation {
-    /// Index of the control point (0-based).
-    pub control_point: usize,
-    /// The coordinate.
-    pub axis: Axis,
-    /// The broken inequality, in SPEC words (`"primary.left <= lower.left"`).
-    pub rule: &'static str,
-    /// The value on the left of the inequality.
-    pub left: f64,
-    /// The value on the right.
-    pub right: f64,
-}
-
-impl fmt::Display for OrderViolation {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(
-            f,
-            "control point {}, {}: the order {} is broken: {} > {}",
-            self.control_point, self.axis, self.rule, self.left, self.right
-        )
     }
 }
 
@@ -263,7 +239,7 @@ fn nested_spreads<const D: usize>(
     Ok(control)
 }
 
-/// Every place where the seven control values break the order of SPEC §1.
+/// Every place where the seven control values break the order of docs/method.md §1.
 fn violations<const D: usize>(control: &Layers<Vec<[f64; D]>>) -> Vec<OrderViolation> {
     let mut out = Vec::new();
     for i in 0..control[Layer::Crisp].len() {
@@ -407,14 +383,14 @@ impl<const D: usize> FuzzyFit<D> {
             )
     }
 
-    /// Where this fit's control points break the order of SPEC §1; always
+    /// Where this fit's control points break the order of docs/method.md §1; always
     /// empty for [`FuzzyFitMode::Valid`].
     #[must_use]
     pub fn violations(&self) -> Vec<OrderViolation> {
         violations(&self.control)
     }
 
-    /// Where fitting every layer on its own breaks the order of SPEC §1 for
+    /// Where fitting every layer on its own breaks the order of docs/method.md §1 for
     /// these data: computed in both modes, so that a valid fit can say whether
     /// it had to differ from the independent one.
     #[must_use]
@@ -425,7 +401,7 @@ impl<const D: usize> FuzzyFit<D> {
     /// The fitted fuzzy curve.
     ///
     /// # Errors
-    /// [`Error::UnorderedFit`] if the control points break the order of SPEC
+    /// [`Error::UnorderedFit`] if the control points break the order of docs/method.md
     /// §1 (possible only for [`FuzzyFitMode::Independent`]).
     pub fn to_curve(&self) -> Result<FuzzyCurve<D>, Error> {
         let found = self.violations();

@@ -9,7 +9,7 @@
 //!   quartiles, 10th–90th percentiles, extremes widened by the instrument's
 //!   accuracy; [`FuzzifyRule`]).
 //! - [`fit_fuzzy`]: a fuzzy curve through fuzzy data points, with the order of
-//!   SPEC §1 kept by construction ([`FuzzyFitMode::Valid`]) or each layer
+//!   docs/method.md §1 kept by construction ([`FuzzyFitMode::Valid`]) or each layer
 //!   fitted on its own and checked ([`FuzzyFitMode::Independent`]).
 //!
 //! All linear systems are banded and solved by Givens QR

@@ -1,7 +1,7 @@
-//! The alpha-cut of SPEC §2 (the paper's "fuzzification", Eqs. 4.1–4.2).
+//! The alpha-cut of docs/method.md §2 (the paper's "fuzzification", Eqs. 4.1–4.2).
 
 use crate::error::{Error, Place};
-use crate::fuzzy::{Interval, Layer, Nt2Number, Tfn};
+use crate::fuzzy::{Interval, Layer, Nt2Number};
 
 /// A membership level in `[0, 1]`; [`Alpha::try_new`] is the only way in.
 #[derive(Clone, Copy, Debug, PartialEq, PartialOrd)]
@@ -44,7 +44,7 @@ impl Alpha {
     }
 }
 
-/// The alpha-cut of one [`Nt2Number`] (SPEC §2).
+/// The alpha-cut of one [`Nt2Number`] (docs/method.md §2).
 ///
 /// Upper and primary cuts always exist; the lower cut exists only for `α ≤ h`
 /// (paper Eq. 4.1) and is absent above the lower height (Eq. 4.2, where the paper
@@ -58,7 +58,7 @@ pub struct AlphaCut {
     lower: Option<Interval>,
 }
 
-/// `cut(e, s) = e + s·(crisp − e)` (SPEC §2), evaluated as `(1 − s)·e + s·crisp`
+/// `cut(e, s) = e + s·(crisp − e)` (docs/method.md §2), evaluated as `(1 − s)·e + s·crisp`
 /// so that `s = 0` gives `e` and `s = 1` gives `crisp` exactly, and kept between
 /// `e` and `crisp`, where the exact value lies, against rounding.
 fn cut(e: f64, crisp: f64, s: f64) -> f64 {
@@ -75,7 +75,7 @@ impl AlphaCut {
             cut(x.primary().right(), c, a),
         );
         // α ≤ h: the lower triangle of height h is cut at the fraction α/h of the
-        // way to its apex (SPEC §2.1). Mathematically the lower ends stay inside
+        // way to its apex (docs/method.md §2). Mathematically the lower ends stay inside
         // the primary cut (α/h ≥ α and lower ⊂ primary); `max`/`min` only guard
         // the last bit against rounding.
         let lower = (a <= h).then(|| {
@@ -130,47 +130,6 @@ impl AlphaCut {
             Layer::UpperRight => Some(self.upper.right()),
         }
     }
-
-    /// Type reduction by the paper's "centroid min" rule (SPEC §3, Def. 4.3).
-    ///
-    /// ```text
-    /// α ≤ h:  left = (upper.left' + primary.left' + lower.left') / 3
-    ///         right = (lower.right' + primary.right' + upper.right') / 3
-    /// α > h:  left = (upper.left' + primary.left') / 2
-    ///         right = (primary.right' + upper.right') / 2
-    /// ```
-    /// The average changes from three terms to two at `α = h`, so the result
-    /// jumps there: that is the paper's method.
-    ///
-    /// # Examples
-    /// ```
-    /// # use t2spline::{Alpha, Nt2Number};
-    /// let x = Nt2Number::try_new(1.0, [0.4, 1.9], [0.6, 1.6], [0.8, 1.3], 0.6)?;
-    /// let t = x.alpha_cut(Alpha::try_new(0.8)?).type_reduce();
-    /// assert!((t.left() - 0.9).abs() < 1e-15 && (t.right() - 1.15).abs() < 1e-15);
-    /// # Ok::<(), t2spline::Error>(())
-    /// ```
-    #[must_use]
-    pub fn type_reduce(&self) -> Tfn {
-        let c = self.crisp;
-        let (left, right) = match self.lower {
-            Some(l) => (
-                (self.upper.left() + self.primary.left() + l.left()) / 3.0,
-                (l.right() + self.primary.right() + self.upper.right()) / 3.0,
-            ),
-            None => (
-                (self.upper.left() + self.primary.left()) / 2.0,
-                (self.primary.right() + self.upper.right()) / 2.0,
-            ),
-        };
-        // A mean of values in [upper.left', crisp] lies there too; the clamp
-        // only removes rounding.
-        Tfn::new_unchecked(
-            left.clamp(self.upper.left(), c),
-            c,
-            right.clamp(c, self.upper.right()),
-        )
-    }
 }
 
 #[cfg(test)]
@@ -192,7 +151,7 @@ mod tests {
     #[test]
     fn alpha_one_is_crisp() {
         let c = x().alpha_cut(Alpha::try_new(1.0).unwrap());
-        for l in crate::Layer::ALL {
+        for l in crate::fuzzy::Layer::ALL {
             assert!(
                 matches!(c.layer(l), None | Some(1.0)),
                 "{l}: {:?}",

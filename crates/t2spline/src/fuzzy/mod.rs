@@ -1,19 +1,19 @@
-//! Normal triangular type-2 fuzzy numbers and points (SPEC §1–§5).
+//! Normal triangular type-2 fuzzy numbers and points (docs/method.md §1–§5).
 //!
 //! The flow through this module is the flow of one uncertain value through the
 //! method: an [`Nt2Number`] is cut at a level [`Alpha`] into an [`AlphaCut`]
-//! (SPEC §2), type-reduced to a type-1 triangle [`Tfn`] (SPEC §3) and defuzzified
-//! to one real number (SPEC §4). An [`Nt2Point`] does the same per coordinate.
+//! (docs/method.md §2), type-reduced to a type-1 triangle [`Tfn`] (docs/method.md §3) and defuzzified
+//! to one real number (docs/method.md §4). An [`Nt2Point`] does the same per coordinate.
 
 mod alpha_cut;
 mod layer;
 mod number;
 mod point;
-mod type_reduce;
+mod tfn;
 
 pub use alpha_cut::{Alpha, AlphaCut};
 pub use layer::{Layer, Layers};
 pub(crate) use number::RULES;
 pub use number::{Height, Interval, Membership, Nt2Number};
 pub use point::{Axis, Nt2Point, Nt2Point2, Nt2Point3};
-pub use type_reduce::Tfn;
+pub use tfn::Tfn;

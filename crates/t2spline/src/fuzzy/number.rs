@@ -1,4 +1,4 @@
-//! The normal triangular type-2 fuzzy number (NT2TFN) of SPEC §1.
+//! The normal triangular type-2 fuzzy number (NT2TFN) of docs/method.md §1.
 
 use crate::error::{Error, Place};
 use crate::fuzzy::{Alpha, AlphaCut, Layer, Layers};
@@ -77,7 +77,7 @@ impl Interval {
     }
 }
 
-/// The height `h` of the lower membership function, in `(0, 1]` (SPEC §1).
+/// The height `h` of the lower membership function, in `(0, 1]` (docs/method.md §1).
 ///
 /// `h < 1` is the paper's *normal* case (Def. 4.1); `h = 1` is accepted too.
 #[derive(Clone, Copy, Debug, PartialEq, PartialOrd)]
@@ -117,7 +117,7 @@ impl Height {
     }
 }
 
-/// Which of the three triangles of a number (SPEC §1, "Membership functions").
+/// Which of the three triangles of a number (docs/method.md §1, "Membership functions").
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Membership {
     /// Upper membership function `T(x; upper.left, crisp, upper.right, 1)`.
@@ -128,7 +128,7 @@ pub enum Membership {
     Lower,
 }
 
-/// A normal triangular type-2 fuzzy number (SPEC §1, paper Def. 4.1).
+/// A normal triangular type-2 fuzzy number (docs/method.md §1, paper Def. 4.1).
 ///
 /// Seven ordered values and the height `h` of the lower membership function:
 /// ```text
@@ -156,7 +156,7 @@ pub struct Nt2Number {
     height: Height,
 }
 
-/// Names of the seven values in SPEC order, for messages.
+/// Names of the seven values in the order of docs/method.md §1, for messages.
 const NAMES: [&str; 7] = [
     "upper.left",
     "primary.left",
@@ -167,7 +167,7 @@ const NAMES: [&str; 7] = [
     "upper.right",
 ];
 
-/// The six inequalities of SPEC §1, as text.
+/// The six inequalities of docs/method.md §1, as text.
 pub(crate) const RULES: [&str; 6] = [
     "upper.left <= primary.left",
     "primary.left <= lower.left",
@@ -223,7 +223,7 @@ impl Nt2Number {
         Self::try_new(x, [x, x], [x, x], [x, x], 1.0)
     }
 
-    /// Every rule of SPEC §1 that these values break, in order; empty if they
+    /// Every rule of docs/method.md §1 that these values break, in order; empty if they
     /// make a valid number. A non-finite value is reported as
     /// [`Error::NotFinite`], a finite one of magnitude above
     /// [`MAX_MAGNITUDE`](crate::MAX_MAGNITUDE) as [`Error::OutOfRange`]; either
@@ -327,7 +327,7 @@ impl Nt2Number {
         }
     }
 
-    /// All seven values, in SPEC §1 order.
+    /// All seven values, in docs/method.md §1 order.
     #[must_use]
     pub fn layers(&self) -> Layers<f64> {
         Layers::from_fn(|l| self.layer(l))
@@ -347,7 +347,7 @@ impl Nt2Number {
         }
     }
 
-    /// The alpha-cut at level `alpha` (SPEC §2, paper Eqs. 4.1–4.2).
+    /// The alpha-cut at level `alpha` (docs/method.md §2, paper Eqs. 4.1–4.2).
     ///
     /// ```text
     /// cut(e, s) = e + s·(crisp − e)
@@ -361,7 +361,7 @@ impl Nt2Number {
         AlphaCut::of(self, alpha)
     }
 
-    /// The membership grade of `x` in one of the three triangles (SPEC §1).
+    /// The membership grade of `x` in one of the three triangles (docs/method.md §1).
     ///
     /// ```text
     /// T(x; a, c, b, top) = top·(x − a)/(c − a) on [a, c],  top·(b − x)/(b − c) on [c, b],  0 elsewhere
@@ -387,7 +387,7 @@ impl Nt2Number {
     }
 }
 
-/// `T(x; a, c, b, top)` of SPEC §1.
+/// `T(x; a, c, b, top)` of docs/method.md §1.
 fn triangle(x: f64, a: f64, c: f64, b: f64, top: f64) -> f64 {
     if x == c {
         top

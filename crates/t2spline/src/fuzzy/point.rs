@@ -1,25 +1,10 @@
-//! Normal type-2 fuzzy data points in 2-D and 3-D (SPEC §5).
+//! Normal type-2 fuzzy data points in 2-D and 3-D (docs/method.md §5).
 
-use std::fmt;
-
-use crate::fuzzy::{Alpha, AlphaCut, Layer, Nt2Number, Tfn};
-use crate::Error;
-
-/// A coordinate axis.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum Axis {
-    /// The first coordinate.
-    X,
-    /// The second coordinate.
-    Y,
-    /// The third coordinate.
-    Z,
-}
+use crate::error::Error;
+use crate::fuzzy::{Alpha, AlphaCut, Layer, Nt2Number};
+pub use crate::place::Axis;
 
 impl Axis {
-    /// The axes in order.
-    pub const ALL: [Axis; 3] = [Axis::X, Axis::Y, Axis::Z];
-
     /// The first `D` axes, in order: the check of a dimension that every
     /// constructor generic over `D` makes.
     ///
@@ -40,45 +25,10 @@ impl Axis {
         }
         Ok(Axis::of::<D>())
     }
-
-    /// The first `D` axes, for a `D` a constructor has checked
-    /// ([`Axis::first`]); past the third every index names `z`, which no
-    /// checked value reaches.
-    pub(crate) fn of<const D: usize>() -> [Axis; D] {
-        std::array::from_fn(|i| Axis::from_index(i).unwrap_or(Axis::Z))
-    }
-
-    /// The axis with this index (`0 → x`), if any.
-    #[must_use]
-    pub fn from_index(i: usize) -> Option<Axis> {
-        Axis::ALL.get(i).copied()
-    }
-
-    /// Index of the coordinate (`x → 0`).
-    #[must_use]
-    pub fn index(self) -> usize {
-        self as usize
-    }
-
-    /// The key used in job files: `"x"`, `"y"` or `"z"`.
-    #[must_use]
-    pub fn name(self) -> &'static str {
-        match self {
-            Axis::X => "x",
-            Axis::Y => "y",
-            Axis::Z => "z",
-        }
-    }
-}
-
-impl fmt::Display for Axis {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
-    }
 }
 
 /// A normal type-2 fuzzy data (or control) point: one [`Nt2Number`] per
-/// coordinate (SPEC §5, the paper's NT2FDP). Every operation acts per coordinate.
+/// coordinate (docs/method.md §5, the paper's NT2FDP). Every operation acts per coordinate.
 ///
 /// # Examples
 /// ```
@@ -142,22 +92,9 @@ impl<const D: usize> Nt2Point<D> {
         self.coords.map(|x| x.layer(layer))
     }
 
-    /// The alpha-cut of every coordinate (SPEC §2).
+    /// The alpha-cut of every coordinate (docs/method.md §2).
     #[must_use]
     pub fn alpha_cut(&self, alpha: Alpha) -> [AlphaCut; D] {
         self.coords.map(|x| x.alpha_cut(alpha))
-    }
-
-    /// Alpha-cut then type reduction of every coordinate (SPEC §2–§3).
-    #[must_use]
-    pub fn type_reduce(&self, alpha: Alpha) -> [Tfn; D] {
-        self.alpha_cut(alpha).map(|c| c.type_reduce())
-    }
-
-    /// Alpha-cut, type reduction and defuzzification of every coordinate
-    /// (SPEC §2–§4): the paper's crisp type-2 solution point.
-    #[must_use]
-    pub fn defuzzify(&self, alpha: Alpha) -> [f64; D] {
-        self.type_reduce(alpha).map(|t| t.defuzzify())
     }
 }

@@ -7,19 +7,19 @@
 //!
 //! | name | curve | source |
 //! |---|---|---|
-//! | `crisp` | the crisp curve | SPEC §7 stage 1 |
-//! | `defuzzified` | the crisp type-2 solution at the run's alpha, by its type reduction | SPEC §7 stage 4, §10 |
-//! | `upper_left`, …, `upper_right` | the six other layer curves, before the cut | SPEC §7 stage 1 |
+//! | `crisp` | the crisp curve | docs/method.md §7 stage 1 |
+//! | `defuzzified` | the crisp type-2 solution at the run's alpha, by its type reduction | docs/method.md §7 stage 4, §9 |
+//! | `upper_left`, …, `upper_right` | the six other layer curves, before the cut | docs/method.md §7 stage 1 |
 //!
-//! A surface job (SPEC §9) gives the same names to its surfaces: the crisp,
+//! A surface job (docs/method.md §8) gives the same names to its surfaces: the crisp,
 //! the defuzzified and the six layer surfaces. Points are lifted to three
 //! coordinates (`z = 0` for planar jobs), as every CAD format stores them. A curve whose knot vector has an interior knot of
-//! full multiplicity (order `k`) jumps there (SPEC §6); CAD formats allow at
+//! full multiplicity (order `k`) jumps there (docs/method.md §6); CAD formats allow at
 //! most degree `p = k − 1` inside the knot vector (ISO 10303-42's rule for
 //! `B_SPLINE_CURVE_WITH_KNOTS`), so such a curve is given as its continuous
 //! pieces, cut at the jumps without arithmetic: each piece keeps its control
 //! points, weights and knots bit for bit, and its parameters. At a jump the
-//! run's value is the right piece's (SPEC §6: from the right). A knot of
+//! run's value is the right piece's (docs/method.md §6: from the right). A knot of
 //! full multiplicity at an end of the domain with knots beyond it is cut the
 //! same way: the control points and knots beyond it, which act only outside
 //! the domain, are dropped, so every piece is clamped there and the curve
@@ -65,7 +65,7 @@ pub struct NamedSurface {
 pub struct Geometry {
     /// The dimension of the job's points (2 or 3); planar jobs have `z = 0`.
     pub dimension: usize,
-    /// `crisp`, `defuzzified`, then the six non-crisp layers in SPEC §1 order;
+    /// `crisp`, `defuzzified`, then the six non-crisp layers in docs/method.md §1 order;
     /// empty for a surface job.
     pub curves: Vec<NamedCurve>,
     /// The same names for the surfaces of a surface job; empty for a curve
@@ -189,7 +189,7 @@ impl ModelVisitor for Exact {
 }
 
 /// The eight shapes of a run with their names: `crisp`, `defuzzified`, then
-/// the six other layers in SPEC §1 order.
+/// the six other layers in docs/method.md §1 order.
 fn named<T>(crisp: T, defuzzified: T, layer: impl Fn(Layer) -> T) -> Vec<(&'static str, T)> {
     let mut out = vec![("crisp", crisp), ("defuzzified", defuzzified)];
     out.extend(

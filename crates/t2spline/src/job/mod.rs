@@ -1,4 +1,4 @@
-//! Jobs: a fuzzy model with how to run it, and running it (SPEC §7–§8).
+//! Jobs: a fuzzy model with how to run it, and running it (docs/method.md §7–§8).
 //!
 //! A [`Job`] is what a job file describes, in memory: a fuzzy curve of 2 or 3
 //! dimensions or a surface ([`Model`]), the level alpha, the type reduction,
@@ -56,7 +56,7 @@ use crate::fuzzy::{Alpha, Axis, Nt2Number, Nt2Point};
 use crate::pipeline::{FuzzyCurve, FuzzySurface};
 use crate::reduction::TypeReduction;
 
-/// A validated job (SPEC §8): the fuzzy model and how to run it.
+/// A validated job (docs/jobs.md): the fuzzy model and how to run it.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Job {
     /// Free text carried along to the result.
@@ -64,7 +64,7 @@ pub struct Job {
     /// The level alpha; may be left to the front end ([`Overrides::alpha`]).
     /// Only the paper's type reduction uses it (see [`Job::settings`]).
     pub alpha: Option<Alpha>,
-    /// The type reduction of stages 3–4 (SPEC §10; the job file's
+    /// The type reduction of stages 3–4 (docs/method.md §9; the job file's
     /// `"type_reduction"`, default [`TypeReduction::Paper`]).
     pub type_reduction: TypeReduction,
     /// Uniform parameters at which curves or surfaces are sampled (checked by
@@ -75,7 +75,7 @@ pub struct Job {
 }
 
 impl Job {
-    /// A job of `model` with the defaults of SPEC §8 and §9: no description,
+    /// A job of `model` with the defaults of docs/jobs.md and docs/method.md §8: no description,
     /// alpha left to the front end, the paper's type reduction,
     /// [`DEFAULT_SAMPLES`] samples along a curve
     /// or a grid of [`DEFAULT_SURFACE_SAMPLES`]² over a surface.
@@ -107,7 +107,7 @@ pub enum Model {
     Planar(FuzzyCurve<2>),
     /// A curve through points with coordinates `x`, `y`, `z`.
     Spatial(FuzzyCurve<3>),
-    /// A surface over a net of points with coordinates `x`, `y`, `z` (SPEC §9).
+    /// A surface over a net of points with coordinates `x`, `y`, `z` (docs/method.md §8).
     Surface(FuzzySurface<3>),
 }
 
@@ -207,7 +207,7 @@ impl Model {
     }
 
     /// The distinct lower heights of the model's numbers, ascending: the
-    /// levels where the solution jumps (SPEC §3).
+    /// levels where the solution jumps (docs/method.md §3).
     #[must_use]
     pub fn heights(&self) -> Vec<f64> {
         let mut h: Vec<f64> = self

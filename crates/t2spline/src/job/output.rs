@@ -1,7 +1,7 @@
-//! What a run computes (SPEC §7–§8), in the shape of the result file.
+//! What a run computes (docs/method.md §7–§8), in the shape of the result file.
 //!
 //! The field names and their order are those of the result file's keys (the
-//! I/O crate writes these types with serde, feature `serde`); SPEC §8 requires
+//! I/O crate writes these types with serde, feature `serde`); docs/jobs.md requires
 //! `alpha`, `control_points.{crisp, type_reduced_left, type_reduced_right,
 //! defuzzified}`, `curves.{params, crisp, defuzzified}`, `curves.layers.*` and
 //! `error.{max, rms}`; the others add the curve's definition and the curves
@@ -22,7 +22,7 @@ use super::Points;
 /// a curve, grids for a surface); they differ in the spline's definition
 /// ([`Spline`]), the parameters ([`Parameters`]) and where the distance is
 /// largest ([`Parameter`]). The result file names the samples `curves` or
-/// `surfaces` accordingly (SPEC §8, §9).
+/// `surfaces` accordingly (docs/jobs.md; docs/method.md §8).
 #[derive(Clone, Debug, PartialEq)]
 pub struct RunOutput {
     /// The job's description, if any.
@@ -31,7 +31,7 @@ pub struct RunOutput {
     pub dimension: usize,
     /// Orders, degrees, weights, knots and domain of the spline.
     pub spline: Spline,
-    /// The type reduction of stages 3–4 (SPEC §10).
+    /// The type reduction of stages 3–4 (docs/method.md §9).
     pub type_reduction: TypeReduction,
     /// The level alpha of the cut (stage 2); 0 (the whole footprint) when
     /// the type reduction does not use alpha.
@@ -39,7 +39,7 @@ pub struct RunOutput {
     /// Whether stages 3–4 depend on alpha (only the paper's type reduction
     /// uses it).
     pub alpha_used: bool,
-    /// Which rule of SPEC §3 reduced the numbers; `None` for a type
+    /// Which rule of docs/method.md §3 reduced the numbers; `None` for a type
     /// reduction other than the paper's.
     pub regime: Option<Regime>,
     /// Control points of every stage.
@@ -50,7 +50,7 @@ pub struct RunOutput {
     pub error: Distance,
 }
 
-/// The definition of the spline that a run sampled (SPEC §6, §9).
+/// The definition of the spline that a run sampled (docs/method.md §6, §8).
 #[derive(Clone, Debug, PartialEq)]
 pub enum Spline {
     /// A curve.
@@ -169,7 +169,7 @@ pub struct Distance {
     pub rms: f64,
 }
 
-/// Which rule of SPEC §3 reduced the numbers at the run's alpha (the paper's
+/// Which rule of docs/method.md §3 reduced the numbers at the run's alpha (the paper's
 /// type reduction).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Regime {
@@ -261,7 +261,7 @@ impl Sampled {
     }
 }
 
-/// One value per non-crisp layer, with the layer names of SPEC §8.
+/// One value per non-crisp layer, with the layer names of docs/jobs.md.
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 #[allow(missing_docs)]

@@ -1,6 +1,7 @@
 //! Points of a run's output as structure of arrays, whatever their dimension.
 
 use crate::sampling::CurveSamples;
+use crate::vector::euclidean_norm;
 
 /// Points of one dimension stored as one vector per coordinate (structure of
 /// arrays): `coord(0)[i]` is the x coordinate of the i-th point.
@@ -11,7 +12,7 @@ use crate::sampling::CurveSamples;
 /// a point at a time is one index per coordinate.
 ///
 /// `T` is `f64`, or `Option<f64>` for the alpha-cut control points, whose lower
-/// ends are absent above a number's lower height (SPEC §2.2).
+/// ends are absent above a number's lower height (docs/method.md §2).
 ///
 /// # Examples
 /// ```
@@ -148,6 +149,23 @@ impl Points {
     /// are unchanged; a serializer that builds arrays (the Python bindings
     /// build numpy arrays) recognises point lists by this name.
     pub const SERDE_NAME: &'static str = "t2spline::Points";
+
+    /// The Euclidean distance between point `i` of these points and point `i`
+    /// of `other` (over the coordinates both have, at most three), scaled so
+    /// that neither a distance near 1e-170 underflows nor one near 1e300
+    /// overflows when squared ([`euclidean_norm`]): the `distance` column of
+    /// the tables of a run, between the crisp and the defuzzified curve.
+    /// `None` if `i` is past the end of either.
+    #[must_use]
+    pub fn distance_at(&self, other: &Points, i: usize) -> Option<f64> {
+        let mut d = [0.0; 3];
+        let mut dims = 0;
+        for ((a, b), slot) in self.coords.iter().zip(&other.coords).zip(&mut d) {
+            *slot = a.get(i)? - b.get(i)?;
+            dims += 1;
+        }
+        Some(euclidean_norm(d.get(..dims)?))
+    }
 }
 
 #[cfg(feature = "serde")]

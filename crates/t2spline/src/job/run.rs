@@ -175,7 +175,7 @@ fn wrong_samples(given: &str, model: &str) -> Error {
     }
 }
 
-/// Which rule of SPEC §3 reduced the numbers; `None` if the paper's
+/// Which rule of docs/method.md §3 reduced the numbers; `None` if the paper's
 /// reduction did not.
 fn regime<const D: usize>(stages: &PointStages<D>) -> Option<Regime> {
     if stages.type_reduction() != TypeReduction::Paper {

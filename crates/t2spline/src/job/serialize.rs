@@ -1,4 +1,4 @@
-//! The result file's layout (SPEC §8, §9): how a [`RunOutput`] serializes.
+//! The result file's layout (docs/jobs.md; docs/method.md §8): how a [`RunOutput`] serializes.
 //!
 //! Most parts derive `Serialize`; what is written by hand here is what the
 //! derive cannot say: the spline's keys at the top level, the samples under

@@ -7,7 +7,7 @@ use crate::reduction::TypeReduction;
 
 use super::Job;
 
-/// The number of samples when a job gives none (SPEC §8).
+/// The number of samples when a job gives none (docs/jobs.md).
 pub const DEFAULT_SAMPLES: usize = 101;
 
 /// The largest number of samples a run may ask for. A result holds up to 16
@@ -21,11 +21,11 @@ pub const MAX_SAMPLES: usize = 1_000_000;
 pub const MAX_DERIVATIVE_ORDER: usize = 16;
 
 /// The number of surface samples per direction when a surface job gives none
-/// (SPEC §9: a grid of 21 × 21).
+/// (docs/method.md §8: a grid of 21 × 21).
 pub const DEFAULT_SURFACE_SAMPLES: usize = 21;
 
 /// How many uniform parameters a run samples: along a curve, or a grid
-/// `u_a × v_b` over a surface's domain (SPEC §8, §9).
+/// `u_a × v_b` over a surface's domain (docs/jobs.md; docs/method.md §8).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Samples {
     /// `n` parameters along a curve.
@@ -71,7 +71,7 @@ impl std::fmt::Display for Samples {
 pub struct Overrides {
     /// The level alpha.
     pub alpha: Option<f64>,
-    /// The type reduction of stages 3–4 (SPEC §10).
+    /// The type reduction of stages 3–4 (docs/method.md §9).
     pub type_reduction: Option<TypeReduction>,
     /// The number of uniform parameters: one count, or for a surface one
     /// count for both directions or two (`[su, sv]`).
@@ -140,8 +140,8 @@ impl Job {
     /// The settings of a run of this job: each override if given, else the
     /// job's value.
     ///
-    /// Alpha is the paper's parameter (SPEC §2–§3): the other type reductions
-    /// read the whole number (SPEC §10). With one of them alpha may be left
+    /// Alpha is the paper's parameter (docs/method.md §2–§3): the other type reductions
+    /// read the whole number (docs/method.md §9). With one of them alpha may be left
     /// out, stage 2 is shown at [`Alpha::ZERO`] (the whole footprint), and
     /// an alpha given anyway is checked and returned as
     /// [`Settings::unused_alpha`].
@@ -247,7 +247,7 @@ fn samples_of(counts: &[u64], surface: bool) -> Result<Samples, String> {
     }
 }
 
-/// Checks a number of samples against SPEC §8 (at least 2) and
+/// Checks a number of samples against docs/jobs.md (at least 2) and
 /// [`MAX_SAMPLES`]; `written` is the value as its source wrote it (`1e300`,
 /// not the `u64` it saturates to).
 ///
@@ -278,7 +278,7 @@ pub fn check_samples(n: u64, written: &str) -> Result<usize, String> {
     }
 }
 
-/// Checks the size of a grid of samples `[su, sv]` (SPEC §9), each already
+/// Checks the size of a grid of samples `[su, sv]` (docs/method.md §8), each already
 /// checked by [`check_samples`]: at most [`MAX_SAMPLES`] grid points.
 ///
 /// # Errors

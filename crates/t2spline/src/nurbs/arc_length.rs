@@ -18,12 +18,12 @@
 //! the estimate reached by then.
 
 use crate::error::Error;
-use crate::nurbs::derivatives::norm;
-use crate::nurbs::net::from_rows;
+use crate::nurbs::homogeneous::from_rows;
 use crate::nurbs::pieces::{tame_pieces, Piece};
 use crate::nurbs::span_eval::SpanEvaluator;
 use crate::nurbs::{KnotVector, NurbsCurve};
 use crate::quadrature::{integrate, integrate_pieces, Tolerance};
+use crate::vector::norm;
 
 /// The relative accuracy promised for lengths.
 pub const LENGTH_TOLERANCE: f64 = 1e-10;

@@ -1,8 +1,8 @@
 //! The point of a curve closest to a given point (The NURBS Book, §6.1).
 
 use crate::golden_section::golden_section_min;
-use crate::nurbs::derivatives::norm;
 use crate::nurbs::{Domain, NurbsCurve};
+use crate::vector::{dot, norm, sub};
 
 /// The result of [`NurbsCurve::closest_point`].
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -19,16 +19,6 @@ pub struct ClosestPoint<const D: usize> {
 const SAMPLES_PER_DEGREE: usize = 8;
 /// Newton steps allowed from one start.
 const NEWTON_STEPS: usize = 50;
-
-/// `a·b`.
-pub(crate) fn dot<const D: usize>(a: &[f64; D], b: &[f64; D]) -> f64 {
-    a.iter().zip(b).map(|(x, y)| x * y).sum()
-}
-
-/// `a − b`.
-pub(crate) fn sub<const D: usize>(a: &[f64; D], b: &[f64; D]) -> [f64; D] {
-    std::array::from_fn(|d| a[d] - b[d])
-}
 
 impl<const D: usize> NurbsCurve<D> {
     /// The point of the curve closest to `target`, over the whole domain

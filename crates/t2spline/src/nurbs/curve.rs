@@ -1,4 +1,4 @@
-//! The rational B-spline curve of SPEC §6 (paper Def. 5.1).
+//! The rational B-spline curve of docs/method.md §6 (paper Def. 5.1).
 
 use crate::error::{Error, Place};
 use crate::fuzzy::Axis;
@@ -6,7 +6,7 @@ use crate::limits::{within_magnitude, MAGNITUDE_RANGE, MAX_WEIGHT, MIN_WEIGHT};
 use crate::nurbs::basis::{basis_functions, STACK_ORDER};
 use crate::nurbs::{Domain, KnotVector};
 
-/// A rational B-spline curve in `D` dimensions (SPEC §6, paper Def. 5.1):
+/// A rational B-spline curve in `D` dimensions (docs/method.md §6, paper Def. 5.1):
 ///
 /// ```text
 /// C(t) = Σᵢ wᵢ Nᵢ,ₚ(t) Pᵢ / Σᵣ wᵣ Nᵣ,ₚ(t),   t ∈ [U[p], U[n]]
@@ -85,7 +85,7 @@ impl<const D: usize> NurbsCurve<D> {
         })
     }
 
-    /// Makes a curve with the default clamped uniform knot vector (SPEC §6).
+    /// Makes a curve with the default clamped uniform knot vector (docs/method.md §6).
     ///
     /// # Errors
     /// [`Error::TooFewControlPoints`] if there are fewer than `degree + 1`
@@ -190,7 +190,7 @@ impl<const D: usize> NurbsCurve<D> {
         rational_basis_span(&self.knots, &self.weights, t)
     }
 
-    /// All `n` rational basis functions `Rᵢ(t)` (SPEC §6), zeros outside the span.
+    /// All `n` rational basis functions `Rᵢ(t)` (docs/method.md §6), zeros outside the span.
     /// They are non-negative and sum to 1.
     ///
     /// # Errors
@@ -270,7 +270,7 @@ pub(crate) fn check_weights(weights: &[f64], n: usize) -> Result<(), Error> {
 }
 
 /// Every rule that `weights` break as the weights of a curve with `count`
-/// control points (SPEC §6): one per point ([`Error::WeightCount`]), each of
+/// control points (docs/method.md §6): one per point ([`Error::WeightCount`]), each of
 /// the first `count` finite and positive ([`Error::Weight`]) and within
 /// [[`MIN_WEIGHT`], [`MAX_WEIGHT`]] ([`Error::WeightOutOfRange`]); empty if none.
 ///

@@ -2,7 +2,7 @@
 
 use crate::error::{Error, Place};
 use crate::nurbs::derivatives::binomial;
-use crate::nurbs::net::Row;
+use crate::nurbs::homogeneous::Row;
 use crate::nurbs::split::segment;
 use crate::nurbs::{KnotVector, NurbsCurve};
 
@@ -142,7 +142,7 @@ pub(crate) fn elevate(knots: &KnotVector, rows: &[Row], t: usize) -> (KnotVector
                 let s = mul + j;
                 for k in (s..=p).rev() {
                     let (alpha, beta) = (alfs[k - s], bets[k - s]);
-                    bpts[k] = crate::nurbs::net::blend(alpha, beta, &bpts[k], &bpts[k - 1]);
+                    bpts[k] = crate::nurbs::homogeneous::blend(alpha, beta, &bpts[k], &bpts[k - 1]);
                 }
                 next_bpts[save] = bpts[p].clone();
             }
@@ -168,7 +168,7 @@ pub(crate) fn elevate(knots: &KnotVector, rows: &[Row], t: usize) -> (KnotVector
                 while j - i > tr {
                     if i < qw.len() {
                         let alf = (ub - uh[i]) / (ua - uh[i]);
-                        qw[i] = crate::nurbs::net::lerp(alf, &qw[i], &qw[i - 1]);
+                        qw[i] = crate::nurbs::homogeneous::lerp(alf, &qw[i], &qw[i - 1]);
                     }
                     if j >= lbz {
                         let factor = if j - tr <= kind - ph + oldr {
@@ -176,7 +176,8 @@ pub(crate) fn elevate(knots: &KnotVector, rows: &[Row], t: usize) -> (KnotVector
                         } else {
                             bet
                         };
-                        ebpts[kj] = crate::nurbs::net::lerp(factor, &ebpts[kj], &ebpts[kj + 1]);
+                        ebpts[kj] =
+                            crate::nurbs::homogeneous::lerp(factor, &ebpts[kj], &ebpts[kj + 1]);
                     }
                     i += 1;
                     j -= 1;

@@ -1,8 +1,9 @@
-//! Derivatives of any order of a rational curve, its tangent and curvature
-//! (The NURBS Book, A2.3, A3.2 and A4.2).
+//! Derivatives of any order of a rational curve and its tangent (The NURBS
+//! Book, A2.3, A3.2 and A4.2); the curvature from them is in `curvature.rs`.
 
 use crate::error::{Error, Place};
 use crate::nurbs::NurbsCurve;
+use crate::vector::norm;
 
 /// The highest derivative order computed. Rational derivatives grow roughly
 /// like `k!/hᵏ` (h a knot span), so orders far above the degree overflow
@@ -272,45 +273,9 @@ impl<const D: usize> NurbsCurve<D> {
         Err(Error::Singular { what: "tangent", t })
     }
 
-    /// The curvature at `t`, in any dimension:
-    ///
-    /// ```text
-    /// κ = √(‖C'‖²‖C''‖² − (C'·C'')²) / ‖C'‖³     (= ‖C' × C''‖ / ‖C'‖³ in 3-D)
-    /// ```
-    /// One-sided at knots as in [`NurbsCurve::derivatives`].
-    ///
-    /// # Errors
-    /// [`Error::OutOfDomain`] if `t` is outside the domain; [`Error::Singular`]
-    /// where the first derivative vanishes (test as in [`NurbsCurve::tangent`]).
-    ///
-    /// # Examples
-    /// A circle of radius 1 has curvature 1:
-    /// ```
-    /// # use t2spline::NurbsCurve;
-    /// let w = std::f64::consts::FRAC_1_SQRT_2;
-    /// let c = NurbsCurve::try_clamped(2, vec![[1.0, 0.0], [1.0, 1.0], [0.0, 1.0]], vec![1.0, w, 1.0])?;
-    /// assert!((c.curvature(0.3)? - 1.0).abs() < 1e-14);
-    /// # Ok::<(), t2spline::Error>(())
-    /// ```
-    pub fn curvature(&self, t: f64) -> Result<f64, Error> {
-        self.domain().check(t)?;
-        let d = self.derivatives_unchecked(t, 2);
-        let (h, s) = self.scales(t);
-        let speed = norm(&d[1]);
-        if speed * h <= 1e-14 * s {
-            return Err(Error::Singular {
-                what: "curvature",
-                t,
-            });
-        }
-        let dot: f64 = d[1].iter().zip(&d[2]).map(|(a, b)| a * b).sum();
-        let cross2 = (speed * speed * norm(&d[2]).powi(2) - dot * dot).max(0.0);
-        Ok(cross2.sqrt() / speed.powi(3))
-    }
-
     /// The length of the knot span at `t` and the size of the control polygon
     /// (the diagonal of its bounding box, at least the smallest normal float).
-    fn scales(&self, t: f64) -> (f64, f64) {
+    pub(super) fn scales(&self, t: f64) -> (f64, f64) {
         let u = self.knots().as_slice();
         let span = self.knots().find_span(t);
         let mut lo = [f64::INFINITY; D];
@@ -324,11 +289,6 @@ impl<const D: usize> NurbsCurve<D> {
         let size = norm(&std::array::from_fn::<f64, D, _>(|d| hi[d] - lo[d]));
         (u[span + 1] - u[span], size.max(f64::MIN_POSITIVE))
     }
-}
-
-/// The Euclidean norm.
-pub(crate) fn norm<const D: usize>(v: &[f64; D]) -> f64 {
-    v.iter().map(|x| x * x).sum::<f64>().sqrt()
 }
 
 #[cfg(test)]

@@ -7,7 +7,7 @@
 //! layers of a fuzzy curve stay ordered (see `pipeline/fuzzy_ops.rs`).
 
 use crate::error::Error;
-use crate::nurbs::net::{blend, Row};
+use crate::nurbs::homogeneous::{blend, Row};
 use crate::nurbs::{KnotVector, NurbsCurve};
 
 /// Checks that `u` lies in the domain and may be inserted `times` more times.

@@ -1,4 +1,4 @@
-//! Knot vectors and parameter domains (SPEC §6).
+//! Knot vectors and parameter domains (docs/method.md §6).
 
 use crate::error::Error;
 use crate::limits::within_magnitude;
@@ -47,7 +47,7 @@ impl Domain {
         }
     }
 
-    /// `samples` uniform parameters (SPEC §8):
+    /// `samples` uniform parameters (docs/jobs.md):
     /// ```text
     /// tᵢ = a + (b − a)·i/(samples − 1),  i = 0 … samples − 1,  the last exactly b
     /// ```
@@ -65,10 +65,10 @@ impl Domain {
     /// assert!(d.uniform(usize::MAX).is_err());
     /// # Ok::<(), t2spline::Error>(())
     /// ```
-    pub fn uniform(&self, samples: usize) -> Result<Vec<f64>, crate::Error> {
+    pub fn uniform(&self, samples: usize) -> Result<Vec<f64>, crate::error::Error> {
         let mut out = Vec::new();
         out.try_reserve_exact(samples)
-            .map_err(|_| crate::Error::Memory { values: samples })?;
+            .map_err(|_| crate::error::Error::Memory { values: samples })?;
         out.extend(self.uniform_iter(samples));
         Ok(out)
     }
@@ -88,7 +88,7 @@ impl Domain {
 
 /// A validated knot vector `U` for a curve of degree `p` with `n` control points.
 ///
-/// Invariants (SPEC §6): `n + p + 1` finite, non-decreasing values of magnitude
+/// Invariants (docs/method.md §6): `n + p + 1` finite, non-decreasing values of magnitude
 /// at most [`MAX_MAGNITUDE`](crate::MAX_MAGNITUDE); no value repeated more than `k = p + 1` times; a non-empty domain `U[p] < U[n]`.
 /// An interior knot of multiplicity `k` is allowed: the curve may jump there,
 /// and its value at the knot is taken from the right.
@@ -120,7 +120,7 @@ impl KnotVector {
         }
     }
 
-    /// Every rule of SPEC §6 that `values` breaks as the knots of a curve of
+    /// Every rule of docs/method.md §6 that `values` breaks as the knots of a curve of
     /// degree `degree` with `count` control points; empty if none.
     ///
     /// A wrong count or too few control points is reported alone, since the other
@@ -207,7 +207,7 @@ impl KnotVector {
         u[..k].iter().all(|&v| v == u[0]) && u[u.len() - k..].iter().all(|&v| v == u[u.len() - 1])
     }
 
-    /// The clamped uniform knot vector (SPEC §6 default): `k` zeros, `n − k`
+    /// The clamped uniform knot vector (docs/method.md §6 default): `k` zeros, `n − k`
     /// uniform interior knots `i/(n − k + 1)`, `k` ones.
     ///
     /// # Errors
@@ -356,7 +356,7 @@ mod tests {
             end: 1.0,
         };
         for n in [usize::MAX, usize::MAX / 8, 1 << 60] {
-            assert_eq!(d.uniform(n), Err(crate::Error::Memory { values: n }));
+            assert_eq!(d.uniform(n), Err(crate::error::Error::Memory { values: n }));
         }
     }
 }

@@ -1,4 +1,4 @@
-//! Rational B-spline (NURBS) curves of any order (SPEC §6, paper Def. 5.1).
+//! Rational B-spline (NURBS) curves of any order (docs/method.md §6, paper Def. 5.1).
 //!
 //! [`KnotVector`] validates knots and finds spans; [`basis`] holds the B-spline
 //! basis functions (The NURBS Book, A2.1–A2.2) and [`derivatives`] their
@@ -15,7 +15,7 @@
 //! | closest point | [`NurbsCurve::closest_point`] | §6.1 |
 //! | bounding box | [`NurbsCurve::bounding_box`] | — |
 //!
-//! [`NurbsSurface`] is the tensor product of two such curves (SPEC §9), with
+//! [`NurbsSurface`] is the tensor product of two such curves (docs/method.md §8), with
 //! the same operations in either [`Direction`], run by the same row
 //! algorithms (`surface/operations.rs`).
 //!
@@ -27,14 +27,15 @@ pub use arc_length::LENGTH_TOLERANCE;
 pub mod basis;
 mod bounding_box;
 pub(crate) mod closest_point;
+mod curvature;
 pub(crate) mod curve;
 pub(crate) mod degree_elevation;
 pub mod derivatives;
 #[cfg(test)]
 pub(crate) mod fixtures;
+pub(crate) mod homogeneous;
 pub(crate) mod knot_insertion;
 mod knots;
-pub(crate) mod net;
 pub(crate) mod pieces;
 pub(crate) mod span_eval;
 pub(crate) mod split;

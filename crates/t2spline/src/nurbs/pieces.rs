@@ -32,7 +32,7 @@
 //! can be sampled however narrow it is in `t`, where parameters a few units
 //! in the last place apart could not show the curve's motion.
 
-use crate::nurbs::net::Row;
+use crate::nurbs::homogeneous::Row;
 use crate::nurbs::split::segment;
 use crate::nurbs::KnotVector;
 

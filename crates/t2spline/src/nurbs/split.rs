@@ -2,8 +2,8 @@
 //! (The NURBS Book, §5.3: knot insertion up to multiplicity `p`).
 
 use crate::error::Error;
+use crate::nurbs::homogeneous::Row;
 use crate::nurbs::knot_insertion::insert;
-use crate::nurbs::net::Row;
 use crate::nurbs::{KnotVector, NurbsCurve};
 
 /// The piece of a curve over `[a, b]` (`U[p] ≤ a < b ≤ U[n]`), clamped at both

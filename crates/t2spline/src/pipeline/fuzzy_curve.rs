@@ -1,5 +1,5 @@
 //! Stage 1: the normal type-2 fuzzy rational B-spline curve (NT2FRBsC) and its
-//! seven layer curves (SPEC §6–§7, paper Eq. 5.1, Fig. 5.1).
+//! seven layer curves (docs/method.md §6–§7, paper Eq. 5.1, Fig. 5.1).
 
 use crate::error::Error;
 use crate::fuzzy::{Alpha, Axis, Height, Layer, Layers, Nt2Number, Nt2Point};
@@ -9,7 +9,7 @@ use crate::pipeline::Solution;
 use crate::reduction::TypeReduction;
 
 /// A rational B-spline curve whose control points are normal type-2 fuzzy points
-/// (SPEC §6, paper Def. 5.1):
+/// (docs/method.md §6, paper Def. 5.1):
 ///
 /// ```text
 /// C̃(t) = Σᵢ wᵢ Nᵢ,ₚ(t) P̃ᵢ / Σᵣ wᵣ Nᵣ,ₚ(t)
@@ -17,7 +17,7 @@ use crate::reduction::TypeReduction;
 /// evaluated layer by layer: one rational B-spline through each of the seven
 /// values of every control point, all with the same weights and knots. Because
 /// the rational basis is non-negative and sums to 1, the seven layer curves keep
-/// the order of SPEC §1 at every `t`.
+/// the order of docs/method.md §1 at every `t`.
 ///
 /// # Examples
 /// ```
@@ -43,7 +43,7 @@ pub struct FuzzyCurve<const D: usize> {
 
 impl<const D: usize> FuzzyCurve<D> {
     /// Makes a fuzzy curve of degree `degree`; `knots = None` selects the clamped
-    /// uniform default (SPEC §6).
+    /// uniform default (docs/method.md §6).
     ///
     /// # Errors
     /// [`Error::Dimension`] unless `1 ≤ D ≤ 3`; [`Error::TooFewControlPoints`],
@@ -127,7 +127,7 @@ impl<const D: usize> FuzzyCurve<D> {
         NurbsCurve::from_parts_unchecked(control_points, self.weights.clone(), self.knots.clone())
     }
 
-    /// The layer curve through one value of every control point (SPEC §6).
+    /// The layer curve through one value of every control point (docs/method.md §6).
     #[must_use]
     pub fn layer_curve(&self, layer: Layer) -> NurbsCurve<D> {
         self.with_control_points(self.points.iter().map(|p| p.layer(layer)).collect())
@@ -178,7 +178,7 @@ impl<const D: usize> FuzzyCurve<D> {
     /// The fuzzy curve at `t` as a fuzzy point, when each coordinate has one
     /// lower height for all control points (then the point's numbers have that
     /// height); `Ok(None)` otherwise, since a mix of heights does not combine
-    /// into one number (SPEC §6).
+    /// into one number (docs/method.md §6).
     ///
     /// # Errors
     /// [`Error::OutOfDomain`] if `t` is NaN or outside the domain.
@@ -193,14 +193,14 @@ impl<const D: usize> FuzzyCurve<D> {
     }
 
     /// Runs stages 2–4 of Algorithm 1.1 at level `alpha` with the paper's
-    /// type reduction (SPEC §7); the same as
+    /// type reduction (docs/method.md §7); the same as
     /// `self.solve_with(alpha, TypeReduction::Paper)`.
     #[must_use]
     pub fn solve(&self, alpha: Alpha) -> Solution<D> {
         self.solve_with(alpha, TypeReduction::Paper)
     }
 
-    /// Runs stages 2–4 with the type reduction `method` (SPEC §7, §10): the
+    /// Runs stages 2–4 with the type reduction `method` (docs/method.md §7, §9): the
     /// cut at `alpha` (stage 2), then every control point's numbers reduced
     /// by [`Nt2Number::reduce`] (stage 3: left and right; stage 4: the
     /// defuzzified value). Only [`TypeReduction::Paper`] reduces the cut;

@@ -1,5 +1,5 @@
 //! The curve operations on a fuzzy curve: every layer with the same knots and
-//! weights (SPEC §6), so that the result is again a fuzzy curve.
+//! weights (docs/method.md §6), so that the result is again a fuzzy curve.
 //!
 //! Knot insertion, refinement, splitting and degree elevation are linear maps
 //! of the homogeneous control points `(wᵢPᵢ, wᵢ)` whose coefficients depend only
@@ -9,7 +9,7 @@
 //! coefficients and the crisp layer of the result is bit for bit the result of
 //! the crisp algorithm.
 //!
-//! **Why the order of SPEC §1 survives.** A new Cartesian point is
+//! **Why the order of docs/method.md §1 survives.** A new Cartesian point is
 //! `Qⱼ = Σᵢ cⱼᵢwᵢPᵢ / Σᵢ cⱼᵢwᵢ`: with `cⱼᵢ ≥ 0` a convex combination of old
 //! points with coefficients `cⱼᵢwᵢ/Σ cⱼᵢwᵢ` common to all seven layers, so the
 //! order of the old values carries over to every new value. Insertion,
@@ -25,8 +25,8 @@
 use crate::error::{Error, Place};
 use crate::fuzzy::{Axis, Height, Layer, Layers, Nt2Number, Nt2Point};
 use crate::nurbs::degree_elevation::{check_elevation, elevate};
+use crate::nurbs::homogeneous::{check_rows, Row};
 use crate::nurbs::knot_insertion::{insert, refine};
-use crate::nurbs::net::{check_rows, Row};
 use crate::nurbs::split::{segment, split};
 use crate::nurbs::{BoundingBox, ClosestPoint, KnotVector};
 use crate::pipeline::FuzzyCurve;

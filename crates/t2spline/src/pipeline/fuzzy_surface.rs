@@ -1,12 +1,12 @@
-//! The normal type-2 fuzzy rational B-spline surface (SPEC §9): a net of fuzzy
+//! The normal type-2 fuzzy rational B-spline surface (docs/method.md §8): a net of fuzzy
 //! control points, its seven layer surfaces, and the surface operations on all
 //! seven layers at once.
 
 use crate::error::{Error, Place};
 use crate::fuzzy::{Alpha, Axis, Height, Layer, Layers, Nt2Number, Nt2Point};
 use crate::nurbs::degree_elevation::{check_elevation, elevate};
+use crate::nurbs::homogeneous::{check_rows, Row};
 use crate::nurbs::knot_insertion::{insert, refine};
-use crate::nurbs::net::{check_rows, Row};
 use crate::nurbs::surface::closest_point::check_target;
 use crate::nurbs::surface::operations::{isocurve_rows, map_net, segment_net, split_net, RowNet};
 use crate::nurbs::surface::{check_params, knots_in, net_shape, net_weights, TensorBasis};
@@ -18,7 +18,7 @@ use crate::pipeline::{FuzzyCurve, SurfaceSolution};
 use crate::reduction::TypeReduction;
 
 /// A rational B-spline surface whose control points are normal type-2 fuzzy
-/// points (SPEC §9, the paper's §6 "extended for surface design by the
+/// points (docs/method.md §8, the paper's §6 "extended for surface design by the
 /// tensor product"):
 ///
 /// ```text
@@ -27,7 +27,7 @@ use crate::reduction::TypeReduction;
 /// evaluated layer by layer: one rational B-spline surface through each of the
 /// seven values of every control point, all with the same weights and knots.
 /// The rational basis is non-negative and sums to 1, so the seven layer
-/// surfaces keep the order of SPEC §1 at every `(u, v)`. `points[i][j]`: the
+/// surfaces keep the order of docs/method.md §1 at every `(u, v)`. `points[i][j]`: the
 /// outer index runs along u, the inner along v.
 ///
 /// # Examples
@@ -57,7 +57,7 @@ impl<const D: usize> FuzzySurface<D> {
     /// Makes a fuzzy surface of degrees `[p, q]` from a net of fuzzy points
     /// (`points[i][j]`, `i` along u), a net of weights of the same shape, and
     /// the knot values `[U, V]`; `None` selects the clamped uniform default of
-    /// that direction (SPEC §6, §9).
+    /// that direction (docs/method.md §6, §8).
     ///
     /// # Errors
     /// [`Error::NetShape`] for rows of unequal length or weights of another
@@ -143,7 +143,7 @@ impl<const D: usize> FuzzySurface<D> {
         NurbsSurface::from_parts_unchecked(control_points, self.weights.clone(), self.knots.clone())
     }
 
-    /// The layer surface through one value of every control point (SPEC §9).
+    /// The layer surface through one value of every control point (docs/method.md §8).
     #[must_use]
     pub fn layer_surface(&self, layer: Layer) -> NurbsSurface<D> {
         self.with_control_points(self.points.iter().map(|p| p.layer(layer)).collect())
@@ -156,7 +156,7 @@ impl<const D: usize> FuzzySurface<D> {
     }
 
     /// The seven layer surfaces at `(u, v)`, from one evaluation of the
-    /// rational basis; their values keep the SPEC §1 order exactly.
+    /// rational basis; their values keep the docs/method.md §1 order exactly.
     ///
     /// # Errors
     /// [`Error::InDirection`] wrapping [`Error::OutOfDomain`] if `u` or `v` is
@@ -184,7 +184,7 @@ impl<const D: usize> FuzzySurface<D> {
     }
 
     /// The fuzzy surface at `(u, v)` as a fuzzy point when each coordinate has
-    /// one lower height for all control points; `Ok(None)` otherwise (SPEC §6).
+    /// one lower height for all control points; `Ok(None)` otherwise (docs/method.md §6).
     ///
     /// # Errors
     /// As [`FuzzySurface::eval_layers`].
@@ -245,7 +245,7 @@ impl<const D: usize> FuzzySurface<D> {
     }
 
     /// Runs stages 2–4 of Algorithm 1.1 on the control net at level `alpha`
-    /// with the paper's type reduction (SPEC §7, §9); the same as
+    /// with the paper's type reduction (docs/method.md §7, §8); the same as
     /// `self.solve_with(alpha, TypeReduction::Paper)`.
     #[must_use]
     pub fn solve(&self, alpha: Alpha) -> SurfaceSolution<D> {
@@ -253,7 +253,7 @@ impl<const D: usize> FuzzySurface<D> {
     }
 
     /// Runs stages 2–4 on the control net with the type reduction `method`
-    /// (SPEC §9, §10), number by number exactly as
+    /// (docs/method.md §8, §9), number by number exactly as
     /// [`FuzzyCurve::solve_with`](crate::FuzzyCurve::solve_with) does.
     #[must_use]
     pub fn solve_with(&self, alpha: Alpha, method: TypeReduction) -> SurfaceSolution<D> {
@@ -406,7 +406,7 @@ impl FuzzySurface<3> {
     /// # Errors
     /// [`Error::InDirection`] wrapping [`Error::OutOfDomain`] if `u` or `v` is
     /// NaN or outside its domain; [`Error::InLayer`] naming the first layer
-    /// (in SPEC order) whose curvature is undefined, wrapping its
+    /// (in the order of docs/method.md §1) whose curvature is undefined, wrapping its
     /// [`Error::SingularNormal`] or [`Error::IllConditioned`].
     ///
     /// # Examples

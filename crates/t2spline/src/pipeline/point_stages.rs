@@ -1,14 +1,14 @@
 //! Stages 2–4 of Algorithm 1.1 on a list of fuzzy control points, number by
-//! number (SPEC §2–§4, §7, §10): the one place where curves ([`Solution`]) and
+//! number (docs/method.md §2–§4, §7, §9): the one place where curves ([`Solution`]) and
 //! surfaces ([`SurfaceSolution`]) cut, reduce and defuzzify their points.
 //!
 //! Stage 2 is the alpha-cut at the level given. Stages 3 and 4 follow the
-//! [`TypeReduction`] (SPEC §10), each number reduced by
+//! [`TypeReduction`] (docs/method.md §9), each number reduced by
 //! [`Nt2Number::reduce`](crate::Nt2Number::reduce):
 //!
 //! | reduction | stage 3 left, right | stage 4 |
 //! |---|---|---|
-//! | `paper` | the type-reduced triangle of the cut (SPEC §3) | its centroid (SPEC §4) |
+//! | `paper` | the type-reduced triangle of the cut (docs/method.md §3) | its centroid (docs/method.md §4) |
 //! | `centroid` | `c_l`, `c_r` | `(c_l + c_r)/2` |
 //! | `nie-tan` | the Nie–Tan value | the Nie–Tan value |
 //! | `alpha-planes` | `c_l(0)`, `c_r(0)` (the widest plane) | the alpha-plane value |
@@ -29,8 +29,8 @@ pub enum Side {
 }
 
 /// The alpha-cut, type-reduced and defuzzified values of every coordinate of
-/// every control point at one level alpha and by one type reduction (SPEC
-/// §2–§4, §10), in the order of the points given. A net of a surface is given
+/// every control point at one level alpha and by one type reduction (docs/method.md
+/// §2–§4, §9), in the order of the points given. A net of a surface is given
 /// row by row.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct PointStages<const D: usize> {
@@ -80,7 +80,7 @@ impl<const D: usize> PointStages<D> {
     }
 
     /// Stage 2: the values of one alpha-cut layer; `None` for a lower layer
-    /// when some number is cut above its lower height (SPEC §2.2).
+    /// when some number is cut above its lower height (docs/method.md §2).
     pub(crate) fn alpha_cut_layer(&self, layer: Layer) -> Option<Vec<[f64; D]>> {
         self.alpha_cut
             .iter()

@@ -1,5 +1,5 @@
 //! The general type-2 reading of a number and its reduction by alpha-planes
-//! (SPEC §10).
+//! (docs/method.md §9).
 
 use crate::fuzzy::{Alpha, Interval, Nt2Number};
 use crate::quadrature::{integrate_pieces, Tolerance};
@@ -23,7 +23,7 @@ const QUADRATURE_TOLERANCE: Tolerance = Tolerance {
 /// the bound only guarantees that the work ends.
 const BISECTIONS: usize = 400;
 
-/// The reduction of a number read as a general type-2 set (SPEC §10), by its
+/// The reduction of a number read as a general type-2 set (docs/method.md §9), by its
 /// alpha-planes; made by [`Nt2Number::alpha_planes`].
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
@@ -74,7 +74,7 @@ impl Nt2Number {
     /// type-reduction strategy for general type-2 fuzzy logic system",
     /// Information Sciences 178:2224–2236; Mendel, Liu and Zhai 2009,
     /// "α-plane representation for type-2 fuzzy sets: theory and
-    /// applications", IEEE TFS 17(5):1189–1207; SPEC §10).
+    /// applications", IEEE TFS 17(5):1189–1207; docs/method.md §9).
     ///
     /// At every `x` the secondary membership is the triangle over
     /// `[LMF(x), UMF(x)]` with apex at the primary membership, so the plane at
@@ -118,7 +118,7 @@ impl Nt2Number {
     }
 
     /// The alpha-plane reduction of the number read as a general type-2 set
-    /// (SPEC §10; Liu 2008; Mendel, Liu and Zhai 2009): the type-1 set that
+    /// (docs/method.md §9; Liu 2008; Mendel, Liu and Zhai 2009): the type-1 set that
     /// gives `[c_l(z), c_r(z)]` ([`Nt2Number::alpha_plane_centroid`]) the
     /// membership `z`, defuzzified by its centroid
     /// ```text

@@ -1,4 +1,4 @@
-//! The centroid of a number read as an interval type-2 set (SPEC §10): exact,
+//! The centroid of a number read as an interval type-2 set (docs/method.md §9): exact,
 //! without sampling.
 
 use crate::fuzzy::{Interval, Nt2Number};
@@ -8,7 +8,7 @@ impl Nt2Number {
     /// The centroid `[c_l, c_r]` of the number as an interval type-2 set: the
     /// smallest and largest centroid of a type-1 set embedded in its footprint
     /// of uncertainty, `LMF ≤ θ ≤ UMF` (Karnik and Mendel 2001, "Centroid of a
-    /// type-2 fuzzy set", Information Sciences 132:195–220; SPEC §10).
+    /// type-2 fuzzy set", Information Sciences 132:195–220; docs/method.md §9).
     ///
     /// The centroid is computed exactly, from the triangles themselves; no
     /// sampling, no iteration over switch points.
@@ -43,7 +43,7 @@ impl Nt2Number {
     /// in coordinates where `crisp = 0` and the support has width 1, so spreads
     /// from 1e-300 to 1e150 neither underflow nor overflow.
     ///
-    /// Unlike the paper's reduction (SPEC §3), `c_l ≤ crisp ≤ c_r` need not
+    /// Unlike the paper's reduction (docs/method.md §3), `c_l ≤ crisp ≤ c_r` need not
     /// hold: a number with a much longer right side has both ends right of
     /// `crisp`. Always `upper.left ≤ c_l ≤ c_r ≤ upper.right`, and `c_l`/`c_r`
     /// bound the centroid of every embedded set: the primary triangle, the LMF
@@ -75,7 +75,7 @@ impl Nt2Number {
 
 #[cfg(test)]
 mod tests {
-    use crate::Nt2Number;
+    use crate::fuzzy::Nt2Number;
 
     fn n(crisp: f64, upper: [f64; 2], primary: [f64; 2], lower: [f64; 2], h: f64) -> Nt2Number {
         Nt2Number::try_new(crisp, upper, primary, lower, h).unwrap()

@@ -34,7 +34,7 @@ use crate::limits::{within_magnitude, MAX_WEIGHT};
 /// Sampled membership functions: `(x, lmf, umf)`.
 pub type Samples = (Vec<f64>, Vec<f64>, Vec<f64>);
 
-/// Samples `(x, lmf, umf)` of a number's LMF and UMF (SPEC §1) at `count`
+/// Samples `(x, lmf, umf)` of a number's LMF and UMF (docs/method.md §1) at `count`
 /// uniform points of its support `[upper.left, upper.right]`, both ends
 /// included (`count` below 2 is taken as 2): the input of the discrete
 /// algorithms for a number, e.g. to compare them with the exact

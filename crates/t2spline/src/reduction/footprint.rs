@@ -8,8 +8,8 @@
 //! a square), and a result is mapped back once.
 //!
 //! A footprint is a pair of membership functions, `upper ≥ lower`, linear on
-//! each of the six pieces between the seven values of the number (SPEC §1
-//! order, so the breakpoints are sorted already). The three triangles of SPEC
+//! each of the six pieces between the seven values of the number (docs/method.md §1
+//! order, so the breakpoints are sorted already). The three triangles of docs/method.md
 //! §1 and every alpha-plane between them are of this kind.
 
 use crate::fuzzy::{Layer, Nt2Number};
@@ -28,7 +28,7 @@ impl Frame {
     /// seven values equal: a crisp number, whose every reduction is `crisp`).
     pub(crate) fn of(x: &Nt2Number) -> Option<Frame> {
         let (lo, hi) = (x.upper().left(), x.upper().right());
-        // Both within 1e150 (SPEC limits), so the width is finite.
+        // Both within 1e150 (the limits of docs/jobs.md), so the width is finite.
         let scale = hi - lo;
         (scale > 0.0).then_some(Frame {
             origin: x.crisp(),
@@ -61,7 +61,7 @@ impl Frame {
     }
 }
 
-/// The three triangles of SPEC §1 in local coordinates: feet `[left, right]`
+/// The three triangles of docs/method.md §1 in local coordinates: feet `[left, right]`
 /// around the apex 0, and the height.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Triangles {
@@ -134,7 +134,7 @@ pub(crate) struct Footprint {
 }
 
 impl Footprint {
-    /// The alpha-plane at level `z` of the general type-2 reading (SPEC §10):
+    /// The alpha-plane at level `z` of the general type-2 reading (docs/method.md §9):
     /// ```text
     /// upper_z = (1 − z)·UMF + z·primary,   lower_z = (1 − z)·LMF + z·primary
     /// ```

@@ -1,10 +1,10 @@
-//! Type reductions of one number: the paper's (SPEC §3–§4) and the type-2
-//! literature's (SPEC §10), all exact; and the literature's discrete
+//! Type reductions of one number: the paper's (docs/method.md §3–§4) and the type-2
+//! literature's (docs/method.md §9), all exact; and the literature's discrete
 //! algorithms for sets given by samples ([`discrete`]).
 //!
 //! | reduction | reads the number as | left, right | defuzzified | source |
 //! |---|---|---|---|---|
-//! | [`TypeReduction::Paper`] | three triangles cut at alpha | SPEC §3 | SPEC §4 | the paper, Defs. 4.3–4.4 |
+//! | [`TypeReduction::Paper`] | three triangles cut at alpha | docs/method.md §3 | docs/method.md §4 | the paper, Defs. 4.3–4.4 |
 //! | [`TypeReduction::Centroid`] | interval type-2 set (LMF..UMF) | `c_l`, `c_r` ([`Nt2Number::centroid`]) | `(c_l + c_r)/2` | Karnik and Mendel 2001 |
 //! | [`TypeReduction::NieTan`] | interval type-2 set | the value | centroid of `(LMF + UMF)/2` ([`Nt2Number::nie_tan`]) | Nie and Tan 2008 |
 //! | [`TypeReduction::AlphaPlanes`] | general type-2 set, triangular secondary membership | `c_l(0)`, `c_r(0)` | `∫ z·(c_l + c_r) dz` ([`Nt2Number::alpha_planes`]) | Liu 2008; Mendel, Liu and Zhai 2009 |
@@ -19,6 +19,7 @@ mod centroid;
 pub mod discrete;
 mod footprint;
 mod nie_tan;
+mod paper;
 
 use std::fmt;
 use std::str::FromStr;
@@ -27,13 +28,13 @@ pub use alpha_planes::{AlphaPlanes, ALPHA_PLANES_TOLERANCE};
 
 use crate::fuzzy::{Alpha, Nt2Number};
 
-/// Which type reduction turns a number into a type-1 result (SPEC §3, §10).
+/// Which type reduction turns a number into a type-1 result (docs/method.md §3, §9).
 ///
 /// Its [`name`](TypeReduction::name) is the job file's `"type_reduction"`
 /// value; [`FromStr`] reads it back.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum TypeReduction {
-    /// The paper's reduction of the alpha-cut (SPEC §3–§4); the default.
+    /// The paper's reduction of the alpha-cut (docs/method.md §3–§4); the default.
     #[default]
     Paper,
     /// The interval type-2 centroid `[c_l, c_r]` (Karnik and Mendel 2001).
@@ -46,7 +47,7 @@ pub enum TypeReduction {
 }
 
 impl TypeReduction {
-    /// Every reduction, in the order of SPEC §10.
+    /// Every reduction, in the order of docs/method.md §9.
     pub const ALL: [TypeReduction; 4] = [
         TypeReduction::Paper,
         TypeReduction::Centroid,
@@ -113,7 +114,7 @@ impl FromStr for TypeReduction {
 ///
 /// | reduction | left, right | defuzzified |
 /// |---|---|---|
-/// | `Paper` | the type-reduced triangle's feet (SPEC §3) | its centroid (SPEC §4) |
+/// | `Paper` | the type-reduced triangle's feet (docs/method.md §3) | its centroid (docs/method.md §4) |
 /// | `Centroid` | `c_l`, `c_r` | `(c_l + c_r)/2` |
 /// | `NieTan` | the value | the value |
 /// | `AlphaPlanes` | `c_l(0)`, `c_r(0)` (the widest plane) | the alpha-plane value |
@@ -158,7 +159,7 @@ impl Reduced {
 }
 
 impl Nt2Number {
-    /// Reduces the number by `method` (SPEC §3–§4 and §10); `alpha` is used by
+    /// Reduces the number by `method` (docs/method.md §3–§4 and §9); `alpha` is used by
     /// [`TypeReduction::Paper`] only, exactly as
     /// `self.alpha_cut(alpha).type_reduce()` and its `defuzzify()`.
     ///

@@ -1,5 +1,5 @@
 //! Nie and Tan's reduction of a number: the centroid of the average of its
-//! lower and upper membership functions (SPEC §10), in closed form.
+//! lower and upper membership functions (docs/method.md §9), in closed form.
 
 use crate::fuzzy::Nt2Number;
 use crate::reduction::footprint::Frame;
@@ -7,7 +7,7 @@ use crate::reduction::footprint::Frame;
 impl Nt2Number {
     /// Nie and Tan's value: the centroid of `(LMF + UMF) / 2` (Nie and Tan
     /// 2008, "Towards an efficient type-reduction method for interval type-2
-    /// fuzzy logic systems", Proc. FUZZ-IEEE 2008, 1425–1432; SPEC §10).
+    /// fuzzy logic systems", Proc. FUZZ-IEEE 2008, 1425–1432; docs/method.md §9).
     ///
     /// A triangle `T(x; a, c, b, top)` has area `top·(b − a)/2` and centroid
     /// `(a + c + b)/3`, so the centroid of the sum of two triangles is their
@@ -46,7 +46,7 @@ impl Nt2Number {
 
 #[cfg(test)]
 mod tests {
-    use crate::Nt2Number;
+    use crate::fuzzy::Nt2Number;
 
     #[test]
     fn two_triangles_by_hand() {

@@ -71,7 +71,7 @@ impl<const D: usize> NurbsCurve<D> {
 impl<const D: usize> FuzzyCurve<D> {
     /// The seven layer curves (stage 1) at every parameter, from one power form
     /// of the rational basis shared by all of them (see [`Sampler`]). Agrees with
-    /// [`FuzzyCurve::eval_layers`] to rounding, and keeps the SPEC §1 order of
+    /// [`FuzzyCurve::eval_layers`] to rounding, and keeps the docs/method.md §1 order of
     /// the seven values exactly at every parameter.
     ///
     /// # Errors
@@ -119,7 +119,7 @@ impl<const D: usize> FuzzyCurve<D> {
 
     /// [`FuzzyCurve::sample_layers`] into memory the caller owns: `out` holds
     /// `7·D` slices, each as long as `params`, and `out[k·D + d]` receives
-    /// coordinate `d` of the layer [`Layer::ALL`]`[k]` (SPEC order, from
+    /// coordinate `d` of the layer [`Layer::ALL`]`[k]` (the order of docs/method.md §1, from
     /// `upper_left` to `upper_right`). Front ends that keep their own arrays
     /// (the Python bindings write into one numpy buffer) get the engine's
     /// output without a copy. The values are those of `sample_layers`, bit
@@ -179,7 +179,7 @@ impl<const D: usize> FuzzyCurve<D> {
     /// Runs stages 2–4 at every level of `alphas` and samples, at `params`, the
     /// seven stage-1 layer curves and every curve of every level: the alpha-cut
     /// layers, the type-reduced left and right curves and the defuzzified curve
-    /// (SPEC §7). The stages act on the control points, as
+    /// (docs/method.md §7). The stages act on the control points, as
     /// [`FuzzyCurve::solve`] does, so mixed lower heights are handled too; all
     /// curves share one power form of the rational basis, so each further level
     /// costs one Horner evaluation per coordinate of each of its curves.
@@ -211,8 +211,8 @@ impl<const D: usize> FuzzyCurve<D> {
         self.sample_sweep_with(params, alphas, TypeReduction::Paper)
     }
 
-    /// [`FuzzyCurve::sample_sweep`] with the type reduction `method` (SPEC
-    /// §10): every level's stages as [`FuzzyCurve::solve_with`] computes
+    /// [`FuzzyCurve::sample_sweep`] with the type reduction `method` (docs/method.md
+    /// §9): every level's stages as [`FuzzyCurve::solve_with`] computes
     /// them. Only the paper's reduction depends on alpha; with the others,
     /// the levels differ in their alpha-cut curves only.
     ///

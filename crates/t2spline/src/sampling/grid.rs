@@ -12,7 +12,7 @@ use crate::sampling::Params;
 /// Evaluates many rational B-spline surfaces that share knots `[U, V]` and a
 /// net of weights — the seven layer surfaces of a fuzzy surface, the surfaces
 /// of every stage at any number of alpha levels — on a grid `u_a × v_b`
-/// (SPEC §9). A *channel* is one coordinate of one surface: its values `xᵢⱼ`
+/// (docs/method.md §8). A *channel* is one coordinate of one surface: its values `xᵢⱼ`
 /// at the control points, row by row.
 ///
 /// The tensor product is contracted one direction at a time, in homogeneous

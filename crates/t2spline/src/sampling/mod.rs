@@ -17,10 +17,10 @@
 //! | [`NurbsCurve::sample_soa`](crate::NurbsCurve::sample_soa) | one crisp curve |
 //! | [`FuzzyCurve::sample_layers`](crate::FuzzyCurve::sample_layers) | the seven layer curves (stage 1) |
 //! | [`FuzzyCurve::sample_sweep`](crate::FuzzyCurve::sample_sweep) | stage 1 and stages 2–4 at many alpha levels |
-//! | [`FuzzyCurve::sample_sweep_with`](crate::FuzzyCurve::sample_sweep_with) | the same with another type reduction (SPEC §10) |
+//! | [`FuzzyCurve::sample_sweep_with`](crate::FuzzyCurve::sample_sweep_with) | the same with another type reduction (docs/method.md §9) |
 //! | [`Solution::sample_stages`](crate::Solution::sample_stages) | stages 2–4 at one level, by the solution's type reduction |
 //!
-//! Surfaces (SPEC §9) are sampled on grids `u_a × v_b` by the [`GridSampler`],
+//! Surfaces (docs/method.md §8) are sampled on grids `u_a × v_b` by the [`GridSampler`],
 //! which evaluates the basis in u once per grid row and in v once per grid
 //! column for all channels, into the same containers wrapped in a [`Grid`]:
 //!
@@ -29,7 +29,7 @@
 //! | [`NurbsSurface::sample_grid`](crate::NurbsSurface::sample_grid) | one crisp surface |
 //! | [`FuzzySurface::sample_layers`](crate::FuzzySurface::sample_layers) | the seven layer surfaces |
 //! | [`FuzzySurface::sample_sweep`](crate::FuzzySurface::sample_sweep) | stage 1 and stages 2–4 at many alpha levels |
-//! | [`FuzzySurface::sample_sweep_with`](crate::FuzzySurface::sample_sweep_with) | the same with another type reduction (SPEC §10) |
+//! | [`FuzzySurface::sample_sweep_with`](crate::FuzzySurface::sample_sweep_with) | the same with another type reduction (docs/method.md §9) |
 //! | [`SurfaceSolution::sample_stages`](crate::SurfaceSolution::sample_stages) | stages 2–4 at one level, by the solution's type reduction |
 //!
 //! The straightforward evaluators ([`NurbsCurve::eval`](crate::NurbsCurve::eval),

@@ -17,7 +17,7 @@ const STEPS: [f64; BLOCK] = {
 
 /// The parameters at which a sampler evaluates its curves.
 ///
-/// `Uniform(n)` is SPEC §8's grid over the curve's domain `[a, b]`,
+/// `Uniform(n)` is docs/jobs.md's grid over the curve's domain `[a, b]`,
 ///
 /// ```text
 /// tᵢ = a + (b − a)·i/(n − 1),  i = 0 … n − 1,  the last exactly b

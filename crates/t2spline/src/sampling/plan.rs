@@ -34,7 +34,7 @@ impl<const D: usize> Plan<D> {
     /// Plans the crisp curve of `points`, the six other layers if `layers`,
     /// and the stage 2–4 curves of every level in `stages` (computed on the
     /// same points, each by its own type reduction). The bounds are the
-    /// orders the exact curves obey: the layers' of SPEC §1, `left ≤
+    /// orders the exact curves obey: the layers' of docs/method.md §1, `left ≤
     /// defuzzified ≤ right` for every reduction, and `left ≤ crisp ≤ right`
     /// for the paper's only.
     pub(crate) fn new(points: &[Nt2Point<D>], stages: &[&PointStages<D>], layers: bool) -> Self {
@@ -63,11 +63,11 @@ impl<const D: usize> Plan<D> {
             let right = plan.push(&s.type_reduced_side(Side::Right));
             let defuzzified = plan.push(s.defuzzified_points());
             if s.type_reduction() == TypeReduction::Paper {
-                // The paper's triangle has its apex at crisp (SPEC §3).
+                // The paper's triangle has its apex at crisp (docs/method.md §3).
                 plan.bound(left, None, Some(crisp));
                 plan.bound(right, Some(crisp), None);
             } else {
-                // A centroid need not enclose crisp (SPEC §10): both ends
+                // A centroid need not enclose crisp (docs/method.md §9): both ends
                 // may lie on one side of it. Only left ≤ right holds.
                 plan.bound(right, Some(left), None);
             }
@@ -117,7 +117,7 @@ impl<const D: usize> Plan<D> {
 
     /// Bounds a chain of layer curves outwards from the crisp one: each left
     /// layer at most its inner neighbour, each right layer at least its inner
-    /// neighbour (SPEC §1 order). `curves[layer]` is `None` for a missing layer.
+    /// neighbour (docs/method.md §1 order). `curves[layer]` is `None` for a missing layer.
     fn bound_layers(&mut self, curves: &Layers<Option<usize>>, crisp: usize) {
         let mut inner = crisp;
         for layer in [Layer::LowerLeft, Layer::PrimaryLeft, Layer::UpperLeft] {

@@ -13,7 +13,7 @@ use crate::sampling::Params;
 /// evaluation: `out[channel] = clamp(out[channel], out[at_least], out[at_most])`.
 ///
 /// Use it only where the exact curves obey the order (for instance layer curves
-/// whose control values are ordered, SPEC §6): then it only removes rounding,
+/// whose control values are ordered, docs/method.md §6): then it only removes rounding,
 /// and never moves a value further from the exact one than the rounding error
 /// of its neighbour. Bounds are applied in the order given, so a bound may rely
 /// on channels that earlier bounds have settled.
@@ -29,7 +29,7 @@ pub struct Bound {
 
 /// Evaluates many rational B-spline curves that share one knot vector and one
 /// set of weights — the seven layer curves of a fuzzy curve, the curves of every
-/// stage at any number of alpha levels — at many parameters (SPEC §6–§7).
+/// stage at any number of alpha levels — at many parameters (docs/method.md §6–§7).
 ///
 /// A *channel* is one coordinate of one curve: the values `vᵢ` it takes at the
 /// control points. On construction every non-empty span is converted once to

@@ -90,11 +90,11 @@ impl<const D: usize> CurveSamples<D> {
     }
 }
 
-/// The seven layer curves of a fuzzy curve (stage 1, SPEC §6–§7), sampled at the
+/// The seven layer curves of a fuzzy curve (stage 1, docs/method.md §6–§7), sampled at the
 /// same parameters; index by [`Layer`].
 ///
 /// At every parameter the seven values of each coordinate keep the order of
-/// SPEC §1 exactly, as the exact curves do.
+/// docs/method.md §1 exactly, as the exact curves do.
 #[derive(Clone, Debug, PartialEq)]
 pub struct LayerSamples<const D: usize> {
     pub(crate) layers: Layers<CurveSamples<D>>,
@@ -142,7 +142,7 @@ impl<const D: usize> Index<Layer> for LayerSamples<D> {
     }
 }
 
-/// The curves of stages 2–4 at one level alpha (SPEC §7), sampled.
+/// The curves of stages 2–4 at one level alpha (docs/method.md §7), sampled.
 ///
 /// The crisp curve is the same at every level and is not repeated here: it is
 /// the [`Layer::Crisp`] curve of the stage-1 [`LayerSamples`].
@@ -163,7 +163,7 @@ impl<const D: usize> StageSamples<D> {
 
     /// Stage 2: the curve through one alpha-cut layer; `None` for
     /// [`Layer::Crisp`] (it is the stage-1 crisp curve) and for a lower layer
-    /// that does not exist at this level (SPEC §2.2).
+    /// that does not exist at this level (docs/method.md §2).
     #[must_use]
     pub fn alpha_cut(&self, layer: Layer) -> Option<&CurveSamples<D>> {
         self.alpha_cut[layer].as_ref()
@@ -236,7 +236,7 @@ impl<const D: usize> SweepSamples<D> {
     }
 }
 
-/// Samples on a grid `u_a × v_b` of a surface (SPEC §9): `T` holds one vector
+/// Samples on a grid `u_a × v_b` of a surface (docs/method.md §8): `T` holds one vector
 /// per coordinate of each sampled surface, as for curves ([`CurveSamples`],
 /// [`LayerSamples`], [`StageSamples`], [`SweepSamples`]), with the grid point
 /// `(u_a, v_b)` at index [`Grid::index`]`(a, b) = a·sv + b` (`a` along u).

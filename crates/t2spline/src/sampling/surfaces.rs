@@ -92,7 +92,7 @@ impl<const D: usize> NurbsSurface<D> {
 impl<const D: usize> FuzzySurface<D> {
     /// The seven layer surfaces (stage 1) on the grid `u × v`, sharing one
     /// basis evaluation per grid row and column (see [`GridSampler`]); the
-    /// seven values keep the SPEC §1 order exactly at every grid point.
+    /// seven values keep the docs/method.md §1 order exactly at every grid point.
     ///
     /// # Errors
     /// [`Error::InDirection`] wrapping [`Error::OutOfDomain`] for the first
@@ -130,7 +130,7 @@ impl<const D: usize> FuzzySurface<D> {
     }
 
     /// Stages 2–4 at every level of `alphas` on the control net, and every
-    /// surface of stage 1 and of every level on the grid `u × v` (SPEC §7, §9),
+    /// surface of stage 1 and of every level on the grid `u × v` (docs/method.md §7, §8),
     /// as [`FuzzyCurve::sample_sweep`](crate::FuzzyCurve::sample_sweep) does
     /// for curves.
     ///
@@ -161,8 +161,8 @@ impl<const D: usize> FuzzySurface<D> {
         self.sample_sweep_with(u, v, alphas, TypeReduction::Paper)
     }
 
-    /// [`FuzzySurface::sample_sweep`] with the type reduction `method` (SPEC
-    /// §10): every level's stages as
+    /// [`FuzzySurface::sample_sweep`] with the type reduction `method` (docs/method.md
+    /// §9): every level's stages as
     /// [`FuzzySurface::solve_with`] computes them.
     ///
     /// # Errors

@@ -245,11 +245,16 @@ impl<'a, const D: usize> Grader<'a, D> {
             .map(|(_, s)| min(s))
             .fold(f64::NEG_INFINITY, f64::max);
         let used = 1 + 2 * D;
-        for j in 1..SCAN_STEPS {
+        // A peak on the scan at an end of the piece is refined towards the
+        // inside: the maximum may lie between the end and the next scan point.
+        let around = |j: usize| [scan[j.saturating_sub(1)].0, scan[(j + 1).min(SCAN_STEPS)].0];
+        for j in 0..=SCAN_STEPS {
             // Every local peak of the grade itself on the scan, refined.
             let g = min(&scan[j].1);
-            if min(&scan[j - 1].1) < g && min(&scan[j + 1].1) <= g && g.is_finite() {
-                let bracket = [scan[j - 1].0, scan[j + 1].0];
+            let rises = j == 0 || min(&scan[j - 1].1) < g;
+            let falls = j == SCAN_STEPS || min(&scan[j + 1].1) <= g;
+            if rises && falls && g.is_finite() {
+                let bracket = around(j);
                 let (neg, _) = golden_section_min(|t| -min(&sides(t)), bracket, tolerance);
                 best = best.max(-neg);
             }
@@ -260,8 +265,8 @@ impl<'a, const D: usize> Grader<'a, D> {
                 let v = scan[j].1[a];
                 let rises = j == 0 || scan[j - 1].1[a] < v;
                 let falls = j == SCAN_STEPS || scan[j + 1].1[a] <= v;
-                if rises && falls && v.is_finite() && j > 0 && j < SCAN_STEPS {
-                    let bracket = [scan[j - 1].0, scan[j + 1].0];
+                if rises && falls && v.is_finite() {
+                    let bracket = around(j);
                     let (_, t) = golden_section_min(|t| -sides(t)[a], bracket, tolerance);
                     best = best.max(min(&sides(t)));
                 }

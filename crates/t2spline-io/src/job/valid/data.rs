@@ -10,10 +10,10 @@
 
 use t2spline::fit::FuzzyData;
 
-use super::super::limits::MAX_POINTS;
 use super::raw::{self, Whole};
 use super::{fuzzy_points, header, Header};
 use crate::fit_data::FitData;
+use crate::limits::MAX_POINTS;
 
 /// The data file in `text` (without a byte-order mark) if it has no problem
 /// at all; `None` if it has one, or anything this reading does not expect.

@@ -26,7 +26,7 @@ use t2spline::job::{
 };
 use t2spline::{Alpha, FuzzyCurve, FuzzySurface, Height, Nt2Number, Nt2Point, TypeReduction};
 
-use super::limits::{check_net_size, check_order, check_surface_work, MAX_POINTS};
+use crate::limits::{check_net_size, check_order, check_surface_work, MAX_POINTS};
 use raw::{Knots, Points, RawJob, RawNumber, Weights, Whole};
 
 /// What a job and a data file give alike, each rule checked: the key that
@@ -127,7 +127,7 @@ fn build(raw: RawJob) -> Option<Job> {
 }
 
 /// The degree of an order given as `key` (`order` or `degree`): an order of
-/// at least 1, within [`MAX_ORDER`](super::limits::MAX_ORDER).
+/// at least 1, within [`MAX_ORDER`](crate::limits::MAX_ORDER).
 fn degree_of(key: &str, given: u64) -> Option<usize> {
     if key == "order" && given == 0 {
         return None;

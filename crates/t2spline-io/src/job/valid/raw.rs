@@ -22,7 +22,7 @@ use serde::de::{self, DeserializeSeed, Deserializer, MapAccess, SeqAccess, Visit
 use t2spline::TypeReduction;
 
 use super::super::common::TOP_KEYS;
-use super::super::limits::{MAX_ARRAY, MAX_KEYS, MAX_VALUES};
+use crate::limits::{MAX_ARRAY, MAX_KEYS, MAX_VALUES};
 
 /// The keys of a point, by axis.
 const POINT: [&str; 3] = ["x", "y", "z"];
@@ -73,7 +73,7 @@ pub(super) enum Knots {
     Directions([Option<Vec<f64>>; 2]),
 }
 
-/// A fuzzy number's values as given (SPEC §1), its own height if any.
+/// A fuzzy number's values as given (docs/method.md §1), its own height if any.
 #[derive(Clone, Copy)]
 pub(super) struct RawNumber {
     pub crisp: f64,

@@ -6,10 +6,10 @@ use proptest::prelude::*;
 use serde_json::{json, Value};
 
 use super::super::common::TOP_KEYS;
-use super::super::limits::{MAX_ARRAY, MAX_VALUES};
 use super::super::parse::{parse, parse_walking};
 use super::super::position::{oversized, Oversized};
 use super::raw;
+use crate::limits::{MAX_ARRAY, MAX_VALUES};
 
 /// Jobs of the repository: the examples, the fixtures and the fuzz seeds.
 pub(super) fn corpus() -> Vec<(String, String)> {
@@ -166,8 +166,8 @@ fn the_limits_of_a_net_are_kept() {
 
 #[test]
 fn a_curve_of_more_points_than_the_limit_is_refused() {
-    use super::super::limits::MAX_POINTS;
     use super::raw::{Points, RawNumber};
+    use crate::limits::MAX_POINTS;
     let zero = RawNumber {
         crisp: 0.0,
         upper: [0.0; 2],

@@ -1,6 +1,6 @@
 //! The distance between the crisp and the defuzzified curve (`error.max` and
 //! `error.rms`, sampled) against alpha, with both one-sided limits at every
-//! lower height h, where the solution jumps (SPEC §3).
+//! lower height h, where the solution jumps (docs/method.md §3).
 
 use t2spline::job::Job;
 use t2spline::Alpha;
@@ -99,7 +99,7 @@ fn series(
 /// The `distance-alpha` figure: the largest and the rms distance against
 /// alpha (sampled by [`data::sampled_distances`] at [`distance_alphas`]),
 /// with the lower heights and the figure's own alpha marked; always the
-/// paper's type reduction (the one that uses alpha; SPEC §10).
+/// paper's type reduction (the one that uses alpha; docs/method.md §9).
 ///
 /// # Errors
 /// [`crate::Error::Core`] if sampling fails (never for a validated job).
@@ -175,7 +175,7 @@ pub fn distance_figure(job: &Job, alpha: f64) -> Result<Figure, crate::Error> {
                 "Distance between the crisp and the defuzzified {} as α varies",
                 &what[..what.len() - 1]
             ),
-            "the paper's type reduction at α = 0, 0.01, …, 1 and both sides of every h, where it jumps (SPEC §3)",
+            "the paper's type reduction at α = 0, 0.01, …, 1 and both sides of every h, where it jumps",
             vec![p],
             legend,
         )

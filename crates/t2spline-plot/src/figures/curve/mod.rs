@@ -194,7 +194,7 @@ pub fn point_name(i: usize) -> String {
 }
 
 /// "α = 0.8 > h = 0.6" and what it means, for subtitles of result `r`; for
-/// a type reduction other than the paper's, that it does not use α (SPEC §10).
+/// a type reduction other than the paper's, that it does not use α (docs/method.md §9).
 #[must_use]
 pub fn alpha_phrase(r: &RunOutput, heights: &[f64]) -> String {
     let a = short(r.alpha, 4);

@@ -1,9 +1,9 @@
-//! The type reductions side by side (SPEC §10): the solution curve of every
+//! The type reductions side by side (docs/method.md §9): the solution curve of every
 //! reduction beside the crisp curve, and each one's distance to it along the
 //! curve, with the distance's maximum and root mean square in the legend.
 
 use t2spline::job::{Job, RunOutput};
-use t2spline::pipeline::euclidean_norm;
+use t2spline::vector::euclidean_norm;
 use t2spline::{Alpha, TypeReduction};
 
 use super::{crisp_curve, crisp_legend, crisp_points, line, polygon, project, CurveScene};

@@ -54,7 +54,7 @@ fn stroke(k: usize, n: usize, alpha: f64, heights: &[f64]) -> Stroke {
 
 /// The `alpha-sweep` figure: `‖D(t) − C(t)‖` against t for the alphas of
 /// [`sweep_alphas`], from one sampling sweep of the library, always with
-/// the paper's type reduction (the one that uses alpha; SPEC §10).
+/// the paper's type reduction (the one that uses alpha; docs/method.md §9).
 ///
 /// # Errors
 /// [`crate::Error::Core`] if sampling fails (never for a validated job).

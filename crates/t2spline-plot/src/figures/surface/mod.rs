@@ -1,5 +1,5 @@
 //! The figures of a surface job: the four stages of Algorithm 1.1 on a
-//! tensor-product net (SPEC §9), each a shaded 3-D view beside a map over
+//! tensor-product net (docs/method.md §8), each a shaded 3-D view beside a map over
 //! the parameters `(u, v)`.
 //!
 //! The 3-D view ([`camera`]) is an orthographic projection from a documented
@@ -376,7 +376,7 @@ pub fn distances(a: &Points, b: &Points) -> Vec<f64> {
     let (pa, pb) = (xyz(a), xyz(b));
     pa.iter()
         .zip(&pb)
-        .map(|(p, q)| t2spline::pipeline::euclidean_norm(&[p[0] - q[0], p[1] - q[1], p[2] - q[2]]))
+        .map(|(p, q)| t2spline::vector::euclidean_norm(&[p[0] - q[0], p[1] - q[1], p[2] - q[2]]))
         .collect()
 }
 

@@ -4,11 +4,11 @@
 use crate::error::{Error, Place};
 use crate::fuzzy::Axis;
 use crate::limits::{within_magnitude, MAGNITUDE_RANGE};
-use crate::nurbs::closest_point::{dot, sub};
 use crate::nurbs::surface::patches::{patch_min, Patch, HULL_SLACK};
 use crate::nurbs::surface::NurbsSurface;
 use crate::nurbs::BoundingBox;
-use crate::pipeline::euclidean_norm;
+use crate::vector::euclidean_norm;
+use crate::vector::{dot, sub};
 
 /// The result of [`NurbsSurface::closest_point`].
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -5,10 +5,10 @@
 //! chapter on the differential geometry of surfaces).
 
 use crate::error::Error;
-use crate::nurbs::closest_point::dot;
-use crate::nurbs::surface::derivatives::cross;
 use crate::nurbs::surface::NurbsSurface;
-use crate::pipeline::euclidean_norm;
+use crate::vector::cross;
+use crate::vector::dot;
+use crate::vector::euclidean_norm;
 
 /// The curvature of a surface in space at one point
 /// ([`NurbsSurface::curvature`]).

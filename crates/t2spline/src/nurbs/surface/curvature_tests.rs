@@ -5,9 +5,10 @@
 use super::tests::quarter_cylinder;
 use super::*;
 use crate::fuzzy::{Layer, Nt2Number, Nt2Point};
-use crate::nurbs::closest_point::dot;
-use crate::nurbs::surface::derivatives::cross;
-use crate::pipeline::{euclidean_norm, FuzzySurface};
+use crate::pipeline::FuzzySurface;
+use crate::vector::cross;
+use crate::vector::dot;
+use crate::vector::euclidean_norm;
 
 /// The octant of the sphere of radius `r` about the origin: the quarter
 /// circle from `(r, 0, 0)` to the pole `(0, 0, r)` (u, rational quadratic)

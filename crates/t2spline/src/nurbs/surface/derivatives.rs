@@ -4,7 +4,7 @@
 use crate::error::Error;
 use crate::nurbs::derivatives::{basis_derivatives, binomial, check_order};
 use crate::nurbs::surface::{Direction, NurbsSurface};
-use crate::pipeline::euclidean_norm;
+use crate::vector::{cross, euclidean_norm};
 
 impl<const D: usize> NurbsSurface<D> {
     /// The partial derivatives `out[k][l] = ∂ᵏ⁺ˡS / ∂uᵏ∂vˡ (u, v)` for
@@ -203,13 +203,4 @@ impl NurbsSurface<3> {
         }
         euclidean_norm(&[hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]]).max(f64::MIN_POSITIVE)
     }
-}
-
-/// The cross product `a × b`.
-pub(crate) fn cross(a: &[f64; 3], b: &[f64; 3]) -> [f64; 3] {
-    [
-        a[1] * b[2] - a[2] * b[1],
-        a[2] * b[0] - a[0] * b[2],
-        a[0] * b[1] - a[1] * b[0],
-    ]
 }

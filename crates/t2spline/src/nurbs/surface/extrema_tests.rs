@@ -6,7 +6,7 @@ use proptest::prelude::*;
 use super::tests::{quarter_cylinder, wavy};
 use super::*;
 use crate::nurbs::BoundingBox;
-use crate::pipeline::euclidean_norm;
+use crate::vector::euclidean_norm;
 
 fn dist<const D: usize>(a: &[f64; D], b: &[f64; D]) -> f64 {
     euclidean_norm(&std::array::from_fn::<f64, D, _>(|d| a[d] - b[d]))

@@ -1,15 +1,15 @@
-//! Rational B-spline surfaces: the tensor product of SPEC §6 (SPEC §9).
+//! Rational B-spline surfaces: the tensor product of docs/method.md §6 (docs/method.md §8).
 //!
 //! A [`NurbsSurface`] holds a net of `nu × nv` control points `Pᵢⱼ` (row `i`
 //! along u, column `j` along v), one weight per point and one [`KnotVector`]
-//! per [`Direction`]. Every rule of a curve (SPEC §6) holds in each direction:
+//! per [`Direction`]. Every rule of a curve (docs/method.md §6) holds in each direction:
 //! clamped uniform knots by default, the domain `[U[p], U[nu]] × [V[q], V[nv]]`,
 //! interior knots of full multiplicity (the value there is taken from the
 //! right, at the end of a domain from the last non-empty span).
 //!
 //! | operation | method | source |
 //! |---|---|---|
-//! | point, rational basis | [`NurbsSurface::eval`], [`NurbsSurface::rational_basis`] | SPEC §9 |
+//! | point, rational basis | [`NurbsSurface::eval`], [`NurbsSurface::rational_basis`] | docs/method.md §8 |
 //! | partial derivatives of any order, normal | [`NurbsSurface::derivatives`], [`NurbsSurface::normal`] | The NURBS Book A3.6, A4.4 |
 //! | Gaussian, mean and principal curvatures, principal directions | [`NurbsSurface::curvature`] | do Carmo §3-3 |
 //! | isoparametric curves | [`NurbsSurface::isocurve`] | §4.5 |
@@ -33,55 +33,14 @@ pub(crate) mod derivatives;
 pub(crate) mod operations;
 pub(crate) mod patches;
 
-use std::fmt;
-
 use crate::error::{Error, Place};
 use crate::fuzzy::Axis;
 use crate::limits::{within_magnitude, MAGNITUDE_RANGE, MAX_WEIGHT, MIN_WEIGHT};
 use crate::nurbs::basis::{basis_functions, STACK_ORDER};
 use crate::nurbs::{Domain, KnotVector};
+pub use crate::place::Direction;
 
-/// A parameter direction of a surface: `U` runs along the rows of the net
-/// (index `i`), `V` along the columns (index `j`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
-pub enum Direction {
-    /// The first parameter `u` (rows `i` of the net, knots `U`, degree `p`).
-    U,
-    /// The second parameter `v` (columns `j` of the net, knots `V`, degree `q`).
-    V,
-}
-
-impl Direction {
-    /// Both directions, `U` first.
-    pub const BOTH: [Direction; 2] = [Direction::U, Direction::V];
-
-    /// `0` for `U`, `1` for `V`: the index into `[u, v]` pairs.
-    #[must_use]
-    pub fn index(self) -> usize {
-        self as usize
-    }
-
-    /// The other direction.
-    #[must_use]
-    pub fn other(self) -> Direction {
-        match self {
-            Direction::U => Direction::V,
-            Direction::V => Direction::U,
-        }
-    }
-}
-
-impl fmt::Display for Direction {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(match self {
-            Direction::U => "u",
-            Direction::V => "v",
-        })
-    }
-}
-
-/// A rational B-spline surface in `D` dimensions (SPEC §9), the tensor
+/// A rational B-spline surface in `D` dimensions (docs/method.md §8), the tensor
 /// product of two rational B-spline curves:
 ///
 /// ```text
@@ -181,7 +140,7 @@ impl<const D: usize> NurbsSurface<D> {
     }
 
     /// Makes a surface of degrees `[p, q]` with the default clamped uniform
-    /// knot vectors in both directions (SPEC §6, §9).
+    /// knot vectors in both directions (docs/method.md §6, §8).
     ///
     /// # Errors
     /// [`Error::InDirection`] wrapping [`Error::TooFewControlPoints`] if there
@@ -302,7 +261,7 @@ impl<const D: usize> NurbsSurface<D> {
     /// only at a knot of full multiplicity.
     ///
     /// Up to order [`STACK_ORDER`] in each direction it allocates nothing
-    /// (the distance of SPEC §9 calls it thousands of times per span
+    /// (the distance of docs/method.md §8 calls it thousands of times per span
     /// rectangle); it forms the same products and quotients as
     /// [`TensorBasis`], so the results are the same to the bit.
     pub(crate) fn eval_in_spans(&self, spans: [usize; 2], u: f64, v: f64) -> [f64; D] {
@@ -355,7 +314,7 @@ impl<const D: usize> NurbsSurface<D> {
         out
     }
 
-    /// All `nu × nv` rational basis functions `Rᵢⱼ(u, v)` (SPEC §9), zeros
+    /// All `nu × nv` rational basis functions `Rᵢⱼ(u, v)` (docs/method.md §8), zeros
     /// outside the spans; `out[i][j]` belongs to `Pᵢⱼ`. They are non-negative
     /// and sum to 1.
     ///

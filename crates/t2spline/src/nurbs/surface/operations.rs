@@ -5,7 +5,7 @@
 //! each column of the net as the curve operation on its control points, with
 //! the same coefficients for every column (§5.2–5.5: A5.3 inserts "for each
 //! row/column", A5.5 refines likewise). The curve algorithms here already take
-//! homogeneous rows of any width (`nurbs/net.rs`), so a line of the net
+//! homogeneous rows of any width (`nurbs/homogeneous.rs`), so a line of the net
 //! across `direction` is stacked into one row — for u, row `i` of the net is
 //! the row `(wᵢ₀Pᵢ₀, wᵢ₀, wᵢ₁Pᵢ₁, wᵢ₁, …)` of width `nv·(D + 1)` — the curve
 //! algorithm runs once on those rows with the knots of `direction`, and the
@@ -16,8 +16,8 @@
 use crate::error::Error;
 use crate::nurbs::basis::basis_functions;
 use crate::nurbs::degree_elevation::{check_elevation, elevate};
+use crate::nurbs::homogeneous::{check_rows, from_rows, to_rows, Row};
 use crate::nurbs::knot_insertion::{insert, refine};
-use crate::nurbs::net::{check_rows, from_rows, to_rows, Row};
 use crate::nurbs::split::segment;
 use crate::nurbs::surface::{Direction, NurbsSurface};
 use crate::nurbs::{KnotVector, NurbsCurve};
@@ -176,7 +176,7 @@ impl<const D: usize> NurbsSurface<D> {
     ///
     /// # Errors
     /// [`Error::IllConditioned`] if the rows are outside the input ranges
-    /// (see `nurbs/net.rs::check_rows`).
+    /// (see `nurbs/homogeneous.rs::check_rows`).
     fn try_from_net((knots, rows): RowNet, operation: &'static str) -> Result<Self, Error> {
         check_rows(&rows, operation)?;
         let (points, weights) = from_rows(&rows);

@@ -1,6 +1,6 @@
 //! The span rectangles of a surface and the search for the smallest value of
 //! a function on one of them: shared by the distance between two surfaces
-//! (`pipeline/surface_metrics.rs`), the closest point and the bounding box.
+//! (`pipeline/surface_distance.rs`), the closest point and the bounding box.
 //!
 //! On a span rectangle (a *patch*) the surface is one smooth rational piece,
 //! a convex combination of the `(p + 1)(q + 1)` control points acting there

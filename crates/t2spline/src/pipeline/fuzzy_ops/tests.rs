@@ -5,8 +5,8 @@ use proptest::prelude::*;
 
 use super::*;
 use crate::fuzzy::Alpha;
+use crate::nurbs::NurbsCurve;
 use crate::strategies;
-use crate::NurbsCurve;
 
 /// The largest absolute value of any layer coordinate: the scale of rounding.
 fn scale<const D: usize>(c: &FuzzyCurve<D>) -> f64 {

@@ -6,10 +6,10 @@
 use proptest::prelude::*;
 use serde_json::Value;
 
-use super::super::super::limits::{MAX_ORDER, MAX_POINTS};
 use super::super::super::parse::{parse_data, parse_data_walking};
 use super::super::tests::{corpus, counted, edit, places};
 use crate::fit_data::FitData;
+use crate::limits::{MAX_ORDER, MAX_POINTS};
 
 /// Whether reading `text` as a data file gives what the validator gives,
 /// and, when the one pass takes it, counts its values as the validator's

@@ -5,7 +5,7 @@ fn issue_6_a_subnormal_domain_keeps_max_at_inside() {
     // A domain 274 subnormal units wide: the scan step rounds up, and 31
     // steps went past the end (found by fuzzing).
     let end = 1.354e-321;
-    let u = crate::KnotVector::try_new(vec![0.0, 0.0, end, end], 1, 2).unwrap();
+    let u = crate::nurbs::KnotVector::try_new(vec![0.0, 0.0, end, end], 1, 2).unwrap();
     let c = NurbsCurve::try_new(vec![[0.0, 0.0], [3.0, 4.0]], vec![1.0, 2.0], u).unwrap();
     let d = Distance::of_curve(&c);
     assert!((0.0..=end).contains(&d.max_at), "{d:?}");

@@ -8,14 +8,14 @@
 //! job runs in about a minute and 1.3 GB of memory; the README gives measured
 //! figures.
 //!
-//! Surface jobs (SPEC §9) have the same limits, counted over the net and per
+//! Surface jobs (docs/method.md §8) have the same limits, counted over the net and per
 //! direction: at most [`MAX_POINTS`] control points in the whole net
 //! (`nu·nv`, counted from the rows' lengths before any point is read), an
 //! order of at most [`MAX_ORDER`] in each direction, and a grid of samples of
 //! at most [`t2spline::job::MAX_SAMPLES`] points (`su·sv`,
 //! [`t2spline::job::check_grid_samples`]). Rows and knot vectors are arrays,
 //! bounded by [`MAX_ARRAY`] like every other. One more limit bounds the time
-//! of a surface's run, [`MAX_SURFACE_WORK`]: the distance of SPEC §9 is
+//! of a surface's run, [`MAX_SURFACE_WORK`]: the distance of docs/method.md §8 is
 //! measured on every span rectangle of the net, at a cost that grows with the
 //! number of basis terms `ku·kv`, so a net that [`MAX_POINTS`] allows would
 //! run for hours.
@@ -24,6 +24,9 @@
 //! `[-1e150, 1e150]` ([`t2spline::MAX_MAGNITUDE`]) and weights to
 //! `[1e-150, 1e150]`, so that every result is a finite number; the number of
 //! samples by [`t2spline::job::MAX_SAMPLES`].
+
+// The input decides sizes and indices here: no indexing that can panic.
+#![cfg_attr(not(test), deny(clippy::indexing_slicing))]
 
 /// The largest job file, in bytes (64 MiB), also for standard input. A
 /// 100 000-point 3-D job written one number per line is about 40 MB.
@@ -40,7 +43,7 @@ pub const MAX_ORDER: usize = 32;
 
 /// The most work a surface job may ask for: its span rectangles (at most
 /// `(nu − ku + 1)(nv − kv + 1)`) times the basis terms `ku·kv` of each. The
-/// distance between the crisp and the defuzzified surface (SPEC §9) scans
+/// distance between the crisp and the defuzzified surface (docs/method.md §8) scans
 /// and refines every rectangle whose control points could hold the largest
 /// distance; at worst (the same spreads everywhere) that is every one. The
 /// limit is set so that the largest such jobs run in under a minute on a

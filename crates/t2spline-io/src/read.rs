@@ -6,11 +6,14 @@
 //! A UTF-8 byte-order mark, as spreadsheet programs write, is accepted; UTF-16
 //! text and bytes that are not UTF-8 are refused with their place.
 
+// The input decides sizes and indices here: no indexing that can panic.
+#![cfg_attr(not(test), deny(clippy::indexing_slicing))]
+
 use std::io::Read;
 use std::path::Path;
 
-use super::limits::{file_too_large, MAX_FILE_BYTES};
-use crate::{Error, Problem};
+use crate::error::{Error, Problem};
+use crate::limits::{file_too_large, MAX_FILE_BYTES};
 
 /// Reads the text of the job file at `path`.
 ///

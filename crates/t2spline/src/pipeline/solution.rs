@@ -1,4 +1,4 @@
-//! Stages 2–4 of Algorithm 1.1 (SPEC §7): alpha-cut, type reduction and
+//! Stages 2–4 of Algorithm 1.1 (docs/method.md §7): alpha-cut, type reduction and
 //! defuzzification of the control points, and the curves through them.
 
 use crate::fuzzy::{Alpha, AlphaCut, Layer};
@@ -7,7 +7,7 @@ use crate::pipeline::point_stages::{PointStages, Side};
 use crate::pipeline::{Distance, FuzzyCurve};
 use crate::reduction::{Reduced, TypeReduction};
 
-/// The four stages of Algorithm 1.1 at one level alpha (SPEC §7):
+/// The four stages of Algorithm 1.1 at one level alpha (docs/method.md §7):
 ///
 /// 1. **NT2FRBsC** — the fuzzy curve ([`Solution::fuzzy_curve`], paper Fig. 5.1);
 /// 2. **α-NT2FRBsC** — alpha-cut control points and their curves (Fig. 5.2);
@@ -16,8 +16,8 @@ use crate::reduction::{Reduced, TypeReduction};
 /// 4. **D-TR-α-NT2FRBsC** — defuzzified control points and the crisp solution
 ///    curve, compared with the crisp curve (Fig. 5.4).
 ///
-/// Stages 3–4 reduce each number by the solution's [`TypeReduction`] (SPEC
-/// §10; [`FuzzyCurve::solve`] takes the paper's, [`FuzzyCurve::solve_with`]
+/// Stages 3–4 reduce each number by the solution's [`TypeReduction`] (docs/method.md
+/// §9; [`FuzzyCurve::solve`] takes the paper's, [`FuzzyCurve::solve_with`]
 /// any): with the paper's, stage 3 is the triangle `(left, crisp, right)`;
 /// with the others, `[left, right]` is a centroid interval, which need not
 /// contain `crisp`.
@@ -25,7 +25,7 @@ use crate::reduction::{Reduced, TypeReduction};
 /// Every stage works on the control points, as Algorithm 1.1 does; the curves
 /// are rational B-splines through the results with the original weights and
 /// knots. With one lower height per coordinate this equals cutting, reducing and
-/// defuzzifying the curve itself; with mixed heights it does not (SPEC §6).
+/// defuzzifying the curve itself; with mixed heights it does not (docs/method.md §6).
 ///
 /// # Examples
 /// ```
@@ -62,7 +62,7 @@ impl<const D: usize> Solution<D> {
         self.stages.alpha()
     }
 
-    /// The type reduction of stages 3–4 (SPEC §10).
+    /// The type reduction of stages 3–4 (docs/method.md §9).
     #[must_use]
     pub fn type_reduction(&self) -> TypeReduction {
         self.stages.type_reduction()
@@ -81,7 +81,7 @@ impl<const D: usize> Solution<D> {
     }
 
     /// Stage 2: the control points of one alpha-cut layer; `None` for a lower
-    /// layer when some number is cut above its lower height (SPEC §2.2).
+    /// layer when some number is cut above its lower height (docs/method.md §2).
     #[must_use]
     pub fn alpha_cut_layer(&self, layer: Layer) -> Option<Vec<[f64; D]>> {
         self.stages.alpha_cut_layer(layer)
@@ -136,7 +136,7 @@ impl<const D: usize> Solution<D> {
     }
 
     /// The distance between the crisp and the defuzzified curve at equal `t`
-    /// over the whole domain (SPEC §7); see [`Distance`].
+    /// over the whole domain (docs/method.md §7); see [`Distance`].
     #[must_use]
     pub fn distance(&self) -> Distance {
         let difference = self.stages.offsets(self.curve.points());

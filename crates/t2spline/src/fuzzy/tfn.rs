@@ -1,7 +1,7 @@
-//! The type-1 triangular fuzzy number that type reduction yields (SPEC §3–§4).
+//! The type-1 triangular fuzzy number that type reduction yields (docs/method.md §3–§4).
 
 /// A type-1 triangular fuzzy number `(left, crisp, right)`, `left ≤ crisp ≤ right`:
-/// the result of type reduction (SPEC §3, paper Def. 4.3).
+/// the result of type reduction (docs/method.md §3, paper Def. 4.3).
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct Tfn {
@@ -37,7 +37,7 @@ impl Tfn {
         self.right
     }
 
-    /// Defuzzification by the centroid of the triangle (SPEC §4, paper Def. 4.4).
+    /// Defuzzification by the centroid of the triangle (docs/method.md §4, paper Def. 4.4).
     ///
     /// ```text
     /// defuzzified = (left + crisp + right) / 3

@@ -1,14 +1,14 @@
 //! The distance between the crisp and the defuzzified surface over the whole
-//! domain (SPEC §9).
+//! domain (docs/method.md §8).
 
 use crate::cubature::Cubature;
 use crate::nurbs::surface::patches::{patch_min, Patch, HULL_SLACK};
 use crate::nurbs::{Direction, NurbsSurface};
-use crate::pipeline::euclidean_norm;
+use crate::vector::euclidean_norm;
 
 /// How far the defuzzified surface `D(u, v)` lies from the crisp surface
 /// `C(u, v)` at equal parameters over the whole domain `[a, b] × [c, d]`
-/// (SPEC §9):
+/// (docs/method.md §8):
 ///
 /// ```text
 /// d(u, v) = ‖D(u, v) − C(u, v)‖₂

@@ -1,13 +1,14 @@
-//! The distance between the crisp and the defuzzified curve (SPEC §7).
+//! The distance between the crisp and the defuzzified curve (docs/method.md §7).
 
-use crate::golden_section::brent_min;
+use crate::brent::brent_min;
 use crate::nurbs::pieces::{tame_pieces, Piece};
 use crate::nurbs::span_eval::SpanEvaluator;
 use crate::nurbs::NurbsCurve;
 use crate::quadrature::{integrate_pieces, Tolerance};
+use crate::vector::euclidean_norm;
 
 /// How far the defuzzified curve `D(t)` lies from the crisp curve `C(t)` at equal
-/// parameters, over the whole domain `[a, b]` (SPEC §7):
+/// parameters, over the whole domain `[a, b]` (docs/method.md §7):
 ///
 /// ```text
 /// d(t) = ‖D(t) − C(t)‖₂
@@ -197,32 +198,6 @@ fn mean_square<const D: usize>(
         BISECTIONS.saturating_add(BISECTIONS_PER_PIECE.saturating_mul(pieces.len())),
     );
     (integral.value, seen)
-}
-
-/// The Euclidean norm `‖v‖₂ = √(Σ vᵢ²)`. Components from 1e-150 to 1e150
-/// are squared as they are; beyond, they are first divided by the largest one,
-/// so that neither the squares of components near 1e300 overflow nor those
-/// near 1e-170 underflow (as `f64::hypot` does for two).
-///
-/// # Examples
-/// ```
-/// # use t2spline::pipeline::euclidean_norm;
-/// assert_eq!(euclidean_norm(&[3.0, 4.0]), 5.0);
-/// assert_eq!(euclidean_norm(&[3e300, 4e300]), 5e300);
-/// assert_eq!(euclidean_norm(&[3e-300, -4e-300, 0.0]), 5e-300);
-/// assert_eq!(euclidean_norm(&[]), 0.0);
-/// ```
-#[must_use]
-pub fn euclidean_norm(v: &[f64]) -> f64 {
-    let largest = v.iter().fold(0.0_f64, |m, x| m.max(x.abs()));
-    if (1e-150..=1e150).contains(&largest) {
-        v.iter().map(|x| x * x).sum::<f64>().sqrt()
-    } else if largest == 0.0 || !largest.is_finite() {
-        largest
-    } else {
-        let scaled: f64 = v.iter().map(|x| (x / largest) * (x / largest)).sum();
-        largest * scaled.sqrt()
-    }
 }
 
 #[cfg(test)]

@@ -1,5 +1,5 @@
-//! Stages 2–4 of Algorithm 1.1 on the control net of a fuzzy surface (SPEC
-//! §7, §9), and the surfaces through their results.
+//! Stages 2–4 of Algorithm 1.1 on the control net of a fuzzy surface (docs/method.md
+//! §7, §8), and the surfaces through their results.
 
 use crate::fuzzy::{Alpha, AlphaCut, Layer};
 use crate::nurbs::NurbsSurface;
@@ -8,7 +8,7 @@ use crate::pipeline::{FuzzySurface, SurfaceDistance};
 use crate::reduction::{Reduced, TypeReduction};
 
 /// The four stages of Algorithm 1.1 for a fuzzy surface at one level alpha
-/// (SPEC §7, §9), computed number by number on the control net exactly as for
+/// (docs/method.md §7, §8), computed number by number on the control net exactly as for
 /// curves ([`Solution`](crate::Solution) shares the same per-number code):
 ///
 /// 1. the fuzzy surface and its seven layer surfaces;
@@ -65,7 +65,7 @@ impl<const D: usize> SurfaceSolution<D> {
         self.stages.alpha()
     }
 
-    /// The type reduction of stages 3–4 (SPEC §10).
+    /// The type reduction of stages 3–4 (docs/method.md §9).
     #[must_use]
     pub fn type_reduction(&self) -> TypeReduction {
         self.stages.type_reduction()
@@ -84,7 +84,7 @@ impl<const D: usize> SurfaceSolution<D> {
     }
 
     /// Stage 2: the control points of one alpha-cut layer; `None` for a lower
-    /// layer when some number is cut above its lower height (SPEC §2.2).
+    /// layer when some number is cut above its lower height (docs/method.md §2).
     #[must_use]
     pub fn alpha_cut_layer(&self, layer: Layer) -> Option<Vec<[f64; D]>> {
         self.stages.alpha_cut_layer(layer)
@@ -141,7 +141,7 @@ impl<const D: usize> SurfaceSolution<D> {
     }
 
     /// The distance between the crisp and the defuzzified surface at equal
-    /// `(u, v)` over the whole domain (SPEC §9); see [`SurfaceDistance`].
+    /// `(u, v)` over the whole domain (docs/method.md §8); see [`SurfaceDistance`].
     #[must_use]
     pub fn distance(&self) -> SurfaceDistance {
         let offsets = self.stages.offsets(self.surface.points());

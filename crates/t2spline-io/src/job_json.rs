@@ -1,4 +1,6 @@
-//! Jobs written back as job files (SPEC §8).
+//! Jobs written back as job files (docs/jobs.md), and the models and points
+//! of data files: the writing side of the job format, shared by the job
+//! reader (which re-exports [`job_json`]), the data of fits and readings.
 
 use serde_json::{json, Map, Value};
 use t2spline::job::{Job, Model, ModelVisitor, Samples};
@@ -40,8 +42,8 @@ pub fn job_json(job: &Job) -> Value {
     Value::Object(out)
 }
 
-/// The model's keys of a job file, in the order of SPEC §8: `degree`,
-/// `weights`, `knots`, `points` (for a surface, SPEC §9: `degree` a pair,
+/// The model's keys of a job file, in the order of docs/jobs.md: `degree`,
+/// `weights`, `knots`, `points` (for a surface, docs/method.md §8: `degree` a pair,
 /// `weights` and `points` rows of the net, `knots` an object with `u` and
 /// `v`); a number's `lower_height` is left out when it equals `top_height`.
 pub(crate) fn model_json(model: &Model, top_height: Option<f64>) -> Map<String, Value> {
