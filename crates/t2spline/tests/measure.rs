@@ -452,12 +452,21 @@ fn check_sound(
         }
     }
     if exact_vertices {
-        // The maximum length and both area extremes are at vertices.
+        // The maximum length and both area extremes are at vertices: equal
+        // to the brute force where exact, and within the gap otherwise (a
+        // vertex curve with a cusp, whose speed has a corner).
         let [_, lmax] = span(lengths.into_iter());
-        assert!(
-            (length.max - lmax).abs() <= 1e-9 * lmax,
-            "{length:?} vs {lmax}"
-        );
+        if length.exact {
+            assert!(
+                (length.max - lmax).abs() <= 1e-9 * lmax,
+                "{length:?} vs {lmax}"
+            );
+        } else {
+            assert!(
+                length.max >= lmax && length.max - length.gap <= lmax * (1.0 + 1e-9),
+                "{length:?} vs {lmax}"
+            );
+        }
         let [smin, smax] = span(areas.into_iter());
         let scale = smin.abs().max(smax.abs()).max(1.0);
         assert!(

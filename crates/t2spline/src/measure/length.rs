@@ -8,7 +8,9 @@
 //! on. The integral is the fixed rule of [`super::rule`],
 //! `L_Q(P) = Σ_q w_q ‖d_q(P)‖`; the difference between the fine and the
 //! coarse rule at the extreme curves is the quadrature's error estimate,
-//! added to each bracket.
+//! added to each bracket; the two extreme curves' lengths are then taken
+//! from the adaptive arc length (which bisects where the speed has a corner,
+//! as at a cusp of a vertex curve).
 //!
 //! - The **minimum** of a convex function over a box: projected Newton
 //!   (Bertsekas 1982) on `Σ w_q √(‖d_q‖² + ε²)` with ε shrinking to `10⁻¹²`
@@ -562,11 +564,28 @@ impl VertexProblem for LengthVertices<'_> {
     }
 }
 
-/// The bracket of the length.
-pub(crate) fn length_bracket(rules: &Rules, cut: &CutBox) -> Bracket {
-    let (least, _) = min_length(rules, cut);
-    let (largest, exact_max, _) = max_length(rules, cut);
-    let exact_min =
-        least[1] - least[0] <= LENGTH_MIN_TOLERANCE * least[1].abs().max(f64::MIN_POSITIVE);
-    Bracket::from_ends(least, largest, exact_min && exact_max)
+/// The bracket of the length. `adaptive` is the length of the curve with
+/// given control points by the adaptive quadrature of
+/// `NurbsCurve::arc_length` (relative accuracy 1e-10, bisecting where the
+/// speed has a corner): the lengths of the two extreme curves found on the
+/// fixed rule are taken from it, and each end's bracket holds both the
+/// fixed rule's value widened by its error estimate and the adaptive one.
+pub(crate) fn length_bracket(
+    rules: &Rules,
+    cut: &CutBox,
+    adaptive: &dyn Fn(&[f64]) -> f64,
+) -> Bracket {
+    let (least, x_min) = min_length(rules, cut);
+    let (largest, enumerated, x_max) = max_length(rules, cut);
+    let accuracy = 1e-10;
+    let short = adaptive(&x_min);
+    let long = adaptive(&x_max);
+    // The attained ends by the adaptive quadrature, the bounds widened to
+    // hold them with its accuracy.
+    let least = [least[0].min(short * (1.0 - accuracy)), short];
+    let largest = [long, largest[1].max(long * (1.0 + accuracy))];
+    let tolerance = LENGTH_MIN_TOLERANCE * long.abs().max(f64::MIN_POSITIVE);
+    let exact =
+        enumerated && least[1] - least[0] <= tolerance && largest[1] - largest[0] <= tolerance;
+    Bracket::from_ends(least, largest, exact)
 }

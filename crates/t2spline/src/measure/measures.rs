@@ -361,6 +361,16 @@ fn leveled(
 }
 
 impl<const D: usize> FuzzyCurve<D> {
+    /// The arc length of the crisp curve through the control points `x`
+    /// (flattened, `D` per point) by adaptive quadrature.
+    fn adaptive_length(&self, x: &[f64]) -> f64 {
+        let points = x
+            .chunks_exact(D)
+            .map(|c| std::array::from_fn(|k| c[k]))
+            .collect();
+        self.with_control_points(points).arc_length()
+    }
+
     /// The boxes of cut control points at each level, per function (only
     /// the levels where the function has a cut).
     fn cut_boxes(&self, levels: &[Alpha]) -> PerMembership<Vec<(f64, CutBox)>> {
@@ -412,7 +422,9 @@ impl<const D: usize> FuzzyCurve<D> {
         };
         let length = if options.length {
             finish(leveled(&boxes, |cut| {
-                Some(length_bracket(&prepared.rules, cut))
+                Some(length_bracket(&prepared.rules, cut, &|x| {
+                    self.adaptive_length(x)
+                }))
             }))
         } else {
             PerMembership::default()
@@ -536,7 +548,11 @@ impl<const D: usize> FuzzyCurve<D> {
     #[must_use]
     pub fn length_bracket(&self, membership: Membership, alpha: Alpha) -> Option<Bracket> {
         let cut = CutBox::of(self.points(), membership, alpha)?;
-        Some(length_bracket(&Prepared::of(self, false).rules, &cut))
+        Some(length_bracket(
+            &Prepared::of(self, false).rules,
+            &cut,
+            &|x| self.adaptive_length(x),
+        ))
     }
 
     /// The exact range of the derivative of order `order` at `t`, per
