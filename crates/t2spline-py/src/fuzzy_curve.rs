@@ -305,7 +305,7 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
     /// >>> line = FuzzyCurve(c, c[..., None] + s, c[..., None] + 0.5 * s,
     /// ...                   c[..., None] + 0 * s, lower_height=1.0, degree=1)
     /// >>> m = line.measure(levels=3)
-    /// >>> [(round(l["min"], 9), round(l["max"], 9)) for l in m["length"]["upper"]]
+    /// >>> [(round(l["min"], 6), round(l["max"], 6)) for l in m["length"]["upper"]]
     /// [(2.0, 6.0), (3.0, 5.0), (4.0, 4.0)]
     #[pyo3(
         signature = (levels=None, at=None, order=None),
