@@ -540,17 +540,11 @@ impl VertexProblem for LengthVertices<'_> {
                 let (mut lo, mut hi) = (0.0, 0.0);
                 for (j, a) in rule.r1[q * w..(q + 1) * w].iter().enumerate() {
                     let v = (first + j) * dim + c;
+                    // A variable that is not free has `lo = hi`.
                     let (l, h) = match self.slot[v].map(|s| fixed[s]) {
                         Some(Some(true)) => (cut.hi[v], cut.hi[v]),
-                        Some(Some(false)) | None => (
-                            cut.lo[v],
-                            if self.slot[v].is_some() {
-                                cut.lo[v]
-                            } else {
-                                cut.hi[v]
-                            },
-                        ),
-                        Some(None) => (cut.lo[v], cut.hi[v]),
+                        Some(Some(false)) => (cut.lo[v], cut.lo[v]),
+                        Some(None) | None => (cut.lo[v], cut.hi[v]),
                     };
                     let (p, r) = (a * l, a * h);
                     lo += p.min(r);
