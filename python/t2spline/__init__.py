@@ -32,6 +32,11 @@ run
     numpy arrays. ``type_reduction=`` (or the job's ``"type_reduction"``)
     chooses ``"paper"`` (the default, stages 3–4 above), ``"centroid"``,
     ``"nie-tan"`` or ``"alpha-planes"`` (docs/method.md §9).
+run_many, run_table
+    Many jobs on all cores with the GIL released: a list of jobs (dicts,
+    texts or paths) to a list of results; an Arrow table of job texts to a
+    pyarrow table of summaries (and of samples), for Dask, Ray or Spark
+    (docs/scale.md). Every object pickles, so curves go to worker processes.
 JobError
     A job that breaks the rules (a ``ValueError``), one problem per line.
 FuzzyNumber, AlphaCut
@@ -115,7 +120,9 @@ from ._t2spline import (
     centroid,
     fit,
     run,
+    run_many,
 )
+from .table import run_table
 
 __all__ = [
     "AlphaCut",
@@ -133,5 +140,7 @@ __all__ = [
     "centroid",
     "fit",
     "run",
+    "run_many",
+    "run_table",
     "types",
 ]

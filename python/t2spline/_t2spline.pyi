@@ -1,9 +1,10 @@
 # Types of the extension module `t2spline._t2spline` (Rust, crates/t2spline-py).
 # The full documentation, with formulas and examples, is in the docstrings of
 # the compiled objects: `help(t2spline.FuzzyCurve)`.
-from typing import Any, Literal, Optional, Sequence, Tuple, Union, final, overload
+from typing import Any, Iterable, Literal, Optional, Sequence, Tuple, Union, final, overload
 
-from numpy.typing import ArrayLike
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
 
 from .types import (
     AlphaCutCurves,
@@ -47,10 +48,12 @@ __all__ = [
     "SurfaceSolution",
     "__version__",
     "_panic_for_tests",
+    "_run_rows",
     "benchmark_curve",
     "centroid",
     "fit",
     "run",
+    "run_many",
 ]
 __version__: str
 
@@ -67,6 +70,28 @@ def run(
 ) -> dict[str, Any]:
     """Runs a job as `t2spline run` does; the result file's keys, numpy arrays."""
 
+def run_many(
+    jobs: Iterable[Union[Job, str]],
+    samples: Optional[Union[int, tuple[int, int]]] = None,
+    alpha: Optional[float] = None,
+    errors: Literal["collect", "raise"] = "collect",
+    *,
+    derivatives: Optional[int] = None,
+    type_reduction: Optional[TypeReductionName] = None,
+) -> list[Union[dict[str, Any], Exception]]:
+    """Runs many jobs as `run` runs one, in parallel, results in order."""
+
+def _run_rows(
+    data: NDArray[np.uint8],
+    offsets: NDArray[np.int64],
+    valid: Optional[NDArray[np.bool_]],
+    first: int,
+    with_samples: bool,
+    samples: Optional[Union[int, tuple[int, int]]] = None,
+    alpha: Optional[float] = None,
+    type_reduction: Optional[str] = None,
+) -> dict[str, Any]: ...
+
 def centroid(
     x: ArrayLike,
     lmf: ArrayLike,
@@ -78,6 +103,7 @@ def centroid(
 @final
 class AlphaCut:
     """The alpha-cut of a fuzzy number (docs/method.md §2)."""
+    def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]: ...
     @property
     def alpha(self) -> float: ...
     @property
@@ -93,6 +119,7 @@ class AlphaCut:
 @final
 class FuzzyNumber:
     """A normal triangular type-2 fuzzy number (docs/method.md §1)."""
+    def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]: ...
     def __new__(
         cls,
         crisp: float,
@@ -119,6 +146,7 @@ class FuzzyNumber:
 @final
 class NurbsCurve:
     """A rational B-spline curve in the plane or in space (docs/method.md §6)."""
+    def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]: ...
     def __new__(
         cls,
         control_points: ArrayLike,
@@ -169,6 +197,7 @@ class NurbsCurve:
 @final
 class FuzzyCurve:
     """A rational B-spline curve with fuzzy control points: stage 1 (docs/method.md §6–§7)."""
+    def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]: ...
     def __new__(
         cls,
         crisp: ArrayLike,
@@ -254,6 +283,7 @@ class FuzzyCurve:
 @final
 class Region:
     """The region of a fuzzy curve at one level, as polygons (docs/method.md §10)."""
+    def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]: ...
     @property
     def area(self) -> float: ...
     @property
@@ -269,10 +299,20 @@ class Region:
     @property
     def __geo_interface__(self) -> GeoMultiPolygon: ...
     def contains(self, point: ArrayLike) -> bool: ...
+    @classmethod
+    def _restore(
+        cls,
+        polygons: Sequence[Tuple[Sequence[Sequence[float]], Sequence[Sequence[Sequence[float]]]]],
+        tolerance: float,
+        membership: Which,
+        alpha: float,
+        plane: PlaneName,
+    ) -> Region: ...
 
 @final
 class Solution:
     """Stages 2-4 of Algorithm 1.1 at one level alpha (docs/method.md §7)."""
+    def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]: ...
     @property
     def alpha(self) -> float: ...
     @property
@@ -299,6 +339,7 @@ class Solution:
 @final
 class NurbsSurface:
     """A rational B-spline surface (docs/method.md §8)."""
+    def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]: ...
     def __new__(
         cls,
         control_points: ArrayLike,
@@ -351,6 +392,7 @@ class NurbsSurface:
 @final
 class FuzzySurface:
     """A rational B-spline surface with a net of fuzzy control points: stage 1 (docs/method.md §8)."""
+    def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]: ...
     def __new__(
         cls,
         crisp: ArrayLike,
@@ -424,6 +466,7 @@ class FuzzySurface:
 @final
 class SurfaceSolution:
     """Stages 2-4 of Algorithm 1.1 on the net of a fuzzy surface (docs/method.md §7, §8)."""
+    def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]: ...
     @property
     def alpha(self) -> float: ...
     @property

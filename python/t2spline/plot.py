@@ -6,6 +6,14 @@ limits and legends stay yours. The figures follow those of ``t2spline plot``
 (paper Figs. 5.1–5.4): upper layers blue, primary green, lower vermillion,
 left layers dashed, the crisp curve black, the solution purple.
 
+Given the job's ``FuzzyCurve`` (``curve=t2spline.FuzzyCurve.from_job(job)``),
+``stage1`` and ``stage2`` shade the regions the curve can occupy (the upper
+and the lower function's, docs/method.md §10), computed by the Rust set
+view: at each ``t`` the curve can pass anywhere in the box whose corners lie
+on the layer curves, so the band between two layer curves is not that set.
+``membership_map`` draws a plane curve's grades in the plane, ``section`` the
+fuzzy value of y at a station.
+
 Needs matplotlib (``pip install t2spline[plot]``); ``import t2spline`` alone
 does not.
 
@@ -25,6 +33,10 @@ Examples
 <Axes: ...>
 >>> t2spline.plot.stage4(axes[1, 1], result).get_title()
 'Stage 4: crisp and defuzzified curve'
+>>> curve = t2spline.FuzzyCurve.from_job(t2spline.plot._EXAMPLE_JOB)
+>>> ax = t2spline.plot.stage2(axes[0, 1], result, curve=curve)   # shades the regions at alpha
+>>> t2spline.plot.membership_map(axes[1, 0], curve).get_title()
+'upper membership grade'
 """
 
 from __future__ import annotations
@@ -42,9 +54,13 @@ except ImportError:  # pragma: no cover - exercised without matplotlib only
         "t2spline.plot needs matplotlib: pip install 't2spline[plot]'"
     ) from None
 
-from ._t2spline import FuzzyNumber, NurbsCurve
+from matplotlib.patches import PathPatch
+from matplotlib.path import Path
 
-__all__ = ["stage1", "stage2", "stage3", "stage4", "stages", "membership"]
+from ._t2spline import FuzzyCurve, FuzzyNumber, NurbsCurve, Region
+
+__all__ = ["stage1", "stage2", "stage3", "stage4", "stages", "membership",
+           "region", "membership_map", "section"]
 
 Result = Mapping[str, Any]
 Coords = Tuple[int, int]
@@ -94,6 +110,45 @@ def _band(ax: Axes, left: Optional[NDArray[np.float64]], right: Optional[NDArray
     ax.fill(*_xy(polygon, coords), color=color, alpha=alpha, linewidth=0, label=label)
 
 
+_PLANES: Mapping[Tuple[int, int], Literal["xy", "xz", "yz"]] = {
+    (0, 1): "xy", (0, 2): "xz", (1, 2): "yz"}
+_SHADES: Tuple[Tuple[Literal["upper", "lower"], str, float], ...] = (
+    ("upper", UPPER, 0.12), ("lower", LOWER, 0.32))
+
+
+def region(ax: Axes, region: Optional[Region], *, color: str = UPPER, alpha: float = 0.12,
+           label: Optional[str] = None) -> Axes:
+    """Fills a ``Region`` (``FuzzyCurve.region``): its polygons with their
+    holes, as one compound path (exteriors counter-clockwise, holes
+    clockwise, so a hole stays empty). ``None`` (no cut at the level) draws
+    nothing."""
+    if region is None:
+        return ax
+    vertices, codes = [], []
+    for exterior, holes in region.polygons:
+        for ring in (exterior, *holes):
+            ring = np.asarray(ring, dtype=float)
+            vertices.extend([*ring, ring[0]])
+            codes.extend([Path.MOVETO] + [Path.LINETO] * (len(ring) - 1) + [Path.CLOSEPOLY])
+    if vertices:
+        ax.add_patch(PathPatch(Path(np.asarray(vertices), codes), facecolor=color, alpha=alpha,
+                               linewidth=0, label=label))
+        ax.autoscale_view()
+    return ax
+
+
+def _regions(ax: Axes, curve: Optional[FuzzyCurve], level: float, coords: Coords) -> None:
+    """The upper and the lower region at ``level`` in the plane of ``coords``."""
+    if curve is None:
+        return
+    plane = _PLANES.get((coords[0], coords[1]))
+    if plane is None:
+        raise ValueError(f"coords: regions are drawn in the planes xy, xz, yz, got {coords}")
+    for which, color, shade in _SHADES:
+        r = curve.region(level, membership=which, plane=plane)
+        region(ax, r, color=color, alpha=shade, label=f"{which} region at alpha = {level:g}")
+
+
 def _layer_curves(ax: Axes, curves: Mapping[str, Optional[NDArray[np.float64]]], coords: Coords,
                   what: str) -> None:
     for name, color, _ in _FUNCTIONS:
@@ -104,13 +159,15 @@ def _layer_curves(ax: Axes, curves: Mapping[str, Optional[NDArray[np.float64]]],
                         label=f"{what} {name} {side}")
 
 
-def stage1(ax: Axes, result: Result, *, coords: Coords = (0, 1)) -> Axes:
+def stage1(ax: Axes, result: Result, *, coords: Coords = (0, 1),
+           curve: Optional[FuzzyCurve] = None) -> Axes:
     """Stage 1 (paper Fig. 5.1): the fuzzy curve.
 
-    Draws the bands between the upper layer curves (light) and between the
-    lower ones (darker), the control polygon, each fuzzy control point as the
-    crisp point with bars for its upper, primary and lower interval in each
-    coordinate, and the seven layer curves (left dashed, right solid).
+    Draws the control polygon, each fuzzy control point as the crisp point
+    with bars for its upper, primary and lower interval in each coordinate,
+    and the seven layer curves (left dashed, right solid); given ``curve``,
+    the regions the curve can occupy at level 0 under the upper function
+    (light) and the lower (darker), from ``curve.region``.
 
     Parameters
     ----------
@@ -119,14 +176,14 @@ def stage1(ax: Axes, result: Result, *, coords: Coords = (0, 1)) -> Axes:
         A result of ``t2spline.run``.
     coords : (int, int)
         The coordinates to draw (a projection, for 3-D curves).
+    curve : FuzzyCurve, optional
+        The job's fuzzy curve (``FuzzyCurve.from_job(job)``), whose regions
+        are shaded; without it no region is drawn.
     """
     _check(result, coords)
     curves, cps = result["curves"], result["control_points"]
     layers = curves["layers"]
-    _band(ax, layers["upper_left"], layers["upper_right"], coords, UPPER, 0.12,
-          "between the upper layers")
-    _band(ax, layers["lower_left"], layers["lower_right"], coords, LOWER, 0.18,
-          "between the lower layers")
+    _regions(ax, curve, 0.0, coords)
     crisp = cps["crisp"]
     ax.plot(*_xy(crisp, coords), ":", color=GREY, linewidth=1, label="control polygon")
     i, j = coords
@@ -142,17 +199,19 @@ def stage1(ax: Axes, result: Result, *, coords: Coords = (0, 1)) -> Axes:
     return ax
 
 
-def stage2(ax: Axes, result: Result, *, coords: Coords = (0, 1)) -> Axes:
+def stage2(ax: Axes, result: Result, *, coords: Coords = (0, 1),
+           curve: Optional[FuzzyCurve] = None) -> Axes:
     """Stage 2 (paper Fig. 5.2): the alpha-cut control points and curves.
 
     A lower layer is drawn only where every number has a lower cut at the
-    result's alpha; absent lower ends (NaN) are left out.
+    result's alpha; absent lower ends (NaN) are left out. Given ``curve``
+    (as for ``stage1``), the upper and lower regions at the result's alpha
+    are shaded (the lower only where it has a cut).
     """
     _check(result, coords)
     curves, cps = result["curves"], result["control_points"]
     cut = curves["alpha_cut"]
-    _band(ax, cut["upper_left"], cut["upper_right"], coords, UPPER, 0.12, None)
-    _band(ax, cut["lower_left"], cut["lower_right"], coords, LOWER, 0.18, None)
+    _regions(ax, curve, float(result["alpha"]), coords)
     _layer_curves(ax, cut, coords, "alpha-cut")
     for name, color, _ in _FUNCTIONS:
         for side in ("left", "right"):
@@ -211,13 +270,18 @@ def _curve(result: Result, control_points: NDArray[np.float64]) -> NurbsCurve:
 
 
 def stages(result: Result, *, coords: Coords = (0, 1),
-           figsize: Tuple[float, float] = (11, 9)) -> Figure:
+           figsize: Tuple[float, float] = (11, 9),
+           curve: Optional[FuzzyCurve] = None) -> Figure:
     """All four stages in a 2 × 2 ``matplotlib.figure.Figure`` (no pyplot
-    needed: save it with ``fig.savefig``, or show it in a notebook)."""
+    needed: save it with ``fig.savefig``, or show it in a notebook); given
+    ``curve``, stages 1 and 2 shade its regions."""
     fig = Figure(figsize=figsize, layout="constrained")
     axes = fig.subplots(2, 2)
-    for ax, draw in zip(axes.flat, (stage1, stage2, stage3, stage4)):
-        draw(ax, result, coords=coords)
+    stage1(axes[0, 0], result, coords=coords, curve=curve)
+    stage2(axes[0, 1], result, coords=coords, curve=curve)
+    stage3(axes[1, 0], result, coords=coords)
+    stage4(axes[1, 1], result, coords=coords)
+    for ax in axes.flat:
         ax.set_aspect("equal", adjustable="datalim")
     axes[1, 1].legend(loc="best", fontsize="small")
     return fig
@@ -242,4 +306,84 @@ def membership(ax: Axes, number: FuzzyNumber, *, samples: int = 401) -> Axes:
         ax.plot(x, number.membership(x, which=which), color=color, label=f"{which} MF")
     ax.set_ylim(0, 1.05)
     ax.set_title(f"Fuzzy number (crisp {number.crisp:g}, h = {number.lower_height:g})")
+    return ax
+
+
+#: The levels whose regions ``membership_map`` outlines.
+CONTOUR_LEVELS = (0.2, 0.4, 0.6, 0.8)
+
+
+def _bounds(r: Region) -> Tuple[Tuple[float, float], Tuple[float, float]]:
+    """The box of a region's exteriors."""
+    points = np.concatenate([np.asarray(exterior) for exterior, _ in r.polygons])
+    lo, hi = points.min(axis=0), points.max(axis=0)
+    return (float(lo[0]), float(hi[0])), (float(lo[1]), float(hi[1]))
+
+
+def membership_map(ax: Axes, curve: FuzzyCurve, *, which: Literal["upper", "primary", "lower"] = "upper",
+                   cells: int = 240, levels: Tuple[float, ...] = CONTOUR_LEVELS) -> Axes:
+    """A plane curve's grades in the plane, as ``t2spline plot`` draws the
+    ``membership`` figure: ``curve.membership_grid`` over the upper region
+    at level 0 (``cells`` along the longer side) as a viridis map from 0 to 1
+    (grade 0 left blank), the regions at ``levels`` outlined, and the crisp
+    curve on top. Returns ``ax``; the image is ``ax.images[0]``."""
+    support = curve.region(0.0)
+    if support is None:  # pragma: no cover - the upper function always has a cut at 0
+        return ax
+    (x0, x1), (y0, y1) = _bounds(support)
+    pad = 0.04 * max(x1 - x0, y1 - y0)
+    x0, x1, y0, y1 = x0 - pad, x1 + pad, y0 - pad, y1 + pad
+    step = max(x1 - x0, y1 - y0) / cells
+    shape = (max(1, min(cells, round((x1 - x0) / step))), max(1, min(cells, round((y1 - y0) / step))))
+    grid = curve.membership_grid((x0, x1), (y0, y1), shape)
+    grades = np.ma.masked_equal(grid[which], 0.0)
+    ax.imshow(grades, extent=(x0, x1, y0, y1), origin="lower", cmap="viridis", vmin=0.0, vmax=1.0,
+              interpolation="nearest")
+    for level in levels:
+        r = curve.region(level, membership=which)
+        for exterior, holes in (r.polygons if r is not None else []):
+            for ring in (exterior, *holes):
+                ring = np.asarray(ring)
+                closed = np.vstack([ring, ring[:1]])
+                ax.plot(closed[:, 0], closed[:, 1], color="white", linewidth=2.2)
+                ax.plot(closed[:, 0], closed[:, 1], color="#222222", linewidth=0.8)
+    crisp = curve.sample(401)["crisp"]
+    ax.plot(crisp[:, 0], crisp[:, 1], color=CRISP, linewidth=1.5, label="crisp curve")
+    ax.set_aspect("equal")
+    ax.set_title(f"{which} membership grade")
+    return ax
+
+
+def section(ax: Axes, curve: FuzzyCurve, x0: float, *, alpha: Optional[float] = None,
+            samples: int = 401) -> Axes:
+    """The fuzzy value of y at the station ``x = x0`` of a plane curve, as
+    ``membership`` draws one number: the grades of the points ``(x0, y)``
+    (``curve.membership``) under the three functions, the footprint between
+    upper and lower, and, given ``alpha``, the ends of the section's
+    intervals there (``curve.section``: several where the curve passes the
+    station more than once)."""
+    levels = np.linspace(0.0, 1.0, 21)
+    cuts = curve.section(x0, levels)
+    upper0 = cuts[0]["upper"] or []
+    if not upper0:
+        ax.set_title(f"Section at x = {x0:g}: the region does not reach it")
+        return ax
+    lo, hi = upper0[0][0], upper0[-1][1]
+    pad = 0.08 * max(hi - lo, 1e-12)
+    ends = [e for c in cuts for which, _, _ in _FUNCTIONS for iv in (c[which] or []) for e in iv]
+    y = np.unique(np.concatenate([np.linspace(lo - pad, hi + pad, samples), ends]))
+    grades = curve.membership(np.column_stack([np.full_like(y, x0), y]))
+    ax.fill_between(y, grades["lower"], grades["upper"], color=UPPER, alpha=0.15, linewidth=0,
+                    label="footprint of uncertainty")
+    for which, color, _ in _FUNCTIONS:
+        ax.plot(y, grades[which], color=color, label=f"{which} membership of y")
+    if alpha is not None:
+        (at,) = curve.section(x0, [alpha])
+        for which, color, _ in _FUNCTIONS:
+            for a, b in at[which] or []:
+                ax.plot([a, b], [alpha, alpha], "s", color=color, markersize=4)
+        ax.axhline(alpha, color="#222222", linewidth=0.8)
+    ax.set_ylim(0, 1.05)
+    ax.set_xlabel(f"y at x = {x0:g}")
+    ax.set_title(f"Section at x = {x0:g}: the fuzzy value of y")
     return ax

@@ -15,9 +15,11 @@ matplotlib.use("Agg")
 
 import numpy as np  # noqa: E402
 import pytest  # noqa: E402
+from matplotlib.backends.backend_agg import FigureCanvasAgg  # noqa: E402
 from matplotlib.collections import LineCollection  # noqa: E402
 from matplotlib.figure import Figure  # noqa: E402
-from matplotlib.patches import Polygon  # noqa: E402
+from matplotlib.patches import PathPatch, Polygon  # noqa: E402
+from matplotlib.path import Path as MplPath  # noqa: E402
 
 import t2spline  # noqa: E402
 import t2spline.plot as tp  # noqa: E402
@@ -35,9 +37,12 @@ def labels(ax: "matplotlib.axes.Axes") -> list:
     return [line.get_label() for line in ax.get_lines()]
 
 
-def test_stage1_draws_the_seven_layers_the_bands_and_the_intervals() -> None:
+CURVE = t2spline.FuzzyCurve.from_job(EXAMPLE)
+
+
+def test_stage1_draws_the_seven_layers_the_regions_and_the_intervals() -> None:
     ax = axes()
-    assert tp.stage1(ax, RESULT) is ax
+    assert tp.stage1(ax, RESULT, curve=CURVE) is ax
     names = labels(ax)
     for function in ("upper", "primary", "lower"):
         for side in ("left", "right"):
@@ -45,10 +50,74 @@ def test_stage1_draws_the_seven_layers_the_bands_and_the_intervals() -> None:
     assert "crisp curve" in names and "control polygon" in names
     layer = ax.get_lines()[names.index("layer upper right")]
     assert np.array_equal(np.column_stack(layer.get_data()), RESULT["curves"]["layers"]["upper_right"])
-    bands = [p for p in ax.patches if isinstance(p, Polygon)]
-    assert len(bands) == 2
+    # No band between layer curves: the regions the Rust set view computes.
+    assert not [p for p in ax.patches if isinstance(p, Polygon)]
+    regions = [p for p in ax.patches if isinstance(p, PathPatch)]
+    assert [p.get_label() for p in regions] == ["upper region at alpha = 0", "lower region at alpha = 0"]
     bars = [c for c in ax.collections if isinstance(c, LineCollection)]
     assert len(bars) == 6  # horizontal and vertical bars of three intervals
+    # Without the curve, nothing is shaded.
+    assert not tp.stage1(axes(), RESULT).patches
+
+
+def test_a_region_is_drawn_with_its_holes() -> None:
+    """The drawn path is the Region's polygons: a fuzzy circle's annulus,
+    rendered, leaves its centre empty where shapely's region has its hole
+    (matplotlib fills by the non-zero rule, and holes run clockwise)."""
+    shapely = pytest.importorskip("shapely.geometry")
+    circle = t2spline.FuzzyCurve.from_job(EXAMPLE.parent.parent / "fixtures" / "circle.json")
+    region = circle.region(0.0)
+    fig = Figure(figsize=(4, 4), dpi=100)
+    ax = fig.add_axes((0, 0, 1, 1))
+    tp.region(ax, region, alpha=1.0)
+    ax.set_xlim(-1.3, 1.3)
+    ax.set_ylim(-1.3, 1.3)
+    ax.set_axis_off()
+    (patch,) = ax.patches
+    codes = patch.get_path().codes
+    assert len([c for c in codes if c == MplPath.MOVETO]) == 2  # exterior and hole
+    canvas = FigureCanvasAgg(fig)
+    canvas.draw()
+    pixels = np.asarray(canvas.buffer_rgba())
+    shape = shapely.shape(region)
+    for p in [(0.0, 0.0), (0.5, 0.5), (1.0, 0.0), (-0.75, 0.75), (0.0, -1.05), (1.25, 0.0)]:
+        col, row = ax.transData.transform(p)
+        r, g, b, _ = pixels[int(round(pixels.shape[0] - row)), int(round(col))]
+        filled = (r, g, b) != (255, 255, 255)
+        assert filled == shape.contains(shapely.Point(p)), p
+
+
+def test_stage2_shades_the_regions_at_the_results_alpha() -> None:
+    at_08 = tp.stage2(axes(), RESULT, curve=CURVE)  # above h = 0.6: no lower region
+    assert [p.get_label() for p in at_08.patches] == ["upper region at alpha = 0.8"]
+    at_04 = tp.stage2(axes(), t2spline.run(EXAMPLE, alpha=0.4), curve=CURVE)
+    assert len(at_04.patches) == 2
+    (drawn,) = at_08.patches
+    region = CURVE.region(0.8)
+    exterior = region.polygons[0][0]
+    assert np.array_equal(drawn.get_path().vertices[: len(exterior)], exterior)
+
+
+def test_membership_map_is_the_grid_with_its_regions_outlined() -> None:
+    ax = tp.membership_map(axes(), CURVE, which="lower", cells=80)
+    (image,) = ax.images
+    grades = image.get_array()
+    assert grades.max() <= 0.6 + 1e-12  # the lower grades reach h
+    x0, x1, y0, y1 = image.get_extent()
+    grid = CURVE.membership_grid((x0, x1), (y0, y1), grades.shape[::-1])
+    assert np.array_equal(np.ma.filled(grades, 0.0), grid["lower"])
+    assert "crisp curve" in labels(ax)
+
+
+def test_section_draws_the_grades_at_the_station_and_its_cut() -> None:
+    ax = tp.section(axes(), CURVE, 3.5, alpha=0.5)
+    line = ax.get_lines()[labels(ax).index("upper membership of y")]
+    y, mu = line.get_data()
+    grades = CURVE.membership(np.column_stack([np.full_like(y, 3.5), y]))
+    assert np.array_equal(mu, grades["upper"])
+    # The crisp curve crosses x = 3.5: the samples include the section's ends
+    # at level 1, within the section's tolerance of the crisp point.
+    assert mu.max() == pytest.approx(1.0, abs=1e-4)
 
 
 def test_stage2_leaves_out_absent_lower_cuts() -> None:
@@ -89,7 +158,7 @@ def test_a_projection_of_a_3d_result() -> None:
 
 
 def test_all_stages_in_one_figure_render_to_png() -> None:
-    fig = tp.stages(RESULT)
+    fig = tp.stages(RESULT, curve=CURVE)
     assert len(fig.axes) == 4
     out = io.BytesIO()
     fig.savefig(out, format="png", dpi=50)

@@ -86,7 +86,9 @@ pub struct RunArgs {
     pub csv: Option<PathBuf>,
     /// Also write the sampled curves as one Apache Parquet table into this
     /// file; with several jobs, the folder for `NAME.parquet` per job and
-    /// `summary.parquet`.
+    /// `summary.parquet`, or a `FILE.parquet` for one table of every job's
+    /// samples (columns `job`, `alpha`, one schema whatever the regime; the
+    /// summary then in the `--output` folder).
     #[arg(long, value_name = "FILE|DIR")]
     pub parquet: Option<PathBuf>,
     /// Also compute the derivatives of orders 1 to K of the crisp and the
@@ -202,6 +204,11 @@ pub struct FigureArgs {
         allow_hyphen_values = true
     )]
     pub view: t2spline_plot::View,
+    /// The station `x = X0` of the `section` figure (plane curves only):
+    /// the fuzzy value of y there. Default: x of the crisp curve at the
+    /// middle of its domain.
+    #[arg(long, value_name = "X0", allow_negative_numbers = true)]
+    pub station: Option<f64>,
 }
 
 /// Arguments of `t2spline plot`.

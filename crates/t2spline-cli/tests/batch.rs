@@ -119,15 +119,15 @@ fn every_good_job_is_written_and_every_bad_one_reported() {
     let lines: Vec<&str> = summary.lines().collect();
     assert_eq!(
         lines[0],
-        "name,file,status,type_reduction,regime,alpha,error_max,error_rms,message"
+        "name,file,status,type_reduction,regime,alpha,h,error_max,error_max_at,error_max_at_v,error_rms,description,message"
     );
     assert!(
-        lines[1].starts_with(&format!("a,{},ok,paper,alpha > h,0.8,0.0224", s(&a))),
+        lines[1].starts_with(&format!("a,{},ok,paper,alpha > h,0.8,0.6,0.0224", s(&a))),
         "{}",
         lines[1]
     );
     assert!(
-        lines[2].starts_with(&format!("b,{},invalid,,,,,,", s(&b))),
+        lines[2].starts_with(&format!("b,{},invalid,,,,,,,,,,", s(&b))),
         "{}",
         lines[2]
     );

@@ -26,7 +26,7 @@ fn on_example(sub: &str, dir: &Path) -> Command {
     c
 }
 
-const NAMES: [&str; 8] = [
+const NAMES: [&str; 10] = [
     "number",
     "stage1-fuzzy",
     "stage2-alpha-cut",
@@ -35,6 +35,8 @@ const NAMES: [&str; 8] = [
     "alpha-sweep",
     "distance-alpha",
     "reductions",
+    "membership",
+    "section",
 ];
 
 #[test]
@@ -63,7 +65,7 @@ fn plot_writes_every_figure_in_both_formats_by_default() {
     }
     assert_eq!(
         std::fs::read_dir(&out).unwrap().count(),
-        16,
+        20,
         "no stray files"
     );
 }
@@ -83,7 +85,7 @@ fn plot_svg_only_and_a_chosen_number() {
         ])
         .assert()
         .success();
-    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 8);
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 10);
     let number = std::fs::read_to_string(dir.path().join("number.svg")).unwrap();
     assert!(
         number.contains("coordinate y of control point 3"),

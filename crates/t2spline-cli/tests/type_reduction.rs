@@ -367,7 +367,7 @@ fn a_run_of_many_jobs_honours_each_job_s_reduction() {
     let lines: Vec<&str> = summary.lines().collect();
     assert_eq!(
         lines[0],
-        "name,file,status,type_reduction,regime,alpha,error_max,error_rms,message"
+        "name,file,status,type_reduction,regime,alpha,h,error_max,error_max_at,error_max_at_v,error_rms,description,message"
     );
     assert!(
         lines[1].starts_with("a,") && lines[1].contains(",ok,paper,alpha > h,0.8,"),

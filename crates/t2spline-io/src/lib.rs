@@ -100,10 +100,11 @@ pub use finite::check_finite;
 pub use fit_data::FitData;
 pub use job::{job_json, parse_data, parse_job, read_data, read_job};
 #[cfg(feature = "parquet")]
-pub use parquet::{write_parquet, write_summary_parquet};
+pub use parquet::{write_jobs_parquet, write_parquet, write_summary_parquet};
 pub use prepared::{MissingAlpha, Prepared, RunError};
 pub use pretty::{to_json_pretty, write_json_pretty};
 pub use printable::printable;
 pub use readings::{data_json, is_readings, parse_readings, read_readings, ReadingsFile, MAX_ROWS};
 pub use summary::{write_summary_csv, JobSummary, SUMMARY_COLUMNS};
+pub use table::{sample_column_names, sample_columns, SampleColumn};
 pub use temporary::remove_temporary_files;

@@ -23,24 +23,37 @@ pub struct JobSummary {
     /// The level alpha, if it ran with the paper's type reduction (the only
     /// one that uses alpha).
     pub alpha: Option<f64>,
+    /// The smallest lower height of its numbers (where the paper's
+    /// reduction jumps), if it was read.
+    pub h: Option<f64>,
     /// `error.max`, if it ran.
     pub error_max: Option<f64>,
+    /// Where the distance is largest, if it ran: `t`, or a surface's `u`.
+    pub error_max_at: Option<f64>,
+    /// A surface's `v` where the distance is largest.
+    pub error_max_at_v: Option<f64>,
     /// `error.rms`, if it ran.
     pub error_rms: Option<f64>,
+    /// The job's description, if it ran and has one.
+    pub description: Option<String>,
     /// What went wrong (the lines of the error, joined by `; `), if it failed.
     pub message: Option<String>,
 }
 
 /// The column names of a summary, in order.
-pub const SUMMARY_COLUMNS: [&str; 9] = [
+pub const SUMMARY_COLUMNS: [&str; 13] = [
     "name",
     "file",
     "status",
     "type_reduction",
     "regime",
     "alpha",
+    "h",
     "error_max",
+    "error_max_at",
+    "error_max_at_v",
     "error_rms",
+    "description",
     "message",
 ];
 
@@ -68,15 +81,17 @@ fn number(x: Option<f64>) -> Vec<u8> {
 /// # use t2spline_io::{write_summary_csv, JobSummary};
 /// let ok = JobSummary { name: "a".into(), file: "jobs/a.json".into(), status: "ok".into(),
 ///     type_reduction: Some("paper".into()), regime: Some("alpha > h".into()), alpha: Some(0.8),
-///     error_max: Some(0.044), error_rms: Some(0.01), message: None };
+///     h: Some(0.6), error_max: Some(0.044), error_max_at: Some(0.25), error_max_at_v: None,
+///     error_rms: Some(0.01), description: Some("a line".into()), message: None };
 /// let bad = JobSummary { name: "b".into(), file: "jobs/b.json".into(), status: "invalid".into(),
-///     type_reduction: None, regime: None, alpha: None, error_max: None, error_rms: None,
+///     type_reduction: None, regime: None, alpha: None, h: None, error_max: None,
+///     error_max_at: None, error_max_at_v: None, error_rms: None, description: None,
 ///     message: Some("jobs/b.json:3:5: alhpa: unknown key".into()) };
 /// let mut out = Vec::new();
 /// write_summary_csv(&mut out, &[ok, bad])?;
-/// assert_eq!(String::from_utf8(out)?, "name,file,status,type_reduction,regime,alpha,error_max,error_rms,message\n\
-///     a,jobs/a.json,ok,paper,alpha > h,0.8,0.044,0.01,\n\
-///     b,jobs/b.json,invalid,,,,,,jobs/b.json:3:5: alhpa: unknown key\n");
+/// assert_eq!(String::from_utf8(out)?, "name,file,status,type_reduction,regime,alpha,h,error_max,error_max_at,error_max_at_v,error_rms,description,message\n\
+///     a,jobs/a.json,ok,paper,alpha > h,0.8,0.6,0.044,0.25,,0.01,a line,\n\
+///     b,jobs/b.json,invalid,,,,,,,,,,jobs/b.json:3:5: alhpa: unknown key\n");
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn write_summary_csv<W: Write>(writer: W, jobs: &[JobSummary]) -> io::Result<()> {
@@ -90,8 +105,12 @@ pub fn write_summary_csv<W: Write>(writer: W, jobs: &[JobSummary]) -> io::Result
             job.type_reduction.as_deref().unwrap_or_default().as_bytes(),
             job.regime.as_deref().unwrap_or_default().as_bytes(),
             &number(job.alpha),
+            &number(job.h),
             &number(job.error_max),
+            &number(job.error_max_at),
+            &number(job.error_max_at_v),
             &number(job.error_rms),
+            job.description.as_deref().unwrap_or_default().as_bytes(),
             job.message.as_deref().unwrap_or_default().as_bytes(),
         ])?;
     }

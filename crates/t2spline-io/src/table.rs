@@ -194,7 +194,6 @@ pub(crate) fn stage_tables<'r>(result: &'r RunOutput) -> ([Table<'r>; 4], Option
 /// prefixed, as the stage-2 file's names repeat stage 1's), `left_*`,
 /// `right_*`, `defuzzified_*`, `distance`, and the derivatives
 /// (`crisp_d1_x`, …).
-#[cfg(feature = "parquet")]
 pub(crate) fn one_table(result: &RunOutput) -> Table<'_> {
     let f = Families::of(result);
     let mut columns = parameters(&result.samples.params);
@@ -221,5 +220,119 @@ pub(crate) fn one_table(result: &RunOutput) -> Table<'_> {
     Table {
         columns,
         rows: result.samples.params.count(),
+    }
+}
+
+/// One column of a result's samples table ([`sample_columns`]): its name
+/// and its values, borrowed from the result or computed row by row.
+#[derive(Clone, Debug)]
+pub struct SampleColumn<'a>(Column<'a>);
+
+impl SampleColumn<'_> {
+    /// `t`, `crisp_x`, `alpha_cut_upper_left_y`, `distance`, …
+    #[must_use]
+    pub fn name(&self) -> &str {
+        &self.0.name
+    }
+
+    /// Appends the values of the first `rows` rows to `out`.
+    pub fn extend_into(&self, rows: usize, out: &mut Vec<f64>) {
+        if let Values::Slice(v) = self.0.values {
+            out.extend_from_slice(&v[..rows.min(v.len())]);
+        } else {
+            out.extend((0..rows).map(|i| self.0.values.get(i)));
+        }
+    }
+}
+
+/// A result's samples as one table, the Parquet file's: its columns (the
+/// parameters, stage 1, the alpha-cut layers that exist, `left_*`,
+/// `right_*`, `defuzzified_*`, `distance`, the derivatives) and the number
+/// of rows.
+#[must_use]
+pub fn sample_columns(result: &RunOutput) -> (Vec<SampleColumn<'_>>, usize) {
+    let table = one_table(result);
+    (
+        table.columns.into_iter().map(SampleColumn).collect(),
+        table.rows,
+    )
+}
+
+/// Every column that [`sample_columns`] gives a result without derivatives,
+/// whatever the model and the regime, in the table's order: `t`, `u`, `v`,
+/// then the columns of a 3-D result at an alpha where every lower cut
+/// exists (`upper_left_x`, …, `alpha_cut_upper_left_x`, …, `distance`).
+/// One schema for the samples of many jobs: each result fills its own
+/// columns, the others are absent.
+#[must_use]
+pub fn sample_column_names() -> Vec<String> {
+    let mut names: Vec<String> = ["t", "u", "v"].map(str::to_owned).to_vec();
+    let mut xyz = |prefix: &str, name: &str| {
+        names.extend(AXES.iter().map(|a| format!("{prefix}{name}_{a}")));
+    };
+    for l in Layer::ALL {
+        xyz("", l.name());
+    }
+    for l in Layer::ALL.iter().filter(|&&l| l != Layer::Crisp) {
+        xyz("alpha_cut_", l.name());
+    }
+    for name in ["left", "right", "defuzzified"] {
+        xyz("", name);
+    }
+    names.push("distance".to_owned());
+    names
+}
+
+#[cfg(test)]
+mod tests {
+    use t2spline::job::Overrides;
+
+    use super::{sample_column_names, sample_columns};
+    use crate::{MissingAlpha, Prepared};
+
+    /// The names of a run's sample columns: the example job at `alpha`.
+    fn names(file: &str, alpha: f64) -> Vec<String> {
+        let path = format!("{}/../../examples/{file}", env!("CARGO_MANIFEST_DIR"));
+        let text = std::fs::read_to_string(&path).unwrap();
+        let overrides = Overrides {
+            alpha: Some(alpha),
+            samples: Some(if file.contains("paper") {
+                vec![5]
+            } else {
+                vec![3, 4]
+            }),
+            ..Overrides::default()
+        };
+        let refuse = MissingAlpha::Refuse { advice: "" };
+        let result = Prepared::from_text(&text, &path, &overrides, refuse)
+            .unwrap()
+            .run()
+            .unwrap();
+        let (columns, rows) = sample_columns(&result);
+        assert_eq!(rows, result.samples.params.count());
+        columns.iter().map(|c| c.name().to_owned()).collect()
+    }
+
+    #[test]
+    fn every_result_s_columns_are_in_the_one_schema_in_its_order() {
+        let all = sample_column_names();
+        for (file, alpha) in [
+            ("paper-alg-1-1.json", 0.3),
+            ("paper-alg-1-1.json", 0.9),
+            ("fuzzy-terrain.json", 0.2),
+            ("fuzzy-terrain.json", 1.0),
+        ] {
+            let got = names(file, alpha);
+            let mut at = all.iter();
+            for name in &got {
+                assert!(
+                    at.any(|n| n == name),
+                    "{file} at {alpha}: {name} out of the schema or its order"
+                );
+            }
+        }
+        // Below h every lower cut exists: a 3-D surface fills every column but t.
+        let terrain = names("fuzzy-terrain.json", 0.0);
+        assert_eq!(terrain.len(), all.len() - 1, "{terrain:?}");
     }
 }

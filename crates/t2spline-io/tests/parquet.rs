@@ -196,8 +196,12 @@ fn a_summary_with_nulls() {
         type_reduction: ok.then(|| "paper".into()),
         regime: ok.then(|| "alpha > h".into()),
         alpha: ok.then_some(0.8),
+        h: ok.then_some(0.6),
         error_max: ok.then_some(0.044),
+        error_max_at: ok.then_some(0.25),
+        error_max_at_v: None,
         error_rms: ok.then_some(1e-20),
+        description: ok.then(|| "a line".into()),
         message: (!ok).then(|| "jobs/b.json:1:2: alhpa: unknown key".into()),
     };
     let mut bytes = Vec::new();
@@ -214,8 +218,8 @@ fn a_summary_with_nulls() {
     assert_eq!(
         rows,
         [
-            r#"{name: "a", file: "jobs/a.json", status: "ok", type_reduction: "paper", regime: "alpha > h", alpha: 0.8, error_max: 0.044, error_rms: 1E-20, message: null}"#,
-            r#"{name: "b", file: "jobs/b.json", status: "invalid", type_reduction: null, regime: null, alpha: null, error_max: null, error_rms: null, message: "jobs/b.json:1:2: alhpa: unknown key"}"#
+            r#"{name: "a", file: "jobs/a.json", status: "ok", type_reduction: "paper", regime: "alpha > h", alpha: 0.8, h: 0.6, error_max: 0.044, error_max_at: 0.25, error_max_at_v: null, error_rms: 1E-20, description: "a line", message: null}"#,
+            r#"{name: "b", file: "jobs/b.json", status: "invalid", type_reduction: null, regime: null, alpha: null, h: null, error_max: null, error_max_at: null, error_max_at_v: null, error_rms: null, description: null, message: "jobs/b.json:1:2: alhpa: unknown key"}"#
         ]
     );
 }

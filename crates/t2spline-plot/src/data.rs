@@ -6,11 +6,10 @@
 //! distance at many alphas); plotting never recomputes the method.
 
 use t2spline::job::{Job, Model, ModelVisitor, Overrides, Points, RunOutput, Samples, Spline};
-use t2spline::sampling::{Params, Sampler};
-use t2spline::vector::euclidean_norm;
+use t2spline::sampling::DistanceSweep;
 use t2spline::{Alpha, Axis, FuzzyCurve, FuzzySurface, Nt2Number, TypeReduction};
 
-use crate::Error;
+use crate::error::Error;
 
 /// The fewest samples per curve in figures: a smooth line at print
 /// resolution for curves of a few spans.
@@ -264,63 +263,24 @@ pub fn surfaces_at(
     model.visit(At(alpha, method, uv))
 }
 
-/// Levels sampled together: bounds the memory of a sweep over many alphas
-/// (one array per coordinate and level).
-const LEVELS_PER_PASS: usize = 8;
-
-/// Calls `sink(k, d)` for each alpha `alphas[k]` with the distance
-/// `d[i] = ‖D(tᵢ) − C(tᵢ)‖` between the defuzzified curve of the paper's
-/// type reduction (the one that uses alpha) and the crisp curve at
-/// `samples` uniform parameters `tᵢ`, and returns the parameters. The curves
-/// come from the library's sampling engine: per pass one [`Sampler`] for the
-/// crisp control points and the defuzzified ones of several levels (from
-/// [`FuzzyCurve::solve`]); the norm is the core's.
-fn for_each_level(
-    model: &Model,
-    alphas: &[Alpha],
-    samples: usize,
-    sink: &mut dyn FnMut(usize, &[f64]),
-) -> Result<Vec<f64>, Error> {
-    struct Levels<'a> {
-        alphas: &'a [Alpha],
-        samples: usize,
-        sink: &'a mut dyn FnMut(usize, &[f64]),
-    }
+/// The core's sampled distance between the crisp and the defuzzified curve
+/// or surface of the paper's type reduction at each alpha
+/// ([`FuzzyCurve::distance_sweep`], [`FuzzySurface::distance_sweep`]):
+/// `samples` uniform parameters along a curve, or the model's figure grid on
+/// a surface.
+fn distance_sweep(model: &Model, alphas: &[Alpha], samples: usize) -> Result<DistanceSweep, Error> {
+    struct Levels<'a>(&'a [Alpha], usize, Option<[usize; 2]>);
     impl ModelVisitor for Levels<'_> {
-        type Output = Result<Vec<f64>, Error>;
+        type Output = Result<DistanceSweep, Error>;
         fn curve<const D: usize>(self, c: &FuzzyCurve<D>) -> Self::Output {
-            let crisp: Vec<[f64; D]> = c.points().iter().map(|p| p.crisp()).collect();
-            let column =
-                |pts: &[[f64; D]], d: usize| pts.iter().map(|p| p[d]).collect::<Vec<f64>>();
-            let mut d = vec![0.0; self.samples];
-            for (pass, levels) in self.alphas.chunks(LEVELS_PER_PASS).enumerate() {
-                let mut channels: Vec<Vec<f64>> = (0..D).map(|k| column(&crisp, k)).collect();
-                for &a in levels {
-                    let s = c.solve(a);
-                    channels.extend((0..D).map(|k| column(s.defuzzified_points(), k)));
-                }
-                let sampler = Sampler::try_new(c.knots(), c.weights(), &channels)?;
-                let values = sampler.sample(Params::Uniform(self.samples))?;
-                for l in 0..levels.len() {
-                    for (i, di) in d.iter_mut().enumerate() {
-                        let diff: [f64; D] =
-                            std::array::from_fn(|k| values[D * (l + 1) + k][i] - values[k][i]);
-                        *di = euclidean_norm(&diff);
-                    }
-                    (self.sink)(pass * LEVELS_PER_PASS + l, &d);
-                }
-            }
-            Ok(c.domain().uniform(self.samples)?)
+            Ok(c.distance_sweep(self.0, self.1)?)
         }
-        fn surface<const D: usize>(self, _: &FuzzySurface<D>) -> Self::Output {
-            Err(Error::Surface)
+        fn surface<const D: usize>(self, s: &FuzzySurface<D>) -> Self::Output {
+            let grid = self.2.ok_or(Error::Surface)?;
+            Ok(s.distance_sweep(self.0, grid)?)
         }
     }
-    model.visit(Levels {
-        alphas,
-        samples,
-        sink,
-    })
+    model.visit(Levels(alphas, samples, surface_grid(model)))
 }
 
 /// The distance `‖D(t) − C(t)‖` between the defuzzified curve of the paper's
@@ -328,25 +288,35 @@ fn for_each_level(
 /// parameters, for each alpha: the parameters, then one list per alpha.
 ///
 /// # Errors
-/// [`Error::Core`] if sampling fails (never for a validated job).
+/// [`Error::Surface`] for a surface; [`Error::Core`] if sampling fails (never
+/// for a validated job).
 pub fn distance_along(
     model: &Model,
     alphas: &[Alpha],
     samples: usize,
 ) -> Result<(Vec<f64>, Vec<Vec<f64>>), Error> {
-    let mut along = vec![Vec::new(); alphas.len()];
-    let params = for_each_level(model, alphas, samples, &mut |k, d| along[k] = d.to_vec())?;
+    struct Params(usize);
+    impl ModelVisitor for Params {
+        type Output = Result<Vec<f64>, Error>;
+        fn curve<const D: usize>(self, c: &FuzzyCurve<D>) -> Self::Output {
+            Ok(c.domain().uniform(self.0)?)
+        }
+        fn surface<const D: usize>(self, _: &FuzzySurface<D>) -> Self::Output {
+            Err(Error::Surface)
+        }
+    }
+    let params = model.visit(Params(samples))?;
+    let sweep = distance_sweep(model, alphas, samples)?;
+    let along = (0..sweep.len())
+        .map(|k| sweep.distances(k).unwrap_or_default().to_vec())
+        .collect();
     Ok((params, along))
 }
 
 /// The largest and the root-mean-square distance between the defuzzified
-/// curve of the paper's type reduction and the crisp curve at each alpha,
-/// over `samples` uniform parameters (the
-/// mean square by the trapezoidal rule):
-///
-/// ```text
-/// max ≈ maxᵢ d(tᵢ),   rms ≈ √( Σᵢ ωᵢ d(tᵢ)² / Σᵢ ωᵢ ),  ω = ½ at both ends, else 1
-/// ```
+/// curve (or surface) of the paper's type reduction and the crisp one at each
+/// alpha, sampled by the core ([`DistanceSweep::summary`]: the trapezoidal
+/// rule over `samples` uniform parameters, or over a surface's figure grid).
 /// Sampled versions of `error.max` and `error.rms` (which the run computes
 /// exactly, independent of sampling): cheap enough for a hundred alphas of a
 /// curve of a hundred thousand control points, and within a fraction of a
@@ -359,86 +329,7 @@ pub fn sampled_distances(
     alphas: &[Alpha],
     samples: usize,
 ) -> Result<Vec<[f64; 2]>, Error> {
-    if let Some(grid) = surface_grid(model) {
-        return surface_distances(model, alphas, grid);
-    }
-    let mut out = vec![[0.0; 2]; alphas.len()];
-    for_each_level(model, alphas, samples, &mut |k, d| {
-        let n = d.len();
-        let max = d.iter().copied().fold(0.0, f64::max);
-        let (mut sum, mut weight) = (0.0, 0.0);
-        if max > 0.0 {
-            for (i, &v) in d.iter().enumerate() {
-                let w = if i == 0 || i + 1 == n { 0.5 } else { 1.0 };
-                let s = v / max;
-                sum += w * s * s;
-                weight += w;
-            }
-        }
-        let rms = if weight > 0.0 {
-            max * (sum / weight).sqrt()
-        } else {
-            0.0
-        };
-        out[k] = [max, rms];
-    })?;
-    Ok(out)
-}
-
-/// [`sampled_distances`] of a surface, on the grid `[su, sv]` of uniform
-/// `(u, v)`: the mean square by the trapezoidal rule in both directions
-/// (weights `ωₐ·ω_b`, ½ at each end of each direction).
-fn surface_distances(
-    model: &Model,
-    alphas: &[Alpha],
-    [su, sv]: [usize; 2],
-) -> Result<Vec<[f64; 2]>, Error> {
-    struct Levels<'a>(&'a [Alpha], [usize; 2]);
-    impl ModelVisitor for Levels<'_> {
-        type Output = Result<Vec<[f64; 2]>, Error>;
-        fn curve<const D: usize>(self, _: &FuzzyCurve<D>) -> Self::Output {
-            Err(Error::Surface)
-        }
-        fn surface<const D: usize>(self, s: &FuzzySurface<D>) -> Self::Output {
-            let [su, sv] = self.1;
-            let grid = |x: &t2spline::NurbsSurface<D>| {
-                x.sample_grid(Params::Uniform(su), Params::Uniform(sv))
-                    .map(t2spline::sampling::Grid::into_samples)
-            };
-            let crisp = grid(&s.crisp_surface())?;
-            let end = |i: usize, n: usize| if i == 0 || i + 1 == n { 0.5 } else { 1.0 };
-            self.0
-                .iter()
-                .map(|&a| {
-                    let d = grid(&s.solve(a).defuzzified_surface())?;
-                    // Both grids have su·sv points.
-                    let dist: Vec<f64> = d
-                        .points()
-                        .zip(crisp.points())
-                        .map(|(p, q)| {
-                            euclidean_norm(&std::array::from_fn::<f64, D, _>(|k| p[k] - q[k]))
-                        })
-                        .collect();
-                    let max = dist.iter().copied().fold(0.0, f64::max);
-                    let (mut sum, mut weight) = (0.0, 0.0);
-                    if max > 0.0 {
-                        for (i, v) in dist.iter().enumerate() {
-                            let w = end(i / sv, su) * end(i % sv, sv);
-                            sum += w * (v / max) * (v / max);
-                            weight += w;
-                        }
-                    }
-                    let rms = if weight > 0.0 {
-                        max * (sum / weight).sqrt()
-                    } else {
-                        0.0
-                    };
-                    Ok([max, rms])
-                })
-                .collect()
-        }
-    }
-    model.visit(Levels(alphas, [su, sv]))
+    Ok(distance_sweep(model, alphas, samples)?.summary())
 }
 
 /// The fuzzy number of one coordinate of one control point.

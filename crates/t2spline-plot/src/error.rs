@@ -23,6 +23,10 @@ pub enum Error {
     /// A figure or computation of curves only was asked of a surface job.
     #[error("this is drawn for curve jobs only, not for surfaces")]
     Surface,
+    /// A figure of plane curves only (the membership map, the section at a
+    /// station) was asked of a space curve or a surface.
+    #[error("this is drawn for plane curves (x, y) only")]
+    Planar,
     /// A 3-D view that cannot be used.
     #[error("bad view: {0}")]
     View(String),

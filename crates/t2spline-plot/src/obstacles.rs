@@ -359,6 +359,18 @@ pub fn add_panel(o: &mut Obstacles, panel: &Panel, pl: &PanelLayout) {
         match &item.mark {
             Mark::Line { points, .. } => o.add_polyline(&px(points)),
             Mark::Area { points, .. } => o.add_area(&px(points)),
+            // Holes count as covered: a label in a hole would sit on no
+            // data, but between the region's edges.
+            Mark::Region { rings, .. } => {
+                for r in rings {
+                    o.add_area(&px(r));
+                }
+            }
+            Mark::Tiles { tiles } => {
+                for [a, b] in tiles.iter().flat_map(|(_, t)| t) {
+                    o.add_area(&px(&[*a, [b[0], a[1]], *b, [a[0], b[1]]]));
+                }
+            }
             Mark::Markers { points, marker } => {
                 let r = marker_half(marker.size);
                 for [x, y] in pl.marker_px(points) {

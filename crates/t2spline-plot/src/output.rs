@@ -1,8 +1,9 @@
 //! Turning figures into file contents, all rendered in memory before a caller
 //! writes any of them (the CLI writes them all or nothing).
 
+use crate::error::Error;
 use crate::scene::Figure;
-use crate::{svg, Error};
+use crate::svg;
 
 /// Which files `plot` writes per figure.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]

@@ -142,6 +142,23 @@ pub enum Mark {
         /// How it is filled.
         fill: Fill,
     },
+    /// A filled region bounded by several closed rings (polygons with
+    /// holes), without outline: the rings are filled by the even–odd rule,
+    /// so a hole inside its exterior stays empty (the core's polygons do not
+    /// overlap, so even–odd and non-zero fill the same set).
+    Region {
+        /// The rings, each closed implicitly (exteriors and holes alike).
+        rings: Vec<Vec<Xy>>,
+        /// How it is filled.
+        fill: Fill,
+    },
+    /// Opaque axis-aligned rectangles grouped by colour (the cells of a
+    /// map), drawn without anti-aliasing so that neighbours show no seams.
+    Tiles {
+        /// Per colour, the rectangles as their lower-left and upper-right
+        /// corners.
+        tiles: Vec<(Color, Vec<[Xy; 2]>)>,
+    },
     /// The same marker at several points.
     Markers {
         /// Where.

@@ -39,11 +39,14 @@ fn a_report_of_200_points_stays_under_5_mb_with_every_part() {
         "distance",
         "sweep",
         "reductions",
+        "membership",
+        "section",
         "job",
     ] {
         assert!(html.contains(&format!("<section id=\"{id}\">")), "{id}");
     }
-    assert_eq!(html.matches("data-svg=").count(), 8);
+    // Every figure, the membership map and the section included.
+    assert_eq!(html.matches("data-svg=").count(), 10);
     assert_eq!(html.matches("data-file=\"stage").count(), 4);
     // Tables list the first 12 points and say where the others are.
     assert!(html.contains("the other 188 are in the downloads"));

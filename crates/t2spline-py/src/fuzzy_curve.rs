@@ -18,6 +18,12 @@ use crate::keyword;
 use crate::sample::{at_params, channels, output_buffer, ParamsArg};
 
 fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
+
+    /// Pickling and copying: the constructor with ``(crisp, upper, primary, lower, lower_height, weights, knots)``
+    /// (the degree following from the knots), an equal object.
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<crate::pickle::Reduced<'py>> {
+        crate::pickle::by_constructor(slf, &["crisp", "upper", "primary", "lower", "lower_height", "weights", "knots"])
+    }
     #[new]
     #[pyo3(signature = (crisp, upper, primary, lower, lower_height, weights=None, knots=None, *, degree=None, order=None))]
     #[allow(clippy::too_many_arguments)]

@@ -21,6 +21,12 @@ use crate::sample::{at_pairs, GridArg};
 use crate::surface_methods::surface_methods;
 
 fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzzySurface, PyFuzzyCurve {
+
+    /// Pickling and copying: the constructor with ``(crisp, upper, primary, lower, lower_height, weights, knots_u, knots_v)``
+    /// (the degree following from the knots), an equal object.
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<crate::pickle::Reduced<'py>> {
+        crate::pickle::by_constructor(slf, &["crisp", "upper", "primary", "lower", "lower_height", "weights", "knots_u", "knots_v"])
+    }
     #[new]
     #[pyo3(signature = (crisp, upper, primary, lower, lower_height, weights=None, knots_u=None, knots_v=None, *, degree=None, order=None))]
     #[allow(clippy::too_many_arguments)]

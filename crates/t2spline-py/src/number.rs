@@ -95,6 +95,12 @@ impl PyFuzzyNumber {
         self.0.crisp()
     }
 
+    /// Pickling and copying: the constructor with ``(crisp, upper, primary,
+    /// lower, lower_height)``, an equal object.
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<crate::pickle::Reduced<'py>> {
+        crate::pickle::by_constructor(slf, &["crisp", "upper", "primary", "lower", "lower_height"])
+    }
+
     /// The feet ``(left, right)`` of the upper membership function.
     #[getter]
     fn upper(&self) -> (f64, f64) {
@@ -147,6 +153,7 @@ impl PyFuzzyNumber {
         Ok(PyAlphaCut {
             alpha: a.get(),
             cut: self.0.alpha_cut(a),
+            number: self.0,
         })
     }
 
@@ -263,11 +270,21 @@ impl PyFuzzyNumber {
 /// ((0.7, 1.45), (0.8, 1.3))
 /// >>> cut.type_reduce()[1]
 /// 1.0
-#[pyclass(frozen, module = "t2spline", name = "AlphaCut")]
+#[pyclass(frozen, eq, module = "t2spline", name = "AlphaCut")]
 #[derive(Clone, Debug)]
 pub(crate) struct PyAlphaCut {
     alpha: f64,
     cut: AlphaCut,
+    /// The number cut, which pickling keeps.
+    number: Nt2Number,
+}
+
+/// Two cuts are equal when their levels and ends are, whatever numbers
+/// they were cut from.
+impl PartialEq for PyAlphaCut {
+    fn eq(&self, other: &Self) -> bool {
+        self.alpha == other.alpha && self.cut == other.cut
+    }
 }
 
 #[pymethods]
@@ -276,6 +293,16 @@ impl PyAlphaCut {
     #[getter]
     fn alpha(&self) -> f64 {
         self.alpha
+    }
+
+    /// Pickling and copying: ``FuzzyNumber.alpha_cut`` of the number cut, at
+    /// the same level, an equal object.
+    fn __reduce__<'py>(&self, py: Python<'py>) -> PyResult<crate::pickle::Reduced<'py>> {
+        let cut = py.get_type::<PyFuzzyNumber>().getattr("alpha_cut")?;
+        let number = Bound::new(py, PyFuzzyNumber(self.number))?.into_any();
+        let args =
+            pyo3::types::PyTuple::new(py, [number, self.alpha.into_pyobject(py)?.into_any()])?;
+        Ok((cut, args))
     }
 
     /// The apex, which every cut contains.

@@ -33,6 +33,12 @@ fn build<const D: usize>(
 }
 
 curve_methods!(PyNurbsCurve {
+
+    /// Pickling and copying: the constructor with ``(control_points, weights, knots)``
+    /// (the degree following from the knots), an equal object.
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<crate::pickle::Reduced<'py>> {
+        crate::pickle::by_constructor(slf, &["control_points", "weights", "knots"])
+    }
     #[new]
     #[pyo3(signature = (control_points, weights=None, knots=None, *, degree=None, order=None))]
     fn new(

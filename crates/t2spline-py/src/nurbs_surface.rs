@@ -37,6 +37,12 @@ fn build<const D: usize>(
 }
 
 surface_methods!(PyNurbsSurface, PyNurbsCurve {
+
+    /// Pickling and copying: the constructor with ``(control_points, weights, knots_u, knots_v)``
+    /// (the degree following from the knots), an equal object.
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<crate::pickle::Reduced<'py>> {
+        crate::pickle::by_constructor(slf, &["control_points", "weights", "knots_u", "knots_v"])
+    }
     #[new]
     #[pyo3(signature = (control_points, weights=None, knots_u=None, knots_v=None, *, degree=None, order=None))]
     fn new(

@@ -36,10 +36,23 @@ pub(crate) fn warn_unused_alpha(
     source: &str,
     given: Alpha,
 ) -> PyResult<()> {
-    let message = format!(
+    warn(py, &unused_alpha(reduction, source, given))
+}
+
+/// That `reduction` does not use the alpha given (by `source`) and what is
+/// done instead.
+pub(crate) fn unused_alpha(reduction: TypeReduction, source: &str, given: Alpha) -> String {
+    format!(
         "type reduction {reduction} does not use alpha; {source}{} is ignored (stage 2 is cut at alpha = 0, the whole footprint)",
         given.get()
-    );
+    )
+}
+
+/// A `UserWarning` saying `message`.
+///
+/// # Errors
+/// The warning itself, under ``-W error``.
+pub(crate) fn warn(py: Python<'_>, message: &str) -> PyResult<()> {
     let category = py.get_type::<pyo3::exceptions::PyUserWarning>();
     PyErr::warn(py, &category, &std::ffi::CString::new(message)?, 1)
 }

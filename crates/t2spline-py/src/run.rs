@@ -7,7 +7,7 @@ use std::path::PathBuf;
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
-use t2spline::job::{check_samples, Job, Model, Overrides, Setting};
+use t2spline::job::{check_samples, Job, Model, Overrides, Setting, Settings};
 use t2spline::TypeReduction;
 use t2spline_io::{MissingAlpha, Prepared, RunError};
 
@@ -15,7 +15,7 @@ use crate::construct::PerDirection;
 use crate::errors::{core_error, internal_error, io_error, setting_error, without_gil};
 use crate::keyword;
 use crate::reduction;
-use crate::value::to_value;
+use crate::value::{to_value, Value};
 
 /// How a Python user gives a missing alpha.
 const GIVE_ALPHA: MissingAlpha<'static> = MissingAlpha::Refuse {
@@ -34,6 +34,17 @@ pub(crate) const DICT_SOURCE: &str = "<dict>";
 /// each named at its place ([`crate::non_finite`]); the errors of reading a
 /// file.
 pub(crate) fn job_text(job: &Bound<'_, PyAny>) -> PyResult<(String, String)> {
+    job_text_named(job, DICT_SOURCE)
+}
+
+/// [`job_text`], a dict named `dict_source` in messages.
+///
+/// # Errors
+/// As [`job_text`].
+pub(crate) fn job_text_named(
+    job: &Bound<'_, PyAny>,
+    dict_source: &str,
+) -> PyResult<(String, String)> {
     let py = job.py();
     if job.is_instance_of::<PyDict>() {
         let json = py.import("json")?;
@@ -49,12 +60,12 @@ pub(crate) fn job_text(job: &Bound<'_, PyAny>) -> PyResult<(String, String)> {
             return Err(io_error(
                 py,
                 t2spline_io::Error::Invalid {
-                    file: DICT_SOURCE.to_owned(),
+                    file: dict_source.to_owned(),
                     problems,
                 },
             ));
         }
-        return Ok((text, DICT_SOURCE.to_owned()));
+        return Ok((text, dict_source.to_owned()));
     }
     let is_path = job.is_instance_of::<PyString>() || job.hasattr("__fspath__")?;
     if !is_path {
@@ -99,6 +110,25 @@ pub(crate) fn parse(py: Python<'_>, text: &str, source: &str) -> PyResult<Job> {
     without_gil(py, || t2spline_io::parse_job(text, source))?.map_err(|e| io_error(py, e))
 }
 
+/// The overrides of a run's keywords, read from Python: `alpha`, `samples`,
+/// `derivatives` and `type_reduction` as `run` takes them.
+///
+/// # Errors
+/// `TypeError` or `ValueError` naming the keyword.
+pub(crate) fn keywords(
+    alpha: Option<&Bound<'_, PyAny>>,
+    samples: Option<&Bound<'_, PyAny>>,
+    derivatives: Option<&Bound<'_, PyAny>>,
+    type_reduction: Option<&Bound<'_, PyAny>>,
+) -> PyResult<Overrides> {
+    let alpha = keyword::opt_real(alpha, "alpha")?;
+    let samples = keyword::opt_per_direction(samples, "samples")?;
+    let derivatives = keyword::opt_int(derivatives, "derivatives")?;
+    let type_reduction = keyword::opt_text(type_reduction, "type_reduction")?;
+    let type_reduction = reduction::type_reduction(type_reduction.as_deref())?;
+    overrides(alpha, type_reduction, samples, derivatives)
+}
+
 /// The overrides of a run's keywords.
 ///
 /// # Errors
@@ -139,7 +169,7 @@ fn overrides(
 /// problems as a `JobError` (a missing alpha placed at the job's top level,
 /// as `t2spline run` places it), a setting's as a `ValueError` naming the
 /// keyword, a number that is not finite as an internal error.
-fn run_error(py: Python<'_>, e: RunError) -> PyErr {
+pub(crate) fn run_error(py: Python<'_>, e: RunError) -> PyErr {
     match e {
         RunError::File(e @ t2spline_io::Error::NotFinite { .. }) => internal_error(&e.to_string()),
         RunError::File(e) => io_error(py, e),
@@ -241,40 +271,91 @@ pub(crate) fn run<'py>(
     derivatives: Option<&Bound<'py, PyAny>>,
     type_reduction: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let alpha = keyword::opt_real(alpha, "alpha")?;
-    let samples = keyword::opt_per_direction(samples, "samples")?;
-    let derivatives = keyword::opt_int(derivatives, "derivatives")?;
-    let type_reduction = keyword::opt_text(type_reduction, "type_reduction")?;
-    let type_reduction = reduction::type_reduction(type_reduction.as_deref())?;
-    let overrides = overrides(alpha, type_reduction, samples, derivatives)?;
+    let overrides = keywords(alpha, samples, derivatives, type_reduction)?;
     let (text, source) = job_text(job)?;
-    let parsed = parse(py, &text, &source)?;
-    let prepared = Prepared::new(parsed, &text, &source, &overrides, GIVE_ALPHA)
-        .map_err(|e| run_error(py, e))?;
-    let settings = prepared.settings();
-    if let Some(a) = settings.unused_alpha() {
-        let source = if alpha.is_some() {
+    let prepared =
+        without_gil(py, || prepare(&text, &source, &overrides))?.map_err(|e| run_error(py, e))?;
+    warn_alpha(py, prepared.settings(), overrides.alpha.is_some(), "")?;
+    match without_gil(py, move || execute(&prepared))? {
+        Ok(tree) => tree.into_py(py),
+        Err(failure) => Err(failure.into_err(py)),
+    }
+}
+
+/// A job's text (named `source` in messages) prepared for its run with the
+/// keywords' `overrides` by the one path of every front end
+/// ([`Prepared`]: the job file's rules, the settings checked once by the
+/// core); a missing alpha is refused.
+///
+/// # Errors
+/// The shared path's [`RunError`]; [`run_error`] makes it Python's.
+pub(crate) fn prepare(
+    text: &str,
+    source: &str,
+    overrides: &Overrides,
+) -> Result<Prepared, RunError> {
+    Prepared::from_text(text, source, overrides, GIVE_ALPHA)
+}
+
+/// A prepared job run ([`Prepared::run`]: `Job::run` and every number
+/// checked finite), its result as the tree of Python values `run` returns.
+///
+/// # Errors
+/// The run's [`Failure`].
+pub(crate) fn execute(prepared: &Prepared) -> Result<Value, Failure> {
+    let output = prepared.run().map_err(Failure::Run)?;
+    to_value(&output).map_err(|e| Failure::Internal(e.to_string()))
+}
+
+/// The notes on a run's alpha: that the type reduction does not use the
+/// alpha given (`alpha=` if `from_keyword`, else the job's), that alpha lies
+/// a few ulps above a number's lower height (the other side of the paper's
+/// jump); none if alpha is as meant.
+pub(crate) fn alpha_notes(settings: &Settings, from_keyword: bool) -> Vec<String> {
+    let near = settings.near_height().map(|near| near.to_string());
+    let unused = settings.unused_alpha().map(|a| {
+        let source = if from_keyword {
             "alpha="
         } else {
             "the job's alpha "
         };
-        reduction::warn_unused_alpha(py, settings.type_reduction(), source, a)?;
+        reduction::unused_alpha(settings.type_reduction(), source, a)
+    });
+    near.into_iter().chain(unused).collect()
+}
+
+/// A `UserWarning` for each of [`alpha_notes`], after `prefix` (which job
+/// of many).
+///
+/// # Errors
+/// The warning itself, under ``-W error``.
+pub(crate) fn warn_alpha(
+    py: Python<'_>,
+    settings: &Settings,
+    from_keyword: bool,
+    prefix: &str,
+) -> PyResult<()> {
+    for note in alpha_notes(settings, from_keyword) {
+        reduction::warn(py, &format!("{prefix}{note}"))?;
     }
-    let tree = without_gil(py, move || {
-        let output = prepared.run().map_err(Failure::Run)?;
-        to_value(&output).map_err(|e| Failure::Internal(e.to_string()))
-    })?;
-    match tree {
-        Ok(tree) => tree.into_py(py),
-        Err(Failure::Run(e)) => Err(run_error(py, e)),
-        Err(Failure::Internal(message)) => Err(internal_error(&message)),
-    }
+    Ok(())
 }
 
 /// Why a run gave no result.
-enum Failure {
+#[derive(Debug)]
+pub(crate) enum Failure {
     /// The shared run path's error.
     Run(RunError),
     /// What a valid job never causes.
     Internal(String),
+}
+
+impl Failure {
+    /// The failure as a Python exception.
+    pub(crate) fn into_err(self, py: Python<'_>) -> PyErr {
+        match self {
+            Failure::Run(e) => run_error(py, e),
+            Failure::Internal(message) => internal_error(&message),
+        }
+    }
 }

@@ -186,14 +186,17 @@ pub(crate) fn surface_membership<'py>(
 /// (True, False)
 /// >>> r.__geo_interface__["type"], len(r.polygons)
 /// ('MultiPolygon', 1)
-#[pyclass(frozen, module = "t2spline", name = "Region")]
-#[derive(Clone, Debug)]
+#[pyclass(frozen, eq, module = "t2spline", name = "Region")]
+#[derive(Clone, Debug, PartialEq)]
 pub(crate) struct PyRegion {
     region: Region,
     membership: Membership,
     alpha: f64,
     plane: Plane,
 }
+
+/// A polygon as pickled: its exterior ring and its holes, each open.
+type Rings = (Vec<[f64; 2]>, Vec<Vec<[f64; 2]>>);
 
 /// A ring as a list of `[x, y]` lists, closed if `closed`.
 fn ring_list<'py>(
@@ -216,6 +219,56 @@ fn ring_array<'py>(py: Python<'py>, ring: &[[f64; 2]]) -> PyResult<Bound<'py, Py
 
 #[pymethods]
 impl PyRegion {
+    /// Pickling and copying: ``Region._restore`` of the polygons, tolerance,
+    /// membership, alpha and plane (nothing is computed again), an equal
+    /// object.
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<crate::pickle::Reduced<'py>> {
+        let py = slf.py();
+        let region = slf.get();
+        let polygons = region
+            .region
+            .polygons()
+            .iter()
+            .map(|g| (g.exterior.clone(), g.holes.clone()))
+            .collect::<Vec<_>>();
+        let args = (
+            polygons,
+            region.region.tolerance(),
+            region.membership(),
+            region.alpha,
+            region.plane(),
+        )
+            .into_pyobject(py)?;
+        Ok((slf.get_type().getattr("_restore")?, args))
+    }
+
+    /// A region from what `__reduce__` gives (not part of the API).
+    ///
+    /// Raises
+    /// ------
+    /// TypeError, ValueError
+    ///     For parts of another form, or a membership or plane unknown.
+    #[classmethod]
+    fn _restore(
+        _cls: &Bound<'_, pyo3::types::PyType>,
+        polygons: Vec<Rings>,
+        tolerance: f64,
+        membership: &Bound<'_, PyAny>,
+        alpha: f64,
+        plane: &Bound<'_, PyAny>,
+    ) -> PyResult<Self> {
+        let polygons = polygons
+            .into_iter()
+            .map(|(exterior, holes)| t2spline::set::Polygon { exterior, holes })
+            .collect();
+        Ok(PyRegion {
+            region: Region::from_parts(polygons, tolerance),
+            membership: self::membership(Some(membership))?,
+            alpha,
+            plane: self::plane(Some(plane), 3)?,
+        })
+    }
+
     /// The total area of the polygons.
     #[getter]
     fn area(&self) -> f64 {

@@ -15,6 +15,13 @@ use crate::sample::{check_output, ParamsArg};
 use crate::stage_methods::{stage_methods, stage_samples};
 
 stage_methods!(PySolution, fuzzy_curve, "n" {
+
+    /// Pickling and copying: ``FuzzyCurve.solve`` again at this alpha and type
+    /// reduction, the same computation and so an equal object.
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<crate::pickle::Reduced<'py>> {
+        let uses_alpha = by_dim!(&slf.get().0, |s| s.type_reduction().uses_alpha());
+        crate::pickle::by_solve(slf, "fuzzy_curve", uses_alpha)
+    }
     /// The fuzzy curve (stage 1) this solves.
     #[getter]
     fn fuzzy_curve(&self) -> PyFuzzyCurve {

@@ -14,6 +14,13 @@ use crate::sample::GridArg;
 use crate::stage_methods::{stage_methods, stage_samples};
 
 stage_methods!(PySurfaceSolution, fuzzy_surface, "nu, nv" {
+
+    /// Pickling and copying: ``FuzzySurface.solve`` again at this alpha and type
+    /// reduction, the same computation and so an equal object.
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<crate::pickle::Reduced<'py>> {
+        let uses_alpha = by_dim!(&slf.get().0, |s| s.type_reduction().uses_alpha());
+        crate::pickle::by_solve(slf, "fuzzy_surface", uses_alpha)
+    }
     /// The fuzzy surface (stage 1) this solves.
     #[getter]
     fn fuzzy_surface(&self) -> PyFuzzySurface {

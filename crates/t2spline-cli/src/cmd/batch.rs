@@ -11,13 +11,13 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use rayon::prelude::*;
-use t2spline::job::{Overrides, RunOutput};
+use t2spline::job::{Overrides, Parameter, RunOutput};
 use t2spline_io::{
-    printable, sync_file_systems, write_summary_csv, write_summary_parquet, JobSummary, Staged,
-    CSV_FILES, DERIVATIVES_CSV,
+    printable, sync_file_systems, write_jobs_parquet, write_summary_csv, write_summary_parquet,
+    JobSummary, Staged, CSV_FILES, DERIVATIVES_CSV,
 };
 
-use super::prepare::{about_run, prepare, unused_alpha, OptionError};
+use super::prepare::{about_run, alpha_notes, prepare, OptionError};
 use super::results::{overrides, Destinations, ALPHA_IGNORED};
 use crate::clash::Claims;
 use crate::cli::RunArgs;
@@ -42,17 +42,23 @@ struct Batch {
     overrides: Overrides,
     output: PathBuf,
     csv: Option<PathBuf>,
+    /// The folder of one Parquet file per job (`--parquet DIR`).
     parquet: Option<PathBuf>,
+    /// The one Parquet file of every job's samples (`--parquet FILE.parquet`).
+    one_parquet: Option<PathBuf>,
 }
 
 /// What became of one job.
 struct Outcome {
     summary: JobSummary,
     error: Option<anyhow::Error>,
-    /// A note for standard error (an alpha its type reduction does not use).
-    note: Option<String>,
+    /// Notes for standard error (an alpha its type reduction does not use,
+    /// an alpha just above a lower height).
+    notes: Vec<String>,
     /// The files written, to be flushed to disk at the end.
     written: Vec<PathBuf>,
+    /// The result, kept for the one Parquet file of every job.
+    result: Option<RunOutput>,
 }
 
 fn usage(option: &'static str, message: impl Into<String>) -> anyhow::Error {
@@ -101,8 +107,57 @@ fn folder_jobs(dir: &Path) -> Result<Vec<PathBuf>, t2spline_io::Error> {
             jobs.push(path);
         }
     }
-    jobs.sort();
+    jobs.sort_by(|a, b| natural_order(&a.to_string_lossy(), &b.to_string_lossy()));
     Ok(jobs)
+}
+
+/// Names in natural order: runs of digits compared as numbers (`a2` before
+/// `a10`, `a02` beside `a2`), other characters one by one, a number placed
+/// among characters as its first digit is; equal so far, by their text.
+fn natural_order(a: &str, b: &str) -> std::cmp::Ordering {
+    use std::cmp::Ordering;
+    /// A character, or a run of digits (leading zeros dropped).
+    enum Token<'a> {
+        Char(char),
+        Number(&'a str),
+    }
+    fn tokens(s: &str) -> impl Iterator<Item = Token<'_>> {
+        let mut rest = s;
+        std::iter::from_fn(move || {
+            let first = rest.chars().next()?;
+            if first.is_ascii_digit() {
+                let end = rest
+                    .find(|c: char| !c.is_ascii_digit())
+                    .unwrap_or(rest.len());
+                let (run, tail) = rest.split_at(end);
+                rest = tail;
+                Some(Token::Number(run.trim_start_matches('0')))
+            } else {
+                rest = &rest[first.len_utf8()..];
+                Some(Token::Char(first))
+            }
+        })
+    }
+    let compare = |x: &Token<'_>, y: &Token<'_>| match (x, y) {
+        (Token::Char(p), Token::Char(q)) => p.cmp(q),
+        (Token::Number(p), Token::Number(q)) => p.len().cmp(&q.len()).then(p.cmp(q)),
+        (Token::Char(p), Token::Number(_)) => p.cmp(&'0').then(Ordering::Greater),
+        (Token::Number(_), Token::Char(q)) => '0'.cmp(q).then(Ordering::Less),
+    };
+    let (mut x, mut y) = (tokens(a), tokens(b));
+    loop {
+        match (x.next(), y.next()) {
+            (None, None) => return a.cmp(b),
+            (None, Some(_)) => return Ordering::Less,
+            (Some(_), None) => return Ordering::Greater,
+            (Some(p), Some(q)) => {
+                let order = compare(&p, &q);
+                if order.is_ne() {
+                    return order;
+                }
+            }
+        }
+    }
 }
 
 impl Batch {
@@ -159,12 +214,18 @@ impl Batch {
             }
             jobs.push(Entry { path, name });
         }
+        // `--parquet FILE.parquet`: one file for every job; else a folder.
+        let (parquet, one_parquet) = match args.parquet.clone() {
+            Some(p) if p.extension().is_some_and(|e| e == "parquet") => (None, Some(p)),
+            other => (other, None),
+        };
         let batch = Batch {
             jobs,
             overrides: overrides(&args),
             output,
             csv: args.csv,
-            parquet: args.parquet,
+            parquet,
+            one_parquet,
         };
         batch.check_outputs()?;
         Ok(batch)
@@ -181,6 +242,10 @@ impl Batch {
         claims.file("--output", &self.output.join(SUMMARY_CSV))?;
         if let Some(dir) = &self.parquet {
             claims.file("--parquet", &dir.join(SUMMARY_PARQUET))?;
+        }
+        if let Some(file) = &self.one_parquet {
+            claims.file("--parquet", file)?;
+            claims.file("--parquet", &self.output.join(SUMMARY_PARQUET))?;
         }
         Ok(())
     }
@@ -206,22 +271,33 @@ impl Batch {
             type_reduction: None,
             regime: None,
             alpha: None,
+            h: None,
             error_max: None,
+            error_max_at: None,
+            error_max_at_v: None,
             error_rms: None,
+            description: None,
             message: None,
         };
-        let (mut written, mut note) = (Vec::new(), None);
-        let error = self.compute(job).and_then(|(result, unused)| {
-            note = unused;
+        let (mut written, mut notes, mut kept) = (Vec::new(), Vec::new(), None);
+        let error = self.compute(job).and_then(|(result, h, said)| {
+            notes = said;
+            summary.h = Some(h);
             summary.type_reduction = Some(result.type_reduction.name().to_owned());
             // Alpha and the regime are the paper's reduction's (docs/method.md §9).
             summary.regime = result.regime.map(|r| r.as_str().to_owned());
             summary.alpha = result.alpha_used.then_some(result.alpha);
             summary.error_max = Some(result.error.max);
+            (summary.error_max_at, summary.error_max_at_v) = match result.error.max_at {
+                Parameter::T(t) => (Some(t), None),
+                Parameter::Uv([u, v]) => (Some(u), Some(v)),
+            };
             summary.error_rms = Some(result.error.rms);
+            summary.description.clone_from(&result.description);
             let out = self.destinations(job);
             out.write(Staged::deferring_sync(), &result)?;
             written = files(&out, &result);
+            kept = self.one_parquet.is_some().then_some(result);
             Ok(())
         });
         let error = error.err();
@@ -232,22 +308,24 @@ impl Batch {
         Outcome {
             summary,
             error,
-            note,
+            notes,
             written,
+            result: kept,
         }
     }
 
     /// The job's result (each job with its own type reduction unless
-    /// `--type-reduction` overrides it), and the note on an alpha it does
-    /// not use.
-    fn compute(&self, job: &Entry) -> anyhow::Result<(RunOutput, Option<String>)> {
+    /// `--type-reduction` overrides it), the smallest lower height of its
+    /// numbers, and the notes on its alpha.
+    fn compute(&self, job: &Entry) -> anyhow::Result<(RunOutput, f64, Vec<String>)> {
         let prepared = prepare(&job.path, &self.overrides)?;
-        let note = unused_alpha(
+        let notes = alpha_notes(
             prepared.settings(),
             self.overrides.alpha.is_some(),
             ALPHA_IGNORED,
         );
-        Ok((prepared.run().map_err(about_run)?, note))
+        let h = prepared.job().model.least_height();
+        Ok((prepared.run().map_err(about_run)?, h, notes))
     }
 }
 
@@ -296,7 +374,7 @@ pub fn run(args: RunArgs) -> anyhow::Result<()> {
     let mut worst = Exit::Ok;
     let mut stderr = std::io::stderr().lock();
     for (job, outcome) in batch.jobs.iter().zip(&outcomes) {
-        if let Some(note) = &outcome.note {
+        for note in &outcome.notes {
             let _ = writeln!(stderr, "t2spline run: {}: {note}", shown(&job.path));
         }
         if let Some(e) = &outcome.error {
@@ -310,14 +388,27 @@ pub fn run(args: RunArgs) -> anyhow::Result<()> {
     drop(stderr);
     let written: Vec<PathBuf> = outcomes.iter().flat_map(|o| o.written.clone()).collect();
     sync_file_systems(&written)?;
-    let rows: Vec<JobSummary> = outcomes.into_iter().map(|o| o.summary).collect();
+    let (rows, kept): (Vec<JobSummary>, Vec<Option<RunOutput>>) =
+        outcomes.into_iter().map(|o| (o.summary, o.result)).unzip();
+    let one: Vec<(&str, &RunOutput)> = batch
+        .jobs
+        .iter()
+        .zip(&kept)
+        .filter_map(|(job, r)| r.as_ref().map(|r| (job.name.as_str(), r)))
+        .collect();
     let summary = batch.output.join(SUMMARY_CSV);
     let mut staged = Staged::default();
+    if let Some(file) = &batch.one_parquet {
+        staged.add(file, |w| write_jobs_parquet(w, &one))?;
+    }
     staged.add(&summary, |w| write_summary_csv(w, &rows))?;
-    if let Some(dir) = &batch.parquet {
-        staged.add(&dir.join(SUMMARY_PARQUET), |w| {
-            write_summary_parquet(w, &rows)
-        })?;
+    let summary_parquet = match (&batch.parquet, &batch.one_parquet) {
+        (Some(dir), _) => Some(dir.join(SUMMARY_PARQUET)),
+        (None, Some(_)) => Some(batch.output.join(SUMMARY_PARQUET)),
+        (None, None) => None,
+    };
+    if let Some(path) = &summary_parquet {
+        staged.add(path, |w| write_summary_parquet(w, &rows))?;
     }
     staged.commit()?;
     let failed = rows
@@ -334,4 +425,27 @@ pub fn run(args: RunArgs) -> anyhow::Result<()> {
         .into());
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::natural_order;
+
+    #[test]
+    fn numbers_in_names_go_in_their_order() {
+        let mut names = vec![
+            "a10.json", "a2.json", "a1.json", "b.json", "a02.json", "a.json", "a1b.json",
+            "a1a.json",
+        ];
+        names.sort_by(|a, b| natural_order(a, b));
+        assert_eq!(
+            names,
+            [
+                "a.json", "a1.json", "a1a.json", "a1b.json", "a02.json", "a2.json", "a10.json",
+                "b.json"
+            ]
+        );
+        // Long runs of digits beyond any integer type.
+        assert!(natural_order("x99999999999999999999999", "x100000000000000000000000").is_lt());
+    }
 }

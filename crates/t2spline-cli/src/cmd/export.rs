@@ -7,7 +7,7 @@ use std::time::{SystemTime, UNIX_EPOCH};
 
 use t2spline_io::{render_cad, CadFormat, CadMeta, Prepared};
 
-use super::prepare::{about_option, note_unused_alpha, prepare, reduction_overrides, OptionError};
+use super::prepare::{about_option, note_alpha, prepare, reduction_overrides, OptionError};
 use crate::clash::Claims;
 use crate::cli::{CadFormatArg, ExportArgs};
 use crate::output::{is_stdio, job_name, shown, Outputs};
@@ -28,7 +28,7 @@ impl Plan {
         };
         Claims::new([args.job.as_path()]).file("--output", &args.output)?;
         let prepared = prepare(&args.job, &reduction_overrides(args.alpha, &args.reduction))?;
-        note_unused_alpha(
+        note_alpha(
             "export",
             prepared.settings(),
             args.alpha.is_some(),

@@ -5,16 +5,18 @@ use t2spline::job::Job;
 use t2spline::Axis;
 use t2spline_plot::{all_figures, render_files, Aspect, FigureOptions, Format, NumberChoice};
 
-use super::prepare::{note_unused_alpha, prepare, reduction_overrides, OptionError};
+use super::prepare::{note_alpha, prepare, reduction_overrides, OptionError};
 use crate::clash::Claims;
 use crate::cli::{AspectArg, AxisArg, FigureArgs, FormatArg, PlotArgs, PointArg};
 use crate::output::Outputs;
 
-/// The figure options of `--point`, `--axis` and `--aspect` for `job`.
+/// The figure options of `--point`, `--axis`, `--aspect`, `--view` and
+/// `--station` for `job`.
 ///
 /// # Errors
 /// An [`OptionError`] of `--point` if `I,J` is given for a curve or lies
-/// outside the net.
+/// outside the net; of `--station` if it is not finite or the job is not a
+/// plane curve.
 pub fn figure_options(args: &FigureArgs, job: &Job) -> Result<FigureOptions, OptionError> {
     Ok(FigureOptions {
         number: NumberChoice {
@@ -30,6 +32,25 @@ pub fn figure_options(args: &FigureArgs, job: &Job) -> Result<FigureOptions, Opt
             AspectArg::Auto => Aspect::Auto,
         },
         view: args.view,
+        station: station(args.station, job)?,
+    })
+}
+
+/// `--station`: a finite x, for a plane curve only.
+fn station(x0: Option<f64>, job: &Job) -> Result<Option<f64>, OptionError> {
+    let Some(x0) = x0 else {
+        return Ok(None);
+    };
+    let message = if !x0.is_finite() {
+        format!("the station must be a finite x, got {x0}")
+    } else if !matches!(job.model, t2spline::job::Model::Planar(_)) {
+        "the section at a station is drawn for plane curves (x, y) only".to_owned()
+    } else {
+        return Ok(Some(x0));
+    };
+    Err(OptionError {
+        option: "--station",
+        message,
     })
 }
 
@@ -77,7 +98,7 @@ pub fn about_number(e: t2spline_plot::Error) -> anyhow::Error {
 pub fn plot(args: &PlotArgs) -> anyhow::Result<()> {
     let prepared = prepare(&args.job, &reduction_overrides(args.alpha, &args.reduction))?;
     let settings = prepared.settings();
-    note_unused_alpha(
+    note_alpha(
         "plot",
         settings,
         args.alpha.is_some(),

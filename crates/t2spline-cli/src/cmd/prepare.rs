@@ -1,8 +1,9 @@
 //! The one prelude of every subcommand that runs a job: the job read (a file
 //! or standard input), the settings of its run made from the options by the
 //! shared path ([`t2spline_io::Prepared`]: checked once, in the core), errors
-//! naming the option (`--alpha`, `--samples`, `--derivatives`), and the note
-//! for an alpha that the type reduction does not use.
+//! naming the option (`--alpha`, `--samples`, `--derivatives`), and the notes
+//! on alpha: one that the type reduction does not use, one that lies a few
+//! ulps above a number's lower height (the other side of the paper's jump).
 
 use std::io::Write as _;
 use std::path::Path;
@@ -102,9 +103,26 @@ pub fn unused_alpha(settings: &Settings, from_option: bool, effect: &str) -> Opt
     ))
 }
 
-/// Says [`unused_alpha`] on standard error, in one line, for `command`.
-pub fn note_unused_alpha(command: &str, settings: &Settings, from_option: bool, effect: &str) {
-    if let Some(note) = unused_alpha(settings, from_option, effect) {
+/// That alpha lies a few ulps above a lower height of the job's numbers
+/// (the paper's reduction jumps there), as a note; `None` otherwise.
+pub fn near_height(settings: &Settings) -> Option<String> {
+    settings.near_height().map(|near| format!("note: {near}"))
+}
+
+/// The notes on a run's alpha: [`unused_alpha`] and [`near_height`].
+pub fn alpha_notes(settings: &Settings, from_option: bool, effect: &str) -> Vec<String> {
+    [
+        unused_alpha(settings, from_option, effect),
+        near_height(settings),
+    ]
+    .into_iter()
+    .flatten()
+    .collect()
+}
+
+/// Says [`alpha_notes`] on standard error, one line each, for `command`.
+pub fn note_alpha(command: &str, settings: &Settings, from_option: bool, effect: &str) {
+    for note in alpha_notes(settings, from_option, effect) {
         // A closed standard error must not stop the command.
         let _ = writeln!(std::io::stderr().lock(), "t2spline {command}: {note}");
     }

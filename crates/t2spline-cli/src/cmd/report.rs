@@ -5,7 +5,7 @@ use t2spline::Alpha;
 use t2spline_io::MissingAlpha;
 
 use super::plot::{about_number, figure_options};
-use super::prepare::{note_unused_alpha, prepare_with, reduction_overrides};
+use super::prepare::{note_alpha, prepare_with, reduction_overrides};
 use crate::clash::Claims;
 use crate::cli::ReportArgs;
 use crate::output::Outputs;
@@ -27,7 +27,7 @@ pub fn report(args: &ReportArgs) -> anyhow::Result<()> {
     let start = if settings.type_reduction().uses_alpha() {
         settings.alpha()
     } else {
-        note_unused_alpha(
+        note_alpha(
             "report",
             settings,
             args.alpha.is_some(),

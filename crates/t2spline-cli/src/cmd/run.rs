@@ -6,7 +6,7 @@ use std::path::Path;
 
 use t2spline_io::{write_json_pretty, Prepared, Staged};
 
-use super::prepare::{about_run, note_unused_alpha, prepare};
+use super::prepare::{about_run, note_alpha, prepare};
 use super::results::{overrides, Destinations, ALPHA_IGNORED};
 use crate::clash::Claims;
 use crate::cli::RunArgs;
@@ -27,7 +27,7 @@ impl Plan {
         };
         out.claim(&mut Claims::new([path]))?;
         let prepared = prepare(path, &overrides(&args))?;
-        note_unused_alpha(
+        note_alpha(
             "run",
             prepared.settings(),
             args.alpha.is_some(),

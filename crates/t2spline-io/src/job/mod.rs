@@ -37,7 +37,7 @@ use crate::fit_data::FitData;
 ///
 /// # Errors
 /// [`Error::Invalid`] listing every problem found: JSON syntax, duplicate,
-/// unknown or missing keys, wrong types, the limits of [`limits`], and
+/// unknown or missing keys, wrong types, the limits of [`MAX_FILE_BYTES`] and the other `MAX_*` constants, and
 /// every rule of docs/method.md §1, §6, docs/jobs.md and, for a surface job (`points` given as
 /// rows of a net), docs/method.md §8. Each names its line and column (of the key or element
 /// concerned; for a missing key, of the object that lacks it) and its place

@@ -11,6 +11,8 @@
 //! | `alpha-sweep` | distance along t between solution and crisp curve, several α | — |
 //! | `distance-alpha` | `error.max` and `error.rms` against α, both sides of each h | — |
 //! | `reductions` | the solution curve of every type reduction and its distance to the crisp curve | docs/method.md §9 |
+//! | `membership` | plane curves: `mu_upper` and `mu_lower` in the plane as maps, region outlines as contours | docs/method.md §10 |
+//! | `section` | plane curves: the fuzzy value of y at a station `x = x0` | docs/method.md §10 |
 //!
 //! Stages 2–4 follow the run's type reduction (docs/method.md §9); `alpha-sweep` and
 //! `distance-alpha` show the paper's, the one that uses α.
@@ -31,13 +33,15 @@ pub use curve::reductions_figure;
 pub use number::number_figure;
 pub use style::reduction_label;
 
+use crate::error::Error;
 use crate::scene::Figure;
-use crate::{data, Error};
+use crate::{data, set_view};
 use curve::{CurveScene, Zoom};
 use surface::{SurfaceScene, View};
 
-/// The file stems of all figures, in the order [`all_figures`] returns them.
-pub const FIGURE_NAMES: [&str; 8] = [
+/// The file stems of all figures, in the order [`all_figures`] returns them
+/// for a plane curve (a space curve has all but the last two).
+pub const FIGURE_NAMES: [&str; 10] = [
     "number",
     "stage1-fuzzy",
     "stage2-alpha-cut",
@@ -46,6 +50,8 @@ pub const FIGURE_NAMES: [&str; 8] = [
     "alpha-sweep",
     "distance-alpha",
     "reductions",
+    "membership",
+    "section",
 ];
 
 /// Which number the `number` figure shows.
@@ -109,10 +115,14 @@ pub struct FigureOptions {
     pub aspect: Aspect,
     /// The direction the 3-D views of surfaces look from.
     pub view: View,
+    /// The station `x = x0` of the `section` figure (plane curves); `None`:
+    /// x of the crisp curve at the middle of its domain.
+    pub station: Option<f64>,
 }
 
 /// Every figure of the job at `alpha`, in the order of [`FIGURE_NAMES`]; a
-/// surface job has all but `alpha-sweep` and `reductions`. Stages 2–4 follow
+/// space curve has all but `membership` and `section` (figures of the
+/// plane), a surface job all but those and `alpha-sweep` and `reductions`. Stages 2–4 follow
 /// the job's type reduction, as `t2spline run` does (a reduction other than
 /// the paper's cuts stage 2 at 0); `alpha` is the paper's level in the
 /// `number`, `distance-alpha` and `reductions` figures.
@@ -136,14 +146,38 @@ pub fn all_figures(job: &Job, alpha: Alpha, options: &FigureOptions) -> Result<V
         ]);
     }
     let scene = CurveScene::new(&result, &heights, options.aspect);
-    Ok(vec![
-        number,
-        curve::stage1_figure(&scene),
-        curve::stage2_figure(&scene),
-        curve::stage3_figure(&scene),
-        curve::stage4_figure(job, &scene, Zoom::WhereApart)?,
-        curve::sweep_figure(job)?,
-        curve::distance_figure(job, alpha.get())?,
-        reductions_figure(job, alpha, options.aspect)?,
-    ])
+    let axes = scene.axes();
+    // The figures of the plane (plane curves) beside the others, on
+    // rayon's pool: they ask the core for maps, regions and sections.
+    let (figures, plane) = rayon::join(
+        || -> Result<Vec<Figure>, Error> {
+            let (zero, at) = rayon::join(
+                || set_view::regions(&job.model, Alpha::ZERO, &axes),
+                || set_view::regions(&job.model, Alpha::try_new(result.alpha)?, &axes),
+            );
+            Ok(vec![
+                number,
+                curve::stage1_figure(&scene, &zero?),
+                curve::stage2_figure(&scene, &at?),
+                curve::stage3_figure(&scene),
+                curve::stage4_figure(job, &scene, Zoom::WhereApart)?,
+                curve::sweep_figure(job)?,
+                curve::distance_figure(job, alpha.get())?,
+                reductions_figure(job, alpha, options.aspect)?,
+            ])
+        },
+        || -> Result<Vec<Figure>, Error> {
+            if !matches!(job.model, t2spline::job::Model::Planar(_)) {
+                return Ok(Vec::new());
+            }
+            let (map, section) = rayon::join(
+                || curve::membership_figure(job, &scene),
+                || curve::section_figure(job, &scene, options.station),
+            );
+            Ok(vec![map?, section?])
+        },
+    );
+    let mut figures = figures?;
+    figures.extend(plane?);
+    Ok(figures)
 }

@@ -3,7 +3,8 @@
 use t2spline::{Layer, TypeReduction};
 
 use crate::style::{
-    Fill, Marker, Shape, Stroke, BLACK, BLUE, GREEN, GREY, ORANGE, PURPLE, SKY, VERMILLION,
+    Fill, Marker, Shape, Stroke, BLACK, BLUE, GREEN, GREY, INK, ORANGE, PURPLE, SKY, VERMILLION,
+    WHITE,
 };
 
 /// The layers of each function, for legends and bars: (left, right, name).
@@ -53,7 +54,9 @@ pub fn polygon_stroke() -> Stroke {
     Stroke::dashed(GREY, 0.9, "3 3")
 }
 
-/// The light band between the two upper layer curves.
+/// The light fill of the upper function's region (of a surface: the
+/// envelope between the upper layer surfaces), and of the footprint of a
+/// number.
 #[must_use]
 pub fn upper_band() -> Fill {
     Fill {
@@ -62,13 +65,27 @@ pub fn upper_band() -> Fill {
     }
 }
 
-/// The darker band between the two lower layer curves.
+/// The darker fill of the lower function's region.
 #[must_use]
 pub fn lower_band() -> Fill {
     Fill {
         color: VERMILLION,
         opacity: 0.32,
     }
+}
+
+/// The contours of a membership map (the outlines of its regions): thin
+/// ink, drawn over a white halo so that they show on every colour of the
+/// map.
+#[must_use]
+pub fn contour_stroke() -> Stroke {
+    Stroke::solid(INK, 0.8)
+}
+
+/// The white halo under a contour.
+#[must_use]
+pub fn halo_stroke() -> Stroke {
+    Stroke::solid(WHITE, 2.4)
 }
 
 /// The type-reduced left curve: purple, long dashes.

@@ -36,6 +36,12 @@ pub(super) fn bounds(panel: &Panel) -> Option<[f64; 4]> {
             Mark::Segments { segments, .. } => {
                 segments.iter().flatten().copied().for_each(&mut add)
             }
+            Mark::Region { rings, .. } => rings.iter().flatten().copied().for_each(&mut add),
+            Mark::Tiles { tiles } => tiles
+                .iter()
+                .flat_map(|(_, t)| t.iter().flatten())
+                .copied()
+                .for_each(&mut add),
             Mark::Label { anchor, .. } | Mark::Text { at: anchor, .. } => add(*anchor),
             Mark::Mesh { facets } => {
                 for f in facets {

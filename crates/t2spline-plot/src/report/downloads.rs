@@ -11,7 +11,7 @@
 use serde_json::{json, Value};
 use t2spline::job::RunOutput;
 
-use crate::Error;
+use crate::error::Error;
 
 /// The result file and the CSV files of `result`, as `(name, text)`.
 ///

@@ -42,16 +42,17 @@ use serde_json::{json, Value};
 use t2spline::job::{Job, RunOutput, Samples};
 use t2spline::{Alpha, Axis, Layer, TypeReduction};
 
+use crate::error::Error;
 use crate::figures::curve::{
-    distance_figure, reductions_figure, stage1_figure, stage2_figure, stage3_figure, stage4_figure,
-    sweep_figure, CurveScene, Zoom,
+    distance_figure, membership_figure, reductions_figure, section_figure, stage1_figure,
+    stage2_figure, stage3_figure, stage4_figure, sweep_figure, CurveScene, Zoom,
 };
 use crate::figures::surface::{self, SurfaceScene};
 use crate::figures::{number_figure, FigureOptions};
 use crate::layout;
 use crate::scene::Figure;
 use crate::svg;
-use crate::{data, Error};
+use crate::{data, set_view};
 use frames::{frames, Frames, Strings};
 use page::{Page, Section};
 use tables::{number_text, rounded};
@@ -221,15 +222,29 @@ pub fn render(
         return Err(Error::Core(t2spline::Error::MissingAlpha));
     };
     let surface = job.model.is_surface();
-    let (stage1, sweep, compared) = if surface {
+    let (stage1, sweep, compared, set_figures) = if surface {
         let scene = SurfaceScene::new(&fig_result, &heights, options.view, options.aspect);
-        (static_svg(&surface::stage1_figure(&scene)), None, None)
+        (
+            static_svg(&surface::stage1_figure(&scene)),
+            None,
+            None,
+            None,
+        )
     } else {
         let scene = CurveScene::new(&fig_result, &heights, options.aspect);
+        let zero = set_view::regions(&job.model, Alpha::ZERO, &scene.axes())?;
+        let set_figures = match job.model {
+            t2spline::job::Model::Planar(_) => Some((
+                static_svg(&membership_figure(job, &scene)?),
+                static_svg(&section_figure(job, &scene, options.station)?),
+            )),
+            _ => None,
+        };
         (
-            static_svg(&stage1_figure(&scene)),
+            static_svg(&stage1_figure(&scene, &zero)),
             Some(static_svg(&sweep_figure(job)?)),
             Some(static_svg(&reductions_figure(job, start, options.aspect)?)),
+            set_figures,
         )
     };
     let table_html: Vec<String> = table_defs
@@ -244,11 +259,14 @@ pub fn render(
         ("stage3", "Stage 3"),
         ("stage4", "Stage 4"),
         ("distance", "Distance and α"),
+        ("membership", "Membership"),
+        ("section", "Section"),
         ("reductions", "Type reductions"),
         ("job", "The job"),
     ]
     .into_iter()
     .filter(|(id, _)| *id != "reductions" || compared.is_some())
+    .filter(|(id, _)| !matches!(*id, "membership" | "section") || set_figures.is_some())
     .collect();
     page.header(job.description.as_deref(), &start_run, &heights, &contents);
     page.controls(
@@ -290,6 +308,26 @@ pub fn render(
             svg: sweep,
             figure: "alpha-sweep",
             caption: "‖D(t) − C(t)‖ against t for several α, the paper's type reduction; does not depend on the slider.",
+            csv: None,
+            tables: vec![],
+        });
+    }
+    if let Some((map, section)) = &set_figures {
+        page.section(&Section {
+            id: "membership",
+            title: "The fuzzy curve as a set: membership in the plane",
+            svg: map,
+            figure: "membership",
+            caption: "The grade of every point of the plane, upper and lower: the largest α at which some curve with control points inside their cuts passes through it. The outlines are the regions at α = 0.2, 0.4, 0.6 and 0.8; stage 2 shades the region at the slider's α. Does not depend on the slider.",
+            csv: None,
+            tables: vec![],
+        });
+        page.section(&Section {
+            id: "section",
+            title: "The fuzzy value of y at a station",
+            svg: section,
+            figure: "section",
+            caption: "The upper, primary and lower membership of y at the station (t2spline report --station X0), drawn as one fuzzy number, cut at the starting α; t2spline section prints its intervals.",
             csv: None,
             tables: vec![],
         });
@@ -360,11 +398,13 @@ fn choose_stops(
             let alpha = Alpha::try_new(a)?;
             let run = data::run_with(job, alpha, TypeReduction::Paper, file_samples(job.samples))?;
             let files: Vec<String> = files_of(&run)?.into_iter().map(|(_, t)| t).collect();
+            // Drawn as the report stores them: lines and regions simplified
+            // to the report's tolerance.
             let figures: Vec<String> =
                 stop_figures(job, alpha, TypeReduction::Paper, &heights, options)?
                     .0
                     .iter()
-                    .map(svg::render)
+                    .map(static_svg)
                     .collect();
             Ok((
                 pack::packed_len(&json!(files)),
@@ -556,9 +596,12 @@ fn stop_figures(
         ]
     } else {
         let scene = CurveScene::new(&r, heights, options.aspect);
+        // The regions at the level stage 2 cuts at (0 for a reduction that
+        // does not use alpha), so the slider shows the region at each stop.
+        let at = set_view::regions(&job.model, Alpha::try_new(r.alpha)?, &scene.axes())?;
         [
             number_figure(job, alpha, method, options.number)?,
-            stage2_figure(&scene),
+            stage2_figure(&scene, &at),
             stage3_figure(&scene),
             stage4_figure(job, &scene, Zoom::Always)?,
         ]

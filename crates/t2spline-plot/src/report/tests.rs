@@ -289,3 +289,46 @@ fn a_finely_sampled_surface_is_bounded_and_says_so() {
         .iter()
         .all(Value::is_null));
 }
+
+#[test]
+fn the_slider_shows_the_region_at_each_stop() {
+    let (job, text) = example();
+    let html = render_at_037(&job, &text);
+    let data = data_block(&html);
+    let strings = data["strings"].as_array().unwrap();
+    // Stage 2 is the second figure kind; each stop lists its changing parts.
+    let s2 = &data["figures"][1];
+    assert_eq!(s2["prefix"], json!("s2-"));
+    let frames = s2["frames"].as_array().unwrap();
+    let regions_at = |k: usize| -> Vec<String> {
+        frames[k]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|i| {
+                strings[i.as_u64().unwrap() as usize]
+                    .as_str()
+                    .unwrap()
+                    .to_owned()
+            })
+            .filter(|s| s.contains("fill-rule=\"evenodd\""))
+            .collect()
+    };
+    let stops = data["stops"].as_array().unwrap();
+    let at = |a: &str| {
+        stops
+            .iter()
+            .position(|s| s["alpha"].as_str() == Some(a))
+            .unwrap()
+    };
+    // Upper and lower regions at 0.3, the upper alone above h = 0.6, and
+    // they differ from stop to stop.
+    let (low, high) = (regions_at(at("0.3")), regions_at(at("0.8")));
+    assert_eq!(low.len(), 2, "upper and lower at 0.3");
+    assert_eq!(high.len(), 1, "upper alone at 0.8");
+    assert_ne!(low, regions_at(at("0.31")));
+    // The figures of the plane are sections of the page.
+    for id in ["membership", "section"] {
+        assert!(html.contains(&format!("<section id=\"{id}\">")), "{id}");
+    }
+}

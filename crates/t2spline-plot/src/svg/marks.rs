@@ -73,6 +73,8 @@ pub(super) fn mark(m: &Mark, pl: &PanelLayout, clip: &str, tolerance: f64) -> St
                 coord(fill.opacity)
             )
         }
+        Mark::Region { rings, fill } => region(rings, fill, pl, &clip_attr, tolerance),
+        Mark::Tiles { tiles } => tiles_el(tiles, pl, &clip_attr),
         Mark::Markers { points, marker } => markers(&pl.marker_px(points), marker),
         Mark::Segments { segments, stroke } => {
             let mut d = String::new();
@@ -123,6 +125,80 @@ pub(super) fn mark(m: &Mark, pl: &PanelLayout, clip: &str, tolerance: f64) -> St
         }
         Mark::Label { .. } | Mark::Empty => String::new(),
     }
+}
+
+/// A region: one `<path>` of closed rings filled by the even–odd rule (a
+/// hole stays empty whatever its orientation), each ring simplified to
+/// within `tolerance` as a closed line (its first vertex kept).
+fn region(
+    rings: &[Vec<Xy>],
+    fill: &crate::style::Fill,
+    pl: &PanelLayout,
+    clip_attr: &str,
+    tolerance: f64,
+) -> String {
+    let mut d = String::new();
+    for ring in rings {
+        let Some(&first) = ring.first() else {
+            continue;
+        };
+        let mut closed: Vec<Px> = ring.iter().map(|&p| pl.to_px(p)).collect();
+        closed.push(pl.to_px(first));
+        let mut px = simplify(&closed, tolerance);
+        px.pop();
+        if px.len() < 3 {
+            continue;
+        }
+        for (k, p) in px.iter().enumerate() {
+            let _ = write!(
+                d,
+                "{}{} {}",
+                if k == 0 { 'M' } else { 'L' },
+                coord(p[0]),
+                coord(p[1])
+            );
+        }
+        d.push('Z');
+    }
+    if d.is_empty() {
+        return String::new();
+    }
+    format!(
+        "<path d=\"{d}\" fill=\"{}\" fill-opacity=\"{}\" fill-rule=\"evenodd\" stroke=\"none\"{clip_attr}/>\n",
+        fill.color,
+        coord(fill.opacity)
+    )
+}
+
+/// Tiles: one `<path>` of rectangles per colour, `crispEdges` (no
+/// anti-aliasing, so tiles that touch show no seam between them).
+fn tiles_el(
+    tiles: &[(crate::style::Color, Vec<[Xy; 2]>)],
+    pl: &PanelLayout,
+    clip_attr: &str,
+) -> String {
+    let mut s = format!("<g shape-rendering=\"crispEdges\" stroke=\"none\"{clip_attr}>");
+    for (color, rects) in tiles {
+        if rects.is_empty() {
+            continue;
+        }
+        s.push_str("<path d=\"");
+        for [a, b] in rects {
+            let ([x0, y0], [x1, y1]) = (pl.to_px(*a), pl.to_px(*b));
+            let _ = write!(
+                s,
+                "M{} {}H{}V{}H{}Z",
+                coord(x0),
+                coord(y0),
+                coord(x1),
+                coord(y1),
+                coord(x0)
+            );
+        }
+        let _ = write!(s, "\" fill=\"{color}\"/>");
+    }
+    s.push_str("</g>\n");
+    s
 }
 
 /// A mesh: one `<path>` per polygon (opaque ones outlined in their own

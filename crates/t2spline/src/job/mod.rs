@@ -33,6 +33,7 @@
 #![cfg_attr(not(test), deny(clippy::indexing_slicing))]
 
 mod geometry;
+mod near_height;
 mod output;
 mod points;
 mod run;
@@ -42,6 +43,7 @@ mod settings;
 
 pub use crate::error::Setting;
 pub use geometry::{Geometry, NamedCurve};
+pub use near_height::{NearHeight, NEAR_HEIGHT_ULPS};
 pub use output::{
     ControlPoints, CrispDefuzzified, Distance, LeftRight, Parameter, Parameters, Regime, RunOutput,
     Sampled, SixLayers, Spline,
@@ -136,6 +138,17 @@ impl Model {
     #[must_use]
     pub fn numbers(&self) -> Vec<Vec<Nt2Number>> {
         self.visit(Numbers)
+    }
+
+    /// The smallest lower height `h` of the model's numbers: the lowest
+    /// level where the paper's reduction jumps (docs/method.md §3).
+    #[must_use]
+    pub fn least_height(&self) -> f64 {
+        self.numbers()
+            .iter()
+            .flatten()
+            .map(|x| x.height().get())
+            .fold(1.0, f64::min)
     }
 
     /// Whether the model is a surface.

@@ -5,7 +5,7 @@ use crate::error::{Error, Setting};
 use crate::fuzzy::Alpha;
 use crate::reduction::TypeReduction;
 
-use super::Job;
+use super::{Job, NearHeight};
 
 /// The number of samples when a job gives none (docs/jobs.md).
 pub const DEFAULT_SAMPLES: usize = 101;
@@ -90,6 +90,7 @@ pub struct Settings {
     unused_alpha: Option<Alpha>,
     samples: Samples,
     derivatives: Option<usize>,
+    near_height: Option<NearHeight>,
 }
 
 impl Settings {
@@ -133,6 +134,14 @@ impl Settings {
     #[must_use]
     pub fn derivatives(&self) -> Option<usize> {
         self.derivatives
+    }
+
+    /// With the paper's reduction, a lower height that alpha lies a few
+    /// ulps above ([`NearHeight`]); front ends say so, as a sweep of levels
+    /// computed in floating point lands there unnoticed.
+    #[must_use]
+    pub fn near_height(&self) -> Option<NearHeight> {
+        self.near_height
     }
 }
 
@@ -213,12 +222,18 @@ impl Job {
                 })
             }
         };
+        let near_height = if type_reduction.uses_alpha() {
+            NearHeight::of(&self.model, alpha)
+        } else {
+            None
+        };
         Ok(Settings {
             alpha,
             type_reduction,
             unused_alpha,
             samples,
             derivatives,
+            near_height,
         })
     }
 }

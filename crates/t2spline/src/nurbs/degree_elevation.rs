@@ -1,4 +1,14 @@
 //! Degree elevation (The NURBS Book, §5.5, A5.9).
+//!
+//! A5.9 assumes a clamped knot vector, so an unclamped curve is first cut to
+//! its domain (`segment`) and the result is clamped with the same domain. Its
+//! knot removal is an extrapolation and loses accuracy as knots come close:
+//! 10⁻¹² of the curve's size for knots 10⁻⁴ of the domain apart, 1.8·10⁻¹¹
+//! seen for 4.7·10⁻⁵ at degree 5. For a fuzzy curve the same rounding can swap
+//! two nearly equal layer values, which `pipeline/fuzzy_ops.rs` clamps back
+//! outward from the crisp value; the property tests bound that repair by the
+//! accuracy the knot removal can keep for the curve's knots and weights
+//! (`strategies::elevation_tolerance`).
 
 use crate::error::{Error, Place};
 use crate::nurbs::derivatives::binomial;

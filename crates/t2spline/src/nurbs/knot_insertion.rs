@@ -5,6 +5,13 @@
 //! of the old ones. In Cartesian form each new point is a convex combination of
 //! old points whose coefficients depend only on knots and weights, so the seven
 //! layers of a fuzzy curve stay ordered (see `pipeline/fuzzy_ops.rs`).
+//!
+//! Boehm's formula is written with `αᵢ = clamp((u − U[i]) / (U[i+p] − U[i]), 0, 1)`
+//! over every `i` rather than with A5.1's span-based indexing: the clamped form
+//! holds for every `u` in the domain, at existing knots, at both ends of an
+//! unclamped domain and up to full multiplicity, where the indexed form needs
+//! special cases (geomdl's A5.1 refuses insertion to full multiplicity and,
+//! forced with `check_num=False`, leaves an empty control point).
 
 use crate::error::Error;
 use crate::nurbs::homogeneous::{blend, Row};

@@ -1,5 +1,16 @@
 //! The general type-2 reading of a number and its reduction by alpha-planes
 //! (docs/method.md §9).
+//!
+//! No root is solved per level. On the plane at level `z` the Karnik–Mendel
+//! function is `F_z = (1 − z)·F₀ + z·F₁`, linear in `z`, so the level whose
+//! left end is `c` is explicit: `ζ(c) = −F₀/(−F₀ + F₁)`, a ratio of two
+//! non-negative terms. Integrating `∫ z·c(z) dz` by parts turns it into
+//! `∫ ζ(c)² dc`, smooth on each piece between breakpoints, where the integrand
+//! in `z` grows like `z^(1/3)` and `z^(1/2)` at `z = 0` and rises steeply near
+//! `z = 1` for thin primaries. It is integrated by the shared adaptive
+//! Gauss–Kronrod quadrature to 1e-14 of the support, and tested against a
+//! direct integration in `z` and 40-digit mpmath values
+//! (`peer/alpha_planes_reference.py`).
 
 use crate::fuzzy::{Alpha, Interval, Nt2Number};
 use crate::quadrature::{integrate_pieces, Tolerance};

@@ -1,5 +1,10 @@
 //! The centroid of a number read as an interval type-2 set (docs/method.md §9): exact,
 //! without sampling.
+//!
+//! `c_r` needs no root finder of its own: swapping UMF and LMF in the
+//! Karnik–Mendel function is the same as mirroring `x`, so the routine that
+//! finds `c_l` finds `c_r` on the mirrored footprint (and serves both integrals
+//! of the alpha-plane value in `alpha_planes.rs`).
 
 use crate::fuzzy::{Interval, Nt2Number};
 use crate::reduction::footprint::{self, Footprint, Frame, Triangles};

@@ -26,6 +26,10 @@
 //!
 //! Sums are formed relative to the middle of the support, so that a set far
 //! from 0 keeps its digits.
+//!
+//! [`SampledSet`] borrows the user's `x, lmf, umf` without a copy once they are
+//! checked; EKM recomputes its final value from scratch once, so its
+//! incremental updates leave no rounding behind.
 
 use crate::error::Error;
 use crate::fuzzy::{Membership, Nt2Number};

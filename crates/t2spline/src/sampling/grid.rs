@@ -1,5 +1,16 @@
 //! The grid engine: many surfaces that share one net of weights and two knot
 //! vectors, evaluated together on a grid of parameters `u_a × v_b`.
+//!
+//! The tensor product is contracted one direction at a time: per grid row the
+//! isoparametric curve in homogeneous form, per grid column the basis in v, per
+//! point two dot products of length `q + 1`. Unlike the curve engine it needs
+//! no power form: the basis values of a column are computed once and reused by
+//! every row, so a point costs the multiply-adds of Horner's rule, and every
+//! coefficient `NᵢwᵢⱼMⱼ` is non-negative, which keeps the layers' order bit for
+//! bit with no clamp and no conditioning limit (no fallback path). The
+//! rational-basis form (coefficients `MⱼWⱼ/W` per point) was tried first: the
+//! same accuracy and order, but `q + 1` more products and a scratch array per
+//! point.
 
 use crate::error::{Error, Place};
 use crate::nurbs::basis::basis_functions;

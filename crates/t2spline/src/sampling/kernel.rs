@@ -1,6 +1,16 @@
 //! The inner loops of [`Sampler`]: blocks of parameters, runs of parameters in
 //! one span, and Horner's rule for a fixed order so that the compiler unrolls it
 //! and vectorises across parameters.
+//!
+//! Orders 1–8 are compiled as separate loops, so that Horner's rule is unrolled
+//! and vectorised across parameters; higher orders take a generic loop with the
+//! same operations. Blocks of 512 parameters keep the parameters, their local
+//! variables and the reciprocal denominators in the first-level cache. Sorted
+//! parameters (always so for the uniform grid, checked once for given ones)
+//! are walked span to span, the end of each run found by binary search within
+//! the block; otherwise runs are scanned eight parameters at a time and each
+//! new span found by binary search. There is no `unsafe` and no
+//! target-specific code: the portable x86-64 baseline.
 
 use crate::sampling::power_form::Span;
 use crate::sampling::{Params, Sampler};

@@ -71,6 +71,14 @@ impl Region {
         }
     }
 
+    /// A region as stored: polygons and the tolerance of their outline,
+    /// taken as they are (from [`Region::polygons`] and [`Region::tolerance`]
+    /// of a region computed before, as a front end reads one back).
+    #[must_use]
+    pub fn from_parts(polygons: Vec<Polygon>, tolerance: f64) -> Self {
+        Region::new(polygons, tolerance)
+    }
+
     /// The polygons.
     #[must_use]
     pub fn polygons(&self) -> &[Polygon] {

@@ -164,14 +164,11 @@ impl<const D: usize> FuzzyCurve<D> {
                 shapes.push(hull_of(&w[0], &w[1], quarter));
             }
         }
-        let leaves = shapes
-            .chunks(LEAF)
-            .map(|hulls| {
-                let hulls: Vec<Vec<[f64; 2]>> = hulls.to_vec();
-                FloatOverlay::with_subj_custom(&hulls, overlay_options(), Default::default())
-                    .overlay(OverlayRule::Subject, FillRule::NonZero)
-            })
-            .collect();
+        let chunks: Vec<&[Vec<[f64; 2]>]> = shapes.chunks(LEAF).collect();
+        let leaves = each(&chunks, |hulls| {
+            FloatOverlay::with_subj_custom(hulls, overlay_options(), Default::default())
+                .overlay(OverlayRule::Subject, FillRule::NonZero)
+        });
         let union = union_tree(leaves);
         let polygons = union.into_iter().filter_map(Polygon::from_rings).collect();
         Ok(Some(Region::new(polygons, tolerance)))
@@ -219,24 +216,41 @@ type Shapes = Vec<Vec<Vec<[f64; 2]>>>;
 /// The union of `parts`, in the order given, by pairs: the hulls of
 /// neighbouring boxes overlap almost entirely, so one union of all of them
 /// would meet every edge with every other (quadratic in their number), while
-/// the union of two neighbouring pieces meets only their outlines.
+/// the union of two neighbouring pieces meets only their outlines. The pairs
+/// of one round are united on rayon's threads (feature `parallel`); the
+/// pairs, and so the result, are the same on one thread.
 fn union_tree(mut parts: Vec<Shapes>) -> Shapes {
     let options = overlay_options();
     while parts.len() > 1 {
-        let mut next = Vec::with_capacity(parts.len().div_ceil(2));
-        let mut it = parts.into_iter();
-        while let Some(a) = it.next() {
-            match it.next() {
-                Some(b) => next.push(
-                    FloatOverlay::with_subj_and_clip_custom(&a, &b, options, Default::default())
-                        .overlay(OverlayRule::Union, FillRule::NonZero),
-                ),
-                None => next.push(a),
-            }
-        }
+        let odd = if parts.len() % 2 == 1 {
+            parts.pop()
+        } else {
+            None
+        };
+        let pairs: Vec<&[Shapes]> = parts.chunks(2).collect();
+        let mut next = each(&pairs, |pair| match pair {
+            [a, b] => FloatOverlay::with_subj_and_clip_custom(a, b, options, Default::default())
+                .overlay(OverlayRule::Union, FillRule::NonZero),
+            _ => Shapes::new(),
+        });
+        next.extend(odd);
         parts = next;
     }
     parts.pop().unwrap_or_default()
+}
+
+/// `f` of every item, in order: on rayon's threads with the feature
+/// `parallel`, else one after the other.
+fn each<T: Sync, R: Send>(items: &[T], f: impl Fn(&T) -> R + Sync + Send) -> Vec<R> {
+    #[cfg(feature = "parallel")]
+    {
+        use rayon::prelude::*;
+        items.par_iter().map(f).collect()
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        items.iter().map(f).collect()
+    }
 }
 
 impl FuzzyCurve<2> {

@@ -103,7 +103,7 @@ fn series(
 ///
 /// # Errors
 /// [`crate::Error::Core`] if sampling fails (never for a validated job).
-pub fn distance_figure(job: &Job, alpha: f64) -> Result<Figure, crate::Error> {
+pub fn distance_figure(job: &Job, alpha: f64) -> Result<Figure, crate::error::Error> {
     let heights = job.model.heights();
     let alphas = distance_alphas(&heights);
     let levels = alphas

@@ -9,7 +9,9 @@
 mod density;
 mod distance;
 mod largest;
+mod membership;
 mod reductions;
+mod section;
 mod stage1;
 mod stage2;
 mod stage3;
@@ -20,7 +22,9 @@ mod zoom;
 pub use density::Density;
 pub use distance::{alpha_rule, distance_figure};
 pub use largest::largest_distance;
+pub use membership::membership_figure;
 pub use reductions::reductions_figure;
+pub use section::section_figure;
 pub use stage1::stage1_figure;
 pub use stage2::stage2_figure;
 pub use stage3::stage3_figure;
@@ -29,9 +33,16 @@ pub use sweep::sweep_figure;
 
 use t2spline::job::{Points, RunOutput};
 
-use super::style::{crisp_marker, crisp_stroke, polygon_stroke, reduction_label};
+use t2spline::set::Region;
+use t2spline::Membership;
+
+use super::style::{
+    crisp_marker, crisp_stroke, lower_band, polygon_stroke, reduction_label, upper_band,
+};
 use super::Aspect;
 use crate::scene::{LegendEntry, Mark, Panel, Priority, Xy};
+use crate::set_view::Regions;
+use crate::style::Fill;
 use crate::style::{Marker, Stroke};
 use crate::ticks::short;
 
@@ -122,6 +133,12 @@ impl<'a> CurveScene<'a> {
         }
     }
 
+    /// The axes of the projections, in the order of the panels.
+    #[must_use]
+    pub fn axes(&self) -> Vec<(usize, usize)> {
+        self.projections.iter().map(|p| p.axes).collect()
+    }
+
     /// One panel per projection, each filled by `fill`.
     pub fn panels(&self, mut fill: impl FnMut(&mut Panel, (usize, usize))) -> Vec<Panel> {
         self.projections
@@ -173,12 +190,61 @@ pub fn project(points: &Points, (i, j): (usize, usize)) -> Vec<Xy> {
         .collect()
 }
 
-/// The region between two curves: one forwards, the other backwards.
+/// The area between two curves: one forwards, the other backwards (the
+/// type-reduced curves' band; not a region of the curve).
 #[must_use]
 pub fn band(a: &Points, b: &Points, ij: (usize, usize)) -> Vec<Xy> {
     let mut poly = project(a, ij);
     poly.extend(project(b, ij).into_iter().rev());
     poly
+}
+
+/// The upper and the lower function's regions at the level of `regions`,
+/// in the panel of projection `k`, as the core's polygons (holes included)
+/// filled by the even–odd rule; nothing where a function has no cut.
+pub fn regions(p: &mut Panel, regions: &Regions, k: usize) {
+    for (key, m, fill) in [
+        ("region-upper", Membership::Upper, upper_band()),
+        ("region-lower", Membership::Lower, lower_band()),
+    ] {
+        p.push(
+            key,
+            regions
+                .get(m, k)
+                .map_or(Mark::Empty, |r| region_mark(r, fill)),
+        );
+    }
+}
+
+/// A region of the core as one mark: the rings of all its polygons.
+#[must_use]
+pub fn region_mark(region: &Region, fill: Fill) -> Mark {
+    let rings = region
+        .polygons()
+        .iter()
+        .flat_map(|g| std::iter::once(&g.exterior).chain(&g.holes))
+        .cloned()
+        .collect();
+    Mark::Region { rings, fill }
+}
+
+/// The legend entries of the shaded regions that `regions` holds in some
+/// panel, at level `alpha_text` ("α = 0").
+#[must_use]
+pub fn regions_legend(regions: &Regions, alpha_text: &str) -> Vec<LegendEntry> {
+    let mut legend = Vec::new();
+    for (m, name, fill) in [
+        (Membership::Upper, "upper", upper_band()),
+        (Membership::Lower, "lower", lower_band()),
+    ] {
+        if (0..regions.upper.len()).any(|k| regions.get(m, k).is_some()) {
+            legend.push(LegendEntry::area(
+                &format!("{name} region at {alpha_text}"),
+                fill,
+            ));
+        }
+    }
+    legend
 }
 
 /// `P₀`, `P₁₂`: a control point's name with a subscript index.

@@ -3,15 +3,15 @@
 //! curve, with the distance's maximum and root mean square in the legend.
 
 use t2spline::job::{Job, RunOutput};
-use t2spline::vector::euclidean_norm;
 use t2spline::{Alpha, TypeReduction};
 
 use super::{crisp_curve, crisp_legend, crisp_points, line, polygon, project, CurveScene};
+use crate::data;
+use crate::error::Error;
 use crate::figures::style::{reduction_label, reduction_marker, reduction_stroke};
 use crate::figures::Aspect;
 use crate::scene::{Figure, LegendEntry, Mark, Panel, Xy};
 use crate::ticks::short;
-use crate::{data, Error};
 
 /// `paper (α = 0.8)` or `centroid (Karnik–Mendel)`: a reduction with the
 /// level it used, if any.
@@ -103,12 +103,7 @@ fn distance_panel(results: &[RunOutput]) -> Panel {
             .along()
             .iter()
             .enumerate()
-            .map(|(k, &t)| {
-                let difference: Vec<f64> = (0..r.dimension)
-                    .map(|axis| d.coord(axis)[k] - c.coord(axis)[k])
-                    .collect();
-                [t, euclidean_norm(&difference)]
-            })
+            .map(|(k, &t)| [t, d.distance_at(c, k).unwrap_or(f64::NAN)])
             .collect();
         line(
             &mut p,

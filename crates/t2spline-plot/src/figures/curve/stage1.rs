@@ -5,24 +5,30 @@ use t2spline::job::{Points, RunOutput};
 use t2spline::Layer;
 
 use super::{
-    band, crisp_legend, crisp_points, names, point_name, polygon, project, weights_phrase,
-    CurveScene,
+    crisp_legend, crisp_points, names, point_name, polygon, project, regions, regions_legend,
+    weights_phrase, CurveScene,
 };
-use crate::figures::style::{layer_stroke, lower_band, upper_band, FUNCTIONS};
+use crate::figures::style::{layer_stroke, FUNCTIONS};
 use crate::scene::{Figure, LegendEntry, Mark, Panel};
+use crate::set_view::Regions;
 use crate::style::{Stroke, BLUE, GREEN, VERMILLION};
 
 /// Stage 1 (paper Fig. 5.1): the fuzzy control points — the crisp point with
 /// bars for its upper, primary and lower interval in each coordinate — the
-/// control polygon, the seven layer curves, and the bands between the upper
-/// layers (light) and between the lower layers (darker).
+/// control polygon, the seven layer curves, and the regions the curve can
+/// occupy at level 0 (`zero`, from the core's set view, docs/method.md §10):
+/// the upper function's (light) and the lower's (darker). A layer curve is
+/// not a boundary of the region: at each t the curve can be anywhere in the
+/// box whose corners lie on the layer curves.
 #[must_use]
-pub fn stage1_figure(scene: &CurveScene<'_>) -> Figure {
+pub fn stage1_figure(scene: &CurveScene<'_>, zero: &Regions) -> Figure {
     let r = scene.r;
     let (c, cp) = (&r.samples, &r.control_points);
     let d = &scene.density;
+    let mut k = 0;
     let panels = scene.panels(|p, ij| {
-        bands(p, r, ij);
+        regions(p, zero, k);
+        k += 1;
         polygon(p, &cp.crisp, ij);
         if d.markers {
             bars(p, r, ij);
@@ -46,8 +52,7 @@ pub fn stage1_figure(scene: &CurveScene<'_>) -> Figure {
             layer_stroke(l),
         ));
     }
-    legend.push(LegendEntry::area("between the upper layers", upper_band()));
-    legend.push(LegendEntry::area("between the lower layers", lower_band()));
+    legend.extend(regions_legend(zero, "α = 0"));
     let bars_phrase = if d.markers {
         "; bars: upper ⊃ primary ⊃ lower interval of each coordinate"
     } else {
@@ -67,25 +72,6 @@ pub fn stage1_figure(scene: &CurveScene<'_>) -> Figure {
             legend,
         )
     }
-}
-
-/// The bands between the upper and between the lower layer curves.
-fn bands(p: &mut Panel, r: &RunOutput, ij: (usize, usize)) {
-    let l = &r.samples.layers;
-    p.push(
-        "band-upper",
-        Mark::Area {
-            points: band(&l.upper_left, &l.upper_right, ij),
-            fill: upper_band(),
-        },
-    );
-    p.push(
-        "band-lower",
-        Mark::Area {
-            points: band(&l.lower_left, &l.lower_right, ij),
-            fill: lower_band(),
-        },
-    );
 }
 
 /// Through each crisp control point, a bar per function and coordinate from

@@ -4,11 +4,13 @@ use t2spline::job::{Points, RunOutput};
 use t2spline::Layer;
 
 use super::{
-    alpha_phrase, band, crisp_legend, crisp_points, line, markers, names, point_name, polygon,
-    project, CurveScene,
+    alpha_phrase, crisp_legend, crisp_points, line, markers, names, point_name, polygon, project,
+    regions, regions_legend, CurveScene,
 };
-use crate::figures::style::{layer_marker, layer_stroke, lower_band, upper_band, FUNCTIONS};
-use crate::scene::{Figure, LegendEntry, Mark, Panel};
+use crate::figures::style::{layer_marker, layer_stroke, FUNCTIONS};
+use crate::scene::{Figure, LegendEntry};
+use crate::set_view::Regions;
+use crate::ticks::short;
 
 /// The alpha-cut curve of a layer (the crisp curve for the crisp layer);
 /// `None` when the layer has no cut at this alpha.
@@ -40,16 +42,20 @@ fn has_lower(r: &RunOutput) -> bool {
 }
 
 /// Stage 2 (paper Fig. 5.2): the alpha-cut control points and their curves,
-/// with the bands between the upper and between the lower cut curves. Lower
-/// cuts are drawn (and listed in the legend) only where every number has
-/// one.
+/// over the regions the curve can occupy at the cut's level (`at`, from the
+/// core's set view at the result's alpha): the upper function's and, where
+/// it has a cut, the lower's. Lower cut curves are drawn (and listed in the
+/// legend) only where every number has one; the lower region wherever some
+/// part of the curve has one.
 #[must_use]
-pub fn stage2_figure(scene: &CurveScene<'_>) -> Figure {
+pub fn stage2_figure(scene: &CurveScene<'_>, at: &Regions) -> Figure {
     let r = scene.r;
     let cp = &r.control_points;
     let d = &scene.density;
+    let mut k = 0;
     let panels = scene.panels(|p, ij| {
-        cut_bands(p, r, ij);
+        regions(p, at, k);
+        k += 1;
         polygon(p, &cp.crisp, ij);
         for l in Layer::ALL {
             line(
@@ -78,38 +84,13 @@ pub fn stage2_figure(scene: &CurveScene<'_>) -> Figure {
             "Stage 2: alpha-cut of the fuzzy control points (α-NT2FRBsC)",
             alpha_phrase(r, scene.heights),
             panels,
-            legend(r, d.markers),
+            legend(r, at, d.markers),
         )
     }
 }
 
-/// The bands between the upper and between the lower cut curves.
-fn cut_bands(p: &mut Panel, r: &RunOutput, ij: (usize, usize)) {
-    for (key, (a, b), fill) in [
-        (
-            "band-upper",
-            (Layer::UpperLeft, Layer::UpperRight),
-            upper_band(),
-        ),
-        (
-            "band-lower",
-            (Layer::LowerLeft, Layer::LowerRight),
-            lower_band(),
-        ),
-    ] {
-        let mark = match (cut_curve(r, a), cut_curve(r, b)) {
-            (Some(x), Some(y)) => Mark::Area {
-                points: band(x, y, ij),
-                fill,
-            },
-            _ => Mark::Empty,
-        };
-        p.push(key, mark);
-    }
-}
-
 /// The legend of what is drawn at this alpha.
-fn legend(r: &RunOutput, with_markers: bool) -> Vec<LegendEntry> {
+fn legend(r: &RunOutput, at: &Regions, with_markers: bool) -> Vec<LegendEntry> {
     let mut legend = crisp_legend();
     for (l, _, name) in FUNCTIONS {
         if l == Layer::LowerLeft && !has_lower(r) {
@@ -122,9 +103,6 @@ fn legend(r: &RunOutput, with_markers: bool) -> Vec<LegendEntry> {
             LegendEntry::line(&label, layer_stroke(l))
         });
     }
-    legend.push(LegendEntry::area("between the upper cuts", upper_band()));
-    if has_lower(r) {
-        legend.push(LegendEntry::area("between the lower cuts", lower_band()));
-    }
+    legend.extend(regions_legend(at, &format!("α = {}", short(at.alpha, 4))));
     legend
 }

@@ -58,7 +58,7 @@ fn stroke(k: usize, n: usize, alpha: f64, heights: &[f64]) -> Stroke {
 ///
 /// # Errors
 /// [`crate::Error::Core`] if sampling fails (never for a validated job).
-pub fn sweep_figure(job: &Job) -> Result<Figure, crate::Error> {
+pub fn sweep_figure(job: &Job) -> Result<Figure, crate::error::Error> {
     let heights: Vec<f64> = job.model.heights();
     let chosen = sweep_alphas(&heights);
     let levels = chosen

@@ -8,10 +8,11 @@ use t2spline::Alpha;
 
 use super::largest::{largest_distance, Ends};
 use super::{line, markers, projections, Projection};
+use crate::data;
+use crate::error::Error;
 use crate::figures::style::{crisp_marker, crisp_stroke, solution_marker, solution_stroke};
 use crate::scene::{Panel, Xy};
 use crate::ticks::short;
-use crate::{data, Error};
 
 /// Samples of each curve per stretch crossing the window.
 const ZOOM_SAMPLES: usize = 241;

@@ -16,9 +16,9 @@
 
 use std::str::FromStr;
 
+use crate::error::Error;
 use crate::figures::Aspect;
 use crate::scene::Xy;
-use crate::Error;
 
 /// A point or vector in 3-D.
 pub type Xyz = [f64; 3];

@@ -373,10 +373,8 @@ pub fn bar_strokes() -> [Stroke; 3] {
 /// missing).
 #[must_use]
 pub fn distances(a: &Points, b: &Points) -> Vec<f64> {
-    let (pa, pb) = (xyz(a), xyz(b));
-    pa.iter()
-        .zip(&pb)
-        .map(|(p, q)| t2spline::vector::euclidean_norm(&[p[0] - q[0], p[1] - q[1], p[2] - q[2]]))
+    (0..a.len())
+        .map(|i| a.distance_at(b, i).unwrap_or(f64::NAN))
         .collect()
 }
 

@@ -60,7 +60,10 @@ pub fn stage1_figure(scene: &SurfaceScene<'_>) -> Figure {
             layer_stroke(l),
         ));
     }
-    legend.push(LegendEntry::area("between the upper layers", upper_band()));
+    legend.push(LegendEntry::area(
+        "envelope of the upper layer surfaces",
+        upper_band(),
+    ));
     let bars = if scene.bars_shown() {
         "; bars: upper ⊃ primary ⊃ lower interval of each coordinate"
     } else {

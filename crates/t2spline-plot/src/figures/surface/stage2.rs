@@ -61,7 +61,7 @@ pub fn stage2_figure(scene: &SurfaceScene<'_>) -> Figure {
         ));
     }
     legend.push(LegendEntry::area(
-        "between the upper cut surfaces",
+        "envelope of the upper cut surfaces",
         upper_band(),
     ));
     Figure {

@@ -5,6 +5,8 @@ use t2spline::job::{Job, Parameter};
 use t2spline::Alpha;
 
 use super::{distances, Bins, SurfaceScene};
+use crate::data;
+use crate::error::Error;
 use crate::figures::curve::{largest_distance, reduction_phrase};
 use crate::figures::style::{
     distance_marker, distance_stroke, polygon_stroke, solution_marker, solution_stroke,
@@ -13,7 +15,6 @@ use crate::figures::surface::mesh::Paint;
 use crate::scene::{Figure, LegendEntry, Mark, Priority, Xy};
 use crate::style::{Marker, Shape, BLACK};
 use crate::ticks::short;
-use crate::{data, Error};
 
 /// Stage 4: the crisp surface coloured by `‖D(u, v) − C(u, v)‖` (the
 /// distance to the defuzzified surface at equal parameters, lightly shaded),
