@@ -20,6 +20,7 @@ from .types import (
     Job,
     LayerName,
     LayerSamples,
+    Measures,
     MembershipGrid,
     PerDirection,
     PlaneName,
@@ -272,6 +273,12 @@ class FuzzyCurve:
         y_range: Tuple[float, float],
         shape: Union[int, Tuple[int, int]],
     ) -> MembershipGrid: ...
+    def measure(
+        self,
+        levels: Union[int, ArrayLike] = 11,
+        at: Optional[ArrayLike] = None,
+        order: int = 1,
+    ) -> Measures: ...
 
 @final
 class Region:

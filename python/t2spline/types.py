@@ -35,7 +35,16 @@ __all__ = [
     "LayerDeviations",
     "LayerName",
     "LayerSamples",
+    "AreaMeasure",
+    "AtMeasure",
+    "DerivativeLevel",
+    "DerivativeLevels",
+    "MeasureLevel",
+    "MeasureLevels",
+    "Measures",
     "MembershipGrid",
+    "PartialLevel",
+    "PartialLevels",
     "PerDirection",
     "PlaneName",
     "SectionLevel",
@@ -283,3 +292,98 @@ class GeoMultiPolygon(TypedDict):
 
     type: Literal["MultiPolygon"]
     coordinates: List[List[List[List[float]]]]
+
+
+class MeasureLevel(TypedDict):
+    """One level of a quantity of ``FuzzyCurve.measure`` (docs/method.md
+    §11): ``min`` and ``max`` bound the values over the control points
+    inside their cuts, never narrower than the truth; ``gap`` is how far
+    either may lie outside the values attained; ``exact`` that it is only
+    rounding or the stated tolerance."""
+
+    alpha: float
+    min: float
+    max: float
+    exact: bool
+    gap: float
+
+
+class MeasureLevels(TypedDict):
+    """A quantity per membership function (the lower up to its height)."""
+
+    upper: List[MeasureLevel]
+    primary: List[MeasureLevel]
+    lower: List[MeasureLevel]
+
+
+class AreaMeasure(TypedDict):
+    """The area: ``"under"`` an open curve, ``"enclosed"`` by a closed one."""
+
+    kind: Literal["under", "enclosed"]
+    upper: List[MeasureLevel]
+    primary: List[MeasureLevel]
+    lower: List[MeasureLevel]
+
+
+class PartialLevel(TypedDict):
+    """A level of the tangent angle or the curvature: ``defined`` is false
+    (and ``min``, ``max`` ``None``) where some admissible curve stands still
+    at the parameter."""
+
+    alpha: float
+    defined: bool
+    min: Optional[float]
+    max: Optional[float]
+    exact: bool
+    gap: float
+
+
+class PartialLevels(TypedDict):
+    """Per membership function."""
+
+    upper: List[PartialLevel]
+    primary: List[PartialLevel]
+    lower: List[PartialLevel]
+
+
+class DerivativeLevel(TypedDict):
+    """The exact range of the derivative at one level, per coordinate."""
+
+    alpha: float
+    min: Floats
+    max: Floats
+
+
+class DerivativeLevels(TypedDict):
+    """Per membership function."""
+
+    upper: List[DerivativeLevel]
+    primary: List[DerivativeLevel]
+    lower: List[DerivativeLevel]
+
+
+class _AtMeasureBase(TypedDict):
+    t: float
+    order: int
+    derivative: DerivativeLevels
+    curvature: PartialLevels
+
+
+class AtMeasure(_AtMeasureBase, total=False):
+    """The quantities at one parameter; ``tangent_angle`` (radians) for
+    plane curves only."""
+
+    tangent_angle: PartialLevels
+
+
+class _MeasuresBase(TypedDict):
+    levels: Floats
+    length: MeasureLevels
+    at: List[AtMeasure]
+
+
+class Measures(_MeasuresBase, total=False):
+    """``FuzzyCurve.measure``, as ``t2spline measure`` writes it; ``area``
+    for plane curves only."""
+
+    area: AreaMeasure

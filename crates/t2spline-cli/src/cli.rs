@@ -48,6 +48,10 @@ pub enum Command {
     /// The fuzzy value at a station: the y-intervals of a curve at x = X0, or
     /// the z-intervals of a surface at (X0, Y0), at each level (JSON).
     Section(SectionArgs),
+    /// The uncertainty of what is measured on a fuzzy curve: arc length,
+    /// area, derivative, tangent angle and curvature as intervals over the
+    /// control points inside their cuts, at each level (JSON).
+    Measure(MeasureArgs),
     /// Time the sampling engine: one line per case with the median of 5 runs.
     Bench(BenchArgs),
 }
@@ -412,6 +416,28 @@ pub struct SectionArgs {
     /// the diagonal of the crisp control points' bounding box].
     #[arg(long, value_name = "T", allow_negative_numbers = true)]
     pub tolerance: Option<f64>,
+}
+
+/// Arguments of `t2spline measure`.
+#[derive(Debug, Args)]
+pub struct MeasureArgs {
+    /// The job file (a curve); `-` reads standard input.
+    pub job: PathBuf,
+    /// The levels: N equally spaced from 0 to 1 (at least 2); the lower
+    /// function's lists stop at its height.
+    #[arg(long, value_name = "N", default_value_t = 11)]
+    pub levels: u64,
+    /// Parameters at which to measure the derivative, the tangent angle
+    /// (plane curves) and the curvature, comma-separated.
+    #[arg(long, value_name = "T1,T2,...", allow_negative_numbers = true)]
+    pub at: Option<String>,
+    /// The order of the derivative at each parameter of --at (1 to 64).
+    #[arg(long, value_name = "K", default_value_t = 1)]
+    pub order: u64,
+    /// Write the JSON here instead of standard output (`-` is standard
+    /// output).
+    #[arg(short, long, value_name = "FILE")]
+    pub output: Option<PathBuf>,
 }
 
 /// Arguments of `t2spline bench`.

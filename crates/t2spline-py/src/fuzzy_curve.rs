@@ -272,6 +272,61 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
         crate::set::curve_section(py, &self.0, x0, levels, tolerance)
     }
 
+    /// The uncertainty of what is measured on the curve (docs/method.md
+    /// §11): the arc length (and a plane curve's area: under it, or enclosed
+    /// where it is closed), and at each parameter of ``at`` the derivative of
+    /// order ``order``, the tangent angle (plane curves, radians) and the
+    /// curvature, each as the interval of its values over the control points
+    /// inside their cuts, per membership function and level, as
+    /// ``t2spline measure`` writes them.
+    ///
+    /// Parameters
+    /// ----------
+    /// levels : int or array_like, optional
+    ///     A count of levels equally spaced from 0 to 1 (2 to 1001, default
+    ///     11), or the levels themselves.
+    /// at : float or array_like, optional
+    ///     Parameters in the domain.
+    /// order : int, optional
+    ///     The derivative's order (1 to 64, default 1).
+    ///
+    /// Returns
+    /// -------
+    /// dict
+    ///     ``"levels"``; ``"length"`` and ``"area"`` (with ``"kind"``
+    ///     ``"under"`` or ``"enclosed"``): per function ``"upper"``,
+    ///     ``"primary"``, ``"lower"`` a list of ``{"alpha", "min", "max",
+    ///     "exact", "gap"}`` (the lower function's up to its height);
+    ///     ``"at"``: per parameter ``{"t", "order", "derivative"`` (``"min"``,
+    ///     ``"max"`` arrays per coordinate), ``"tangent_angle"``,
+    ///     ``"curvature"}`` (``"defined"`` false where some admissible curve
+    ///     stands still there). ``min`` and ``max`` are never narrower than
+    ///     the truth; ``gap`` says how far either may lie outside it.
+    ///
+    /// Examples
+    /// --------
+    /// >>> import numpy as np
+    /// >>> c = np.array([[0.0, 0.0], [4.0, 0.0]])
+    /// >>> s = np.array([[[-1.0, 1.0], [0.0, 0.0]], [[-1.0, 1.0], [0.0, 0.0]]])
+    /// >>> line = FuzzyCurve(c, c[..., None] + s, c[..., None] + 0.5 * s,
+    /// ...                   c[..., None] + 0 * s, lower_height=1.0, degree=1)
+    /// >>> m = line.measure(levels=3)
+    /// >>> [(round(l["min"], 6), round(l["max"], 6)) for l in m["length"]["upper"]]
+    /// [(2.0, 6.0), (3.0, 5.0), (4.0, 4.0)]
+    #[pyo3(
+        signature = (levels=None, at=None, order=None),
+        text_signature = "($self, levels=11, at=None, order=1)"
+    )]
+    fn measure<'py>(
+        &self,
+        py: Python<'py>,
+        levels: Option<&Bound<'py, PyAny>>,
+        at: Option<&Bound<'py, PyAny>>,
+        order: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        crate::measure::curve_measure(py, &self.0, levels, at, order)
+    }
+
     /// The membership grades of the cell centres of a regular grid over a
     /// plane curve: the footprint of uncertainty as maps, for
     /// ``matplotlib.pyplot.pcolormesh`` or ``imshow``. Each value is the

@@ -57,6 +57,7 @@ mod fuzzy_methods;
 mod fuzzy_surface;
 mod keyword;
 mod many;
+mod measure;
 mod net;
 mod non_finite;
 mod number;

@@ -1017,6 +1017,32 @@ pub enum Error {
         /// How many there are.
         count: usize,
     },
+
+    /// A parameter at which a quantity is measured (docs/method.md §11) is
+    /// NaN or outside the curve's domain.
+    ///
+    /// ```
+    /// # use t2spline::{Error, FuzzyCurve, Nt2Number, Nt2Point};
+    /// # use t2spline::measure::MeasureOptions;
+    /// let n = |c: f64| Nt2Number::try_new(c, [c - 1.0, c + 1.0], [c, c], [c, c], 1.0);
+    /// let line = FuzzyCurve::try_new(1, vec![Nt2Point::new([n(0.0)?, n(0.0)?]), Nt2Point::new([n(1.0)?, n(1.0)?])], vec![1.0, 1.0], None)?;
+    /// let mut options = MeasureOptions::uniform(2)?;
+    /// options.at = vec![0.5, 1.5];
+    /// let e = line.measure(&options).unwrap_err();
+    /// assert_eq!(e.to_string(), "at[1] = 1.5 is outside the domain [0, 1]");
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("at[{index}] = {} is outside the domain [{}, {}]", Num(*t), Num(*start), Num(*end))]
+    MeasureAt {
+        /// The position of the parameter in the list (0-based).
+        index: usize,
+        /// The parameter.
+        t: f64,
+        /// Start of the domain.
+        start: f64,
+        /// End of the domain.
+        end: f64,
+    },
 }
 
 /// The message of [`Error::InDirection`]: the curve rule in the surface's words.

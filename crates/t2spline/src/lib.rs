@@ -95,6 +95,7 @@ pub mod fuzzy;
 mod golden_section;
 pub mod job;
 mod limits;
+pub mod measure;
 mod nelder_mead;
 pub mod nurbs;
 pub mod pipeline;

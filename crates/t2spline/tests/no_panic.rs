@@ -239,6 +239,28 @@ fn fuzzy_curve_operations<const D: usize>(
             .ok();
         }
     }
+    // The quantities measured on the curve, at arbitrary parameters, orders
+    // and levels.
+    let mut options = t2spline::measure::MeasureOptions::uniform(3).unwrap();
+    options.at = t.to_vec();
+    options.order = n;
+    options.levels.push(alpha);
+    returns("FuzzyCurve::measure", || curve.measure(&options)).ok();
+    for m in t2spline::set::MEMBERSHIPS {
+        returns("FuzzyCurve::length_bracket", || {
+            curve.length_bracket(m, alpha)
+        });
+        for &u in t {
+            returns("FuzzyCurve::derivative_bracket", || {
+                curve.derivative_bracket(u, n, m, alpha)
+            })
+            .ok();
+            returns("FuzzyCurve::curvature_bracket", || {
+                curve.curvature_bracket(u, m, alpha)
+            })
+            .ok();
+        }
+    }
     returns("FuzzyCurve::refine_knots", || curve.refine_knots(t)).ok();
     returns("FuzzyCurve::elevate_degree", || curve.elevate_degree(n)).ok();
     returns("axes", || curve.axes());

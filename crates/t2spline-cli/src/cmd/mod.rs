@@ -6,6 +6,7 @@ mod bench;
 mod export;
 mod fit;
 mod fuzzify;
+mod measure;
 mod membership;
 mod plot;
 pub mod prepare;
@@ -28,6 +29,7 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<()> {
         Command::Fit(args) => fit::fit(args),
         Command::Fuzzify(args) => fuzzify::fuzzify(args),
         Command::Export(args) => export::export(&args),
+        Command::Measure(args) => measure::measure(&args),
         Command::Membership(args) => membership::membership(&args),
         Command::Region(args) => region::region(&args),
         Command::Section(args) => section::section(&args),

@@ -1,0 +1,90 @@
+//! `FuzzyCurve.measure`: the quantities of docs/method.md §11 (arc length,
+//! area, derivative, tangent angle, curvature as intervals over the control
+//! points inside their cuts) as the dict `t2spline measure` writes, every
+//! list of numbers a numpy array.
+
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use t2spline::measure::{MeasureOptions, MAX_MEASURE_LEVELS};
+use t2spline::Alpha;
+
+use crate::arrays::{floats, shape_text};
+use crate::dim::{by_dim, ByDim, Fuzzy};
+use crate::errors::{compute, internal_error};
+use crate::keyword;
+use crate::value::to_value;
+
+/// `levels`: a count (2 to 1001, default 11) or the levels themselves.
+fn levels(arg: Option<&Bound<'_, PyAny>>) -> PyResult<Vec<Alpha>> {
+    let Some(arg) = arg.filter(|a| !a.is_none()) else {
+        return Ok(MeasureOptions::uniform(11)
+            .map_err(crate::errors::core_error)?
+            .levels);
+    };
+    if let Ok(n) = arg.extract::<i64>() {
+        let n = keyword::count(n, "levels", 2)?;
+        if n > MAX_MEASURE_LEVELS {
+            return Err(PyValueError::new_err(format!(
+                "levels: {n} is more than the limit of {MAX_MEASURE_LEVELS}"
+            )));
+        }
+        return Ok(MeasureOptions::uniform(n)
+            .map_err(crate::errors::core_error)?
+            .levels);
+    }
+    let given = floats(arg, "levels")?;
+    if given.shape.len() != 1 || given.data.is_empty() || given.data.len() > MAX_MEASURE_LEVELS {
+        return Err(PyValueError::new_err(format!(
+            "levels: expected a count of at least 2 or a 1-D array of 1 to {MAX_MEASURE_LEVELS} levels, got shape {}",
+            shape_text(&given.shape)
+        )));
+    }
+    given
+        .data
+        .iter()
+        .enumerate()
+        .map(|(i, &v)| {
+            Alpha::try_new(v)
+                .map_err(|_| PyValueError::new_err(format!("levels[{i}]: {v} is outside [0, 1]")))
+        })
+        .collect()
+}
+
+/// `at`: `None`, one parameter or a 1-D array of them.
+fn params(arg: Option<&Bound<'_, PyAny>>) -> PyResult<Vec<f64>> {
+    let Some(arg) = arg.filter(|a| !a.is_none()) else {
+        return Ok(Vec::new());
+    };
+    let given = floats(arg, "at")?;
+    if given.shape.len() > 1 {
+        return Err(PyValueError::new_err(format!(
+            "at: expected a parameter or a 1-D array of parameters, got shape {}",
+            shape_text(&given.shape)
+        )));
+    }
+    Ok(given.data)
+}
+
+/// `FuzzyCurve.measure(levels=11, at=None, order=1)`.
+pub(crate) fn curve_measure<'py>(
+    py: Python<'py>,
+    curve: &ByDim<Fuzzy>,
+    levels_arg: Option<&Bound<'py, PyAny>>,
+    at_arg: Option<&Bound<'py, PyAny>>,
+    order_arg: Option<&Bound<'py, PyAny>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let mut options = MeasureOptions::uniform(2).map_err(crate::errors::core_error)?;
+    options.levels = levels(levels_arg)?;
+    options.at = params(at_arg)?;
+    if let Some(order) = order_arg.filter(|a| !a.is_none()) {
+        let k = keyword::int(order, "order")?;
+        options.order = usize::try_from(k)
+            .ok()
+            .filter(|k| (1..=64).contains(k))
+            .ok_or_else(|| PyValueError::new_err(format!("order: {k} is outside [1, 64]")))?;
+    }
+    let measures = by_dim!(curve, |c| compute(py, || c.measure(&options)))?;
+    to_value(&measures)
+        .map_err(|e| internal_error(&e.to_string()))?
+        .into_py(py)
+}

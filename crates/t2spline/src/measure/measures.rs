@@ -1,0 +1,640 @@
+//! Every quantity of docs/method.md §11 at many levels, under the three
+//! membership functions: what `t2spline measure` writes.
+
+use crate::error::Error;
+use crate::fuzzy::{Alpha, Membership};
+use crate::measure::area::{area_bracket, AreaForm, AreaKind};
+use crate::measure::bracket::Bracket;
+use crate::measure::coefficients;
+use crate::measure::curvature::curvature_bracket;
+use crate::measure::cut_box::CutBox;
+use crate::measure::derivative::{angle_range, derivative_box};
+use crate::measure::length::length_bracket;
+use crate::measure::rule::{rules, Rules};
+use crate::nurbs::derivatives::check_order;
+use crate::pipeline::FuzzyCurve;
+
+/// Levels at most in one measurement.
+pub const MAX_MEASURE_LEVELS: usize = 1001;
+/// Parameters at most in one measurement.
+pub const MAX_MEASURE_PARAMETERS: usize = 10_000;
+
+/// One value per membership function.
+#[derive(Clone, Debug, Default, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct PerMembership<T> {
+    /// Under the upper membership function.
+    pub upper: T,
+    /// Under the primary membership function.
+    pub primary: T,
+    /// Under the lower membership function.
+    pub lower: T,
+}
+
+impl<T> PerMembership<T> {
+    /// The value of one function.
+    #[must_use]
+    pub fn get(&self, membership: Membership) -> &T {
+        match membership {
+            Membership::Upper => &self.upper,
+            Membership::Primary => &self.primary,
+            Membership::Lower => &self.lower,
+        }
+    }
+
+    fn from_fn(mut f: impl FnMut(Membership) -> T) -> Self {
+        PerMembership {
+            upper: f(Membership::Upper),
+            primary: f(Membership::Primary),
+            lower: f(Membership::Lower),
+        }
+    }
+}
+
+/// A quantity's [`Bracket`] at one level.
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct Level {
+    /// The level.
+    pub alpha: f64,
+    /// A lower bound of the least value.
+    pub min: f64,
+    /// An upper bound of the largest value.
+    pub max: f64,
+    /// Whether both ends are exact to rounding or the stated tolerance.
+    pub exact: bool,
+    /// How far either end may lie outside the values attained.
+    pub gap: f64,
+}
+
+impl Level {
+    fn of(alpha: f64, b: Bracket) -> Self {
+        Level {
+            alpha,
+            min: b.min,
+            max: b.max,
+            exact: b.exact,
+            gap: b.gap,
+        }
+    }
+
+    /// The bracket.
+    #[must_use]
+    pub fn bracket(&self) -> Bracket {
+        Bracket {
+            min: self.min,
+            max: self.max,
+            exact: self.exact,
+            gap: self.gap,
+        }
+    }
+}
+
+/// A quantity at a parameter that some admissible curve may not have (the
+/// tangent and the curvature where the derivative box holds the origin).
+#[derive(Clone, Copy, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct PartialLevel {
+    /// The level.
+    pub alpha: f64,
+    /// `false` where some admissible curve stands still at the parameter;
+    /// `min` and `max` are then `None`.
+    pub defined: bool,
+    /// A lower bound of the least value.
+    pub min: Option<f64>,
+    /// An upper bound of the largest value.
+    pub max: Option<f64>,
+    /// Whether both ends are exact to rounding or the stated tolerance.
+    pub exact: bool,
+    /// How far either end may lie outside the values attained.
+    pub gap: f64,
+}
+
+impl PartialLevel {
+    fn of(alpha: f64, b: Option<Bracket>) -> Self {
+        PartialLevel {
+            alpha,
+            defined: b.is_some(),
+            min: b.map(|b| b.min),
+            max: b.map(|b| b.max),
+            exact: b.is_none_or(|b| b.exact),
+            gap: b.map_or(0.0, |b| b.gap),
+        }
+    }
+}
+
+/// A derivative's exact range at one level, per coordinate.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct DerivativeLevel {
+    /// The level.
+    pub alpha: f64,
+    /// The least value of each coordinate.
+    pub min: Vec<f64>,
+    /// The largest value of each coordinate.
+    pub max: Vec<f64>,
+}
+
+/// The area of a plane curve at every level.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct AreaMeasure {
+    /// Under an open curve or enclosed by a closed one.
+    pub kind: AreaKind,
+    /// Under the upper membership function.
+    pub upper: Vec<Level>,
+    /// Under the primary membership function.
+    pub primary: Vec<Level>,
+    /// Under the lower membership function.
+    pub lower: Vec<Level>,
+}
+
+/// The quantities at one parameter.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct AtMeasure {
+    /// The parameter.
+    pub t: f64,
+    /// The order of `derivative`.
+    pub order: usize,
+    /// The derivative of that order, per coordinate.
+    pub derivative: PerMembership<Vec<DerivativeLevel>>,
+    /// The angle of the first derivative (plane curves), radians.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub tangent_angle: Option<PerMembership<Vec<PartialLevel>>>,
+    /// The curvature.
+    pub curvature: PerMembership<Vec<PartialLevel>>,
+}
+
+/// Every quantity of a fuzzy curve at many levels (docs/method.md §11).
+/// A membership function's lists hold only the levels where it has a cut
+/// (the lower function up to the least height of its numbers).
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct Measures {
+    /// The levels asked for.
+    pub levels: Vec<f64>,
+    /// The arc length.
+    pub length: PerMembership<Vec<Level>>,
+    /// The area (plane curves).
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub area: Option<AreaMeasure>,
+    /// The quantities at each parameter asked for.
+    pub at: Vec<AtMeasure>,
+}
+
+/// What to measure.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MeasureOptions {
+    /// The levels (1 to [`MAX_MEASURE_LEVELS`]).
+    pub levels: Vec<Alpha>,
+    /// The parameters for derivatives, tangent and curvature.
+    pub at: Vec<f64>,
+    /// The order of the derivative at each parameter (1 to 64).
+    pub order: usize,
+    /// Whether to measure the arc length.
+    pub length: bool,
+    /// Whether to measure the area (plane curves).
+    pub area: bool,
+}
+
+impl MeasureOptions {
+    /// `count` levels from 0 to 1, no parameters, the first derivative,
+    /// length and area.
+    ///
+    /// # Errors
+    /// [`Error::OutOfRange`] unless `2 ≤ count ≤` [`MAX_MEASURE_LEVELS`].
+    pub fn uniform(count: usize) -> Result<Self, Error> {
+        if !(2..=MAX_MEASURE_LEVELS).contains(&count) {
+            return Err(Error::OutOfRange {
+                place: crate::error::Place::NONE,
+                what: "levels",
+                value: count as f64,
+                range: "[2, 1001]",
+            });
+        }
+        let levels = (0..count)
+            .map(|k| Alpha::try_new(k as f64 / (count - 1) as f64))
+            .collect::<Result<_, _>>()?;
+        Ok(MeasureOptions {
+            levels,
+            at: Vec::new(),
+            order: 1,
+            length: true,
+            area: true,
+        })
+    }
+}
+
+/// Whether a plane curve is closed in the sense of docs/method.md §11:
+/// clamped knots and the first and last control points carrying the same
+/// fuzzy numbers (so that they are one point of the box).
+pub(crate) fn is_closed<const D: usize>(curve: &FuzzyCurve<D>) -> bool {
+    let p = curve.points();
+    p.len() >= 3 && curve.knots().is_clamped() && p.first() == p.last()
+}
+
+/// The rules and the area form of a curve, shared by every level.
+pub(crate) struct Prepared {
+    pub(crate) rules: Rules,
+    pub(crate) area: Option<AreaForm>,
+}
+
+impl Prepared {
+    pub(crate) fn of<const D: usize>(curve: &FuzzyCurve<D>, area: bool) -> Self {
+        let crisp: Vec<f64> = curve.points().iter().flat_map(|p| p.crisp()).collect();
+        let rules = rules(curve.knots(), curve.weights(), &crisp, D);
+        let area =
+            (area && D == 2).then(|| AreaForm::new(&rules, curve.points().len(), is_closed(curve)));
+        Prepared { rules, area }
+    }
+}
+
+/// Bounds of both ends: `least = [bound, attained]`, `largest = [attained,
+/// bound]`.
+#[derive(Clone, Copy, Debug)]
+struct Ends {
+    least: [f64; 2],
+    largest: [f64; 2],
+    exact: bool,
+}
+
+impl Ends {
+    fn of(b: Bracket) -> Self {
+        // A bracket keeps one gap; each end gets it.
+        Ends {
+            least: [b.min, b.min + b.gap],
+            largest: [b.max - b.gap, b.max],
+            exact: b.exact,
+        }
+    }
+
+    fn bracket(self) -> Bracket {
+        Bracket::from_ends(self.least, self.largest, self.exact)
+    }
+}
+
+/// Tightens brackets by nesting, which the true intervals obey: a value
+/// attained in an inner box is attained in the outer one, and the bounds of
+/// an outer box hold for the inner one. `outer[k]` contains `inner[k]`
+/// (another function at the same level), and within one list each level
+/// contains the next.
+fn nest(lists: &mut [&mut Vec<(f64, Option<Ends>)>]) {
+    // Along alpha within each function.
+    for list in lists.iter_mut() {
+        for k in 1..list.len() {
+            if let (Some(a), Some(b)) = (list[k - 1].1, list[k].1) {
+                let b = Ends {
+                    least: [b.least[0].max(a.least[0]), b.least[1]],
+                    largest: [b.largest[0], b.largest[1].min(a.largest[1])],
+                    exact: b.exact,
+                };
+                list[k].1 = Some(b);
+            }
+        }
+        for k in (1..list.len()).rev() {
+            if let (Some(a), Some(b)) = (list[k - 1].1, list[k].1) {
+                list[k - 1].1 = Some(Ends {
+                    least: [a.least[0], a.least[1].min(b.least[1])],
+                    largest: [a.largest[0].max(b.largest[0]), a.largest[1]],
+                    exact: a.exact,
+                });
+            }
+        }
+    }
+    // Across functions at one level (upper ⊇ primary ⊇ lower): the bounds
+    // inward, the values attained outward.
+    for f in 1..lists.len() {
+        let (outer, inner) = lists.split_at_mut(f);
+        let (outer, inner) = (&mut *outer[f - 1], &mut *inner[0]);
+        for (o, i) in outer.iter_mut().zip(inner.iter_mut()) {
+            if let (Some(a), Some(b)) = (o.1, i.1) {
+                i.1 = Some(Ends {
+                    least: [b.least[0].max(a.least[0]), b.least[1]],
+                    largest: [b.largest[0], b.largest[1].min(a.largest[1])],
+                    exact: b.exact,
+                });
+                o.1 = Some(Ends {
+                    least: [a.least[0], a.least[1].min(b.least[1])],
+                    largest: [a.largest[0].max(b.largest[0]), a.largest[1]],
+                    exact: a.exact,
+                });
+            }
+        }
+    }
+}
+
+/// The nested brackets of a quantity `f(box)` at every level and function.
+/// The levels are independent: with the feature `parallel` they run on
+/// rayon's pool (each bracket is computed by the same operations either
+/// way).
+fn leveled(
+    boxes: &PerMembership<Vec<(f64, CutBox)>>,
+    f: impl Fn(&CutBox) -> Option<Bracket> + Sync,
+) -> PerMembership<Vec<(f64, Option<Bracket>)>> {
+    let one = |(alpha, cut): &(f64, CutBox)| (*alpha, f(cut).map(Ends::of));
+    let mut all: PerMembership<Vec<(f64, Option<Ends>)>> = PerMembership::from_fn(|m| {
+        #[cfg(feature = "parallel")]
+        {
+            use rayon::prelude::*;
+            boxes.get(m).par_iter().map(one).collect()
+        }
+        #[cfg(not(feature = "parallel"))]
+        {
+            boxes.get(m).iter().map(one).collect()
+        }
+    });
+    {
+        let PerMembership {
+            upper,
+            primary,
+            lower,
+        } = &mut all;
+        nest(&mut [upper, primary, lower]);
+    }
+    PerMembership::from_fn(|m| {
+        all.get(m)
+            .iter()
+            .map(|(a, e)| (*a, e.map(Ends::bracket)))
+            .collect()
+    })
+}
+
+impl<const D: usize> FuzzyCurve<D> {
+    /// The arc length of the crisp curve through the control points `x`
+    /// (flattened, `D` per point) by adaptive quadrature.
+    fn adaptive_length(&self, x: &[f64]) -> f64 {
+        let points = x
+            .chunks_exact(D)
+            .map(|c| std::array::from_fn(|k| c[k]))
+            .collect();
+        self.with_control_points(points).arc_length()
+    }
+
+    /// The boxes of cut control points at each level, per function (only
+    /// the levels where the function has a cut).
+    fn cut_boxes(&self, levels: &[Alpha]) -> PerMembership<Vec<(f64, CutBox)>> {
+        PerMembership::from_fn(|m| {
+            levels
+                .iter()
+                .filter_map(|&a| CutBox::of(self.points(), m, a).map(|b| (a.get(), b)))
+                .collect()
+        })
+    }
+
+    /// Every quantity of docs/method.md §11: the arc length (and a plane
+    /// curve's area) at each level, the derivative of order `options.order`,
+    /// the tangent angle (plane curves) and the curvature at each parameter
+    /// of `options.at`; each an interval over the box of cut control points
+    /// under each membership function.
+    ///
+    /// # Errors
+    /// [`Error::OutOfRange`] for no levels or more than
+    /// [`MAX_MEASURE_LEVELS`], more than [`MAX_MEASURE_PARAMETERS`]
+    /// parameters, or an order above 64 or 0; [`Error::MeasureAt`] for a
+    /// parameter outside the domain.
+    ///
+    /// # Examples
+    /// A straight segment from 0 to 4 whose end points may each move 1 along
+    /// it: lengths from 2 to 6.
+    /// ```
+    /// # use t2spline::{FuzzyCurve, Nt2Number, Nt2Point};
+    /// # use t2spline::measure::MeasureOptions;
+    /// let n = |c: f64, s: f64| Nt2Number::try_new(c, [c - s, c + s], [c, c], [c, c], 1.0);
+    /// let points = vec![Nt2Point::new([n(0.0, 1.0)?, n(0.0, 0.0)?]), Nt2Point::new([n(4.0, 1.0)?, n(0.0, 0.0)?])];
+    /// let line = FuzzyCurve::try_new(1, points, vec![1.0, 1.0], None)?;
+    /// let m = line.measure(&MeasureOptions::uniform(3)?)?;
+    /// let upper = &m.length.upper[0];
+    /// assert!((upper.min - 2.0).abs() < 1e-9 && (upper.max - 6.0).abs() < 1e-9);
+    /// # Ok::<(), t2spline::Error>(())
+    /// ```
+    pub fn measure(&self, options: &MeasureOptions) -> Result<Measures, Error> {
+        self.check_measure(options)?;
+        let prepared = Prepared::of(self, options.area);
+        let boxes = self.cut_boxes(&options.levels);
+        let finish = |l: PerMembership<Vec<(f64, Option<Bracket>)>>| {
+            PerMembership::from_fn(|m| {
+                l.get(m)
+                    .iter()
+                    .filter_map(|(a, b)| b.map(|b| Level::of(*a, b)))
+                    .collect::<Vec<_>>()
+            })
+        };
+        let length = if options.length {
+            finish(leveled(&boxes, |cut| {
+                Some(length_bracket(&prepared.rules, cut, &|x| {
+                    self.adaptive_length(x)
+                }))
+            }))
+        } else {
+            PerMembership::default()
+        };
+        let area = prepared.area.as_ref().map(|form| {
+            let l = finish(leveled(&boxes, |cut| Some(area_bracket(form, cut))));
+            AreaMeasure {
+                kind: form.kind,
+                upper: l.upper,
+                primary: l.primary,
+                lower: l.lower,
+            }
+        });
+        let at = options
+            .at
+            .iter()
+            .map(|&t| self.measure_at(t, options.order, &boxes))
+            .collect();
+        Ok(Measures {
+            levels: options.levels.iter().map(|a| a.get()).collect(),
+            length,
+            area,
+            at,
+        })
+    }
+
+    fn check_measure(&self, options: &MeasureOptions) -> Result<(), Error> {
+        let none = crate::error::Place::NONE;
+        if options.levels.is_empty() || options.levels.len() > MAX_MEASURE_LEVELS {
+            return Err(Error::OutOfRange {
+                place: none,
+                what: "levels",
+                value: options.levels.len() as f64,
+                range: "[1, 1001]",
+            });
+        }
+        if options.at.len() > MAX_MEASURE_PARAMETERS {
+            return Err(Error::OutOfRange {
+                place: none,
+                what: "the number of parameters",
+                value: options.at.len() as f64,
+                range: "[0, 10000]",
+            });
+        }
+        if options.order == 0 {
+            return Err(Error::OutOfRange {
+                place: none,
+                what: "derivative order",
+                value: 0.0,
+                range: "[1, 64]",
+            });
+        }
+        check_order(options.order)?;
+        let domain = self.domain();
+        for (index, &t) in options.at.iter().enumerate() {
+            if !domain.contains(t) {
+                return Err(Error::MeasureAt {
+                    index,
+                    t,
+                    start: domain.start,
+                    end: domain.end,
+                });
+            }
+        }
+        Ok(())
+    }
+
+    fn measure_at(
+        &self,
+        t: f64,
+        order: usize,
+        boxes: &PerMembership<Vec<(f64, CutBox)>>,
+    ) -> AtMeasure {
+        let top = order.max(2);
+        let (first, r) = coefficients::at(self.knots(), self.weights(), t, top);
+        let derivative = PerMembership::from_fn(|m| {
+            boxes
+                .get(m)
+                .iter()
+                .map(|(alpha, cut)| {
+                    let b = derivative_box(cut, first, &r[order]);
+                    DerivativeLevel {
+                        alpha: *alpha,
+                        min: b.iter().map(|x| x[0]).collect(),
+                        max: b.iter().map(|x| x[1]).collect(),
+                    }
+                })
+                .collect()
+        });
+        let partial = |l: PerMembership<Vec<(f64, Option<Bracket>)>>| {
+            PerMembership::from_fn(|m| {
+                l.get(m)
+                    .iter()
+                    .map(|(a, b)| PartialLevel::of(*a, *b))
+                    .collect::<Vec<_>>()
+            })
+        };
+        let tangent_angle = (D == 2).then(|| {
+            partial(PerMembership::from_fn(|m| {
+                boxes
+                    .get(m)
+                    .iter()
+                    .map(|(a, cut)| (*a, angle_range(&derivative_box(cut, first, &r[1]))))
+                    .collect()
+            }))
+        });
+        let curvature = partial(leveled(boxes, |cut| {
+            curvature_bracket(cut, first, &r[1], &r[2])
+        }));
+        AtMeasure {
+            t,
+            order,
+            derivative,
+            tangent_angle,
+            curvature,
+        }
+    }
+
+    /// The arc length's bracket over the box of cut control points under
+    /// `membership` at `alpha`; `None` where the function has no cut there.
+    #[must_use]
+    pub fn length_bracket(&self, membership: Membership, alpha: Alpha) -> Option<Bracket> {
+        let cut = CutBox::of(self.points(), membership, alpha)?;
+        Some(length_bracket(
+            &Prepared::of(self, false).rules,
+            &cut,
+            &|x| self.adaptive_length(x),
+        ))
+    }
+
+    /// The exact range of the derivative of order `order` at `t`, per
+    /// coordinate (`[min, max]`), over the box under `membership` at
+    /// `alpha`; `None` where the function has no cut there.
+    ///
+    /// # Errors
+    /// [`Error::OutOfDomain`] if `t` is outside the domain;
+    /// [`Error::OutOfRange`] if `order` is above 64.
+    pub fn derivative_bracket(
+        &self,
+        t: f64,
+        order: usize,
+        membership: Membership,
+        alpha: Alpha,
+    ) -> Result<Option<[[f64; 2]; D]>, Error> {
+        self.domain().check(t)?;
+        check_order(order)?;
+        let Some(cut) = CutBox::of(self.points(), membership, alpha) else {
+            return Ok(None);
+        };
+        let (first, r) = coefficients::at(self.knots(), self.weights(), t, order);
+        let b = derivative_box(&cut, first, &r[order]);
+        Ok(Some(std::array::from_fn(|c| b[c])))
+    }
+
+    /// The curvature's certified bracket at `t` over the box under
+    /// `membership` at `alpha`; `None` where the function has no cut there or
+    /// where some admissible curve stands still at `t` (no curvature).
+    ///
+    /// # Errors
+    /// [`Error::OutOfDomain`] if `t` is outside the domain.
+    pub fn curvature_bracket(
+        &self,
+        t: f64,
+        membership: Membership,
+        alpha: Alpha,
+    ) -> Result<Option<Bracket>, Error> {
+        self.domain().check(t)?;
+        let Some(cut) = CutBox::of(self.points(), membership, alpha) else {
+            return Ok(None);
+        };
+        let (first, r) = coefficients::at(self.knots(), self.weights(), t, 2);
+        Ok(curvature_bracket(&cut, first, &r[1], &r[2]))
+    }
+}
+
+impl FuzzyCurve<2> {
+    /// The area's bracket (under the curve, or enclosed where the curve is
+    /// closed: clamped, with equal first and last fuzzy points) over the box
+    /// under `membership` at `alpha`; `None` where the function has no cut.
+    #[must_use]
+    pub fn area_bracket(&self, membership: Membership, alpha: Alpha) -> Option<Bracket> {
+        let cut = CutBox::of(self.points(), membership, alpha)?;
+        let prepared = Prepared::of(self, true);
+        prepared.area.as_ref().map(|form| area_bracket(form, &cut))
+    }
+
+    /// Which area [`FuzzyCurve::area_bracket`] measures.
+    #[must_use]
+    pub fn area_kind(&self) -> AreaKind {
+        if is_closed(self) {
+            AreaKind::Enclosed
+        } else {
+            AreaKind::Under
+        }
+    }
+
+    /// The exact interval of the tangent's angle (radians) at `t`; `None`
+    /// where the function has no cut, `Some(None)` where the derivative box
+    /// holds the origin (some admissible curve stands still: no direction).
+    ///
+    /// # Errors
+    /// [`Error::OutOfDomain`] if `t` is outside the domain.
+    pub fn tangent_angle_bracket(
+        &self,
+        t: f64,
+        membership: Membership,
+        alpha: Alpha,
+    ) -> Result<Option<Option<Bracket>>, Error> {
+        Ok(self
+            .derivative_bracket(t, 1, membership, alpha)?
+            .map(|b| angle_range(&b)))
+    }
+}
