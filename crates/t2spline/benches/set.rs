@@ -15,31 +15,11 @@ use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, Criterion};
 use t2spline::sampling::Params;
-use t2spline::{Alpha, FuzzyCurve, Membership, Nt2Number, Nt2Point};
+use t2spline::{Alpha, FuzzyCurve, Membership};
 
+/// The shipped example (`examples/paper-alg-1-1.json`).
 fn example() -> FuzzyCurve<2> {
-    let n = |c: f64, u: [f64; 2], p: [f64; 2], l: [f64; 2]| {
-        Nt2Number::try_new(c, u, p, l, 0.6).unwrap()
-    };
-    let points = vec![
-        Nt2Point::new([
-            n(1.0, [0.4, 1.9], [0.6, 1.6], [0.8, 1.3]),
-            n(1.0, [0.2, 1.5], [0.5, 1.35], [0.75, 1.2]),
-        ]),
-        Nt2Point::new([
-            n(2.0, [1.5, 2.8], [1.7, 2.5], [1.85, 2.25]),
-            n(4.0, [3.3, 4.4], [3.5, 4.3], [3.8, 4.15]),
-        ]),
-        Nt2Point::new([
-            n(5.0, [4.1, 5.6], [4.4, 5.45], [4.7, 5.2]),
-            n(4.5, [4.0, 5.4], [4.2, 5.1], [4.35, 4.8]),
-        ]),
-        Nt2Point::new([
-            n(6.0, [5.3, 6.9], [5.5, 6.6], [5.8, 6.3]),
-            n(1.0, [0.4, 1.8], [0.6, 1.5], [0.8, 1.25]),
-        ]),
-    ];
-    FuzzyCurve::try_new(2, points, vec![1.0, 1.0, 3.0, 1.0], None).unwrap()
+    t2spline::strategies::paper_example()
 }
 
 fn set_view(c: &mut Criterion) {

@@ -27,6 +27,40 @@ pub fn seeded_uniform(seed: u64) -> impl FnMut() -> f64 {
     }
 }
 
+/// The shipped example, `examples/paper-alg-1-1.json` (the paper's
+/// Algorithm 1.1 data: four points, order 3, weights 1, 1, 3, 1, every lower
+/// height 0.6), built with the core's API: the fixture of tests and
+/// benchmarks that need the example without reading a file.
+///
+/// # Panics
+/// Never: the example's numbers are valid (checked by the tests that use it).
+#[must_use]
+pub fn paper_example() -> FuzzyCurve<2> {
+    let n = |c: f64, u: [f64; 2], p: [f64; 2], l: [f64; 2]| {
+        Nt2Number::try_new(c, u, p, l, 0.6).expect("the example's numbers are valid")
+    };
+    let points = vec![
+        Nt2Point::new([
+            n(1.0, [0.4, 1.9], [0.6, 1.6], [0.8, 1.3]),
+            n(1.0, [0.2, 1.5], [0.5, 1.35], [0.75, 1.2]),
+        ]),
+        Nt2Point::new([
+            n(2.0, [1.5, 2.8], [1.7, 2.5], [1.85, 2.25]),
+            n(4.0, [3.3, 4.4], [3.5, 4.3], [3.8, 4.15]),
+        ]),
+        Nt2Point::new([
+            n(5.0, [4.1, 5.6], [4.4, 5.45], [4.7, 5.2]),
+            n(4.5, [4.0, 5.4], [4.2, 5.1], [4.35, 4.8]),
+        ]),
+        Nt2Point::new([
+            n(6.0, [5.3, 6.9], [5.5, 6.6], [5.8, 6.3]),
+            n(1.0, [0.4, 1.8], [0.6, 1.5], [0.8, 1.25]),
+        ]),
+    ];
+    FuzzyCurve::try_new(2, points, vec![1.0, 1.0, 3.0, 1.0], None)
+        .expect("the example's curve is valid")
+}
+
 /// A lower height: often 1 or a round value, otherwise anything in `(0, 1]`.
 pub fn height() -> impl Strategy<Value = f64> + Clone {
     prop_oneof![
