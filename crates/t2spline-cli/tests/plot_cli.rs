@@ -26,7 +26,7 @@ fn on_example(sub: &str, dir: &Path) -> Command {
     c
 }
 
-const NAMES: [&str; 10] = [
+const NAMES: [&str; 11] = [
     "number",
     "stage1-fuzzy",
     "stage2-alpha-cut",
@@ -35,6 +35,7 @@ const NAMES: [&str; 10] = [
     "alpha-sweep",
     "distance-alpha",
     "reductions",
+    "measures",
     "membership",
     "section",
 ];

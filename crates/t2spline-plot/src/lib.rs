@@ -63,6 +63,7 @@ mod font;
 mod geometry;
 mod labels;
 mod layout;
+mod measure_view;
 mod obstacles;
 mod output;
 mod panel_layout;

@@ -117,7 +117,7 @@ fn every_figure_has_title_axes_labels_and_a_legend() {
         let names: Vec<&str> = figs.iter().map(|f| f.name).collect();
         // The figures of the plane are drawn for plane curves only.
         let expected = if case.contains("3d") {
-            &FIGURE_NAMES[..8]
+            &FIGURE_NAMES[..9]
         } else {
             &FIGURE_NAMES[..]
         };
@@ -143,6 +143,14 @@ fn every_figure_has_title_axes_labels_and_a_legend() {
             let panels = match fig.name {
                 "number" | "alpha-sweep" | "distance-alpha" | "section" => 1,
                 "membership" => 2,
+                // The length, and the area of a plane curve.
+                "measures" => {
+                    if three_d {
+                        1
+                    } else {
+                        2
+                    }
+                }
                 // The projections and the magnified panel, or the distance
                 // along the curve.
                 "stage4-defuzzified" | "reductions" => {
