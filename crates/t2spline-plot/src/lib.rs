@@ -79,7 +79,9 @@ mod ticks;
 
 pub use error::Error;
 pub use figures::surface::View;
-pub use figures::{all_figures, Aspect, FigureOptions, NumberChoice, FIGURE_NAMES};
+pub use figures::{
+    all_figures, Aspect, FigureOptions, NumberChoice, FIGURE_NAMES, MEASURES_MAX_POINTS,
+};
 pub use geometry::{Px, Rect};
 pub use labels::{place as place_labels, Placed};
 pub use layout::{fit as fit_layout, Layout, LegendLayout};

@@ -568,7 +568,7 @@ mod png {
     fn png_files_are_three_times_the_svg_at_300_dpi_with_text_and_series() {
         let figs = figures("examples/paper-alg-1-1.json", 0.8, NumberChoice::default());
         let files = t2spline_plot::render_files(&figs, t2spline_plot::Format::Png).unwrap();
-        assert_eq!(files.len(), 10);
+        assert_eq!(files.len(), FIGURE_NAMES.len());
         for (fig, (name, bytes)) in figs.iter().zip(&files) {
             assert_eq!(name, &format!("{}.png", fig.name));
             // pHYs after the header: 11811 pixels per metre both ways, unit metre.

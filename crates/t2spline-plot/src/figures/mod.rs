@@ -58,6 +58,11 @@ pub const FIGURE_NAMES: [&str; 11] = [
     "section",
 ];
 
+/// The most control points of a curve whose `measures` figure is drawn:
+/// beyond, the largest length and the area are branch-and-bound brackets at
+/// every level, seconds to minutes of work (`t2spline measure` gives them).
+pub const MEASURES_MAX_POINTS: usize = 20;
+
 /// Which number the `number` figure shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct NumberChoice {
@@ -126,7 +131,8 @@ pub struct FigureOptions {
 
 /// Every figure of the job at `alpha`, in the order of [`FIGURE_NAMES`]; a
 /// space curve has all but `membership` and `section` (figures of the
-/// plane), a surface job all but those and `alpha-sweep`, `reductions` and `measures`. Stages 2–4 follow
+/// plane), a surface job all but those and `alpha-sweep`, `reductions` and `measures`
+/// (nor a curve of more than [`MEASURES_MAX_POINTS`] control points). Stages 2–4 follow
 /// the job's type reduction, as `t2spline run` does (a reduction other than
 /// the paper's cuts stage 2 at 0); `alpha` is the paper's level in the
 /// `number`, `distance-alpha` and `reductions` figures.
@@ -168,8 +174,14 @@ pub fn all_figures(job: &Job, alpha: Alpha, options: &FigureOptions) -> Result<V
                 curve::sweep_figure(job)?,
                 curve::distance_figure(job, alpha.get())?,
                 reductions_figure(job, alpha, options.aspect)?,
-                measures_figure(job)?,
-            ])
+            ]
+            .into_iter()
+            .chain(
+                (job.model.control_point_count() <= MEASURES_MAX_POINTS)
+                    .then(|| measures_figure(job))
+                    .transpose()?,
+            )
+            .collect())
         },
         || -> Result<Vec<Figure>, Error> {
             if !matches!(job.model, t2spline::job::Model::Planar(_)) {
