@@ -34,7 +34,7 @@
 //!   ]}"#, "job.json")?;
 //! let alpha = job.alpha.expect("the file gives alpha");
 //! let figures = all_figures(&job, alpha, &FigureOptions::default())?;
-//! assert_eq!(figures.len(), 10);
+//! assert_eq!(figures.len(), 11);
 //! let svg = t2spline_plot::render_svg(&figures[1]);
 //! assert!(svg.contains("Stage 1"));
 //! # Ok::<(), Box<dyn std::error::Error>>(())
