@@ -26,7 +26,7 @@ fn on_example(sub: &str, dir: &Path) -> Command {
     c
 }
 
-const NAMES: [&str; 10] = [
+const NAMES: [&str; 11] = [
     "number",
     "stage1-fuzzy",
     "stage2-alpha-cut",
@@ -35,6 +35,7 @@ const NAMES: [&str; 10] = [
     "alpha-sweep",
     "distance-alpha",
     "reductions",
+    "measures",
     "membership",
     "section",
 ];
@@ -65,7 +66,7 @@ fn plot_writes_every_figure_in_both_formats_by_default() {
     }
     assert_eq!(
         std::fs::read_dir(&out).unwrap().count(),
-        20,
+        2 * NAMES.len(),
         "no stray files"
     );
 }
@@ -85,7 +86,7 @@ fn plot_svg_only_and_a_chosen_number() {
         ])
         .assert()
         .success();
-    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 10);
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), NAMES.len());
     let number = std::fs::read_to_string(dir.path().join("number.svg")).unwrap();
     assert!(
         number.contains("coordinate y of control point 3"),

@@ -34,7 +34,7 @@
 //!   ]}"#, "job.json")?;
 //! let alpha = job.alpha.expect("the file gives alpha");
 //! let figures = all_figures(&job, alpha, &FigureOptions::default())?;
-//! assert_eq!(figures.len(), 10);
+//! assert_eq!(figures.len(), 11);
 //! let svg = t2spline_plot::render_svg(&figures[1]);
 //! assert!(svg.contains("Stage 1"));
 //! # Ok::<(), Box<dyn std::error::Error>>(())
@@ -63,6 +63,7 @@ mod font;
 mod geometry;
 mod labels;
 mod layout;
+mod measure_view;
 mod obstacles;
 mod output;
 mod panel_layout;
@@ -78,7 +79,9 @@ mod ticks;
 
 pub use error::Error;
 pub use figures::surface::View;
-pub use figures::{all_figures, Aspect, FigureOptions, NumberChoice, FIGURE_NAMES};
+pub use figures::{
+    all_figures, Aspect, FigureOptions, NumberChoice, FIGURE_NAMES, MEASURES_MAX_POINTS,
+};
 pub use geometry::{Px, Rect};
 pub use labels::{place as place_labels, Placed};
 pub use layout::{fit as fit_layout, Layout, LegendLayout};

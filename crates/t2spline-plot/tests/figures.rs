@@ -117,7 +117,7 @@ fn every_figure_has_title_axes_labels_and_a_legend() {
         let names: Vec<&str> = figs.iter().map(|f| f.name).collect();
         // The figures of the plane are drawn for plane curves only.
         let expected = if case.contains("3d") {
-            &FIGURE_NAMES[..8]
+            &FIGURE_NAMES[..9]
         } else {
             &FIGURE_NAMES[..]
         };
@@ -143,6 +143,14 @@ fn every_figure_has_title_axes_labels_and_a_legend() {
             let panels = match fig.name {
                 "number" | "alpha-sweep" | "distance-alpha" | "section" => 1,
                 "membership" => 2,
+                // The length, and the area of a plane curve.
+                "measures" => {
+                    if three_d {
+                        1
+                    } else {
+                        2
+                    }
+                }
                 // The projections and the magnified panel, or the distance
                 // along the curve.
                 "stage4-defuzzified" | "reductions" => {
@@ -560,7 +568,7 @@ mod png {
     fn png_files_are_three_times_the_svg_at_300_dpi_with_text_and_series() {
         let figs = figures("examples/paper-alg-1-1.json", 0.8, NumberChoice::default());
         let files = t2spline_plot::render_files(&figs, t2spline_plot::Format::Png).unwrap();
-        assert_eq!(files.len(), 10);
+        assert_eq!(files.len(), FIGURE_NAMES.len());
         for (fig, (name, bytes)) in figs.iter().zip(&files) {
             assert_eq!(name, &format!("{}.png", fig.name));
             // pHYs after the header: 11811 pixels per metre both ways, unit metre.

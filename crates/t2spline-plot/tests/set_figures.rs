@@ -307,7 +307,7 @@ fn a_station_the_curve_passes_twice_has_two_intervals() {
 #[test]
 fn space_curves_and_surfaces_have_no_figures_of_the_plane() {
     for (job, count) in [
-        ("fixtures/spiral-3d.json", 8),
+        ("fixtures/spiral-3d.json", 9),
         ("examples/fuzzy-terrain.json", 6),
     ] {
         let figs = figures(&read(job), 0.5, &FigureOptions::default());

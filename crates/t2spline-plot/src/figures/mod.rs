@@ -11,6 +11,7 @@
 //! | `alpha-sweep` | distance along t between solution and crisp curve, several α | — |
 //! | `distance-alpha` | `error.max` and `error.rms` against α, both sides of each h | — |
 //! | `reductions` | the solution curve of every type reduction and its distance to the crisp curve | docs/method.md §9 |
+//! | `measures` | the fuzzy arc length and (plane curves) area as fuzzy numbers, the crisp curve's values marked | docs/method.md §11 |
 //! | `membership` | plane curves: `mu_upper` and `mu_lower` in the plane as maps, region outlines as contours | docs/method.md §10 |
 //! | `section` | plane curves: the fuzzy value of y at a station `x = x0` | docs/method.md §10 |
 //!
@@ -21,6 +22,7 @@
 //! output they use are independent of what is drawn.
 
 pub mod curve;
+mod measures;
 mod number;
 mod number_reductions;
 pub mod style;
@@ -30,6 +32,7 @@ use t2spline::job::Job;
 use t2spline::{Alpha, Axis};
 
 pub use curve::reductions_figure;
+pub use measures::measures_figure;
 pub use number::number_figure;
 pub use style::reduction_label;
 
@@ -41,7 +44,7 @@ use surface::{SurfaceScene, View};
 
 /// The file stems of all figures, in the order [`all_figures`] returns them
 /// for a plane curve (a space curve has all but the last two).
-pub const FIGURE_NAMES: [&str; 10] = [
+pub const FIGURE_NAMES: [&str; 11] = [
     "number",
     "stage1-fuzzy",
     "stage2-alpha-cut",
@@ -50,9 +53,15 @@ pub const FIGURE_NAMES: [&str; 10] = [
     "alpha-sweep",
     "distance-alpha",
     "reductions",
+    "measures",
     "membership",
     "section",
 ];
+
+/// The most control points of a curve whose `measures` figure is drawn:
+/// beyond, the largest length and the area are branch-and-bound brackets at
+/// every level, seconds to minutes of work (`t2spline measure` gives them).
+pub const MEASURES_MAX_POINTS: usize = 20;
 
 /// Which number the `number` figure shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -122,7 +131,8 @@ pub struct FigureOptions {
 
 /// Every figure of the job at `alpha`, in the order of [`FIGURE_NAMES`]; a
 /// space curve has all but `membership` and `section` (figures of the
-/// plane), a surface job all but those and `alpha-sweep` and `reductions`. Stages 2–4 follow
+/// plane), a surface job all but those and `alpha-sweep`, `reductions` and `measures`
+/// (nor a curve of more than [`MEASURES_MAX_POINTS`] control points). Stages 2–4 follow
 /// the job's type reduction, as `t2spline run` does (a reduction other than
 /// the paper's cuts stage 2 at 0); `alpha` is the paper's level in the
 /// `number`, `distance-alpha` and `reductions` figures.
@@ -164,7 +174,14 @@ pub fn all_figures(job: &Job, alpha: Alpha, options: &FigureOptions) -> Result<V
                 curve::sweep_figure(job)?,
                 curve::distance_figure(job, alpha.get())?,
                 reductions_figure(job, alpha, options.aspect)?,
-            ])
+            ]
+            .into_iter()
+            .chain(
+                (job.model.control_point_count() <= MEASURES_MAX_POINTS)
+                    .then(|| measures_figure(job))
+                    .transpose()?,
+            )
+            .collect())
         },
         || -> Result<Vec<Figure>, Error> {
             if !matches!(job.model, t2spline::job::Model::Planar(_)) {

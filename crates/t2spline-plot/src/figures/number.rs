@@ -70,7 +70,7 @@ fn membership(p: &mut Panel, x: &Nt2Number) {
 }
 
 /// The height h as a horizontal rule (the level α is added by [`cut`]).
-fn rules(p: &mut Panel, h: f64) {
+pub(super) fn rules(p: &mut Panel, h: f64) {
     p.push(
         "h",
         Mark::HRule {
