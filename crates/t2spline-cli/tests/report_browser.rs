@@ -363,18 +363,18 @@ struct Expected {
     files_everywhere: bool,
 }
 
-/// A plane curve's report: the eight figures of the method and the set
-/// view's two (`membership` and `section`).
+/// A plane curve's report: the eight figures of the method, the fuzzy
+/// measures and the set view's two (`membership` and `section`).
 const CURVE: Expected = Expected {
-    figures: 10,
+    figures: 11,
     png_width: 3000,
     files_everywhere: true,
 };
 
-/// A space curve's report: the eight figures of the method (the set view's
-/// figures are of plane curves).
+/// A space curve's report: the eight figures of the method and the fuzzy
+/// measures (the set view's figures are of plane curves).
 const SPACE_CURVE: Expected = Expected {
-    figures: 8,
+    figures: 9,
     png_width: 3000,
     files_everywhere: true,
 };

@@ -45,8 +45,11 @@ fn a_report_of_200_points_stays_under_5_mb_with_every_part() {
     ] {
         assert!(html.contains(&format!("<section id=\"{id}\">")), "{id}");
     }
-    // Every figure, the membership map and the section included.
+    // Every figure, the membership map and the section included; no
+    // measures (more than MEASURES_MAX_POINTS control points).
     assert_eq!(html.matches("data-svg=").count(), 10);
+    assert!(!html.contains("<section id=\"measures\">"));
+    assert!(!html.contains("href=\"#measures\""));
     assert_eq!(html.matches("data-file=\"stage").count(), 4);
     // Tables list the first 12 points and say where the others are.
     assert!(html.contains("the other 188 are in the downloads"));
@@ -69,4 +72,30 @@ fn a_report_of_a_40_by_40_net_sampled_finely_stays_under_5_mb() {
         "the net is thinned and says so"
     );
     assert_eq!(html.matches("data-file=\"stage").count(), 4);
+}
+
+#[test]
+fn the_report_of_the_example_shows_its_fuzzy_length_and_area_beside_the_distance() {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../examples/paper-alg-1-1.json"
+    );
+    let text = std::fs::read_to_string(path).unwrap();
+    let job = t2spline_io::parse_job(&text, "example").unwrap();
+    let start = Alpha::try_new(0.5).unwrap();
+    let html = render_report(&job, &text, start, &FigureOptions::default()).unwrap();
+    let distance = html.find("<section id=\"distance\">").expect("distance");
+    let measures = html.find("<section id=\"measures\">").expect("measures");
+    let next = html[distance + 1..].find("<section id=").unwrap() + distance + 1;
+    assert_eq!(next, measures, "the measures follow the distance");
+    assert!(html.contains("href=\"#measures\""), "in the contents");
+    let section = &html[measures..];
+    let section = &section[..section[1..]
+        .find("<section id=")
+        .unwrap_or(section.len() - 1)
+        + 1];
+    for text in ["arc length", "area under the curve", "t2spline measure"] {
+        assert!(section.contains(text), "{text}");
+    }
+    assert_eq!(html.matches("data-svg=").count(), 11);
 }

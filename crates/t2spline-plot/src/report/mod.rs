@@ -48,7 +48,7 @@ use crate::figures::curve::{
     stage2_figure, stage3_figure, stage4_figure, sweep_figure, CurveScene, Zoom,
 };
 use crate::figures::surface::{self, SurfaceScene};
-use crate::figures::{number_figure, FigureOptions};
+use crate::figures::{measures_figure, number_figure, FigureOptions, MEASURES_MAX_POINTS};
 use crate::layout;
 use crate::scene::Figure;
 use crate::svg;
@@ -222,10 +222,11 @@ pub fn render(
         return Err(Error::Core(t2spline::Error::MissingAlpha));
     };
     let surface = job.model.is_surface();
-    let (stage1, sweep, compared, set_figures) = if surface {
+    let (stage1, sweep, compared, set_figures, measures) = if surface {
         let scene = SurfaceScene::new(&fig_result, &heights, options.view, options.aspect);
         (
             static_svg(&surface::stage1_figure(&scene)),
+            None,
             None,
             None,
             None,
@@ -240,11 +241,18 @@ pub fn render(
             )),
             _ => None,
         };
+        // Beyond MEASURES_MAX_POINTS the largest length and the area are
+        // branch-and-bound brackets, too slow for a page (`t2spline measure`
+        // gives them), and the section is left out.
+        let measures = (job.model.control_point_count() <= MEASURES_MAX_POINTS)
+            .then(|| measures_figure(job).map(|f| static_svg(&f)))
+            .transpose()?;
         (
             static_svg(&stage1_figure(&scene, &zero)),
             Some(static_svg(&sweep_figure(job)?)),
             Some(static_svg(&reductions_figure(job, start, options.aspect)?)),
             set_figures,
+            measures,
         )
     };
     let table_html: Vec<String> = table_defs
@@ -259,6 +267,7 @@ pub fn render(
         ("stage3", "Stage 3"),
         ("stage4", "Stage 4"),
         ("distance", "Distance and α"),
+        ("measures", "Measures"),
         ("membership", "Membership"),
         ("section", "Section"),
         ("reductions", "Type reductions"),
@@ -266,6 +275,7 @@ pub fn render(
     ]
     .into_iter()
     .filter(|(id, _)| *id != "reductions" || compared.is_some())
+    .filter(|(id, _)| *id != "measures" || measures.is_some())
     .filter(|(id, _)| !matches!(*id, "membership" | "section") || set_figures.is_some())
     .collect();
     page.header(job.description.as_deref(), &start_run, &heights, &contents);
@@ -300,6 +310,17 @@ pub fn render(
         Section { id: "distance", title: "The distance as α varies", svg: &figs[4].svg, figure: "distance-alpha", caption: "Largest and rms distance against α for the paper's type reduction, with both sides of every h; the vertical line is the slider's α.", csv: None, tables: vec![] },
     ] {
         page.section(&s);
+    }
+    if let Some(measures) = &measures {
+        page.section(&Section {
+            id: "measures",
+            title: "The fuzzy length and area (docs/method.md §11)",
+            svg: measures,
+            figure: "measures",
+            caption: "The arc length and the area of every curve whose control points lie inside their cuts, as type-2 fuzzy numbers: at each level α the upper, primary and lower functions' intervals (the extension principle); the crisp curve's values marked. A layer curve's length is not a bound. Does not depend on the slider; t2spline measure prints the intervals.",
+            csv: None,
+            tables: vec![],
+        });
     }
     if let Some(sweep) = &sweep {
         page.section(&Section {
