@@ -56,50 +56,38 @@
     )
 )]
 
+mod chart;
 mod data;
 mod error;
 mod figures;
-mod font;
-mod geometry;
-mod labels;
-mod layout;
 mod measure_view;
-mod obstacles;
 mod output;
-mod panel_layout;
-#[cfg(feature = "png")]
-mod png;
 mod report;
-mod scene;
 mod set_view;
-mod simplify;
-mod style;
-mod svg;
-mod ticks;
 
+pub use chart::geometry::{Px, Rect};
+pub use chart::labels::{place as place_labels, Placed};
+pub use chart::layout::{fit as fit_layout, Layout, LegendLayout};
+pub use chart::obstacles::{panel_obstacles, Obstacles};
+pub use chart::paint::{viridis, Color, Fill, Marker, Shape, Stroke};
+pub use chart::panel_layout::{AxisLayout, PanelLayout};
+#[cfg(feature = "png")]
+pub use chart::png::{svg_to_png, Pixmap, PNG_DPI, PNG_SCALE};
+pub use chart::scene::{ColorBar, Facet, Figure, Item, LegendEntry, Mark, Panel, Priority, Xy};
+pub use chart::simplify::simplify;
+pub use chart::svg::render as render_svg;
 pub use error::Error;
 pub use figures::surface::View;
 pub use figures::{
     all_figures, Aspect, FigureOptions, NumberChoice, FIGURE_NAMES, MEASURES_MAX_POINTS,
 };
-pub use geometry::{Px, Rect};
-pub use labels::{place as place_labels, Placed};
-pub use layout::{fit as fit_layout, Layout, LegendLayout};
-pub use obstacles::{panel_obstacles, Obstacles};
 pub use output::{render_files, Format};
-pub use panel_layout::{AxisLayout, PanelLayout};
-#[cfg(feature = "png")]
-pub use png::{svg_to_png, Pixmap, PNG_DPI, PNG_SCALE};
 pub use report::{render as render_report, Stops, DATA_BUDGET, MAX_FILE_GRID, MAX_FILE_SAMPLES};
-pub use scene::{ColorBar, Facet, Figure, Item, LegendEntry, Mark, Panel, Priority, Xy};
-pub use simplify::simplify;
-pub use style::{viridis, Color, Fill, Marker, Shape, Stroke};
-pub use svg::render as render_svg;
 
 /// The colours of the figures: the Okabe–Ito palette, distinguishable with
 /// the common colour-vision deficiencies, and greys.
 pub mod palette {
-    pub use crate::style::{
+    pub use crate::chart::paint::{
         BLACK, BLUE, GREEN, GREY, GRID, INK, MUTED, ORANGE, PURPLE, SKY, VERMILLION, WHITE,
     };
 }

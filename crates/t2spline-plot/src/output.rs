@@ -1,9 +1,9 @@
 //! Turning figures into file contents, all rendered in memory before a caller
 //! writes any of them (the CLI writes them all or nothing).
 
+use crate::chart::scene::Figure;
+use crate::chart::svg;
 use crate::error::Error;
-use crate::scene::Figure;
-use crate::svg;
 
 /// Which files `plot` writes per figure.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -48,7 +48,7 @@ pub fn render_files(figures: &[Figure], format: Format) -> Result<Vec<(String, V
 
 #[cfg(feature = "png")]
 fn png_bytes(name: &str, svg: &str) -> Result<Vec<u8>, Error> {
-    crate::png::svg_to_png(svg, crate::png::PNG_SCALE).map_err(|message| Error::Png {
+    crate::chart::png::svg_to_png(svg, crate::chart::png::PNG_SCALE).map_err(|message| Error::Png {
         name: name.to_owned(),
         message,
     })

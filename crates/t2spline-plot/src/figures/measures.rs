@@ -13,10 +13,10 @@ use t2spline::Layer;
 
 use super::number::rules;
 use super::style::{crisp_marker, layer_stroke, upper_band};
+use crate::chart::scene::{Figure, LegendEntry, Mark, Panel, Priority, Xy};
+use crate::chart::ticks::short;
 use crate::error::Error;
 use crate::measure_view::{fuzzy_measures, FuzzyQuantity};
-use crate::scene::{Figure, LegendEntry, Mark, Panel, Priority, Xy};
-use crate::ticks::short;
 
 /// The membership function traced by cuts: the least ends up the levels,
 /// then the largest ends down (outer bounds where a cut is not exact).

@@ -36,8 +36,8 @@ pub use measures::measures_figure;
 pub use number::number_figure;
 pub use style::reduction_label;
 
+use crate::chart::scene::Figure;
 use crate::error::Error;
-use crate::scene::Figure;
 use crate::{data, set_view};
 use curve::{CurveScene, Zoom};
 use surface::{SurfaceScene, View};

@@ -8,11 +8,11 @@ use t2spline::{Alpha, AlphaCut, Axis, Interval, Layer, Nt2Number, Tfn, TypeReduc
 
 use super::style::{layer_marker, layer_stroke, upper_band};
 use super::{number_reductions, NumberChoice};
+use crate::chart::paint::{Marker, Shape, Stroke, GREY, INK, PURPLE};
+use crate::chart::scene::{Figure, LegendEntry, Mark, Panel, Priority, Xy};
+use crate::chart::ticks::short;
 use crate::data;
 use crate::error::Error;
-use crate::scene::{Figure, LegendEntry, Mark, Panel, Priority, Xy};
-use crate::style::{Marker, Shape, Stroke, GREY, INK, PURPLE};
-use crate::ticks::short;
 
 /// The type-reduced triangle.
 fn tfn_stroke() -> Stroke {

@@ -10,9 +10,9 @@ use std::f64::consts::PI;
 use t2spline::{Alpha, Nt2Number, TypeReduction};
 
 use super::style::{reduction_label, reduction_marker, reduction_stroke};
-use crate::scene::{LegendEntry, Mark, Panel, Xy};
-use crate::style::Stroke;
-use crate::ticks::short;
+use crate::chart::paint::Stroke;
+use crate::chart::scene::{LegendEntry, Mark, Panel, Xy};
+use crate::chart::ticks::short;
 
 /// Levels `z` at which the alpha-planes' type-reduced set is drawn,
 /// clustered at both ends (`z = (1 − cos πk/64)/2`), where `c_l(z)` and

@@ -1,8 +1,10 @@
-//! How each series of the method looks, the same in every figure.
+//! How each series of the method looks, the same in every figure: the one
+//! place that gives each layer, cut, region and reduction its colour, line and
+//! marker, from the chart engine's vocabulary (`chart/paint.rs`).
 
 use t2spline::{Layer, TypeReduction};
 
-use crate::style::{
+use crate::chart::paint::{
     Fill, Marker, Shape, Stroke, BLACK, BLUE, GREEN, GREY, INK, ORANGE, PURPLE, SKY, VERMILLION,
     WHITE,
 };

@@ -6,9 +6,9 @@
 
 use serde_json::{json, Value};
 
-use crate::layout::{self, Layout};
-use crate::scene::Figure;
-use crate::svg::{self, Part};
+use crate::chart::layout::{self, Layout};
+use crate::chart::scene::Figure;
+use crate::chart::svg::{self, Part};
 
 /// Pixel tolerance of polylines in the report: half a screen pixel.
 pub const REPORT_TOLERANCE: f64 = 0.5;

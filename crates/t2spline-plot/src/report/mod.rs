@@ -42,6 +42,9 @@ use serde_json::{json, Value};
 use t2spline::job::{Job, RunOutput, Samples};
 use t2spline::{Alpha, Axis, Layer, TypeReduction};
 
+use crate::chart::layout;
+use crate::chart::scene::Figure;
+use crate::chart::svg;
 use crate::error::Error;
 use crate::figures::curve::{
     distance_figure, membership_figure, reductions_figure, section_figure, stage1_figure,
@@ -49,9 +52,6 @@ use crate::figures::curve::{
 };
 use crate::figures::surface::{self, SurfaceScene};
 use crate::figures::{measures_figure, number_figure, FigureOptions, MEASURES_MAX_POINTS};
-use crate::layout;
-use crate::scene::Figure;
-use crate::svg;
 use crate::{data, set_view};
 use frames::{frames, Frames, Strings};
 use page::{Page, Section};

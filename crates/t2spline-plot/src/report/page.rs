@@ -9,8 +9,8 @@ use t2spline::job::{Parameter, RunOutput, Spline};
 
 use super::tables::{number_text, rounded};
 use super::Stops;
-use crate::svg::escape;
-use crate::ticks::short;
+use crate::chart::svg::escape;
+use crate::chart::ticks::short;
 
 /// A section of the report: its id, heading, figure, caption, the files
 /// offered beside the figure and the tables under it.

@@ -12,8 +12,8 @@ use std::fmt::Write as _;
 use t2spline::job::{ControlPoints, Parameter, RunOutput};
 use t2spline::Layer;
 
-use crate::svg::escape;
-use crate::ticks::significant;
+use crate::chart::svg::escape;
+use crate::chart::ticks::significant;
 
 /// The most control points a table lists.
 pub const MAX_TABLE_POINTS: usize = 12;

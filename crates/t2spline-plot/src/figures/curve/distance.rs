@@ -5,10 +5,10 @@
 use t2spline::job::Job;
 use t2spline::Alpha;
 
+use crate::chart::paint::{Marker, Shape, Stroke, BLACK, BLUE, GREY, INK};
+use crate::chart::scene::{Figure, LegendEntry, Mark, Panel};
+use crate::chart::ticks::short;
 use crate::data::{self, just_above};
-use crate::scene::{Figure, LegendEntry, Mark, Panel};
-use crate::style::{Marker, Shape, Stroke, BLACK, BLUE, GREY, INK};
-use crate::ticks::short;
 
 /// The alphas at which the distance is computed: 0, 0.01, …, 1, and at
 /// every lower height h in (0, 1) both h and the next float above it.

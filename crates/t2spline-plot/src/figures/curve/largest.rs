@@ -5,10 +5,10 @@
 use t2spline::job::{Job, RunOutput};
 use t2spline::Alpha;
 
+use crate::chart::scene::{Mark, Panel, Priority, Xy};
 use crate::data;
 use crate::error::Error;
 use crate::figures::style::{distance_marker, distance_stroke};
-use crate::scene::{Mark, Panel, Priority, Xy};
 
 /// The two ends of the largest distance: the crisp and the defuzzified curve
 /// at `max_at`, by the library.

@@ -9,13 +9,13 @@ use t2spline::set::Region;
 use t2spline::Membership;
 
 use super::{crisp_curve, CurveScene, Projection};
+use crate::chart::paint::{viridis, Color};
+use crate::chart::scene::{ColorBar, Figure, LegendEntry, Mark, Panel, Xy};
+use crate::chart::ticks::short;
 use crate::error::Error;
 use crate::figures::style::{contour_stroke, crisp_stroke, halo_stroke};
 use crate::figures::Aspect;
-use crate::scene::{ColorBar, Figure, LegendEntry, Mark, Panel, Xy};
 use crate::set_view::{self, Map};
-use crate::style::{viridis, Color};
-use crate::ticks::short;
 
 /// The levels whose regions are drawn as contours.
 pub const CONTOUR_LEVELS: [f64; 4] = [0.2, 0.4, 0.6, 0.8];

@@ -40,11 +40,11 @@ use super::style::{
     crisp_marker, crisp_stroke, lower_band, polygon_stroke, reduction_label, upper_band,
 };
 use super::Aspect;
-use crate::scene::{LegendEntry, Mark, Panel, Priority, Xy};
+use crate::chart::paint::Fill;
+use crate::chart::paint::{Marker, Stroke};
+use crate::chart::scene::{LegendEntry, Mark, Panel, Priority, Xy};
+use crate::chart::ticks::short;
 use crate::set_view::Regions;
-use crate::style::Fill;
-use crate::style::{Marker, Stroke};
-use crate::ticks::short;
 
 const AXIS_NAMES: [&str; 3] = ["x", "y", "z"];
 

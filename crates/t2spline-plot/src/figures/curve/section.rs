@@ -11,12 +11,12 @@ use t2spline::set::SectionLevel;
 use t2spline::{Alpha, Layer, Membership};
 
 use super::CurveScene;
+use crate::chart::paint::{Stroke, GREY, INK};
+use crate::chart::scene::{Figure, LegendEntry, Mark, Panel, Xy};
+use crate::chart::ticks::short;
 use crate::error::Error;
 use crate::figures::style::{layer_marker, layer_stroke, upper_band};
-use crate::scene::{Figure, LegendEntry, Mark, Panel, Xy};
 use crate::set_view;
-use crate::style::{Stroke, GREY, INK};
-use crate::ticks::short;
 
 /// Levels at which the section is cut for the y samples: 0, 0.05, …, 1.
 const LEVELS: u32 = 20;

@@ -8,10 +8,10 @@ use super::{
     crisp_legend, crisp_points, names, point_name, polygon, project, regions, regions_legend,
     weights_phrase, CurveScene,
 };
+use crate::chart::paint::{Stroke, BLUE, GREEN, VERMILLION};
+use crate::chart::scene::{Figure, LegendEntry, Mark, Panel};
 use crate::figures::style::{layer_stroke, FUNCTIONS};
-use crate::scene::{Figure, LegendEntry, Mark, Panel};
 use crate::set_view::Regions;
-use crate::style::{Stroke, BLUE, GREEN, VERMILLION};
 
 /// Stage 1 (paper Fig. 5.1): the fuzzy control points — the crisp point with
 /// bars for its upper, primary and lower interval in each coordinate — the

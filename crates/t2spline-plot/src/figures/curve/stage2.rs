@@ -7,10 +7,10 @@ use super::{
     alpha_phrase, crisp_legend, crisp_points, line, markers, names, point_name, polygon, project,
     regions, regions_legend, CurveScene,
 };
+use crate::chart::scene::{Figure, LegendEntry};
+use crate::chart::ticks::short;
 use crate::figures::style::{layer_marker, layer_stroke, FUNCTIONS};
-use crate::scene::{Figure, LegendEntry};
 use crate::set_view::Regions;
-use crate::ticks::short;
 
 /// The alpha-cut curve of a layer (the crisp curve for the crisp layer);
 /// `None` when the layer has no cut at this alpha.

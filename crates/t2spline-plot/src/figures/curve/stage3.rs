@@ -6,12 +6,12 @@ use super::{
     alpha_phrase, band, crisp_curve, crisp_points, line, markers, names, point_name, polygon,
     project, CurveScene,
 };
+use crate::chart::paint::{Stroke, GREY};
+use crate::chart::scene::{Figure, LegendEntry, Mark, Panel};
+use crate::chart::ticks::short;
 use crate::figures::style::{
     crisp_marker, crisp_stroke, left_marker, left_stroke, reduced_band, right_marker, right_stroke,
 };
-use crate::scene::{Figure, LegendEntry, Mark, Panel};
-use crate::style::{Stroke, GREY};
-use crate::ticks::short;
 
 /// The thin line from a type-reduced left point through the crisp point to
 /// the right point: one type-1 triangle.

@@ -9,11 +9,11 @@ use super::{
     crisp_curve, crisp_legend, crisp_points, line, markers, polygon, project, reduction_phrase,
     CurveScene,
 };
+use crate::chart::scene::{Figure, LegendEntry};
+use crate::chart::ticks::short;
 use crate::data;
 use crate::error::Error;
 use crate::figures::style::{distance_marker, distance_stroke, solution_marker, solution_stroke};
-use crate::scene::{Figure, LegendEntry};
-use crate::ticks::short;
 
 /// Whether stage 4 gets a panel magnifying the largest distance.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

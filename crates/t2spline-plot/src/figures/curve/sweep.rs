@@ -7,10 +7,10 @@
 use t2spline::job::Job;
 use t2spline::Alpha;
 
+use crate::chart::paint::{viridis, Stroke};
+use crate::chart::scene::{Figure, LegendEntry, Mark, Panel};
+use crate::chart::ticks::short;
 use crate::data::{self, figure_samples, just_above};
-use crate::scene::{Figure, LegendEntry, Mark, Panel};
-use crate::style::{viridis, Stroke};
-use crate::ticks::short;
 
 /// The most lower heights that get their two sides drawn.
 const MAX_HEIGHTS: usize = 3;

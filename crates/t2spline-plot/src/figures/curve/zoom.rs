@@ -8,11 +8,11 @@ use t2spline::Alpha;
 
 use super::largest::{largest_distance, Ends};
 use super::{line, markers, projections, Projection};
+use crate::chart::scene::{Panel, Xy};
+use crate::chart::ticks::short;
 use crate::data;
 use crate::error::Error;
 use crate::figures::style::{crisp_marker, crisp_stroke, solution_marker, solution_stroke};
-use crate::scene::{Panel, Xy};
-use crate::ticks::short;
 
 /// Samples of each curve per stretch crossing the window.
 const ZOOM_SAMPLES: usize = 241;

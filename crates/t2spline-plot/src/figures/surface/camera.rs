@@ -16,9 +16,9 @@
 
 use std::str::FromStr;
 
+use crate::chart::scene::Xy;
 use crate::error::Error;
 use crate::figures::Aspect;
-use crate::scene::Xy;
 
 /// A point or vector in 3-D.
 pub type Xyz = [f64; 3];

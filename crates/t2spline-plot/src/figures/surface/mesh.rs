@@ -8,10 +8,10 @@
 //! so what is nearer covers what is behind. Opaque faces are shaded by
 //! [`Camera::brightness`]; translucent envelopes are not.
 
+use crate::chart::paint::{Color, Fill, Stroke, GREY};
+use crate::chart::scene::{Facet, Mark, Panel, Xy};
+use crate::chart::ticks::{decimals_for, nice_ticks, tick_label};
 use crate::figures::surface::camera::{cross, Camera, Xyz};
-use crate::scene::{Facet, Mark, Panel, Xy};
-use crate::style::{Color, Fill, Stroke, GREY};
-use crate::ticks::{decimals_for, nice_ticks, tick_label};
 
 /// A facet and the depth it is sorted by.
 pub type Deep = (f64, Facet);

@@ -27,9 +27,9 @@ use t2spline::Layer;
 
 use super::style::{crisp_marker, polygon_stroke, FUNCTIONS};
 use super::Aspect;
-use crate::scene::{ColorBar, Facet, LegendEntry, Mark, Panel, Xy};
-use crate::style::{viridis, Color, Fill, Stroke, BLUE, GREEN, VERMILLION};
-use crate::ticks::short;
+use crate::chart::paint::{viridis, Color, Fill, Stroke, BLUE, GREEN, VERMILLION};
+use crate::chart::scene::{ColorBar, Facet, LegendEntry, Mark, Panel, Xy};
+use crate::chart::ticks::short;
 use camera::Xyz;
 use mesh::{Deep, GridRef, Paint};
 

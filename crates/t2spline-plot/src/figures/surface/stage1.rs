@@ -5,11 +5,11 @@ use t2spline::job::Points;
 use t2spline::Layer;
 
 use super::{crisp_legend, distances, Bins, SurfaceScene};
+use crate::chart::scene::{Figure, LegendEntry};
 use crate::figures::curve::weights_phrase;
 use crate::figures::style::{layer_stroke, upper_band, FUNCTIONS};
 use crate::figures::surface::mesh::Paint;
 use crate::figures::surface::SURFACE;
-use crate::scene::{Figure, LegendEntry};
 
 /// Stage 1: the shaded crisp surface, the two upper layer surfaces as
 /// translucent envelopes, the boundaries of the primary and lower layer

@@ -3,11 +3,11 @@
 use t2spline::Layer;
 
 use super::{crisp_legend, distances, Bins, SurfaceScene};
+use crate::chart::scene::{Figure, LegendEntry};
 use crate::figures::curve::alpha_phrase;
 use crate::figures::style::{layer_stroke, upper_band, FUNCTIONS};
 use crate::figures::surface::mesh::Paint;
 use crate::figures::surface::SURFACE;
-use crate::scene::{Figure, LegendEntry};
 
 /// Stage 2: the shaded crisp surface, the upper cut surfaces as translucent
 /// envelopes, the boundaries of the primary and (where every number has one)

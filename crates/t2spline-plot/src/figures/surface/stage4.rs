@@ -5,6 +5,9 @@ use t2spline::job::{Job, Parameter};
 use t2spline::Alpha;
 
 use super::{distances, Bins, SurfaceScene};
+use crate::chart::paint::{Marker, Shape, BLACK};
+use crate::chart::scene::{Figure, LegendEntry, Mark, Priority, Xy};
+use crate::chart::ticks::short;
 use crate::data;
 use crate::error::Error;
 use crate::figures::curve::{largest_distance, reduction_phrase};
@@ -12,9 +15,6 @@ use crate::figures::style::{
     distance_marker, distance_stroke, polygon_stroke, solution_marker, solution_stroke,
 };
 use crate::figures::surface::mesh::Paint;
-use crate::scene::{Figure, LegendEntry, Mark, Priority, Xy};
-use crate::style::{Marker, Shape, BLACK};
-use crate::ticks::short;
 
 /// Stage 4: the crisp surface coloured by `‖D(u, v) − C(u, v)‖` (the
 /// distance to the defuzzified surface at equal parameters, lightly shaded),
@@ -89,7 +89,7 @@ pub fn stage4_figure(job: &Job, scene: &SurfaceScene<'_>) -> Result<Figure, Erro
     let legend = vec![
         LegendEntry::area(
             "crisp surface, coloured by its distance to the defuzzified one",
-            crate::style::Fill {
+            crate::chart::paint::Fill {
                 color: bins.colour(0.5 * bins.max),
                 opacity: 1.0,
             },

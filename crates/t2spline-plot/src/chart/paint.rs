@@ -1,4 +1,6 @@
-//! Colours, line styles and markers: one place decides how every series looks.
+//! The drawing vocabulary: colours, line styles, fills and markers, and the
+//! palette. Which series of the method gets which is decided in one place,
+//! `figures/style.rs`; the chart engine only draws them.
 //!
 //! Colours are the Okabe–Ito palette (distinguishable with the common colour
 //! vision deficiencies); every series also differs in dash pattern, width or

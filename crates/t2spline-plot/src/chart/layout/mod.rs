@@ -16,12 +16,12 @@ mod texts;
 pub use legend::{LegendLayout, LEGEND_ROW, LEGEND_SWATCH};
 pub use texts::{wrap, FixedLabels};
 
-use crate::font::{cap_height, line_height};
-use crate::geometry::Rect;
-use crate::obstacles::{add_panel, Obstacles};
-use crate::panel_layout::PanelLayout;
-use crate::scene::{Figure, Priority};
-use crate::style::font_size;
+use crate::chart::font::{cap_height, line_height};
+use crate::chart::geometry::Rect;
+use crate::chart::obstacles::{add_panel, Obstacles};
+use crate::chart::paint::font_size;
+use crate::chart::panel_layout::PanelLayout;
+use crate::chart::scene::{Figure, Priority};
 use axes::{data_ranges, label_width, placed, with_ranges};
 use legend::LegendSize;
 
@@ -55,7 +55,7 @@ pub struct Layout {
     pub notes_top: f64,
     /// Texts placed once for every figure laid out, per panel.
     pub labels: Vec<FixedLabels>,
-    /// Polylines are simplified to within this many pixels ([`crate::simplify`]).
+    /// Polylines are simplified to within this many pixels ([`crate::chart::simplify`]).
     pub tolerance: f64,
 }
 
@@ -406,9 +406,9 @@ pub fn fit_probed(figures: &[&Figure], probes: &[usize]) -> Layout {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scene::LegendEntry;
-    use crate::scene::{Mark, Panel, Xy};
-    use crate::style::{Stroke, BLACK};
+    use crate::chart::paint::{Stroke, BLACK};
+    use crate::chart::scene::LegendEntry;
+    use crate::chart::scene::{Mark, Panel, Xy};
 
     fn figure(points: Vec<Xy>) -> Figure {
         let mut p = Panel::curves("x", "y");
@@ -450,7 +450,7 @@ mod tests {
         let l = fit(&[&f]);
         let legend = l.legend.expect("a legend");
         assert_eq!(legend.panel, Some(0));
-        let o = crate::obstacles::panel_obstacles(&f.panels[0], &l.panels[0]);
+        let o = crate::chart::obstacles::panel_obstacles(&f.panels[0], &l.panels[0]);
         assert_eq!(o.hits(&legend.rect), 0);
     }
 

@@ -7,7 +7,7 @@ use std::sync::{Arc, OnceLock};
 use resvg::tiny_skia;
 use resvg::usvg::{self, fontdb};
 
-use crate::font::{FONT_BYTES, FONT_FAMILY};
+use crate::chart::font::{FONT_BYTES, FONT_FAMILY};
 
 /// The decoded image type, for checking PNG files.
 pub use resvg::tiny_skia::Pixmap;

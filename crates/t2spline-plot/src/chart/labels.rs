@@ -15,12 +15,12 @@
 //! the indexed [`Obstacles`], so placing `n` labels costs `O(n)` bounded
 //! queries.
 
-use crate::font::{cap_height, line_height, text_width};
-use crate::geometry::{Px, Rect};
-use crate::obstacles::Obstacles;
-use crate::panel_layout::PanelLayout;
-use crate::scene::{Mark, Panel, Priority};
-use crate::style::font_size;
+use crate::chart::font::{cap_height, line_height, text_width};
+use crate::chart::geometry::{Px, Rect};
+use crate::chart::obstacles::Obstacles;
+use crate::chart::paint::font_size;
+use crate::chart::panel_layout::PanelLayout;
+use crate::chart::scene::{Mark, Panel, Priority};
 
 /// A placed text: its box, where its baseline starts, and an optional leader
 /// line from the anchor to the box.
@@ -135,7 +135,7 @@ pub fn place(
     }
     for item in &panel.items {
         if let Mark::Text { at, text } = &item.mark {
-            texts.add_rect(crate::obstacles::text_rect(pl, *at, text));
+            texts.add_rect(crate::chart::obstacles::text_rect(pl, *at, text));
         }
     }
     let plot = pl.plot.grow(-1.0);
@@ -226,8 +226,8 @@ fn around(anchor: Px, text: &str, radii: &[f64]) -> Vec<Candidate> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::panel_layout::AxisLayout;
-    use crate::style::{Stroke, BLACK};
+    use crate::chart::paint::{Stroke, BLACK};
+    use crate::chart::panel_layout::AxisLayout;
 
     fn layout() -> PanelLayout {
         let axis = |r| AxisLayout {
@@ -272,7 +272,7 @@ mod tests {
             label(&mut p, &format!("l{k}"), [5.0, 5.0], Priority::Always);
         }
         let pl = layout();
-        let o = crate::obstacles::panel_obstacles(&p, &pl);
+        let o = crate::chart::obstacles::panel_obstacles(&p, &pl);
         let placed: Vec<Placed> = place(&p, &pl, &o, &[]).into_iter().flatten().collect();
         assert_eq!(placed.len(), 3);
         for (i, a) in placed.iter().enumerate() {
@@ -292,7 +292,7 @@ mod tests {
         }
         label(&mut p, "a", [5.0, 5.0], Priority::Always);
         let pl = layout();
-        let o = crate::obstacles::panel_obstacles(&p, &pl);
+        let o = crate::chart::obstacles::panel_obstacles(&p, &pl);
         let placed = place(&p, &pl, &o, &[]);
         let names = placed[..40].iter().flatten().count();
         assert!(names > 0 && names < 40, "{names} names placed");

@@ -2,12 +2,12 @@
 //! drawn (a corner first, then the middle of an edge), otherwise in as many
 //! columns as fit below the panels.
 
-use crate::font::text_width;
-use crate::geometry::{Px, Rect};
-use crate::obstacles::Obstacles;
-use crate::panel_layout::PanelLayout;
-use crate::scene::LegendEntry;
-use crate::style::font_size;
+use crate::chart::font::text_width;
+use crate::chart::geometry::{Px, Rect};
+use crate::chart::obstacles::Obstacles;
+use crate::chart::paint::font_size;
+use crate::chart::panel_layout::PanelLayout;
+use crate::chart::scene::LegendEntry;
 
 use super::PAD;
 

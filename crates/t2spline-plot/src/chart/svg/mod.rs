@@ -12,14 +12,14 @@ mod legend;
 mod marks;
 pub(crate) mod number;
 
-use crate::font::{cap_height, line_height, SVG_FONT_STACK};
-use crate::geometry::{Px, Rect};
-use crate::labels::{place, Placed};
-use crate::layout::{self, Layout, TICK_LEN};
-use crate::obstacles::panel_obstacles;
-use crate::panel_layout::PanelLayout;
-use crate::scene::{Figure, Item, Mark, Panel};
-use crate::style::{font_size, Stroke, GRID, INK, WHITE};
+use crate::chart::font::{cap_height, line_height, SVG_FONT_STACK};
+use crate::chart::geometry::{Px, Rect};
+use crate::chart::labels::{place, Placed};
+use crate::chart::layout::{self, Layout, TICK_LEN};
+use crate::chart::obstacles::panel_obstacles;
+use crate::chart::paint::{font_size, Stroke, GRID, INK, WHITE};
+use crate::chart::panel_layout::PanelLayout;
+use crate::chart::scene::{Figure, Item, Mark, Panel};
 use number::coord;
 
 /// One piece of a figure's SVG, with a key stable across figures of one kind.
@@ -331,7 +331,7 @@ fn frame(panel: &Panel, pl: &PanelLayout, clip: &str) -> String {
     let widest =
         pl.y.labels()
             .iter()
-            .map(|l| crate::font::text_width(l, font_size::TICK))
+            .map(|l| crate::chart::font::text_width(l, font_size::TICK))
             .fold(0.0, f64::max);
     let yl_x = r.x - TICK_LEN - 3.0 - widest - 6.0;
     let yc = r.y + 0.5 * r.h;

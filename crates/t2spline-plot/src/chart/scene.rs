@@ -1,8 +1,8 @@
 //! What a figure shows, in data coordinates: panels of keyed items, a legend
-//! and an optional colour bar. [`crate::layout`] places it on a page and
-//! [`crate::svg`] writes it; nothing here knows about pixels.
+//! and an optional colour bar. [`crate::chart::layout`] places it on a page and
+//! [`crate::chart::svg`] writes it; nothing here knows about pixels.
 
-use crate::style::{Color, Fill, Marker, Stroke};
+use crate::chart::paint::{Color, Fill, Marker, Stroke};
 
 /// A point in a panel's data coordinates.
 pub type Xy = [f64; 2];

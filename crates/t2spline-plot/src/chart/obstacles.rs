@@ -13,9 +13,9 @@
 
 use std::cell::OnceCell;
 
-use crate::geometry::{Px, Rect};
-use crate::panel_layout::PanelLayout;
-use crate::scene::{Mark, Panel};
+use crate::chart::geometry::{Px, Rect};
+use crate::chart::panel_layout::PanelLayout;
+use crate::chart::scene::{Mark, Panel};
 
 /// Side of a grid cell in pixels: a few times a curve's sampling step and
 /// about a label's height.
@@ -342,8 +342,8 @@ pub fn panel_obstacles(panel: &Panel, pl: &PanelLayout) -> Obstacles {
 #[must_use]
 pub fn text_rect(pl: &PanelLayout, at: [f64; 2], text: &str) -> Rect {
     let [x, y] = pl.to_px(at);
-    let w = crate::font::text_width(text, crate::style::font_size::TICK);
-    let h = crate::font::line_height(crate::style::font_size::TICK);
+    let w = crate::chart::font::text_width(text, crate::chart::paint::font_size::TICK);
+    let h = crate::chart::font::line_height(crate::chart::paint::font_size::TICK);
     Rect {
         x: x - 0.5 * w,
         y: y - 0.5 * h,

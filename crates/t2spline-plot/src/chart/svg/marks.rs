@@ -4,12 +4,12 @@
 use std::fmt::Write as _;
 
 use super::number::coord;
-use crate::geometry::Px;
-use crate::labels::Placed;
-use crate::panel_layout::PanelLayout;
-use crate::scene::{Facet, Mark, Xy};
-use crate::simplify::simplify;
-use crate::style::{font_size, Marker, Shape, GREY, WHITE};
+use crate::chart::geometry::Px;
+use crate::chart::labels::Placed;
+use crate::chart::paint::{font_size, Marker, Shape, GREY, WHITE};
+use crate::chart::panel_layout::PanelLayout;
+use crate::chart::scene::{Facet, Mark, Xy};
+use crate::chart::simplify::simplify;
 
 use super::{points_attr, stroke_attrs, text_el};
 
@@ -32,7 +32,7 @@ fn stretches(points: &[Xy], pl: &PanelLayout, tolerance: f64) -> Vec<Vec<Px>> {
 /// gaps (a jump that no line may bridge).
 fn line(
     points: &[Xy],
-    stroke: &crate::style::Stroke,
+    stroke: &crate::chart::paint::Stroke,
     pl: &PanelLayout,
     clip_attr: &str,
     tolerance: f64,
@@ -116,7 +116,7 @@ pub(super) fn mark(m: &Mark, pl: &PanelLayout, clip: &str, tolerance: f64) -> St
             let [x, y] = pl.to_px(*at);
             text_el(
                 x,
-                y + 0.5 * crate::font::cap_height(font_size::TICK),
+                y + 0.5 * crate::chart::font::cap_height(font_size::TICK),
                 font_size::TICK,
                 "middle",
                 &format!(" stroke=\"{WHITE}\" stroke-width=\"3\" stroke-linejoin=\"round\" paint-order=\"stroke\""),
@@ -132,7 +132,7 @@ pub(super) fn mark(m: &Mark, pl: &PanelLayout, clip: &str, tolerance: f64) -> St
 /// within `tolerance` as a closed line (its first vertex kept).
 fn region(
     rings: &[Vec<Xy>],
-    fill: &crate::style::Fill,
+    fill: &crate::chart::paint::Fill,
     pl: &PanelLayout,
     clip_attr: &str,
     tolerance: f64,
@@ -173,7 +173,7 @@ fn region(
 /// Tiles: one `<path>` of rectangles per colour, `crispEdges` (no
 /// anti-aliasing, so tiles that touch show no seam between them).
 fn tiles_el(
-    tiles: &[(crate::style::Color, Vec<[Xy; 2]>)],
+    tiles: &[(crate::chart::paint::Color, Vec<[Xy; 2]>)],
     pl: &PanelLayout,
     clip_attr: &str,
 ) -> String {

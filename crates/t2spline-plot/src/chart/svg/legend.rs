@@ -3,12 +3,12 @@
 use std::fmt::Write as _;
 
 use super::number::coord;
-use crate::font::cap_height;
-use crate::geometry::Rect;
-use crate::layout::{LegendLayout, LEGEND_ROW, LEGEND_SWATCH, NOTE_ROW};
-use crate::scene::{ColorBar, LegendEntry};
-use crate::style::{font_size, Fill, INK, MUTED, WHITE};
-use crate::ticks::short;
+use crate::chart::font::cap_height;
+use crate::chart::geometry::Rect;
+use crate::chart::layout::{LegendLayout, LEGEND_ROW, LEGEND_SWATCH, NOTE_ROW};
+use crate::chart::paint::{font_size, Fill, INK, MUTED, WHITE};
+use crate::chart::scene::{ColorBar, LegendEntry};
+use crate::chart::ticks::short;
 
 use super::marks::markers;
 use super::{rect_attrs, stroke_attrs, text_el};

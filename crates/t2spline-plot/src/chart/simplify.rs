@@ -1,7 +1,7 @@
 //! Fewer vertices for the same drawing: polylines simplified to within a
 //! fraction of a pixel before they are written.
 
-use crate::geometry::Px;
+use crate::chart::geometry::Px;
 
 /// Drops polyline vertices that lie within `tolerance` pixels of the drawn
 /// line; the ends are kept.

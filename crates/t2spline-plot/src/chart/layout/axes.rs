@@ -1,12 +1,12 @@
 //! Axes: data ranges fitted to what the panels draw (padded, equal aspect
 //! where asked) and nice ticks.
 
-use crate::font::text_width;
-use crate::geometry::Rect;
-use crate::panel_layout::{AxisLayout, PanelLayout};
-use crate::scene::{Figure, Mark, Panel, Xy};
-use crate::style::font_size;
-use crate::ticks::{decimals_for, nice_ticks};
+use crate::chart::font::text_width;
+use crate::chart::geometry::Rect;
+use crate::chart::paint::font_size;
+use crate::chart::panel_layout::{AxisLayout, PanelLayout};
+use crate::chart::scene::{Figure, Mark, Panel, Xy};
+use crate::chart::ticks::{decimals_for, nice_ticks};
 
 /// Data bounds of a panel's items: `[x0, x1, y0, y1]`.
 pub(super) fn bounds(panel: &Panel) -> Option<[f64; 4]> {

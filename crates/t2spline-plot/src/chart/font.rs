@@ -8,7 +8,7 @@
 use std::sync::OnceLock;
 
 /// The font file, DejaVu Sans 2.37 from Debian's `fonts-dejavu-core`.
-pub const FONT_BYTES: &[u8] = include_bytes!("../fonts/DejaVuSans.ttf");
+pub const FONT_BYTES: &[u8] = include_bytes!("../../fonts/DejaVuSans.ttf");
 
 /// The family name inside [`FONT_BYTES`].
 #[cfg(any(feature = "png", test))]

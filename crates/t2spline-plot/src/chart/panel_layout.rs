@@ -3,9 +3,9 @@
 //! computes and what everything drawn on a panel (obstacles, labels, SVG)
 //! reads.
 
-use crate::geometry::{Px, Rect};
-use crate::scene::Xy;
-use crate::ticks::tick_label;
+use crate::chart::geometry::{Px, Rect};
+use crate::chart::scene::Xy;
+use crate::chart::ticks::tick_label;
 
 /// One axis of a panel: its range and ticks.
 #[derive(Clone, Debug, PartialEq)]

@@ -1,13 +1,13 @@
 //! Texts of a layout: subtitles wrapped to the page, and the labels that are
 //! the same in every figure laid out, placed once.
 
-use crate::font::{line_height, text_width};
-use crate::geometry::Rect;
-use crate::labels::{place, Placed};
-use crate::obstacles::Obstacles;
-use crate::panel_layout::PanelLayout;
-use crate::scene::{Figure, Mark, Panel, Priority};
-use crate::style::font_size;
+use crate::chart::font::{line_height, text_width};
+use crate::chart::geometry::Rect;
+use crate::chart::labels::{place, Placed};
+use crate::chart::obstacles::Obstacles;
+use crate::chart::paint::font_size;
+use crate::chart::panel_layout::PanelLayout;
+use crate::chart::scene::{Figure, Mark, Panel, Priority};
 
 use super::axes::with_ranges;
 
