@@ -1,5 +1,11 @@
+use super::downloads::{files_of, unpack};
 use super::*;
 use base64::Engine as _;
+use serde_json::{json, Value};
+use t2spline::job::RunOutput;
+use t2spline::TypeReduction;
+
+use crate::data;
 
 fn example() -> (Job, String) {
     let path =
