@@ -13,6 +13,7 @@ from .types import (
     CentroidMethod,
     DirectionName,
     Distance,
+    DistanceSweep,
     FitSummary,
     Floats,
     GeoMultiPolygon,
@@ -279,6 +280,7 @@ class FuzzyCurve:
         at: Optional[ArrayLike] = None,
         order: int = 1,
     ) -> Measures: ...
+    def distance_sweep(self, alphas: ArrayLike, samples: int = 1001) -> DistanceSweep: ...
 
 @final
 class Region:
@@ -462,6 +464,9 @@ class FuzzySurface:
     def section(
         self, x0: float, y0: float, levels: Union[int, ArrayLike] = 11
     ) -> list[SectionLevel]: ...
+    def distance_sweep(
+        self, alphas: ArrayLike, samples: Union[int, Tuple[int, int]] = 101
+    ) -> DistanceSweep: ...
 
 @final
 class SurfaceSolution:

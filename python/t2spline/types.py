@@ -27,6 +27,7 @@ __all__ = [
     "Deviation",
     "DirectionName",
     "Distance",
+    "DistanceSweep",
     "FitSummary",
     "Floats",
     "GeoMultiPolygon",
@@ -283,6 +284,18 @@ class MembershipGrid(TypedDict):
     upper: Floats
     primary: Floats
     lower: Floats
+
+
+class DistanceSweep(TypedDict):
+    """``FuzzyCurve.distance_sweep`` and ``FuzzySurface.distance_sweep``: the
+    levels ``alpha``, the sampled ``max`` and ``rms`` distance at each
+    ``(L,)``, and the distances themselves, ``(L, samples)`` along a curve or
+    ``(L, su, sv)`` on a surface's grid."""
+
+    alpha: Floats
+    max: Floats
+    rms: Floats
+    distance: Floats
 
 
 class GeoMultiPolygon(TypedDict):

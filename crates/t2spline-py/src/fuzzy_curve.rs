@@ -327,6 +327,46 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
         crate::measure::curve_measure(py, &self.0, levels, at, order)
     }
 
+    /// The distance between the crisp curve and the defuzzified curve of
+    /// the paper's type reduction at each level of ``alphas``, sampled at
+    /// ``samples`` uniform parameters (docs/method.md §7): what the figure
+    /// of the distance against alpha draws, for a hundred levels at once.
+    /// ``max`` and ``rms`` are those of the samples (the trapezoidal rule);
+    /// ``solve(alpha).distance`` gives the exact ones of one level.
+    ///
+    /// Parameters
+    /// ----------
+    /// alphas : float or array_like
+    ///     The levels, each in [0, 1].
+    /// samples : int, optional
+    ///     Uniform parameters over the domain (at least 2, default 1001).
+    ///
+    /// Returns
+    /// -------
+    /// dict
+    ///     ``"alpha"``, ``"max"``, ``"rms"``: arrays of shape ``(L,)``;
+    ///     ``"distance"``: ``(L, samples)``, ``‖D(t) − C(t)‖`` at each level.
+    ///
+    /// Examples
+    /// --------
+    /// >>> import numpy as np
+    /// >>> c = np.array([[0.0, 0.0], [4.0, 0.0]])
+    /// >>> s = np.array([[[-1.0, 2.0], [0.0, 0.0]], [[-1.0, 2.0], [0.0, 0.0]]])
+    /// >>> line = FuzzyCurve(c, c[..., None] + s, c[..., None] + 0 * s,
+    /// ...                   c[..., None] + 0 * s, lower_height=1.0, degree=1)
+    /// >>> d = line.distance_sweep([0.0, 1.0], samples=5)
+    /// >>> d["distance"].shape, [round(float(m), 12) for m in d["max"]]
+    /// ((2, 5), [0.111111111111, 0.0])
+    #[pyo3(signature = (alphas, samples=None), text_signature = "($self, alphas, samples=1001)")]
+    fn distance_sweep<'py>(
+        &self,
+        py: Python<'py>,
+        alphas: &Bound<'py, PyAny>,
+        samples: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        crate::distance_sweep::curve_sweep(py, &self.0, alphas, samples)
+    }
+
     /// The membership grades of the cell centres of a regular grid over a
     /// plane curve: the footprint of uncertainty as maps, for
     /// ``matplotlib.pyplot.pcolormesh`` or ``imshow``. Each value is the

@@ -307,6 +307,45 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
         crate::set::surface_section(py, &self.0, x0, y0, levels)
     }
 
+    /// The distance between the crisp surface and the defuzzified surface
+    /// of the paper's type reduction at each level of ``alphas``, sampled on
+    /// a uniform grid (docs/method.md §7), as ``FuzzyCurve.distance_sweep``:
+    /// the grid's trapezoidal rule gives ``rms``.
+    ///
+    /// Parameters
+    /// ----------
+    /// alphas : float or array_like
+    ///     The levels, each in [0, 1].
+    /// samples : int or (int, int), optional
+    ///     Uniform parameters along u and v (each at least 2, default 101).
+    ///
+    /// Returns
+    /// -------
+    /// dict
+    ///     ``"alpha"``, ``"max"``, ``"rms"``: ``(L,)``; ``"distance"``:
+    ///     ``(L, su, sv)``.
+    ///
+    /// Examples
+    /// --------
+    /// >>> import numpy as np
+    /// >>> x, y = np.meshgrid([0.0, 2.0], [0.0, 2.0], indexing="ij")
+    /// >>> crisp = np.stack([x, y, 0 * x], axis=-1)
+    /// >>> s = np.array([0.0, 0.0, 1.0])[:, None] * np.array([-1.0, 2.0])
+    /// >>> flat = FuzzySurface(crisp, crisp[..., None] + s, crisp[..., None] + 0 * s,
+    /// ...                     crisp[..., None] + 0 * s, lower_height=1.0, degree=1)
+    /// >>> d = flat.distance_sweep(0.0, samples=(3, 4))
+    /// >>> d["distance"].shape, round(float(d["rms"][0]), 12)
+    /// ((1, 3, 4), 0.111111111111)
+    #[pyo3(signature = (alphas, samples=None), text_signature = "($self, alphas, samples=101)")]
+    fn distance_sweep<'py>(
+        &self,
+        py: Python<'py>,
+        alphas: &Bound<'py, PyAny>,
+        samples: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyDict>> {
+        crate::distance_sweep::surface_sweep(py, &self.0, alphas, samples)
+    }
+
     fn __repr__(&self) -> String {
         let ((a, b), (c, e)) = self.domain();
         by_dim!(&self.0, |s| {

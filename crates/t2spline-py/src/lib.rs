@@ -50,6 +50,7 @@ mod construct;
 mod curvature;
 mod curve_methods;
 mod dim;
+mod distance_sweep;
 mod errors;
 mod fit;
 mod fuzzy_curve;
