@@ -29,15 +29,7 @@ fn levels(arg: &Bound<'_, PyAny>) -> PyResult<Vec<Alpha>> {
             shape_text(&given.shape)
         )));
     }
-    given
-        .data
-        .iter()
-        .enumerate()
-        .map(|(i, &v)| {
-            Alpha::try_new(v)
-                .map_err(|_| PyValueError::new_err(format!("alphas[{i}]: {v} is outside [0, 1]")))
-        })
-        .collect()
+    keyword::alphas(&given.data, "alphas")
 }
 
 /// A count of samples along one direction, at least 2.

@@ -247,3 +247,18 @@ pub(crate) fn count(value: i64, name: &str, min: usize) -> PyResult<usize> {
             PyValueError::new_err(format!("{name}: must be at least {min}, got {value}"))
         })
 }
+
+/// Levels given as floats (`levels=`, `alphas=`), each in [0, 1].
+///
+/// # Errors
+/// `ValueError` naming `name[i]` for the first level outside [0, 1].
+pub(crate) fn alphas(values: &[f64], name: &str) -> PyResult<Vec<t2spline::Alpha>> {
+    values
+        .iter()
+        .enumerate()
+        .map(|(i, &v)| {
+            t2spline::Alpha::try_new(v)
+                .map_err(|_| PyValueError::new_err(format!("{name}[{i}]: {v} is outside [0, 1]")))
+        })
+        .collect()
+}

@@ -427,15 +427,7 @@ fn levels(arg: Option<&Bound<'_, PyAny>>) -> PyResult<Vec<Alpha>> {
             shape_text(&given.shape)
         )));
     }
-    given
-        .data
-        .iter()
-        .enumerate()
-        .map(|(i, &v)| {
-            Alpha::try_new(v)
-                .map_err(|_| PyValueError::new_err(format!("levels[{i}]: {v} is outside [0, 1]")))
-        })
-        .collect()
+    keyword::alphas(&given.data, "levels")
 }
 
 /// `n ≥ 2` levels from 0 to 1.
