@@ -470,8 +470,8 @@ proptest! {
 
 #[test]
 fn the_example_holds_every_admissible_curve_drawn() {
-    // 500 random admissible curves per function at three levels, and all
-    // 256 vertices.
+    // 1200 random admissible curves per function at three levels (10 800
+    // in all), and all 256 vertices.
     let c = example();
     let mut state = 0x2545_f491_4f6c_dd1d_u64;
     let mut next = || {
@@ -480,7 +480,7 @@ fn the_example_holds_every_admissible_curve_drawn() {
         state ^= state << 17;
         (state >> 11) as f64 / (1u64 << 53) as f64
     };
-    let draws: Vec<Vec<f64>> = (0..500).map(|_| (0..8).map(|_| next()).collect()).collect();
+    let draws: Vec<Vec<f64>> = (0..1200).map(|_| (0..8).map(|_| next()).collect()).collect();
     for m in MEMBERSHIPS {
         for a in [0.0, 0.5, 0.6] {
             check_sound(&c, m, alpha(a), &draws, true);
