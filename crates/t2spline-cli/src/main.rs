@@ -10,6 +10,7 @@ mod cli;
 mod cmd;
 mod exit;
 mod output;
+mod serve;
 mod signals;
 
 use std::io::Write;
