@@ -348,7 +348,9 @@ function showNumbers() {
   status.textContent = bad ? state.problems.join("\n") : "";
   document.body.dataset.state = bad ? "problems" : (r ? "ok" : "loading");
   if (r) {
-    $("m-regime").textContent = r.regime;
+    const regime = r.regime === undefined ? null : r.regime;
+    $("m-regime").textContent = regime === null ? "– (alpha not used)" : regime;
+    $("m-regime").dataset.value = JSON.stringify(regime);
     setNumber("m-max", r.error.max);
     setNumber("m-max-at", r.error.max_at);
     setNumber("m-rms", r.error.rms);
