@@ -7,7 +7,7 @@
 //! | `GET /api/job` | `{"name", "text", "saveable"}`: the job as read at start |
 //! | `POST /api/run` | the result, the bytes `t2spline run` writes |
 //! | `POST /api/canonical` | the job in canonical form (explicit knots, weights, heights) |
-//! | `POST /api/region` | the regions at the job's alpha, as `t2spline region` writes them |
+//! | `POST /api/region[?tolerance=T]` | the regions at the job's alpha, as `t2spline region [--tolerance T]` writes them |
 //! | `POST /api/membership` | `{"job": TEXT, "points": CSV}`: the grades, as `t2spline membership` writes them |
 //! | `POST /api/save` | the job written over the file named on the command line, as `run -o` writes |
 //!
@@ -23,7 +23,7 @@ use tiny_http::Request;
 
 use super::security::header;
 use super::{Answer, Served};
-use crate::cmd::prepare::about_run;
+use crate::cmd::prepare::{about_run, OptionError};
 use crate::exit::Exit;
 
 /// As `run` refuses a missing alpha.
@@ -48,7 +48,7 @@ fn failed(e: &anyhow::Error) -> Answer {
 pub fn with_body(
     request: &mut Request,
     job: &Served,
-    answer: fn(&str, &Served) -> anyhow::Result<Answer>,
+    answer: impl FnOnce(&str, &Served) -> anyhow::Result<Answer>,
 ) -> Answer {
     // A declared length past the limit is refused unread.
     let declared = header(request, "Content-Length").and_then(|l| l.trim().parse::<u64>().ok());
@@ -101,11 +101,20 @@ pub fn canonical(text: &str, job: &Served) -> anyhow::Result<Answer> {
     Ok(Answer::json(200, &t2spline_io::job_json(&parsed)))
 }
 
-/// `t2spline region`'s GeoJSON at the job's alpha.
-pub fn region(text: &str, job: &Served) -> anyhow::Result<Answer> {
+/// `t2spline region`'s GeoJSON at the job's alpha, with the query's
+/// `tolerance` as `--tolerance` (the page asks for a fraction of a pixel:
+/// the default, 1e-6 of the diagonal, costs tens of milliseconds).
+pub fn region(text: &str, job: &Served, query: Option<&str>) -> anyhow::Result<Answer> {
+    let tolerance = match query {
+        None => None,
+        Some(t) => Some(t.parse::<f64>().map_err(|_| OptionError {
+            option: "--tolerance",
+            message: format!("{}: not a number", t2spline_io::printable(t)),
+        })?),
+    };
     let prepared = prepare(text, job)?;
     let alpha = prepared.settings().alpha();
-    let bytes = crate::cmd::region::geojson(prepared.job(), alpha, None)?;
+    let bytes = crate::cmd::region::geojson(prepared.job(), alpha, tolerance)?;
     Ok(Answer::new(200, "application/geo+json", bytes))
 }
 

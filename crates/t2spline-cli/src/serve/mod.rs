@@ -159,7 +159,12 @@ impl Server {
             ("GET", "/api/job") => api::job(&self.job),
             ("POST", "/api/run") => api::with_body(request, &self.job, api::run),
             ("POST", "/api/canonical") => api::with_body(request, &self.job, api::canonical),
-            ("POST", "/api/region") => api::with_body(request, &self.job, api::region),
+            ("POST", "/api/region") => {
+                let tolerance = security::query(&url, "tolerance").map(str::to_owned);
+                api::with_body(request, &self.job, |text, job| {
+                    api::region(text, job, tolerance.as_deref())
+                })
+            }
             ("POST", "/api/membership") => api::with_body(request, &self.job, api::membership),
             ("POST", "/api/save") => api::with_body(request, &self.job, api::save),
             (_, "/" | "/api/job" | "/api/run" | "/api/canonical" | "/api/region")

@@ -103,13 +103,19 @@ function schedule() {
   });
 }
 
+/** The regions' tolerance: a quarter of a pixel of the view (at 1000 px). */
+function regionTolerance() {
+  const v = state.view || fitView();
+  return (W / v.s / 4000).toPrecision(2);
+}
+
 async function compute(text) {
   const start = performance.now();
   state.requests += 1;
   const curve = !isSurface();
   const [run, region] = await Promise.all([
     api("/api/run", text),
-    curve ? api("/api/region", text) : Promise.resolve(null),
+    curve ? api("/api/region?tolerance=" + regionTolerance(), text) : Promise.resolve(null),
   ]);
   state.ms = performance.now() - start;
   if (run.status === 200) {
