@@ -10,7 +10,6 @@ mod cli;
 mod cmd;
 mod exit;
 mod output;
-mod serve;
 mod signals;
 
 use std::io::Write;

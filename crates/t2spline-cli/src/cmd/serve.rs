@@ -1,10 +1,17 @@
-//! `t2spline serve [JOB.json] [--port N]`: the live editor in the browser
-//! (`serve/`). Reads the job once (as `run` reads it), listens on loopback,
-//! prints the page's address as its first line and answers until Ctrl-C.
+//! `t2spline serve [JOB.json] [--port N]`: the live editor in the browser.
+//! Reads the job once (as `run` reads it), listens on loopback, prints the
+//! page's address as its first line and answers until Ctrl-C: the server in
+//! `serve/server.rs`, its checks in `serve/security.rs`, the JSON API in
+//! `serve/api.rs` (through `prepare.rs`, `region.rs`, `membership.rs`), the
+//! page in `serve/page.{html,css,js}`.
+
+mod api;
+mod security;
+mod server;
 
 use crate::cli::ServeArgs;
 use crate::output::{is_stdio, job_name, read_input, to_stdout};
-use crate::serve::{Served, Server};
+use server::{Served, Server};
 
 /// The shipped example, opened when no job is named.
 const EXAMPLE: &str = include_str!("../../../../examples/paper-alg-1-1.json");

@@ -22,7 +22,7 @@ use t2spline_io::{MissingAlpha, Prepared};
 use tiny_http::Request;
 
 use super::security::header;
-use super::{Answer, Served};
+use super::server::{Answer, Served};
 use crate::cmd::prepare::{about_run, OptionError};
 use crate::exit::Exit;
 

@@ -4,13 +4,12 @@
 //! (`security.rs`). Requests are answered one at a time, in order; every
 //! computation goes through the I/O and core crates as the other commands'.
 
-mod api;
-mod security;
-
 use std::io::Cursor;
 use std::path::PathBuf;
 
 use tiny_http::{Header, Request, Response, StatusCode};
+
+use super::{api, security};
 
 /// The job being edited: its name in messages, its text as read at start,
 /// and the file it may be saved over (none for the example or standard
@@ -57,7 +56,7 @@ pub struct Answer {
 }
 
 impl Answer {
-    fn new(status: u16, media: &'static str, body: Vec<u8>) -> Answer {
+    pub(super) fn new(status: u16, media: &'static str, body: Vec<u8>) -> Answer {
         Answer {
             status,
             media,
@@ -66,12 +65,12 @@ impl Answer {
     }
 
     /// A JSON answer.
-    fn json(status: u16, value: &serde_json::Value) -> Answer {
+    pub(super) fn json(status: u16, value: &serde_json::Value) -> Answer {
         Answer::new(status, "application/json", value.to_string().into_bytes())
     }
 
     /// A refusal or error with one message, as `{"problems": [MESSAGE]}`.
-    fn problem(status: u16, message: &str) -> Answer {
+    pub(super) fn problem(status: u16, message: &str) -> Answer {
         Answer::json(status, &serde_json::json!({ "problems": [message] }))
     }
 }
