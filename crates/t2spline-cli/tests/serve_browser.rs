@@ -162,8 +162,8 @@ fn run(text: &str) -> String {
 const READ: &str = r#"
 const s = window.t2splineServe;
 const n = id => { const e = document.getElementById(id); return [e.dataset.value || null, e.textContent]; };
-return { job: s.jobText(), result: s.result(), problems: s.problems(), state: document.body.dataset.state,
-         max: n("m-max"), at: n("m-max-at"), rms: n("m-rms"), regime: JSON.parse(document.getElementById("m-regime").dataset.value),
+return { idle: s.idle() && document.body.dataset.state !== "loading", job: s.jobText(), result: s.result(), problems: s.problems(), state: document.body.dataset.state,
+         max: n("m-max"), at: n("m-max-at"), rms: n("m-rms"), regime: JSON.parse(document.getElementById("m-regime").dataset.value || "null"),
          regimeText: document.getElementById("m-regime").textContent,
          alpha: document.getElementById("alpha-value").textContent,
          resources: performance.getEntriesByType("resource").map(e => e.name) };
@@ -188,12 +188,16 @@ impl Page<'_> {
         )
     }
 
-    /// Waits until the page has shown the result of its current job.
+    /// Waits until the page has shown the result of its current job, and
+    /// reads it (in the same script: nothing can start in between).
     fn settle(&self) -> Value {
         let deadline = Instant::now() + Duration::from_secs(60);
         while Instant::now() < deadline {
-            if self.exec("return window.t2splineServe && window.t2splineServe.idle() && document.body.dataset.state !== 'loading';", json!([])) == json!(true) {
-                return self.exec(READ, json!([]));
+            if self.exec("return !!window.t2splineServe;", json!([])) == json!(true) {
+                let p = self.exec(READ, json!([]));
+                if p["idle"] == json!(true) {
+                    return p;
+                }
             }
             std::thread::sleep(Duration::from_millis(50));
         }
@@ -480,12 +484,68 @@ fn the_editor_in_headless_chromium_matches_t2spline_run() {
     let p = page.settle();
     check_numbers(&p, "undone");
 
+    // The membership map: `t2spline membership`'s grades of its grid.
+    page.click("show-map");
+    let p = page.settle();
+    let map = page.exec("return window.t2splineServe.map();", json!([]));
+    let files = tempfile::tempdir().unwrap();
+    std::fs::write(files.path().join("job.json"), p["job"].as_str().unwrap()).unwrap();
+    std::fs::write(
+        files.path().join("grid.csv"),
+        map["points"].as_str().unwrap(),
+    )
+    .unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_t2spline"))
+        .args(["membership", "job.json", "grid.csv"])
+        .current_dir(files.path())
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    assert_eq!(
+        map["grades"].as_str().unwrap().as_bytes(),
+        out.stdout,
+        "the map's grades"
+    );
+    let cells = page.exec(
+        "return document.querySelectorAll('#membership-map rect').length;",
+        json!([]),
+    );
+    assert!(cells.as_u64().unwrap() > 100, "cells drawn: {cells}");
+
     // Download: the job shown, which `run` accepts with the numbers shown.
     page.click("download");
     let d = page.exec("return window.t2splineServe.lastDownload();", json!([]));
     assert_eq!(d["text"], p["job"], "the download is the job");
     assert_eq!(d["name"], json!("paper-alg-1-1.json"));
     check_numbers(&p, "download");
+
+    // Opening a job file: the fuzzy circle, run as `run` runs it.
+    let input = page.driver.post(
+        &format!("/session/{}/element", page.id),
+        &json!({"using": "css selector", "value": "#open"}),
+    );
+    let element = input["element-6066-11e4-a52e-4f735466cecf"]
+        .as_str()
+        .unwrap_or_else(|| panic!("the file field: {input}"));
+    page.driver.post(
+        &format!("/session/{}/element/{element}/value", page.id),
+        &json!({"text": root().join("fixtures/circle.json").canonicalize().unwrap().to_str().unwrap()}),
+    );
+    let deadline = Instant::now() + Duration::from_secs(30);
+    let p = loop {
+        let p = page.settle();
+        if job_of(&p)["points"].as_array().unwrap().len() == 9 {
+            break p;
+        }
+        assert!(Instant::now() < deadline, "the circle opens");
+        std::thread::sleep(Duration::from_millis(100));
+    };
+    check_numbers(&p, "opened circle");
+    let name = page.exec(
+        "return document.getElementById('job-name').textContent;",
+        json!([]),
+    );
+    assert_eq!(name, json!("circle.json"));
 
     // Nothing was fetched from elsewhere.
     for r in p["resources"].as_array().unwrap() {

@@ -103,6 +103,33 @@ function schedule() {
   });
 }
 
+/** The points of the membership map: a grid of cells over the view. */
+function mapGrid() {
+  const v = state.view || fitView();
+  const nx = 64, ny = 48, xs = [], ys = [];
+  for (let i = 0; i < nx; i++) xs.push(Number(v.x((i + 0.5) * W / nx).toPrecision(6)));
+  for (let j = 0; j < ny; j++) ys.push(Number(v.y((j + 0.5) * H / ny).toPrecision(6)));
+  let csv = coords().length === 3 ? "x,y,z\n" : "x,y\n";
+  const z = coords().length === 3 ? "," + 0 : "";
+  for (const y of ys) for (const x of xs) csv += x + "," + y + z + "\n";
+  return { nx, ny, csv };
+}
+
+/** The map's cells, shaded by the upper grade (`t2spline membership`'s CSV). */
+function drawMap(svg) {
+  const g = el("g", { id: "membership-map" }, svg);
+  const rows = state.map.text.trim().split("\n").slice(1);
+  const { nx, ny } = state.map.grid;
+  const column = state.map.text.split("\n")[0].split(",").indexOf("upper");
+  rows.forEach((row, k) => {
+    const grade = Number(row.split(",")[column]);
+    if (!(grade > 0)) return;
+    const i = k % nx, j = Math.floor(k / nx);
+    el("rect", { x: (i * W / nx).toFixed(2), y: (j * H / ny).toFixed(2), width: (W / nx + 0.3).toFixed(2),
+                 height: (H / ny + 0.3).toFixed(2), fill: "#1f77b4", "fill-opacity": (0.45 * grade).toFixed(3) }, g);
+  });
+}
+
 /** The regions' tolerance: a quarter of a pixel of the view (at 1000 px). */
 function regionTolerance() {
   const v = state.view || fitView();
@@ -113,10 +140,13 @@ async function compute(text) {
   const start = performance.now();
   state.requests += 1;
   const curve = !isSurface();
-  const [run, region] = await Promise.all([
+  const grid = curve && coords().length === 2 && $("show-map").checked ? mapGrid() : null;
+  const [run, region, map] = await Promise.all([
     api("/api/run", text),
     curve ? api("/api/region?tolerance=" + regionTolerance(), text) : Promise.resolve(null),
+    grid ? api("/api/membership", JSON.stringify({ job: text, points: grid.csv })) : Promise.resolve(null),
   ]);
+  state.map = map && map.status === 200 ? { grid, text: map.text } : null;
   state.ms = performance.now() - start;
   if (run.status === 200) {
     state.result = JSON.parse(run.text);
@@ -181,6 +211,7 @@ function draw() {
   if (isSurface()) { drawSurface(svg); return; }
   if (!state.view) state.view = fitView();
   const v = state.view, r = state.result;
+  if ($("show-map").checked && state.map) drawMap(svg);
   const regions = el("g", { id: "regions" }, svg);
   if ($("show-regions").checked && state.regions) {
     for (const f of state.regions.features) {
@@ -483,6 +514,8 @@ async function load(text, name) {
   state.selected = 0;
   state.view = null;
   state.result = null;
+  state.resultText = null;
+  state.shownText = null;
   syncFields();
   schedule();
 }
@@ -527,6 +560,7 @@ async function main() {
   $("save").addEventListener("click", save);
   $("show-regions").addEventListener("change", draw);
   $("show-layers").addEventListener("change", draw);
+  $("show-map").addEventListener("change", schedule);
   $("plot").addEventListener("pointerdown", rotateSurface);
   $("open").addEventListener("change", () => {
     const f = $("open").files[0];
@@ -547,6 +581,7 @@ window.t2splineServe = {
   result: () => state.resultText,
   problems: () => state.problems,
   lastDownload: () => state.lastDownload,
+  map: () => state.map && { points: state.map.grid.csv, grades: state.map.text },
   requests: () => state.requests,
   load,
 };
