@@ -54,6 +54,9 @@ pub enum Command {
     Measure(MeasureArgs),
     /// Time the sampling engine: one line per case with the median of 5 runs.
     Bench(BenchArgs),
+    /// A live editor of the job in the browser, on this computer only: prints
+    /// the page's address (with its per-run token) and serves it until Ctrl-C.
+    Serve(ServeArgs),
 }
 
 /// Arguments of `t2spline run`.
@@ -113,6 +116,17 @@ pub struct ReductionArg {
           value_parser = PossibleValuesParser::new(TypeReduction::ALL.map(TypeReduction::name))
               .try_map(|s| s.parse::<TypeReduction>()))]
     pub type_reduction: Option<TypeReduction>,
+}
+
+/// Arguments of `t2spline serve`.
+#[derive(Debug, Args)]
+pub struct ServeArgs {
+    /// The job file to edit (saved over only when the page asks); without
+    /// one, the shipped example `examples/paper-alg-1-1.json`.
+    pub job: Option<PathBuf>,
+    /// The port on 127.0.0.1 (0: a free one).
+    #[arg(long, value_name = "N", default_value_t = 0)]
+    pub port: u16,
 }
 
 /// Arguments of `t2spline validate`.

@@ -1,7 +1,9 @@
 //! `t2spline membership JOB.json POINTS.csv [-o OUT.csv]`: the membership
 //! grades of query points in the fuzzy curve or surface as a set.
 
-use t2spline::job::{Model, ModelVisitor};
+use std::path::Path;
+
+use t2spline::job::{Job, Model, ModelVisitor};
 use t2spline::set::Grades;
 use t2spline::{FuzzyCurve, FuzzySurface};
 use t2spline_io::set::{parse_points, write_membership_csv, QueryPoints};
@@ -24,6 +26,19 @@ pub fn membership(args: &MembershipArgs) -> anyhow::Result<()> {
     }
     let job = read_job(&args.job)?;
     let points = parse_points(&read_input(&args.points)?, &job_name(&args.points))?;
+    let bytes = grades_csv(&job, &points, &args.points)?;
+    let mut out = Outputs::default();
+    out.to(args.output.as_deref(), bytes);
+    out.commit()
+}
+
+/// The grades of `points` (read from `points_file`, as messages name it) in
+/// `job`'s model, as the CSV bytes of `t2spline membership` (also the
+/// `serve` page's).
+///
+/// # Errors
+/// Points of another dimension than the model's.
+pub fn grades_csv(job: &Job, points: &QueryPoints, points_file: &Path) -> anyhow::Result<Vec<u8>> {
     let (model_dimension, what) = match &job.model {
         Model::Planar(_) => (2, "a plane curve"),
         Model::Spatial(_) => (3, "a space curve"),
@@ -36,15 +51,12 @@ pub fn membership(args: &MembershipArgs) -> anyhow::Result<()> {
             option: "POINTS",
             message: format!(
                 "{}: the job is {what}, so the header must be {header}",
-                t2spline_io::printable(&args.points.display().to_string())
+                t2spline_io::printable(&points_file.display().to_string())
             ),
         }
         .into());
     }
-    let bytes = job.model.visit(Grade(&points))?;
-    let mut out = Outputs::default();
-    out.to(args.output.as_deref(), bytes);
-    out.commit()
+    job.model.visit(Grade(points))
 }
 
 /// The grades of the query points, as CSV bytes.

@@ -7,14 +7,15 @@ mod export;
 mod fit;
 mod fuzzify;
 mod measure;
-mod membership;
+pub mod membership;
 mod plot;
 pub mod prepare;
-mod region;
+pub mod region;
 mod report;
 mod results;
 mod run;
 mod section;
+mod serve;
 mod validate;
 
 use crate::cli::{Cli, Command};
@@ -34,5 +35,6 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<()> {
         Command::Region(args) => region::region(&args),
         Command::Section(args) => section::section(&args),
         Command::Bench(args) => bench::bench(&args),
+        Command::Serve(args) => serve::serve(&args),
     }
 }

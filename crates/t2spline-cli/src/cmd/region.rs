@@ -1,7 +1,7 @@
 //! `t2spline region JOB.json --alpha A [-o OUT.geojson] [--tolerance T]`: the
 //! region a fuzzy curve can occupy at a level, as GeoJSON.
 
-use t2spline::job::Model;
+use t2spline::job::{Job, Model};
 use t2spline::set::{Plane, Region, MEMBERSHIPS};
 use t2spline::{Alpha, FuzzyCurve, Membership};
 use t2spline_io::set::{write_region_geojson, RegionFeature};
@@ -20,9 +20,22 @@ pub fn region(args: &RegionArgs) -> anyhow::Result<()> {
         message: e.to_string(),
     })?;
     let job = read_job(&args.job)?;
+    let bytes = geojson(&job, alpha, args.tolerance)?;
+    let mut out = Outputs::default();
+    out.to(args.output.as_deref(), bytes);
+    out.commit()
+}
+
+/// The regions of `job`'s curve at `alpha` as GeoJSON bytes (also the
+/// `serve` page's): one Feature per membership function with a cut there,
+/// on the `xy` plane of a plane curve and on every plane of a space curve.
+///
+/// # Errors
+/// A surface (regions are drawn for curves), a `tolerance` out of its range.
+pub fn geojson(job: &Job, alpha: Alpha, tolerance: Option<f64>) -> anyhow::Result<Vec<u8>> {
     let regions: Vec<(Membership, Plane, Region)> = match &job.model {
-        Model::Planar(c) => regions(c, &[Plane::Xy], alpha, args.tolerance)?,
-        Model::Spatial(c) => regions(c, &Plane::ALL, alpha, args.tolerance)?,
+        Model::Planar(c) => regions(c, &[Plane::Xy], alpha, tolerance)?,
+        Model::Spatial(c) => regions(c, &Plane::ALL, alpha, tolerance)?,
         _ => {
             return Err(OptionError {
                 option: "JOB",
@@ -42,9 +55,7 @@ pub fn region(args: &RegionArgs) -> anyhow::Result<()> {
         .collect();
     let mut bytes = Vec::new();
     write_region_geojson(&mut bytes, &features)?;
-    let mut out = Outputs::default();
-    out.to(args.output.as_deref(), bytes);
-    out.commit()
+    Ok(bytes)
 }
 
 /// The regions of every function that has a cut at `alpha`, on each plane.
