@@ -129,3 +129,48 @@ def test_many_jobs_into_one_parquet_table(cli: Path, tmp_path: Path) -> None:
     subprocess.run([str(cli), "run", "--jobs", str(other), "-o", str(tmp_path / "o2"), "--parquet", str(tmp_path / "two.parquet")], check=True)
     both = pa.concat_tables([table, pq.read_table(tmp_path / "two.parquet")])
     assert both.num_rows == 11 * 9 + 8
+
+
+def test_many_jobs_into_one_json_lines_file(cli: Path, tmp_path: Path) -> None:
+    """`--jsonl FILE`: a JSON object per line, per job and parameter, with
+    the keys and the values of the one Parquet table (`null` where a job
+    lacks a column): the lines read with `json` are the table's rows as
+    pyarrow reads them, for curves below and above h, a surface and a
+    failing job alike; one job's `--jsonl` is its lines of the many."""
+    folder = tmp_path / "jobs"
+    folder.mkdir()
+    job = json.loads(EXAMPLE.read_text())
+    for name, a in [("a2", 0.3), ("a10", 0.8), ("a1", 0.6)]:
+        (folder / f"{name}.json").write_text(json.dumps(dict(job, alpha=a, samples=7)))
+    shutil.copy(ROOT / "fixtures" / "spiral-3d.json", folder / "c.json")
+    surface = json.loads((ROOT / "examples" / "fuzzy-terrain.json").read_text())
+    (folder / "d.json").write_text(json.dumps(dict(surface, alpha=0.2, samples=[3, 4])))
+    (folder / "e.json").write_text(json.dumps(dict(job, type_reduction="centroid", samples=5)))
+    (folder / "broken.json").write_text('{"order": 2}')
+    done = subprocess.run(
+        [str(cli), "run", "--jobs", str(folder), "-o", str(tmp_path / "out"),
+         "--parquet", str(tmp_path / "all.parquet"), "--jsonl", str(tmp_path / "all.jsonl")],
+        capture_output=True, text=True,
+    )
+    assert done.returncode == 2, done.stderr
+    text = (tmp_path / "all.jsonl").read_text()
+    assert text.endswith("}\n")
+    lines = [json.loads(line) for line in text.splitlines()]
+    table = pq.read_table(tmp_path / "all.parquet")
+    assert lines == table.to_pylist()
+    # One schema: every line has the table's keys in its order.
+    assert all(list(line) == table.column_names for line in lines)
+    jobs = [line["job"] for line in lines]
+    assert sorted(set(jobs), key=jobs.index) == ["a1", "a2", "a10", "c", "d", "e"]
+    assert {line["alpha"] for line in lines if line["job"] == "e"} == {None}
+    assert {line["alpha"] for line in lines if line["job"] == "a10"} == {0.8}
+    # A single job writes its own lines, named after its file.
+    one = tmp_path / "one.jsonl"
+    subprocess.run(
+        [str(cli), "run", str(folder / "a10.json"), "-o", str(tmp_path / "a10.json"), "--jsonl", str(one)],
+        check=True,
+    )
+    mine = [json.loads(line) for line in one.read_text().splitlines()]
+    theirs = [line for line in lines if line["job"] == "a10"]
+    assert len(mine) == 7
+    assert mine == theirs

@@ -36,7 +36,7 @@ use parquet::schema::types::Type;
 use t2spline::job::RunOutput;
 
 use crate::keys::top_level_json;
-use crate::table::{one_table, Table};
+use crate::table::{jobs_column_names, one_table, Table};
 
 /// Rows per row group: large enough for a million samples in one, as
 /// pyarrow and parquet-rs do by default.
@@ -179,14 +179,7 @@ pub fn write_jobs_parquet<W: Write + Send>(
 
 fn write_jobs<W: Write + Send>(writer: W, jobs: &[(&str, &RunOutput)]) -> Result<(), ParquetError> {
     let tables: Vec<Table<'_>> = jobs.iter().map(|(_, r)| one_table(r)).collect();
-    let mut names = crate::sample_column_names();
-    for t in &tables {
-        for c in &t.columns {
-            if !names.contains(&c.name) {
-                names.push(c.name.clone());
-            }
-        }
-    }
+    let names = jobs_column_names(&tables);
     let mut fields = vec![
         text("job", Repetition::REQUIRED)?,
         optional_double("alpha")?,

@@ -283,6 +283,22 @@ pub fn sample_column_names() -> Vec<String> {
     names
 }
 
+/// The sample columns of many runs' one table, after `job` and `alpha`:
+/// [`sample_column_names`], then the derivative columns any of `tables`
+/// has (`crisp_d1_x`, …) in the order met. A column a job lacks is null in
+/// its rows.
+pub(crate) fn jobs_column_names(tables: &[Table<'_>]) -> Vec<String> {
+    let mut names = sample_column_names();
+    for t in tables {
+        for c in &t.columns {
+            if !names.contains(&c.name) {
+                names.push(c.name.clone());
+            }
+        }
+    }
+    names
+}
+
 #[cfg(test)]
 mod tests {
     use t2spline::job::Overrides;

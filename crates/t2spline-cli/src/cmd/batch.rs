@@ -1,5 +1,5 @@
 //! `t2spline run a.json b.json … -o DIR [--jobs DIR] [--csv DIR]
-//! [--parquet DIR]`: many jobs in one process, in parallel across jobs
+//! [--parquet DIR|FILE.parquet] [--jsonl FILE]`: many jobs in one process, in parallel across jobs
 //! (rayon), one result per job, past failing jobs, and a summary table.
 //!
 //! Each job is all or nothing on its own: its files are complete in
@@ -13,7 +13,7 @@ use std::path::{Path, PathBuf};
 use rayon::prelude::*;
 use t2spline::job::{Overrides, Parameter, RunOutput};
 use t2spline_io::{
-    printable, sync_file_systems, write_jobs_parquet, write_summary_csv, write_summary_parquet,
+    printable, sync_file_systems, write_jobs_jsonl, write_jobs_parquet, write_summary_csv, write_summary_parquet,
     JobSummary, Staged, CSV_FILES, DERIVATIVES_CSV,
 };
 
@@ -46,6 +46,8 @@ struct Batch {
     parquet: Option<PathBuf>,
     /// The one Parquet file of every job's samples (`--parquet FILE.parquet`).
     one_parquet: Option<PathBuf>,
+    /// The one JSON Lines file of every job's samples (`--jsonl FILE`).
+    jsonl: Option<PathBuf>,
 }
 
 /// What became of one job.
@@ -57,7 +59,7 @@ struct Outcome {
     notes: Vec<String>,
     /// The files written, to be flushed to disk at the end.
     written: Vec<PathBuf>,
-    /// The result, kept for the one Parquet file of every job.
+    /// The result, kept for the one Parquet or JSON Lines file of every job.
     result: Option<RunOutput>,
 }
 
@@ -70,7 +72,7 @@ fn usage(option: &'static str, message: impl Into<String>) -> anyhow::Error {
 }
 
 /// The name of a job's outputs: its file name without `.json`.
-fn output_name(path: &Path) -> String {
+pub(super) fn output_name(path: &Path) -> String {
     let file = path
         .file_name()
         .map_or_else(String::new, |f| f.to_string_lossy().into_owned());
@@ -226,6 +228,7 @@ impl Batch {
             csv: args.csv,
             parquet,
             one_parquet,
+            jsonl: args.jsonl,
         };
         batch.check_outputs()?;
         Ok(batch)
@@ -246,6 +249,9 @@ impl Batch {
         if let Some(file) = &self.one_parquet {
             claims.file("--parquet", file)?;
             claims.file("--parquet", &self.output.join(SUMMARY_PARQUET))?;
+        }
+        if let Some(file) = &self.jsonl {
+            claims.file("--jsonl", file)?;
         }
         Ok(())
     }
@@ -297,7 +303,7 @@ impl Batch {
             let out = self.destinations(job);
             out.write(Staged::deferring_sync(), &result)?;
             written = files(&out, &result);
-            kept = self.one_parquet.is_some().then_some(result);
+            kept = (self.one_parquet.is_some() || self.jsonl.is_some()).then_some(result);
             Ok(())
         });
         let error = error.err();
@@ -400,6 +406,9 @@ pub fn run(args: RunArgs) -> anyhow::Result<()> {
     let mut staged = Staged::default();
     if let Some(file) = &batch.one_parquet {
         staged.add(file, |w| write_jobs_parquet(w, &one))?;
+    }
+    if let Some(file) = &batch.jsonl {
+        staged.add(file, |w| write_jobs_jsonl(w, &one))?;
     }
     staged.add(&summary, |w| write_summary_csv(w, &rows))?;
     let summary_parquet = match (&batch.parquet, &batch.one_parquet) {
