@@ -174,3 +174,33 @@ def test_many_jobs_into_one_json_lines_file(cli: Path, tmp_path: Path) -> None:
     theirs = [line for line in lines if line["job"] == "a10"]
     assert len(mine) == 7
     assert mine == theirs
+
+
+def test_only_the_one_table_without_a_result_folder(cli: Path, tmp_path: Path) -> None:
+    """Without `-o`, `--parquet FILE.parquet` (or `--jsonl FILE`) writes no
+    file per job: the table, and the summary beside it, the same as with
+    `-o`; without either, `-o` is asked for."""
+    folder = tmp_path / "jobs"
+    folder.mkdir()
+    job = json.loads(EXAMPLE.read_text())
+    for k in range(4):
+        (folder / f"a{k}.json").write_text(json.dumps(dict(job, alpha=k / 4, samples=5)))
+    both = tmp_path / "both"
+    both.mkdir()
+    subprocess.run(
+        [str(cli), "run", "--jobs", str(folder), "-o", str(both / "out"), "--parquet", str(both / "all.parquet")],
+        check=True,
+    )
+    only = tmp_path / "only"
+    only.mkdir()
+    subprocess.run(
+        [str(cli), "run", "--jobs", str(folder), "--parquet", str(only / "all.parquet"), "--jsonl", str(only / "all.jsonl")],
+        check=True,
+    )
+    assert sorted(p.name for p in only.iterdir()) == ["all.jsonl", "all.parquet", "summary.csv", "summary.parquet"]
+    assert pq.read_table(only / "all.parquet").equals(pq.read_table(both / "all.parquet"))
+    assert (only / "summary.csv").read_bytes() == (both / "out" / "summary.csv").read_bytes()
+    assert pq.read_table(only / "summary.parquet").equals(pq.read_table(both / "out" / "summary.parquet"))
+    done = subprocess.run([str(cli), "run", "--jobs", str(folder)], capture_output=True, text=True)
+    assert done.returncode == 2
+    assert "give a folder for them, -o DIR (or only one table" in done.stderr

@@ -69,7 +69,9 @@ pub struct RunArgs {
     pub jobs: Option<PathBuf>,
     /// Write the result here instead of standard output (`-` is standard
     /// output). With several jobs: the folder for `NAME.json` per job (from
-    /// the job file `NAME.json`) and `summary.csv`, created if missing.
+    /// the job file `NAME.json`) and `summary.csv`, created if missing; left
+    /// out with `--parquet FILE.parquet` or `--jsonl FILE`, no file per job
+    /// is written and the summary goes beside the table.
     #[arg(short, long, value_name = "OUT.json|DIR")]
     pub output: Option<PathBuf>,
     /// The level alpha in [0, 1]; overrides the job file.

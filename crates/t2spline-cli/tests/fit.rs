@@ -359,7 +359,14 @@ fn a_fit_of_readings_takes_alpha_and_its_job_runs() {
         .assert()
         .code(0);
     assert_eq!(read_json(&job)["alpha"], json!(0.4));
-    let run = t2spline().arg("run").arg(&job).assert().code(0).get_output().stdout.clone();
+    let run = t2spline()
+        .arg("run")
+        .arg(&job)
+        .assert()
+        .code(0)
+        .get_output()
+        .stdout
+        .clone();
     let result: Value = serde_json::from_slice(&run).unwrap();
     assert_eq!(result["alpha"], json!(0.4));
     // The same job as fuzzify's data file fitted.
@@ -372,11 +379,23 @@ fn a_fit_of_readings_takes_alpha_and_its_job_runs() {
         .assert()
         .code(0);
     let again = dir.path().join("again.json");
-    t2spline().arg("fit").arg(&data).args(["-q", "-o"]).arg(&again).assert().code(0);
+    t2spline()
+        .arg("fit")
+        .arg(&data)
+        .args(["-q", "-o"])
+        .arg(&again)
+        .assert()
+        .code(0);
     assert_eq!(std::fs::read(&job).unwrap(), std::fs::read(&again).unwrap());
     // Without --alpha: no alpha in the job, and `run` says how to give one.
     let bare = dir.path().join("bare.json");
-    t2spline().arg("fit").arg(&readings).args(["-q", "-o"]).arg(&bare).assert().code(0);
+    t2spline()
+        .arg("fit")
+        .arg(&readings)
+        .args(["-q", "-o"])
+        .arg(&bare)
+        .assert()
+        .code(0);
     assert_eq!(read_json(&bare).get("alpha"), None);
     t2spline()
         .arg("run")
@@ -403,6 +422,12 @@ fn a_fit_of_readings_takes_alpha_and_its_job_runs() {
     assert!(!bad.exists());
     // On a data file, --alpha replaces the file's alpha.
     let over = dir.path().join("over.json");
-    t2spline().arg("fit").arg(&data).args(["--alpha", "0.9", "-q", "-o"]).arg(&over).assert().code(0);
+    t2spline()
+        .arg("fit")
+        .arg(&data)
+        .args(["--alpha", "0.9", "-q", "-o"])
+        .arg(&over)
+        .assert()
+        .code(0);
     assert_eq!(read_json(&over)["alpha"], json!(0.9));
 }

@@ -46,7 +46,10 @@ fn the_result_names_the_height_only_next_to_it() {
     // After `regime`, before `control_points`.
     let keys: Vec<&String> = v.as_object().unwrap().keys().collect();
     let at = keys.iter().position(|k| *k == "note").unwrap();
-    assert_eq!((keys[at - 1].as_str(), keys[at + 1].as_str()), ("regime", "control_points"));
+    assert_eq!(
+        (keys[at - 1].as_str(), keys[at + 1].as_str()),
+        ("regime", "control_points")
+    );
     for args in [
         vec!["--alpha", "0.6"],
         vec!["--alpha", "0.61"],
@@ -63,7 +66,8 @@ fn the_result_names_the_height_only_next_to_it() {
 #[test]
 fn each_job_of_many_carries_its_own_note() {
     let dir = tempfile::tempdir().unwrap();
-    let mut job: Value = serde_json::from_str(&std::fs::read_to_string(example()).unwrap()).unwrap();
+    let mut job: Value =
+        serde_json::from_str(&std::fs::read_to_string(example()).unwrap()).unwrap();
     let jobs = dir.path().join("jobs");
     std::fs::create_dir(&jobs).unwrap();
     for (name, alpha) in [("a", 0.6), ("b", 0.600_000_000_000_000_1)] {

@@ -44,17 +44,25 @@ pub fn write_jobs_jsonl<W: Write>(writer: W, jobs: &[(&str, &RunOutput)]) -> io:
     // `"name":` of every column, once.
     let keys: Vec<Vec<u8>> = names
         .iter()
-        .map(|n| serde_json::to_vec(n).map(|mut k| {
-            k.push(b':');
-            k
-        }))
+        .map(|n| {
+            serde_json::to_vec(n).map(|mut k| {
+                k.push(b':');
+                k
+            })
+        })
         .collect::<Result<_, _>>()?;
     let mut w = io::BufWriter::with_capacity(1 << 16, writer);
     for ((name, result), table) in jobs.iter().zip(&tables) {
         // Each job's column for each name of the schema, if it has it.
         let columns: Vec<Option<&Values<'_>>> = names
             .iter()
-            .map(|n| table.columns.iter().find(|c| &c.name == n).map(|c| &c.values))
+            .map(|n| {
+                table
+                    .columns
+                    .iter()
+                    .find(|c| &c.name == n)
+                    .map(|c| &c.values)
+            })
             .collect();
         let mut head = b"{\"job\":".to_vec();
         serde_json::to_writer(&mut head, name)?;

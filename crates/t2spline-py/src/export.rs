@@ -61,7 +61,10 @@ pub(crate) fn export<'py>(
             path.get_type().name()?
         )));
     }
-    let path: PathBuf = py.import("os")?.call_method1("fspath", (path,))?.extract()?;
+    let path: PathBuf = py
+        .import("os")?
+        .call_method1("fspath", (path,))?
+        .extract()?;
     let format = match keyword::opt_text(format, "format")? {
         Some(name) => CadFormat::named(&name).ok_or_else(|| {
             PyValueError::new_err(format!(
@@ -87,9 +90,7 @@ pub(crate) fn export<'py>(
     warn_alpha(py, prepared.settings(), overrides.alpha.is_some(), "")?;
     let name = file_name(&path);
     without_gil(py, || {
-        let text = prepared
-            .cad(format, name, &source)
-            .map_err(Failure::Run)?;
+        let text = prepared.cad(format, name, &source).map_err(Failure::Run)?;
         write_atomic(&path, text.as_bytes()).map_err(Failure::Write)
     })?
     .map_err(|e| match e {

@@ -8,7 +8,9 @@ use std::path::PathBuf;
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyString;
-use t2spline_io::{data_json, fuzzify_readings, parse_data, to_json_pretty, ReadingsError, ReadingsOptions};
+use t2spline_io::{
+    data_json, fuzzify_readings, parse_data, to_json_pretty, ReadingsError, ReadingsOptions,
+};
 
 use crate::errors::{internal_error, io_error, without_gil};
 use crate::json::loads;
@@ -81,7 +83,10 @@ pub(crate) fn fuzzify<'py>(
             readings.get_type().name()?
         )));
     }
-    let path: PathBuf = py.import("os")?.call_method1("fspath", (readings,))?.extract()?;
+    let path: PathBuf = py
+        .import("os")?
+        .call_method1("fspath", (readings,))?
+        .extract()?;
     let source = path.display().to_string();
     let json = without_gil(py, || {
         let text = t2spline_io::job::read_text(&path).map_err(ReadingsError::File)?;

@@ -1,6 +1,8 @@
 //! `t2spline run a.json b.json … -o DIR [--jobs DIR] [--csv DIR]
 //! [--parquet DIR|FILE.parquet] [--jsonl FILE]`: many jobs in one process, in parallel across jobs
-//! (rayon), one result per job, past failing jobs, and a summary table.
+//! (rayon), one result per job, past failing jobs, and a summary table;
+//! with a one-table output (`--parquet FILE.parquet`, `--jsonl FILE`) and
+//! no `-o`, no file per job, the summary beside the table.
 //!
 //! Each job is all or nothing on its own: its files are complete in
 //! temporary files before any is renamed. They are renamed without a flush
@@ -13,8 +15,8 @@ use std::path::{Path, PathBuf};
 use rayon::prelude::*;
 use t2spline::job::{Overrides, Parameter, RunOutput};
 use t2spline_io::{
-    printable, sync_file_systems, write_jobs_jsonl, write_jobs_parquet, write_summary_csv, write_summary_parquet,
-    JobSummary, Staged, CSV_FILES, DERIVATIVES_CSV,
+    printable, sync_file_systems, write_jobs_jsonl, write_jobs_parquet, write_summary_csv,
+    write_summary_parquet, JobSummary, Staged, CSV_FILES, DERIVATIVES_CSV,
 };
 
 use super::prepare::{about_run, alpha_notes, prepare, OptionError};
@@ -40,7 +42,11 @@ struct Entry {
 struct Batch {
     jobs: Vec<Entry>,
     overrides: Overrides,
-    output: PathBuf,
+    /// The folder of one result file per job (`-o DIR`); none when only
+    /// the one table of every job is asked for.
+    output: Option<PathBuf>,
+    /// The folder of the summary: `-o DIR`, else the one table's.
+    summary_dir: PathBuf,
     csv: Option<PathBuf>,
     /// The folder of one Parquet file per job (`--parquet DIR`).
     parquet: Option<PathBuf>,
@@ -77,6 +83,13 @@ pub(super) fn output_name(path: &Path) -> String {
         .file_name()
         .map_or_else(String::new, |f| f.to_string_lossy().into_owned());
     file.strip_suffix(".json").unwrap_or(&file).to_owned()
+}
+
+/// The folder of the file `path` (`.` for a bare name).
+fn folder_of(path: &Path) -> PathBuf {
+    path.parent()
+        .filter(|d| !d.as_os_str().is_empty())
+        .map_or_else(|| PathBuf::from("."), Path::to_owned)
 }
 
 /// The `*.json` files of `dir` (following links), by name; a link that
@@ -181,17 +194,29 @@ impl Batch {
                 "standard input (`-`) can only be read when it is the one job",
             ));
         }
-        let output = match args.output.as_deref() {
-            Some(dir) if !is_stdio(dir) => dir.to_owned(),
+        let one_table = args
+            .parquet
+            .as_ref()
+            .filter(|p| p.extension().is_some_and(|e| e == "parquet"))
+            .or(args.jsonl.as_ref());
+        let output = match (args.output.as_deref(), one_table) {
+            (Some(dir), _) if !is_stdio(dir) => Some(dir.to_owned()),
+            // Only the one table: no file per job.
+            (None, Some(_)) => None,
             _ => {
                 return Err(usage(
                     "--output",
                     format!(
-                        "{} jobs write one result each: give a folder for them, -o DIR",
+                        "{} jobs write one result each: give a folder for them, -o DIR (or only one table of every job's samples: --parquet FILE.parquet, --jsonl FILE)",
                         paths.len()
                     ),
                 ))
             }
+        };
+        let summary_dir = match (&output, one_table) {
+            (Some(dir), _) => dir.clone(),
+            (None, Some(file)) => folder_of(file),
+            (None, None) => PathBuf::from("."),
         };
         let mut jobs: Vec<Entry> = Vec::with_capacity(paths.len());
         let mut seen = std::collections::HashMap::new();
@@ -225,6 +250,7 @@ impl Batch {
             jobs,
             overrides: overrides(&args),
             output,
+            summary_dir,
             csv: args.csv,
             parquet,
             one_parquet,
@@ -242,13 +268,13 @@ impl Batch {
         for job in &self.jobs {
             self.destinations(job).claim(&mut claims)?;
         }
-        claims.file("--output", &self.output.join(SUMMARY_CSV))?;
+        claims.file("--output", &self.summary_dir.join(SUMMARY_CSV))?;
         if let Some(dir) = &self.parquet {
             claims.file("--parquet", &dir.join(SUMMARY_PARQUET))?;
         }
         if let Some(file) = &self.one_parquet {
             claims.file("--parquet", file)?;
-            claims.file("--parquet", &self.output.join(SUMMARY_PARQUET))?;
+            claims.file("--parquet", &self.summary_dir.join(SUMMARY_PARQUET))?;
         }
         if let Some(file) = &self.jsonl {
             claims.file("--jsonl", file)?;
@@ -259,7 +285,10 @@ impl Batch {
     /// Where a job's files go.
     fn destinations(&self, job: &Entry) -> Destinations {
         Destinations {
-            json: Some(self.output.join(format!("{}.json", job.name))),
+            json: self
+                .output
+                .as_ref()
+                .map(|d| d.join(format!("{}.json", job.name))),
             csv: self.csv.as_ref().map(|d| d.join(&job.name)),
             parquet: self
                 .parquet
@@ -367,7 +396,7 @@ pub fn run(args: RunArgs) -> anyhow::Result<()> {
     let batch = Batch::new(args)?;
     let mut folders = NewFolders::default();
     for dir in [
-        Some(&batch.output),
+        batch.output.as_ref(),
         batch.csv.as_ref(),
         batch.parquet.as_ref(),
     ]
@@ -402,7 +431,7 @@ pub fn run(args: RunArgs) -> anyhow::Result<()> {
         .zip(&kept)
         .filter_map(|(job, r)| r.as_ref().map(|r| (job.name.as_str(), r)))
         .collect();
-    let summary = batch.output.join(SUMMARY_CSV);
+    let summary = batch.summary_dir.join(SUMMARY_CSV);
     let mut staged = Staged::default();
     if let Some(file) = &batch.one_parquet {
         staged.add(file, |w| write_jobs_parquet(w, &one))?;
@@ -413,7 +442,7 @@ pub fn run(args: RunArgs) -> anyhow::Result<()> {
     staged.add(&summary, |w| write_summary_csv(w, &rows))?;
     let summary_parquet = match (&batch.parquet, &batch.one_parquet) {
         (Some(dir), _) => Some(dir.join(SUMMARY_PARQUET)),
-        (None, Some(_)) => Some(batch.output.join(SUMMARY_PARQUET)),
+        (None, Some(_)) => Some(batch.summary_dir.join(SUMMARY_PARQUET)),
         (None, None) => None,
     };
     if let Some(path) = &summary_parquet {

@@ -42,7 +42,8 @@ impl Plan {
         }
         let text = read_input(&args.data)?;
         let (data, fuzzified) = if is_readings(&args.data, &text) {
-            let data = super::fuzzify::readings_data(&args.data, &text, &args.readings, args.alpha)?;
+            let data =
+                super::fuzzify::readings_data(&args.data, &text, &args.readings, args.alpha)?;
             let note = format!(
                 "{}: a readings file (CSV), fuzzified first as `t2spline fuzzify` does: {}",
                 printable(&data.source),
