@@ -204,3 +204,30 @@ def test_only_the_one_table_without_a_result_folder(cli: Path, tmp_path: Path) -
     done = subprocess.run([str(cli), "run", "--jobs", str(folder)], capture_output=True, text=True)
     assert done.returncode == 2
     assert "give a folder for them, -o DIR (or only one table" in done.stderr
+
+
+def test_the_table_written_group_by_group_is_the_table_of_every_result(cli: Path, tmp_path: Path) -> None:
+    """A run with only the one Parquet table writes it a group of jobs at a
+    time: over several groups, with derivatives and failing jobs among
+    them, it is the table written from every result at once (as with
+    `--jsonl` beside it), and its JSON Lines."""
+    folder = tmp_path / "jobs"
+    folder.mkdir()
+    job = json.loads(EXAMPLE.read_text())
+    for k in range(300):
+        text = '{"order": 2}' if k % 97 == 5 else json.dumps(dict(job, alpha=(k % 11) / 10, samples=3))
+        (folder / f"j{k}.json").write_text(text)
+    runs = {}
+    for name, extra in [("grouped", []), ("whole", ["--jsonl", str(tmp_path / "whole.jsonl")])]:
+        done = subprocess.run(
+            [str(cli), "run", "--jobs", str(folder), "--derivatives", "2", "--parquet", str(tmp_path / f"{name}.parquet"), *extra],
+            capture_output=True, text=True,
+        )
+        assert done.returncode == 2, done.stderr
+        runs[name] = pq.read_table(tmp_path / f"{name}.parquet")
+    assert pq.ParquetFile(tmp_path / "grouped.parquet").num_row_groups > 1
+    assert runs["grouped"].equals(runs["whole"])
+    assert runs["grouped"].num_rows == (300 - 4) * 3
+    assert "defuzzified_d2_y" in runs["grouped"].column_names
+    lines = [json.loads(line) for line in (tmp_path / "whole.jsonl").read_text().splitlines()]
+    assert lines == runs["grouped"].to_pylist()

@@ -4,7 +4,8 @@
 //! `job` (its name), `alpha` (`null` where the type reduction does not use
 //! it), then every sample column of the one schema
 //! ([`sample_column_names`](crate::sample_column_names), then the derivative
-//! columns any job has), `null` where a job lacks the column (a plane
+//! columns of x, y and z up to the highest order any job has), `null` where
+//! a job lacks the column (a plane
 //! curve's `_z`, a lower cut above `h`). Every line has the same keys in the
 //! same order, whatever the model and the regime.
 //!
@@ -17,7 +18,7 @@ use std::io::{self, Write};
 
 use t2spline::job::RunOutput;
 
-use crate::table::{jobs_column_names, one_table, Table, Values};
+use crate::table::{derivative_order, jobs_column_names, one_table, Table, Values};
 
 /// Writes the sampled curves of many runs as JSON Lines (the module's
 /// layout), jobs in the order given, `\n` after every line.
@@ -40,7 +41,8 @@ use crate::table::{jobs_column_names, one_table, Table, Values};
 /// ```
 pub fn write_jobs_jsonl<W: Write>(writer: W, jobs: &[(&str, &RunOutput)]) -> io::Result<()> {
     let tables: Vec<Table<'_>> = jobs.iter().map(|(_, r)| one_table(r)).collect();
-    let names = jobs_column_names(&tables);
+    let order = jobs.iter().map(|(_, r)| derivative_order(r)).max();
+    let names = jobs_column_names(order.unwrap_or(0));
     // `"name":` of every column, once.
     let keys: Vec<Vec<u8>> = names
         .iter()

@@ -105,7 +105,7 @@ pub use fit_data::FitData;
 pub use job::{job_json, parse_data, parse_job, read_data, read_job};
 pub use jsonl::write_jobs_jsonl;
 #[cfg(feature = "parquet")]
-pub use parquet::{write_jobs_parquet, write_parquet, write_summary_parquet};
+pub use parquet::{write_jobs_parquet, write_parquet, write_summary_parquet, JobsParquet};
 pub use prepared::{MissingAlpha, Prepared, RunError};
 pub use pretty::{to_json_pretty, write_json_pretty};
 pub use printable::printable;

@@ -16,7 +16,7 @@ use rayon::prelude::*;
 use t2spline::job::{Overrides, Parameter, RunOutput};
 use t2spline_io::{
     printable, sync_file_systems, write_jobs_jsonl, write_jobs_parquet, write_summary_csv,
-    write_summary_parquet, JobSummary, Staged, CSV_FILES, DERIVATIVES_CSV,
+    write_summary_parquet, JobSummary, JobsParquet, Staged, CSV_FILES, DERIVATIVES_CSV,
 };
 
 use super::prepare::{about_run, alpha_notes, prepare, OptionError};
@@ -29,6 +29,11 @@ use crate::output::{is_stdio, job_name, shown, NewFolders};
 /// The summary's file names.
 const SUMMARY_CSV: &str = "summary.csv";
 const SUMMARY_PARQUET: &str = "summary.parquet";
+
+/// Jobs run at once while the one Parquet table is written group by
+/// group: enough to keep both cores busy, few enough that their results
+/// take a few megabytes.
+const GROUP: usize = 128;
 
 /// A job of the run: its file and the name of its outputs.
 #[derive(Debug)]
@@ -349,6 +354,54 @@ impl Batch {
         }
     }
 
+    /// Runs every job, in parallel, in order. With the one Parquet table
+    /// and no JSON Lines, the jobs run [`GROUP`] at a time and each group's
+    /// rows go into the table (in memory) before the next runs, so that
+    /// the results are not all held until the end: the table's bytes are
+    /// returned, and the outcomes keep no result.
+    fn run_all(&self) -> anyhow::Result<(Vec<Outcome>, Option<Vec<u8>>)> {
+        if self.one_parquet.is_none() || self.jsonl.is_some() {
+            let outcomes = self.jobs.par_iter().map(|j| self.run_one(j)).collect();
+            return Ok((outcomes, None));
+        }
+        let failed = |source| t2spline_io::Error::Write {
+            path: self.one_parquet.clone().unwrap_or_default(),
+            source,
+        };
+        let mut outcomes = Vec::with_capacity(self.jobs.len());
+        let mut table = None;
+        for group in self.jobs.chunks(GROUP) {
+            let mut done: Vec<Outcome> = group.par_iter().map(|j| self.run_one(j)).collect();
+            let rows: Vec<(&str, &RunOutput)> = group
+                .iter()
+                .zip(&done)
+                .filter_map(|(j, o)| o.result.as_ref().map(|r| (j.name.as_str(), r)))
+                .collect();
+            if let (None, Some((_, first))) = (&table, rows.first()) {
+                // Every job runs with the same derivatives (an option).
+                let order = first
+                    .samples
+                    .derivatives
+                    .as_ref()
+                    .map_or(0, |d| d.crisp.len());
+                table = Some(JobsParquet::new(Vec::new(), order).map_err(failed)?);
+            }
+            if let Some(t) = &mut table {
+                t.write(&rows).map_err(failed)?;
+            }
+            drop(rows);
+            for o in &mut done {
+                o.result = None;
+            }
+            outcomes.extend(done);
+        }
+        let table = match table {
+            Some(t) => t,
+            None => JobsParquet::new(Vec::new(), 0).map_err(failed)?,
+        };
+        Ok((outcomes, Some(table.finish().map_err(failed)?)))
+    }
+
     /// The job's result (each job with its own type reduction unless
     /// `--type-reduction` overrides it), the smallest lower height of its
     /// numbers, and the notes on its alpha.
@@ -405,7 +458,7 @@ pub fn run(args: RunArgs) -> anyhow::Result<()> {
     {
         folders.create(dir)?;
     }
-    let outcomes: Vec<Outcome> = batch.jobs.par_iter().map(|j| batch.run_one(j)).collect();
+    let (outcomes, streamed) = batch.run_all()?;
     let mut worst = Exit::Ok;
     let mut stderr = std::io::stderr().lock();
     for (job, outcome) in batch.jobs.iter().zip(&outcomes) {
@@ -433,8 +486,10 @@ pub fn run(args: RunArgs) -> anyhow::Result<()> {
         .collect();
     let summary = batch.summary_dir.join(SUMMARY_CSV);
     let mut staged = Staged::default();
-    if let Some(file) = &batch.one_parquet {
-        staged.add(file, |w| write_jobs_parquet(w, &one))?;
+    match (&batch.one_parquet, &streamed) {
+        (Some(file), Some(bytes)) => staged.add(file, |w| w.write_all(bytes))?,
+        (Some(file), None) => staged.add(file, |w| write_jobs_parquet(w, &one))?,
+        (None, _) => {}
     }
     if let Some(file) = &batch.jsonl {
         staged.add(file, |w| write_jobs_jsonl(w, &one))?;
