@@ -68,6 +68,11 @@ centroid
     (Karnik–Mendel, EKM, EIASC, or the Nie–Tan value).
 fit
     Fuzzy data points → a fuzzy curve and a summary of the fit.
+fuzzify, export, to_json, FuzzyCurve.to_job, FuzzySurface.to_job
+    The loop of the command-line tool in Python, by its code: a readings
+    file to the data of a fit (``t2spline fuzzify``), a job to a CAD file
+    (``t2spline export``), a result to the bytes of ``t2spline run``'s
+    result file, a model back to a job dict that ``run`` runs.
 benchmark_curve
     The curve that ``t2spline bench`` times.
 t2spline.plot
@@ -118,9 +123,12 @@ from ._t2spline import (
     __version__,
     benchmark_curve,
     centroid,
+    export,
     fit,
+    fuzzify,
     run,
     run_many,
+    to_json,
 )
 from .table import run_table
 
@@ -138,9 +146,12 @@ __all__ = [
     "__version__",
     "benchmark_curve",
     "centroid",
+    "export",
     "fit",
+    "fuzzify",
     "run",
     "run_many",
     "run_table",
+    "to_json",
     "types",
 ]

@@ -1,6 +1,7 @@
 # Types of the extension module `t2spline._t2spline` (Rust, crates/t2spline-py).
 # The full documentation, with formulas and examples, is in the docstrings of
 # the compiled objects: `help(t2spline.FuzzyCurve)`.
+import os
 from typing import Any, Iterable, Literal, Optional, Sequence, Tuple, Union, final, overload
 
 import numpy as np
@@ -52,9 +53,12 @@ __all__ = [
     "_run_rows",
     "benchmark_curve",
     "centroid",
+    "export",
     "fit",
+    "fuzzify",
     "run",
     "run_many",
+    "to_json",
 ]
 __version__: str
 
@@ -214,6 +218,15 @@ class FuzzyCurve:
     ) -> FuzzyCurve: ...
     @staticmethod
     def from_job(job: Job) -> FuzzyCurve: ...
+    def to_job(
+        self,
+        alpha: Optional[float] = None,
+        *,
+        samples: Optional[PerDirection] = None,
+        type_reduction: Optional[TypeReductionName] = None,
+        description: Optional[str] = None,
+    ) -> dict[str, Any]:
+        """The job of this model: a dict with the keys of a job file."""
     @property
     def dimension(self) -> int: ...
     @property
@@ -411,6 +424,15 @@ class FuzzySurface:
     ) -> FuzzySurface: ...
     @staticmethod
     def from_job(job: Job) -> FuzzySurface: ...
+    def to_job(
+        self,
+        alpha: Optional[float] = None,
+        *,
+        samples: Optional[PerDirection] = None,
+        type_reduction: Optional[TypeReductionName] = None,
+        description: Optional[str] = None,
+    ) -> dict[str, Any]:
+        """The job of this model: a dict with the keys of a job file."""
     @property
     def dimension(self) -> int: ...
     @property
@@ -507,6 +529,29 @@ def fit(
     parametrization: Literal["chord", "centripetal", "uniform"] = "chord",
     mode: Literal["valid", "independent"] = "valid",
 ) -> Tuple[FuzzyCurve, FitSummary]: ...
+
+def fuzzify(
+    readings: Union[str, "os.PathLike[str]"],
+    *,
+    tolerance: Optional[float] = None,
+    lower_height: Optional[float] = None,
+    degree: Optional[int] = None,
+    order: Optional[int] = None,
+    alpha: Optional[float] = None,
+) -> dict[str, Any]:
+    """A readings file as the data of a fit, by the rules of `t2spline fuzzify`."""
+
+def export(
+    job: Job,
+    path: Union[str, "os.PathLike[str]"],
+    format: Optional[Literal["dxf", "step", "iges", "obj"]] = None,
+    alpha: Optional[float] = None,
+    type_reduction: Optional[TypeReductionName] = None,
+) -> None:
+    """Writes a job's exact curves as a CAD file, as `t2spline export` does."""
+
+def to_json(result: Any) -> str:
+    """A result as the bytes of `t2spline run`'s result file (as text)."""
 
 def benchmark_curve() -> FuzzyCurve: ...
 

@@ -83,3 +83,34 @@ def test_the_command_line_tool_notes_it(cli: Path, tmp_path: Path) -> None:
     )
     assert done.returncode == 0
     assert done.stderr == f"t2spline run: {folder / 'b.json'}: note: {NOTE}\n"
+
+
+def test_the_result_carries_the_note(cli: Path, tmp_path: Path) -> None:
+    # Python's result dict: a `note` key after `regime`, only near the height.
+    with pytest.warns(UserWarning):
+        past = t2spline.run(EXAMPLE, alpha=SWEEP, samples=11)
+    assert past["note"] == NOTE
+    keys = list(past)
+    assert keys[keys.index("regime") + 1] == "note"
+    for alpha in (0.6, 0.61, 0.5):
+        assert "note" not in t2spline.run(EXAMPLE, alpha=alpha, samples=11)
+    # The result file `t2spline run` writes, and its standard output.
+    out = tmp_path / "r.json"
+    done = subprocess.run(
+        [str(cli), "run", str(EXAMPLE), "--alpha", repr(SWEEP), "--samples", "11", "-o", str(out)],
+        capture_output=True, text=True,
+    )
+    assert done.returncode == 0, done.stderr
+    written = json.loads(out.read_text())
+    assert written["note"] == NOTE
+    assert list(written) == keys
+    shown = subprocess.run(
+        [str(cli), "run", str(EXAMPLE), "--alpha", repr(SWEEP), "--samples", "11"],
+        capture_output=True, text=True,
+    )
+    assert shown.stdout.encode() == out.read_bytes()
+    plain = subprocess.run(
+        [str(cli), "run", str(EXAMPLE), "--alpha", "0.6", "--samples", "11"],
+        capture_output=True, text=True,
+    )
+    assert plain.returncode == 0 and "note" not in json.loads(plain.stdout)

@@ -129,3 +129,105 @@ def test_many_jobs_into_one_parquet_table(cli: Path, tmp_path: Path) -> None:
     subprocess.run([str(cli), "run", "--jobs", str(other), "-o", str(tmp_path / "o2"), "--parquet", str(tmp_path / "two.parquet")], check=True)
     both = pa.concat_tables([table, pq.read_table(tmp_path / "two.parquet")])
     assert both.num_rows == 11 * 9 + 8
+
+
+def test_many_jobs_into_one_json_lines_file(cli: Path, tmp_path: Path) -> None:
+    """`--jsonl FILE`: a JSON object per line, per job and parameter, with
+    the keys and the values of the one Parquet table (`null` where a job
+    lacks a column): the lines read with `json` are the table's rows as
+    pyarrow reads them, for curves below and above h, a surface and a
+    failing job alike; one job's `--jsonl` is its lines of the many."""
+    folder = tmp_path / "jobs"
+    folder.mkdir()
+    job = json.loads(EXAMPLE.read_text())
+    for name, a in [("a2", 0.3), ("a10", 0.8), ("a1", 0.6)]:
+        (folder / f"{name}.json").write_text(json.dumps(dict(job, alpha=a, samples=7)))
+    shutil.copy(ROOT / "fixtures" / "spiral-3d.json", folder / "c.json")
+    surface = json.loads((ROOT / "examples" / "fuzzy-terrain.json").read_text())
+    (folder / "d.json").write_text(json.dumps(dict(surface, alpha=0.2, samples=[3, 4])))
+    (folder / "e.json").write_text(json.dumps(dict(job, type_reduction="centroid", samples=5)))
+    (folder / "broken.json").write_text('{"order": 2}')
+    done = subprocess.run(
+        [str(cli), "run", "--jobs", str(folder), "-o", str(tmp_path / "out"),
+         "--parquet", str(tmp_path / "all.parquet"), "--jsonl", str(tmp_path / "all.jsonl")],
+        capture_output=True, text=True,
+    )
+    assert done.returncode == 2, done.stderr
+    text = (tmp_path / "all.jsonl").read_text()
+    assert text.endswith("}\n")
+    lines = [json.loads(line) for line in text.splitlines()]
+    table = pq.read_table(tmp_path / "all.parquet")
+    assert lines == table.to_pylist()
+    # One schema: every line has the table's keys in its order.
+    assert all(list(line) == table.column_names for line in lines)
+    jobs = [line["job"] for line in lines]
+    assert sorted(set(jobs), key=jobs.index) == ["a1", "a2", "a10", "c", "d", "e"]
+    assert {line["alpha"] for line in lines if line["job"] == "e"} == {None}
+    assert {line["alpha"] for line in lines if line["job"] == "a10"} == {0.8}
+    # A single job writes its own lines, named after its file.
+    one = tmp_path / "one.jsonl"
+    subprocess.run(
+        [str(cli), "run", str(folder / "a10.json"), "-o", str(tmp_path / "a10.json"), "--jsonl", str(one)],
+        check=True,
+    )
+    mine = [json.loads(line) for line in one.read_text().splitlines()]
+    theirs = [line for line in lines if line["job"] == "a10"]
+    assert len(mine) == 7
+    assert mine == theirs
+
+
+def test_only_the_one_table_without_a_result_folder(cli: Path, tmp_path: Path) -> None:
+    """Without `-o`, `--parquet FILE.parquet` (or `--jsonl FILE`) writes no
+    file per job: the table, and the summary beside it, the same as with
+    `-o`; without either, `-o` is asked for."""
+    folder = tmp_path / "jobs"
+    folder.mkdir()
+    job = json.loads(EXAMPLE.read_text())
+    for k in range(4):
+        (folder / f"a{k}.json").write_text(json.dumps(dict(job, alpha=k / 4, samples=5)))
+    both = tmp_path / "both"
+    both.mkdir()
+    subprocess.run(
+        [str(cli), "run", "--jobs", str(folder), "-o", str(both / "out"), "--parquet", str(both / "all.parquet")],
+        check=True,
+    )
+    only = tmp_path / "only"
+    only.mkdir()
+    subprocess.run(
+        [str(cli), "run", "--jobs", str(folder), "--parquet", str(only / "all.parquet"), "--jsonl", str(only / "all.jsonl")],
+        check=True,
+    )
+    assert sorted(p.name for p in only.iterdir()) == ["all.jsonl", "all.parquet", "summary.csv", "summary.parquet"]
+    assert pq.read_table(only / "all.parquet").equals(pq.read_table(both / "all.parquet"))
+    assert (only / "summary.csv").read_bytes() == (both / "out" / "summary.csv").read_bytes()
+    assert pq.read_table(only / "summary.parquet").equals(pq.read_table(both / "out" / "summary.parquet"))
+    done = subprocess.run([str(cli), "run", "--jobs", str(folder)], capture_output=True, text=True)
+    assert done.returncode == 2
+    assert "give a folder for them, -o DIR (or only one table" in done.stderr
+
+
+def test_the_table_written_group_by_group_is_the_table_of_every_result(cli: Path, tmp_path: Path) -> None:
+    """A run with only the one Parquet table writes it a group of jobs at a
+    time: over several groups, with derivatives and failing jobs among
+    them, it is the table written from every result at once (as with
+    `--jsonl` beside it), and its JSON Lines."""
+    folder = tmp_path / "jobs"
+    folder.mkdir()
+    job = json.loads(EXAMPLE.read_text())
+    for k in range(300):
+        text = '{"order": 2}' if k % 97 == 5 else json.dumps(dict(job, alpha=(k % 11) / 10, samples=3))
+        (folder / f"j{k}.json").write_text(text)
+    runs = {}
+    for name, extra in [("grouped", []), ("whole", ["--jsonl", str(tmp_path / "whole.jsonl")])]:
+        done = subprocess.run(
+            [str(cli), "run", "--jobs", str(folder), "--derivatives", "2", "--parquet", str(tmp_path / f"{name}.parquet"), *extra],
+            capture_output=True, text=True,
+        )
+        assert done.returncode == 2, done.stderr
+        runs[name] = pq.read_table(tmp_path / f"{name}.parquet")
+    assert pq.ParquetFile(tmp_path / "grouped.parquet").num_row_groups > 1
+    assert runs["grouped"].equals(runs["whole"])
+    assert runs["grouped"].num_rows == (300 - 4) * 3
+    assert "defuzzified_d2_y" in runs["grouped"].column_names
+    lines = [json.loads(line) for line in (tmp_path / "whole.jsonl").read_text().splitlines()]
+    assert lines == runs["grouped"].to_pylist()

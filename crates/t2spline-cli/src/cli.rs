@@ -72,7 +72,9 @@ pub struct RunArgs {
     pub jobs: Option<PathBuf>,
     /// Write the result here instead of standard output (`-` is standard
     /// output). With several jobs: the folder for `NAME.json` per job (from
-    /// the job file `NAME.json`) and `summary.csv`, created if missing.
+    /// the job file `NAME.json`) and `summary.csv`, created if missing; left
+    /// out with `--parquet FILE.parquet` or `--jsonl FILE`, no file per job
+    /// is written and the summary goes beside the table.
     #[arg(short, long, value_name = "OUT.json|DIR")]
     pub output: Option<PathBuf>,
     /// The level alpha in [0, 1]; overrides the job file.
@@ -94,6 +96,11 @@ pub struct RunArgs {
     /// summary then in the `--output` folder).
     #[arg(long, value_name = "FILE|DIR")]
     pub parquet: Option<PathBuf>,
+    /// Also write the sampled curves as JSON Lines into this file: a line per
+    /// job and parameter with the keys `job`, `alpha` and the columns of the
+    /// one Parquet table of many jobs (`null` where a job lacks one).
+    #[arg(long, value_name = "FILE")]
+    pub jsonl: Option<PathBuf>,
     /// Also compute the derivatives of orders 1 to K of the crisp and the
     /// defuzzified curve at the sample parameters, and their arc lengths
     /// (result keys `curves.derivatives`, `curves.arc_length`); K from 1 to 16.
@@ -292,6 +299,10 @@ pub struct FitArgs {
     /// Do not print the report on standard error.
     #[arg(short, long)]
     pub quiet: bool,
+    /// The level alpha in [0, 1] to carry into the fitted job (in place of
+    /// the data file's), so that `run` can run it.
+    #[arg(long, value_name = "A", allow_negative_numbers = true)]
+    pub alpha: Option<f64>,
     /// How readings become fuzzy numbers, when the data file is a readings
     /// file (CSV).
     #[command(flatten)]

@@ -341,3 +341,93 @@ fn a_negative_zero_tolerance_is_described_as_zero() {
     assert!(description.contains("with T = 0 "), "{description}");
     assert!(!description.contains("-0"), "{description}");
 }
+
+/// `fit` of a readings file takes `--alpha` as `fuzzify` does: the job it
+/// writes carries it and runs, and equals the fit of `fuzzify`'s data file;
+/// without it the job has no alpha and `run` asks for one; a bad alpha is
+/// named; on a data file `--alpha` replaces the file's.
+#[test]
+fn a_fit_of_readings_takes_alpha_and_its_job_runs() {
+    let readings = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/beach-readings.csv");
+    let dir = tempfile::tempdir().unwrap();
+    let job = dir.path().join("job.json");
+    t2spline()
+        .arg("fit")
+        .arg(&readings)
+        .args(["--alpha", "0.4", "--tolerance", "0.05", "-q", "-o"])
+        .arg(&job)
+        .assert()
+        .code(0);
+    assert_eq!(read_json(&job)["alpha"], json!(0.4));
+    let run = t2spline()
+        .arg("run")
+        .arg(&job)
+        .assert()
+        .code(0)
+        .get_output()
+        .stdout
+        .clone();
+    let result: Value = serde_json::from_slice(&run).unwrap();
+    assert_eq!(result["alpha"], json!(0.4));
+    // The same job as fuzzify's data file fitted.
+    let data = dir.path().join("data.json");
+    t2spline()
+        .arg("fuzzify")
+        .arg(&readings)
+        .args(["--alpha", "0.4", "--tolerance", "0.05", "-o"])
+        .arg(&data)
+        .assert()
+        .code(0);
+    let again = dir.path().join("again.json");
+    t2spline()
+        .arg("fit")
+        .arg(&data)
+        .args(["-q", "-o"])
+        .arg(&again)
+        .assert()
+        .code(0);
+    assert_eq!(std::fs::read(&job).unwrap(), std::fs::read(&again).unwrap());
+    // Without --alpha: no alpha in the job, and `run` says how to give one.
+    let bare = dir.path().join("bare.json");
+    t2spline()
+        .arg("fit")
+        .arg(&readings)
+        .args(["-q", "-o"])
+        .arg(&bare)
+        .assert()
+        .code(0);
+    assert_eq!(read_json(&bare).get("alpha"), None);
+    t2spline()
+        .arg("run")
+        .arg(&bare)
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("--alpha"));
+    t2spline()
+        .arg("run")
+        .arg(&bare)
+        .args(["--alpha", "0.4"])
+        .assert()
+        .code(0);
+    // Out of range: named, nothing written.
+    let bad = dir.path().join("bad.json");
+    t2spline()
+        .arg("fit")
+        .arg(&readings)
+        .args(["--alpha", "1.5", "-o"])
+        .arg(&bad)
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("--alpha"));
+    assert!(!bad.exists());
+    // On a data file, --alpha replaces the file's alpha.
+    let over = dir.path().join("over.json");
+    t2spline()
+        .arg("fit")
+        .arg(&data)
+        .args(["--alpha", "0.9", "-q", "-o"])
+        .arg(&over)
+        .assert()
+        .code(0);
+    assert_eq!(read_json(&over)["alpha"], json!(0.9));
+}

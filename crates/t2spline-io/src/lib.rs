@@ -15,6 +15,9 @@
 //!   surfaces, one row per grid point) as CSV, one file per curve family.
 //! - `write_parquet` (feature `parquet`, default): the sampled curves as one
 //!   Apache Parquet table, the rest of the result as key-value metadata.
+//! - [`write_jobs_jsonl`] (and `write_jobs_parquet`): the sampled curves of
+//!   many runs as one table, JSON Lines (or Parquet), one schema whatever
+//!   the regime.
 //! - [`JobSummary`], [`write_summary_csv`] (and `write_summary_parquet`): the
 //!   summary of a run of many jobs.
 //! - [`Prepared`]: the one way every front end prepares and runs a job
@@ -75,6 +78,7 @@ mod finite;
 mod fit_data;
 pub mod job;
 mod job_json;
+mod jsonl;
 #[cfg(feature = "parquet")]
 mod keys;
 mod limits;
@@ -99,12 +103,16 @@ pub use error::{Error, Problem};
 pub use finite::check_finite;
 pub use fit_data::FitData;
 pub use job::{job_json, parse_data, parse_job, read_data, read_job};
+pub use jsonl::write_jobs_jsonl;
 #[cfg(feature = "parquet")]
-pub use parquet::{write_jobs_parquet, write_parquet, write_summary_parquet};
+pub use parquet::{write_jobs_parquet, write_parquet, write_summary_parquet, JobsParquet};
 pub use prepared::{MissingAlpha, Prepared, RunError};
 pub use pretty::{to_json_pretty, write_json_pretty};
 pub use printable::printable;
-pub use readings::{data_json, is_readings, parse_readings, read_readings, ReadingsFile, MAX_ROWS};
+pub use readings::{
+    data_json, fuzzify_readings, is_readings, parse_readings, read_readings, ReadingsError,
+    ReadingsFile, ReadingsOption, ReadingsOptions, DEFAULT_DEGREE, MAX_ROWS,
+};
 pub use summary::{write_summary_csv, JobSummary, SUMMARY_COLUMNS};
 pub use table::{sample_column_names, sample_columns, SampleColumn};
 pub use temporary::remove_temporary_files;

@@ -36,7 +36,7 @@ use parquet::schema::types::Type;
 use t2spline::job::RunOutput;
 
 use crate::keys::top_level_json;
-use crate::table::{one_table, Table};
+use crate::table::{derivative_order, jobs_column_names, one_table, Table};
 
 /// Rows per row group: large enough for a million samples in one, as
 /// pyarrow and parquet-rs do by default.
@@ -164,9 +164,10 @@ fn write_table<W: Write + Send>(
 /// (null where the type reduction does not use it), then the columns of
 /// [`sample_column_names`](crate::sample_column_names), one schema whatever
 /// the model and the regime (a column a job lacks is null in its rows: a
-/// plane curve's `_z`, a lower cut above `h`), and after them the
-/// derivative columns any job has (`crisp_d1_x`, …). Jobs follow in the
-/// order given; row groups hold whole jobs.
+/// plane curve's `_z`, a lower cut above `h`), and after them, when the
+/// jobs have derivatives, those of orders 1 to the highest any job has
+/// (`crisp_d1_x`, `crisp_d1_y`, `crisp_d1_z`, …, `defuzzified_d1_x`, …).
+/// Jobs follow in the order given; row groups hold whole jobs.
 ///
 /// # Errors
 /// The errors of `writer`.
@@ -174,87 +175,136 @@ pub fn write_jobs_parquet<W: Write + Send>(
     writer: W,
     jobs: &[(&str, &RunOutput)],
 ) -> std::io::Result<()> {
-    write_jobs(writer, jobs).map_err(io_error)
+    let order = jobs
+        .iter()
+        .map(|(_, r)| derivative_order(r))
+        .max()
+        .unwrap_or(0);
+    let mut table = JobsParquet::new(writer, order)?;
+    table.write(jobs)?;
+    table.finish().map(drop)
 }
 
-fn write_jobs<W: Write + Send>(writer: W, jobs: &[(&str, &RunOutput)]) -> Result<(), ParquetError> {
-    let tables: Vec<Table<'_>> = jobs.iter().map(|(_, r)| one_table(r)).collect();
-    let mut names = crate::sample_column_names();
-    for t in &tables {
-        for c in &t.columns {
-            if !names.contains(&c.name) {
-                names.push(c.name.clone());
-            }
-        }
+/// The one table of [`write_jobs_parquet`], written a group of jobs at a
+/// time, so that a run of many jobs need not hold every result until the
+/// end; its schema is fixed when it is made, by the order of the
+/// derivatives the jobs have (0: none).
+pub struct JobsParquet<W: Write + Send> {
+    file: SerializedFileWriter<W>,
+    names: Vec<String>,
+}
+
+impl<W: Write + Send> std::fmt::Debug for JobsParquet<W> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("JobsParquet")
+            .field("names", &self.names)
+            .finish_non_exhaustive()
     }
-    let mut fields = vec![
-        text("job", Repetition::REQUIRED)?,
-        optional_double("alpha")?,
-    ];
-    for name in &names {
-        fields.push(optional_double(name)?);
-    }
-    let mut file =
-        SerializedFileWriter::new(writer, schema(fields)?, properties(Vec::new(), false))?;
-    let mut scratch = Vec::new();
-    let mut start = 0;
-    while start < jobs.len() {
-        // Whole jobs, up to a row group's rows (at least one job).
-        let mut end = start + 1;
-        let mut rows = tables[start].rows;
-        while end < jobs.len() && rows + tables[end].rows <= ROW_GROUP {
-            rows += tables[end].rows;
-            end += 1;
-        }
-        let mut group = file.next_row_group()?;
-        let mut c = next(&mut group)?;
-        for k in start..end {
-            let name = ByteArray::from(jobs[k].0);
-            c.typed::<ByteArrayType>()
-                .write_batch(&vec![name; tables[k].rows], None, None)?;
-        }
-        c.close()?;
-        let mut c = next(&mut group)?;
-        for k in start..end {
-            let r = jobs[k].1;
-            let (values, level) = if r.alpha_used {
-                (vec![r.alpha], 1)
-            } else {
-                (Vec::new(), 0)
-            };
-            let values = values.repeat(tables[k].rows);
-            c.typed::<DoubleType>().write_batch(
-                &values,
-                Some(&vec![level; tables[k].rows]),
-                None,
-            )?;
-        }
-        c.close()?;
-        // Each column of the group in one batch: the jobs' values one after
-        // another, a definition level per row (0 where a job lacks it).
-        let (mut values, mut levels) = (Vec::with_capacity(rows), Vec::with_capacity(rows));
-        for name in &names {
-            values.clear();
-            levels.clear();
-            for table in &tables[start..end] {
-                match table.columns.iter().find(|col| &col.name == name) {
-                    Some(column) => {
-                        values.extend_from_slice(column.values.rows(0..table.rows, &mut scratch));
-                        levels.resize(levels.len() + table.rows, 1);
-                    }
-                    None => levels.resize(levels.len() + table.rows, 0),
-                }
+}
+
+impl<W: Write + Send> JobsParquet<W> {
+    /// A table into `writer`, with the derivative columns of orders 1 to
+    /// `derivatives`.
+    ///
+    /// # Errors
+    /// The errors of `writer`.
+    pub fn new(writer: W, derivatives: usize) -> std::io::Result<Self> {
+        let names = jobs_column_names(derivatives);
+        let build = || -> Result<SerializedFileWriter<W>, ParquetError> {
+            let mut fields = vec![
+                text("job", Repetition::REQUIRED)?,
+                optional_double("alpha")?,
+            ];
+            for name in &names {
+                fields.push(optional_double(name)?);
             }
+            SerializedFileWriter::new(writer, schema(fields)?, properties(Vec::new(), false))
+        };
+        Ok(JobsParquet {
+            file: build().map_err(io_error)?,
+            names,
+        })
+    }
+
+    /// Appends the rows of `jobs`, in their order, in row groups of whole
+    /// jobs.
+    ///
+    /// # Errors
+    /// The errors of the writer.
+    pub fn write(&mut self, jobs: &[(&str, &RunOutput)]) -> std::io::Result<()> {
+        self.write_groups(jobs).map_err(io_error)
+    }
+
+    /// Ends the table (its footer) and gives the writer back.
+    ///
+    /// # Errors
+    /// The errors of the writer.
+    pub fn finish(self) -> std::io::Result<W> {
+        self.file.into_inner().map_err(io_error)
+    }
+
+    fn write_groups(&mut self, jobs: &[(&str, &RunOutput)]) -> Result<(), ParquetError> {
+        let tables: Vec<Table<'_>> = jobs.iter().map(|(_, r)| one_table(r)).collect();
+        let mut scratch = Vec::new();
+        let mut start = 0;
+        while start < jobs.len() {
+            // Whole jobs, up to a row group's rows (at least one job).
+            let mut end = start + 1;
+            let mut rows = tables[start].rows;
+            while end < jobs.len() && rows + tables[end].rows <= ROW_GROUP {
+                rows += tables[end].rows;
+                end += 1;
+            }
+            let mut group = self.file.next_row_group()?;
             let mut c = next(&mut group)?;
-            c.typed::<DoubleType>()
-                .write_batch(&values, Some(&levels), None)?;
+            for k in start..end {
+                let name = ByteArray::from(jobs[k].0);
+                c.typed::<ByteArrayType>()
+                    .write_batch(&vec![name; tables[k].rows], None, None)?;
+            }
             c.close()?;
+            let mut c = next(&mut group)?;
+            for k in start..end {
+                let r = jobs[k].1;
+                let (values, level) = if r.alpha_used {
+                    (vec![r.alpha], 1)
+                } else {
+                    (Vec::new(), 0)
+                };
+                let values = values.repeat(tables[k].rows);
+                c.typed::<DoubleType>().write_batch(
+                    &values,
+                    Some(&vec![level; tables[k].rows]),
+                    None,
+                )?;
+            }
+            c.close()?;
+            // Each column of the group in one batch: the jobs' values one after
+            // another, a definition level per row (0 where a job lacks it).
+            let (mut values, mut levels) = (Vec::with_capacity(rows), Vec::with_capacity(rows));
+            for name in &self.names {
+                values.clear();
+                levels.clear();
+                for table in &tables[start..end] {
+                    match table.columns.iter().find(|col| &col.name == name) {
+                        Some(column) => {
+                            values
+                                .extend_from_slice(column.values.rows(0..table.rows, &mut scratch));
+                            levels.resize(levels.len() + table.rows, 1);
+                        }
+                        None => levels.resize(levels.len() + table.rows, 0),
+                    }
+                }
+                let mut c = next(&mut group)?;
+                c.typed::<DoubleType>()
+                    .write_batch(&values, Some(&levels), None)?;
+                c.close()?;
+            }
+            group.close()?;
+            start = end;
         }
-        group.close()?;
-        start = end;
+        Ok(())
     }
-    file.close()?;
-    Ok(())
 }
 
 /// A `BYTE_ARRAY` column of UTF-8 text, required or optional.

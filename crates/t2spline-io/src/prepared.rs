@@ -15,6 +15,7 @@
 use t2spline::job::{Job, Overrides, RunOutput, Setting, Settings};
 use t2spline::{Alpha, TypeReduction};
 
+use crate::cad::{render_cad, CadFormat, CadMeta};
 use crate::error::{Error, Problem};
 use crate::finite::check_finite;
 use crate::job::locate;
@@ -188,5 +189,25 @@ impl Prepared {
         let result = self.job.run(&self.settings)?;
         check_finite(&result)?;
         Ok(result)
+    }
+
+    /// The job's exact curves (or surfaces) as the text of a CAD file in
+    /// `format` ([`render_cad`]: the crisp and defuzzified ones and the six
+    /// layers, clamped first where the format needs it), the file named
+    /// `name` in its header, written now ([`CadMeta::now`]); `source` names
+    /// the job in messages.
+    ///
+    /// # Errors
+    /// [`RunError::File`] for what the format cannot hold (degree 0; a
+    /// surface in DXF); the core's errors of [`Job::geometry`].
+    pub fn cad(&self, format: CadFormat, name: String, source: &str) -> Result<String, RunError> {
+        let geometry = self.job.geometry(&self.settings)?;
+        let geometry = if format.clamps() {
+            geometry.clamped()
+        } else {
+            geometry
+        };
+        let meta = CadMeta::now(name, self.job.description.clone());
+        Ok(render_cad(format, &geometry, &meta, source)?)
     }
 }

@@ -283,6 +283,30 @@ pub fn sample_column_names() -> Vec<String> {
     names
 }
 
+/// The highest order of a result's derivatives (0 without).
+pub(crate) fn derivative_order(result: &RunOutput) -> usize {
+    result
+        .samples
+        .derivatives
+        .as_ref()
+        .map_or(0, |d| d.crisp.len())
+}
+
+/// The sample columns of many runs' one table, after `job` and `alpha`:
+/// [`sample_column_names`], then the derivative columns of orders 1 to
+/// `derivatives` in a result's order (`crisp_d1_x`, `crisp_d1_y`,
+/// `crisp_d1_z`, `crisp_d2_x`, …, `defuzzified_d1_x`, …). A column a job
+/// lacks is null in its rows.
+pub(crate) fn jobs_column_names(derivatives: usize) -> Vec<String> {
+    let mut names = sample_column_names();
+    for curve in ["crisp", "defuzzified"] {
+        for k in 1..=derivatives {
+            names.extend(AXES.iter().map(|a| format!("{curve}_d{k}_{a}")));
+        }
+    }
+    names
+}
+
 #[cfg(test)]
 mod tests {
     use t2spline::job::Overrides;

@@ -153,3 +153,32 @@ impl FromModel for ByDim<FuzzyNet> {
         }
     }
 }
+
+/// A value written back as a job's model.
+pub(crate) trait ToModel {
+    /// The model of a job of this value.
+    ///
+    /// # Errors
+    /// `ValueError` for what no job holds (a surface in the plane).
+    fn to_model(&self) -> pyo3::PyResult<Model>;
+}
+
+impl ToModel for ByDim<Fuzzy> {
+    fn to_model(&self) -> pyo3::PyResult<Model> {
+        Ok(match self {
+            ByDim::Planar(c) => Model::Planar(c.clone()),
+            ByDim::Spatial(c) => Model::Spatial(c.clone()),
+        })
+    }
+}
+
+impl ToModel for ByDim<FuzzyNet> {
+    fn to_model(&self) -> pyo3::PyResult<Model> {
+        match self {
+            ByDim::Spatial(s) => Ok(Model::Surface(s.clone())),
+            ByDim::Planar(_) => Err(pyo3::exceptions::PyValueError::new_err(
+                "a surface job has points with x, y and z (docs/method.md §8); this surface is in the plane",
+            )),
+        }
+    }
+}

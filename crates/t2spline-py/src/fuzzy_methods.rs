@@ -39,6 +39,7 @@ pub(crate) fn index(value: i64, count: usize, name: &str) -> PyResult<usize> {
 /// `(net)` (`"n"`, `"nu, nv"`) and whose stages 2–4 are a `Solved`, added to
 /// `methods`, then handed to `then!` (`curve_methods!` or
 /// `surface_methods!`), which writes the `#[pymethods]` block: `from_job`,
+/// `to_job`,
 /// `crisp`, `upper`, `primary`, `lower`, `lower_height`,
 /// `layer_control_points`, `solve`.
 macro_rules! fuzzy_methods {
@@ -103,6 +104,42 @@ macro_rules! fuzzy_methods {
                         source
                     ))
                 })
+            }
+
+            #[doc = concat!("The job of this fuzzy ", $kind, ": a dict with the keys of a job file")]
+            /// (docs/jobs.md) in their canonical form (explicit weights, knots and
+            /// type reduction, every number with its own ``lower_height``), that
+            /// ``run`` and ``t2spline run`` (after ``json.dump``) run to the same
+            /// numbers, and ``from_job`` reads back to an equal object.
+            ///
+            /// Parameters
+            /// ----------
+            /// alpha : float, optional
+            ///     The level alpha of the job; without it, a run of the paper's type
+            ///     reduction needs one (``alpha=``, ``--alpha``).
+            /// samples : int or (int, int), optional
+            ///     The job's samples (default 101 along a curve, 21 × 21 on a surface).
+            /// type_reduction : {"paper", "centroid", "nie-tan", "alpha-planes"}, optional
+            ///     The job's type reduction (default ``"paper"``).
+            /// description : str, optional
+            ///     Free text carried to the result.
+            #[pyo3(signature = (alpha=None, *, samples=None, type_reduction=None, description=None))]
+            fn to_job<'py>(
+                &self,
+                py: Python<'py>,
+                alpha: Option<&Bound<'py, PyAny>>,
+                samples: Option<&Bound<'py, PyAny>>,
+                type_reduction: Option<&Bound<'py, PyAny>>,
+                description: Option<&Bound<'py, PyAny>>,
+            ) -> PyResult<Bound<'py, PyAny>> {
+                $crate::job_dict::job_dict(
+                    py,
+                    $crate::dim::ToModel::to_model(&self.0)?,
+                    alpha,
+                    samples,
+                    type_reduction,
+                    description,
+                )
             }
 
             #[doc = concat!("The crisp values, shape ``(", $net, ", d)``.")]

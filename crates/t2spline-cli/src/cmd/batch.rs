@@ -1,6 +1,8 @@
 //! `t2spline run a.json b.json … -o DIR [--jobs DIR] [--csv DIR]
-//! [--parquet DIR]`: many jobs in one process, in parallel across jobs
-//! (rayon), one result per job, past failing jobs, and a summary table.
+//! [--parquet DIR|FILE.parquet] [--jsonl FILE]`: many jobs in one process, in parallel across jobs
+//! (rayon), one result per job, past failing jobs, and a summary table;
+//! with a one-table output (`--parquet FILE.parquet`, `--jsonl FILE`) and
+//! no `-o`, no file per job, the summary beside the table.
 //!
 //! Each job is all or nothing on its own: its files are complete in
 //! temporary files before any is renamed. They are renamed without a flush
@@ -13,8 +15,8 @@ use std::path::{Path, PathBuf};
 use rayon::prelude::*;
 use t2spline::job::{Overrides, Parameter, RunOutput};
 use t2spline_io::{
-    printable, sync_file_systems, write_jobs_parquet, write_summary_csv, write_summary_parquet,
-    JobSummary, Staged, CSV_FILES, DERIVATIVES_CSV,
+    printable, sync_file_systems, write_jobs_jsonl, write_jobs_parquet, write_summary_csv,
+    write_summary_parquet, JobSummary, JobsParquet, Staged, CSV_FILES, DERIVATIVES_CSV,
 };
 
 use super::prepare::{about_run, alpha_notes, prepare, OptionError};
@@ -28,6 +30,11 @@ use crate::output::{is_stdio, job_name, shown, NewFolders};
 const SUMMARY_CSV: &str = "summary.csv";
 const SUMMARY_PARQUET: &str = "summary.parquet";
 
+/// Jobs run at once while the one Parquet table is written group by
+/// group: enough to keep both cores busy, few enough that their results
+/// take a few megabytes.
+const GROUP: usize = 128;
+
 /// A job of the run: its file and the name of its outputs.
 #[derive(Debug)]
 struct Entry {
@@ -40,12 +47,18 @@ struct Entry {
 struct Batch {
     jobs: Vec<Entry>,
     overrides: Overrides,
-    output: PathBuf,
+    /// The folder of one result file per job (`-o DIR`); none when only
+    /// the one table of every job is asked for.
+    output: Option<PathBuf>,
+    /// The folder of the summary: `-o DIR`, else the one table's.
+    summary_dir: PathBuf,
     csv: Option<PathBuf>,
     /// The folder of one Parquet file per job (`--parquet DIR`).
     parquet: Option<PathBuf>,
     /// The one Parquet file of every job's samples (`--parquet FILE.parquet`).
     one_parquet: Option<PathBuf>,
+    /// The one JSON Lines file of every job's samples (`--jsonl FILE`).
+    jsonl: Option<PathBuf>,
 }
 
 /// What became of one job.
@@ -57,7 +70,7 @@ struct Outcome {
     notes: Vec<String>,
     /// The files written, to be flushed to disk at the end.
     written: Vec<PathBuf>,
-    /// The result, kept for the one Parquet file of every job.
+    /// The result, kept for the one Parquet or JSON Lines file of every job.
     result: Option<RunOutput>,
 }
 
@@ -70,11 +83,18 @@ fn usage(option: &'static str, message: impl Into<String>) -> anyhow::Error {
 }
 
 /// The name of a job's outputs: its file name without `.json`.
-fn output_name(path: &Path) -> String {
+pub(super) fn output_name(path: &Path) -> String {
     let file = path
         .file_name()
         .map_or_else(String::new, |f| f.to_string_lossy().into_owned());
     file.strip_suffix(".json").unwrap_or(&file).to_owned()
+}
+
+/// The folder of the file `path` (`.` for a bare name).
+fn folder_of(path: &Path) -> PathBuf {
+    path.parent()
+        .filter(|d| !d.as_os_str().is_empty())
+        .map_or_else(|| PathBuf::from("."), Path::to_owned)
 }
 
 /// The `*.json` files of `dir` (following links), by name; a link that
@@ -179,17 +199,29 @@ impl Batch {
                 "standard input (`-`) can only be read when it is the one job",
             ));
         }
-        let output = match args.output.as_deref() {
-            Some(dir) if !is_stdio(dir) => dir.to_owned(),
+        let one_table = args
+            .parquet
+            .as_ref()
+            .filter(|p| p.extension().is_some_and(|e| e == "parquet"))
+            .or(args.jsonl.as_ref());
+        let output = match (args.output.as_deref(), one_table) {
+            (Some(dir), _) if !is_stdio(dir) => Some(dir.to_owned()),
+            // Only the one table: no file per job.
+            (None, Some(_)) => None,
             _ => {
                 return Err(usage(
                     "--output",
                     format!(
-                        "{} jobs write one result each: give a folder for them, -o DIR",
+                        "{} jobs write one result each: give a folder for them, -o DIR (or only one table of every job's samples: --parquet FILE.parquet, --jsonl FILE)",
                         paths.len()
                     ),
                 ))
             }
+        };
+        let summary_dir = match (&output, one_table) {
+            (Some(dir), _) => dir.clone(),
+            (None, Some(file)) => folder_of(file),
+            (None, None) => PathBuf::from("."),
         };
         let mut jobs: Vec<Entry> = Vec::with_capacity(paths.len());
         let mut seen = std::collections::HashMap::new();
@@ -223,9 +255,11 @@ impl Batch {
             jobs,
             overrides: overrides(&args),
             output,
+            summary_dir,
             csv: args.csv,
             parquet,
             one_parquet,
+            jsonl: args.jsonl,
         };
         batch.check_outputs()?;
         Ok(batch)
@@ -239,13 +273,16 @@ impl Batch {
         for job in &self.jobs {
             self.destinations(job).claim(&mut claims)?;
         }
-        claims.file("--output", &self.output.join(SUMMARY_CSV))?;
+        claims.file("--output", &self.summary_dir.join(SUMMARY_CSV))?;
         if let Some(dir) = &self.parquet {
             claims.file("--parquet", &dir.join(SUMMARY_PARQUET))?;
         }
         if let Some(file) = &self.one_parquet {
             claims.file("--parquet", file)?;
-            claims.file("--parquet", &self.output.join(SUMMARY_PARQUET))?;
+            claims.file("--parquet", &self.summary_dir.join(SUMMARY_PARQUET))?;
+        }
+        if let Some(file) = &self.jsonl {
+            claims.file("--jsonl", file)?;
         }
         Ok(())
     }
@@ -253,7 +290,10 @@ impl Batch {
     /// Where a job's files go.
     fn destinations(&self, job: &Entry) -> Destinations {
         Destinations {
-            json: Some(self.output.join(format!("{}.json", job.name))),
+            json: self
+                .output
+                .as_ref()
+                .map(|d| d.join(format!("{}.json", job.name))),
             csv: self.csv.as_ref().map(|d| d.join(&job.name)),
             parquet: self
                 .parquet
@@ -297,7 +337,7 @@ impl Batch {
             let out = self.destinations(job);
             out.write(Staged::deferring_sync(), &result)?;
             written = files(&out, &result);
-            kept = self.one_parquet.is_some().then_some(result);
+            kept = (self.one_parquet.is_some() || self.jsonl.is_some()).then_some(result);
             Ok(())
         });
         let error = error.err();
@@ -312,6 +352,54 @@ impl Batch {
             written,
             result: kept,
         }
+    }
+
+    /// Runs every job, in parallel, in order. With the one Parquet table
+    /// and no JSON Lines, the jobs run [`GROUP`] at a time and each group's
+    /// rows go into the table (in memory) before the next runs, so that
+    /// the results are not all held until the end: the table's bytes are
+    /// returned, and the outcomes keep no result.
+    fn run_all(&self) -> anyhow::Result<(Vec<Outcome>, Option<Vec<u8>>)> {
+        if self.one_parquet.is_none() || self.jsonl.is_some() {
+            let outcomes = self.jobs.par_iter().map(|j| self.run_one(j)).collect();
+            return Ok((outcomes, None));
+        }
+        let failed = |source| t2spline_io::Error::Write {
+            path: self.one_parquet.clone().unwrap_or_default(),
+            source,
+        };
+        let mut outcomes = Vec::with_capacity(self.jobs.len());
+        let mut table = None;
+        for group in self.jobs.chunks(GROUP) {
+            let mut done: Vec<Outcome> = group.par_iter().map(|j| self.run_one(j)).collect();
+            let rows: Vec<(&str, &RunOutput)> = group
+                .iter()
+                .zip(&done)
+                .filter_map(|(j, o)| o.result.as_ref().map(|r| (j.name.as_str(), r)))
+                .collect();
+            if let (None, Some((_, first))) = (&table, rows.first()) {
+                // Every job runs with the same derivatives (an option).
+                let order = first
+                    .samples
+                    .derivatives
+                    .as_ref()
+                    .map_or(0, |d| d.crisp.len());
+                table = Some(JobsParquet::new(Vec::new(), order).map_err(failed)?);
+            }
+            if let Some(t) = &mut table {
+                t.write(&rows).map_err(failed)?;
+            }
+            drop(rows);
+            for o in &mut done {
+                o.result = None;
+            }
+            outcomes.extend(done);
+        }
+        let table = match table {
+            Some(t) => t,
+            None => JobsParquet::new(Vec::new(), 0).map_err(failed)?,
+        };
+        Ok((outcomes, Some(table.finish().map_err(failed)?)))
     }
 
     /// The job's result (each job with its own type reduction unless
@@ -361,7 +449,7 @@ pub fn run(args: RunArgs) -> anyhow::Result<()> {
     let batch = Batch::new(args)?;
     let mut folders = NewFolders::default();
     for dir in [
-        Some(&batch.output),
+        batch.output.as_ref(),
         batch.csv.as_ref(),
         batch.parquet.as_ref(),
     ]
@@ -370,7 +458,7 @@ pub fn run(args: RunArgs) -> anyhow::Result<()> {
     {
         folders.create(dir)?;
     }
-    let outcomes: Vec<Outcome> = batch.jobs.par_iter().map(|j| batch.run_one(j)).collect();
+    let (outcomes, streamed) = batch.run_all()?;
     let mut worst = Exit::Ok;
     let mut stderr = std::io::stderr().lock();
     for (job, outcome) in batch.jobs.iter().zip(&outcomes) {
@@ -396,15 +484,20 @@ pub fn run(args: RunArgs) -> anyhow::Result<()> {
         .zip(&kept)
         .filter_map(|(job, r)| r.as_ref().map(|r| (job.name.as_str(), r)))
         .collect();
-    let summary = batch.output.join(SUMMARY_CSV);
+    let summary = batch.summary_dir.join(SUMMARY_CSV);
     let mut staged = Staged::default();
-    if let Some(file) = &batch.one_parquet {
-        staged.add(file, |w| write_jobs_parquet(w, &one))?;
+    match (&batch.one_parquet, &streamed) {
+        (Some(file), Some(bytes)) => staged.add(file, |w| w.write_all(bytes))?,
+        (Some(file), None) => staged.add(file, |w| write_jobs_parquet(w, &one))?,
+        (None, _) => {}
+    }
+    if let Some(file) = &batch.jsonl {
+        staged.add(file, |w| write_jobs_jsonl(w, &one))?;
     }
     staged.add(&summary, |w| write_summary_csv(w, &rows))?;
     let summary_parquet = match (&batch.parquet, &batch.one_parquet) {
         (Some(dir), _) => Some(dir.join(SUMMARY_PARQUET)),
-        (None, Some(_)) => Some(batch.output.join(SUMMARY_PARQUET)),
+        (None, Some(_)) => Some(batch.summary_dir.join(SUMMARY_PARQUET)),
         (None, None) => None,
     };
     if let Some(path) = &summary_parquet {

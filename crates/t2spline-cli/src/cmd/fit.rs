@@ -1,11 +1,12 @@
 //! `t2spline fit DATA.json [-o JOB.json] [--parametrization M] [--control-points M]
-//! [--fuzzy-fit valid|independent] [-q]`.
+//! [--fuzzy-fit valid|independent] [--alpha A] [-q]`; a readings file (CSV) is
+//! fuzzified first with `fuzzify`'s options.
 
 use std::path::PathBuf;
 
 use anyhow::anyhow;
 use t2spline::fit::{Deviation, FitOptions, FitSummary, FuzzyFitMode, Parametrization};
-use t2spline::Layer;
+use t2spline::{Alpha, Layer};
 use t2spline_io::{is_readings, parse_data, parse_job, printable, to_json_pretty, FitData};
 
 use super::prepare::OptionError;
@@ -41,7 +42,8 @@ impl Plan {
         }
         let text = read_input(&args.data)?;
         let (data, fuzzified) = if is_readings(&args.data, &text) {
-            let data = super::fuzzify::readings_data(&args.data, &text, &args.readings, None)?;
+            let data =
+                super::fuzzify::readings_data(&args.data, &text, &args.readings, args.alpha)?;
             let note = format!(
                 "{}: a readings file (CSV), fuzzified first as `t2spline fuzzify` does: {}",
                 printable(&data.source),
@@ -65,7 +67,14 @@ impl Plan {
                 }
                 .into());
             }
-            (parse_data(&text, &job_name(&args.data))?, None)
+            let mut data = parse_data(&text, &job_name(&args.data))?;
+            if let Some(a) = args.alpha {
+                data.alpha = Some(Alpha::try_new(a).map_err(|e| OptionError {
+                    option: "--alpha",
+                    message: e.to_string(),
+                })?);
+            }
+            (data, None)
         };
         if let Some(m) = args.control_points {
             let (min, max) = (data.degree + 1, data.len());

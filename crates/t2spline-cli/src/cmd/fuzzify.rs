@@ -4,88 +4,47 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::anyhow;
-use t2spline::fit::{FuzzifyRule, DEFAULT_LOWER_HEIGHT};
-use t2spline::Alpha;
-use t2spline_io::job::MAX_ORDER;
-use t2spline_io::{data_json, parse_data, parse_readings, to_json_pretty, FitData};
+use t2spline_io::{
+    data_json, fuzzify_readings, parse_data, to_json_pretty, FitData, ReadingsError,
+    ReadingsOption, ReadingsOptions,
+};
 
 use super::prepare::OptionError;
 use crate::clash::Claims;
 use crate::cli::{FuzzifyArgs, ReadingsArgs};
 use crate::output::{job_name, read_input, Outputs};
 
-/// The degree of a fit when neither `--degree` nor `--order` is given.
-const DEFAULT_DEGREE: usize = 3;
-
 /// Fuzzy data points from the readings file at `path` (whose text is
 /// `text`), with the rule and the curve's degree from the options, and the
-/// `alpha` to carry; the validated data of a fit.
+/// `alpha` to carry; the validated data of a fit (the I/O crate's
+/// [`fuzzify_readings`], errors naming the option).
 pub(super) fn readings_data(
     path: &Path,
     text: &str,
     options: &ReadingsArgs,
     alpha: Option<f64>,
 ) -> anyhow::Result<FitData> {
-    let rule = FuzzifyRule::try_new(
-        options.tolerance.unwrap_or(0.0),
-        options.lower_height.unwrap_or(DEFAULT_LOWER_HEIGHT),
-    )
-    .map_err(|e| OptionError {
-        option: match e {
-            t2spline::Error::OutOfRange {
-                what: "tolerance", ..
-            } => "--tolerance",
-            _ => "--lower-height",
-        },
-        message: e.to_string(),
-    })?;
-    let (degree_key, degree) = degree(options)?;
-    let alpha = alpha
-        .map(Alpha::try_new)
-        .transpose()
-        .map_err(|e| OptionError {
-            option: "--alpha",
-            message: e.to_string(),
-        })?;
-    let file = parse_readings(text, &job_name(path))?;
-    if file.stations.len() < degree + 1 {
-        return Err(OptionError {
-            option: if degree_key == "order" { "--order" } else { "--degree" },
-            message: format!(
-                "{}: {} stations, but a curve of degree {degree} needs at least {}; give a lower degree",
-                t2spline_io::printable(&file.source),
-                file.stations.len(),
-                degree + 1
-            ),
-        }
-        .into());
-    }
-    let points = file
-        .readings
-        .fuzzify(&rule)
-        .map_err(|e| file.fuzzify_error(&e))?;
-    Ok(file.fit_data(points, &rule, degree_key, degree, alpha))
-}
-
-/// The degree from `--degree` or `--order` (default [`DEFAULT_DEGREE`]), with
-/// the key the data file will use.
-fn degree(options: &ReadingsArgs) -> anyhow::Result<(&'static str, usize)> {
-    let (key, option, degree) = match (options.degree, options.order) {
-        (_, Some(k)) => ("order", "--order", k.checked_sub(1)),
-        (Some(p), None) => ("degree", "--degree", Some(p)),
-        (None, None) => return Ok(("degree", DEFAULT_DEGREE)),
+    let options = ReadingsOptions {
+        tolerance: options.tolerance,
+        lower_height: options.lower_height,
+        degree: options.degree,
+        order: options.order,
+        alpha,
     };
-    match degree {
-        Some(p) if p >= 1 && p < MAX_ORDER as u64 => Ok((key, p as usize)),
-        _ => Err(OptionError {
-            option,
-            message: format!(
-                "a fit needs degree 1 to {} (order 2 to {MAX_ORDER})",
-                MAX_ORDER - 1
-            ),
+    fuzzify_readings(text, &job_name(path), &options).map_err(|e| match e {
+        ReadingsError::File(e) => e.into(),
+        ReadingsError::Option { option, message } => OptionError {
+            option: match option {
+                ReadingsOption::Tolerance => "--tolerance",
+                ReadingsOption::LowerHeight => "--lower-height",
+                ReadingsOption::Degree => "--degree",
+                ReadingsOption::Order => "--order",
+                ReadingsOption::Alpha => "--alpha",
+            },
+            message,
         }
-        .into()),
-    }
+        .into(),
+    })
 }
 
 pub fn fuzzify(args: FuzzifyArgs) -> anyhow::Result<()> {

@@ -1,11 +1,12 @@
 //! `t2spline run JOB.json [-o OUT.json] [--alpha A] [--type-reduction NAME]
-//! [--samples N] [--csv DIR] [--parquet FILE] [--derivatives K]`; with
+//! [--samples N] [--csv DIR] [--parquet FILE] [--jsonl FILE] [--derivatives K]`; with
 //! several jobs, `cmd/batch.rs`.
 
 use std::path::Path;
 
-use t2spline_io::{write_json_pretty, Prepared, Staged};
+use t2spline_io::{write_jobs_jsonl, write_json_pretty, Prepared, Staged};
 
+use super::batch::output_name;
 use super::prepare::{about_run, note_alpha, prepare};
 use super::results::{overrides, Destinations, ALPHA_IGNORED};
 use crate::clash::Claims;
@@ -16,6 +17,9 @@ use crate::output::{is_stdio, to_stdout};
 struct Plan {
     prepared: Prepared,
     out: Destinations,
+    /// The JSON Lines file of the samples (`--jsonl`), and the job's name
+    /// in it (as a run of many jobs names it).
+    jsonl: Option<(std::path::PathBuf, String)>,
 }
 
 impl Plan {
@@ -25,7 +29,12 @@ impl Plan {
             csv: args.csv.clone(),
             parquet: args.parquet.clone(),
         };
-        out.claim(&mut Claims::new([path]))?;
+        let mut claims = Claims::new([path]);
+        out.claim(&mut claims)?;
+        if let Some(file) = &args.jsonl {
+            claims.file("--jsonl", file)?;
+        }
+        let jsonl = args.jsonl.clone().map(|f| (f, output_name(path)));
         let prepared = prepare(path, &overrides(&args))?;
         note_alpha(
             "run",
@@ -33,7 +42,11 @@ impl Plan {
             args.alpha.is_some(),
             ALPHA_IGNORED,
         );
-        Ok(Plan { prepared, out })
+        Ok(Plan {
+            prepared,
+            out,
+            jsonl,
+        })
     }
 }
 
@@ -46,7 +59,11 @@ pub fn run(mut args: RunArgs) -> anyhow::Result<()> {
     // Nothing is written unless every number is finite (serde_json would write
     // NaN as null): the run checks it.
     let result = plan.prepared.run().map_err(about_run)?;
-    plan.out.write(Staged::default(), &result)?;
+    let mut staged = Staged::default();
+    if let Some((file, name)) = &plan.jsonl {
+        staged.add(file, |w| write_jobs_jsonl(w, &[(name.as_str(), &result)]))?;
+    }
+    plan.out.write(staged, &result)?;
     if plan.out.json.is_none() {
         to_stdout(|w| write_json_pretty(w, &result))?;
     }

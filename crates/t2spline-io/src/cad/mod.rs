@@ -27,12 +27,14 @@
 //! ([`Geometry::clamped`]), which the caller applies when
 //! [`CadFormat::clamps`] says so.
 
+mod clock;
 mod dxf;
 mod iges;
 mod obj;
 mod step;
 
 use std::fmt;
+use std::path::Path;
 
 use t2spline::job::Geometry;
 use t2spline::Num;
@@ -80,6 +82,37 @@ impl CadFormat {
     pub fn clamps(self) -> bool {
         self == CadFormat::Dxf
     }
+
+    /// The format of a name (`dxf`, `step`, `iges`, `obj`).
+    #[must_use]
+    pub fn named(name: &str) -> Option<CadFormat> {
+        CadFormat::ALL.into_iter().find(|f| f.name() == name)
+    }
+
+    /// The format that a file's extension names, in any case: `.dxf`,
+    /// `.step` or `.stp`, `.iges` or `.igs`, `.obj`.
+    ///
+    /// # Examples
+    /// ```
+    /// # use std::path::Path;
+    /// # use t2spline_io::CadFormat;
+    /// assert_eq!(CadFormat::from_extension(Path::new("part.STP")), Some(CadFormat::Step));
+    /// assert_eq!(CadFormat::from_extension(Path::new("part.txt")), None);
+    /// ```
+    #[must_use]
+    pub fn from_extension(path: &Path) -> Option<CadFormat> {
+        let extension = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .map(str::to_ascii_lowercase);
+        match extension.as_deref() {
+            Some("dxf") => Some(CadFormat::Dxf),
+            Some("step" | "stp") => Some(CadFormat::Step),
+            Some("iges" | "igs") => Some(CadFormat::Iges),
+            Some("obj") => Some(CadFormat::Obj),
+            _ => None,
+        }
+    }
 }
 
 impl fmt::Display for CadFormat {
@@ -97,6 +130,20 @@ pub struct CadMeta {
     pub description: Option<String>,
     /// When the file was written, as `YYYY-MM-DDThh:mm:ss` (UTC).
     pub timestamp: String,
+}
+
+impl CadMeta {
+    /// The header of a file named `name` written now (or at
+    /// `SOURCE_DATE_EPOCH`, seconds since 1970, when set) of a job with
+    /// `description`.
+    #[must_use]
+    pub fn now(name: String, description: Option<String>) -> CadMeta {
+        CadMeta {
+            name,
+            description,
+            timestamp: clock::timestamp(),
+        }
+    }
 }
 
 /// The text of a CAD file of `geometry`.

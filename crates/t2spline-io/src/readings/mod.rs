@@ -35,9 +35,13 @@
 #![cfg_attr(not(test), deny(clippy::indexing_slicing))]
 
 mod data;
+mod options;
 pub(crate) mod tokens;
 
 pub use data::data_json;
+pub use options::{
+    fuzzify_readings, ReadingsError, ReadingsOption, ReadingsOptions, DEFAULT_DEGREE,
+};
 
 use std::collections::HashMap;
 use std::path::Path;

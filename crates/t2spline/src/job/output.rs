@@ -12,7 +12,7 @@ use std::fmt;
 use crate::fuzzy::Layer;
 use crate::reduction::TypeReduction;
 
-use super::Points;
+use super::{NearHeight, Points};
 
 /// Everything a run computes: the stages' control points, every curve (or
 /// surface) sampled at uniform parameters, and the distance between the crisp
@@ -42,6 +42,10 @@ pub struct RunOutput {
     /// Which rule of docs/method.md §3 reduced the numbers; `None` for a type
     /// reduction other than the paper's.
     pub regime: Option<Regime>,
+    /// With the paper's reduction, a lower height that alpha lies a few ulps
+    /// above ([`NearHeight`]: the other side of the jump at `alpha = h`); the
+    /// result file says so in a `note`.
+    pub near_height: Option<NearHeight>,
     /// Control points of every stage.
     pub control_points: ControlPoints,
     /// Curves or surfaces sampled at `samples.params`.

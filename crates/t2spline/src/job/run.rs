@@ -89,6 +89,7 @@ impl ModelVisitor for Run<'_> {
             alpha: alpha.get(),
             alpha_used: type_reduction.uses_alpha(),
             regime: regime(solution.stages()),
+            near_height: s.near_height(),
             control_points: control_points(curve.points(), solution.stages(), None),
             samples: sampled(
                 sweep,
@@ -148,6 +149,7 @@ impl ModelVisitor for Run<'_> {
             alpha: alpha.get(),
             alpha_used: type_reduction.uses_alpha(),
             regime: regime(solution.stages()),
+            near_height: s.near_height(),
             control_points: control_points(surface.points(), solution.stages(), Some([nu, nv])),
             samples: sampled(
                 grid.into_samples(),

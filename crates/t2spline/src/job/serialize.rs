@@ -24,12 +24,14 @@ impl Serialize for RunOutput {
     /// The keys in the order of the result file: `description` (if any),
     /// `dimension`, `order`, `degree`, `weights`, `knots`, `domain`,
     /// `type_reduction`, `alpha`, `alpha_used`, `regime` (`null` for a
-    /// reduction other than the paper's), `control_points`, `curves` or
-    /// `surfaces`, `error`. A
+    /// reduction other than the paper's), `note` (only for an alpha a few
+    /// ulps above a lower height: the [`NearHeight`](super::NearHeight)'s
+    /// text, naming the height), `control_points`, `curves` or `surfaces`,
+    /// `error`. A
     /// surface's `order` and `degree` are pairs, its `weights` rows, its
     /// `knots` and `domain` objects with `u` and `v`.
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
-        let mut o = s.serialize_struct("RunOutput", 14)?;
+        let mut o = s.serialize_struct("RunOutput", 15)?;
         if let Some(d) = &self.description {
             o.serialize_field("description", d)?;
         }
@@ -68,6 +70,9 @@ impl Serialize for RunOutput {
         o.serialize_field("alpha", &self.alpha)?;
         o.serialize_field("alpha_used", &self.alpha_used)?;
         o.serialize_field("regime", &self.regime)?;
+        if let Some(near) = &self.near_height {
+            o.serialize_field("note", &near.to_string())?;
+        }
         o.serialize_field("control_points", &self.control_points)?;
         o.serialize_field(samples_key, &self.samples)?;
         o.serialize_field("error", &self.error)?;
