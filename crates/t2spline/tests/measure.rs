@@ -480,7 +480,9 @@ fn the_example_holds_every_admissible_curve_drawn() {
         state ^= state << 17;
         (state >> 11) as f64 / (1u64 << 53) as f64
     };
-    let draws: Vec<Vec<f64>> = (0..1200).map(|_| (0..8).map(|_| next()).collect()).collect();
+    let draws: Vec<Vec<f64>> = (0..1200)
+        .map(|_| (0..8).map(|_| next()).collect())
+        .collect();
     for m in MEMBERSHIPS {
         for a in [0.0, 0.5, 0.6] {
             check_sound(&c, m, alpha(a), &draws, true);
