@@ -70,6 +70,8 @@ fit
     Fuzzy data points → a fuzzy curve and a summary of the fit.
 benchmark_curve
     The curve that ``t2spline bench`` times.
+benchmark_surface
+    The surface that ``t2spline bench --case surface`` times.
 t2spline.plot
     Drawing the stages into matplotlib axes (``pip install t2spline[plot]``).
 t2spline.types
@@ -117,6 +119,7 @@ from ._t2spline import (
     SurfaceSolution,
     __version__,
     benchmark_curve,
+    benchmark_surface,
     centroid,
     fit,
     run,
@@ -137,6 +140,7 @@ __all__ = [
     "SurfaceSolution",
     "__version__",
     "benchmark_curve",
+    "benchmark_surface",
     "centroid",
     "fit",
     "run",

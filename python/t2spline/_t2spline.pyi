@@ -50,6 +50,7 @@ __all__ = [
     "_panic_for_tests",
     "_run_rows",
     "benchmark_curve",
+    "benchmark_surface",
     "centroid",
     "fit",
     "run",
@@ -504,5 +505,6 @@ def fit(
 ) -> Tuple[FuzzyCurve, FitSummary]: ...
 
 def benchmark_curve() -> FuzzyCurve: ...
+def benchmark_surface() -> FuzzySurface: ...
 
 def _panic_for_tests(message: str) -> None: ...

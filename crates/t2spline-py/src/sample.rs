@@ -7,7 +7,7 @@
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyInt};
-use t2spline::sampling::Params;
+use t2spline::sampling::{Params, SampleBuffer};
 
 use crate::arrays::{array, broadcast_shape, floats, shape_text};
 use crate::errors::{compute, core_error};
@@ -106,11 +106,11 @@ fn check_bytes(values: u128, what: impl FnOnce() -> String) -> PyResult<()> {
 ///
 /// # Errors
 /// The error of [`check_output`].
-pub(crate) fn output_buffer(params: usize, per_param: usize, name: &str) -> PyResult<Vec<f64>> {
+pub(crate) fn output_buffer(params: usize, per_param: usize, name: &str) -> PyResult<SampleBuffer> {
     check_output(params, per_param, name)?;
-    // Zeroed memory comes from the system untouched (calloc), so the engine's
-    // writes are the first: no extra pass over the output.
-    Ok(vec![0.0; params * per_param])
+    // Zero memory from the system, untouched (a huge-page mapping when
+    // large), so the engine's threads write first: no extra pass over it.
+    Ok(SampleBuffer::zeros(params * per_param))
 }
 
 /// Where to sample a surface: the grid `u × v`, each a count of uniform
@@ -157,10 +157,10 @@ impl GridArg {
     ///
     /// # Errors
     /// As [`GridArg::check_output`].
-    pub(crate) fn buffer(&self, per_point: usize) -> PyResult<Vec<f64>> {
+    pub(crate) fn buffer(&self, per_point: usize) -> PyResult<SampleBuffer> {
         self.check_output(per_point)?;
         let [su, sv] = self.shape();
-        Ok(vec![0.0; su * sv * per_point])
+        Ok(SampleBuffer::zeros(su * sv * per_point))
     }
 
     /// The parameters along u and along v as arrays: the uniform ones over

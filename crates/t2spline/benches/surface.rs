@@ -1,6 +1,7 @@
 //! Surface sampling benchmarks (criterion): the `benchmark_surface` (bicubic,
 //! rational, 8 × 8 net) on a 1000 × 1000 grid — the crisp surface on one
-//! thread, the seven layer surfaces on one thread, both on two threads — and
+//! thread, the seven layer surfaces on one thread, both on one and two threads
+//! into fresh arrays and into reused ones — and
 //! the same crisp surface sampled by curvo's `NurbsSurface::regular_sample_points`
 //! in the same run, so that the ratios are measured side by side.
 //!
@@ -123,6 +124,20 @@ fn fuzzy(c: &mut Criterion) {
                             .sample_grid(Params::Uniform(SIDE), Params::Uniform(SIDE))
                             .unwrap(),
                     )
+                })
+            });
+        });
+        let mut out = Grid::buffer(CurveSamples::empty());
+        g.bench_function(BenchmarkId::new("crisp_reused_output", t), |b| {
+            b.iter(|| {
+                threads.install(|| {
+                    crisp
+                        .sample_grid_into(
+                            Params::Uniform(SIDE),
+                            Params::Uniform(SIDE),
+                            black_box(&mut out),
+                        )
+                        .unwrap()
                 })
             });
         });

@@ -90,11 +90,14 @@
 //! dev-dependency only.
 
 mod benchmark;
+mod buffer;
 mod curves;
 mod direct;
 mod distance_sweep;
 mod grid;
 mod kernel;
+#[cfg(target_os = "linux")]
+mod mapping;
 mod params;
 mod plan;
 mod power_form;
@@ -103,7 +106,13 @@ mod samples;
 mod surfaces;
 
 pub use benchmark::{benchmark_curve, benchmark_levels, benchmark_surface};
+pub(crate) use buffer::Fresh;
+pub use buffer::{release_cached_memory, SampleBuffer, LARGE_BYTES};
 pub use distance_sweep::DistanceSweep;
+/// The most memory the mappings of dropped sample buffers keep for reuse
+/// (Linux; 256 MiB: the 21 coordinates of a fuzzy surface's seven layers at
+/// 10⁶ points are 168 MB); [`release_cached_memory`] returns it.
+pub const CACHE_BYTES: usize = 256 << 20;
 pub use grid::GridSampler;
 pub use params::Params;
 pub use sampler::{Bound, Sampler};
