@@ -11,6 +11,7 @@
 //! a number. Rust never reads or writes the values after handing them
 //! over, so numpy's writes through the array race with nothing.
 
+use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use t2spline::sampling::SampleBuffer;
@@ -53,7 +54,9 @@ pub(crate) fn owned_array<'py>(
     shape: &[usize],
 ) -> PyResult<Bound<'py, PyAny>> {
     if !buffer.is_mapped() {
-        return crate::arrays::array(py, buffer.into_vec(), shape);
+        return Ok(PyArray1::from_vec(py, buffer.into_vec())
+            .reshape(shape.to_vec())?
+            .into_any());
     }
     let owner = Bound::new(py, SampleMemory { buffer })?;
     py.import("numpy")?

@@ -101,16 +101,16 @@ fn check_bytes(values: u128, what: impl FnOnce() -> String) -> PyResult<()> {
     Ok(())
 }
 
-/// A zeroed buffer of `params × per_param` values for the engine to write
-/// into, within [`check_output`]'s limit.
+/// A buffer of `params × per_param` values for the engine to overwrite, within [`check_output`]'s limit.
 ///
 /// # Errors
 /// The error of [`check_output`].
 pub(crate) fn output_buffer(params: usize, per_param: usize, name: &str) -> PyResult<SampleBuffer> {
     check_output(params, per_param, name)?;
-    // Zero memory from the system, untouched (a huge-page mapping when
-    // large), so the engine's threads write first: no extra pass over it.
-    Ok(SampleBuffer::zeros(params * per_param))
+    // Untouched memory (a zeroed allocation, or a huge-page mapping when
+    // large, perhaps a dropped one's): the engine's threads write first,
+    // with no extra pass over it.
+    Ok(SampleBuffer::for_overwrite(params * per_param))
 }
 
 /// Where to sample a surface: the grid `u × v`, each a count of uniform
@@ -152,7 +152,8 @@ impl GridArg {
         })
     }
 
-    /// A zeroed buffer of `per_point` values per grid point, within
+    /// A buffer of `per_point` values per grid point for the engine to
+    /// overwrite (as [`output_buffer`]), within
     /// [`GridArg::check_output`]'s limit.
     ///
     /// # Errors
@@ -160,7 +161,7 @@ impl GridArg {
     pub(crate) fn buffer(&self, per_point: usize) -> PyResult<SampleBuffer> {
         self.check_output(per_point)?;
         let [su, sv] = self.shape();
-        Ok(SampleBuffer::zeros(su * sv * per_point))
+        Ok(SampleBuffer::for_overwrite(su * sv * per_point))
     }
 
     /// The parameters along u and along v as arrays: the uniform ones over
