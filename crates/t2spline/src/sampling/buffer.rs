@@ -118,7 +118,7 @@ impl SampleBuffer {
     /// let mut buffer = SampleBuffer::for_overwrite(7 * 2 * n);
     /// let mut out: Vec<&mut [f64]> = buffer.chunks_mut(n).collect();
     /// c.sample_layers_into_slices(Params::Uniform(n), &mut out)?;
-    /// assert_eq!(buffer[0], 0.0 - 0.3); // x of upper_left at t = 0
+    /// assert!((buffer[0] + 0.3).abs() < 1e-12); // x of upper_left at t = 0: c − 0.3, c = 0
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     #[must_use]
