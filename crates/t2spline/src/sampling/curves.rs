@@ -121,10 +121,11 @@ impl<const D: usize> FuzzyCurve<D> {
 
     /// [`FuzzyCurve::sample_layers`] into memory the caller owns: `out` holds
     /// `7·D` slices, each as long as `params`, and `out[k·D + d]` receives
-    /// coordinate `d` of the layer [`Layer::ALL`](crate::Layer::ALL)`[k]` (the order of docs/method.md §1, from
-    /// `upper_left` to `upper_right`). Front ends that keep their own arrays
-    /// (the Python bindings write into one numpy buffer) get the engine's
-    /// output without a copy. The values are those of `sample_layers`, bit
+    /// coordinate `d` of the layer [`Layer::ALL`](crate::Layer::ALL)`[k]`
+    /// (the order of docs/method.md §1, from `upper_left` to `upper_right`).
+    /// Front ends that keep their own arrays (the Python bindings write into
+    /// one buffer that numpy then owns) get the engine's output without a
+    /// copy. The values are those of `sample_layers`, bit
     /// for bit.
     ///
     /// # Errors

@@ -77,10 +77,12 @@
 //! cut into chunks of whole blocks and run on rayon's current pool. Every value
 //! is computed by the same operations in any chunking, so the results are those
 //! of one thread bit for bit (tested); without the feature the core has no
-//! rayon. Output is exactly one `Vec<f64>` per channel and nothing else grows
-//! with the number of parameters (uniform parameters are never stored). Fresh
-//! output costs page faults on first write, which dominate at 10⁶–10⁷ points;
-//! the `_into` forms reuse a caller's vectors. A job's run samples the
+//! rayon. Output is exactly one [`SampleBuffer`] per channel and nothing else
+//! grows with the number of parameters (uniform parameters are never stored).
+//! Fresh output used to cost page faults on first write that dominated at
+//! 10⁶–10⁷ points: a large buffer is now a huge-page mapping first touched by
+//! the threads that fill it, and dropped ones are kept for the next output
+//! (`buffer.rs`, `mapping.rs`); the `_into` forms reuse a caller's buffers. A job's run samples the
 //! solution it has already computed (one sampler for the layers and the
 //! stages) rather than asking a sweep to solve again, since the alpha-plane
 //! reduction integrates per number.

@@ -148,10 +148,11 @@ impl<const D: usize> FuzzySurface<D> {
 
     /// [`FuzzySurface::sample_layers`] into memory the caller owns: `out`
     /// holds `7·D` slices of `u.len()·v.len()` values, and `out[k·D + d]`
-    /// receives coordinate `d` of the layer [`Layer::ALL`](crate::Layer::ALL)`[k]` (the order of
-    /// docs/method.md §1), `[a·sv + b]` at `(u_a, v_b)`. Front ends that keep
-    /// their own arrays (the Python bindings) get the engine's output without
-    /// a copy; the values are those of `sample_layers`, bit for bit.
+    /// receives coordinate `d` of the layer
+    /// [`Layer::ALL`](crate::Layer::ALL)`[k]` (the order of docs/method.md
+    /// §1), `[a·sv + b]` at `(u_a, v_b)`. Front ends that keep their own
+    /// arrays (the Python bindings) get the engine's output without a copy;
+    /// the values are those of `sample_layers`, bit for bit.
     ///
     /// # Errors
     /// [`Error::Length`] if `out` has the wrong number or length of slices;
