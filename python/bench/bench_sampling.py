@@ -6,11 +6,15 @@ sources (``cargo build --release --bin t2spline``):
 1. Sampling the seven layer curves of the benchmark curve at 10⁶ parameters
    on one thread: ``FuzzyCurve.sample(1_000_000)`` on
    ``t2spline.benchmark_curve()`` against
-   ``t2spline bench --case fuzzy --points 1000000 --threads 1``. Both allocate
-   their output on every run and report the median of five runs after one
-   warm-up run; the Python side runs in a child process with
-   ``RAYON_NUM_THREADS=1`` (the engine's thread pool then has one thread, as
-   ``--threads 1`` gives the Rust side).
+   ``t2spline bench --case fuzzy --points 1000000 --threads 1 --compare``,
+   and the seven layer surfaces of ``t2spline.benchmark_surface()`` on a
+   1000 × 1000 grid against ``--case surface-fuzzy``. Python allocates its
+   output on every run (numpy arrays that own the engine's buffers, large
+   ones in huge-page mappings); the Rust side times fresh arrays and arrays
+   it reuses. Each reports the median of five runs after one warm-up run;
+   the Python side runs in a child process with ``RAYON_NUM_THREADS=1`` (the
+   engine's thread pool then has one thread, as ``--threads 1`` gives the
+   Rust side).
 2. A whole job at 10⁶ samples: ``t2spline.run(job, samples=1_000_000)``
    against ``t2spline run job --samples 1000000 -o FILE`` (the JSON result
    written to a file), wall time of the whole command.
@@ -38,28 +42,34 @@ POINTS = 1_000_000
 RUNS = 5
 
 
-def rust_sampling(binary: Path) -> float:
-    """Median seconds of `t2spline bench --case fuzzy` (fresh output)."""
+def rust_sampling(binary: Path, case: str) -> tuple[float, float]:
+    """Median seconds of `t2spline bench --case CASE --compare`: fresh, reused."""
     out = subprocess.run(
-        [str(binary), "bench", "--case", "fuzzy", "--points", str(POINTS), "--threads", "1"],
+        [str(binary), "bench", "--case", case, "--points", str(POINTS), "--threads", "1", "--compare"],
         check=True,
         capture_output=True,
         text=True,
     ).stdout
-    fields = dict(f.split("=", 1) for f in out.split() if "=" in f)
-    return float(fields["seconds"])
+    lines = [line for line in out.splitlines() if line.startswith("bench ")]
+    seconds = [float(dict(f.split("=", 1) for f in line.split() if "=" in f)["seconds"]) for line in lines]
+    return seconds[0], seconds[1]
 
 
-def python_sampling() -> float:
-    """Median seconds of `FuzzyCurve.sample` in a child process on one thread."""
+def python_sampling(surface: bool) -> float:
+    """Median seconds of `FuzzyCurve.sample` (or `FuzzySurface.sample` on a
+    1000 × 1000 grid) in a child process on one thread."""
+    side = round(POINTS**0.5)
+    model, call = (
+        ("benchmark_surface", f"sample({side}, {side})") if surface else ("benchmark_curve", f"sample({POINTS})")
+    )
     code = (
         "import json, statistics, time, t2spline\n"
-        "c = t2spline.benchmark_curve()\n"
-        f"c.sample({POINTS})\n"
+        f"c = t2spline.{model}()\n"
+        f"c.{call}\n"
         "times = []\n"
         f"for _ in range({RUNS}):\n"
         "    start = time.perf_counter()\n"
-        f"    s = c.sample({POINTS})\n"
+        f"    s = c.{call}\n"
         "    del s\n"
         "    times.append(time.perf_counter() - start)\n"
         "print(json.dumps(statistics.median(times)))\n"
@@ -104,14 +114,18 @@ def main() -> None:
     if not args.bin.exists():
         sys.exit(f"{args.bin}: not found; build it with `cargo build --release --bin t2spline`")
 
-    sampling = []
+    ratios: dict[str, list[float]] = {"fuzzy": [], "surface-fuzzy": []}
+    against_reused: dict[str, list[float]] = {"fuzzy": [], "surface-fuzzy": []}
     for k in range(args.rounds):
-        rust, python = rust_sampling(args.bin), python_sampling()
-        sampling.append(python / rust)
-        print(
-            f"sampling round {k + 1}: rust {rust * 1e3:.1f} ms, python {python * 1e3:.1f} ms, "
-            f"ratio {python / rust:.3f}"
-        )
+        for case in ratios:
+            (fresh, reused), python = rust_sampling(args.bin, case), python_sampling(case == "surface-fuzzy")
+            ratios[case].append(python / fresh)
+            against_reused[case].append(python / reused)
+            print(
+                f"{case} round {k + 1}: rust fresh {fresh * 1e3:.1f} ms, rust reused {reused * 1e3:.1f} ms, "
+                f"python {python * 1e3:.1f} ms, python / rust fresh {python / fresh:.3f}, "
+                f"python / rust reused {python / reused:.3f}"
+            )
 
     runs = []
     with tempfile.TemporaryDirectory() as folder:
@@ -124,10 +138,12 @@ def main() -> None:
                 f"ratio {python / rust:.3f}"
             )
 
-    print(
-        f"sampling 10^6 parameters, 7 layers, 1 thread: python / rust = "
-        f"{statistics.median(sampling):.3f} (median of {args.rounds} rounds; goal <= 1.2)"
-    )
+    for case, what in [("fuzzy", "10^6 parameters, 7 layers"), ("surface-fuzzy", "1000 x 1000 grid, 7 layers")]:
+        print(
+            f"sampling {what}, 1 thread: python / rust fresh = {statistics.median(ratios[case]):.3f} "
+            f"(goal <= 1.2), python / rust reused = {statistics.median(against_reused[case]):.3f} "
+            f"(median of {args.rounds} rounds)"
+        )
     print(
         f"run at 10^6 samples: t2spline.run / `t2spline run -o FILE` = "
         f"{statistics.median(runs):.3f} (median of {args.rounds} rounds; goal < 1)"

@@ -75,6 +75,8 @@ fuzzify, export, to_json, FuzzyCurve.to_job, FuzzySurface.to_job
     result file, a model back to a job dict that ``run`` runs.
 benchmark_curve
     The curve that ``t2spline bench`` times.
+benchmark_surface
+    The surface that ``t2spline bench --case surface`` times.
 t2spline.plot
     Drawing the stages into matplotlib axes (``pip install t2spline[plot]``).
 t2spline.types
@@ -122,6 +124,7 @@ from ._t2spline import (
     SurfaceSolution,
     __version__,
     benchmark_curve,
+    benchmark_surface,
     centroid,
     export,
     fit,
@@ -145,6 +148,7 @@ __all__ = [
     "SurfaceSolution",
     "__version__",
     "benchmark_curve",
+    "benchmark_surface",
     "centroid",
     "export",
     "fit",

@@ -52,6 +52,7 @@ __all__ = [
     "_panic_for_tests",
     "_run_rows",
     "benchmark_curve",
+    "benchmark_surface",
     "centroid",
     "export",
     "fit",
@@ -554,5 +555,6 @@ def to_json(result: Any) -> str:
     """A result as the bytes of `t2spline run`'s result file (as text)."""
 
 def benchmark_curve() -> FuzzyCurve: ...
+def benchmark_surface() -> FuzzySurface: ...
 
 def _panic_for_tests(message: str) -> None: ...

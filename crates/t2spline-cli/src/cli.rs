@@ -490,4 +490,9 @@ pub struct BenchArgs {
     /// memory); the lines end in `output=reused`.
     #[arg(long)]
     pub reuse: bool,
+    /// Time every case both ways in one run, into fresh arrays and then into
+    /// reused ones, and print the ratio of the two medians after each pair
+    /// (`ratio <case> fresh/reused=<R>`).
+    #[arg(long, conflicts_with = "reuse")]
+    pub compare: bool,
 }

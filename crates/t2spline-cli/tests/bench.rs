@@ -99,6 +99,40 @@ fn reuse_is_marked_on_the_line() {
 }
 
 #[test]
+fn compare_times_fresh_then_reused_and_prints_their_ratio() {
+    let (code, out, err) = bench(&[
+        "--case",
+        "crisp",
+        "--points",
+        "1000",
+        "--threads",
+        "1",
+        "--compare",
+    ]);
+    assert_eq!((code, err.as_str()), (0, ""));
+    let lines: Vec<&str> = out.lines().collect();
+    assert_eq!(lines.len(), 3, "{out}");
+    check_line(lines[0], "crisp", 1000, 1);
+    assert!(!lines[0].ends_with("output=reused"), "{out}");
+    assert!(lines[1].ends_with(" output=reused"), "{out}");
+    let seconds = |line: &str| -> f64 {
+        let field = line.split(' ').find_map(|f| f.strip_prefix("seconds="));
+        field.unwrap().parse().unwrap()
+    };
+    let ratio: f64 = lines[2]
+        .strip_prefix("ratio crisp fresh/reused=")
+        .unwrap()
+        .parse()
+        .unwrap();
+    let expected = seconds(lines[0]) / seconds(lines[1]);
+    assert!((ratio - expected).abs() <= 1e-3 * expected + 5e-4, "{out}");
+    // Both ways at once, or one: not `--reuse` with `--compare`.
+    let (code, _, err) = bench(&["--case", "crisp", "--reuse", "--compare"]);
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("--compare"), "{err}");
+}
+
+#[test]
 fn bad_options_are_one_line_errors() {
     for (args, message) in [
         (

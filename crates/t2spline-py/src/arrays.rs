@@ -5,6 +5,7 @@
 use numpy::{PyArray1, PyArrayDyn, PyArrayMethods, PyUntypedArrayMethods};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
+use t2spline::sampling::SampleBuffer;
 
 /// An argument read as a C-ordered `float64` array: its shape and a copy of
 /// its values, every one finite.
@@ -251,7 +252,7 @@ pub(crate) fn array<'py>(
 /// `(d, n)` becomes `(n, d)`, `(7, d, su, sv)` becomes `(7, su, sv, d)`.
 pub(crate) fn coords_last<'py>(
     py: Python<'py>,
-    buffer: Vec<f64>,
+    buffer: SampleBuffer,
     lead: &[usize],
     d: usize,
     samples: &[usize],
@@ -259,7 +260,7 @@ pub(crate) fn coords_last<'py>(
     let shape: Vec<usize> = lead.iter().chain([&d]).chain(samples).copied().collect();
     let (l, r) = (lead.len(), samples.len());
     let axes: Vec<usize> = (0..l).chain(l + 1..=l + r).chain([l]).collect();
-    array(py, buffer, &shape)?.call_method1("transpose", (axes,))
+    crate::memory::owned_array(py, buffer, &shape)?.call_method1("transpose", (axes,))
 }
 
 /// Points given as one vector per coordinate (structure of arrays) at
@@ -275,7 +276,7 @@ pub(crate) fn columns_array<'py>(
         .iter()
         .flat_map(|c| c.as_ref().iter().copied())
         .collect();
-    coords_last(py, data, &[], columns.len(), samples)
+    coords_last(py, data.into(), &[], columns.len(), samples)
 }
 
 /// Fixed-size points as an `(n, D)` array.

@@ -17,7 +17,7 @@ use crate::dim::by_dim;
 use crate::errors::compute;
 use crate::fuzzy_methods::{fuzzy_methods, index, numbers};
 use crate::keyword;
-use crate::sample::{at_pairs, GridArg};
+use crate::sample::{at_pairs, channels, GridArg};
 use crate::surface_methods::surface_methods;
 
 fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzzySurface, PyFuzzyCurve {
@@ -216,15 +216,13 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
     ) -> PyResult<Bound<'py, PyDict>> {
         let grid = GridArg::extract(u, v)?;
         let d = self.dimension();
-        grid.check_output(7 * d)?;
-        let buffer = by_dim!(&self.0, |s| compute(py, || {
-            let g = s.sample_layers(grid.u.params(), grid.v.params())?;
-            let layers = g.samples().layers();
-            Ok(Layer::ALL
-                .iter()
-                .flat_map(|&l| layers[l].coords().iter().flatten().copied())
-                .collect::<Vec<f64>>())
-        }))?;
+        let [su, sv] = grid.shape();
+        let mut buffer = grid.buffer(7 * d)?;
+        by_dim!(&self.0, |s| compute(py, || s.sample_layers_into_slices(
+            grid.u.params(),
+            grid.v.params(),
+            &mut channels(&mut buffer, 7 * d, su * sv)
+        )))?;
         let out = PyDict::new(py);
         let [u, v] = grid.arrays(py, self.domains())?;
         out.set_item("u", u)?;

@@ -17,7 +17,7 @@
 //! | `FuzzyCurve.membership`, `.region` (`Region`), `.section`, `.membership_grid`; `FuzzySurface.membership`, `.section` | `t2spline::set` (docs/method.md §10): `memberships`, `region_in`, `sections`, `membership_grid` |
 //! | `fit` | `t2spline::fit::FuzzyData::fit` |
 //! | `centroid` | `t2spline::reduction::discrete::SampledSet`: KM, EKM, EIASC, Nie–Tan (docs/method.md §9) |
-//! | `benchmark_curve` | `t2spline::sampling::benchmark_curve` |
+//! | `benchmark_curve`, `benchmark_surface` | `t2spline::sampling::benchmark_curve`, `benchmark_surface` |
 //!
 //! The Python package (`python/t2spline/`) adds the plotting helpers, the
 //! type stubs and the documentation of every function.
@@ -62,6 +62,7 @@ mod json;
 mod keyword;
 mod many;
 mod measure;
+mod memory;
 mod net;
 mod non_finite;
 mod number;
@@ -97,6 +98,20 @@ fn benchmark_curve() -> classes::PyFuzzyCurve {
     t2spline::sampling::benchmark_curve().into()
 }
 
+/// The fuzzy surface that ``t2spline bench --case surface`` and the Rust
+/// benchmarks time: bicubic, an 8 × 8 net with clamped uniform knots, control
+/// points ``(i, j, sin(1.1 i) cos(0.7 j) + 0.1 i j)``, weights
+/// ``0.5 + ((3i + 5j) mod 7) / 4``, every number as in ``benchmark_curve``.
+///
+/// Examples
+/// --------
+/// >>> benchmark_surface().sample(3, 3)["crisp"].shape
+/// (3, 3, 3)
+#[pyfunction]
+fn benchmark_surface() -> classes::PyFuzzySurface {
+    t2spline::sampling::benchmark_surface().into()
+}
+
 /// The extension module `t2spline._t2spline`; `t2spline/__init__.py`
 /// re-exports it.
 #[pymodule]
@@ -121,6 +136,7 @@ fn _t2spline(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(json::to_json, m)?)?;
     m.add_function(wrap_pyfunction!(reduction::centroid, m)?)?;
     m.add_function(wrap_pyfunction!(benchmark_curve, m)?)?;
+    m.add_function(wrap_pyfunction!(benchmark_surface, m)?)?;
     m.add_function(wrap_pyfunction!(errors::_panic_for_tests, m)?)?;
     Ok(())
 }

@@ -7,7 +7,7 @@
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyInt};
-use t2spline::sampling::Params;
+use t2spline::sampling::{Params, SampleBuffer};
 
 use crate::arrays::{array, broadcast_shape, floats, shape_text};
 use crate::errors::{compute, core_error};
@@ -101,16 +101,16 @@ fn check_bytes(values: u128, what: impl FnOnce() -> String) -> PyResult<()> {
     Ok(())
 }
 
-/// A zeroed buffer of `params × per_param` values for the engine to write
-/// into, within [`check_output`]'s limit.
+/// A buffer of `params × per_param` values for the engine to overwrite, within [`check_output`]'s limit.
 ///
 /// # Errors
 /// The error of [`check_output`].
-pub(crate) fn output_buffer(params: usize, per_param: usize, name: &str) -> PyResult<Vec<f64>> {
+pub(crate) fn output_buffer(params: usize, per_param: usize, name: &str) -> PyResult<SampleBuffer> {
     check_output(params, per_param, name)?;
-    // Zeroed memory comes from the system untouched (calloc), so the engine's
-    // writes are the first: no extra pass over the output.
-    Ok(vec![0.0; params * per_param])
+    // Untouched memory (a zeroed allocation, or a huge-page mapping when
+    // large, perhaps a dropped one's): the engine's threads write first,
+    // with no extra pass over it.
+    Ok(SampleBuffer::for_overwrite(params * per_param))
 }
 
 /// Where to sample a surface: the grid `u × v`, each a count of uniform
@@ -152,15 +152,16 @@ impl GridArg {
         })
     }
 
-    /// A zeroed buffer of `per_point` values per grid point, within
+    /// A buffer of `per_point` values per grid point for the engine to
+    /// overwrite (as [`output_buffer`]), within
     /// [`GridArg::check_output`]'s limit.
     ///
     /// # Errors
     /// As [`GridArg::check_output`].
-    pub(crate) fn buffer(&self, per_point: usize) -> PyResult<Vec<f64>> {
+    pub(crate) fn buffer(&self, per_point: usize) -> PyResult<SampleBuffer> {
         self.check_output(per_point)?;
         let [su, sv] = self.shape();
-        Ok(vec![0.0; su * sv * per_point])
+        Ok(SampleBuffer::for_overwrite(su * sv * per_point))
     }
 
     /// The parameters along u and along v as arrays: the uniform ones over

@@ -6,7 +6,13 @@
 //! ```text
 //! cargo bench -p t2spline --bench sampling
 //! ```
-//! Every benchmark runs on one thread except `threads/*`. Before timing, the
+//! `fresh_vs_reused/*` samples the crisp curve and the seven layers at 10⁶
+//! points into fresh arrays and into reused ones, on one and on two threads,
+//! and into fresh arrays with the cache of dropped mappings emptied before
+//! each call (`*_fresh_uncached`: every page new, as in a process's first
+//! call).
+//! Every benchmark runs on one thread except `threads/*` and
+//! `fresh_vs_reused/*`. Before timing, the
 //! curvo and t2spline samples are compared point by point (1e-12), so both
 //! compute the same thing.
 
@@ -14,10 +20,12 @@
 
 use std::hint::black_box;
 
-use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use criterion::{criterion_group, criterion_main, BatchSize, BenchmarkId, Criterion, Throughput};
 use curvo::prelude::NurbsCurve2D;
 use nalgebra::Point3;
-use t2spline::sampling::{benchmark_curve, benchmark_levels, CurveSamples, LayerSamples, Params};
+use t2spline::sampling::{
+    benchmark_curve, benchmark_levels, release_cached_memory, CurveSamples, LayerSamples, Params,
+};
 use t2spline::{FuzzyCurve, NurbsCurve};
 
 /// The `t2spline bench` curve.
@@ -149,5 +157,63 @@ fn threads(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, crisp, fuzzy, sweep, threads);
+fn fresh_vs_reused(c: &mut Criterion) {
+    let curve = fuzzy_curve();
+    let crisp = curve.crisp_curve();
+    let n = 1_000_000;
+    let mut g = c.benchmark_group("fresh_vs_reused");
+    g.throughput(Throughput::Elements(n as u64)).sample_size(10);
+    for t in [1, 2] {
+        let threads = pool(t);
+        g.bench_function(BenchmarkId::new("crisp_fresh", t), |b| {
+            b.iter(|| threads.install(|| black_box(crisp.sample_soa(Params::Uniform(n)).unwrap())));
+        });
+        // As the first call of a process: every page new from the system
+        // (the cache of dropped mappings emptied before each call).
+        g.bench_function(BenchmarkId::new("crisp_fresh_uncached", t), |b| {
+            b.iter_batched(
+                release_cached_memory,
+                |()| threads.install(|| black_box(crisp.sample_soa(Params::Uniform(n)).unwrap())),
+                BatchSize::PerIteration,
+            );
+        });
+        let mut out = CurveSamples::empty();
+        g.bench_function(BenchmarkId::new("crisp_reused", t), |b| {
+            b.iter(|| {
+                threads.install(|| {
+                    crisp
+                        .sample_soa_into(Params::Uniform(n), black_box(&mut out))
+                        .unwrap()
+                })
+            });
+        });
+        g.bench_function(BenchmarkId::new("seven_layers_fresh", t), |b| {
+            b.iter(|| {
+                threads.install(|| black_box(curve.sample_layers(Params::Uniform(n)).unwrap()))
+            });
+        });
+        g.bench_function(BenchmarkId::new("seven_layers_fresh_uncached", t), |b| {
+            b.iter_batched(
+                release_cached_memory,
+                |()| {
+                    threads.install(|| black_box(curve.sample_layers(Params::Uniform(n)).unwrap()))
+                },
+                BatchSize::PerIteration,
+            );
+        });
+        let mut out = LayerSamples::empty();
+        g.bench_function(BenchmarkId::new("seven_layers_reused", t), |b| {
+            b.iter(|| {
+                threads.install(|| {
+                    curve
+                        .sample_layers_into(Params::Uniform(n), black_box(&mut out))
+                        .unwrap()
+                })
+            });
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, crisp, fuzzy, sweep, threads, fresh_vs_reused);
 criterion_main!(benches);

@@ -1,6 +1,9 @@
 //! Surface sampling benchmarks (criterion): the `benchmark_surface` (bicubic,
 //! rational, 8 × 8 net) on a 1000 × 1000 grid — the crisp surface on one
-//! thread, the seven layer surfaces on one thread, both on two threads — and
+//! thread, the seven layer surfaces on one thread, both on one and two threads
+//! into fresh arrays and into reused ones (and `crisp_fresh_uncached`: fresh
+//! with the cache of dropped mappings emptied before each call, as a
+//! process's first call) — and
 //! the same crisp surface sampled by curvo's `NurbsSurface::regular_sample_points`
 //! in the same run, so that the ratios are measured side by side.
 //!
@@ -14,10 +17,12 @@
 
 use std::hint::black_box;
 
-use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use criterion::{criterion_group, criterion_main, BatchSize, BenchmarkId, Criterion, Throughput};
 use curvo::prelude::NurbsSurface3D;
 use nalgebra::Point4;
-use t2spline::sampling::{benchmark_surface, CurveSamples, Grid, LayerSamples, Params};
+use t2spline::sampling::{
+    benchmark_surface, release_cached_memory, CurveSamples, Grid, LayerSamples, Params,
+};
 use t2spline::{Direction, NurbsSurface};
 
 /// Grid points per direction.
@@ -123,6 +128,35 @@ fn fuzzy(c: &mut Criterion) {
                             .sample_grid(Params::Uniform(SIDE), Params::Uniform(SIDE))
                             .unwrap(),
                     )
+                })
+            });
+        });
+        g.bench_function(BenchmarkId::new("crisp_fresh_uncached", t), |b| {
+            b.iter_batched(
+                release_cached_memory,
+                |()| {
+                    threads.install(|| {
+                        black_box(
+                            crisp
+                                .sample_grid(Params::Uniform(SIDE), Params::Uniform(SIDE))
+                                .unwrap(),
+                        )
+                    })
+                },
+                BatchSize::PerIteration,
+            );
+        });
+        let mut out = Grid::buffer(CurveSamples::empty());
+        g.bench_function(BenchmarkId::new("crisp_reused_output", t), |b| {
+            b.iter(|| {
+                threads.install(|| {
+                    crisp
+                        .sample_grid_into(
+                            Params::Uniform(SIDE),
+                            Params::Uniform(SIDE),
+                            black_box(&mut out),
+                        )
+                        .unwrap()
                 })
             });
         });

@@ -1,5 +1,5 @@
 //! `t2spline bench [--case crisp|fuzzy|sweep|surface|surface-fuzzy|all] [--points N]
-//! [--threads T] [--curve JOB.json] [--reuse]`.
+//! [--threads T] [--curve JOB.json] [--reuse | --compare]`.
 
 use std::io::Write;
 
@@ -46,12 +46,25 @@ pub fn bench(args: &BenchArgs) -> anyhow::Result<()> {
             .map_err(about_option)?;
     }
     let mut out = std::io::stdout().lock();
+    let modes: &[bool] = if args.compare {
+        &[false, true]
+    } else {
+        std::slice::from_ref(&args.reuse)
+    };
     for (case, model) in plan {
-        let result =
-            run_case(model, case, args.points, threads, args.reuse).map_err(about_option)?;
-        // One line per case as soon as it is measured.
-        writeln!(out, "{result}")?;
-        out.flush()?;
+        let mut seconds = Vec::with_capacity(modes.len());
+        for &reuse in modes {
+            let result =
+                run_case(model, case, args.points, threads, reuse).map_err(about_option)?;
+            // One line per case as soon as it is measured.
+            writeln!(out, "{result}")?;
+            out.flush()?;
+            seconds.push(result.seconds);
+        }
+        if let [fresh, reused] = seconds[..] {
+            writeln!(out, "ratio {case} fresh/reused={:.3}", fresh / reused)?;
+            out.flush()?;
+        }
     }
     Ok(())
 }

@@ -1,6 +1,6 @@
 //! Points of a run's output as structure of arrays, whatever their dimension.
 
-use crate::sampling::CurveSamples;
+use crate::sampling::{CurveSamples, SampleBuffer};
 use crate::vector::euclidean_norm;
 
 /// Points of one dimension stored as one vector per coordinate (structure of
@@ -125,9 +125,16 @@ impl<T: Copy> Points<T> {
 }
 
 impl<const D: usize> From<CurveSamples<D>> for Points {
-    /// Takes the sampling engine's vectors without copying them.
+    /// Takes the sampling engine's buffers, without copying those that are
+    /// ordinary vectors (a run samples into such).
     fn from(samples: CurveSamples<D>) -> Self {
-        Points::from_coords(samples.into_coords().into())
+        Points::from_coords(
+            samples
+                .into_coords()
+                .into_iter()
+                .map(SampleBuffer::into_vec)
+                .collect(),
+        )
     }
 }
 

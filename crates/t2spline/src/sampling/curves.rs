@@ -2,13 +2,15 @@
 //! `sample_sweep` and `sample_stages`.
 
 use crate::error::Error;
-use crate::fuzzy::{Alpha, Layer};
+use crate::fuzzy::Alpha;
 use crate::nurbs::NurbsCurve;
 use crate::pipeline::point_stages::PointStages;
 use crate::pipeline::{FuzzyCurve, Solution};
 use crate::reduction::TypeReduction;
 use crate::sampling::plan::Plan;
-use crate::sampling::{CurveSamples, LayerSamples, Params, Sampler, StageSamples, SweepSamples};
+use crate::sampling::{
+    CurveSamples, Fresh, LayerSamples, Params, SampleBuffer, Sampler, StageSamples, SweepSamples,
+};
 
 impl<const D: usize> NurbsCurve<D> {
     /// A [`Sampler`] for this curve: one channel per coordinate.
@@ -55,12 +57,12 @@ impl<const D: usize> NurbsCurve<D> {
         params: impl Into<Params<'a>>,
         out: &mut CurveSamples<D>,
     ) -> Result<(), Error> {
-        let mut buffers: Vec<Vec<f64>> = std::mem::replace(out, CurveSamples::empty())
+        let mut buffers: Vec<SampleBuffer> = std::mem::replace(out, CurveSamples::empty())
             .into_buffers()
             .collect();
         let mut coords = self
             .sampler()
-            .sample_reusing(params, &mut buffers)?
+            .sample_buffers(params, &mut buffers, Fresh::HugePages)?
             .into_iter();
         *out =
             CurveSamples::from_coords(std::array::from_fn(|_| coords.next().unwrap_or_default()));
@@ -97,7 +99,7 @@ impl<const D: usize> FuzzyCurve<D> {
         &self,
         params: impl Into<Params<'a>>,
     ) -> Result<LayerSamples<D>, Error> {
-        Ok(sweep(self, params.into(), &[], true, Vec::new())?.layers)
+        Ok(sweep(self, params.into(), &[], true, Vec::new(), Fresh::HugePages)?.layers)
     }
 
     /// [`FuzzyCurve::sample_layers`] into `out`, reusing its vectors: repeated
@@ -113,16 +115,17 @@ impl<const D: usize> FuzzyCurve<D> {
         let buffers = std::mem::replace(out, LayerSamples::empty())
             .into_buffers()
             .collect();
-        *out = sweep(self, params.into(), &[], true, buffers)?.layers;
+        *out = sweep(self, params.into(), &[], true, buffers, Fresh::HugePages)?.layers;
         Ok(())
     }
 
     /// [`FuzzyCurve::sample_layers`] into memory the caller owns: `out` holds
     /// `7·D` slices, each as long as `params`, and `out[k·D + d]` receives
-    /// coordinate `d` of the layer [`Layer::ALL`]`[k]` (the order of docs/method.md §1, from
-    /// `upper_left` to `upper_right`). Front ends that keep their own arrays
-    /// (the Python bindings write into one numpy buffer) get the engine's
-    /// output without a copy. The values are those of `sample_layers`, bit
+    /// coordinate `d` of the layer [`Layer::ALL`](crate::Layer::ALL)`[k]`
+    /// (the order of docs/method.md §1, from `upper_left` to `upper_right`).
+    /// Front ends that keep their own arrays (the Python bindings write into
+    /// one buffer that numpy then owns) get the engine's output without a
+    /// copy. The values are those of `sample_layers`, bit
     /// for bit.
     ///
     /// # Errors
@@ -156,19 +159,8 @@ impl<const D: usize> FuzzyCurve<D> {
             });
         }
         let plan = Plan::new(self.points(), &[], true);
-        // The plan orders its channels its own way: `out[k·D + d]` is channel
-        // `layer_channel(Layer::ALL[k]) + d`.
-        let channels = Layer::ALL.into_iter().flat_map(|layer| {
-            #[allow(clippy::expect_used)] // `Plan::new(.., true)` plans every layer
-            let first = plan
-                .layer_channel(layer)
-                .expect("a plan with layers has every layer");
-            (0..D).map(move |d| first + d)
-        });
-        let mut by_channel: Vec<(usize, &mut [f64])> =
-            channels.zip(out.iter_mut().map(|o| &mut **o)).collect();
-        by_channel.sort_by_key(|(channel, _)| *channel);
-        let mut ordered: Vec<&mut [f64]> = by_channel.into_iter().map(|(_, o)| o).collect();
+        // The plan orders its channels its own way.
+        let mut ordered = plan.by_layer(out);
         let params = params.into();
         // The same sampler as `sample_layers`, so that both agree bit for bit.
         Sampler::for_count_unchecked(self.knots(), self.weights(), plan.values(), params.len())
@@ -241,7 +233,14 @@ impl<const D: usize> FuzzyCurve<D> {
     ) -> Result<SweepSamples<D>, Error> {
         let solutions: Vec<Solution<D>> =
             alphas.iter().map(|&a| self.solve_with(a, method)).collect();
-        sweep(self, params.into(), &solutions, true, Vec::new())
+        sweep(
+            self,
+            params.into(),
+            &solutions,
+            true,
+            Vec::new(),
+            Fresh::HugePages,
+        )
     }
 
     /// [`FuzzyCurve::sample_sweep`] into `out`, reusing its vectors: repeated
@@ -258,7 +257,14 @@ impl<const D: usize> FuzzyCurve<D> {
     ) -> Result<(), Error> {
         let buffers = std::mem::replace(out, SweepSamples::empty()).into_buffers();
         let solutions: Vec<Solution<D>> = alphas.iter().map(|&a| self.solve(a)).collect();
-        *out = sweep(self, params.into(), &solutions, true, buffers)?;
+        *out = sweep(
+            self,
+            params.into(),
+            &solutions,
+            true,
+            buffers,
+            Fresh::HugePages,
+        )?;
         Ok(())
     }
 }
@@ -279,6 +285,7 @@ impl<const D: usize> Solution<D> {
             std::slice::from_ref(self),
             false,
             Vec::new(),
+            Fresh::HugePages,
         )?;
         let (_, levels) = sweep.into_parts();
         // One solution was sampled, so there is one level.
@@ -287,7 +294,8 @@ impl<const D: usize> Solution<D> {
     }
 
     /// The seven stage-1 layer curves and this solution's curves of stages
-    /// 2–4, from one sampler (what a run samples).
+    /// 2–4, from one sampler (what a run samples), in ordinary vectors: a
+    /// run's output takes them as `Vec<f64>` without a copy.
     pub(crate) fn sample_with_layers(&self, params: Params<'_>) -> Result<SweepSamples<D>, Error> {
         sweep(
             self.fuzzy_curve(),
@@ -295,25 +303,27 @@ impl<const D: usize> Solution<D> {
             std::slice::from_ref(self),
             true,
             Vec::new(),
+            Fresh::Vectors,
         )
     }
 }
 
 /// Samples the crisp curve, the six other layers if `layers`, and the curves of
-/// stages 2–4 of every solution, with one sampler, into vectors taken from
-/// `buffers` where it has them.
+/// stages 2–4 of every solution, with one sampler, into buffers taken from
+/// `buffers` where it has them and new ones from `fresh`.
 fn sweep<const D: usize>(
     curve: &FuzzyCurve<D>,
     params: Params<'_>,
     solutions: &[Solution<D>],
     layers: bool,
-    mut buffers: Vec<Vec<f64>>,
+    mut buffers: Vec<SampleBuffer>,
+    fresh: Fresh,
 ) -> Result<SweepSamples<D>, Error> {
     let stages: Vec<&PointStages<D>> = solutions.iter().map(Solution::stages).collect();
     let plan = Plan::new(curve.points(), &stages, layers);
     let sampler =
         Sampler::for_count_unchecked(curve.knots(), curve.weights(), plan.values(), params.len())
             .with_bounds(plan.bounds())?;
-    let out = sampler.sample_reusing(params, &mut buffers)?;
+    let out = sampler.sample_buffers(params, &mut buffers, fresh)?;
     Ok(plan.assemble(out))
 }

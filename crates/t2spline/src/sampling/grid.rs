@@ -18,7 +18,7 @@ use crate::nurbs::surface::net_weights_flat;
 use crate::nurbs::{Direction, KnotVector};
 use crate::sampling::kernel::BLOCK;
 use crate::sampling::sampler::{check_outputs, outputs};
-use crate::sampling::Params;
+use crate::sampling::{Fresh, Params, SampleBuffer};
 
 /// Evaluates many rational B-spline surfaces that share knots `[U, V]` and a
 /// net of weights — the seven layer surfaces of a fuzzy surface, the surfaces
@@ -173,14 +173,29 @@ impl GridSampler {
         v: impl Into<Params<'b>>,
         buffers: &mut Vec<Vec<f64>>,
     ) -> Result<Vec<Vec<f64>>, Error> {
+        let mut own: Vec<SampleBuffer> = buffers.drain(..).map(SampleBuffer::from).collect();
+        let out = self.sample_buffers(u, v, &mut own, Fresh::Vectors);
+        buffers.extend(own.into_iter().map(SampleBuffer::into_vec));
+        Ok(out?.into_iter().map(SampleBuffer::into_vec).collect())
+    }
+
+    /// [`GridSampler::sample`] into buffers taken from `buffers` (resized),
+    /// and new ones from `fresh` when it runs out.
+    pub(crate) fn sample_buffers<'a, 'b>(
+        &self,
+        u: impl Into<Params<'a>>,
+        v: impl Into<Params<'b>>,
+        buffers: &mut Vec<SampleBuffer>,
+        fresh: Fresh,
+    ) -> Result<Vec<SampleBuffer>, Error> {
         let (u, v) = (u.into(), v.into());
         self.check(u, v)?;
         let n = u
             .len()
             .checked_mul(v.len())
             .ok_or(Error::Memory { values: usize::MAX })?;
-        let mut out = outputs(self.channels(), n, buffers)?;
-        let mut slices: Vec<&mut [f64]> = out.iter_mut().map(Vec::as_mut_slice).collect();
+        let mut out = outputs(self.channels(), n, buffers, fresh)?;
+        let mut slices: Vec<&mut [f64]> = out.iter_mut().map(|b| &mut **b).collect();
         self.run(u, v, &mut slices)?;
         Ok(out)
     }

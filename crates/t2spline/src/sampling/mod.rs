@@ -77,10 +77,12 @@
 //! cut into chunks of whole blocks and run on rayon's current pool. Every value
 //! is computed by the same operations in any chunking, so the results are those
 //! of one thread bit for bit (tested); without the feature the core has no
-//! rayon. Output is exactly one `Vec<f64>` per channel and nothing else grows
-//! with the number of parameters (uniform parameters are never stored). Fresh
-//! output costs page faults on first write, which dominate at 10⁶–10⁷ points;
-//! the `_into` forms reuse a caller's vectors. A job's run samples the
+//! rayon. Output is exactly one [`SampleBuffer`] per channel and nothing else
+//! grows with the number of parameters (uniform parameters are never stored).
+//! Fresh output used to cost page faults on first write that dominated at
+//! 10⁶–10⁷ points: a large buffer is now a huge-page mapping first touched by
+//! the threads that fill it, and dropped ones are kept for the next output
+//! (`buffer.rs`, `mapping.rs`); the `_into` forms reuse a caller's buffers. A job's run samples the
 //! solution it has already computed (one sampler for the layers and the
 //! stages) rather than asking a sweep to solve again, since the alpha-plane
 //! reduction integrates per number.
@@ -90,11 +92,14 @@
 //! dev-dependency only.
 
 mod benchmark;
+mod buffer;
 mod curves;
 mod direct;
 mod distance_sweep;
 mod grid;
 mod kernel;
+#[cfg(target_os = "linux")]
+mod mapping;
 mod params;
 mod plan;
 mod power_form;
@@ -103,7 +108,13 @@ mod samples;
 mod surfaces;
 
 pub use benchmark::{benchmark_curve, benchmark_levels, benchmark_surface};
+pub(crate) use buffer::Fresh;
+pub use buffer::{release_cached_memory, SampleBuffer, LARGE_BYTES};
 pub use distance_sweep::DistanceSweep;
+/// The most memory the mappings of dropped sample buffers keep for reuse
+/// (Linux; 256 MiB: the 21 coordinates of a fuzzy surface's seven layers at
+/// 10⁶ points are 168 MB); [`release_cached_memory`] returns it.
+pub const CACHE_BYTES: usize = 256 << 20;
 pub use grid::GridSampler;
 pub use params::Params;
 pub use sampler::{Bound, Sampler};

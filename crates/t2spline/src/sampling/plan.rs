@@ -7,7 +7,9 @@
 use crate::fuzzy::{Layer, Layers, Nt2Point};
 use crate::pipeline::point_stages::{PointStages, Side};
 use crate::reduction::TypeReduction;
-use crate::sampling::{Bound, CurveSamples, LayerSamples, StageSamples, SweepSamples};
+use crate::sampling::{
+    Bound, CurveSamples, LayerSamples, SampleBuffer, StageSamples, SweepSamples,
+};
 
 /// Where the channels of one level's stages are: the alpha-cut layers (none
 /// for the crisp layer and for absent lower cuts), the type-reduced left and
@@ -77,10 +79,18 @@ impl<const D: usize> Plan<D> {
         plan
     }
 
-    /// The channel of the first coordinate of a stage-1 layer curve, if
-    /// planned.
-    pub(crate) fn layer_channel(&self, layer: Layer) -> Option<usize> {
-        self.stage1[layer]
+    /// Slices given by layer, `out[k·D + d]` for coordinate `d` of
+    /// [`Layer::ALL`]`[k]`, in the plan's order of channels (every layer
+    /// planned, and `7·D` slices: the callers check both).
+    pub(crate) fn by_layer<'o>(&self, out: &'o mut [&mut [f64]]) -> Vec<&'o mut [f64]> {
+        let channels = Layer::ALL.into_iter().flat_map(|layer| {
+            let first = self.stage1[layer].unwrap_or(0);
+            (0..D).map(move |d| first + d)
+        });
+        let mut by_channel: Vec<(usize, &mut [f64])> =
+            channels.zip(out.iter_mut().map(|o| &mut **o)).collect();
+        by_channel.sort_by_key(|(channel, _)| *channel);
+        by_channel.into_iter().map(|(_, o)| o).collect()
     }
 
     /// Every channel's control values.
@@ -138,8 +148,8 @@ impl<const D: usize> Plan<D> {
     /// The sampled channels (one vector per channel, in plan order) as
     /// stage-1 layers and one [`StageSamples`] per level. Layers that were not
     /// planned stay empty.
-    pub(crate) fn assemble(self, out: Vec<Vec<f64>>) -> SweepSamples<D> {
-        let mut out: Vec<Option<Vec<f64>>> = out.into_iter().map(Some).collect();
+    pub(crate) fn assemble(self, out: Vec<SampleBuffer>) -> SweepSamples<D> {
+        let mut out: Vec<Option<SampleBuffer>> = out.into_iter().map(Some).collect();
         let mut take = |base: usize| {
             CurveSamples::from_coords(std::array::from_fn(|d| {
                 // The plan made these channels, and each is taken once.
@@ -150,7 +160,7 @@ impl<const D: usize> Plan<D> {
         let layers = LayerSamples {
             layers: Layers::from_fn(|l| {
                 self.stage1[l].map_or_else(
-                    || CurveSamples::from_coords(std::array::from_fn(|_| Vec::new())),
+                    || CurveSamples::from_coords(std::array::from_fn(|_| SampleBuffer::new())),
                     &mut take,
                 )
             }),

@@ -7,7 +7,7 @@ use crate::nurbs::{Domain, KnotVector};
 use crate::sampling::direct::Direct;
 use crate::sampling::kernel;
 use crate::sampling::power_form::{PowerBasis, Span};
-use crate::sampling::Params;
+use crate::sampling::{Fresh, Params, SampleBuffer};
 
 /// A rule that keeps one sampled channel between two others, applied after
 /// evaluation: `out[channel] = clamp(out[channel], out[at_least], out[at_most])`.
@@ -253,11 +253,25 @@ impl Sampler {
         params: impl Into<Params<'a>>,
         buffers: &mut Vec<Vec<f64>>,
     ) -> Result<Vec<Vec<f64>>, Error> {
+        let mut own: Vec<SampleBuffer> = buffers.drain(..).map(SampleBuffer::from).collect();
+        let out = self.sample_buffers(params, &mut own, Fresh::Vectors);
+        buffers.extend(own.into_iter().map(SampleBuffer::into_vec));
+        Ok(out?.into_iter().map(SampleBuffer::into_vec).collect())
+    }
+
+    /// Samples every channel at `params` into buffers taken from `buffers`
+    /// (resized), and new ones from `fresh` when it runs out.
+    pub(crate) fn sample_buffers<'a>(
+        &self,
+        params: impl Into<Params<'a>>,
+        buffers: &mut Vec<SampleBuffer>,
+        fresh: Fresh,
+    ) -> Result<Vec<SampleBuffer>, Error> {
         let params = params.into();
         let sorted = params.check(self.domain)?;
         let n = params.len();
-        let mut out = outputs(self.channels, n, buffers)?;
-        let mut slices: Vec<&mut [f64]> = out.iter_mut().map(Vec::as_mut_slice).collect();
+        let mut out = outputs(self.channels, n, buffers, fresh)?;
+        let mut slices: Vec<&mut [f64]> = out.iter_mut().map(|b| &mut **b).collect();
         self.run(params, sorted, &mut slices);
         Ok(out)
     }
@@ -365,8 +379,9 @@ impl Sampler {
     }
 }
 
-/// `channels` output vectors of `n` values, taken from `buffers` (resized)
-/// while it has them, else new.
+/// `channels` output buffers of `n` values, taken from `buffers` (resized)
+/// while it has them, else new from `fresh`. Nothing is written into a new
+/// buffer: its pages are first touched by the threads that fill them.
 ///
 /// # Errors
 /// [`Error::Memory`] if `n` values are more than a vector can hold (memory
@@ -374,8 +389,9 @@ impl Sampler {
 pub(crate) fn outputs(
     channels: usize,
     n: usize,
-    buffers: &mut Vec<Vec<f64>>,
-) -> Result<Vec<Vec<f64>>, Error> {
+    buffers: &mut Vec<SampleBuffer>,
+    fresh: Fresh,
+) -> Result<Vec<SampleBuffer>, Error> {
     if n.checked_mul(size_of::<f64>())
         .is_none_or(|bytes| bytes > isize::MAX as usize)
     {
@@ -383,13 +399,13 @@ pub(crate) fn outputs(
     }
     Ok((0..channels)
         .map(|_| match buffers.pop() {
-            Some(mut v) => {
-                v.resize(n, 0.0);
-                v
+            Some(mut b) => {
+                b.resize(n, fresh);
+                b
             }
-            // A zeroed allocation: fresh pages from the system are zero
-            // already, so nothing is written twice.
-            None => vec![0.0; n],
+            // Untouched memory (a zeroed allocation, a new or cached
+            // mapping): nothing is written before the engine writes.
+            None => SampleBuffer::fresh(n, fresh),
         })
         .collect())
 }

@@ -4,6 +4,7 @@ use std::ops::Index;
 
 use crate::fuzzy::{Alpha, Layer, Layers};
 use crate::pipeline::Side;
+use crate::sampling::SampleBuffer;
 
 /// One curve sampled at `len()` parameters, one vector per coordinate
 /// (structure of arrays): `coord(0)[i]` is the x coordinate at the i-th
@@ -22,12 +23,12 @@ use crate::pipeline::Side;
 /// ```
 #[derive(Clone, Debug, PartialEq)]
 pub struct CurveSamples<const D: usize> {
-    coords: [Vec<f64>; D],
+    coords: [SampleBuffer; D],
 }
 
 impl<const D: usize> CurveSamples<D> {
-    /// Wraps one vector per coordinate, all of one length.
-    pub(crate) fn from_coords(coords: [Vec<f64>; D]) -> Self {
+    /// Wraps one buffer per coordinate, all of one length.
+    pub(crate) fn from_coords(coords: [SampleBuffer; D]) -> Self {
         debug_assert!(coords.iter().all(|c| c.len() == coords[0].len()));
         CurveSamples { coords }
     }
@@ -35,7 +36,7 @@ impl<const D: usize> CurveSamples<D> {
     /// The number of samples.
     #[must_use]
     pub fn len(&self) -> usize {
-        self.coords.first().map_or(0, Vec::len)
+        self.coords.first().map_or(0, |c| c.len())
     }
 
     /// Whether there are no samples.
@@ -47,18 +48,18 @@ impl<const D: usize> CurveSamples<D> {
     /// The values of one coordinate (`0` is x); empty past the last one.
     #[must_use]
     pub fn coord(&self, axis: usize) -> &[f64] {
-        self.coords.get(axis).map_or(&[], Vec::as_slice)
+        self.coords.get(axis).map_or(&[], |c| &**c)
     }
 
-    /// The vectors of all coordinates.
+    /// The buffers of all coordinates (each dereferences to `[f64]`).
     #[must_use]
-    pub fn coords(&self) -> &[Vec<f64>; D] {
+    pub fn coords(&self) -> &[SampleBuffer; D] {
         &self.coords
     }
 
-    /// The vectors of all coordinates, by value.
+    /// The buffers of all coordinates, by value.
     #[must_use]
-    pub fn into_coords(self) -> [Vec<f64>; D] {
+    pub fn into_coords(self) -> [SampleBuffer; D] {
         self.coords
     }
 
@@ -76,11 +77,11 @@ impl<const D: usize> CurveSamples<D> {
     /// No samples (a buffer for the `_into` sampling functions).
     #[must_use]
     pub fn empty() -> Self {
-        CurveSamples::from_coords(std::array::from_fn(|_| Vec::new()))
+        CurveSamples::from_coords(std::array::from_fn(|_| SampleBuffer::new()))
     }
 
-    /// The vectors, for reuse.
-    pub(crate) fn into_buffers(self) -> impl Iterator<Item = Vec<f64>> {
+    /// The buffers, for reuse.
+    pub(crate) fn into_buffers(self) -> impl Iterator<Item = SampleBuffer> {
         self.coords.into_iter()
     }
 
@@ -109,7 +110,7 @@ impl<const D: usize> LayerSamples<D> {
         }
     }
 
-    pub(crate) fn into_buffers(self) -> impl Iterator<Item = Vec<f64>> {
+    pub(crate) fn into_buffers(self) -> impl Iterator<Item = SampleBuffer> {
         self.layers
             .into_array()
             .into_iter()
@@ -203,8 +204,8 @@ impl<const D: usize> SweepSamples<D> {
         }
     }
 
-    pub(crate) fn into_buffers(self) -> Vec<Vec<f64>> {
-        let mut out: Vec<Vec<f64>> = self.layers.into_buffers().collect();
+    pub(crate) fn into_buffers(self) -> Vec<SampleBuffer> {
+        let mut out: Vec<SampleBuffer> = self.layers.into_buffers().collect();
         for level in self.levels {
             for curve in level.alpha_cut.into_array().into_iter().flatten() {
                 out.extend(curve.into_buffers());

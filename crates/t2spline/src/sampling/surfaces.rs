@@ -9,7 +9,8 @@ use crate::pipeline::{FuzzySurface, SurfaceSolution};
 use crate::reduction::TypeReduction;
 use crate::sampling::plan::Plan;
 use crate::sampling::{
-    CurveSamples, Grid, GridSampler, LayerSamples, Params, StageSamples, SweepSamples,
+    CurveSamples, Fresh, Grid, GridSampler, LayerSamples, Params, SampleBuffer, StageSamples,
+    SweepSamples,
 };
 
 impl<const D: usize> NurbsSurface<D> {
@@ -74,10 +75,10 @@ impl<const D: usize> NurbsSurface<D> {
     ) -> Result<(), Error> {
         let (u, v) = (u.into(), v.into());
         let old = std::mem::replace(out, Grid::buffer(CurveSamples::empty()));
-        let mut buffers: Vec<Vec<f64>> = old.samples.into_buffers().collect();
+        let mut buffers: Vec<SampleBuffer> = old.samples.into_buffers().collect();
         let mut coords = self
             .grid_sampler()
-            .sample_reusing(u, v, &mut buffers)?
+            .sample_buffers(u, v, &mut buffers, Fresh::HugePages)?
             .into_iter();
         *out = Grid {
             shape: [u.len(), v.len()],
@@ -102,7 +103,15 @@ impl<const D: usize> FuzzySurface<D> {
         u: impl Into<Params<'a>>,
         v: impl Into<Params<'b>>,
     ) -> Result<Grid<LayerSamples<D>>, Error> {
-        let g = grid_sweep(self, u.into(), v.into(), &[], true, Vec::new())?;
+        let g = grid_sweep(
+            self,
+            u.into(),
+            v.into(),
+            &[],
+            true,
+            Vec::new(),
+            Fresh::HugePages,
+        )?;
         Ok(Grid {
             shape: g.shape,
             samples: g.samples.layers,
@@ -121,12 +130,56 @@ impl<const D: usize> FuzzySurface<D> {
     ) -> Result<(), Error> {
         let old = std::mem::replace(out, Grid::buffer(LayerSamples::empty()));
         let buffers = old.samples.into_buffers().collect();
-        let g = grid_sweep(self, u.into(), v.into(), &[], true, buffers)?;
+        let g = grid_sweep(
+            self,
+            u.into(),
+            v.into(),
+            &[],
+            true,
+            buffers,
+            Fresh::HugePages,
+        )?;
         *out = Grid {
             shape: g.shape,
             samples: g.samples.layers,
         };
         Ok(())
+    }
+
+    /// [`FuzzySurface::sample_layers`] into memory the caller owns: `out`
+    /// holds `7·D` slices of `u.len()·v.len()` values, and `out[k·D + d]`
+    /// receives coordinate `d` of the layer
+    /// [`Layer::ALL`](crate::Layer::ALL)`[k]` (the order of docs/method.md
+    /// §1), `[a·sv + b]` at `(u_a, v_b)`. Front ends that keep their own
+    /// arrays (the Python bindings) get the engine's output without a copy;
+    /// the values are those of `sample_layers`, bit for bit.
+    ///
+    /// # Errors
+    /// [`Error::Length`] if `out` has the wrong number or length of slices;
+    /// as [`FuzzySurface::sample_layers`] otherwise.
+    pub fn sample_layers_into_slices<'a, 'b>(
+        &self,
+        u: impl Into<Params<'a>>,
+        v: impl Into<Params<'b>>,
+        out: &mut [&mut [f64]],
+    ) -> Result<(), Error> {
+        if out.len() != 7 * D {
+            return Err(Error::Length {
+                what: "output slices (one per coordinate of each layer)",
+                expected: 7 * D,
+                found: out.len(),
+            });
+        }
+        let plan = Plan::new(self.points(), &[], true);
+        // The plan orders its channels its own way.
+        let mut ordered = plan.by_layer(out);
+        // The same sampler as `sample_layers`, so that both agree bit for bit.
+        let knots = Direction::BOTH.map(|d| self.knots(d).clone());
+        GridSampler::new_unchecked(&knots, self.weights(), plan.values()).sample_into(
+            u,
+            v,
+            &mut ordered,
+        )
     }
 
     /// Stages 2–4 at every level of `alphas` on the control net, and every
@@ -176,7 +229,15 @@ impl<const D: usize> FuzzySurface<D> {
     ) -> Result<Grid<SweepSamples<D>>, Error> {
         let solutions: Vec<SurfaceSolution<D>> =
             alphas.iter().map(|&a| self.solve_with(a, method)).collect();
-        grid_sweep(self, u.into(), v.into(), &solutions, true, Vec::new())
+        grid_sweep(
+            self,
+            u.into(),
+            v.into(),
+            &solutions,
+            true,
+            Vec::new(),
+            Fresh::HugePages,
+        )
     }
 
     /// [`FuzzySurface::sample_sweep`] into `out`, reusing its vectors (the
@@ -194,7 +255,15 @@ impl<const D: usize> FuzzySurface<D> {
         let old = std::mem::replace(out, Grid::buffer(SweepSamples::empty()));
         let buffers = old.samples.into_buffers();
         let solutions: Vec<SurfaceSolution<D>> = alphas.iter().map(|&a| self.solve(a)).collect();
-        *out = grid_sweep(self, u.into(), v.into(), &solutions, true, buffers)?;
+        *out = grid_sweep(
+            self,
+            u.into(),
+            v.into(),
+            &solutions,
+            true,
+            buffers,
+            Fresh::HugePages,
+        )?;
         Ok(())
     }
 }
@@ -216,6 +285,7 @@ impl<const D: usize> SurfaceSolution<D> {
             std::slice::from_ref(self),
             false,
             Vec::new(),
+            Fresh::HugePages,
         )?;
         let (_, levels) = g.samples.into_parts();
         // One solution was sampled, so there is one level.
@@ -228,7 +298,8 @@ impl<const D: usize> SurfaceSolution<D> {
 
     /// The seven stage-1 layer surfaces and this solution's surfaces of
     /// stages 2–4 on the grid `u × v`, from one grid sampler (what a run
-    /// samples).
+    /// samples), in ordinary vectors, which a run's output takes without a
+    /// copy.
     pub(crate) fn sample_with_layers(
         &self,
         u: Params<'_>,
@@ -241,6 +312,7 @@ impl<const D: usize> SurfaceSolution<D> {
             std::slice::from_ref(self),
             true,
             Vec::new(),
+            Fresh::Vectors,
         )
     }
 }
@@ -254,13 +326,14 @@ fn grid_sweep<const D: usize>(
     v: Params<'_>,
     solutions: &[SurfaceSolution<D>],
     layers: bool,
-    mut buffers: Vec<Vec<f64>>,
+    mut buffers: Vec<SampleBuffer>,
+    fresh: Fresh,
 ) -> Result<Grid<SweepSamples<D>>, Error> {
     let stages: Vec<&PointStages<D>> = solutions.iter().map(SurfaceSolution::stages).collect();
     let plan = Plan::new(surface.points(), &stages, layers);
     let knots = Direction::BOTH.map(|d| surface.knots(d).clone());
     let sampler = GridSampler::new_unchecked(&knots, surface.weights(), plan.values());
-    let out = sampler.sample_reusing(u, v, &mut buffers)?;
+    let out = sampler.sample_buffers(u, v, &mut buffers, fresh)?;
     Ok(Grid {
         shape: [u.len(), v.len()],
         samples: plan.assemble(out),
