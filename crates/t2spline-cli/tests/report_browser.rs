@@ -14,109 +14,16 @@
 //! Without `chromium` and `chromedriver` the test says it was skipped and
 //! passes, unless `T2SPLINE_REQUIRE_BROWSER=1` (set by CI), when it fails.
 
-use std::net::TcpListener;
-use std::path::{Path, PathBuf};
-use std::process::{Child, Command, Stdio};
+use std::path::Path;
+use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
 use assert_cmd::cargo::CommandCargoExt;
 use serde_json::{json, Value};
 
-const FLAGS: [&str; 9] = [
-    "--headless",
-    "--no-sandbox",
-    "--disable-gpu",
-    "--disable-quic",
-    "--no-first-run",
-    "--disable-background-networking",
-    "--disable-component-update",
-    "--disable-sync",
-    "--window-size=1300,1600",
-];
+use webdriver::{browser, Driver};
 
-fn find(names: &[&str]) -> Option<PathBuf> {
-    let path = std::env::var_os("PATH")?;
-    names.iter().find_map(|n| {
-        std::env::split_paths(&path)
-            .map(|d| d.join(n))
-            .find(|p| p.is_file())
-    })
-}
-
-/// Chromium and ChromeDriver, or `None` after saying why the test is skipped.
-fn browser() -> Option<(PathBuf, PathBuf)> {
-    let found = (
-        find(&["chromium", "chromium-browser"]),
-        find(&["chromedriver"]),
-    );
-    match found {
-        (Some(c), Some(d)) => Some((c, d)),
-        _ => {
-            let msg = "chromium and chromedriver are not installed (Debian packages `chromium` and `chromium-driver`)";
-            assert!(
-                std::env::var("T2SPLINE_REQUIRE_BROWSER").as_deref() != Ok("1"),
-                "T2SPLINE_REQUIRE_BROWSER=1 but {msg}"
-            );
-            eprintln!("SKIPPED report_browser: {msg}");
-            None
-        }
-    }
-}
-
-/// ChromeDriver on a free loopback port; killed on drop.
-struct Driver {
-    child: Child,
-    base: String,
-}
-
-impl Drop for Driver {
-    fn drop(&mut self) {
-        let _ = self.child.kill();
-        let _ = self.child.wait();
-    }
-}
-
-impl Driver {
-    fn start(path: &Path) -> Driver {
-        let port = TcpListener::bind("127.0.0.1:0")
-            .unwrap()
-            .local_addr()
-            .unwrap()
-            .port();
-        let child = Command::new(path)
-            .arg(format!("--port={port}"))
-            .stdout(Stdio::null())
-            .stderr(Stdio::null())
-            .spawn()
-            .expect("chromedriver starts");
-        let driver = Driver {
-            child,
-            base: format!("http://127.0.0.1:{port}"),
-        };
-        let deadline = Instant::now() + Duration::from_secs(30);
-        while Instant::now() < deadline {
-            if let Ok(r) = ureq::get(&format!("{}/status", driver.base)).call() {
-                let v: Value = r.into_json().unwrap();
-                if v["value"]["ready"] == json!(true) {
-                    return driver;
-                }
-            }
-            std::thread::sleep(Duration::from_millis(100));
-        }
-        panic!("chromedriver did not become ready");
-    }
-
-    fn post(&self, path: &str, body: &Value) -> Value {
-        let url = format!("{}{path}", self.base);
-        match ureq::post(&url).send_json(body.clone()) {
-            Ok(r) => r.into_json::<Value>().unwrap()["value"].take(),
-            Err(ureq::Error::Status(code, r)) => {
-                panic!("{url}: {code}: {}", r.into_string().unwrap_or_default())
-            }
-            Err(e) => panic!("{url}: {e}"),
-        }
-    }
-}
+mod webdriver;
 
 /// The value at a cell key in a result file (see the report's tables).
 fn lookup<'a>(result: &'a Value, key: &str) -> &'a Value {
@@ -401,7 +308,7 @@ fn check_report(
     assert!(status.success());
     let html = dir.path().join("report.html");
     let profile = tempfile::tempdir().unwrap();
-    let mut args: Vec<String> = FLAGS.iter().map(|s| (*s).to_owned()).collect();
+    let mut args: Vec<String> = webdriver::flags("1300,1600");
     args.push(format!("--user-data-dir={}", profile.path().display()));
     let session = driver.post(
         "/session",
@@ -628,7 +535,7 @@ fn base64_decode(s: &str) -> Vec<u8> {
 
 #[test]
 fn report_in_headless_chromium_matches_t2spline_run() {
-    let Some((chromium, chromedriver)) = browser() else {
+    let Some((chromium, chromedriver)) = browser("report_browser") else {
         return;
     };
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
@@ -653,7 +560,7 @@ fn report_in_headless_chromium_matches_t2spline_run() {
 
 #[test]
 fn surface_report_in_headless_chromium_matches_t2spline_run() {
-    let Some((chromium, chromedriver)) = browser() else {
+    let Some((chromium, chromedriver)) = browser("report_browser") else {
         return;
     };
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");

@@ -14,113 +14,18 @@
 //! passes, unless `T2SPLINE_REQUIRE_BROWSER=1` (set by CI), when it fails.
 
 use std::io::{BufRead, BufReader};
-use std::net::TcpListener;
 use std::path::{Path, PathBuf};
-use std::process::{Child, Command, Stdio};
+use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
 use serde_json::{json, Value};
 
-const FLAGS: [&str; 9] = [
-    "--headless",
-    "--no-sandbox",
-    "--disable-gpu",
-    "--disable-quic",
-    "--no-first-run",
-    "--disable-background-networking",
-    "--disable-component-update",
-    "--disable-sync",
-    "--window-size=1300,1000",
-];
+use webdriver::{browser, Driver, Killed};
+
+mod webdriver;
 
 fn root() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../..")
-}
-
-fn find(names: &[&str]) -> Option<PathBuf> {
-    let path = std::env::var_os("PATH")?;
-    names.iter().find_map(|n| {
-        std::env::split_paths(&path)
-            .map(|d| d.join(n))
-            .find(|p| p.is_file())
-    })
-}
-
-/// Chromium and ChromeDriver, or `None` after saying why the test is skipped.
-fn browser() -> Option<(PathBuf, PathBuf)> {
-    match (
-        find(&["chromium", "chromium-browser"]),
-        find(&["chromedriver"]),
-    ) {
-        (Some(c), Some(d)) => Some((c, d)),
-        _ => {
-            let msg = "chromium and chromedriver are not installed (Debian packages `chromium` and `chromium-driver`)";
-            assert!(
-                std::env::var("T2SPLINE_REQUIRE_BROWSER").as_deref() != Ok("1"),
-                "T2SPLINE_REQUIRE_BROWSER=1 but {msg}"
-            );
-            eprintln!("SKIPPED serve_browser: {msg}");
-            None
-        }
-    }
-}
-
-/// A child process killed on drop.
-struct Killed(Child);
-
-impl Drop for Killed {
-    fn drop(&mut self) {
-        let _ = self.0.kill();
-        let _ = self.0.wait();
-    }
-}
-
-/// ChromeDriver on a free loopback port.
-struct Driver {
-    _child: Killed,
-    base: String,
-}
-
-impl Driver {
-    fn start(path: &Path) -> Driver {
-        let port = TcpListener::bind("127.0.0.1:0")
-            .unwrap()
-            .local_addr()
-            .unwrap()
-            .port();
-        let child = Command::new(path)
-            .arg(format!("--port={port}"))
-            .stdout(Stdio::null())
-            .stderr(Stdio::null())
-            .spawn()
-            .expect("chromedriver starts");
-        let driver = Driver {
-            _child: Killed(child),
-            base: format!("http://127.0.0.1:{port}"),
-        };
-        let deadline = Instant::now() + Duration::from_secs(30);
-        while Instant::now() < deadline {
-            if let Ok(r) = ureq::get(&format!("{}/status", driver.base)).call() {
-                let v: Value = r.into_json().unwrap();
-                if v["value"]["ready"] == json!(true) {
-                    return driver;
-                }
-            }
-            std::thread::sleep(Duration::from_millis(100));
-        }
-        panic!("chromedriver did not become ready");
-    }
-
-    fn post(&self, path: &str, body: &Value) -> Value {
-        let url = format!("{}{path}", self.base);
-        match ureq::post(&url).send_json(body.clone()) {
-            Ok(r) => r.into_json::<Value>().unwrap()["value"].take(),
-            Err(ureq::Error::Status(code, r)) => {
-                panic!("{url}: {code}: {}", r.into_string().unwrap_or_default())
-            }
-            Err(e) => panic!("{url}: {e}"),
-        }
-    }
 }
 
 /// `t2spline serve ARGS…` in `dir`, and the address it printed first.
@@ -311,7 +216,7 @@ fn ordered(job: &Value) -> bool {
 }
 
 fn session(driver: &Driver, chromium: &Path, profile: &Path, url: &str) -> String {
-    let mut args: Vec<String> = FLAGS.iter().map(|s| (*s).to_owned()).collect();
+    let mut args: Vec<String> = webdriver::flags("1300,1000");
     args.push(format!("--user-data-dir={}", profile.display()));
     let s = driver.post(
         "/session",
@@ -350,7 +255,7 @@ fn no_errors(page: &Page<'_>) {
 
 #[test]
 fn the_editor_in_headless_chromium_matches_t2spline_run() {
-    let Some((chromium, chromedriver)) = browser() else {
+    let Some((chromium, chromedriver)) = browser("serve_browser") else {
         return;
     };
     let driver = Driver::start(&chromedriver);
@@ -560,7 +465,7 @@ fn the_editor_in_headless_chromium_matches_t2spline_run() {
 
 #[test]
 fn a_space_curve_is_edited_in_x_y_and_z_and_saved_and_a_surface_viewed() {
-    let Some((chromium, chromedriver)) = browser() else {
+    let Some((chromium, chromedriver)) = browser("serve_browser") else {
         return;
     };
     let driver = Driver::start(&chromedriver);
