@@ -79,9 +79,9 @@ pub(crate) fn file_samples(samples: Samples) -> Samples {
 /// slider at `start`; `options` chooses the number shown and the aspect of
 /// curve panels.
 ///
-/// Four steps: the stops ([`file_stops`]), every frame computed
-/// ([`computed`]), the data block the page swaps in ([`data_block`]), and the
-/// page's sections around the figures that do not change ([`sections`]).
+/// Four steps, a module each: the stops (`file_stops`), every frame computed
+/// (`computed`), the data block the page swaps in (`data_block`), and the
+/// page's sections around the figures that do not change (`sections`).
 ///
 /// # Errors
 /// [`Error::NoSuchPoint`] or [`Error::NoSuchAxis`] if `options.number` names

@@ -55,7 +55,7 @@ pub struct Layout {
     pub notes_top: f64,
     /// Texts placed once for every figure laid out, per panel.
     pub labels: Vec<FixedLabels>,
-    /// Polylines are simplified to within this many pixels ([`crate::chart::simplify`]).
+    /// Polylines are simplified to within this many pixels ([`crate::simplify`]).
     pub tolerance: f64,
 }
 
