@@ -77,6 +77,9 @@ benchmark_curve
     The curve that ``t2spline bench`` times.
 benchmark_surface
     The surface that ``t2spline bench --case surface`` times.
+release_cached_memory
+    Gives back the memory large samples leave behind when dropped (kept for
+    the next large output, up to 256 MiB).
 t2spline.plot
     Drawing the stages into matplotlib axes (``pip install t2spline[plot]``).
 t2spline.types
@@ -129,6 +132,7 @@ from ._t2spline import (
     export,
     fit,
     fuzzify,
+    release_cached_memory,
     run,
     run_many,
     to_json,
@@ -153,6 +157,7 @@ __all__ = [
     "export",
     "fit",
     "fuzzify",
+    "release_cached_memory",
     "run",
     "run_many",
     "run_table",

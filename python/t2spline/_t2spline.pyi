@@ -57,6 +57,7 @@ __all__ = [
     "export",
     "fit",
     "fuzzify",
+    "release_cached_memory",
     "run",
     "run_many",
     "to_json",
@@ -556,5 +557,6 @@ def to_json(result: Any) -> str:
 
 def benchmark_curve() -> FuzzyCurve: ...
 def benchmark_surface() -> FuzzySurface: ...
+def release_cached_memory() -> None: ...
 
 def _panic_for_tests(message: str) -> None: ...

@@ -6,6 +6,7 @@ small samples of the same parameters."""
 from __future__ import annotations
 
 import gc
+import os
 import sys
 
 import numpy as np
@@ -78,3 +79,27 @@ def test_a_large_surface_grid_views_the_engines_mapping() -> None:
         np.testing.assert_array_equal(g[layer][np.ix_(a, b)], few[layer])
     flat = s.crisp_surface().sample(800, 800)
     np.testing.assert_array_equal(flat, crisp)
+
+
+def resident_bytes() -> int:
+    """This process's resident memory (Linux: /proc/self/statm)."""
+    with open("/proc/self/statm") as f:
+        pages = int(f.read().split()[1])
+    return pages * os.sysconf("SC_PAGE_SIZE")
+
+
+def test_dropped_samples_are_kept_until_released() -> None:
+    if not LINUX:
+        t2spline.release_cached_memory()  # does nothing elsewhere
+        return
+    t2spline.release_cached_memory()
+    before = resident_bytes()
+    layers = t2spline.benchmark_curve().sample(1_000_000)  # 112 MB of samples
+    grown = resident_bytes()
+    assert grown - before > 100_000_000, (before, grown)
+    del layers
+    gc.collect()
+    # Kept for the next large output: still resident.
+    assert resident_bytes() - before > 100_000_000
+    t2spline.release_cached_memory()
+    assert resident_bytes() - before < 20_000_000, (before, resident_bytes())
