@@ -9,6 +9,7 @@ use t2spline::{FuzzyCurve, Layer};
 
 use crate::arrays::{array, coords_last, optional_vector};
 use crate::classes::{PyFuzzyCurve, PyNurbsCurve, PySolution};
+use crate::closest::Targets;
 use crate::construct::{degree, layer, FuzzyArrays};
 use crate::curve_methods::curve_methods;
 use crate::dim::by_dim;
@@ -97,6 +98,64 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
             out.extend(c.eval_layers(v)?.as_array().iter().flatten());
             Ok(())
         }))
+    }
+
+    /// The point of every layer curve closest to ``point`` (see
+    /// ``NurbsCurve.closest_point``), layers in the order of docs/method.md
+    /// §1 (``upper_left`` … ``upper_right``, ``crisp`` at index 3), as
+    /// ``FuzzySurface.closest_points`` gives them for surfaces.
+    ///
+    /// Parameters
+    /// ----------
+    /// point : array_like, shape (dimension,) or (m, dimension)
+    ///
+    /// Returns
+    /// -------
+    /// (t, point, distance)
+    ///     For one point: arrays ``(7,)``, ``(7, dimension)`` and ``(7,)``;
+    ///     for ``m`` points: ``(m, 7)``, ``(m, 7, dimension)`` and
+    ///     ``(m, 7)``.
+    ///
+    /// Examples
+    /// --------
+    /// >>> import numpy as np
+    /// >>> c = np.array([[0.0, 0.0], [4.0, 0.0]])
+    /// >>> s = np.array([[[0.0, 0.0], [-1.0, 1.0]], [[0.0, 0.0], [-1.0, 1.0]]])
+    /// >>> band = FuzzyCurve(c, c[..., None] + s, c[..., None] + 0.5 * s,
+    /// ...                   c[..., None] + 0.25 * s, lower_height=0.5, degree=1)
+    /// >>> t, p, d = band.closest_points([2.0, 3.0])
+    /// >>> t.shape, p.shape, [round(float(x), 12) for x in d]
+    /// ((7,), (7, 2), [4.0, 3.5, 3.25, 3.0, 2.75, 2.5, 2.0])
+    fn closest_points<'py>(
+        &self,
+        py: Python<'py>,
+        point: &Bound<'py, PyAny>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+        let d = self.dimension();
+        let targets = Targets::extract(point, d)?;
+        let found = by_dim!(&self.0, |c| compute(py, || {
+            let mut out = [vec![], vec![], vec![]];
+            for p in targets.rows() {
+                for q in c.closest_points(p).as_array() {
+                    out[0].push(q.t);
+                    out[1].extend(q.point);
+                    out[2].push(q.distance);
+                }
+            }
+            Ok(out)
+        }))?;
+        let [t, points, distances] = found;
+        Ok((
+            targets.pack(py, t, &[7])?,
+            targets.pack(py, points, &[7, d])?,
+            targets.pack(py, distances, &[7])?,
+        ))
+    }
+
+    /// ``curve(t)`` is ``curve.eval_layers(t)``: the seven layer curves at
+    /// ``t``, shape ``t.shape + (7, d)``.
+    fn __call__<'py>(&self, py: Python<'py>, t: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+        self.eval_layers(py, t)
     }
 
     /// The seven layer curves at many parameters by the sampling engine: one

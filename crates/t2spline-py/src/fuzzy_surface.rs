@@ -191,6 +191,17 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
         }))
     }
 
+    /// ``surface(u, v)`` is ``surface.eval_layers(u, v)``: the seven layer
+    /// surfaces, shape ``broadcast(u, v).shape + (7, d)``.
+    fn __call__<'py>(
+        &self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        self.eval_layers(py, u, v)
+    }
+
     /// The seven layer surfaces on the grid ``u × v`` by the grid engine (one
     /// basis evaluation per grid row and column for all layers), the docs/method.md §1
     /// order of the layers kept exactly at every grid point.

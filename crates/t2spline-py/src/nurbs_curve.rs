@@ -99,6 +99,18 @@ curve_methods!(PyNurbsCurve {
         }))
     }
 
+    /// ``curve(t)`` is ``curve.eval(t)`` (as splipy's curves are called).
+    ///
+    /// Examples
+    /// --------
+    /// >>> import numpy as np
+    /// >>> line = NurbsCurve(np.array([[0.0, 0.0], [2.0, 4.0]]), degree=1)
+    /// >>> line(0.25).tolist(), line([0.0, 1.0]).shape
+    /// ([0.5, 1.0], (2, 2))
+    fn __call__<'py>(&self, py: Python<'py>, t: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+        self.eval(py, t)
+    }
+
     /// The curve at many parameters by the sampling engine (one power form of
     /// the rational basis per knot span, multi-threaded for large jobs); agrees
     /// with ``eval`` to rounding.

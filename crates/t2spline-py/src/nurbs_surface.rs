@@ -116,6 +116,17 @@ surface_methods!(PyNurbsSurface, PyNurbsCurve {
         }))
     }
 
+    /// ``surface(u, v)`` is ``surface.eval(u, v)`` (as splipy's surfaces are
+    /// called).
+    fn __call__<'py>(
+        &self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        self.eval(py, u, v)
+    }
+
     /// The surface on the grid ``u × v`` by the grid engine (the basis in u
     /// once per grid row, in v once per grid column, multi-threaded by rows
     /// for large grids); agrees with ``eval`` to rounding.
