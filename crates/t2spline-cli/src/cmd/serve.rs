@@ -5,13 +5,15 @@
 //! `serve/api.rs` (through `prepare.rs`, `region.rs`, `membership.rs`), the
 //! page in `serve/page.{html,css,js}`.
 
+mod answer;
 mod api;
 mod security;
 mod server;
 
 use crate::cli::ServeArgs;
 use crate::output::{is_stdio, job_name, read_input, to_stdout};
-use server::{Served, Server};
+use answer::Served;
+use server::Server;
 
 /// The shipped example, opened when no job is named.
 const EXAMPLE: &str = include_str!("../../../../examples/paper-alg-1-1.json");

@@ -7,8 +7,8 @@ use serde_json::{json, Value};
 use t2spline::job::{Job, Samples};
 use t2spline::{Alpha, TypeReduction};
 
-use super::computed::stop_figures;
 use super::downloads::files_of;
+use super::stop_figures::stop_figures;
 use super::stops::{self, finest_within, Stops};
 use super::{file_samples, pack, reductions, static_svg, DATA_BUDGET};
 use crate::data;

@@ -32,6 +32,7 @@ mod pack;
 mod page;
 mod reductions;
 mod sections;
+mod stop_figures;
 mod stops;
 pub mod tables;
 

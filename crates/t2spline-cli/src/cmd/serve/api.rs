@@ -21,8 +21,8 @@ use t2spline_io::job::MAX_FILE_BYTES;
 use t2spline_io::{MissingAlpha, Prepared};
 use tiny_http::Request;
 
+use super::answer::{Answer, Served};
 use super::security::header;
-use super::server::{Answer, Served};
 use crate::cmd::prepare::{about_run, OptionError};
 use crate::exit::Exit;
 

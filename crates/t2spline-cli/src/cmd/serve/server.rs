@@ -5,25 +5,11 @@
 //! computation goes through the I/O and core crates as the other commands'.
 
 use std::io::Cursor;
-use std::path::PathBuf;
 
 use tiny_http::{Header, Request, Response, StatusCode};
 
+use super::answer::{Answer, Served};
 use super::{api, security};
-
-/// The job being edited: its name in messages, its text as read at start,
-/// and the file it may be saved over (none for the example or standard
-/// input).
-#[derive(Debug)]
-pub struct Served {
-    /// How messages name the job (the path as given, `<stdin>`, or the
-    /// example's file name).
-    pub name: String,
-    /// The text read at start.
-    pub text: String,
-    /// The job file named on the command line.
-    pub path: Option<PathBuf>,
-}
 
 /// A listening server.
 pub struct Server {
@@ -45,34 +31,6 @@ fn page() -> String {
     include_str!("page.html")
         .replace("/*PAGE_CSS*/", include_str!("page.css"))
         .replace("/*PAGE_JS*/", include_str!("page.js"))
-}
-
-/// An answer: status, media type and body.
-#[derive(Debug)]
-pub struct Answer {
-    status: u16,
-    media: &'static str,
-    body: Vec<u8>,
-}
-
-impl Answer {
-    pub(super) fn new(status: u16, media: &'static str, body: Vec<u8>) -> Answer {
-        Answer {
-            status,
-            media,
-            body,
-        }
-    }
-
-    /// A JSON answer.
-    pub(super) fn json(status: u16, value: &serde_json::Value) -> Answer {
-        Answer::new(status, "application/json", value.to_string().into_bytes())
-    }
-
-    /// A refusal or error with one message, as `{"problems": [MESSAGE]}`.
-    pub(super) fn problem(status: u16, message: &str) -> Answer {
-        Answer::json(status, &serde_json::json!({ "problems": [message] }))
-    }
 }
 
 impl Server {
