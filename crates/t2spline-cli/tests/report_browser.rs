@@ -21,7 +21,7 @@ use std::time::{Duration, Instant};
 use assert_cmd::cargo::CommandCargoExt;
 use serde_json::{json, Value};
 
-use webdriver::{browser, Driver};
+use webdriver::{browser, Driver, Page};
 
 mod webdriver;
 
@@ -149,26 +149,7 @@ fn is_rounding(text: &str, exact: &str) -> bool {
     }
 }
 
-struct Page<'a> {
-    driver: &'a Driver,
-    id: String,
-}
-
 impl Page<'_> {
-    fn exec(&self, script: &str, args: Value) -> Value {
-        self.driver.post(
-            &format!("/session/{}/execute/sync", self.id),
-            &json!({"script": script, "args": args}),
-        )
-    }
-
-    fn exec_async(&self, script: &str, args: Value) -> Value {
-        self.driver.post(
-            &format!("/session/{}/execute/async", self.id),
-            &json!({"script": script, "args": args}),
-        )
-    }
-
     fn wait_ready(&self) {
         let deadline = Instant::now() + Duration::from_secs(60);
         while Instant::now() < deadline {
@@ -308,20 +289,9 @@ fn check_report(
     assert!(status.success());
     let html = dir.path().join("report.html");
     let profile = tempfile::tempdir().unwrap();
-    let mut args: Vec<String> = webdriver::flags("1300,1600");
-    args.push(format!("--user-data-dir={}", profile.path().display()));
-    let session = driver.post(
-        "/session",
-        &json!({"capabilities": {"alwaysMatch": {
-            "browserName": "chrome",
-            "goog:chromeOptions": {"binary": chromium, "args": args},
-            "goog:loggingPrefs": {"browser": "ALL"},
-            "timeouts": {"script": 60000}
-        }}}),
-    );
     let page = Page {
         driver,
-        id: session["sessionId"].as_str().expect("a session").to_owned(),
+        id: driver.session(chromium, profile.path(), "1300,1600"),
     };
     let s = |p: &str| format!("/session/{}{p}", page.id);
     driver.post(

@@ -20,7 +20,7 @@ use std::time::{Duration, Instant};
 
 use serde_json::{json, Value};
 
-use webdriver::{browser, Driver, Killed};
+use webdriver::{browser, Driver, Killed, Page};
 
 mod webdriver;
 
@@ -80,19 +80,7 @@ const r = document.getElementById(arguments[0]).getBoundingClientRect();
 return [Math.round(r.left + r.width / 2), Math.round(r.top + r.height / 2)];
 "#;
 
-struct Page<'a> {
-    driver: &'a Driver,
-    id: String,
-}
-
 impl Page<'_> {
-    fn exec(&self, script: &str, args: Value) -> Value {
-        self.driver.post(
-            &format!("/session/{}/execute/sync", self.id),
-            &json!({"script": script, "args": args}),
-        )
-    }
-
     /// Waits until the page has shown the result of its current job, and
     /// reads it (in the same script: nothing can start in between).
     fn settle(&self) -> Value {
@@ -216,18 +204,7 @@ fn ordered(job: &Value) -> bool {
 }
 
 fn session(driver: &Driver, chromium: &Path, profile: &Path, url: &str) -> String {
-    let mut args: Vec<String> = webdriver::flags("1300,1000");
-    args.push(format!("--user-data-dir={}", profile.display()));
-    let s = driver.post(
-        "/session",
-        &json!({"capabilities": {"alwaysMatch": {
-            "browserName": "chrome",
-            "goog:chromeOptions": {"binary": chromium, "args": args},
-            "goog:loggingPrefs": {"browser": "ALL"},
-            "timeouts": {"script": 60000}
-        }}}),
-    );
-    let id = s["sessionId"].as_str().expect("a session").to_owned();
+    let id = driver.session(chromium, profile, "1300,1000");
     driver.post(&format!("/session/{id}/url"), &json!({ "url": url }));
     id
 }
