@@ -173,15 +173,76 @@ impl<'a> Staged<'a> {
         path: &Path,
         write: impl FnOnce(&mut (dyn Write + Send)) -> std::io::Result<()> + 'a,
     ) -> Result<(), Error> {
-        let failed = |e| write_error(path, e);
-        let (target, permissions) = match resolve(path).map_err(failed)? {
+        match resolve(path).map_err(|e| write_error(path, e))? {
             Target::Stream(stream) => {
                 self.streams
                     .push((path.to_owned(), stream, Box::new(write)));
-                return Ok(());
+                Ok(())
             }
-            Target::File { path, permissions } => (path, permissions),
-        };
+            Target::File {
+                path: target,
+                permissions,
+            } => self.stage(path, target, permissions, write),
+        }
+    }
+
+    /// Like [`Staged::add`], but `write` runs now even where `path` is a
+    /// device or FIFO, and its value is returned: for an output written
+    /// while the work that fills it is done (the one table of a run of many
+    /// jobs). A file is written into its temporary file as by `add`; a
+    /// device or FIFO is written into memory now and through at
+    /// [`Staged::commit`], after the files, as `add` writes it.
+    ///
+    /// # Errors
+    /// Those of [`Staged::add`].
+    ///
+    /// # Examples
+    /// ```
+    /// # use t2spline_io::Staged;
+    /// use std::io::Write;
+    /// let dir = tempfile::tempdir()?;
+    /// let path = dir.path().join("rows.txt");
+    /// let mut out = Staged::default();
+    /// let rows = out.add_now(&path, |w| {
+    ///     (1..=3).try_for_each(|i| writeln!(w, "{i}")).map(|()| 3)
+    /// })?;
+    /// assert_eq!(rows, 3);
+    /// assert!(!path.exists(), "renamed into place at the commit only");
+    /// out.commit()?;
+    /// assert_eq!(std::fs::read_to_string(&path)?, "1\n2\n3\n");
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn add_now<R>(
+        &mut self,
+        path: &Path,
+        write: impl FnOnce(&mut (dyn Write + Send)) -> std::io::Result<R>,
+    ) -> Result<R, Error> {
+        match resolve(path).map_err(|e| write_error(path, e))? {
+            Target::Stream(stream) => {
+                let mut bytes = Vec::new();
+                let value = write(&mut bytes).map_err(|e| write_error(path, e))?;
+                let through = move |w: &mut (dyn Write + Send)| w.write_all(&bytes);
+                self.streams
+                    .push((path.to_owned(), stream, Box::new(through)));
+                Ok(value)
+            }
+            Target::File {
+                path: target,
+                permissions,
+            } => self.stage(path, target, permissions, write),
+        }
+    }
+
+    /// Writes the temporary file of `target` (the file `shown` names) with
+    /// `write`, through a buffer, and keeps it for the commit.
+    fn stage<R>(
+        &mut self,
+        shown: &Path,
+        target: PathBuf,
+        permissions: Option<std::fs::Permissions>,
+        write: impl FnOnce(&mut (dyn Write + Send)) -> std::io::Result<R>,
+    ) -> Result<R, Error> {
+        let failed = |e| write_error(shown, e);
         let file = Temporary::create(&target, permissions.is_some()).map_err(failed)?;
         if let Some(permissions) = permissions {
             file.file()
@@ -189,11 +250,11 @@ impl<'a> Staged<'a> {
                 .map_err(failed)?;
         }
         let mut w = BufWriter::new(file.file().map_err(failed)?);
-        write(&mut w).map_err(failed)?;
+        let value = write(&mut w).map_err(failed)?;
         w.flush().map_err(failed)?;
         drop(w);
-        self.files.push((target, path.to_owned(), file));
-        Ok(())
+        self.files.push((target, shown.to_owned(), file));
+        Ok(value)
     }
 
     /// Removes `path` at [`Staged::commit`] if it exists and is a file: an
@@ -419,6 +480,53 @@ mod tests {
         assert_eq!(reader.join().unwrap(), b"through");
         assert_eq!(std::fs::read(&file).unwrap(), b"file");
         assert!(!std::fs::symlink_metadata(&fifo).unwrap().is_file());
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn written_now_a_fifo_gets_its_bytes_after_the_files() {
+        let dir = tempfile::tempdir().unwrap();
+        let fifo = dir.path().join("pipe");
+        let made = std::process::Command::new("mkfifo")
+            .arg(&fifo)
+            .status()
+            .unwrap();
+        assert!(made.success());
+        let file = dir.path().join("a.csv");
+        let mut staged = Staged::default();
+        // No reader yet: writing the FIFO now would block.
+        let n = staged
+            .add_now(&fifo, |w| w.write_all(b"now").map(|()| 3))
+            .unwrap();
+        assert_eq!(n, 3);
+        let m = staged
+            .add_now(&file, |w| w.write_all(b"file").map(|()| 4))
+            .unwrap();
+        assert_eq!(m, 4);
+        assert!(!file.exists());
+        let reader = {
+            let fifo = fifo.clone();
+            std::thread::spawn(move || std::fs::read(fifo).unwrap())
+        };
+        staged.commit().unwrap();
+        assert_eq!(reader.join().unwrap(), b"now");
+        assert_eq!(std::fs::read(&file).unwrap(), b"file");
+    }
+
+    #[test]
+    fn written_now_a_failing_writer_leaves_nothing() {
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("out.parquet");
+        let mut staged = Staged::default();
+        let e = staged
+            .add_now(&path, |w| -> std::io::Result<()> {
+                w.write_all(b"half")?;
+                Err(std::io::Error::other("disk on fire"))
+            })
+            .unwrap_err();
+        assert!(e.to_string().contains("out.parquet"), "{e}");
+        drop(staged);
+        assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
     }
 
     #[cfg(unix)]

@@ -30,7 +30,7 @@ use parquet::basic::{Compression, Encoding, LogicalType, Repetition, Type as Phy
 use parquet::data_type::{ByteArray, ByteArrayType, DoubleType};
 use parquet::errors::ParquetError;
 use parquet::file::metadata::KeyValue;
-use parquet::file::properties::{WriterProperties, WriterVersion};
+use parquet::file::properties::{WriterProperties, WriterPropertiesBuilder, WriterVersion};
 use parquet::file::writer::SerializedFileWriter;
 use parquet::schema::types::Type;
 use t2spline::job::RunOutput;
@@ -56,16 +56,30 @@ fn metadata(result: &RunOutput) -> Result<Vec<KeyValue>, serde_json::Error> {
         .collect())
 }
 
-/// The writer's settings: Snappy compression, no dictionaries, our name;
-/// for columns of floats (`split`) the byte-stream-split encoding.
-fn properties(metadata: Vec<KeyValue>, split: bool) -> Arc<WriterProperties> {
-    let builder = WriterProperties::builder()
+/// The data page size of the one table of many jobs: 64 KiB rather than
+/// the writer's 1 MiB. A page is buffered and compressed whole, and buffers
+/// of a megabyte are taken from the operating system and given back to it
+/// on every page (the allocator's threshold for mapping memory), a fault
+/// per 4 KiB each time; buffers of 64 KiB stay in the allocator's free
+/// lists. Measured on 1 000 jobs of 101 samples: a third fewer page faults
+/// and a quarter less time, for a file 0.1 % larger (docs/performance.md).
+const JOBS_PAGE: usize = 1 << 16;
+
+/// The writer's settings: Snappy compression, no dictionaries, our name.
+fn builder(metadata: Vec<KeyValue>) -> WriterPropertiesBuilder {
+    WriterProperties::builder()
         .set_writer_version(WriterVersion::PARQUET_1_0)
         .set_compression(Compression::SNAPPY)
         .set_dictionary_enabled(false)
         .set_max_row_group_size(ROW_GROUP)
         .set_created_by(format!("t2spline {}", env!("CARGO_PKG_VERSION")))
-        .set_key_value_metadata(Some(metadata));
+        .set_key_value_metadata(Some(metadata))
+}
+
+/// The settings of a result file: [`builder`]'s; for columns of floats
+/// (`split`) the byte-stream-split encoding.
+fn properties(metadata: Vec<KeyValue>, split: bool) -> Arc<WriterProperties> {
+    let builder = builder(metadata);
     let builder = if split {
         builder.set_encoding(Encoding::BYTE_STREAM_SPLIT)
     } else {
@@ -218,7 +232,10 @@ impl<W: Write + Send> JobsParquet<W> {
             for name in &names {
                 fields.push(optional_double(name)?);
             }
-            SerializedFileWriter::new(writer, schema(fields)?, properties(Vec::new(), false))
+            let properties = builder(Vec::new())
+                .set_data_page_size_limit(JOBS_PAGE)
+                .build();
+            SerializedFileWriter::new(writer, schema(fields)?, Arc::new(properties))
         };
         Ok(JobsParquet {
             file: build().map_err(io_error)?,

@@ -354,52 +354,52 @@ impl Batch {
         }
     }
 
-    /// Runs every job, in parallel, in order. With the one Parquet table
-    /// and no JSON Lines, the jobs run [`GROUP`] at a time and each group's
-    /// rows go into the table (in memory) before the next runs, so that
-    /// the results are not all held until the end: the table's bytes are
-    /// returned, and the outcomes keep no result.
-    fn run_all(&self) -> anyhow::Result<(Vec<Outcome>, Option<Vec<u8>>)> {
-        if self.one_parquet.is_none() || self.jsonl.is_some() {
-            let outcomes = self.jobs.par_iter().map(|j| self.run_one(j)).collect();
-            return Ok((outcomes, None));
-        }
-        let failed = |source| t2spline_io::Error::Write {
-            path: self.one_parquet.clone().unwrap_or_default(),
-            source,
-        };
+    /// Runs every job, in parallel, in order.
+    fn run_all(&self) -> Vec<Outcome> {
+        self.jobs.par_iter().map(|j| self.run_one(j)).collect()
+    }
+
+    /// Whether the jobs' rows go into the one Parquet table as they are
+    /// computed: when it is the only output of every job's samples (the
+    /// JSON Lines file would need the results again).
+    fn streams_table(&self) -> bool {
+        self.one_parquet.is_some() && self.jsonl.is_none()
+    }
+
+    /// Runs every job, in order, into the one Parquet table `out`: the jobs
+    /// run [`GROUP`] at a time, in parallel, and while one group runs the
+    /// rows of the one before are written (two threads' work at once), so
+    /// that the table is written beside the work rather than after it and
+    /// the results are not all held until the end. The outcomes keep no
+    /// result. The table's derivative columns are those the option asks
+    /// for (every job runs with it), whether or not a job succeeds.
+    ///
+    /// # Errors
+    /// The errors of `out`.
+    fn run_into_table(&self, out: &mut (dyn Write + Send)) -> std::io::Result<Vec<Outcome>> {
+        let order = self
+            .overrides
+            .derivatives
+            .and_then(|k| usize::try_from(k).ok())
+            .unwrap_or(0);
+        let mut table = JobsParquet::new(out, order)?;
         let mut outcomes = Vec::with_capacity(self.jobs.len());
-        let mut table = None;
+        let mut last: Option<(&[Entry], Vec<Outcome>)> = None;
         for group in self.jobs.chunks(GROUP) {
-            let mut done: Vec<Outcome> = group.par_iter().map(|j| self.run_one(j)).collect();
-            let rows: Vec<(&str, &RunOutput)> = group
-                .iter()
-                .zip(&done)
-                .filter_map(|(j, o)| o.result.as_ref().map(|r| (j.name.as_str(), r)))
-                .collect();
-            if let (None, Some((_, first))) = (&table, rows.first()) {
-                // Every job runs with the same derivatives (an option).
-                let order = first
-                    .samples
-                    .derivatives
-                    .as_ref()
-                    .map_or(0, |d| d.crisp.len());
-                table = Some(JobsParquet::new(Vec::new(), order).map_err(failed)?);
+            let (written, done) = rayon::join(
+                || last.take().map(|(g, d)| add_rows(&mut table, g, d)),
+                || group.par_iter().map(|j| self.run_one(j)).collect(),
+            );
+            if let Some(written) = written {
+                outcomes.extend(written?);
             }
-            if let Some(t) = &mut table {
-                t.write(&rows).map_err(failed)?;
-            }
-            drop(rows);
-            for o in &mut done {
-                o.result = None;
-            }
-            outcomes.extend(done);
+            last = Some((group, done));
         }
-        let table = match table {
-            Some(t) => t,
-            None => JobsParquet::new(Vec::new(), 0).map_err(failed)?,
-        };
-        Ok((outcomes, Some(table.finish().map_err(failed)?)))
+        if let Some((group, done)) = last {
+            outcomes.extend(add_rows(&mut table, group, done)?);
+        }
+        table.finish()?;
+        Ok(outcomes)
     }
 
     /// The job's result (each job with its own type reduction unless
@@ -415,6 +415,26 @@ impl Batch {
         let h = prepared.job().model.least_height();
         Ok((prepared.run().map_err(about_run)?, h, notes))
     }
+}
+
+/// Writes the rows of the jobs of `group` that succeeded into `table`
+/// and gives their outcomes back without the results.
+fn add_rows<W: Write + Send>(
+    table: &mut JobsParquet<W>,
+    group: &[Entry],
+    mut done: Vec<Outcome>,
+) -> std::io::Result<Vec<Outcome>> {
+    let rows: Vec<(&str, &RunOutput)> = group
+        .iter()
+        .zip(&done)
+        .filter_map(|(j, o)| o.result.as_ref().map(|r| (j.name.as_str(), r)))
+        .collect();
+    table.write(&rows)?;
+    drop(rows);
+    for o in &mut done {
+        o.result = None;
+    }
+    Ok(done)
 }
 
 /// The files a result wrote to `out`.
@@ -458,7 +478,18 @@ pub fn run(args: RunArgs) -> anyhow::Result<()> {
     {
         folders.create(dir)?;
     }
-    let (outcomes, streamed) = batch.run_all()?;
+    let summary = batch.summary_dir.join(SUMMARY_CSV);
+    // Declared before the staged outputs, which borrow them until the commit.
+    let rows: Vec<JobSummary>;
+    let kept: Vec<Option<RunOutput>>;
+    // Not late for nothing: a stream staged for a device borrows it.
+    #[allow(clippy::needless_late_init)]
+    let one: Vec<(&str, &RunOutput)>;
+    let mut staged = Staged::default();
+    let outcomes = match &batch.one_parquet {
+        Some(file) if batch.streams_table() => staged.add_now(file, |w| batch.run_into_table(w))?,
+        _ => batch.run_all(),
+    };
     let mut worst = Exit::Ok;
     let mut stderr = std::io::stderr().lock();
     for (job, outcome) in batch.jobs.iter().zip(&outcomes) {
@@ -476,20 +507,19 @@ pub fn run(args: RunArgs) -> anyhow::Result<()> {
     drop(stderr);
     let written: Vec<PathBuf> = outcomes.iter().flat_map(|o| o.written.clone()).collect();
     sync_file_systems(&written)?;
-    let (rows, kept): (Vec<JobSummary>, Vec<Option<RunOutput>>) =
-        outcomes.into_iter().map(|o| (o.summary, o.result)).unzip();
-    let one: Vec<(&str, &RunOutput)> = batch
+    (rows, kept) = outcomes.into_iter().map(|o| (o.summary, o.result)).unzip();
+    one = batch
         .jobs
         .iter()
         .zip(&kept)
         .filter_map(|(job, r)| r.as_ref().map(|r| (job.name.as_str(), r)))
         .collect();
-    let summary = batch.summary_dir.join(SUMMARY_CSV);
-    let mut staged = Staged::default();
-    match (&batch.one_parquet, &streamed) {
-        (Some(file), Some(bytes)) => staged.add(file, |w| w.write_all(bytes))?,
-        (Some(file), None) => staged.add(file, |w| write_jobs_parquet(w, &one))?,
-        (None, _) => {}
+    if let Some(file) = batch
+        .one_parquet
+        .as_ref()
+        .filter(|_| !batch.streams_table())
+    {
+        staged.add(file, |w| write_jobs_parquet(w, &one))?;
     }
     if let Some(file) = &batch.jsonl {
         staged.add(file, |w| write_jobs_jsonl(w, &one))?;
