@@ -1,4 +1,4 @@
-//! Fitting fuzzy data points of either dimension into a job's model, with a
+//! Fitting fuzzy data points of either dimension, or a net of them, into a job's model, with a
 //! summary of what the fit found that needs no dimension.
 
 use crate::error::Error;
@@ -6,7 +6,10 @@ use crate::fuzzy::{Axis, Height, Layers, Nt2Point};
 use crate::job::Model;
 use crate::pipeline::FuzzyCurve;
 
-use super::{fit_fuzzy, Deviation, FitOptions, FuzzyFit, FuzzyFitMode, OrderViolation};
+use super::{
+    fit_fuzzy, fit_fuzzy_surface, Deviation, FitOptions, FuzzyFit, FuzzyFitMode, FuzzySurfaceFit,
+    OrderViolation, SurfaceFitOptions,
+};
 
 /// Fuzzy data points in the plane or in space, as a data file gives them.
 #[derive(Clone, Debug, PartialEq)]
@@ -16,6 +19,9 @@ pub enum FuzzyData {
     Planar(Vec<Nt2Point<2>>),
     /// Points with coordinates `x`, `y`, `z`.
     Spatial(Vec<Nt2Point<3>>),
+    /// A net of points with coordinates `x`, `y`, `z`: rows along u, every
+    /// row as long (the data of a surface).
+    Net(Vec<Vec<Nt2Point<3>>>),
 }
 
 /// What a fit found, for a report: the same for every dimension.
@@ -37,9 +43,22 @@ pub struct FitSummary {
     pub spread_deviations: Layers<Deviation>,
     /// Where fitting each layer on its own breaks the order of docs/method.md §1.
     pub independent_violations: Vec<OrderViolation>,
+    /// For a net (a surface): the stations and the control points in u and
+    /// in v. Data points, control points and deviations then count row by
+    /// row.
+    pub net: Option<NetCounts>,
     /// Coordinates whose data mix lower heights, with the (smallest) height
     /// given to the control points.
     pub mixed_heights: Vec<(Axis, Height)>,
+}
+
+/// The shape of a fitted net: stations and control points in u and in v.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct NetCounts {
+    /// Rows and columns of the data net.
+    pub data: [usize; 2],
+    /// Control points in u and in v.
+    pub control: [usize; 2],
 }
 
 /// The outcome of fitting fuzzy data: the summary, and the fitted fuzzy curve
@@ -60,6 +79,7 @@ impl FuzzyData {
         match self {
             FuzzyData::Planar(p) => p.len(),
             FuzzyData::Spatial(p) => p.len(),
+            FuzzyData::Net(rows) => rows.iter().map(Vec::len).sum(),
         }
     }
 
@@ -91,12 +111,58 @@ impl FuzzyData {
     /// assert_eq!(outcome.model.expect("valid by construction").control_point_count(), 3);
     /// # Ok::<(), t2spline::Error>(())
     /// ```
+    ///
+    /// A net is fitted with these options in both directions; [`FuzzyData::fit_net`]
+    /// takes the degrees and control points of each.
     pub fn fit(&self, options: &FitOptions, mode: FuzzyFitMode) -> Result<FitOutcome, Error> {
         match self {
             FuzzyData::Planar(p) => outcome(p.len(), &fit_fuzzy(p, options, mode)?, Model::Planar),
             FuzzyData::Spatial(p) => {
                 outcome(p.len(), &fit_fuzzy(p, options, mode)?, Model::Spatial)
             }
+            FuzzyData::Net(_) => self.fit_net(
+                &SurfaceFitOptions {
+                    degree: [options.degree; 2],
+                    parametrization: options.parametrization,
+                    control_points: options.control_points.map(|n| [n; 2]),
+                },
+                mode,
+            ),
+        }
+    }
+
+    /// Fits a fuzzy surface to a net ([`fit_fuzzy_surface`]), or a fuzzy
+    /// curve to points with the options of u.
+    ///
+    /// # Errors
+    /// The errors of [`fit_fuzzy_surface`] (or [`fit_fuzzy`]).
+    ///
+    /// # Examples
+    /// ```
+    /// # use t2spline::fit::{FuzzyData, FuzzyFitMode, SurfaceFitOptions};
+    /// # use t2spline::{Nt2Number, Nt2Point};
+    /// let n = |c: f64| Nt2Number::try_new(c, [c - 1.0, c + 1.0], [c - 0.5, c + 0.5], [c - 0.2, c + 0.2], 0.5);
+    /// let net = (0..3)
+    ///     .map(|i| (0..4).map(|j| Ok(Nt2Point::new([n(i as f64)?, n(j as f64)?, n(0.0)?]))).collect())
+    ///     .collect::<Result<Vec<Vec<_>>, t2spline::Error>>()?;
+    /// let outcome = FuzzyData::Net(net).fit_net(&SurfaceFitOptions::interpolation([2, 3]), FuzzyFitMode::Valid)?;
+    /// assert_eq!(outcome.summary.net.map(|n| n.control), Some([3, 4]));
+    /// assert_eq!(outcome.model.expect("valid by construction").control_point_count(), 12);
+    /// # Ok::<(), t2spline::Error>(())
+    /// ```
+    pub fn fit_net(
+        &self,
+        options: &SurfaceFitOptions,
+        mode: FuzzyFitMode,
+    ) -> Result<FitOutcome, Error> {
+        let curve = FitOptions {
+            degree: options.degree[0],
+            parametrization: options.parametrization,
+            control_points: options.control_points.map(|[n, _]| n),
+        };
+        match self {
+            FuzzyData::Planar(_) | FuzzyData::Spatial(_) => self.fit(&curve, mode),
+            FuzzyData::Net(rows) => net_outcome(rows, &fit_fuzzy_surface(rows, options, mode)?),
         }
     }
 }
@@ -128,6 +194,39 @@ fn outcome<const D: usize>(
             spread_deviations: *fit.spread_deviations(),
             independent_violations: fit.independent_violations().to_vec(),
             mixed_heights,
+            net: None,
+        },
+        model,
+    })
+}
+
+fn net_outcome(rows: &[Vec<Nt2Point<3>>], fit: &FuzzySurfaceFit) -> Result<FitOutcome, Error> {
+    let mixed_heights = Axis::of::<3>()
+        .into_iter()
+        .zip(fit.mixed_heights().into_iter().zip(fit.heights()))
+        .filter(|(_, (mixed, _))| *mixed)
+        .map(|(axis, (_, h))| (axis, h))
+        .collect();
+    let model = match fit.to_surface() {
+        Ok(surface) => Ok(Model::Surface(surface)),
+        Err(Error::UnorderedFit { .. }) => Err(fit.violations()),
+        Err(e) => return Err(e),
+    };
+    let control = fit.counts();
+    Ok(FitOutcome {
+        summary: FitSummary {
+            data_points: rows.iter().map(Vec::len).sum(),
+            control_points: control[0] * control[1],
+            mode: fit.mode(),
+            condition: fit.condition(),
+            deviations: *fit.deviations(),
+            spread_deviations: *fit.spread_deviations(),
+            independent_violations: fit.independent_violations().to_vec(),
+            mixed_heights,
+            net: Some(NetCounts {
+                data: [rows.len(), rows.first().map_or(0, Vec::len)],
+                control,
+            }),
         },
         model,
     })

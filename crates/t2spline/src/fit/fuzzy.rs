@@ -240,7 +240,7 @@ fn nested_spreads<const D: usize>(
 }
 
 /// Every place where the seven control values break the order of docs/method.md §1.
-fn violations<const D: usize>(control: &Layers<Vec<[f64; D]>>) -> Vec<OrderViolation> {
+pub(crate) fn violations<const D: usize>(control: &Layers<Vec<[f64; D]>>) -> Vec<OrderViolation> {
     let mut out = Vec::new();
     for i in 0..control[Layer::Crisp].len() {
         for axis in Axis::of::<D>() {
@@ -262,7 +262,7 @@ fn violations<const D: usize>(control: &Layers<Vec<[f64; D]>>) -> Vec<OrderViola
 }
 
 /// The largest coordinate difference between fitted values and data.
-fn deviation<const D: usize>(fitted: &[[f64; D]], data: &[[f64; D]]) -> Deviation {
+pub(crate) fn deviation<const D: usize>(fitted: &[[f64; D]], data: &[[f64; D]]) -> Deviation {
     let mut out = Deviation {
         max: 0.0,
         point: 0,
@@ -284,7 +284,7 @@ fn deviation<const D: usize>(fitted: &[[f64; D]], data: &[[f64; D]]) -> Deviatio
 }
 
 /// The height of each coordinate: the common one, or the smallest if mixed.
-fn heights<const D: usize>(data: &[Nt2Point<D>]) -> ([Height; D], [bool; D]) {
+pub(crate) fn heights<const D: usize>(data: &[Nt2Point<D>]) -> ([Height; D], [bool; D]) {
     let first = data[0].coords().map(|x| x.height());
     let mut lowest = first;
     let mut mixed = [false; D];
@@ -413,28 +413,7 @@ impl<const D: usize> FuzzyFit<D> {
         }
         let n = self.control[Layer::Crisp].len();
         let points = (0..n)
-            .map(|i| {
-                let coords: Result<Vec<Nt2Number>, Error> = (0..D)
-                    .map(|d| {
-                        let v = |l: Layer| self.control[l][i][d];
-                        Nt2Number::try_new(
-                            v(Layer::Crisp),
-                            [v(Layer::UpperLeft), v(Layer::UpperRight)],
-                            [v(Layer::PrimaryLeft), v(Layer::PrimaryRight)],
-                            [v(Layer::LowerLeft), v(Layer::LowerRight)],
-                            self.heights[d].get(),
-                        )
-                    })
-                    .collect();
-                // One number per coordinate, D in all: the error is never made.
-                let coords: [Nt2Number; D] =
-                    coords?.try_into().map_err(|v: Vec<_>| Error::Length {
-                        what: "coordinates",
-                        expected: D,
-                        found: v.len(),
-                    })?;
-                Ok(Nt2Point::new(coords))
-            })
+            .map(|i| control_point(&self.control, i, self.heights))
             .collect::<Result<Vec<_>, Error>>()?;
         FuzzyCurve::try_new(
             self.knots.degree(),
@@ -443,4 +422,36 @@ impl<const D: usize> FuzzyFit<D> {
             Some(self.knots.as_slice().to_vec()),
         )
     }
+}
+
+/// The fuzzy control point `i` of fitted control values, its coordinates'
+/// seven values from the seven layers, with the lower heights `heights`.
+///
+/// # Errors
+/// [`Error::Order`] (and the other errors of [`Nt2Number::try_new`]) where
+/// the values break the order of docs/method.md §1.
+pub(crate) fn control_point<const D: usize>(
+    control: &Layers<Vec<[f64; D]>>,
+    i: usize,
+    heights: [Height; D],
+) -> Result<Nt2Point<D>, Error> {
+    let coords: Result<Vec<Nt2Number>, Error> = (0..D)
+        .map(|d| {
+            let v = |l: Layer| control[l][i][d];
+            Nt2Number::try_new(
+                v(Layer::Crisp),
+                [v(Layer::UpperLeft), v(Layer::UpperRight)],
+                [v(Layer::PrimaryLeft), v(Layer::PrimaryRight)],
+                [v(Layer::LowerLeft), v(Layer::LowerRight)],
+                heights[d].get(),
+            )
+        })
+        .collect();
+    // One number per coordinate, D in all: the error is never made.
+    let coords: [Nt2Number; D] = coords?.try_into().map_err(|v: Vec<_>| Error::Length {
+        what: "coordinates",
+        expected: D,
+        found: v.len(),
+    })?;
+    Ok(Nt2Point::new(coords))
 }

@@ -8,6 +8,10 @@
 //! - [`fuzzify`]: fuzzy data points from repeated readings (median,
 //!   quartiles, 10th–90th percentiles, extremes widened by the instrument's
 //!   accuracy; [`FuzzifyRule`]).
+//! - [`fit_surface`] and [`fit_fuzzy_surface`]: the same for a net of data
+//!   points (§9.2.5 Algorithm A9.4, §9.4.3 Algorithm A9.7), the parameters
+//!   averaged over rows and columns (A9.3), one direction fitted after the
+//!   other ([`SurfaceFitOptions`]).
 //! - [`fit_fuzzy`]: a fuzzy curve through fuzzy data points, with the order of
 //!   docs/method.md §1 kept by construction ([`FuzzyFitMode::Valid`]) or each layer
 //!   fitted on its own and checked ([`FuzzyFitMode::Independent`]).
@@ -32,15 +36,21 @@ mod data;
 mod design;
 mod fuzzify;
 mod fuzzy;
+mod fuzzy_net;
 mod knots;
+mod net;
 mod nnls;
 mod parametrization;
+mod surface;
 
 pub use curve::{fit_curve, CurveFit, FitOptions};
-pub use data::{FitOutcome, FitSummary, FuzzyData};
+pub use data::{FitOutcome, FitSummary, FuzzyData, NetCounts};
 pub use fuzzify::{
     fuzzify, fuzzify_number, percentile, FuzzifyRule, Readings, DEFAULT_LOWER_HEIGHT, MIN_READINGS,
 };
 pub use fuzzy::{fit_fuzzy, Deviation, FuzzyFit, FuzzyFitMode, OrderViolation};
+pub use fuzzy_net::{fit_fuzzy_surface, FuzzySurfaceFit};
 pub use knots::{approximation_knots, averaging_knots};
+pub use net::SurfaceFitOptions;
 pub use parametrization::Parametrization;
+pub use surface::{fit_surface, SurfaceFit};
