@@ -286,9 +286,10 @@ pub struct FitArgs {
           value_parser = clap::builder::PossibleValuesParser::new(["chord", "centripetal", "uniform"]))]
     pub parametrization: String,
     /// Approximate the data by least squares with M control points (the end
-    /// points interpolated) instead of interpolating them.
-    #[arg(long, value_name = "M")]
-    pub control_points: Option<usize>,
+    /// points interpolated) instead of interpolating them; for a net (a
+    /// surface), M,N control points in u and v (M alone: M in both).
+    #[arg(long, value_name = "M[,N]")]
+    pub control_points: Option<String>,
     /// How the six non-crisp layers are fitted: `valid` fits the spreads as
     /// nested non-negative quantities, so the control points are always valid
     /// fuzzy numbers; `independent` fits each layer on its own and refuses to

@@ -26,8 +26,12 @@ pub struct FitData {
     pub description: Option<String>,
     /// `"order"` or `"degree"`: the key the file used, used again in the job.
     pub degree_key: &'static str,
-    /// The degree of the curve to fit (at least 1).
+    /// The degree of the curve to fit (at least 1), or of a net's surface
+    /// along u.
     pub degree: usize,
+    /// The degree along v of a net's surface (at least 1); `None` for the
+    /// data of a curve.
+    pub degree_v: Option<usize>,
     /// Carried to the job.
     pub alpha: Option<Alpha>,
     /// `type_reduction`, if the file gives one; carried to the job.
@@ -85,13 +89,17 @@ impl FitData {
         for (key, value) in model_json(model, self.lower_height) {
             match key.as_str() {
                 "degree" => {
-                    let degree = value.as_u64().unwrap_or_default();
-                    let written = if self.degree_key == "order" {
-                        degree + 1
-                    } else {
-                        degree
+                    // One degree for a curve, a pair [p, q] for a surface.
+                    let shift = u64::from(self.degree_key == "order");
+                    let written = match value {
+                        Value::Array(pair) => Value::Array(
+                            pair.iter()
+                                .map(|d| json!(d.as_u64().unwrap_or_default() + shift))
+                                .collect(),
+                        ),
+                        other => json!(other.as_u64().unwrap_or_default() + shift),
                     };
-                    out.insert(self.degree_key.into(), json!(written));
+                    out.insert(self.degree_key.into(), written);
                 }
                 "points" => {
                     if let Some(a) = self.alpha {

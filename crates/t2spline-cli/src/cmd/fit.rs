@@ -5,7 +5,9 @@
 use std::path::PathBuf;
 
 use anyhow::anyhow;
-use t2spline::fit::{Deviation, FitOptions, FitSummary, FuzzyFitMode, Parametrization};
+use t2spline::fit::{
+    Deviation, FitOptions, FitSummary, FuzzyData, FuzzyFitMode, Parametrization, SurfaceFitOptions,
+};
 use t2spline::{Alpha, Layer};
 use t2spline_io::{is_readings, parse_data, parse_job, printable, to_json_pretty, FitData};
 
@@ -22,6 +24,8 @@ const WARN_CONDITION: f64 = 1e8;
 struct Plan {
     data: FitData,
     options: FitOptions,
+    /// For a net of data points: the options of both directions.
+    surface: Option<SurfaceFitOptions>,
     mode: FuzzyFitMode,
     output: Option<PathBuf>,
     quiet: bool,
@@ -76,25 +80,80 @@ impl Plan {
             }
             (data, None)
         };
-        if let Some(m) = args.control_points {
-            let (min, max) = (data.degree + 1, data.len());
-            if m < min || m > max {
-                return Err(OptionError {
-                    option: "--control-points",
-                    message: format!(
-                        "{m} is outside [{min}, {max}]: at least degree + 1, at most the {max} data points of {}",
-                        printable(&data.source)
-                    ),
+        let counts = args
+            .control_points
+            .as_deref()
+            .map(control_point_counts)
+            .transpose()?;
+        let (control_points, surface) = match &data.points {
+            FuzzyData::Net(rows) => {
+                let shape = [rows.len(), rows.first().map_or(0, Vec::len)];
+                let degree = [data.degree, data.degree_v.unwrap_or(data.degree)];
+                let counts = counts.map(|c| match c[..] {
+                    [m, n] => [m, n],
+                    _ => [c[0]; 2],
+                });
+                if let Some(counts) = counts {
+                    for (d, direction) in ["u", "v"].iter().enumerate() {
+                        let (m, min, max) = (counts[d], degree[d] + 1, shape[d]);
+                        let lines = if d == 0 { "rows" } else { "columns" };
+                        if m < min || m > max {
+                            return Err(OptionError {
+                                option: "--control-points",
+                                message: format!(
+                                    "{m} in {direction} is outside [{min}, {max}]: at least degree + 1, at most the {max} {lines} of the net of {}",
+                                    printable(&data.source)
+                                ),
+                            }
+                            .into());
+                        }
+                    }
                 }
-                .into());
+                let surface = SurfaceFitOptions {
+                    degree,
+                    parametrization,
+                    control_points: counts,
+                };
+                (counts.map(|[m, _]| m), Some(surface))
             }
-        }
+            _ => {
+                let m = match counts.as_deref() {
+                    None => None,
+                    Some([m]) => Some(*m),
+                    Some(_) => {
+                        return Err(OptionError {
+                            option: "--control-points",
+                            message: format!(
+                                "a pair M,N is for a net of data points (a surface); {} holds the data of a curve: give one count",
+                                printable(&data.source)
+                            ),
+                        }
+                        .into())
+                    }
+                };
+                if let Some(m) = m {
+                    let (min, max) = (data.degree + 1, data.len());
+                    if m < min || m > max {
+                        return Err(OptionError {
+                            option: "--control-points",
+                            message: format!(
+                                "{m} is outside [{min}, {max}]: at least degree + 1, at most the {max} data points of {}",
+                                printable(&data.source)
+                            ),
+                        }
+                        .into());
+                    }
+                }
+                (m, None)
+            }
+        };
         Ok(Plan {
             options: FitOptions {
                 degree: data.degree,
                 parametrization,
-                control_points: args.control_points,
+                control_points,
             },
+            surface,
             data,
             mode,
             output: args.output,
@@ -106,11 +165,11 @@ impl Plan {
 
 pub fn fit(args: FitArgs) -> anyhow::Result<()> {
     let plan = Plan::new(args)?;
-    let outcome = plan
-        .data
-        .points
-        .fit(&plan.options, plan.mode)
-        .map_err(|e| plan.data.fit_error(&e))?;
+    let outcome = match &plan.surface {
+        Some(options) => plan.data.points.fit_net(options, plan.mode),
+        None => plan.data.points.fit(&plan.options, plan.mode),
+    }
+    .map_err(|e| plan.data.fit_error(&e))?;
     if !plan.quiet {
         for line in report(&plan, &outcome.summary) {
             eprintln!("t2spline fit: {line}");
@@ -148,15 +207,29 @@ fn report(plan: &Plan, s: &FitSummary) -> Vec<String> {
         Some(_) => "least squares, end points interpolated".to_owned(),
     };
     let mut lines: Vec<String> = plan.fuzzified.iter().cloned().collect();
-    lines.push(format!(
-        "{}: {} data points, degree {}, {} parameters: {method}, {} control points, condition number {:.1e}",
-        printable(&plan.data.source),
-        s.data_points,
-        plan.options.degree,
-        plan.options.parametrization,
-        s.control_points,
-        s.condition,
-    ));
+    match (&plan.surface, s.net) {
+        (Some(o), Some(net)) => lines.push(format!(
+            "{}: a net of {} × {} data points, degree {} × {}, {} parameters averaged over rows and columns: {method}, {} × {} control points, condition number {:.1e} (the larger of u and v)",
+            printable(&plan.data.source),
+            net.data[0],
+            net.data[1],
+            o.degree[0],
+            o.degree[1],
+            o.parametrization,
+            net.control[0],
+            net.control[1],
+            s.condition,
+        )),
+        _ => lines.push(format!(
+            "{}: {} data points, degree {}, {} parameters: {method}, {} control points, condition number {:.1e}",
+            printable(&plan.data.source),
+            s.data_points,
+            plan.options.degree,
+            plan.options.parametrization,
+            s.control_points,
+            s.condition,
+        )),
+    }
     if s.condition > WARN_CONDITION {
         lines.push(format!(
             "warning: the system is ill-conditioned: the control points may be wrong in their last {:.0} digits; fewer control points give a better-posed fit",
@@ -183,12 +256,18 @@ fn report(plan: &Plan, s: &FitSummary) -> Vec<String> {
         "largest deviation from the data at the data parameters, of each layer and of its spread (layer - crisp):"
             .to_owned(),
     );
-    let at = |d: &Deviation| {
-        if d.max > 0.0 {
-            format!("points[{}].{}", d.point, d.axis)
-        } else {
-            "-".to_owned()
+    let at = |d: &Deviation| match (d.max > 0.0, s.net) {
+        (false, _) => "-".to_owned(),
+        (true, Some(net)) => {
+            let columns = net.data[1].max(1);
+            format!(
+                "points[{}][{}].{}",
+                d.point / columns,
+                d.point % columns,
+                d.axis
+            )
         }
+        (true, None) => format!("points[{}].{}", d.point, d.axis),
     };
     // The location column is as wide as its longest entry.
     let width = s
@@ -225,4 +304,19 @@ fn report(plan: &Plan, s: &FitSummary) -> Vec<String> {
         lines.push(line);
     }
     lines
+}
+
+/// The counts of `--control-points`: `M` or `M,N`, each a whole number.
+fn control_point_counts(text: &str) -> Result<Vec<usize>, OptionError> {
+    let counts: Option<Vec<usize>> = text.split(',').map(|c| c.trim().parse().ok()).collect();
+    match counts {
+        Some(c) if (1..=2).contains(&c.len()) => Ok(c),
+        _ => Err(OptionError {
+            option: "--control-points",
+            message: format!(
+                "`{}` is not a count M or a pair M,N of whole numbers",
+                printable(text)
+            ),
+        }),
+    }
 }

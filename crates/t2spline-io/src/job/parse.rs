@@ -360,6 +360,7 @@ impl Walker {
             description: header.description,
             degree_key: header.degree_key,
             degree: header.degree?,
+            degree_v: None,
             alpha: header.alpha,
             type_reduction: type_reduction?,
             lower_height: header.lower_height,

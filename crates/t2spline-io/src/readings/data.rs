@@ -37,6 +37,7 @@ impl ReadingsFile {
             description: Some(description),
             degree_key,
             degree,
+            degree_v: None,
             alpha,
             type_reduction: None,
             lower_height: Some(rule.lower_height.get()),
