@@ -26,8 +26,12 @@ pub struct FitData {
     pub description: Option<String>,
     /// `"order"` or `"degree"`: the key the file used, used again in the job.
     pub degree_key: &'static str,
-    /// The degree of the curve to fit (at least 1).
+    /// The degree of the curve to fit (at least 1); for the data of a net,
+    /// the degree along u.
     pub degree: usize,
+    /// The degree along v for the data of a net; `degree` is then the degree
+    /// along u. `None` for curves.
+    pub degree_v: Option<usize>,
     /// Carried to the job.
     pub alpha: Option<Alpha>,
     /// `type_reduction`, if the file gives one; carried to the job.
@@ -36,7 +40,8 @@ pub struct FitData {
     pub lower_height: Option<f64>,
     /// `samples`, if the file gives it; carried to the job.
     pub samples: Option<usize>,
-    /// The data points (at least `degree + 1`).
+    /// The data points (at least `degree + 1`; of a net, at least
+    /// `degree + 1` rows of at least `degree_v + 1` points).
     pub points: FuzzyData,
 }
 
@@ -85,13 +90,16 @@ impl FitData {
         for (key, value) in model_json(model, self.lower_height) {
             match key.as_str() {
                 "degree" => {
-                    let degree = value.as_u64().unwrap_or_default();
-                    let written = if self.degree_key == "order" {
-                        degree + 1
-                    } else {
-                        degree
+                    // One degree for a curve, a pair `[p, q]` for a surface.
+                    let shift = u64::from(self.degree_key == "order");
+                    let written = match &value {
+                        Value::Array(pair) => json!(pair
+                            .iter()
+                            .map(|d| d.as_u64().unwrap_or_default() + shift)
+                            .collect::<Vec<_>>()),
+                        _ => json!(value.as_u64().unwrap_or_default() + shift),
                     };
-                    out.insert(self.degree_key.into(), json!(written));
+                    out.insert(self.degree_key.into(), written);
                 }
                 "points" => {
                     if let Some(a) = self.alpha {

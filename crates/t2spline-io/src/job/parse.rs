@@ -334,6 +334,9 @@ impl Walker {
             }
         }
         self.refused = FIT_MAKES;
+        if surface::is_surface(o) {
+            return self.data_net(o, DATA_KEYS);
+        }
         let header = self.header(o, DATA_KEYS, "a data file needs its fuzzy data points");
         // Carried to the job only when given.
         let type_reduction = if o.contains_key("type_reduction") {
@@ -360,6 +363,7 @@ impl Walker {
             description: header.description,
             degree_key: header.degree_key,
             degree: header.degree?,
+            degree_v: None,
             alpha: header.alpha,
             type_reduction: type_reduction?,
             lower_height: header.lower_height,

@@ -16,6 +16,10 @@ pub enum FuzzyData {
     Planar(Vec<Nt2Point<2>>),
     /// Points with coordinates `x`, `y`, `z`.
     Spatial(Vec<Nt2Point<3>>),
+    /// A net of points with coordinates `x`, `y`, `z`: rows along u, each
+    /// row along v (`points[i][j]`, as a surface job's control points), all
+    /// rows of one length.
+    Net(Vec<Vec<Nt2Point<3>>>),
 }
 
 /// What a fit found, for a report: the same for every dimension.
@@ -54,12 +58,13 @@ pub struct FitOutcome {
 }
 
 impl FuzzyData {
-    /// The number of data points.
+    /// The number of data points (of a net: all of its points, rows × columns).
     #[must_use]
     pub fn len(&self) -> usize {
         match self {
             FuzzyData::Planar(p) => p.len(),
             FuzzyData::Spatial(p) => p.len(),
+            FuzzyData::Net(rows) => rows.iter().map(Vec::len).sum(),
         }
     }
 
@@ -75,6 +80,8 @@ impl FuzzyData {
     /// The errors of [`fit_fuzzy`]: too few points, coincident neighbours,
     /// a singular or ill-conditioned system, a control value beyond the
     /// limit of coordinates ([`Error::FitBeyondLimit`]), and so on.
+    /// [`Error::Length`] for a net ([`FuzzyData::Net`]): a net is fitted by
+    /// the surface fit, not as a curve.
     ///
     /// # Examples
     /// ```
@@ -97,6 +104,11 @@ impl FuzzyData {
             FuzzyData::Spatial(p) => {
                 outcome(p.len(), &fit_fuzzy(p, options, mode)?, Model::Spatial)
             }
+            FuzzyData::Net(rows) => Err(Error::Length {
+                what: "rows of data points (a net is fitted by the surface fit, not as a curve)",
+                expected: 1,
+                found: rows.len(),
+            }),
         }
     }
 }

@@ -53,6 +53,7 @@ pub(in super::super) fn data(text: &str) -> Option<FitData> {
         description: raw.description,
         degree_key: key,
         degree,
+        degree_v: None,
         alpha,
         type_reduction: raw.type_reduction,
         lower_height: height,
