@@ -333,8 +333,8 @@ pub struct ReadingsArgs {
 #[derive(Debug, Args)]
 pub struct FuzzifyArgs {
     /// The readings file: a header `station,x,y` or `station,x,y,z`, then one
-    /// reading per row, the rows of a station together (comma or semicolon
-    /// separated). `-` reads standard input.
+    /// reading per row, the rows of a station in any order (comma or
+    /// semicolon separated). `-` reads standard input.
     pub readings: PathBuf,
     /// Write the data file here instead of standard output (`-` is standard
     /// output).

@@ -26,7 +26,7 @@ use crate::keyword;
 /// ----------
 /// readings : str or os.PathLike
 ///     The readings file: a header ``station,x,y`` or ``station,x,y,z``, then
-///     one reading per row, the rows of a station together (comma or
+///     one reading per row, the rows of a station in any order (comma or
 ///     semicolon separated).
 /// tolerance : float, optional
 ///     The instrument's accuracy ``T`` (default 0).

@@ -16,8 +16,10 @@
 //!   a decimal point, as spreadsheets in many locales write numbers;
 //! - every row has exactly the header's columns; values are finite numbers
 //!   within [`MAX_MAGNITUDE`](t2spline::MAX_MAGNITUDE);
-//! - the rows of a station are together; stations come in the order of their
-//!   first row and become the data points in that order;
+//! - the rows of a station may stand anywhere (a log in time order
+//!   interleaves stations); stations come in the order of their first row
+//!   and become the data points in that order, each with its readings in
+//!   file order, so a file gives what the same file sorted by station gives;
 //! - every station has at least [`MIN_READINGS`] readings;
 //! - CRLF or LF line ends, a UTF-8 byte-order mark and RFC 4180 quoting
 //!   (`"dune, crest"`, `"1,25"`) are accepted.
@@ -116,21 +118,24 @@ pub fn read_readings(path: &Path) -> Result<ReadingsFile, Error> {
 /// [`Error::Invalid`] listing every problem (at most
 /// [`MAX_PROBLEMS`](crate::job::MAX_PROBLEMS), then a count), each with its
 /// line and column: a wrong header, a missing or extra column, a value that is
-/// not a finite number or beyond the range, a station whose rows are not
-/// together, a station with fewer than two readings, unclosed quotes, more
+/// not a finite number or beyond the range, a station with fewer than two
+/// readings, unclosed quotes, more
 /// than [`MAX_ROWS`] rows or [`MAX_POINTS`](crate::job::MAX_POINTS) stations.
 ///
 /// # Examples
 /// ```
-/// let text = "station;x;y\r\nA;0;1,5\r\nA;0,5;2\r\nB;3;x\r\nA;1;1\r\n";
+/// let text = "station;x;y\r\nA;0;1,5\r\nB;0,5;2\r\nC;3;x\r\nA;1;1\r\n";
 /// let e = t2spline_io::parse_readings(text, "r.csv").unwrap_err();
 /// assert_eq!(e.lines(), [
 ///     "r.csv:4:5: y (column 3): `x` is not a number",
-///     "r.csv:5:1: station `A`: its rows must be together, but rows of `B` (from line 4) came between; sort the rows by station",
-///     "r.csv:4:1: station `B`: 1 reading(s); percentiles need at least 2",
+///     "r.csv:3:1: station `B`: 1 reading(s); percentiles need at least 2",
+///     "r.csv:4:1: station `C`: 1 reading(s); percentiles need at least 2",
 /// ]);
-/// let ok = t2spline_io::parse_readings("station,x,y\nA,0,1\nA,1,2\n", "r.csv")?;
-/// assert_eq!(ok.stations, ["A"]);
+/// // The rows of a station may stand anywhere: as if sorted by station.
+/// let ok = t2spline_io::parse_readings("station,x,y\nA,0,1\nB,5,5\nA,1,2\nB,6,6\n", "r.csv")?;
+/// let sorted = t2spline_io::parse_readings("station,x,y\nA,0,1\nA,1,2\nB,5,5\nB,6,6\n", "r.csv")?;
+/// assert_eq!(ok.stations, ["A", "B"]);
+/// assert_eq!(ok.readings, sorted.readings);
 /// # Ok::<(), t2spline_io::Error>(())
 /// ```
 pub fn parse_readings(text: &str, source: &str) -> Result<ReadingsFile, Error> {
@@ -218,7 +223,6 @@ struct Rows {
     /// Rows per station, good or not (the rule of at least two readings
     /// counts rows, so that a bad value is reported once).
     rows: Vec<usize>,
-    current: Option<usize>,
     problems: Vec<Problem>,
     /// Too many stations: reading stops there.
     over_limit: bool,
@@ -235,7 +239,6 @@ impl Rows {
             index: HashMap::new(),
             values: Vec::new(),
             rows: Vec::new(),
-            current: None,
             problems: Vec::new(),
             over_limit: false,
         }
@@ -317,51 +320,28 @@ impl Rows {
             );
             return;
         }
-        let station = match self.current {
-            Some(s) if self.names.get(s).is_some_and(|n| n == name) => s,
-            _ => match self.index.get(name) {
-                Some(&s) => {
-                    let between = self
-                        .current
-                        .and_then(|c| Some((self.names.get(c)?, self.first_line.get(c)?)))
-                        .map_or(String::new(), |(name, line)| {
-                            format!(
-                                ", but rows of `{}` (from line {line}) came between",
-                                shorten(name)
-                            )
-                        });
+        let station = match self.index.get(name) {
+            Some(&s) => s,
+            None => {
+                if self.names.len() == MAX_POINTS {
                     self.problem(
                         at,
                         format!(
-                            "station `{}`: its rows must be together{between}; sort the rows by station",
+                            "station `{}`: more than the limit of {MAX_POINTS} stations",
                             shorten(name)
                         ),
                     );
-                    self.current = Some(s);
+                    self.over_limit = true;
                     return;
                 }
-                None => {
-                    if self.names.len() == MAX_POINTS {
-                        self.problem(
-                            at,
-                            format!(
-                                "station `{}`: more than the limit of {MAX_POINTS} stations",
-                                shorten(name)
-                            ),
-                        );
-                        self.over_limit = true;
-                        return;
-                    }
-                    self.index.insert(name.to_owned(), self.names.len());
-                    self.names.push(name.to_owned());
-                    self.first_line.push(at.0);
-                    self.values.push(Vec::new());
-                    self.rows.push(0);
-                    self.names.len() - 1
-                }
-            },
+                self.index.insert(name.to_owned(), self.names.len());
+                self.names.push(name.to_owned());
+                self.first_line.push(at.0);
+                self.values.push(Vec::new());
+                self.rows.push(0);
+                self.names.len() - 1
+            }
         };
-        self.current = Some(station);
         // `station` indexes the lists, which grow together.
         if let Some(rows) = self.rows.get_mut(station) {
             *rows += 1;
