@@ -76,6 +76,7 @@ pub(crate) fn fuzzify<'py>(
         degree: non_negative(keyword::opt_int(degree, "degree")?, "degree")?,
         order: non_negative(keyword::opt_int(order, "order")?, "order")?,
         alpha: keyword::opt_real(alpha, "alpha")?,
+        ..ReadingsOptions::default()
     };
     if !(readings.is_instance_of::<PyString>() || readings.hasattr("__fspath__")?) {
         return Err(PyTypeError::new_err(format!(

@@ -62,7 +62,7 @@ impl ReadingsFile {
             .map(|&line| (line, 1));
         let name = station.and_then(|s| self.stations.get(s));
         let message = match name {
-            Some(name) => format!("station `{}`: {e}", super::shorten(name)),
+            Some(name) => format!("station `{}`: {e}", super::fields::shorten(name)),
             None => e.to_string(),
         };
         Error::Invalid {

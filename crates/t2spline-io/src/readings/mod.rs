@@ -37,23 +37,30 @@
 #![cfg_attr(not(test), deny(clippy::indexing_slicing))]
 
 mod data;
+mod fields;
+mod net;
+mod npy;
 mod options;
+mod raster;
 pub(crate) mod tokens;
 
 pub use data::data_json;
+pub use net::{parse_net_readings, NetReadings, StationSource};
+pub use npy::{parse_npy, MAX_NPY_BYTES};
 pub use options::{
-    fuzzify_readings, ReadingsError, ReadingsOption, ReadingsOptions, DEFAULT_DEGREE,
+    fuzzify_net, fuzzify_readings, ReadingsError, ReadingsOption, ReadingsOptions, DEFAULT_DEGREE,
 };
+pub use raster::{parse_ascii_grid, parse_grid_csv, Raster, RasterGeometry, MAX_RASTER_CELLS};
 
 use std::collections::HashMap;
 use std::path::Path;
 
 use t2spline::fit::{Readings, MIN_READINGS};
-use t2spline::{Num, MAX_MAGNITUDE};
 
 use crate::error::{Error, Problem};
 use crate::limits::{MAX_POINTS, MAX_PROBLEMS};
 use crate::read::read_text;
+use fields::shorten;
 
 /// The most rows (readings) a readings file may have: 4 million, about what
 /// a 64 MiB file of short rows holds.
@@ -149,46 +156,27 @@ fn parse_readings_within(text: &str, source: &str, max_rows: usize) -> Result<Re
         problems,
     };
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    let first = text.lines().next().unwrap_or("");
-    let delimiter = if first.contains(';') { ';' } else { ',' };
+    let delimiter = fields::delimiter(text);
     // Readings are counted as they are split (the header and readings, not
     // blank lines), and splitting stops past the limit.
-    let records = tokens::records(text, delimiter, max_rows.saturating_add(1)).map_err(|e| {
-        invalid(vec![match e {
-            tokens::Fault::Quote(e) => Problem {
-                line_column: Some((e.line, e.column)),
-                message: e.message.to_owned(),
-            },
-            tokens::Fault::TooMany => Problem::new(format!(
-                "more than the limit of {max_rows} readings (rows after the header; blank lines do not count)"
-            )),
-        }])
-    })?;
+    let records =
+        fields::records(text, delimiter, max_rows).map_err(|problem| invalid(vec![problem]))?;
     let Some((header, rows)) = records.split_first() else {
         return Err(invalid(vec![Problem::new(
             "the file is empty; expected the header `station,x,y` or `station,x,y,z` and one reading per row",
         )]));
     };
-    let names: Vec<String> = header
-        .fields
-        .iter()
-        .map(|f| f.text.trim().to_ascii_lowercase())
-        .collect();
+    let names = fields::names(header);
     let dimension = match names.iter().map(String::as_str).collect::<Vec<_>>()[..] {
         ["station", "x", "y"] => 2,
         ["station", "x", "y", "z"] => 3,
         _ => {
-            let given = header
-                .fields
-                .iter()
-                .map(|f| f.text.as_str())
-                .collect::<Vec<_>>()
-                .join(&delimiter.to_string());
+            let given = fields::given(header, delimiter);
             return Err(invalid(vec![Problem {
                 line_column: header.fields.first().map(|f| (f.line, f.column)),
                 message: format!(
                     "expected the header `station,x,y` or `station,x,y,z` (comma or semicolon separated), got `{}`",
-                    shorten(&given)
+                    given
                 ),
             }]));
         }
@@ -300,7 +288,7 @@ impl Rows {
             .enumerate()
             .zip(point.iter_mut().zip(self.columns.iter().skip(1)))
         {
-            match self.number(field) {
+            match fields::number(self.delimiter, &field.text) {
                 Ok(x) => *coordinate = x,
                 Err(message) => {
                     self.problems.push(Problem {
@@ -351,28 +339,6 @@ impl Rows {
         }
     }
 
-    /// A value: a finite number within the range; in a semicolon file, a
-    /// decimal comma counts as a decimal point.
-    fn number(&self, field: &tokens::Field) -> Result<f64, String> {
-        let text = field.text.trim();
-        let decimal = if self.delimiter == ';' && text.contains(',') && !text.contains('.') {
-            text.replacen(',', ".", 1)
-        } else {
-            text.to_owned()
-        };
-        match decimal.parse::<f64>() {
-            Ok(x) if x.is_finite() && x.abs() <= MAX_MAGNITUDE => Ok(x),
-            Ok(x) if x.is_finite() => Err(format!("{} is outside [-1e150, 1e150]", Num(x))),
-            // A number beyond the range of a float (`1e309`) reads as
-            // infinite; `inf` and `NaN` are not numbers of a reading.
-            Ok(x) if x.is_infinite() && !decimal.to_ascii_lowercase().contains("inf") => {
-                Err(format!("{} is outside [-1e150, 1e150]", shorten(text)))
-            }
-            _ if text.is_empty() => Err("empty; every reading needs a number".into()),
-            _ => Err(format!("`{}` is not a number", shorten(text))),
-        }
-    }
-
     /// The stations and their readings, or every problem.
     fn finish(mut self) -> Result<(Vec<String>, Vec<usize>, Readings), Vec<Problem>> {
         for ((name, &count), &line) in self.names.iter().zip(&self.rows).zip(&self.first_line) {
@@ -392,13 +358,7 @@ impl Rows {
             ));
         }
         if !self.problems.is_empty() {
-            if self.problems.len() > MAX_PROBLEMS {
-                let more = self.problems.len() - MAX_PROBLEMS;
-                self.problems.truncate(MAX_PROBLEMS);
-                self.problems
-                    .push(Problem::new(format!("… and {more} more problem(s)")));
-            }
-            return Err(self.problems);
+            return Err(fields::capped(self.problems));
         }
         let readings = if self.dimension == 2 {
             Readings::Planar(
@@ -412,23 +372,6 @@ impl Rows {
         };
         Ok((self.names, self.first_line, readings))
     }
-}
-
-/// Text from the file in a message: at most 40 characters, control
-/// characters escaped, so that a hostile file cannot write to a terminal.
-fn shorten(text: &str) -> String {
-    let mut out = String::new();
-    for c in text.chars().take(40) {
-        if c.is_control() {
-            out.extend(c.escape_default());
-        } else {
-            out.push(c);
-        }
-    }
-    if text.chars().count() > 40 {
-        out.push('…');
-    }
-    out
 }
 
 #[cfg(test)]
