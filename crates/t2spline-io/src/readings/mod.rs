@@ -46,7 +46,7 @@ pub(crate) mod tokens;
 
 pub use data::data_json;
 pub use net::{parse_net_readings, NetReadings, StationSource};
-pub use npy::{parse_npy, MAX_NPY_BYTES};
+pub use npy::{parse_npy, read_npy, MAX_NPY_BYTES};
 pub use options::{
     fuzzify_net, fuzzify_readings, ReadingsError, ReadingsOption, ReadingsOptions, DEFAULT_DEGREE,
 };

@@ -500,7 +500,7 @@ impl NetReadings {
         let coordinates = if self.centres.is_some() {
             "x, y = the block's centre (crisp); z"
         } else {
-            "per coordinate"
+            "Per coordinate"
         };
         let description = format!(
             "Fuzzified by t2spline from {}: a net of {rows} × {columns} stations ({}; points[i][j]: row i along u, column j along v), {} readings. {coordinates}: crisp = median, lower = [25th, 75th percentile] (lower_height {}), primary = [10th, 90th percentile], upper = [min - T, max + T] with T = {} (percentiles by linear interpolation, type 7).",

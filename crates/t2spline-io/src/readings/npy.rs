@@ -17,6 +17,9 @@
 //! the format bring a parser of Python literals (and its grammar
 //! engine) along for these three keys, so the few rules are followed here.
 
+use std::io::Read;
+use std::path::Path;
+
 use super::fields::shorten;
 use super::raster::{Raster, RasterGeometry, MAX_RASTER_CELLS};
 use crate::error::{Error, Problem};
@@ -220,4 +223,39 @@ fn shape_value(header: &str) -> Option<Vec<usize>> {
         .filter(|s| !s.is_empty())
         .map(|s| s.strip_suffix('L').unwrap_or(s).parse::<usize>().ok())
         .collect()
+}
+
+/// Reads the `.npy` file at `path` (at most [`MAX_NPY_BYTES`], checked
+/// before reading) as [`parse_npy`] does.
+///
+/// # Errors
+/// [`Error::Read`] if the file cannot be read; [`Error::Invalid`] if it is
+/// larger than [`MAX_NPY_BYTES`], and the errors of [`parse_npy`].
+pub fn read_npy(path: &Path, geometry: &RasterGeometry) -> Result<Raster, Error> {
+    let name = path.display().to_string();
+    let failed = |source| Error::Read {
+        path: path.to_owned(),
+        source,
+    };
+    let file = std::fs::File::open(path).map_err(failed)?;
+    let size = file.metadata().map_err(failed)?.len();
+    let too_large = || {
+        Error::Invalid {
+        file: name.clone(),
+        problems: vec![Problem::new(format!(
+            "a .npy file larger than the limit of {MAX_NPY_BYTES} bytes ({MAX_RASTER_CELLS} cells of 8 bytes and a header)"
+        ))],
+    }
+    };
+    if size > MAX_NPY_BYTES {
+        return Err(too_large());
+    }
+    let mut bytes = Vec::new();
+    file.take(MAX_NPY_BYTES + 1)
+        .read_to_end(&mut bytes)
+        .map_err(failed)?;
+    if bytes.len() as u64 > MAX_NPY_BYTES {
+        return Err(too_large());
+    }
+    parse_npy(&bytes, &name, geometry)
 }
