@@ -360,7 +360,7 @@ pub struct FuzzifyArgs {
         value_name = "X0,Y0",
         value_delimiter = ',',
         num_args = 1,
-        allow_negative_numbers = true
+        allow_hyphen_values = true
     )]
     pub origin: Option<Vec<f64>>,
     /// For a `.npy` raster: the step in x per column and in y per row (DY
@@ -370,7 +370,7 @@ pub struct FuzzifyArgs {
         value_name = "DX,DY",
         value_delimiter = ',',
         num_args = 1,
-        allow_negative_numbers = true
+        allow_hyphen_values = true
     )]
     pub spacing: Option<Vec<f64>>,
     /// Write the data file here instead of standard output (`-` is standard
