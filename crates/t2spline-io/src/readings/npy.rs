@@ -163,7 +163,7 @@ pub fn parse_npy(bytes: &[u8], source: &str, geometry: &RasterGeometry) -> Resul
     if let Some((k, v)) = values
         .iter()
         .enumerate()
-        .find(|(_, v)| !v.is_nan() && !(v.is_finite() && v.abs() <= t2spline::MAX_MAGNITUDE))
+        .find(|(_, v)| !(v.is_nan() || (v.is_finite() && v.abs() <= t2spline::MAX_MAGNITUDE)))
     {
         return Err(refuse(format!(
             "cell ({}, {}) = {v}: a reading is a finite number within [-1e150, 1e150], or NaN for no data",

@@ -31,6 +31,9 @@ use super::net::{NetReadings, StationSource};
 use crate::error::{Error, Problem};
 use crate::limits::{MAX_POINTS, MAX_PROBLEMS};
 
+/// A line and a character column, from 1.
+type At = (usize, usize);
+
 /// The most cells a raster may have: 16 777 216 (`4096 × 4096`), 128 MiB of
 /// 64-bit floats.
 pub const MAX_RASTER_CELLS: usize = 1 << 24;
@@ -337,19 +340,17 @@ pub fn parse_grid_csv(text: &str, source: &str) -> Result<Raster, Error> {
                     *l = *line;
                 }
             }
-            Some(first) => {
-                if problems.len() <= MAX_PROBLEMS {
-                    problems.push(Problem {
-                        line_column: Some((*line, 1)),
-                        message: format!(
-                            "cell (x {}, y {}): given again (first at line {first}); every cell once",
-                            t2spline::Num(*x),
-                            t2spline::Num(*y)
-                        ),
-                    });
-                }
+            Some(first) if problems.len() <= MAX_PROBLEMS => {
+                problems.push(Problem {
+                    line_column: Some((*line, 1)),
+                    message: format!(
+                        "cell (x {}, y {}): given again (first at line {first}); every cell once",
+                        t2spline::Num(*x),
+                        t2spline::Num(*y)
+                    ),
+                });
             }
-            None => {}
+            Some(_) | None => {}
         }
     }
     for (k, &line) in line_of.iter().enumerate() {
@@ -442,7 +443,7 @@ pub fn parse_ascii_grid(text: &str, source: &str) -> Result<Raster, Error> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let mut words = Words::new(text);
     // The header: `key value` pairs until the first word that is a number.
-    let mut header: Vec<(String, f64, (usize, usize))> = Vec::new();
+    let mut header: Vec<(String, f64, At)> = Vec::new();
     let mut problems = Vec::new();
     while let Some((word, at)) = words.peek() {
         if word.parse::<f64>().is_ok() || word.eq_ignore_ascii_case("nan") {
@@ -502,53 +503,51 @@ pub fn parse_ascii_grid(text: &str, source: &str) -> Result<Raster, Error> {
             .find(|(k, _, _)| k == key)
             .map(|(_, v, at)| (*v, *at))
     };
-    let need =
-        |keys: &[&str], problems: &mut Vec<Problem>| -> Option<(f64, (usize, usize), usize)> {
-            let found: Vec<(usize, (f64, (usize, usize)))> = keys
-                .iter()
-                .enumerate()
-                .filter_map(|(i, k)| Some((i, get(k)?)))
-                .collect();
-            match found.as_slice() {
-                [(i, (v, at))] => Some((*v, *at, *i)),
-                [] => {
-                    problems.push(Problem::new(format!(
-                        "the header has no {}",
-                        keys.join(" or ")
-                    )));
-                    None
-                }
-                [_, (_, (_, at)), ..] => {
-                    problems.push(Problem {
-                        line_column: Some(*at),
-                        message: format!("give one of {}, not both", keys.join(" and ")),
-                    });
-                    None
-                }
+    let need = |keys: &[&str], problems: &mut Vec<Problem>| -> Option<(f64, At, usize)> {
+        let found: Vec<(f64, At, usize)> = keys
+            .iter()
+            .enumerate()
+            .filter_map(|(i, k)| get(k).map(|(v, at)| (v, at, i)))
+            .collect();
+        match found.as_slice() {
+            [one] => Some(*one),
+            [] => {
+                problems.push(Problem::new(format!(
+                    "the header has no {}",
+                    keys.join(" or ")
+                )));
+                None
             }
-        };
+            [_, (_, at, _), ..] => {
+                problems.push(Problem {
+                    line_column: Some(*at),
+                    message: format!("give one of {}, not both", keys.join(" and ")),
+                });
+                None
+            }
+        }
+    };
     let ncols = need(&["ncols"], &mut problems);
     let nrows = need(&["nrows"], &mut problems);
     let xll = need(&["xllcorner", "xllcenter"], &mut problems);
     let yll = need(&["yllcorner", "yllcenter"], &mut problems);
     let cellsize = need(&["cellsize"], &mut problems);
     let nodata = get("nodata_value").map(|(v, _)| v);
-    let count =
-        |what: &str, v: Option<(f64, (usize, usize), usize)>, problems: &mut Vec<Problem>| {
-            let (v, at, _) = v?;
-            if v >= 1.0 && v.fract() == 0.0 && v <= MAX_RASTER_CELLS as f64 {
-                Some(v as usize)
-            } else {
-                problems.push(Problem {
-                    line_column: Some(at),
-                    message: format!(
-                        "{what} = {}: a whole number from 1 to {MAX_RASTER_CELLS}",
-                        t2spline::Num(v)
-                    ),
-                });
-                None
-            }
-        };
+    let count = |what: &str, v: Option<(f64, At, usize)>, problems: &mut Vec<Problem>| {
+        let (v, at, _) = v?;
+        if v >= 1.0 && v.fract() == 0.0 && v <= MAX_RASTER_CELLS as f64 {
+            Some(v as usize)
+        } else {
+            problems.push(Problem {
+                line_column: Some(at),
+                message: format!(
+                    "{what} = {}: a whole number from 1 to {MAX_RASTER_CELLS}",
+                    t2spline::Num(v)
+                ),
+            });
+            None
+        }
+    };
     let columns = count("ncols", ncols, &mut problems);
     let rows = count("nrows", nrows, &mut problems);
     let size = cellsize.and_then(|(v, at, _)| {
@@ -664,7 +663,7 @@ struct WordIter<'t> {
 }
 
 impl<'t> Iterator for WordIter<'t> {
-    type Item = (&'t str, (usize, usize));
+    type Item = (&'t str, At);
 
     fn next(&mut self) -> Option<Self::Item> {
         let rest = self.text.get(self.position..)?;
@@ -709,13 +708,13 @@ impl<'t> Words<'t> {
         }
     }
 
-    fn peek(&mut self) -> Option<(&'t str, (usize, usize))> {
+    fn peek(&mut self) -> Option<(&'t str, At)> {
         self.rest.peek().copied()
     }
 }
 
 impl<'t> Iterator for Words<'t> {
-    type Item = (&'t str, (usize, usize));
+    type Item = (&'t str, At);
 
     fn next(&mut self) -> Option<Self::Item> {
         self.rest.next()
