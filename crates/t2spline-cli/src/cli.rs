@@ -322,21 +322,58 @@ pub struct ReadingsArgs {
     /// the quartiles hold half of the readings].
     #[arg(long, value_name = "H", allow_negative_numbers = true)]
     pub lower_height: Option<f64>,
-    /// The degree of the curve to fit, carried into the data file [default: 3].
-    #[arg(long, value_name = "P", conflicts_with = "order")]
-    pub degree: Option<u64>,
-    /// The order of the curve to fit (degree + 1), instead of --degree.
-    #[arg(long, value_name = "K")]
-    pub order: Option<u64>,
+    /// The degree of the curve to fit, carried into the data file
+    /// [default: 3]; for a net `P,Q` (along u, along v), or `P` for both
+    /// [default: 3,3].
+    #[arg(
+        long,
+        value_name = "P|P,Q",
+        conflicts_with = "order",
+        value_delimiter = ',',
+        num_args = 1
+    )]
+    pub degree: Option<Vec<u64>>,
+    /// The order of the curve to fit (degree + 1), instead of --degree; for
+    /// a net `KU,KV`, or `K` for both.
+    #[arg(long, value_name = "K|KU,KV", value_delimiter = ',', num_args = 1)]
+    pub order: Option<Vec<u64>>,
 }
 
 /// Arguments of `t2spline fuzzify`.
 #[derive(Debug, Args)]
 pub struct FuzzifyArgs {
-    /// The readings file: a header `station,x,y` or `station,x,y,z`, then one
-    /// reading per row, the rows of a station together (comma or semicolon
-    /// separated). `-` reads standard input.
+    /// The readings file: a header `station,x,y` or `station,x,y,z` (the
+    /// stations of a curve) or `row,col,x,y,z` (the stations of a net), then
+    /// one reading per row, the rows of a station in any order (comma or
+    /// semicolon separated); with --block, a raster: a CSV `x,y,z` grid, an
+    /// ESRI ASCII grid `.asc` or a numpy `.npy` array. `-` reads standard
+    /// input.
     pub readings: PathBuf,
+    /// Read a raster of single readings whose K × K blocks of cells are the
+    /// readings of the stations of a net (x, y the block's centre, z the
+    /// cells' values); rows and columns past the last whole block are left
+    /// out, with a note.
+    #[arg(long, value_name = "K")]
+    pub block: Option<u64>,
+    /// For a `.npy` raster: the centre of the cell at row 0, column 0.
+    #[arg(
+        long,
+        value_name = "X0,Y0",
+        value_delimiter = ',',
+        num_args = 1,
+        allow_hyphen_values = true
+    )]
+    pub origin: Option<Vec<f64>>,
+    /// For a `.npy` raster: the step in x per column and in y per row (DY
+    /// negative when row 0 is the north edge).
+    #[arg(
+        long,
+        value_name = "DX,DY",
+        value_delimiter = ',',
+        num_args = 1,
+        allow_hyphen_values = true
+    )]
+    pub spacing: Option<Vec<f64>>,
     /// Write the data file here instead of standard output (`-` is standard
     /// output).
     #[arg(short, long, value_name = "DATA.json")]

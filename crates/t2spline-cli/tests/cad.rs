@@ -95,7 +95,6 @@ fn bad_readings_are_one_line_each_and_nothing_is_written() {
     let stderr = format!(
         "t2spline: {0}:3:7: y (column 3): `abc` is not a number\n\
          t2spline: {0}:5:4: missing column(s) y: every row needs 3 values (station,x,y)\n\
-         t2spline: {0}:6:1: station `A`: its rows must be together, but rows of `B` (from line 4) came between; sort the rows by station\n\
          t2spline: {0}:4:1: station `B`: 1 reading(s); percentiles need at least 2\n",
         bad.display()
     );

@@ -26,11 +26,11 @@ pub struct FitData {
     pub description: Option<String>,
     /// `"order"` or `"degree"`: the key the file used, used again in the job.
     pub degree_key: &'static str,
-    /// The degree of the curve to fit (at least 1), or of a net's surface
-    /// along u.
+    /// The degree of the curve to fit (at least 1); for the data of a net,
+    /// the degree along u.
     pub degree: usize,
-    /// The degree along v of a net's surface (at least 1); `None` for the
-    /// data of a curve.
+    /// The degree along v for the data of a net; `degree` is then the degree
+    /// along u. `None` for curves.
     pub degree_v: Option<usize>,
     /// Carried to the job.
     pub alpha: Option<Alpha>,
@@ -40,7 +40,8 @@ pub struct FitData {
     pub lower_height: Option<f64>,
     /// `samples`, if the file gives it; carried to the job.
     pub samples: Option<usize>,
-    /// The data points (at least `degree + 1`).
+    /// The data points (at least `degree + 1`; of a net, at least
+    /// `degree + 1` rows of at least `degree_v + 1` points).
     pub points: FuzzyData,
 }
 
@@ -89,15 +90,14 @@ impl FitData {
         for (key, value) in model_json(model, self.lower_height) {
             match key.as_str() {
                 "degree" => {
-                    // One degree for a curve, a pair [p, q] for a surface.
+                    // One degree for a curve, a pair `[p, q]` for a surface.
                     let shift = u64::from(self.degree_key == "order");
-                    let written = match value {
-                        Value::Array(pair) => Value::Array(
-                            pair.iter()
-                                .map(|d| json!(d.as_u64().unwrap_or_default() + shift))
-                                .collect(),
-                        ),
-                        other => json!(other.as_u64().unwrap_or_default() + shift),
+                    let written = match &value {
+                        Value::Array(pair) => json!(pair
+                            .iter()
+                            .map(|d| d.as_u64().unwrap_or_default() + shift)
+                            .collect::<Vec<_>>()),
+                        _ => json!(value.as_u64().unwrap_or_default() + shift),
                     };
                     out.insert(self.degree_key.into(), written);
                 }

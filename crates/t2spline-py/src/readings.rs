@@ -26,7 +26,7 @@ use crate::keyword;
 /// ----------
 /// readings : str or os.PathLike
 ///     The readings file: a header ``station,x,y`` or ``station,x,y,z``, then
-///     one reading per row, the rows of a station together (comma or
+///     one reading per row, the rows of a station in any order (comma or
 ///     semicolon separated).
 /// tolerance : float, optional
 ///     The instrument's accuracy ``T`` (default 0).
@@ -76,6 +76,7 @@ pub(crate) fn fuzzify<'py>(
         degree: non_negative(keyword::opt_int(degree, "degree")?, "degree")?,
         order: non_negative(keyword::opt_int(order, "order")?, "order")?,
         alpha: keyword::opt_real(alpha, "alpha")?,
+        ..ReadingsOptions::default()
     };
     if !(readings.is_instance_of::<PyString>() || readings.hasattr("__fspath__")?) {
         return Err(PyTypeError::new_err(format!(

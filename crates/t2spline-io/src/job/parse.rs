@@ -334,6 +334,9 @@ impl Walker {
             }
         }
         self.refused = FIT_MAKES;
+        if surface::is_surface(o) {
+            return self.data_net(o, DATA_KEYS);
+        }
         let header = self.header(o, DATA_KEYS, "a data file needs its fuzzy data points");
         // Carried to the job only when given.
         let type_reduction = if o.contains_key("type_reduction") {

@@ -15,6 +15,7 @@
 //! | `samples` | a number (default 101) | a pair `[su, sv]`, or one number for both (default `[21, 21]`) |
 
 use serde_json::{Map, Value};
+use t2spline::fit::FuzzyData;
 use t2spline::job::{check_grid_samples, Job, Model, Samples, DEFAULT_SURFACE_SAMPLES};
 use t2spline::nurbs::net_weight_problems;
 use t2spline::{Direction, Error as CoreError, FuzzySurface, KnotVector, Nt2Point, Place};
@@ -23,6 +24,7 @@ use super::common::{knot_error_path, TOP_KEYS};
 use super::point::complete;
 use super::position::{child, element};
 use super::walker::{kind, written, Walker};
+use crate::fit_data::FitData;
 use crate::limits::{check_net_size, check_surface_work};
 
 const KNOT_KEYS: [&str; 2] = ["u", "v"];
@@ -116,6 +118,89 @@ impl Walker {
                 None
             }
         }
+    }
+
+    /// A data file of a net (`points` as rows of fuzzy data points along u,
+    /// each row along v): the keys of a data file (`known`), `order` or
+    /// `degree` a pair `[u, v]`, `samples` one number, and at least
+    /// `p + 1` rows of at least `q + 1` points. `weights` and `knots` have
+    /// been refused by the caller.
+    pub(super) fn data_net(
+        &mut self,
+        o: &Map<String, Value>,
+        known: &[&'static str],
+    ) -> Option<FitData> {
+        let (common, degree) = self.common(o, known, |w| w.degrees(o));
+        let samples = match o.get("samples") {
+            None => Some(None),
+            Some(v) if v.is_array() => {
+                self.report(
+                    "samples",
+                    "a data file of a net takes one number of samples, for both directions of the fitted surface",
+                );
+                None
+            }
+            Some(v) => self.samples_in(v, "samples").map(Some),
+        };
+        let type_reduction = if o.contains_key("type_reduction") {
+            self.type_reduction(o).map(Some)
+        } else {
+            Some(None)
+        };
+        let net = match o.get("points") {
+            None => {
+                self.report("points", "missing: a data file needs its fuzzy data points");
+                None
+            }
+            Some(v) => self.net(v, common.height),
+        };
+        let shape = net.as_ref().and_then(|n| n.shape);
+        let key = if o.contains_key("degree") {
+            "degree"
+        } else {
+            "order"
+        };
+        if let Some(degree) = degree {
+            for (i, p) in degree.into_iter().enumerate() {
+                if p == 0 {
+                    self.report(&element(key, i), t2spline::Error::ZeroDegreeFit);
+                }
+            }
+            if let (Some(shape), true) = (shape, degree.iter().all(|&p| p > 0)) {
+                for ((direction, p), n) in Direction::BOTH.into_iter().zip(degree).zip(shape) {
+                    let lines = match direction {
+                        Direction::U => "row(s)",
+                        Direction::V => "point(s) per row",
+                    };
+                    if n <= p {
+                        self.report(
+                            "points",
+                            format!(
+                                "{n} {lines}, but a net of degree {p} along {direction} needs at least {}",
+                                p.saturating_add(1)
+                            ),
+                        );
+                    }
+                }
+            }
+        }
+        if !self.problems.is_empty() {
+            return None;
+        }
+        let [p, q] = degree?;
+        Some(FitData {
+            // Set by the caller, which knows the file's name.
+            source: String::new(),
+            description: common.description,
+            degree_key: key,
+            degree: p,
+            degree_v: Some(q),
+            alpha: common.alpha,
+            type_reduction: type_reduction?,
+            lower_height: common.height.ok().flatten(),
+            samples: samples?,
+            points: FuzzyData::Net(net?.points?),
+        })
     }
 
     /// The degrees `[p, q]`, from `order` or `degree`: a pair.

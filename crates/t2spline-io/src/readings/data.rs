@@ -62,7 +62,7 @@ impl ReadingsFile {
             .map(|&line| (line, 1));
         let name = station.and_then(|s| self.stations.get(s));
         let message = match name {
-            Some(name) => format!("station `{}`: {e}", super::shorten(name)),
+            Some(name) => format!("station `{}`: {e}", super::fields::shorten(name)),
             None => e.to_string(),
         };
         Error::Invalid {
@@ -76,8 +76,9 @@ impl ReadingsFile {
 }
 
 /// The data file of `data`, keys in the order of a job file: `description`,
-/// `order` or `degree`, `alpha`, `lower_height`, `samples`, `points` (a
-/// number's `lower_height` only where it differs from the top-level one). It
+/// `order` or `degree` (a pair `[u, v]` for a net), `alpha`, `lower_height`,
+/// `samples`, `points` (rows of points for a net; a number's `lower_height`
+/// only where it differs from the top-level one). It
 /// parses back with [`parse_data`](crate::parse_data).
 ///
 /// # Examples
@@ -98,12 +99,12 @@ pub fn data_json(data: &FitData) -> Value {
     if let Some(d) = &data.description {
         out.insert("description".into(), json!(d));
     }
-    let written = if data.degree_key == "order" {
-        data.degree + 1
-    } else {
-        data.degree
+    let shift = usize::from(data.degree_key == "order");
+    let written = match data.degree_v {
+        Some(q) => json!([data.degree + shift, q + shift]),
+        None => json!(data.degree + shift),
     };
-    out.insert(data.degree_key.into(), json!(written));
+    out.insert(data.degree_key.into(), written);
     if let Some(a) = data.alpha {
         out.insert("alpha".into(), json!(a.get()));
     }
@@ -116,6 +117,16 @@ pub fn data_json(data: &FitData) -> Value {
     let points = match &data.points {
         FuzzyData::Planar(p) => p.iter().map(|p| point_json(p, data.lower_height)).collect(),
         FuzzyData::Spatial(p) => p.iter().map(|p| point_json(p, data.lower_height)).collect(),
+        FuzzyData::Net(rows) => rows
+            .iter()
+            .map(|row| {
+                Value::Array(
+                    row.iter()
+                        .map(|p| point_json(p, data.lower_height))
+                        .collect(),
+                )
+            })
+            .collect(),
         // A kind of data this version does not know: no points, which the
         // data file's validator then refuses.
         _ => Vec::new(),

@@ -16,8 +16,10 @@
 //!   a decimal point, as spreadsheets in many locales write numbers;
 //! - every row has exactly the header's columns; values are finite numbers
 //!   within [`MAX_MAGNITUDE`](t2spline::MAX_MAGNITUDE);
-//! - the rows of a station are together; stations come in the order of their
-//!   first row and become the data points in that order;
+//! - the rows of a station may stand anywhere (a log in time order
+//!   interleaves stations); stations come in the order of their first row
+//!   and become the data points in that order, each with its readings in
+//!   file order, so a file gives what the same file sorted by station gives;
 //! - every station has at least [`MIN_READINGS`] readings;
 //! - CRLF or LF line ends, a UTF-8 byte-order mark and RFC 4180 quoting
 //!   (`"dune, crest"`, `"1,25"`) are accepted.
@@ -35,23 +37,30 @@
 #![cfg_attr(not(test), deny(clippy::indexing_slicing))]
 
 mod data;
+mod fields;
+mod net;
+mod npy;
 mod options;
+mod raster;
 pub(crate) mod tokens;
 
 pub use data::data_json;
+pub use net::{parse_net_readings, NetReadings, StationSource};
+pub use npy::{parse_npy, read_npy, MAX_NPY_BYTES};
 pub use options::{
-    fuzzify_readings, ReadingsError, ReadingsOption, ReadingsOptions, DEFAULT_DEGREE,
+    fuzzify_net, fuzzify_readings, ReadingsError, ReadingsOption, ReadingsOptions, DEFAULT_DEGREE,
 };
+pub use raster::{parse_ascii_grid, parse_grid_csv, Raster, RasterGeometry, MAX_RASTER_CELLS};
 
 use std::collections::HashMap;
 use std::path::Path;
 
 use t2spline::fit::{Readings, MIN_READINGS};
-use t2spline::{Num, MAX_MAGNITUDE};
 
 use crate::error::{Error, Problem};
 use crate::limits::{MAX_POINTS, MAX_PROBLEMS};
 use crate::read::read_text;
+use fields::shorten;
 
 /// The most rows (readings) a readings file may have: 4 million, about what
 /// a 64 MiB file of short rows holds.
@@ -116,21 +125,24 @@ pub fn read_readings(path: &Path) -> Result<ReadingsFile, Error> {
 /// [`Error::Invalid`] listing every problem (at most
 /// [`MAX_PROBLEMS`](crate::job::MAX_PROBLEMS), then a count), each with its
 /// line and column: a wrong header, a missing or extra column, a value that is
-/// not a finite number or beyond the range, a station whose rows are not
-/// together, a station with fewer than two readings, unclosed quotes, more
+/// not a finite number or beyond the range, a station with fewer than two
+/// readings, unclosed quotes, more
 /// than [`MAX_ROWS`] rows or [`MAX_POINTS`](crate::job::MAX_POINTS) stations.
 ///
 /// # Examples
 /// ```
-/// let text = "station;x;y\r\nA;0;1,5\r\nA;0,5;2\r\nB;3;x\r\nA;1;1\r\n";
+/// let text = "station;x;y\r\nA;0;1,5\r\nB;0,5;2\r\nC;3;x\r\nA;1;1\r\n";
 /// let e = t2spline_io::parse_readings(text, "r.csv").unwrap_err();
 /// assert_eq!(e.lines(), [
 ///     "r.csv:4:5: y (column 3): `x` is not a number",
-///     "r.csv:5:1: station `A`: its rows must be together, but rows of `B` (from line 4) came between; sort the rows by station",
-///     "r.csv:4:1: station `B`: 1 reading(s); percentiles need at least 2",
+///     "r.csv:3:1: station `B`: 1 reading(s); percentiles need at least 2",
+///     "r.csv:4:1: station `C`: 1 reading(s); percentiles need at least 2",
 /// ]);
-/// let ok = t2spline_io::parse_readings("station,x,y\nA,0,1\nA,1,2\n", "r.csv")?;
-/// assert_eq!(ok.stations, ["A"]);
+/// // The rows of a station may stand anywhere: as if sorted by station.
+/// let ok = t2spline_io::parse_readings("station,x,y\nA,0,1\nB,5,5\nA,1,2\nB,6,6\n", "r.csv")?;
+/// let sorted = t2spline_io::parse_readings("station,x,y\nA,0,1\nA,1,2\nB,5,5\nB,6,6\n", "r.csv")?;
+/// assert_eq!(ok.stations, ["A", "B"]);
+/// assert_eq!(ok.readings, sorted.readings);
 /// # Ok::<(), t2spline_io::Error>(())
 /// ```
 pub fn parse_readings(text: &str, source: &str) -> Result<ReadingsFile, Error> {
@@ -144,46 +156,27 @@ fn parse_readings_within(text: &str, source: &str, max_rows: usize) -> Result<Re
         problems,
     };
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    let first = text.lines().next().unwrap_or("");
-    let delimiter = if first.contains(';') { ';' } else { ',' };
+    let delimiter = fields::delimiter(text);
     // Readings are counted as they are split (the header and readings, not
     // blank lines), and splitting stops past the limit.
-    let records = tokens::records(text, delimiter, max_rows.saturating_add(1)).map_err(|e| {
-        invalid(vec![match e {
-            tokens::Fault::Quote(e) => Problem {
-                line_column: Some((e.line, e.column)),
-                message: e.message.to_owned(),
-            },
-            tokens::Fault::TooMany => Problem::new(format!(
-                "more than the limit of {max_rows} readings (rows after the header; blank lines do not count)"
-            )),
-        }])
-    })?;
+    let records =
+        fields::records(text, delimiter, max_rows).map_err(|problem| invalid(vec![problem]))?;
     let Some((header, rows)) = records.split_first() else {
         return Err(invalid(vec![Problem::new(
             "the file is empty; expected the header `station,x,y` or `station,x,y,z` and one reading per row",
         )]));
     };
-    let names: Vec<String> = header
-        .fields
-        .iter()
-        .map(|f| f.text.trim().to_ascii_lowercase())
-        .collect();
+    let names = fields::names(header);
     let dimension = match names.iter().map(String::as_str).collect::<Vec<_>>()[..] {
         ["station", "x", "y"] => 2,
         ["station", "x", "y", "z"] => 3,
         _ => {
-            let given = header
-                .fields
-                .iter()
-                .map(|f| f.text.as_str())
-                .collect::<Vec<_>>()
-                .join(&delimiter.to_string());
+            let given = fields::given(header, delimiter);
             return Err(invalid(vec![Problem {
                 line_column: header.fields.first().map(|f| (f.line, f.column)),
                 message: format!(
                     "expected the header `station,x,y` or `station,x,y,z` (comma or semicolon separated), got `{}`",
-                    shorten(&given)
+                    given
                 ),
             }]));
         }
@@ -218,7 +211,6 @@ struct Rows {
     /// Rows per station, good or not (the rule of at least two readings
     /// counts rows, so that a bad value is reported once).
     rows: Vec<usize>,
-    current: Option<usize>,
     problems: Vec<Problem>,
     /// Too many stations: reading stops there.
     over_limit: bool,
@@ -235,7 +227,6 @@ impl Rows {
             index: HashMap::new(),
             values: Vec::new(),
             rows: Vec::new(),
-            current: None,
             problems: Vec::new(),
             over_limit: false,
         }
@@ -297,7 +288,7 @@ impl Rows {
             .enumerate()
             .zip(point.iter_mut().zip(self.columns.iter().skip(1)))
         {
-            match self.number(field) {
+            match fields::number(self.delimiter, &field.text) {
                 Ok(x) => *coordinate = x,
                 Err(message) => {
                     self.problems.push(Problem {
@@ -317,79 +308,34 @@ impl Rows {
             );
             return;
         }
-        let station = match self.current {
-            Some(s) if self.names.get(s).is_some_and(|n| n == name) => s,
-            _ => match self.index.get(name) {
-                Some(&s) => {
-                    let between = self
-                        .current
-                        .and_then(|c| Some((self.names.get(c)?, self.first_line.get(c)?)))
-                        .map_or(String::new(), |(name, line)| {
-                            format!(
-                                ", but rows of `{}` (from line {line}) came between",
-                                shorten(name)
-                            )
-                        });
+        let station = match self.index.get(name) {
+            Some(&s) => s,
+            None => {
+                if self.names.len() == MAX_POINTS {
                     self.problem(
                         at,
                         format!(
-                            "station `{}`: its rows must be together{between}; sort the rows by station",
+                            "station `{}`: more than the limit of {MAX_POINTS} stations",
                             shorten(name)
                         ),
                     );
-                    self.current = Some(s);
+                    self.over_limit = true;
                     return;
                 }
-                None => {
-                    if self.names.len() == MAX_POINTS {
-                        self.problem(
-                            at,
-                            format!(
-                                "station `{}`: more than the limit of {MAX_POINTS} stations",
-                                shorten(name)
-                            ),
-                        );
-                        self.over_limit = true;
-                        return;
-                    }
-                    self.index.insert(name.to_owned(), self.names.len());
-                    self.names.push(name.to_owned());
-                    self.first_line.push(at.0);
-                    self.values.push(Vec::new());
-                    self.rows.push(0);
-                    self.names.len() - 1
-                }
-            },
+                self.index.insert(name.to_owned(), self.names.len());
+                self.names.push(name.to_owned());
+                self.first_line.push(at.0);
+                self.values.push(Vec::new());
+                self.rows.push(0);
+                self.names.len() - 1
+            }
         };
-        self.current = Some(station);
         // `station` indexes the lists, which grow together.
         if let Some(rows) = self.rows.get_mut(station) {
             *rows += 1;
         }
         if let (true, Some(values)) = (good, self.values.get_mut(station)) {
             values.push(point);
-        }
-    }
-
-    /// A value: a finite number within the range; in a semicolon file, a
-    /// decimal comma counts as a decimal point.
-    fn number(&self, field: &tokens::Field) -> Result<f64, String> {
-        let text = field.text.trim();
-        let decimal = if self.delimiter == ';' && text.contains(',') && !text.contains('.') {
-            text.replacen(',', ".", 1)
-        } else {
-            text.to_owned()
-        };
-        match decimal.parse::<f64>() {
-            Ok(x) if x.is_finite() && x.abs() <= MAX_MAGNITUDE => Ok(x),
-            Ok(x) if x.is_finite() => Err(format!("{} is outside [-1e150, 1e150]", Num(x))),
-            // A number beyond the range of a float (`1e309`) reads as
-            // infinite; `inf` and `NaN` are not numbers of a reading.
-            Ok(x) if x.is_infinite() && !decimal.to_ascii_lowercase().contains("inf") => {
-                Err(format!("{} is outside [-1e150, 1e150]", shorten(text)))
-            }
-            _ if text.is_empty() => Err("empty; every reading needs a number".into()),
-            _ => Err(format!("`{}` is not a number", shorten(text))),
         }
     }
 
@@ -412,13 +358,7 @@ impl Rows {
             ));
         }
         if !self.problems.is_empty() {
-            if self.problems.len() > MAX_PROBLEMS {
-                let more = self.problems.len() - MAX_PROBLEMS;
-                self.problems.truncate(MAX_PROBLEMS);
-                self.problems
-                    .push(Problem::new(format!("… and {more} more problem(s)")));
-            }
-            return Err(self.problems);
+            return Err(fields::capped(self.problems));
         }
         let readings = if self.dimension == 2 {
             Readings::Planar(
@@ -432,23 +372,6 @@ impl Rows {
         };
         Ok((self.names, self.first_line, readings))
     }
-}
-
-/// Text from the file in a message: at most 40 characters, control
-/// characters escaped, so that a hostile file cannot write to a terminal.
-fn shorten(text: &str) -> String {
-    let mut out = String::new();
-    for c in text.chars().take(40) {
-        if c.is_control() {
-            out.extend(c.escape_default());
-        } else {
-            out.push(c);
-        }
-    }
-    if text.chars().count() > 40 {
-        out.push('…');
-    }
-    out
 }
 
 #[cfg(test)]

@@ -19,8 +19,9 @@ pub enum FuzzyData {
     Planar(Vec<Nt2Point<2>>),
     /// Points with coordinates `x`, `y`, `z`.
     Spatial(Vec<Nt2Point<3>>),
-    /// A net of points with coordinates `x`, `y`, `z`: rows along u, every
-    /// row as long (the data of a surface).
+    /// A net of points with coordinates `x`, `y`, `z`: rows along u, each
+    /// row along v (`points[i][j]`, as a surface job's control points), all
+    /// rows of one length.
     Net(Vec<Vec<Nt2Point<3>>>),
 }
 
@@ -73,7 +74,7 @@ pub struct FitOutcome {
 }
 
 impl FuzzyData {
-    /// The number of data points.
+    /// The number of data points (of a net: all of its points, rows × columns).
     #[must_use]
     pub fn len(&self) -> usize {
         match self {
@@ -95,6 +96,8 @@ impl FuzzyData {
     /// The errors of [`fit_fuzzy`]: too few points, coincident neighbours,
     /// a singular or ill-conditioned system, a control value beyond the
     /// limit of coordinates ([`Error::FitBeyondLimit`]), and so on.
+    /// [`Error::Length`] for a net ([`FuzzyData::Net`]): a net is fitted by
+    /// the surface fit, not as a curve.
     ///
     /// # Examples
     /// ```

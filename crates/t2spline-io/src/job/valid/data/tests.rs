@@ -218,3 +218,29 @@ proptest! {
         prop_assert!(same(&text).is_ok(), "{}", same(&text).unwrap_err());
     }
 }
+
+#[test]
+fn the_data_file_of_a_net_is_read_in_one_pass() {
+    let n = |c: f64| serde_json::json!({"crisp": c, "upper": [c - 1.0, c + 1.0], "primary": [c - 0.5, c + 0.5], "lower": [c, c]});
+    let point = |i: usize, j: usize| serde_json::json!({"x": n(j as f64), "y": n(i as f64), "z": n((i * j) as f64)});
+    let rows: Vec<Value> = (0..3)
+        .map(|i| Value::Array((0..4).map(|j| point(i, j)).collect()))
+        .collect();
+    for degree in [
+        serde_json::json!({"order": [2, 3]}),
+        serde_json::json!({"degree": [2, 1], "samples": 9}),
+    ] {
+        let mut file = degree.clone();
+        file["lower_height"] = serde_json::json!(0.5);
+        file["points"] = Value::Array(rows.clone());
+        let text = serde_json::to_string_pretty(&file).unwrap();
+        let walked = parse_data_walking(&text).unwrap();
+        assert_eq!(super::data(&text), Some(walked), "{text}");
+        same(&text).unwrap();
+    }
+    // Too few rows for the degree: the validator's message.
+    let text =
+        serde_json::json!({"degree": [3, 1], "lower_height": 0.5, "points": rows}).to_string();
+    assert_eq!(super::data(&text), None);
+    same(&text).unwrap();
+}
