@@ -56,7 +56,7 @@ pub enum StationSource {
 
 /// Validated readings of the stations of a net: a readings file with the
 /// header `row,col,x,y,z` ([`parse_net_readings`]) or the blocks of a raster
-/// ([`read_raster`](crate::read_raster) and
+/// ([`parse_grid_csv`](crate::parse_grid_csv), [`parse_ascii_grid`](crate::parse_ascii_grid), [`parse_npy`](crate::parse_npy), then
 /// [`Raster::blocks`](crate::Raster::blocks)).
 #[derive(Clone, Debug, PartialEq)]
 pub struct NetReadings {
