@@ -32,9 +32,10 @@ pub enum Command {
     /// Fit a fuzzy curve to fuzzy data points (or to repeated readings, CSV)
     /// and write it as a job file.
     Fit(FitArgs),
-    /// Turn repeated readings of stations (CSV) into fuzzy data points for
-    /// `fit`: median, quartiles, 10th-90th percentiles, extremes widened by
-    /// the instrument's accuracy.
+    /// Turn repeated readings of stations (CSV; of a curve or of a net), or
+    /// a raster in blocks, into fuzzy data points for `fit`: median,
+    /// quartiles, 10th-90th percentiles, extremes widened by the
+    /// instrument's accuracy.
     Fuzzify(FuzzifyArgs),
     /// Write the exact curves of a run (crisp, defuzzified, six layers) as
     /// rational B-splines in a CAD file: DXF, STEP, IGES or OBJ.

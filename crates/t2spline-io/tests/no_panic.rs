@@ -1,6 +1,7 @@
 //! No reader or writer of the I/O crate panics: arbitrary bytes, and text
 //! assembled from the formats' own pieces (keys, numbers, delimiters), go to
-//! `parse_job`, `parse_data` and `parse_readings` under `catch_unwind`, and
+//! `parse_job`, `parse_data`, `parse_readings` and the readers of nets and
+//! rasters under `catch_unwind`, and
 //! whatever they accept goes on through every writer (job and data files,
 //! CSV, pretty JSON, the four CAD formats).
 //!
@@ -17,14 +18,54 @@ use returns::returns;
 use t2spline::fit::{FitOptions, FuzzifyRule, FuzzyFitMode};
 use t2spline::job::Overrides;
 use t2spline_io::{
-    check_finite, data_json, is_readings, job_json, parse_data, parse_job, parse_readings,
-    render_cad, render_csv, to_json_pretty, CadFormat, CadMeta,
+    check_finite, data_json, fuzzify_net, is_readings, job_json, parse_ascii_grid, parse_data,
+    parse_grid_csv, parse_job, parse_net_readings, parse_npy, parse_readings, render_cad,
+    render_csv, to_json_pretty, CadFormat, CadMeta, NetReadings, RasterGeometry, ReadingsOptions,
 };
+
+/// The readings of a net, fuzzified and written as a data file read back.
+fn net_on(net: &NetReadings) {
+    let options = ReadingsOptions {
+        degree: Some(1),
+        ..ReadingsOptions::default()
+    };
+    if let Ok(data) = returns("fuzzify_net", || fuzzify_net(net, &options)) {
+        let json = returns("data_json", || data_json(&data)).to_string();
+        returns("parse_data of a net", || parse_data(&json, "d.json")).ok();
+    }
+}
+
+/// The readers of nets and rasters on `text` (and on its bytes as `.npy`).
+fn nets_and_rasters(text: &str) {
+    if let Ok(net) = returns("parse_net_readings", || parse_net_readings(text, "n.csv")) {
+        net_on(&net);
+    }
+    let rasters = [
+        returns("parse_grid_csv", || parse_grid_csv(text, "g.csv")).ok(),
+        returns("parse_ascii_grid", || parse_ascii_grid(text, "g.asc")).ok(),
+        returns("parse_npy", || {
+            let g = RasterGeometry {
+                origin: [0.0, 0.0],
+                spacing: [1.0, -1.0],
+            };
+            parse_npy(text.as_bytes(), "g.npy", &g)
+        })
+        .ok(),
+    ];
+    for raster in rasters.into_iter().flatten() {
+        for k in [2, 3] {
+            if let Ok((net, _)) = returns("blocks", || raster.blocks(k)) {
+                net_on(&net);
+            }
+        }
+    }
+}
 
 /// Every reader on `text`, and every writer on what they accept.
 fn read_and_write(text: &str) {
     returns("is_readings", || is_readings(Path::new("x.csv"), text));
     returns("is_readings", || is_readings(Path::new("x"), text));
+    nets_and_rasters(text);
     if let Ok(file) = returns("parse_readings", || parse_readings(text, "r.csv")) {
         let rule = FuzzifyRule::try_new(0.1, 0.5).unwrap();
         match returns("fuzzify", || file.readings.fuzzify(&rule)) {
@@ -139,6 +180,24 @@ fn readings_text() -> impl Strategy<Value = String> {
     })
 }
 
+/// The readings of a net or a raster as text: a header (`row,col,x,y,z`,
+/// `x,y,z` or an ESRI grid's) and rows of numbers, whole numbers first.
+fn net_text() -> impl Strategy<Value = String> {
+    let header = prop::sample::select(vec![
+        "row,col,x,y,z",
+        "x,y,z",
+        "ncols 2\nnrows 3\nxllcorner 0\nyllcenter 1\ncellsize 0.5\nnodata_value -1",
+        "ncols 4 nrows 4 xllcenter 0 yllcorner 1 cellsize 2",
+    ]);
+    let row = (whole(), whole(), prop::collection::vec(number(), 1..4))
+        .prop_map(|(i, j, v)| format!("{i},{j},{}", v.join(",")));
+    (header, prop::collection::vec(row, 0..40), any::<bool>()).prop_map(|(h, rows, spaces)| {
+        let body = rows.join("\n");
+        let body = if spaces { body.replace(',', " ") } else { body };
+        format!("{h}\n{body}\n")
+    })
+}
+
 /// A fuzzy number in a job file, in order mostly.
 fn fuzzy_number() -> impl Strategy<Value = String> {
     prop_oneof![
@@ -214,6 +273,11 @@ proptest! {
 
     #[test]
     fn readings_files_never_panic(text in readings_text()) {
+        read_and_write(&text);
+    }
+
+    #[test]
+    fn nets_and_rasters_never_panic(text in net_text()) {
         read_and_write(&text);
     }
 

@@ -25,15 +25,18 @@ use crate::keyword;
 /// Parameters
 /// ----------
 /// readings : str or os.PathLike
-///     The readings file: a header ``station,x,y`` or ``station,x,y,z``, then
-///     one reading per row, the rows of a station in any order (comma or
+///     The readings file: a header ``station,x,y`` or ``station,x,y,z`` (the
+///     stations of a curve) or ``row,col,x,y,z`` (the stations of a net,
+///     whose ``points`` are then rows and whose degree is a pair), then one
+///     reading per row, the rows of a station in any order (comma or
 ///     semicolon separated).
 /// tolerance : float, optional
 ///     The instrument's accuracy ``T`` (default 0).
 /// lower_height : float, optional
 ///     The height of the lower membership function (default 0.5).
 /// degree, order : int, optional
-///     The degree (or order) of the curve to fit (default degree 3).
+///     The degree (or order) of the curve to fit (default degree 3); for a
+///     net, the degree in both directions.
 /// alpha : float, optional
 ///     The level alpha to carry into the data (and so into the fitted job).
 ///

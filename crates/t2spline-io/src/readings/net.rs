@@ -56,7 +56,7 @@ pub enum StationSource {
 
 /// Validated readings of the stations of a net: a readings file with the
 /// header `row,col,x,y,z` ([`parse_net_readings`]) or the blocks of a raster
-/// ([`read_raster`](crate::read_raster) and
+/// ([`parse_grid_csv`](crate::parse_grid_csv), [`parse_ascii_grid`](crate::parse_ascii_grid), [`parse_npy`](crate::parse_npy), then
 /// [`Raster::blocks`](crate::Raster::blocks)).
 #[derive(Clone, Debug, PartialEq)]
 pub struct NetReadings {
@@ -74,8 +74,9 @@ pub struct NetReadings {
     /// block's centre; its readings then give `z` only); `None` for a net's
     /// readings file, whose `x`, `y` and `z` are all read.
     pub centres: Option<Vec<[f64; 2]>>,
-    /// What the stations are, for the data file's description: `stations`,
-    /// or `3 × 3 blocks of the raster`.
+    /// What the stations are, for the data file's description: empty for
+    /// the stations of a net's readings file, `3 × 3 blocks of a raster of
+    /// 9 × 12 cells` for a raster.
     pub what: String,
 }
 
@@ -334,7 +335,9 @@ impl Reader {
         }
         let mut stations = Vec::with_capacity(count);
         let mut sources = Vec::with_capacity(count);
-        for (i, row) in slots.chunks(c).enumerate() {
+        let mut slots = slots.into_iter();
+        for i in 0..r {
+            let row: Vec<Option<Station>> = slots.by_ref().take(c).collect();
             let end = extent.get(i).copied().flatten();
             match end {
                 None => self.problems.push(Problem::new(format!(
@@ -346,7 +349,7 @@ impl Reader {
                 ))),
                 Some(_) => {}
             }
-            for (j, slot) in row.iter().enumerate() {
+            for (j, slot) in row.into_iter().enumerate() {
                 match slot {
                     Some(s) => {
                         if s.rows < MIN_READINGS {
@@ -358,7 +361,7 @@ impl Reader {
                                 ),
                             });
                         }
-                        stations.push(s.values.clone());
+                        stations.push(s.values);
                         sources.push(StationSource::Line(s.line));
                     }
                     // A missing station of a row that is there up to its end.
@@ -380,7 +383,7 @@ impl Reader {
             stations,
             sources,
             centres: None,
-            what: "stations".to_owned(),
+            what: String::new(),
         })
     }
 }
@@ -502,10 +505,14 @@ impl NetReadings {
         } else {
             "Per coordinate"
         };
+        let what = if self.what.is_empty() {
+            String::new()
+        } else {
+            format!("{}; ", self.what)
+        };
         let description = format!(
-            "Fuzzified by t2spline from {}: a net of {rows} × {columns} stations ({}; points[i][j]: row i along u, column j along v), {} readings. {coordinates}: crisp = median, lower = [25th, 75th percentile] (lower_height {}), primary = [10th, 90th percentile], upper = [min - T, max + T] with T = {} (percentiles by linear interpolation, type 7).",
+            "Fuzzified by t2spline from {}: a net of {rows} × {columns} stations ({what}points[i][j]: row i along u, column j along v), {} readings. {coordinates}: crisp = median, lower = [25th, 75th percentile] (lower_height {}), primary = [10th, 90th percentile], upper = [min - T, max + T] with T = {} (percentiles by linear interpolation, type 7).",
             self.source,
-            self.what,
             self.readings(),
             Num(rule.lower_height.get()),
             // `-0` is 0 (adding 0 turns -0 into +0).

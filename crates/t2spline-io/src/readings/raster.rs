@@ -574,7 +574,9 @@ pub fn parse_ascii_grid(text: &str, source: &str) -> Result<Raster, Error> {
             "a grid of {rows} × {columns} cells is more than the limit of {MAX_RASTER_CELLS}"
         ))]));
     };
-    let mut values = Vec::with_capacity(cells);
+    // A value takes at least two characters (itself and a space): a short
+    // file that claims many cells does not get their memory.
+    let mut values = Vec::with_capacity(cells.min(text.len() / 2 + 1));
     let mut last = (1, 1);
     for (word, at) in words.by_ref() {
         last = at;
