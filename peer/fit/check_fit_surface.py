@@ -44,13 +44,13 @@ LAYERS = ["upper_left", "primary_left", "lower_left", "crisp", "lower_right", "p
 AXES = "xyz"
 
 
-def number(rng: random.Random, crisp: float) -> dict:
-    """A fuzzy number around `crisp`: spreads drawn inner to outer, zero a
-    third of the time."""
+def number(rng: random.Random, crisp: float, spreads=None) -> dict:
+    """A fuzzy number around `crisp`: the given spreads `(left, right)`, or
+    spreads drawn inner to outer, zero a third of the time."""
     def side() -> list:
         s = sorted(0.0 if rng.random() < 1 / 3 else rng.uniform(0, 0.4) for _ in range(3))
         return s
-    left, right = side(), side()
+    left, right = spreads if spreads is not None else (side(), side())
     return {
         "crisp": crisp,
         "upper": [crisp - left[2], crisp + right[2]],
@@ -68,8 +68,12 @@ def layer_value(n: dict, layer: str) -> float:
 
 def random_case(rng: random.Random) -> dict:
     p, q = rng.randint(1, 3), rng.randint(1, 3)
-    rows, columns = rng.randint(p + 1, 12), rng.randint(q + 1, 12)
-    # A bumpy graph over a jittered grid: no two neighbours coincide.
+    rows, columns = rng.randint(max(p + 1, 3), 12), rng.randint(max(q + 1, 3), 12)
+    # A bumpy graph over a jittered grid: no two neighbours coincide. Half
+    # of the nets have the same spreads everywhere, which fitting each layer
+    # on its own keeps in order, so that all seven layers are compared.
+    same = rng.random() < 0.5
+    fixed = {a: ([0.1, 0.2, 0.3], [0.05, 0.25, 0.4]) for a in AXES}
     net = []
     for i in range(rows):
         row = []
@@ -77,11 +81,16 @@ def random_case(rng: random.Random) -> dict:
             x = i + rng.uniform(-0.3, 0.3)
             y = 0.7 * j + rng.uniform(-0.2, 0.2)
             z = rng.uniform(-2, 2)
-            row.append({a: number(rng, c) for a, c in zip(AXES, (x, y, z))})
+            row.append({a: number(rng, c, fixed[a] if same else None) for a, c in zip(AXES, (x, y, z))})
         net.append(row)
     control = None
-    if rng.random() < 0.5:
-        control = [rng.randint(p + 1, rows), rng.randint(q + 1, columns)]
+    least = [max(p + 1, 3), max(q + 1, 3)]
+    if rng.random() < 0.5 and rows > least[0] and columns > least[1]:
+        # Fewer control points than data in both directions: with as many as
+        # data t2spline interpolates on the averaging knots (Eq. 9.8), where
+        # geomdl keeps Eq. 9.69's knots; and geomdl's least squares needs an
+        # interior control point in each direction (at least 3).
+        control = [rng.randint(least[0], rows - 1), rng.randint(least[1], columns - 1)]
     return {
         "degree": [p, q],
         "net": net,
