@@ -8,9 +8,7 @@ use std::path::PathBuf;
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyString;
-use t2spline_io::{
-    data_json, fuzzify_readings, parse_data, to_json_pretty, ReadingsError, ReadingsOptions,
-};
+use t2spline_io::{data_json_text, fuzzify_readings, parse_data, ReadingsError, ReadingsOptions};
 
 use crate::errors::{internal_error, io_error, without_gil};
 use crate::json::loads;
@@ -95,7 +93,7 @@ pub(crate) fn fuzzify<'py>(
     let json = without_gil(py, || {
         let text = t2spline_io::job::read_text(&path).map_err(ReadingsError::File)?;
         let data = fuzzify_readings(&text, &source, &options)?;
-        Ok::<_, ReadingsError>(to_json_pretty(&data_json(&data)))
+        Ok::<_, ReadingsError>(data_json_text(&data))
     })?
     .map_err(|e| match e {
         ReadingsError::File(e) => io_error(py, e),
