@@ -530,3 +530,51 @@ fn bracket_of_a_point() {
     let b = Bracket::point(2.0);
     assert!(b.exact && b.holds(2.0, 0.0) && !b.holds(2.1, 0.0));
 }
+
+#[test]
+fn levels_are_answered_whatever_their_order() {
+    // Nesting tightens each level by its neighbours in alpha, not in the
+    // order asked: levels given high to low, or shuffled with a repeat, get
+    // at each alpha what the increasing order gives.
+    let c = example();
+    let at = |levels: &[f64]| {
+        let mut options = MeasureOptions::uniform(2).unwrap();
+        options.levels = levels
+            .iter()
+            .map(|&a| t2spline::Alpha::try_new(a).unwrap())
+            .collect();
+        c.measure(&options).unwrap()
+    };
+    for levels in [
+        vec![0.9, 0.1],
+        vec![0.5, 0.9, 0.1, 0.3],
+        vec![0.3, 0.9, 0.3, 0.1],
+    ] {
+        let mut increasing = levels.clone();
+        increasing.sort_by(f64::total_cmp);
+        let sorted = at(&increasing);
+        let m = at(&levels);
+        let area = m.area.as_ref().unwrap();
+        let want_area = sorted.area.as_ref().unwrap();
+        for (got, want) in [
+            (&m.length.upper, &sorted.length.upper),
+            (&m.length.primary, &sorted.length.primary),
+            (&m.length.lower, &sorted.length.lower),
+            (&area.upper, &want_area.upper),
+            (&area.lower, &want_area.lower),
+        ] {
+            for level in got {
+                let same = want
+                    .iter()
+                    .find(|w| w.alpha == level.alpha)
+                    .expect("the level");
+                assert!(
+                    (level.min - same.min).abs() <= 1e-9 * same.min.abs().max(1.0)
+                        && (level.max - same.max).abs() <= 1e-9 * same.max.abs().max(1.0),
+                    "{levels:?} at {}: {level:?} != {same:?}",
+                    level.alpha
+                );
+            }
+        }
+    }
+}

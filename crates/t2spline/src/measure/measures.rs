@@ -276,51 +276,65 @@ impl Ends {
 
 /// Tightens brackets by nesting, which the true intervals obey: a value
 /// attained in an inner box is attained in the outer one, and the bounds of
-/// an outer box hold for the inner one. `outer[k]` contains `inner[k]`
-/// (another function at the same level), and within one list each level
-/// contains the next.
+/// an outer box hold for the inner one. Within one function a lower level's
+/// box contains a higher level's, whatever the order the levels were asked
+/// in; at one level `lists[f − 1]`'s box contains `lists[f]`'s (upper ⊇
+/// primary ⊇ lower), and the levels of `lists[f]` are a subset of those of
+/// `lists[f − 1]` in the same order (a function has a cut wherever one
+/// inside it has).
 fn nest(lists: &mut [&mut Vec<(f64, Option<Ends>)>]) {
-    // Along alpha within each function.
     for list in lists.iter_mut() {
-        for k in 1..list.len() {
-            if let (Some(a), Some(b)) = (list[k - 1].1, list[k].1) {
-                let b = Ends {
-                    least: [b.least[0].max(a.least[0]), b.least[1]],
-                    largest: [b.largest[0], b.largest[1].min(a.largest[1])],
-                    exact: b.exact,
-                };
-                list[k].1 = Some(b);
+        // Increasing alpha: each level's box contains the next one's.
+        let mut order: Vec<usize> = (0..list.len()).collect();
+        order.sort_by(|&i, &j| list[i].0.total_cmp(&list[j].0));
+        for pair in order.windows(2) {
+            if let (Some(a), Some(b)) = (list[pair[0]].1, list[pair[1]].1) {
+                list[pair[1]].1 = Some(tighten_inner(a, b));
             }
         }
-        for k in (1..list.len()).rev() {
-            if let (Some(a), Some(b)) = (list[k - 1].1, list[k].1) {
-                list[k - 1].1 = Some(Ends {
-                    least: [a.least[0], a.least[1].min(b.least[1])],
-                    largest: [a.largest[0].max(b.largest[0]), a.largest[1]],
-                    exact: a.exact,
-                });
+        for pair in order.windows(2).rev() {
+            if let (Some(a), Some(b)) = (list[pair[0]].1, list[pair[1]].1) {
+                list[pair[0]].1 = Some(widen_outer(a, b));
             }
         }
     }
-    // Across functions at one level (upper ⊇ primary ⊇ lower): the bounds
-    // inward, the values attained outward.
     for f in 1..lists.len() {
         let (outer, inner) = lists.split_at_mut(f);
         let (outer, inner) = (&mut *outer[f - 1], &mut *inner[0]);
-        for (o, i) in outer.iter_mut().zip(inner.iter_mut()) {
-            if let (Some(a), Some(b)) = (o.1, i.1) {
-                i.1 = Some(Ends {
-                    least: [b.least[0].max(a.least[0]), b.least[1]],
-                    largest: [b.largest[0], b.largest[1].min(a.largest[1])],
-                    exact: b.exact,
-                });
-                o.1 = Some(Ends {
-                    least: [a.least[0], a.least[1].min(b.least[1])],
-                    largest: [a.largest[0].max(b.largest[0]), a.largest[1]],
-                    exact: a.exact,
-                });
+        let mut o = 0;
+        for i in inner.iter_mut() {
+            // The same level in the outer list, found in order.
+            while outer.get(o).is_some_and(|out| out.0 != i.0) {
+                o += 1;
             }
+            let Some(out) = outer.get_mut(o) else { break };
+            if let (Some(a), Some(b)) = (out.1, i.1) {
+                i.1 = Some(tighten_inner(a, b));
+                out.1 = Some(widen_outer(a, b));
+            }
+            o += 1;
         }
+    }
+}
+
+/// The ends of a quantity over an inner box, tightened by those over a box
+/// that contains it: its least value is no less than the outer's least, its
+/// largest no more than the outer's largest.
+fn tighten_inner(outer: Ends, inner: Ends) -> Ends {
+    Ends {
+        least: [inner.least[0].max(outer.least[0]), inner.least[1]],
+        largest: [inner.largest[0], inner.largest[1].min(outer.largest[1])],
+        exact: inner.exact,
+    }
+}
+
+/// The ends over an outer box, widened by those over a box inside it: what
+/// the inner box attains, the outer attains too.
+fn widen_outer(outer: Ends, inner: Ends) -> Ends {
+    Ends {
+        least: [outer.least[0], outer.least[1].min(inner.least[1])],
+        largest: [outer.largest[0].max(inner.largest[0]), outer.largest[1]],
+        exact: outer.exact,
     }
 }
 
