@@ -336,7 +336,7 @@ fn write_csv_into_a_file_is_an_error_naming_it() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(24))]
+    #![proptest_config(strategies::cases(8, 24))]
 
     /// A surface: `u, v` over the grid with `v` fastest, then every surface's
     /// points in the same order, bit for bit.

@@ -616,7 +616,7 @@ fn apply(text: &str, mutations: &[Mutation]) -> Vec<u8> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(3000))]
+    #![proptest_config(t2spline::strategies::cases(1000, 3000))]
 
     #[test]
     fn arbitrary_bytes_get_a_result_or_a_clear_error(data in proptest::collection::vec(any::<u8>(), 0..400)) {

@@ -113,7 +113,7 @@ fn round_trips(job: Job) -> Result<(), TestCaseError> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(256))]
+    #![proptest_config(strategies::cases(64, 256))]
 
     #[test]
     fn job_json_round_trips(job in any_job()) {
@@ -144,7 +144,7 @@ proptest! {
 proptest! {
     // A surface run computes the distance over the whole domain (a scan and
     // a search per span rectangle): fewer cases than for curves.
-    #![proptest_config(ProptestConfig::with_cases(24))]
+    #![proptest_config(strategies::cases(8, 24))]
 
     #[test]
     fn surface_result_json_round_trips_exactly(

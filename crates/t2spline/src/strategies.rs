@@ -1,9 +1,54 @@
 //! proptest generators of valid inputs, for this crate's property tests and for
-//! downstream crates (feature `proptest`).
+//! downstream crates (feature `proptest`), and the size of long tests
+//! ([`cases`], [`test_size`]: short by default, full under
+//! `T2SPLINE_LONG_TESTS=1`).
 
 use proptest::prelude::*;
 
 use crate::{FuzzyCurve, FuzzySurface, KnotVector, Nt2Number, Nt2Point, NurbsCurve, NurbsSurface};
+
+/// Whether the tests run at full size: `T2SPLINE_LONG_TESTS=1` (set by CI,
+/// `.ci/run`). The one place the switch is read; see [`test_size`] and
+/// [`cases`].
+#[must_use]
+pub fn long_tests() -> bool {
+    std::env::var("T2SPLINE_LONG_TESTS").as_deref() == Ok("1")
+}
+
+/// The size of a long test (the number of random draws of a loop, the
+/// points of a grid): `full` under `T2SPLINE_LONG_TESTS=1`, else `short`;
+/// never 0.
+///
+/// # Examples
+/// ```
+/// # use t2spline::strategies::{long_tests, test_size};
+/// let n = test_size(20, 1000);
+/// assert_eq!(n, if long_tests() { 1000 } else { 20 });
+/// ```
+#[must_use]
+pub fn test_size(short: usize, full: usize) -> usize {
+    let n = if long_tests() { full } else { short };
+    n.max(1)
+}
+
+/// The proptest configuration of a long property test: `full` cases under
+/// `T2SPLINE_LONG_TESTS=1`, else `short`; proptest's own `PROPTEST_CASES`,
+/// when set, overrides both. Never 0 cases; the inputs kept in a
+/// `*.proptest-regressions` file are replayed first either way.
+///
+/// # Examples
+/// ```
+/// # use t2spline::strategies::cases;
+/// assert!(cases(16, 300).cases >= 1);
+/// ```
+#[must_use]
+pub fn cases(short: u32, full: u32) -> ProptestConfig {
+    let n = std::env::var("PROPTEST_CASES")
+        .ok()
+        .and_then(|v| v.parse::<u32>().ok())
+        .unwrap_or(if long_tests() { full } else { short });
+    ProptestConfig::with_cases(n.max(1))
+}
 
 /// A seeded source of numbers in `[0, 1)`, the same on every run and
 /// machine, for fixtures and benchmarks that need more data than a property

@@ -6,7 +6,7 @@
 //! polygons, each shorter than the last by the triangle inequality).
 
 use t2spline::nurbs::LENGTH_TOLERANCE;
-use t2spline::strategies::seeded_uniform;
+use t2spline::strategies::{seeded_uniform, test_size};
 use t2spline::{Error, KnotVector, NurbsCurve};
 
 /// A curve of degree `degree` through `n` control points on a random walk
@@ -158,9 +158,11 @@ fn check_length(c: &NurbsCurve<2>, what: &str) {
 
 /// Checks curves of 12 control points of each degree, seeds 1 to 3, with
 /// weights in `[10^-e, 10^e]`.
+/// Seeds 1 to 3 under `T2SPLINE_LONG_TESTS=1`, seed 1 (the curves the
+/// comments below name) by default.
 fn check_lengths(e: f64, degrees: &[usize]) {
     for &degree in degrees {
-        for seed in 1..=3 {
+        for seed in 1..=test_size(1, 3) as u64 {
             let what = format!("degree {degree}, seed {seed}");
             check_length(&curve(12, degree, e, seed), &what);
         }

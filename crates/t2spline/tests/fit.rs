@@ -285,8 +285,11 @@ fn bad_data_are_clear_errors() {
     ));
 }
 
-/// Cases per property; each fits a few systems of up to 40 unknowns.
-const CASES: u32 = 1000;
+/// Cases per property (200, 1000 under `T2SPLINE_LONG_TESTS=1`); each fits a
+/// few systems of up to 40 unknowns.
+fn cases() -> ProptestConfig {
+    t2spline::strategies::cases(200, 1000)
+}
 
 fn options_strategy(points: usize) -> impl Strategy<Value = FitOptions> {
     let max_degree = (points - 1).min(5);
@@ -342,7 +345,7 @@ fn fit_or_skip<const D: usize>(q: &[[f64; D]], options: &FitOptions) -> Option<C
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(CASES))]
+    #![proptest_config(cases())]
 
     #[test]
     fn fits_pass_through_their_data_or_their_end_points(

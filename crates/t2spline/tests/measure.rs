@@ -454,7 +454,7 @@ fn check_sound(
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(24))]
+    #![proptest_config(t2spline::strategies::cases(4, 24))]
 
     #[test]
     fn exact_extremes_equal_every_vertex_and_no_admissible_curve_escapes(
@@ -471,7 +471,8 @@ proptest! {
 #[test]
 fn the_example_holds_every_admissible_curve_drawn() {
     // 1200 random admissible curves per function at three levels (10 800
-    // in all), and all 256 vertices.
+    // in all) under T2SPLINE_LONG_TESTS=1, 150 (1350) by default, and all 256
+    // vertices.
     let c = example();
     let mut state = 0x2545_f491_4f6c_dd1d_u64;
     let mut next = || {
@@ -480,7 +481,7 @@ fn the_example_holds_every_admissible_curve_drawn() {
         state ^= state << 17;
         (state >> 11) as f64 / (1u64 << 53) as f64
     };
-    let draws: Vec<Vec<f64>> = (0..1200)
+    let draws: Vec<Vec<f64>> = (0..t2spline::strategies::test_size(150, 1200))
         .map(|_| (0..8).map(|_| next()).collect())
         .collect();
     for m in MEMBERSHIPS {

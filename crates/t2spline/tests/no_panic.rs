@@ -378,6 +378,29 @@ macro_rules! every_dimension {
     }};
 }
 
+// Every operation of a fuzzy curve in five dimensions takes seconds in
+// debug: 8 cases by default, 300 under T2SPLINE_LONG_TESTS=1.
+proptest! {
+    #![proptest_config(t2spline::strategies::cases(8, 300))]
+
+    #[test]
+    fn fuzzy_curves_never_panic(
+        degree in count(), flat in floats(120), weights in floats(6), knots in prop::option::of(floats(12)),
+        t in floats(5), n in count(), alpha in float(), fit in prop::bool::weighted(0.8),
+    ) {
+        every_dimension!(fuzzy_curve_operations(degree, &flat, &weights, knots.clone(), &t, n, alpha, fit));
+    }
+}
+
+proptest! {
+    #![proptest_config(t2spline::strategies::cases(32, 300))]
+
+    #[test]
+    fn fuzzy_surfaces_never_panic(rows in 0..4usize, flat in floats(200), t in floats(4), alpha in float()) {
+        every_dimension!(fuzzy_surface_operations(rows, &flat, &t, alpha));
+    }
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(300))]
 
@@ -419,24 +442,11 @@ proptest! {
     }
 
     #[test]
-    fn fuzzy_curves_never_panic(
-        degree in count(), flat in floats(120), weights in floats(6), knots in prop::option::of(floats(12)),
-        t in floats(5), n in count(), alpha in float(), fit in prop::bool::weighted(0.8),
-    ) {
-        every_dimension!(fuzzy_curve_operations(degree, &flat, &weights, knots.clone(), &t, n, alpha, fit));
-    }
-
-    #[test]
     fn surfaces_never_panic(
         du in prop_oneof![4 => 0..3usize, 1 => count()], dv in prop_oneof![4 => 0..3usize, 1 => count()], rows in 0..5usize, flat in floats(60), weights in floats(20),
         t in floats(4), n in count(),
     ) {
         every_dimension!(surface_operations([du, dv], rows, &flat, &weights, &t, n));
-    }
-
-    #[test]
-    fn fuzzy_surfaces_never_panic(rows in 0..4usize, flat in floats(200), t in floats(4), alpha in float()) {
-        every_dimension!(fuzzy_surface_operations(rows, &flat, &t, alpha));
     }
 
     #[test]

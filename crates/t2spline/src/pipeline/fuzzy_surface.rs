@@ -483,7 +483,7 @@ mod tests {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig::with_cases(16))]
+        #![proptest_config(strategies::cases(4, 16))]
 
         /// The layer-wise closest points are those of the layer surfaces; the
         /// box is the union of the layer surfaces' boxes, spanned by the two

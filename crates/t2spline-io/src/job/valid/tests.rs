@@ -277,7 +277,7 @@ pub(super) fn edit(v: &mut Value, place: &str, how: usize, pick: usize) {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(3000))]
+    #![proptest_config(t2spline::strategies::cases(750, 3000))]
 
     #[test]
     fn edited_jobs_give_what_the_validator_gives(
