@@ -170,17 +170,22 @@ impl FuzzyData {
     }
 }
 
+/// The coordinates whose data mix lower heights, with the height given.
+fn mixed<const D: usize>(mixed: [bool; D], heights: [Height; D]) -> Vec<(Axis, Height)> {
+    Axis::of::<D>()
+        .into_iter()
+        .zip(mixed.into_iter().zip(heights))
+        .filter(|(_, (mixed, _))| *mixed)
+        .map(|(axis, (_, h))| (axis, h))
+        .collect()
+}
+
 fn outcome<const D: usize>(
     data_points: usize,
     fit: &FuzzyFit<D>,
     model: impl FnOnce(FuzzyCurve<D>) -> Model,
 ) -> Result<FitOutcome, Error> {
-    let mixed_heights = Axis::of::<D>()
-        .into_iter()
-        .zip(fit.mixed_heights().into_iter().zip(fit.heights()))
-        .filter(|(_, (mixed, _))| *mixed)
-        .map(|(axis, (_, h))| (axis, h))
-        .collect();
+    let mixed_heights = mixed(fit.mixed_heights(), fit.heights());
     let model = match fit.to_curve() {
         Ok(curve) => Ok(model(curve)),
         Err(Error::UnorderedFit { .. }) => Err(fit.violations()),
@@ -204,12 +209,7 @@ fn outcome<const D: usize>(
 }
 
 fn net_outcome(rows: &[Vec<Nt2Point<3>>], fit: &FuzzySurfaceFit) -> Result<FitOutcome, Error> {
-    let mixed_heights = Axis::of::<3>()
-        .into_iter()
-        .zip(fit.mixed_heights().into_iter().zip(fit.heights()))
-        .filter(|(_, (mixed, _))| *mixed)
-        .map(|(axis, (_, h))| (axis, h))
-        .collect();
+    let mixed_heights = mixed(fit.mixed_heights(), fit.heights());
     let model = match fit.to_surface() {
         Ok(surface) => Ok(Model::Surface(surface)),
         Err(Error::UnorderedFit { .. }) => Err(fit.violations()),
