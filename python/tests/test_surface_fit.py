@@ -229,14 +229,18 @@ def test_fit_job_of_a_curve_and_its_errors(cli: Path, tmp_path: Path) -> None:
     data = t2spline.fuzzify(READINGS, tolerance=0.02, alpha=0.5)
     path = tmp_path / "data.json"
     path.write_text(json.dumps(data))
-    for options, flags in [({}, []), ({"control_points": 8, "parametrization": "centripetal"}, ["--control-points", "8", "--parametrization", "centripetal"])]:
+    cases: List[Any] = [
+        ({}, []),
+        ({"control_points": 8, "parametrization": "centripetal"}, ["--control-points", "8", "--parametrization", "centripetal"]),
+    ]
+    for options, flags in cases:
         assert t2spline.fit_job(data, **options) == cli_json(cli, "fit", str(path), "-q", *flags)
     with pytest.raises(ValueError, match=r"^control_points: 20 is outside \[4, 13\]"):
         t2spline.fit_job(data, control_points=20)
     with pytest.raises(ValueError, match=r"^control_points: a pair"):
         t2spline.fit_job(data, control_points=(5, 5))
     with pytest.raises(ValueError, match=r"^parametrization: "):
-        t2spline.fit_job(data, parametrization="chords")
+        t2spline.fit_job(data, parametrization="chords")  # type: ignore[arg-type]
     with pytest.raises(t2spline.JobError, match=r"^<dict>:\d+:\d+: "):
         t2spline.fit_job({**data, "degree": 0})
     with pytest.raises(t2spline.JobError, match="breaks the order of the seven values"):
@@ -285,4 +289,4 @@ def test_fuzzify_names_bad_readings() -> None:
     with pytest.raises(ValueError, match=r"^degree: a pair P,Q is for a net"):
         t2spline.fuzzify(READINGS, degree=(2, 2))
     with pytest.raises(TypeError, match=r"^readings: expected the path"):
-        t2spline.fuzzify(object())  # type: ignore[arg-type]
+        t2spline.fuzzify(object())

@@ -80,7 +80,7 @@ fn floats_with(arg: &Bound<'_, PyAny>, name: &str, nan: bool) -> PyResult<Floats
         .as_slice()
         .map_err(|e| PyValueError::new_err(format!("{name}: {e}")))?
         .to_vec();
-    let refused = |v: &f64| !v.is_finite() && !(nan && v.is_nan());
+    let refused = |v: &f64| !(v.is_finite() || (nan && v.is_nan()));
     if let Some((i, value)) = data.iter().enumerate().find(|(_, v)| refused(v)) {
         let place = if shape.is_empty() {
             name.to_owned()

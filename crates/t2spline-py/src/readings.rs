@@ -141,7 +141,7 @@ enum Given {
 /// >>> raster = np.arange(36.0).reshape(6, 6)
 /// >>> data = fuzzify(raster, block=3, origin=(0.0, 10.0), spacing=(1.0, -1.0), degree=1)
 /// >>> data["points"][0][1]["x"]["crisp"], data["points"][0][1]["z"]["crisp"]
-/// (4.0, 10.5)
+/// (4.0, 10.0)
 #[pyfunction]
 #[pyo3(signature = (readings, *, tolerance=None, lower_height=None, degree=None, order=None, alpha=None, block=None, origin=None, spacing=None))]
 #[allow(clippy::too_many_arguments)]
