@@ -188,6 +188,10 @@ def test_fit_of_a_net_names_bad_arguments() -> None:
         t2spline.fit(**net, degree=2, control_points=(4, 6))
     with pytest.raises(ValueError, match=r"^control_points: 2 is outside \[3, 6\]"):
         t2spline.fit(**net, degree=2, control_points=2)
+    with pytest.raises(ValueError, match=r"^degree\[1\]: 5 along v is outside \[1, 4\]"):
+        t2spline.fit(**net, degree=(2, 5))
+    with pytest.raises(ValueError, match=r"^degree: 0 along u is outside \[1, 5\]"):
+        t2spline.fit(**net, degree=0)
     with pytest.raises(TypeError, match=r"^degree: expected an int or a pair"):
         t2spline.fit(**net, degree="2")  # type: ignore[call-overload]
     with pytest.raises(ValueError, match=r"^upper: expected shape \(6, 5, 3, 2\)"):

@@ -129,8 +129,24 @@ pub(crate) fn fit<'py>(
                 crate::arrays::shape_text(&[rows, cols, data.d])
             )));
         }
+        let names = match degree {
+            keyword::PerDirection::One(_) => ["degree"; 2].map(str::to_owned),
+            keyword::PerDirection::Two(..) => ["degree[0]", "degree[1]"].map(str::to_owned),
+        };
         let degree =
             crate::construct::surface_degrees(Some(degree), None, [None; 2], [rows, cols])?;
+        for (k, (n, lines)) in [(rows, "rows"), (cols, "columns")].into_iter().enumerate() {
+            let p = degree[k];
+            if p == 0 || p >= n {
+                return Err(PyValueError::new_err(format!(
+                    "{}: {p} along {} is outside [1, {}]: a fit needs degree 1 or more, and a net of {n} {lines} carries at most degree {}",
+                    names[k],
+                    ["u", "v"][k],
+                    n.saturating_sub(1),
+                    n.saturating_sub(1),
+                )));
+            }
+        }
         let counts = control_points.map(|c| {
             let names = match c {
                 keyword::PerDirection::One(_) => ["control_points"; 2].map(str::to_owned),
