@@ -2,9 +2,10 @@
 //! of data files: the writing side of the job format, shared by the job
 //! reader (which re-exports [`job_json`]), the data of fits and readings.
 
+use serde::ser::{Serialize, SerializeMap, Serializer};
 use serde_json::{json, Map, Value};
 use t2spline::job::{Job, Model, ModelVisitor, Samples};
-use t2spline::{Axis, Direction, FuzzyCurve, FuzzySurface, Layer, Nt2Point};
+use t2spline::{Axis, Direction, FuzzyCurve, FuzzySurface, Layer, Nt2Number, Nt2Point};
 
 /// The job as JSON in canonical form: explicit weights, knots and type
 /// reduction, and every number with its own `lower_height`. Parsing it gives
@@ -93,20 +94,62 @@ pub(crate) fn model_json(model: &Model, top_height: Option<f64>) -> Map<String, 
 /// A point as in a job file; a number's `lower_height` is left out when it
 /// equals `top_height`, the job's top-level default.
 pub(crate) fn point_json<const D: usize>(p: &Nt2Point<D>, top_height: Option<f64>) -> Value {
-    let mut out = Map::new();
-    for (axis, x) in Axis::ALL.iter().zip(p.coords()) {
-        let pair = |l: Layer, r: Layer| json!([x.layer(l), x.layer(r)]);
-        let mut number = json!({
-            "crisp": x.crisp(),
-            "upper": pair(Layer::UpperLeft, Layer::UpperRight),
-            "primary": pair(Layer::PrimaryLeft, Layer::PrimaryRight),
-            "lower": pair(Layer::LowerLeft, Layer::LowerRight),
-        });
-        if let (true, Some(number)) = (top_height != Some(x.height().get()), number.as_object_mut())
-        {
-            number.insert("lower_height".into(), json!(x.height().get()));
+    // Serializing keys and floats into a tree of values cannot fail.
+    serde_json::to_value(PointView {
+        point: p,
+        top_height,
+    })
+    .unwrap_or(Value::Null)
+}
+
+/// A point as in a job file, serialized straight from the point: the keys
+/// of [`point_json`] in its order (`x`, `y`, `z`; in each number `crisp`,
+/// `upper`, `primary`, `lower`, then `lower_height` where it differs from
+/// `top_height`), without building a tree of values.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct PointView<'a, const D: usize> {
+    /// The point.
+    pub point: &'a Nt2Point<D>,
+    /// The file's top-level `lower_height`, if it has one.
+    pub top_height: Option<f64>,
+}
+
+impl<const D: usize> Serialize for PointView<'_, D> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let mut map = serializer.serialize_map(Some(D))?;
+        for (axis, x) in Axis::ALL.iter().zip(self.point.coords()) {
+            map.serialize_entry(
+                axis.name(),
+                &NumberView {
+                    number: x,
+                    top_height: self.top_height,
+                },
+            )?;
         }
-        out.insert(axis.name().into(), number);
+        map.end()
     }
-    Value::Object(out)
+}
+
+/// One fuzzy number of a [`PointView`].
+struct NumberView<'a> {
+    number: &'a Nt2Number,
+    top_height: Option<f64>,
+}
+
+impl Serialize for NumberView<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let x = self.number;
+        let height = x.height().get();
+        let own_height = self.top_height != Some(height);
+        let mut map = serializer.serialize_map(Some(4 + usize::from(own_height)))?;
+        map.serialize_entry("crisp", &x.crisp())?;
+        let pair = |l: Layer, r: Layer| [x.layer(l), x.layer(r)];
+        map.serialize_entry("upper", &pair(Layer::UpperLeft, Layer::UpperRight))?;
+        map.serialize_entry("primary", &pair(Layer::PrimaryLeft, Layer::PrimaryRight))?;
+        map.serialize_entry("lower", &pair(Layer::LowerLeft, Layer::LowerRight))?;
+        if own_height {
+            map.serialize_entry("lower_height", &height)?;
+        }
+        map.end()
+    }
 }

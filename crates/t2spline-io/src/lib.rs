@@ -110,10 +110,10 @@ pub use prepared::{MissingAlpha, Prepared, RunError};
 pub use pretty::{to_json_pretty, write_json_pretty};
 pub use printable::printable;
 pub use readings::{
-    data_json, fuzzify_net, fuzzify_readings, is_readings, parse_ascii_grid, parse_grid_csv,
-    parse_net_readings, parse_npy, parse_readings, read_npy, read_readings, NetReadings, Raster,
-    RasterGeometry, ReadingsError, ReadingsFile, ReadingsOption, ReadingsOptions, StationSource,
-    DEFAULT_DEGREE, MAX_NPY_BYTES, MAX_RASTER_CELLS, MAX_ROWS,
+    data_json, data_json_text, fuzzify_net, fuzzify_readings, is_readings, parse_ascii_grid,
+    parse_grid_csv, parse_net_readings, parse_npy, parse_readings, read_npy, read_readings,
+    NetReadings, Raster, RasterGeometry, ReadingsError, ReadingsFile, ReadingsOption,
+    ReadingsOptions, StationSource, DEFAULT_DEGREE, MAX_NPY_BYTES, MAX_RASTER_CELLS, MAX_ROWS,
 };
 pub use summary::{write_summary_csv, JobSummary, SUMMARY_COLUMNS};
 pub use table::{sample_column_names, sample_columns, SampleColumn};

@@ -307,21 +307,51 @@ fn data_files_of_a_net_read_back_and_keep_their_rules() {
 }
 
 #[test]
-fn a_net_is_not_fitted_as_a_curve() {
-    let text = format!("row,col,x,y,z\n{}\n", net_rows(2, 2, 3).join("\n"));
+fn a_net_is_fitted_as_a_surface_with_the_same_options_in_both_directions() {
+    let text = format!("row,col,x,y,z\n{}\n", net_rows(3, 4, 3).join("\n"));
     let data = fuzzify_readings(&text, "n.csv", &options(1)).unwrap();
-    let e = data
+    let outcome = data
         .points
         .fit(
             &t2spline::fit::FitOptions::interpolation(1),
             t2spline::fit::FuzzyFitMode::Valid,
         )
-        .unwrap_err();
-    assert!(
-        e.to_string().contains("a net is fitted by the surface fit"),
-        "{e}"
+        .unwrap();
+    assert_eq!(
+        outcome.summary.net.map(|n| (n.data, n.control)),
+        Some(([3, 4], [3, 4]))
     );
-    assert_eq!(data.points.len(), 4);
+    assert_eq!(data.points.len(), 12);
+}
+
+#[test]
+fn the_text_of_a_data_file_is_that_of_its_tree_of_values() {
+    // A net with the order key, and a data file whose numbers mix lower
+    // heights (each written where it differs from the top-level one).
+    let text = format!("row,col,x,y,z\n{}\n", net_rows(3, 4, 4).join("\n"));
+    let o = ReadingsOptions {
+        order: Some(3),
+        order_v: Some(2),
+        alpha: Some(0.25),
+        tolerance: Some(0.01),
+        ..ReadingsOptions::default()
+    };
+    let net = fuzzify_readings(&text, "n.csv", &o).unwrap();
+    let mixed = parse_data(
+        r#"{"degree": 1, "lower_height": 0.5, "samples": 7, "points": [
+          {"x": {"crisp": 0, "upper": [-1, 1], "primary": [-0.5, 0.5], "lower": [-0.2, 0.2], "lower_height": 0.3},
+           "y": {"crisp": 0, "upper": [-1, 2], "primary": [-0.5, 1], "lower": [-0.2, 0.5]}},
+          {"x": {"crisp": 1, "upper": [0, 2], "primary": [0.5, 1.5], "lower": [0.8, 1.2]},
+           "y": {"crisp": 1, "upper": [0, 3], "primary": [0.5, 2], "lower": [0.8, 1.5], "lower_height": 1}}
+        ]}"#,
+        "d.json",
+    )
+    .unwrap();
+    for data in [&net, &mixed] {
+        let text = t2spline_io::data_json_text(data);
+        assert_eq!(text, t2spline_io::to_json_pretty(&data_json(data)));
+        assert_eq!(parse_data(&text, "again.json").unwrap().points, data.points);
+    }
 }
 
 const ASC: &str =

@@ -15,9 +15,9 @@ use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
 use t2spline_io::job::MAX_POINTS;
 use t2spline_io::{
-    data_json, fuzzify_net, fuzzify_readings, parse_ascii_grid, parse_data, parse_grid_csv,
-    parse_npy, read_npy, to_json_pretty, FitData, NetReadings, Raster, RasterGeometry,
-    ReadingsError, ReadingsOptions, MAX_ROWS,
+    data_json_text, fuzzify_net, fuzzify_readings, parse_ascii_grid, parse_data, parse_grid_csv,
+    parse_npy, read_npy, FitData, NetReadings, Raster, RasterGeometry, ReadingsError,
+    ReadingsOptions, MAX_ROWS,
 };
 
 use crate::arrays::{floats, floats_or_nan, shape_text, Floats};
@@ -225,7 +225,7 @@ pub(crate) fn fuzzify<'py>(
     let block = block.unwrap_or(2);
     let (json, note) = without_gil(py, move || -> Result<_, ReadingsError> {
         let (data, note) = fit_data(given, block, geometry, &options)?;
-        Ok((to_json_pretty(&data_json(&data)), note))
+        Ok((data_json_text(&data), note))
     })?
     .map_err(|e| match e {
         ReadingsError::File(e) => io_error(py, e),

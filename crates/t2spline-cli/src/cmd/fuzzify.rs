@@ -6,9 +6,9 @@ use std::path::{Path, PathBuf};
 
 use anyhow::anyhow;
 use t2spline_io::{
-    data_json, fuzzify_net, fuzzify_readings, parse_ascii_grid, parse_data, parse_grid_csv,
-    printable, read_npy, to_json_pretty, FitData, Raster, RasterGeometry, ReadingsError,
-    ReadingsOption, ReadingsOptions,
+    data_json_text, fuzzify_net, fuzzify_readings, parse_ascii_grid, parse_data, parse_grid_csv,
+    printable, read_npy, FitData, Raster, RasterGeometry, ReadingsError, ReadingsOption,
+    ReadingsOptions,
 };
 
 use super::prepare::OptionError;
@@ -197,7 +197,7 @@ pub fn fuzzify(args: FuzzifyArgs) -> anyhow::Result<()> {
             readings_data(&args.readings, &text, &args.rule, args.alpha)?
         }
     };
-    let json = to_json_pretty(&data_json(&data));
+    let json = data_json_text(&data);
     let output: Option<PathBuf> = args.output;
     // The last guard: what is written must be a valid data file.
     let name = output.as_deref().map_or("<stdout>".to_owned(), job_name);

@@ -1,13 +1,14 @@
 //! Fuzzified readings as a data file for `fit`.
 
-use serde_json::{json, Map, Value};
+use serde::ser::{Serialize, SerializeMap, Serializer};
+use serde_json::Value;
 use t2spline::fit::{FuzzifyRule, FuzzyData};
-use t2spline::{Alpha, Num};
+use t2spline::{Alpha, Nt2Point, Num};
 
 use super::ReadingsFile;
 use crate::error::{Error, Problem};
 use crate::fit_data::FitData;
-use crate::job_json::point_json;
+use crate::job_json::PointView;
 
 impl ReadingsFile {
     /// The data of a fit from the fuzzy data points `points` that the core
@@ -95,42 +96,87 @@ impl ReadingsFile {
 /// ```
 #[must_use]
 pub fn data_json(data: &FitData) -> Value {
-    let mut out = Map::new();
-    if let Some(d) = &data.description {
-        out.insert("description".into(), json!(d));
+    // Serializing keys, numbers and strings into a tree of values cannot fail.
+    serde_json::to_value(DataFileView(data)).unwrap_or(Value::Null)
+}
+
+/// The text of the data file of `data`: [`data_json`] in the layout of
+/// [`to_json_pretty`](crate::to_json_pretty), byte for byte, written
+/// straight from the points without the tree of values (a raster's data file
+/// holds millions of numbers).
+///
+/// # Examples
+/// ```
+/// # use t2spline::fit::FuzzifyRule;
+/// let file = t2spline_io::parse_readings("station,x,y\nA,0,0\nA,1,1\nB,2,0\nB,3,1\n", "r.csv")?;
+/// let rule = FuzzifyRule::try_new(0.0, 0.5)?;
+/// let data = file.fit_data(file.readings.fuzzify(&rule)?, &rule, "degree", 1, None);
+/// assert_eq!(t2spline_io::data_json_text(&data), t2spline_io::to_json_pretty(&t2spline_io::data_json(&data)));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[must_use]
+pub fn data_json_text(data: &FitData) -> String {
+    let mut out = Vec::new();
+    // Writing to memory cannot fail, nor can serializing keys and numbers;
+    // serde_json writes UTF-8.
+    if crate::pretty::write_json_pretty(&mut out, &DataFileView(data)).is_err() {
+        return crate::pretty::to_json_pretty(&data_json(data));
     }
-    let shift = usize::from(data.degree_key == "order");
-    let written = match data.degree_v {
-        Some(q) => json!([data.degree + shift, q + shift]),
-        None => json!(data.degree + shift),
-    };
-    out.insert(data.degree_key.into(), written);
-    if let Some(a) = data.alpha {
-        out.insert("alpha".into(), json!(a.get()));
+    String::from_utf8_lossy(&out).into_owned()
+}
+
+/// A data file serialized from its parts: the keys of [`data_json`], in its
+/// order.
+struct DataFileView<'a>(&'a FitData);
+
+impl Serialize for DataFileView<'_> {
+    fn serialize<S: Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let data = self.0;
+        let mut map = serializer.serialize_map(None)?;
+        if let Some(d) = &data.description {
+            map.serialize_entry("description", d)?;
+        }
+        let shift = usize::from(data.degree_key == "order");
+        match data.degree_v {
+            Some(q) => map.serialize_entry(data.degree_key, &[data.degree + shift, q + shift])?,
+            None => map.serialize_entry(data.degree_key, &(data.degree + shift))?,
+        }
+        if let Some(a) = data.alpha {
+            map.serialize_entry("alpha", &a.get())?;
+        }
+        if let Some(h) = data.lower_height {
+            map.serialize_entry("lower_height", &h)?;
+        }
+        if let Some(n) = data.samples {
+            map.serialize_entry("samples", &n)?;
+        }
+        let top_height = data.lower_height;
+        match &data.points {
+            FuzzyData::Planar(p) => {
+                let v: Vec<PointView<'_, 2>> = p
+                    .iter()
+                    .map(|point| PointView { point, top_height })
+                    .collect();
+                map.serialize_entry("points", &v)?;
+            }
+            FuzzyData::Spatial(p) => map.serialize_entry("points", &views(p, top_height))?,
+            FuzzyData::Net(rows) => {
+                let v: Vec<Vec<PointView<'_, 3>>> =
+                    rows.iter().map(|r| views(r, top_height)).collect();
+                map.serialize_entry("points", &v)?;
+            }
+            // A kind of data this version does not know: no points, which
+            // the data file's validator then refuses.
+            _ => map.serialize_entry("points", &[0u8; 0])?,
+        }
+        map.end()
     }
-    if let Some(h) = data.lower_height {
-        out.insert("lower_height".into(), json!(h));
-    }
-    if let Some(n) = data.samples {
-        out.insert("samples".into(), json!(n));
-    }
-    let points = match &data.points {
-        FuzzyData::Planar(p) => p.iter().map(|p| point_json(p, data.lower_height)).collect(),
-        FuzzyData::Spatial(p) => p.iter().map(|p| point_json(p, data.lower_height)).collect(),
-        FuzzyData::Net(rows) => rows
-            .iter()
-            .map(|row| {
-                Value::Array(
-                    row.iter()
-                        .map(|p| point_json(p, data.lower_height))
-                        .collect(),
-                )
-            })
-            .collect(),
-        // A kind of data this version does not know: no points, which the
-        // data file's validator then refuses.
-        _ => Vec::new(),
-    };
-    out.insert("points".into(), Value::Array(points));
-    Value::Object(out)
+}
+
+/// The views of `points` for serializing.
+fn views(points: &[Nt2Point<3>], top_height: Option<f64>) -> Vec<PointView<'_, 3>> {
+    points
+        .iter()
+        .map(|point| PointView { point, top_height })
+        .collect()
 }

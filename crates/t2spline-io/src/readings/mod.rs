@@ -44,7 +44,7 @@ mod options;
 mod raster;
 pub(crate) mod tokens;
 
-pub use data::data_json;
+pub use data::{data_json, data_json_text};
 pub use net::{parse_net_readings, NetReadings, StationSource};
 pub use npy::{parse_npy, read_npy, MAX_NPY_BYTES};
 pub use options::{
