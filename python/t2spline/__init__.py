@@ -67,10 +67,12 @@ centroid
     The centroid ``[c_l, c_r]`` of an interval type-2 set given by samples
     (Karnik–Mendel, EKM, EIASC, or the Nie–Tan value).
 fit
-    Fuzzy data points → a fuzzy curve and a summary of the fit.
-fuzzify, export, to_json, FuzzyCurve.to_job, FuzzySurface.to_job
-    The loop of the command-line tool in Python, by its code: a readings
-    file to the data of a fit (``t2spline fuzzify``), a job to a CAD file
+    Fuzzy data points → a fuzzy curve (a net of them → a fuzzy surface) and
+    a summary of the fit.
+fuzzify, fit_job, export, to_json, FuzzyCurve.to_job, FuzzySurface.to_job
+    The loop of the command-line tool in Python, by its code: readings (a
+    file, a net's arrays or long table, a raster array) to the data of a fit
+    (``t2spline fuzzify``), the data to a job (``t2spline fit``), a job to a CAD file
     (``t2spline export``), a result to the bytes of ``t2spline run``'s
     result file, a model back to a job dict that ``run`` runs.
 benchmark_curve
@@ -131,6 +133,7 @@ from ._t2spline import (
     centroid,
     export,
     fit,
+    fit_job,
     fuzzify,
     release_cached_memory,
     run,
@@ -156,6 +159,7 @@ __all__ = [
     "centroid",
     "export",
     "fit",
+    "fit_job",
     "fuzzify",
     "release_cached_memory",
     "run",

@@ -2,7 +2,7 @@
 # The full documentation, with formulas and examples, is in the docstrings of
 # the compiled objects: `help(t2spline.FuzzyCurve)`.
 import os
-from typing import Any, Iterable, Literal, Optional, Sequence, Tuple, Union, final, overload
+from typing import Any, Iterable, Literal, Mapping, Optional, Sequence, Tuple, Union, final, overload
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -56,6 +56,7 @@ __all__ = [
     "centroid",
     "export",
     "fit",
+    "fit_job",
     "fuzzify",
     "release_cached_memory",
     "run",
@@ -524,6 +525,7 @@ class SurfaceSolution:
     def distance(self) -> SurfaceDistance: ...
     def sample(self, u: Union[int, ArrayLike], v: Union[int, ArrayLike]) -> SurfaceStageSamples: ...
 
+@overload
 def fit(
     crisp: ArrayLike,
     upper: ArrayLike,
@@ -536,17 +538,43 @@ def fit(
     parametrization: Literal["chord", "centripetal", "uniform"] = "chord",
     mode: Literal["valid", "independent"] = "valid",
 ) -> Tuple[FuzzyCurve, FitSummary]: ...
+@overload
+def fit(
+    crisp: ArrayLike,
+    upper: ArrayLike,
+    primary: ArrayLike,
+    lower: ArrayLike,
+    lower_height: ArrayLike,
+    *,
+    degree: PerDirection,
+    control_points: Optional[PerDirection] = None,
+    parametrization: Literal["chord", "centripetal", "uniform"] = "chord",
+    mode: Literal["valid", "independent"] = "valid",
+) -> Tuple[Union[FuzzyCurve, FuzzySurface], FitSummary]: ...
+
+def fit_job(
+    data: Union[dict[str, Any], str, "os.PathLike[str]"],
+    *,
+    control_points: Optional[PerDirection] = None,
+    parametrization: Literal["chord", "centripetal", "uniform"] = "chord",
+    mode: Literal["valid", "independent"] = "valid",
+    alpha: Optional[float] = None,
+) -> dict[str, Any]:
+    """The job `t2spline fit` writes for a data file (or its dict)."""
 
 def fuzzify(
-    readings: Union[str, "os.PathLike[str]"],
+    readings: Union[str, "os.PathLike[str]", ArrayLike, Mapping[str, Any], Any],
     *,
     tolerance: Optional[float] = None,
     lower_height: Optional[float] = None,
-    degree: Optional[int] = None,
-    order: Optional[int] = None,
+    degree: Optional[PerDirection] = None,
+    order: Optional[PerDirection] = None,
     alpha: Optional[float] = None,
+    block: Optional[int] = None,
+    origin: Optional[Tuple[float, float]] = None,
+    spacing: Optional[Tuple[float, float]] = None,
 ) -> dict[str, Any]:
-    """A readings file as the data of a fit, by the rules of `t2spline fuzzify`."""
+    """Readings (a file, a net's arrays or table, a raster) as the data of a fit, by the rules of `t2spline fuzzify`."""
 
 def export(
     job: Job,

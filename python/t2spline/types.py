@@ -44,6 +44,7 @@ __all__ = [
     "MeasureLevels",
     "Measures",
     "MembershipGrid",
+    "NetCounts",
     "PartialLevel",
     "PartialLevels",
     "PerDirection",
@@ -238,8 +239,16 @@ class LayerDeviations(TypedDict):
     upper_right: Deviation
 
 
+class NetCounts(TypedDict):
+    """The shape of a fitted net (``FitSummary.net``): rows and columns of
+    the data, control points in u and in v."""
+
+    data: List[int]
+    control: List[int]
+
+
 class FitSummary(TypedDict):
-    """The summary of ``fit``."""
+    """The summary of ``fit``; ``net`` is ``None`` for a curve."""
 
     data_points: int
     control_points: int
@@ -249,6 +258,7 @@ class FitSummary(TypedDict):
     spread_deviations: LayerDeviations
     independent_violations: List[str]
     mixed_heights: Dict[str, float]
+    net: Optional[NetCounts]
 
 
 class Grades(TypedDict):

@@ -203,3 +203,21 @@ def test_fit_and_the_surface_curvature_conform_too() -> None:
         control_points=4,
     )
     conforms(result, resolve(returns["fit"]), "fit")
+
+
+def test_fit_of_a_net_conforms() -> None:
+    returns = stub_returns()
+    u, v = np.meshgrid(np.linspace(0.0, 1.0, 5), np.linspace(0.0, 1.0, 4), indexing="ij")
+    net = np.stack([u, v, u * v], axis=-1)
+    spread = np.array([-0.3, 0.3])
+    result = t2spline.fit(
+        net,
+        net[..., None] + spread,
+        net[..., None] + 0.6 * spread,
+        net[..., None] + 0.3 * spread,
+        lower_height=0.6,
+        degree=(2, 1),
+        control_points=(4, 3),
+    )
+    conforms(result, resolve(returns["fit"]), "fit")
+    assert result[1]["net"] == {"data": [5, 4], "control": [4, 3]}

@@ -38,6 +38,19 @@ pub(crate) fn shape_text(shape: &[usize]) -> String {
 /// objects, booleans, complex numbers); `ValueError` for a ragged list and
 /// for NaN or infinity, naming the index.
 pub(crate) fn floats(arg: &Bound<'_, PyAny>, name: &str) -> PyResult<Floats> {
+    floats_with(arg, name, false)
+}
+
+/// [`floats`] with NaN allowed (a missing reading, a cell without data);
+/// infinity is still refused.
+///
+/// # Errors
+/// As [`floats`], but for NaN.
+pub(crate) fn floats_or_nan(arg: &Bound<'_, PyAny>, name: &str) -> PyResult<Floats> {
+    floats_with(arg, name, true)
+}
+
+fn floats_with(arg: &Bound<'_, PyAny>, name: &str, nan: bool) -> PyResult<Floats> {
     let py = arg.py();
     let numpy = py.import("numpy")?;
     let array = numpy.call_method1("asarray", (arg,)).map_err(|e| {
@@ -67,14 +80,20 @@ pub(crate) fn floats(arg: &Bound<'_, PyAny>, name: &str) -> PyResult<Floats> {
         .as_slice()
         .map_err(|e| PyValueError::new_err(format!("{name}: {e}")))?
         .to_vec();
-    if let Some((i, value)) = data.iter().enumerate().find(|(_, v)| !v.is_finite()) {
+    let refused = |v: &f64| !(v.is_finite() || (nan && v.is_nan()));
+    if let Some((i, value)) = data.iter().enumerate().find(|(_, v)| refused(v)) {
         let place = if shape.is_empty() {
             name.to_owned()
         } else {
             format!("{name}[{}]", index_text(i, &shape))
         };
+        let rule = if nan {
+            "infinity is refused; NaN marks a missing value"
+        } else {
+            "NaN and infinity are refused"
+        };
         return Err(PyValueError::new_err(format!(
-            "{place} = {value} is not a finite number (NaN and infinity are refused)"
+            "{place} = {value} is not a finite number ({rule})"
         )));
     }
     Ok(Floats { shape, data })

@@ -148,6 +148,7 @@ fn _t2spline(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(many::run_many, m)?)?;
     m.add_function(wrap_pyfunction!(many::_run_rows, m)?)?;
     m.add_function(wrap_pyfunction!(fit::fit, m)?)?;
+    m.add_function(wrap_pyfunction!(fit::fit_job, m)?)?;
     m.add_function(wrap_pyfunction!(readings::fuzzify, m)?)?;
     m.add_function(wrap_pyfunction!(export::export, m)?)?;
     m.add_function(wrap_pyfunction!(json::to_json, m)?)?;
