@@ -285,16 +285,20 @@ pub(crate) fn coords_last<'py>(
 /// Points given as one vector per coordinate (structure of arrays) at
 /// sample points of shape `samples` (`(n,)` along a curve, `(su, sv)` on a
 /// grid) as an array of shape `samples + (d,)`: a view of one buffer, so
-/// each coordinate stays contiguous.
+/// each coordinate stays contiguous. The coordinates are copied into the
+/// buffer with the GIL released (the stages of a 1000 × 1000 grid are
+/// hundreds of megabytes).
 pub(crate) fn columns_array<'py>(
     py: Python<'py>,
-    columns: &[impl AsRef<[f64]>],
+    columns: &[impl AsRef<[f64]> + Sync],
     samples: &[usize],
 ) -> PyResult<Bound<'py, PyAny>> {
-    let data: Vec<f64> = columns
-        .iter()
-        .flat_map(|c| c.as_ref().iter().copied())
-        .collect();
+    let data: Vec<f64> = crate::errors::without_gil(py, || {
+        columns
+            .iter()
+            .flat_map(|c| c.as_ref().iter().copied())
+            .collect()
+    })?;
     coords_last(py, data.into(), &[], columns.len(), samples)
 }
 
