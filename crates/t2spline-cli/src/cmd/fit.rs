@@ -94,19 +94,16 @@ impl Plan {
                     _ => [c[0]; 2],
                 });
                 if let Some(counts) = counts {
-                    for (d, direction) in ["u", "v"].iter().enumerate() {
-                        let (m, min, max) = (counts[d], degree[d] + 1, shape[d]);
-                        let lines = if d == 0 { "rows" } else { "columns" };
-                        if m < min || m > max {
-                            return Err(OptionError {
-                                option: "--control-points",
-                                message: format!(
-                                    "{m} in {direction} is outside [{min}, {max}]: at least degree + 1, at most the {max} {lines} of the net of {}",
-                                    printable(&data.source)
-                                ),
-                            }
-                            .into());
-                        }
+                    for (d, (direction, lines)) in
+                        [("u", "rows"), ("v", "columns")].iter().enumerate()
+                    {
+                        check_count(
+                            counts[d],
+                            degree[d],
+                            shape[d],
+                            &format!(" in {direction}"),
+                            &format!("{lines} of the net of {}", printable(&data.source)),
+                        )?;
                     }
                 }
                 let surface = SurfaceFitOptions {
@@ -132,17 +129,13 @@ impl Plan {
                     }
                 };
                 if let Some(m) = m {
-                    let (min, max) = (data.degree + 1, data.len());
-                    if m < min || m > max {
-                        return Err(OptionError {
-                            option: "--control-points",
-                            message: format!(
-                                "{m} is outside [{min}, {max}]: at least degree + 1, at most the {max} data points of {}",
-                                printable(&data.source)
-                            ),
-                        }
-                        .into());
-                    }
+                    check_count(
+                        m,
+                        data.degree,
+                        data.len(),
+                        "",
+                        &format!("data points of {}", printable(&data.source)),
+                    )?;
                 }
                 (m, None)
             }
@@ -304,6 +297,28 @@ fn report(plan: &Plan, s: &FitSummary) -> Vec<String> {
         lines.push(line);
     }
     lines
+}
+
+/// `--control-points` of `m` (in a direction, `place`) for a fit of degree
+/// `degree` to `data` points (`what` says of what): at least degree + 1, at
+/// most the data.
+fn check_count(
+    m: usize,
+    degree: usize,
+    data: usize,
+    place: &str,
+    what: &str,
+) -> Result<(), OptionError> {
+    let (min, max) = (degree + 1, data);
+    if m < min || m > max {
+        return Err(OptionError {
+            option: "--control-points",
+            message: format!(
+                "{m}{place} is outside [{min}, {max}]: at least degree + 1, at most the {max} {what}"
+            ),
+        });
+    }
+    Ok(())
 }
 
 /// The counts of `--control-points`: `M` or `M,N`, each a whole number.
