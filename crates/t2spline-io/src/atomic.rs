@@ -458,16 +458,23 @@ mod tests {
         assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 2);
     }
 
+    /// A FIFO named `pipe` in `dir`, made by `mkfifo`.
     #[cfg(unix)]
-    #[test]
-    fn a_fifo_is_written_through_after_the_files() {
-        let dir = tempfile::tempdir().unwrap();
-        let fifo = dir.path().join("pipe");
+    fn make_fifo(dir: &Path) -> PathBuf {
+        let fifo = dir.join("pipe");
         let made = std::process::Command::new("mkfifo")
             .arg(&fifo)
             .status()
             .unwrap();
         assert!(made.success());
+        fifo
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn a_fifo_is_written_through_after_the_files() {
+        let dir = tempfile::tempdir().unwrap();
+        let fifo = make_fifo(dir.path());
         let reader = {
             let fifo = fifo.clone();
             std::thread::spawn(move || std::fs::read(fifo).unwrap())
@@ -486,12 +493,7 @@ mod tests {
     #[test]
     fn written_now_a_fifo_gets_its_bytes_after_the_files() {
         let dir = tempfile::tempdir().unwrap();
-        let fifo = dir.path().join("pipe");
-        let made = std::process::Command::new("mkfifo")
-            .arg(&fifo)
-            .status()
-            .unwrap();
-        assert!(made.success());
+        let fifo = make_fifo(dir.path());
         let file = dir.path().join("a.csv");
         let mut staged = Staged::default();
         // No reader yet: writing the FIFO now would block.
