@@ -446,6 +446,51 @@ def check(binary, job_path, label, folder, worst):
         worst[fmt + " files"] = (worst.get(fmt + " files", (0, ""))[0] + 1, "")
 
 
+#: `--units`: the millimetres in one unit, DXF's `$INSUNITS` code and the
+#: comment of an OBJ file.
+UNITS = {"mm": (1.0, 4), "cm": (10.0, 5), "m": (1000.0, 6), "in": (25.4, 1), "ft": (304.8, 2)}
+
+
+def shape_points(shape):
+    """Points of every edge of an OCCT shape, at five parameters each."""
+    out = []
+    for a, b, f in ocp_edges(shape):
+        out.extend(f(a + (b - a) * k / 4) for k in range(5))
+    return out
+
+
+def check_units(binary, job_path, folder):
+    """Each unit as the readers take it: OCCT converts STEP and IGES to
+    millimetres on transfer, so each point is the millimetre file's times
+    the unit's length; ezdxf reads `$INSUNITS`; OBJ says it in a comment."""
+    reference = {}
+    for unit, (mm, code) in UNITS.items():
+        for fmt in ("step", "igs", "dxf", "obj"):
+            out = Path(folder) / f"units-{unit}.{fmt}"
+            subprocess.run([binary, "export", job_path, "-o", str(out), "--units", unit],
+                           check=True, capture_output=True)
+            if fmt == "dxf":
+                assert ezdxf.readfile(out).header["$INSUNITS"] == code, (unit, fmt)
+                continue
+            if fmt == "obj":
+                assert f"units: {unit} " in out.read_text(), (unit, fmt)
+                continue
+            reader = STEPControl_Reader() if fmt == "step" else IGESControl_Reader()
+            assert reader.ReadFile(str(out)) == IFSelect_RetDone
+            reader.TransferRoots()
+            points = shape_points(reader.OneShape())
+            if unit == "mm":
+                reference[fmt] = points
+                continue
+            want = reference[fmt]
+            assert len(points) == len(want), (unit, fmt)
+            scale = max(1.0, max(abs(x) for p in want for x in p))
+            for got, base in zip(points, want):
+                error = math.dist(got, [mm * x for x in base]) / (mm * scale)
+                assert error <= TOLERANCE, f"{unit}, {fmt}: {got} vs {base} x {mm}"
+    return len(UNITS)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--bin", required=True)
@@ -475,6 +520,8 @@ def main():
             path = Path(folder) / f"job{case}.json"
             path.write_text(json.dumps(job))
             jobs.append((str(path), f"case {case} ({label})"))
+        units = check_units(args.bin, jobs[0][0], folder)
+        print(f"units: {units} units, each read back as STEP, IGES, DXF and OBJ readers take it")
         for path, label in jobs:
             try:
                 check(args.bin, path, label, folder, worst)

@@ -23,6 +23,7 @@ from .types import (
     LayerName,
     LayerSamples,
     Measures,
+    SurfaceMeasures,
     MembershipGrid,
     PerDirection,
     PlaneName,
@@ -50,6 +51,7 @@ __all__ = [
     "SurfaceSolution",
     "__version__",
     "_panic_for_tests",
+    "_cli_main",
     "_run_rows",
     "benchmark_curve",
     "benchmark_surface",
@@ -128,13 +130,14 @@ class AlphaCut:
 class FuzzyNumber:
     """A normal triangular type-2 fuzzy number (docs/method.md §1)."""
     def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]: ...
+    def _repr_html_(self) -> str: ...
     def __new__(
         cls,
         crisp: float,
-        upper: Sequence[float],
-        primary: Sequence[float],
-        lower: Sequence[float],
-        lower_height: float,
+        upper: Optional[Sequence[float]] = None,
+        primary: Optional[Sequence[float]] = None,
+        lower: Optional[Sequence[float]] = None,
+        lower_height: Optional[float] = None,
     ) -> FuzzyNumber: ...
     @property
     def crisp(self) -> float: ...
@@ -155,6 +158,7 @@ class FuzzyNumber:
 class NurbsCurve:
     """A rational B-spline curve in the plane or in space (docs/method.md §6)."""
     def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]: ...
+    def _repr_html_(self) -> str: ...
     def __new__(
         cls,
         control_points: ArrayLike,
@@ -207,13 +211,14 @@ class NurbsCurve:
 class FuzzyCurve:
     """A rational B-spline curve with fuzzy control points: stage 1 (docs/method.md §6–§7)."""
     def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]: ...
+    def _repr_html_(self) -> str: ...
     def __new__(
         cls,
         crisp: ArrayLike,
-        upper: ArrayLike,
-        primary: ArrayLike,
-        lower: ArrayLike,
-        lower_height: ArrayLike,
+        upper: Optional[ArrayLike] = None,
+        primary: Optional[ArrayLike] = None,
+        lower: Optional[ArrayLike] = None,
+        lower_height: Optional[ArrayLike] = None,
         weights: Optional[ArrayLike] = None,
         knots: Optional[ArrayLike] = None,
         *,
@@ -257,6 +262,9 @@ class FuzzyCurve:
     def layer_control_points(self, layer: LayerName) -> Floats: ...
     def layer_curve(self, layer: LayerName) -> NurbsCurve: ...
     def closest_points(self, point: ArrayLike) -> Tuple[Floats, Floats, Floats]: ...
+    def derivatives(self, t: ArrayLike, order: int = 1) -> Floats: ...
+    def curvatures(self, t: ArrayLike) -> Floats: ...
+    def bounding_box(self) -> Tuple[Floats, Floats]: ...
     def crisp_curve(self) -> NurbsCurve: ...
     def uniform_params(self, count: int) -> Floats: ...
     def eval_layers(self, t: ArrayLike) -> Floats: ...
@@ -298,6 +306,8 @@ class FuzzyCurve:
         levels: Union[int, ArrayLike] = 11,
         at: Optional[ArrayLike] = None,
         order: int = 1,
+        *,
+        closed: Optional[bool] = None,
     ) -> Measures: ...
     def distance_sweep(self, alphas: ArrayLike, samples: int = 1001) -> DistanceSweep: ...
 
@@ -305,6 +315,7 @@ class FuzzyCurve:
 class Region:
     """The region of a fuzzy curve at one level, as polygons (docs/method.md §10)."""
     def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]: ...
+    def _repr_html_(self) -> str: ...
     @property
     def area(self) -> float: ...
     @property
@@ -334,6 +345,7 @@ class Region:
 class Solution:
     """Stages 2-4 of Algorithm 1.1 at one level alpha (docs/method.md §7)."""
     def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]: ...
+    def _repr_html_(self) -> str: ...
     @property
     def alpha(self) -> float: ...
     @property
@@ -361,6 +373,7 @@ class Solution:
 class NurbsSurface:
     """A rational B-spline surface (docs/method.md §8)."""
     def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]: ...
+    def _repr_html_(self) -> Optional[str]: ...
     def __new__(
         cls,
         control_points: ArrayLike,
@@ -415,13 +428,14 @@ class NurbsSurface:
 class FuzzySurface:
     """A rational B-spline surface with a net of fuzzy control points: stage 1 (docs/method.md §8)."""
     def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]: ...
+    def _repr_html_(self) -> Optional[str]: ...
     def __new__(
         cls,
         crisp: ArrayLike,
-        upper: ArrayLike,
-        primary: ArrayLike,
-        lower: ArrayLike,
-        lower_height: ArrayLike,
+        upper: Optional[ArrayLike] = None,
+        primary: Optional[ArrayLike] = None,
+        lower: Optional[ArrayLike] = None,
+        lower_height: Optional[ArrayLike] = None,
         weights: Optional[ArrayLike] = None,
         knots_u: Optional[ArrayLike] = None,
         knots_v: Optional[ArrayLike] = None,
@@ -476,6 +490,7 @@ class FuzzySurface:
     def eval_layers(self, u: ArrayLike, v: ArrayLike) -> Floats: ...
     def __call__(self, u: ArrayLike, v: ArrayLike) -> Floats: ...
     def closest_points(self, point: ArrayLike) -> Tuple[Floats, Floats, Floats, Floats]: ...
+    def derivatives(self, u: ArrayLike, v: ArrayLike, order: int = 1) -> Floats: ...
     def curvatures(self, u: ArrayLike, v: ArrayLike) -> SurfaceCurvature: ...
     def bounding_box(self) -> Tuple[Floats, Floats]: ...
     def sample(self, u: Union[int, ArrayLike], v: Union[int, ArrayLike]) -> SurfaceLayerSamples: ...
@@ -494,6 +509,9 @@ class FuzzySurface:
     def section(
         self, x0: float, y0: float, levels: Union[int, ArrayLike] = 11
     ) -> list[SectionLevel]: ...
+    def measure(
+        self, levels: Union[int, ArrayLike] = 11, datum: float = 0.0, area: bool = True
+    ) -> SurfaceMeasures: ...
     def distance_sweep(
         self, alphas: ArrayLike, samples: Union[int, Tuple[int, int]] = 101
     ) -> DistanceSweep: ...
@@ -502,6 +520,7 @@ class FuzzySurface:
 class SurfaceSolution:
     """Stages 2-4 of Algorithm 1.1 on the net of a fuzzy surface (docs/method.md §7, §8)."""
     def __reduce__(self) -> Tuple[Any, Tuple[Any, ...]]: ...
+    def _repr_html_(self) -> Optional[str]: ...
     @property
     def alpha(self) -> float: ...
     @property
@@ -528,10 +547,10 @@ class SurfaceSolution:
 @overload
 def fit(
     crisp: ArrayLike,
-    upper: ArrayLike,
-    primary: ArrayLike,
-    lower: ArrayLike,
-    lower_height: ArrayLike,
+    upper: Optional[ArrayLike] = None,
+    primary: Optional[ArrayLike] = None,
+    lower: Optional[ArrayLike] = None,
+    lower_height: Optional[ArrayLike] = None,
     *,
     degree: int,
     control_points: Optional[int] = None,
@@ -541,10 +560,10 @@ def fit(
 @overload
 def fit(
     crisp: ArrayLike,
-    upper: ArrayLike,
-    primary: ArrayLike,
-    lower: ArrayLike,
-    lower_height: ArrayLike,
+    upper: Optional[ArrayLike] = None,
+    primary: Optional[ArrayLike] = None,
+    lower: Optional[ArrayLike] = None,
+    lower_height: Optional[ArrayLike] = None,
     *,
     degree: PerDirection,
     control_points: Optional[PerDirection] = None,
@@ -582,12 +601,15 @@ def export(
     format: Optional[Literal["dxf", "step", "iges", "obj"]] = None,
     alpha: Optional[float] = None,
     type_reduction: Optional[TypeReductionName] = None,
+    *,
+    units: Optional[Literal["mm", "cm", "m", "in", "ft"]] = None,
 ) -> None:
     """Writes a job's exact curves as a CAD file, as `t2spline export` does."""
 
 def to_json(result: Any) -> str:
     """A result as the bytes of `t2spline run`'s result file (as text)."""
 
+def _cli_main(args: Sequence[str]) -> int: ...
 def benchmark_curve() -> FuzzyCurve: ...
 def benchmark_surface() -> FuzzySurface: ...
 def release_cached_memory() -> None: ...

@@ -186,6 +186,15 @@ def run_table(
         a row with its status and message, not an exception.
     """
     pa = _arrow()
+    if not isinstance(samples, (bool, np.bool_)):
+        raise TypeError(
+            f"samples: expected True or False (whether to return the samples), got {samples!r}; "
+            "the number of samples per job is sample_count="
+        )
+    if not isinstance(column, str):
+        raise TypeError(f"column: expected the name of a column (str), got {type(column).__name__}")
+    if id is not None and not isinstance(id, str):
+        raise TypeError(f"id: expected the name of a column (str) or None, got {type(id).__name__}")
     table = _as_table(table)
     texts = _texts(table, column)
     parts: List[Dict[str, Any]] = []
@@ -194,8 +203,19 @@ def run_table(
         n = len(chunk)
         _, offsets_buffer, data_buffer = chunk.buffers()[:3]
         wide = pa.types.is_large_string(chunk.type)
-        raw = np.frombuffer(offsets_buffer, dtype=np.int64 if wide else np.int32)
-        offsets = raw[chunk.offset : chunk.offset + n + 1].astype(np.int64, copy=False)
+        width = np.int64 if wide else np.int32
+        raw = (
+            np.frombuffer(offsets_buffer, dtype=width)
+            if offsets_buffer is not None
+            else np.zeros(chunk.offset + n + 1, dtype=width)
+        )
+        # Arrow lets a buffer start anywhere (pickle protocol 5 and IPC give
+        # 8-byte offsets at odd addresses); the offsets are copied when they
+        # are not aligned, the texts never are.
+        offsets = np.require(
+            raw[chunk.offset : chunk.offset + n + 1].astype(np.int64, copy=False),
+            requirements=["ALIGNED", "C_CONTIGUOUS"],
+        )
         data = (
             np.frombuffer(data_buffer, dtype=np.uint8)
             if data_buffer is not None

@@ -43,6 +43,7 @@ __all__ = [
     "MeasureLevel",
     "MeasureLevels",
     "Measures",
+    "SurfaceMeasures",
     "MembershipGrid",
     "NetCounts",
     "PartialLevel",
@@ -339,13 +340,40 @@ class MeasureLevels(TypedDict):
     lower: List[MeasureLevel]
 
 
-class AreaMeasure(TypedDict):
-    """The area: ``"under"`` an open curve, ``"enclosed"`` by a closed one."""
+class _SurfaceMeasuresBase(TypedDict):
+    levels: Floats
+    datum: float
+    tolerance: float
+    plan_area: Floats
+    volume_below: MeasureLevels
+    volume_above: MeasureLevels
+    plan_area_below: MeasureLevels
 
+
+class SurfaceMeasures(_SurfaceMeasuresBase, total=False):
+    """``FuzzySurface.measure`` (docs/method.md §14): the volumes between
+    the surface and the plane ``z = datum``, the plan area below it and
+    (unless ``area=False``) the surface area ``area``, per membership
+    function and level; ``tolerance`` is the relative accuracy the volumes
+    and plan areas are integrated to, each level's ``gap`` the bound
+    reached; ``plan_area`` the plan's area and its error bound."""
+
+    area: MeasureLevels
+
+
+class _AreaMeasureBase(TypedDict):
     kind: Literal["under", "enclosed"]
     upper: List[MeasureLevel]
     primary: List[MeasureLevel]
     lower: List[MeasureLevel]
+
+
+class AreaMeasure(_AreaMeasureBase, total=False):
+    """The area: ``"under"`` an open curve, ``"enclosed"`` by a closed one
+    (positive whichever way it runs); ``note`` when only the crisp layer
+    closes (the area of each curve closed by the chord between its ends)."""
+
+    note: str
 
 
 class PartialLevel(TypedDict):

@@ -148,3 +148,25 @@ def test_export_refuses_before_writing(tmp_path: Path) -> None:
     assert list(tmp_path.iterdir()) == []
     t2spline.export(TERRAIN, tmp_path / "t.step")
     assert (tmp_path / "t.step").read_text().startswith("ISO-10303-21;")
+
+
+def test_export_records_the_unit_as_the_command_does(cli: Path, tmp_path: Path) -> None:
+    job = json.loads(EXAMPLE.read_text())
+    job["units"] = "m"
+    env = {**os.environ, "SOURCE_DATE_EPOCH": "0"}
+    for given, code in [(None, "6"), ("in", "1")]:
+        ours = tmp_path / f"py-{given}.dxf"
+        theirs = tmp_path / f"cli-{given}.dxf"
+        os.environ["SOURCE_DATE_EPOCH"] = "0"
+        try:
+            t2spline.export(job, ours, units=given)  # type: ignore[arg-type]
+        finally:
+            del os.environ["SOURCE_DATE_EPOCH"]
+        path = tmp_path / "job.json"
+        path.write_text(json.dumps(job))
+        extra = ["--units", given] if given else []
+        subprocess.run([str(cli), "export", str(path), "-o", str(theirs), *extra], check=True, env=env)
+        assert ours.read_bytes() == theirs.read_bytes()
+        assert "$INSUNITS\n 70\n" + code + "\n" in ours.read_text()
+    with pytest.raises(ValueError, match='units: unknown unit "yd"'):
+        t2spline.export(job, tmp_path / "x.dxf", units="yd")  # type: ignore[arg-type]

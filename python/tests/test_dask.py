@@ -9,6 +9,7 @@ from __future__ import annotations
 import json
 import re
 import subprocess
+import sys
 from pathlib import Path
 from typing import Any, Callable, Dict, List
 
@@ -26,16 +27,42 @@ from conftest import EXAMPLE, ROOT, random_job  # noqa: E402
 JOBS, PARTITIONS = 20_000, 8
 
 
-def recipe() -> Dict[str, Any]:
-    """The recipe's code block of docs/scale.md, executed: its functions."""
+def recipe_text() -> str:
+    """The recipe's code block of docs/scale.md."""
     text = (ROOT / "docs" / "scale.md").read_text()
     block = re.search(
         r"<!-- recipe: run by python/tests/test_dask.py -->\n```python\n(.*?)```", text, re.S
     )
     assert block, "docs/scale.md has no recipe block"
+    return block.group(1)
+
+
+def recipe() -> Dict[str, Any]:
+    """The recipe's code block of docs/scale.md, executed as a module (its
+    guard keeps its main part from running): its functions."""
     names: Dict[str, Any] = {"__name__": "recipe"}
-    exec(compile(block.group(1), "docs/scale.md", "exec"), names)
+    exec(compile(recipe_text(), "docs/scale.md", "exec"), names)
     return names
+
+
+def test_the_recipe_runs_as_a_script_on_two_worker_processes(tmp_path: Path) -> None:
+    """Saved as a file and run as the page says: it writes its dataset,
+    runs it on two worker processes and writes one summary per job, the
+    numbers of run_table in this process."""
+    script = tmp_path / "recipe.py"
+    script.write_text(recipe_text())
+    out = subprocess.run(
+        [sys.executable, str(script), "jobs", "results"],
+        cwd=tmp_path, capture_output=True, text=True, timeout=600,
+    )
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.strip().endswith("4000 jobs run"), out.stdout
+    results = pq.read_table(tmp_path / "results").sort_by("job")
+    assert results.column("job").to_pylist() == list(range(4000))
+    assert set(results.column("status").to_pylist()) == {"ok"}
+    jobs = pq.read_table(tmp_path / "jobs").sort_by("id")
+    expected = t2spline.run_table(jobs)
+    assert results.column("error_max").to_pylist() == expected.column("error_max").to_pylist()
 
 
 def base_jobs() -> List[Dict[str, Any]]:
@@ -118,3 +145,27 @@ def test_the_dask_recipe_on_a_local_cluster_of_two_processes(cli: Path, tmp_path
         assert row["regime"] == want["regime"], k
         assert row["alpha"] == (want["alpha"] if want["alpha_used"] else None), k
         assert row["type_reduction"] == want["type_reduction"], k
+
+
+def test_partitions_built_from_pandas_are_mapped_on_two_processes(tmp_path: Path) -> None:
+    # `dd.from_pandas` ships each partition to a worker by pickle protocol 5,
+    # whose buffers may leave Arrow's 8-byte offsets at odd addresses.
+    pd = pytest.importorskip("pandas")
+    dd = pytest.importorskip("dask.dataframe")
+    bases = base_jobs()
+    n = 2_000
+    texts = [job_text(k, bases) for k in range(n)]
+    frame = pd.DataFrame({"id": np.arange(n, dtype=np.int64), "job": pd.array(texts, dtype="string[pyarrow]")})
+    run_partition: Callable[[Any], Any] = recipe()["run_partition"]
+    jobs = dd.from_pandas(frame, npartitions=4)
+    with distributed.LocalCluster(
+        n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None
+    ) as cluster, distributed.Client(cluster):
+        meta = run_partition(jobs._meta)
+        results = jobs.map_partitions(run_partition, meta=meta).compute()
+    results = results.sort_values("job")
+    assert results["job"].tolist() == list(range(n))
+    broken = [k for k in range(n) if k % 997 == 500]
+    assert [int(k) for k, s in zip(results["job"], results["status"]) if s != "ok"] == broken
+    expected = t2spline.run_table(pa.table({"id": np.arange(n), "job": texts})).to_pandas()
+    np.testing.assert_array_equal(results["error_max"].to_numpy(), expected["error_max"].to_numpy())

@@ -90,8 +90,9 @@ CASES: list[tuple[str, Callable[[], Any], type, str]] = [
      TypeError, "order: expected an int or a pair (u, v) of ints, got str"),
     ("FuzzyNumber crisp", lambda: t2spline.FuzzyNumber("1", (0.4, 1.9), (0.6, 1.6), (0.8, 1.3), 0.6),
      TypeError, f"crisp: {REAL} str"),
-    ("FuzzyNumber lower_height", lambda: t2spline.FuzzyNumber(1.0, (0.4, 1.9), (0.6, 1.6), (0.8, 1.3), None),
-     TypeError, f"lower_height: {REAL} NoneType"),
+    # None is the default (a crisp number's height, 1); a str is wrong.
+    ("FuzzyNumber lower_height", lambda: t2spline.FuzzyNumber(1.0, (0.4, 1.9), (0.6, 1.6), (0.8, 1.3), "0.6"),
+     TypeError, f"lower_height: {REAL} str"),
     # fit and centroid
     ("fit degree", lambda: fit(degree="3"), TypeError, "degree: expected an int or a pair (u, v) of ints, got str"),
     ("fit degree big", lambda: fit(degree=BIG), ValueError, f"degree: 18446744073709551616 {BEYOND}"),

@@ -125,6 +125,36 @@ def test_a_region_restored_from_parts_of_another_form_is_refused() -> None:
         t2spline.Region._restore("polygons", 0.1, "upper", 0.5, "xy")
 
 
+def test_a_restored_region_is_checked_as_a_computed_one() -> None:
+    # What a pickle restores is not trusted: each of these once loaded into a
+    # region with area NaN or -1 and invalid GeoJSON.
+    square = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]
+    ok = t2spline.Region._restore([(square, [])], 0.1, "upper", 0.5, "xy")
+    assert ok.area == 1.0
+    hole = [[0.25, 0.25], [0.25, 0.75], [0.75, 0.75], [0.75, 0.25]]
+    assert t2spline.Region._restore([(square, [hole])], 0.1, "upper", 0.5, "xy").area == 0.75
+    bad = [
+        ([([[0.0, 0.0], [float("nan"), 0.0], [1.0, 1.0]], [])], 0.1, 0.5,
+         "polygon 0, ring 0 (the exterior): every coordinate must be a finite number"),
+        ([(square[::-1], [])], 0.1, 0.5,
+         "polygon 0, ring 0 (the exterior): the exterior must run counter-clockwise"),
+        ([(square, [hole[::-1]])], 0.1, 0.5, "polygon 0, ring 1 (a hole): a hole must run clockwise"),
+        ([([[0.0, 0.0], [1.0, 1.0], [1.0, 0.0], [0.5, 2.0], [0.0, 1.0]], [])], 0.1, 0.5,
+         "polygon 0, ring 0 (the exterior): the ring crosses itself"),
+        ([(square + [square[0]], [])], 0.1, 0.5,
+         "polygon 0, ring 0 (the exterior): rings are stored open"),
+        ([(square[:2], [])], 0.1, 0.5, "polygon 0, ring 0 (the exterior): a ring needs at least three vertices"),
+        ([(square, [])], float("nan"), 0.5, "tolerance = NaN is outside (0, inf)"),
+        ([(square, [])], -1.0, 0.5, "tolerance = -1 is outside (0, inf)"),
+        ([(square, [])], 0.1, 5.0, "alpha = 5 is outside [0, 1]"),
+    ]
+    for polygons, tolerance, alpha, message in bad:
+        with pytest.raises(ValueError) as caught:
+            t2spline.Region._restore(polygons, tolerance, "upper", alpha, "xy")
+        assert str(caught.value).startswith(message), (message, str(caught.value))
+
+
+
 @pytest.mark.parametrize("method", ["fork", "spawn"])
 def test_curves_go_through_a_multiprocessing_pool(method: str) -> None:
     if method not in multiprocessing.get_all_start_methods():

@@ -207,7 +207,7 @@ def test_crisp_coordinates_grade_the_crisp_curve(cli: Path, tmp_path: Path, axes
     for row in rows:
         assert (row["upper"], row["primary"], row["lower"]) == pytest.approx((1.0, 1.0, H), abs=1e-9), row
     if axes == "x":
-        levels = section(cli, job, "--x", "3.5")["levels"]
+        levels = section(cli, job, "--x", "3.5", "--levels", "11")["levels"]
         ends = [
             (lv["alpha"], name, y)
             for lv in levels
@@ -359,7 +359,7 @@ def within(inner: List[List[float]], outer: List[List[float]], slack: float) -> 
 
 
 def test_section_levels_and_nesting(cli: Path) -> None:
-    result = section(cli, EXAMPLE, "--x", "3.5")
+    result = section(cli, EXAMPLE, "--x", "3.5", "--levels", "11")
     assert result["x"] == 3.5
     levels = result["levels"]
     assert [lv["alpha"] for lv in levels] == pytest.approx([k / 10 for k in range(11)], abs=1e-15)
@@ -388,7 +388,7 @@ def test_section_levels_and_nesting(cli: Path) -> None:
 
 def test_section_ends_have_the_level_as_grade(cli: Path, tmp_path: Path) -> None:
     x0 = 3.5
-    levels = section(cli, EXAMPLE, "--x", repr(x0))["levels"]
+    levels = section(cli, EXAMPLE, "--x", repr(x0), "--levels", "11")["levels"]
     ends = []
     for lv in levels:
         for name in ("upper", "primary", "lower"):
@@ -403,7 +403,7 @@ def test_section_ends_have_the_level_as_grade(cli: Path, tmp_path: Path) -> None
 
 def test_section_at_one_is_the_crisp_curve(cli: Path) -> None:
     # At x = 6 the crisp curve ends at (6, 1) (its last control point).
-    levels = section(cli, EXAMPLE, "--x", "6")["levels"]
+    levels = section(cli, EXAMPLE, "--x", "6", "--levels", "11")["levels"]
     top = levels[-1]
     assert top["alpha"] == 1.0
     for name in ("upper", "primary"):
@@ -428,7 +428,7 @@ def test_a_closed_curve_crosses_a_station_twice(cli: Path, tmp_path: Path) -> No
 
 
 def test_terrain_section_holds_the_crisp_height(cli: Path) -> None:
-    result = section(cli, TERRAIN, "--at", "250,200")
+    result = section(cli, TERRAIN, "--at", "250,200", "--levels", "11")
     assert (result["x"], result["y"]) == (250.0, 200.0)
     levels = result["levels"]
     assert len(levels) == 11
@@ -460,7 +460,7 @@ def test_the_terrain_grades_its_crisp_surface_and_its_section_ends(cli: Path, tm
     rows = grades(cli, TERRAIN, crisp, tmp_path)
     for row in rows:
         assert (row["upper"], row["primary"], row["lower"]) == pytest.approx((1.0, 1.0, H), abs=1e-9), row
-    levels = section(cli, TERRAIN, "--at", "250,200")["levels"]
+    levels = section(cli, TERRAIN, "--at", "250,200", "--levels", "11")["levels"]
     ends = [
         (lv["alpha"], name, z)
         for lv in levels
@@ -579,7 +579,7 @@ README = ROOT / "README.md"
 
 
 def transcripts(page: Path) -> List[tuple]:
-    """The `$ t2spline membership|region|section …` commands of the page's
+    """The `$ t2spline membership|region|section|envelope …` commands of the page's
     text blocks with the output shown under each (up to the next `$` line or
     the end of the block)."""
     found = []
@@ -604,7 +604,7 @@ def split_block(lines: List[str]) -> List[tuple]:
             out.append((line[2:], []))
         elif out:
             out[-1][1].append(line)
-    return [(cmd, shown) for cmd, shown in out if cmd.split()[1] in ("membership", "region", "section")]
+    return [(cmd, shown) for cmd, shown in out if cmd.split()[1] in ("membership", "region", "section", "envelope")]
 
 
 def matches(shown: List[str], got: str) -> bool:
@@ -675,3 +675,22 @@ def test_the_terrain_grades_of_the_set_page(cli: Path, tmp_path: Path) -> None:
     assert (on["upper"], on["primary"], on["lower"]) == pytest.approx((1.0, 1.0, H), abs=1e-9)
     assert "`(250, 200, 111.745625)`, on the crisp surface, has grades 1, 1 and 0.6" in page
     assert f"`(250, 200, 111.26)`, just inside the upper interval of the section below, {near['upper']:.3f}" in page
+
+
+def test_the_mixed_heights_example_of_the_set_page_is_what_the_program_prints(cli: Path) -> None:
+    """docs/set.md's block on mixed lower heights, run as written: every
+    line it prints is the program's."""
+    page = (ROOT / "docs" / "set.md").read_text()
+    block = page.split("<!-- mixed-heights: run by python/tests/test_set_cli.py -->\n```text\n", 1)[1]
+    block = block.split("\n```", 1)[0]
+    commands: list[tuple[str, list[str]]] = []
+    for line in block.splitlines():
+        if line.startswith("$ "):
+            commands.append((line[2:], []))
+        else:
+            commands[-1][1].append(line)
+    assert len(commands) == 2
+    for command, printed in commands:
+        shell = command.replace("t2spline ", f"{cli} ")
+        out = subprocess.run(["bash", "-c", shell], cwd=ROOT, capture_output=True, text=True, check=True)
+        assert out.stdout.splitlines() == printed, command

@@ -179,3 +179,47 @@ def test_a_table_without_job_texts_is_refused() -> None:
     )
     with pytest.raises(TypeError, match="samples"):
         t2spline.run_table(pa.table({"job": ["{}"]}), sample_count="many")  # type: ignore[arg-type]
+
+
+def misaligned(texts: List[str]) -> Any:
+    """A ``large_string`` array whose 8-byte offsets start at an odd address,
+    as pickle protocol 5 and Arrow IPC may hand them over (Arrow allows it)."""
+    data = "".join(texts).encode()
+    ends = np.cumsum([0] + [len(t.encode()) for t in texts]).astype(np.int64)
+    padded = pa.py_buffer(b"\0" + ends.tobytes())
+    offsets = padded.slice(1)
+    assert offsets.address % 8 != 0
+    return pa.Array.from_buffers(pa.large_string(), len(texts), [None, offsets, pa.py_buffer(data)])
+
+
+def test_every_valid_arrow_layout_of_the_texts_is_read(jobs: List[Dict[str, Any]]) -> None:
+    texts = [json.dumps(j) for j in jobs]
+    whole = t2spline.run_table(pa.table({"job": texts}))
+    layouts = {
+        "misaligned large_string": pa.table({"job": misaligned(texts)}),
+        "misaligned, sliced": pa.table({"job": misaligned(["pad", *texts, "pad"]).slice(1, len(texts))}),
+        "large_string": pa.table({"job": pa.array(texts, pa.large_string())}),
+        "string_view": pa.table({"job": pa.array(texts, pa.string_view())}),
+        "sliced": pa.table({"job": ["pad", "pad", *texts]}).slice(2),
+        "chunked in three": pa.table(
+            {"job": pa.chunked_array([texts[:5], texts[5:6], texts[6:]], pa.large_string())}
+        ),
+    }
+    for name, table in layouts.items():
+        assert table.num_rows == len(texts), name
+        got = t2spline.run_table(table)
+        assert got.drop_columns("job").equals(whole.drop_columns("job")), name
+
+
+def test_arguments_of_the_wrong_kind_are_named() -> None:
+    table = pa.table({"job": [EXAMPLE.read_text()]})
+    with pytest.raises(TypeError, match=r"^samples: expected True or False .* sample_count="):
+        t2spline.run_table(table, samples=5)  # type: ignore[call-overload]
+    with pytest.raises(TypeError, match=r"^column: expected the name of a column"):
+        t2spline.run_table(table, column=3)  # type: ignore[call-overload]
+    with pytest.raises(TypeError, match=r"^id: expected the name of a column"):
+        t2spline.run_table(table, id=["x"])  # type: ignore[call-overload]
+    for one, kind in [(str(EXAMPLE), "a str"), (EXAMPLE, "a path"), (EXAMPLE.read_bytes(), "bytes"),
+                      (json.loads(EXAMPLE.read_text()), "a dict")]:
+        with pytest.raises(TypeError, match=rf"^jobs: expected an iterable of jobs .* got {kind}; for one job use t2spline.run"):
+            t2spline.run_many(one)  # type: ignore[arg-type]

@@ -118,6 +118,7 @@ def calls() -> Dict[str, Callable[[], Any]]:
     surface = t2spline.FuzzySurface.from_job(CYLINDER)
     (u0, u1), (v0, v1) = surface.domain
     net = surface.solve(0.5)
+    terrain = t2spline.FuzzySurface.from_job(ROOT / "examples" / "fuzzy-terrain.json")
     x = np.linspace(0.0, 1.0, 101)
     return {
         "FuzzyCurve.sample": lambda: curve.sample(11),
@@ -136,6 +137,7 @@ def calls() -> Dict[str, Callable[[], Any]]:
         "FuzzySurface.membership": lambda: surface.membership([[0.5, 0.5, 0.5]]),
         "FuzzySurface.section": lambda: surface.section(0.5, 0.5, levels=3),
         "FuzzySurface.distance_sweep": lambda: surface.distance_sweep(0.5, samples=(5, 4)),
+        "FuzzySurface.measure": lambda: terrain.measure(levels=[0.5], datum=103.0),
         "SurfaceSolution.alpha_cut": lambda: net.alpha_cut,
         "SurfaceSolution.sample": lambda: net.sample(5, 4),
         "SurfaceSolution.distance": lambda: net.distance(),

@@ -58,3 +58,136 @@ def test_a_fuzzy_curve_finds_the_closest_point_of_every_layer() -> None:
             assert ld <= np.linalg.norm(dense - target, axis=1).min() + 1e-12
     with pytest.raises(ValueError, match=r"point: expected shape \(2,\) or \(m, 2\)"):
         curve.closest_points([1.0, 2.0, 3.0])
+
+
+# The core's capabilities (t2spline::capability) and the method that offers
+# each on each class: every class has the capability under the name given,
+# crisp objects in the singular, fuzzy objects per layer.
+CAPABILITIES = {
+    "Parametric": {
+        "NurbsCurve": "eval",
+        "NurbsSurface": "eval",
+        "FuzzyCurve": "eval_layers",
+        "FuzzySurface": "eval_layers",
+    },
+    "Differentiable": dict.fromkeys(
+        ["NurbsCurve", "NurbsSurface", "FuzzyCurve", "FuzzySurface"], "derivatives"
+    ),
+    "Curvature": {
+        "NurbsCurve": "curvature",
+        "NurbsSurface": "curvature",
+        "FuzzyCurve": "curvatures",
+        "FuzzySurface": "curvatures",
+    },
+    "Bounded": dict.fromkeys(
+        ["NurbsCurve", "NurbsSurface", "FuzzyCurve", "FuzzySurface"], "bounding_box"
+    ),
+    "Closest": {
+        "NurbsCurve": "closest_point",
+        "NurbsSurface": "closest_point",
+        "FuzzyCurve": "closest_points",
+        "FuzzySurface": "closest_points",
+    },
+}
+KNOT_OPERATIONS = ["insert_knot", "refine_knots", "elevate_degree", "split_at", "segment"]
+
+# What a curve class has and its surface class lacks, or the other way
+# round, and why; any other difference fails the test below, and so does a
+# reason for a difference that no longer exists.
+CURVE_ONLY = {
+    "NurbsCurve": {
+        "arc_length": "a length is a curve's measure; a surface has no such parameter",
+        "param_at_length": "a surface has no arc-length parameter",
+        "tangent": "a surface has a normal instead",
+        "clamped": "surfaces are built clamped",
+        "degree": "a surface has degree_u and degree_v",
+        "knots": "a surface has knots_u and knots_v",
+    },
+    "FuzzyCurve": {
+        "degree": "a surface has degree_u and degree_v",
+        "knots": "a surface has knots_u and knots_v",
+        "layer_curve": "its surface counterpart is layer_surface",
+        "crisp_curve": "its surface counterpart is crisp_surface",
+        "region": "alpha-regions are polygons of plane curves; a surface has envelopes and contours",
+        "membership_grid": "a surface's grades over a plan are its envelope (t2spline envelope)",
+    },
+}
+SURFACE_ONLY = {
+    "NurbsSurface": {
+        "isocurve": "a curve has no isocurves",
+        "normal": "a curve in space has no single normal",
+        "shape": "a curve's control points are a list, not a net",
+        "degree_u": "a curve has one degree",
+        "degree_v": "a curve has one degree",
+        "knots_u": "a curve has one knot vector",
+        "knots_v": "a curve has one knot vector",
+    },
+    "FuzzySurface": {
+        "isocurve": "a curve has no isocurves",
+        "shape": "a curve's control points are a list, not a net",
+        "degree_u": "a curve has one degree",
+        "degree_v": "a curve has one degree",
+        "knots_u": "a curve has one knot vector",
+        "knots_v": "a curve has one knot vector",
+        "layer_surface": "its curve counterpart is layer_curve",
+        "crisp_surface": "its curve counterpart is crisp_curve",
+    },
+}
+
+
+def public(cls: type) -> set:
+    return {name for name in dir(cls) if not name.startswith("_")}
+
+
+def test_every_class_has_every_capability_under_its_name() -> None:
+    for capability, names in CAPABILITIES.items():
+        for cls, method in names.items():
+            assert callable(getattr(getattr(t2spline, cls), method, None)), (capability, cls, method)
+    for cls in ["NurbsCurve", "NurbsSurface", "FuzzyCurve", "FuzzySurface"]:
+        for method in KNOT_OPERATIONS:
+            assert callable(getattr(getattr(t2spline, cls), method, None)), (cls, method)
+
+
+@pytest.mark.parametrize(
+    "curve, surface", [("NurbsCurve", "NurbsSurface"), ("FuzzyCurve", "FuzzySurface")]
+)
+def test_curves_and_surfaces_differ_only_where_a_reason_is_stated(curve: str, surface: str) -> None:
+    c, s = public(getattr(t2spline, curve)), public(getattr(t2spline, surface))
+    assert c - s == set(CURVE_ONLY[curve]), f"{curve} only: {sorted(c - s)}"
+    assert s - c == set(SURFACE_ONLY[surface]), f"{surface} only: {sorted(s - c)}"
+
+
+def test_a_fuzzy_curve_measures_its_layers_as_their_curves_do() -> None:
+    curve = t2spline.FuzzyCurve.from_job(EXAMPLE)
+    t = np.linspace(0.05, 0.95, 7).reshape(7, 1)
+    curvatures = curve.curvatures(t)
+    derivatives = curve.derivatives(t, order=2)
+    assert curvatures.shape == (7, 1, 7) and derivatives.shape == (7, 1, 7, 3, 2)
+    lo, hi = curve.bounding_box()
+    for i, name in enumerate(LAYERS):
+        layer = curve.layer_curve(name)
+        np.testing.assert_array_equal(curvatures[..., i], layer.curvature(t))
+        np.testing.assert_array_equal(derivatives[..., i, :, :], layer.derivatives(t, order=2))
+        llo, lhi = layer.bounding_box()
+        assert np.all(lo <= llo) and np.all(lhi <= hi)
+        assert np.all(layer.sample(2001) >= lo - 1e-12) and np.all(layer.sample(2001) <= hi + 1e-12)
+    # The box is the union of the layers' boxes: each side is attained.
+    boxes = np.array([curve.layer_curve(name).bounding_box() for name in LAYERS])
+    np.testing.assert_array_equal(lo, boxes[:, 0].min(axis=0))
+    np.testing.assert_array_equal(hi, boxes[:, 1].max(axis=0))
+    with pytest.raises(ValueError, match="outside the domain"):
+        curve.curvatures(1.5)
+
+
+def test_a_fuzzy_surface_differentiates_its_layers_as_their_surfaces_do() -> None:
+    surface = t2spline.FuzzySurface.from_job(CYLINDER)
+    (u0, u1), (v0, v1) = surface.domain
+    u = np.linspace(u0, u1, 4)[:, None]
+    v = np.linspace(v0, v1, 3)[None, :]
+    d = surface.derivatives(u, v, order=2)
+    assert d.shape == (4, 3, 7, 3, 3, 3)
+    for i, name in enumerate(LAYERS):
+        np.testing.assert_array_equal(
+            d[:, :, i], surface.layer_surface(name).derivatives(u, v, order=2)
+        )
+    assert np.isnan(d[..., 2, 1, :]).all() and not np.isnan(d[..., 1, 1, :]).any()

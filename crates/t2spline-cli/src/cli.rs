@@ -49,9 +49,19 @@ pub enum Command {
     /// The fuzzy value at a station: the y-intervals of a curve at x = X0, or
     /// the z-intervals of a surface at (X0, Y0), at each level (JSON).
     Section(SectionArgs),
-    /// The uncertainty of what is measured on a fuzzy curve: arc length,
-    /// area, derivative, tangent angle and curvature as intervals over the
-    /// control points inside their cuts, at each level (JSON).
+    /// The envelope of a fuzzy surface: the least and greatest height above
+    /// every cell of a plan grid, at each level and for each membership
+    /// function (CSV, Parquet, or a GeoTIFF a GIS opens).
+    Envelope(EnvelopeArgs),
+    /// The fuzzy contour of a fuzzy surface: where the surface can cross a
+    /// height at each level, per membership function, as GeoJSON polygons,
+    /// beside the crisp surface's contour.
+    Contour(ContourArgs),
+    /// The uncertainty of what is measured on a fuzzy curve (arc length,
+    /// area, derivative, tangent angle and curvature) or on a fuzzy surface
+    /// of crisp plan (the volumes above and below a datum, the plan area
+    /// below it, the surface area), as intervals over the control points
+    /// inside their cuts, at each level (JSON).
     Measure(MeasureArgs),
     /// Time the sampling engine: one line per case with the median of 5 runs.
     Bench(BenchArgs),
@@ -79,7 +89,7 @@ pub struct RunArgs {
     #[arg(short, long, value_name = "OUT.json|DIR")]
     pub output: Option<PathBuf>,
     /// The level alpha in [0, 1]; overrides the job file.
-    #[arg(long, value_name = "A", allow_negative_numbers = true)]
+    #[arg(long, value_name = "A", allow_hyphen_values = true)]
     pub alpha: Option<f64>,
     /// Number of uniform parameters to sample the curves at (at least 2); for
     /// a surface `U,V` (or `N` for both directions); overrides the job file.
@@ -105,7 +115,7 @@ pub struct RunArgs {
     /// Also compute the derivatives of orders 1 to K of the crisp and the
     /// defuzzified curve at the sample parameters, and their arc lengths
     /// (result keys `curves.derivatives`, `curves.arc_length`); K from 1 to 16.
-    #[arg(long, value_name = "K", allow_negative_numbers = true)]
+    #[arg(long, value_name = "K", allow_hyphen_values = true)]
     pub derivatives: Option<i64>,
     #[command(flatten)]
     pub reduction: ReductionArg,
@@ -229,7 +239,7 @@ pub struct FigureArgs {
     /// The station `x = X0` of the `section` figure (plane curves only):
     /// the fuzzy value of y there. Default: x of the crisp curve at the
     /// middle of its domain.
-    #[arg(long, value_name = "X0", allow_negative_numbers = true)]
+    #[arg(long, value_name = "X0", allow_hyphen_values = true)]
     pub station: Option<f64>,
 }
 
@@ -241,13 +251,14 @@ pub struct PlotArgs {
     /// The folder to write the figures into (created if missing).
     #[arg(short, long, value_name = "DIR")]
     pub output: PathBuf,
-    /// Which files to write per figure.
-    #[arg(long, value_enum, default_value_t = FormatArg::Both)]
-    pub format: FormatArg,
+    /// Which files to write per figure [default: both, or svg where the
+    /// command was built without PNG, as the Python package's is].
+    #[arg(long, value_enum)]
+    pub format: Option<FormatArg>,
     #[command(flatten)]
     pub figures: FigureArgs,
     /// The level alpha in [0, 1]; overrides the job file.
-    #[arg(long, value_name = "A", allow_negative_numbers = true)]
+    #[arg(long, value_name = "A", allow_hyphen_values = true)]
     pub alpha: Option<f64>,
     #[command(flatten)]
     pub reduction: ReductionArg,
@@ -263,7 +274,7 @@ pub struct ReportArgs {
     pub output: PathBuf,
     /// The alpha the slider starts at; overrides the job file (default: the
     /// job's alpha, else 0.5).
-    #[arg(long, value_name = "A", allow_negative_numbers = true)]
+    #[arg(long, value_name = "A", allow_hyphen_values = true)]
     pub alpha: Option<f64>,
     #[command(flatten)]
     pub figures: FigureArgs,
@@ -303,7 +314,7 @@ pub struct FitArgs {
     pub quiet: bool,
     /// The level alpha in [0, 1] to carry into the fitted job (in place of
     /// the data file's), so that `run` can run it.
-    #[arg(long, value_name = "A", allow_negative_numbers = true)]
+    #[arg(long, value_name = "A", allow_hyphen_values = true)]
     pub alpha: Option<f64>,
     /// How readings become fuzzy numbers, when the data file is a readings
     /// file (CSV).
@@ -317,11 +328,11 @@ pub struct FitArgs {
 pub struct ReadingsArgs {
     /// The instrument's accuracy T: the upper membership function reaches T
     /// beyond the smallest and the largest reading [default: 0].
-    #[arg(long, value_name = "T", allow_negative_numbers = true)]
+    #[arg(long, value_name = "T", allow_hyphen_values = true)]
     pub tolerance: Option<f64>,
     /// The height of the lower membership function, in (0, 1] [default: 0.5:
     /// the quartiles hold half of the readings].
-    #[arg(long, value_name = "H", allow_negative_numbers = true)]
+    #[arg(long, value_name = "H", allow_hyphen_values = true)]
     pub lower_height: Option<f64>,
     /// The degree of the curve to fit, carried into the data file
     /// [default: 3]; for a net `P,Q` (along u, along v), or `P` for both
@@ -381,7 +392,7 @@ pub struct FuzzifyArgs {
     pub output: Option<PathBuf>,
     /// The level alpha in [0, 1] to carry into the data file (and so into the
     /// fitted job).
-    #[arg(long, value_name = "A", allow_negative_numbers = true)]
+    #[arg(long, value_name = "A", allow_hyphen_values = true)]
     pub alpha: Option<f64>,
     /// How readings become fuzzy numbers.
     #[command(flatten)]
@@ -415,8 +426,12 @@ pub struct ExportArgs {
     pub format: Option<CadFormatArg>,
     /// The level alpha in [0, 1] of the defuzzified curve; overrides the job
     /// file.
-    #[arg(long, value_name = "A", allow_negative_numbers = true)]
+    #[arg(long, value_name = "A", allow_hyphen_values = true)]
     pub alpha: Option<f64>,
+    /// The unit of the coordinates that the file records (the numbers are
+    /// written as they are) [default: the job's `units`, else mm].
+    #[arg(long, value_name = "UNIT", value_parser = ["mm", "cm", "m", "in", "ft"])]
+    pub units: Option<String>,
     #[command(flatten)]
     pub reduction: ReductionArg,
 }
@@ -435,21 +450,33 @@ pub struct MembershipArgs {
     pub output: Option<PathBuf>,
 }
 
+/// The levels of `measure`, `section` and `region`.
+#[derive(Debug, Args)]
+pub struct LevelsArg {
+    /// One level alpha in [0, 1] [default: the job's alpha].
+    #[arg(long, value_name = "A", allow_hyphen_values = true)]
+    pub alpha: Option<f64>,
+    /// N levels equally spaced from 0 to 1 (at least 2) instead of one
+    /// [default without --alpha: the job's alpha, else 11 (measure,
+    /// section)].
+    #[arg(long, value_name = "N", conflicts_with = "alpha")]
+    pub levels: Option<u64>,
+}
+
 /// Arguments of `t2spline region`.
 #[derive(Debug, Args)]
 pub struct RegionArgs {
     /// The job file (a curve); `-` reads standard input.
     pub job: PathBuf,
-    /// The level alpha in [0, 1].
-    #[arg(long, value_name = "A", allow_negative_numbers = true)]
-    pub alpha: f64,
+    #[command(flatten)]
+    pub levels: LevelsArg,
     /// Write the GeoJSON here instead of standard output (`-` is standard
     /// output).
     #[arg(short, long, value_name = "FILE")]
     pub output: Option<PathBuf>,
     /// The largest distance between the outline and the true region [default:
     /// 1e-6 of the diagonal of the crisp control points' bounding box].
-    #[arg(long, value_name = "T", allow_negative_numbers = true)]
+    #[arg(long, value_name = "T", allow_hyphen_values = true)]
     pub tolerance: Option<f64>,
 }
 
@@ -462,42 +489,101 @@ pub struct SectionArgs {
     #[arg(
         long,
         value_name = "X0",
-        allow_negative_numbers = true,
+        allow_hyphen_values = true,
         conflicts_with = "at"
     )]
     pub x: Option<f64>,
     /// The station of a surface: the vertical line through (X0, Y0).
-    #[arg(long, value_name = "X0,Y0", allow_negative_numbers = true)]
+    #[arg(long, value_name = "X0,Y0", allow_hyphen_values = true)]
     pub at: Option<String>,
-    /// The levels: N equally spaced from 0 to 1 (at least 2).
-    #[arg(long, value_name = "N", default_value_t = 11)]
-    pub levels: u64,
+    #[command(flatten)]
+    pub levels: LevelsArg,
     /// Write the JSON here instead of standard output (`-` is standard
     /// output).
     #[arg(short, long, value_name = "FILE")]
     pub output: Option<PathBuf>,
     /// The largest error of an interval end (plane curves) [default: 1e-6 of
     /// the diagonal of the crisp control points' bounding box].
-    #[arg(long, value_name = "T", allow_negative_numbers = true)]
+    #[arg(long, value_name = "T", allow_hyphen_values = true)]
     pub tolerance: Option<f64>,
+}
+
+/// Arguments of `t2spline envelope`.
+#[derive(Debug, Args)]
+pub struct EnvelopeArgs {
+    /// The job file (a surface); `-` reads standard input.
+    pub job: PathBuf,
+    /// The grid: NX cells along x and NY along y.
+    #[arg(long, value_name = "NX,NY")]
+    pub grid: String,
+    /// The levels: N equally spaced from 0 to 1 (at least 2) [default: 11].
+    #[arg(long, value_name = "N", conflicts_with = "alpha")]
+    pub levels: Option<u64>,
+    /// One level alpha in [0, 1] instead of --levels.
+    #[arg(long, value_name = "A", allow_hyphen_values = true)]
+    pub alpha: Option<f64>,
+    /// The plan extent of the grid [default: the surface's].
+    #[arg(long, value_name = "X0,Y0,X1,Y1", allow_hyphen_values = true)]
+    pub extent: Option<String>,
+    /// The coordinate reference system of x and y, recorded in a GeoTIFF:
+    /// EPSG:CODE, optionally :projected or :geographic (without it, common
+    /// geographic codes such as 4326 and 4258 are geographic, others
+    /// projected).
+    #[arg(long, value_name = "EPSG:CODE")]
+    pub crs: Option<String>,
+    /// Write the envelope here instead of a CSV table on standard output:
+    /// `.tif`/`.tiff` a GeoTIFF, `.csv` or `.parquet` a long table (`-` is
+    /// standard output).
+    #[arg(short, long, value_name = "FILE")]
+    pub output: Option<PathBuf>,
+}
+
+/// Arguments of `t2spline contour`.
+#[derive(Debug, Args)]
+pub struct ContourArgs {
+    /// The job file (a surface); `-` reads standard input.
+    pub job: PathBuf,
+    /// The height Z0 whose crossings are traced (e.g. 0, the shoreline).
+    #[arg(long, value_name = "Z0", allow_hyphen_values = true)]
+    pub z: f64,
+    #[command(flatten)]
+    pub levels: LevelsArg,
+    /// The grid: NX cells along x and NY along y [default: 8 cells per
+    /// shortest knot span, 16 to 1024 a side].
+    #[arg(long, value_name = "NX,NY")]
+    pub grid: Option<String>,
+    /// The plan extent of the grid [default: the surface's].
+    #[arg(long, value_name = "X0,Y0,X1,Y1", allow_hyphen_values = true)]
+    pub extent: Option<String>,
+    /// Write the GeoJSON here instead of standard output (`-` is standard
+    /// output).
+    #[arg(short, long, value_name = "OUT.geojson")]
+    pub output: Option<PathBuf>,
 }
 
 /// Arguments of `t2spline measure`.
 #[derive(Debug, Args)]
 pub struct MeasureArgs {
-    /// The job file (a curve); `-` reads standard input.
+    /// The job file (a curve or a surface of crisp x and y); `-` reads
+    /// standard input.
     pub job: PathBuf,
-    /// The levels: N equally spaced from 0 to 1 (at least 2); the lower
-    /// function's lists stop at its height.
-    #[arg(long, value_name = "N", default_value_t = 11)]
-    pub levels: u64,
-    /// Parameters at which to measure the derivative, the tangent angle
+    #[command(flatten)]
+    pub levels: LevelsArg,
+    /// Curves: parameters at which to measure the derivative, the tangent angle
     /// (plane curves) and the curvature, comma-separated.
-    #[arg(long, value_name = "T1,T2,...", allow_negative_numbers = true)]
+    #[arg(long, value_name = "T1,T2,...", allow_hyphen_values = true)]
     pub at: Option<String>,
     /// The order of the derivative at each parameter of --at (1 to 64).
     #[arg(long, value_name = "K", default_value_t = 1)]
     pub order: u64,
+    /// Surfaces: the height Z0 of the plane the volumes and the plan area
+    /// below are measured from (default 0).
+    #[arg(long, value_name = "Z0", allow_hyphen_values = true)]
+    pub datum: Option<f64>,
+    /// Surfaces: leave out the surface area (a convex minimisation and a
+    /// vertex search per level; the volumes cost far less).
+    #[arg(long)]
+    pub no_area: bool,
     /// Write the JSON here instead of standard output (`-` is standard
     /// output).
     #[arg(short, long, value_name = "FILE")]

@@ -30,6 +30,49 @@ pub fn shown(path: &Path) -> String {
     t2spline_io::printable(&path.display().to_string())
 }
 
+/// A job that this command does not take (a curve where a surface is
+/// needed, …), named by its file: `FILE: message`, exit code 2.
+pub fn unsuited(path: &Path, message: &str) -> anyhow::Error {
+    Error::Invalid {
+        file: job_name(path),
+        problems: vec![t2spline_io::Problem {
+            line_column: None,
+            message: message.to_owned(),
+        }],
+    }
+    .into()
+}
+
+/// The extension of `path` in lower case (`OUT.SVG` → `svg`), if any.
+pub fn extension(path: &Path) -> Option<String> {
+    path.extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase)
+}
+
+/// Refuses, naming `option`, an output `path` whose extension (in any case)
+/// is one of `files`, where the command writes something else: `wanted`
+/// says what it writes and how to get the file the name asks for. A folder
+/// that exists already is taken as it is.
+///
+/// # Errors
+/// [`crate::exit::OptionError`] naming the option, the name and the rule.
+pub fn refuse_extension(
+    option: &'static str,
+    path: &Path,
+    files: &[&str],
+    wanted: &str,
+) -> anyhow::Result<()> {
+    match extension(path) {
+        Some(e) if files.contains(&e.as_str()) && !path.is_dir() => Err(crate::exit::OptionError {
+            option,
+            message: format!("`{}` ends in .{e}, but {wanted}", shown(path)),
+        }
+        .into()),
+        _ => Ok(()),
+    }
+}
+
 /// The text at `path`, or of standard input for `-`, within the size limit and
 /// as UTF-8.
 pub fn read_input(path: &Path) -> Result<String, Error> {
@@ -43,6 +86,13 @@ pub fn read_input(path: &Path) -> Result<String, Error> {
 /// Reads and validates the job at `path`, or from standard input for `-`.
 pub fn read_job(path: &Path) -> Result<Job, Error> {
     parse_job(&read_input(path)?, &job_name(path))
+}
+
+/// Says `line` on standard error as `t2spline COMMAND: LINE`. A closed or
+/// gone standard error (`2>&-`, `2>&1 | head`) is no reason to stop: the
+/// command goes on to write its outputs.
+pub fn note(command: &str, line: impl std::fmt::Display) {
+    let _ = writeln!(std::io::stderr().lock(), "t2spline {command}: {line}");
 }
 
 /// Writes to standard output with `write`; a failure is an [`Error::Write`]

@@ -308,3 +308,75 @@ fn readings_on_standard_input_are_told_by_their_content() {
         ))
         .stdout(predicate::str::contains("\"knots\""));
 }
+
+#[test]
+fn export_names_are_matched_without_case_and_a_contradicting_format_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let upper = dir.path().join("C.STEP");
+    t2spline()
+        .args(["export", PAPER, "-o"])
+        .arg(&upper)
+        .assert()
+        .code(0);
+    assert!(std::fs::read_to_string(&upper)
+        .unwrap()
+        .starts_with("ISO-10303-21;\n"));
+    // The same format named twice is no contradiction.
+    t2spline()
+        .args(["export", PAPER, "--format", "step", "-o"])
+        .arg(dir.path().join("d.Stp"))
+        .assert()
+        .code(0);
+    let step = dir.path().join("e.step");
+    t2spline()
+        .args(["export", PAPER, "--format", "dxf", "-o"])
+        .arg(&step)
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains(
+            "--format: dxf contradicts the name",
+        ))
+        .stderr(predicate::str::contains("whose extension says step"));
+    assert!(!step.exists());
+}
+
+/// The unit a CAD file records: `--units`, else the job's `units`, else
+/// millimetres; a unit not in the list is refused by name.
+#[test]
+fn export_records_the_unit_of_the_option_else_the_job() {
+    let dir = tempfile::tempdir().unwrap();
+    let example = root().join("examples/paper-alg-1-1.json");
+    let mut job: Value = serde_json::from_str(&std::fs::read_to_string(&example).unwrap()).unwrap();
+    job["units"] = Value::from("m");
+    let in_metres = dir.path().join("metres.json");
+    std::fs::write(&in_metres, job.to_string()).unwrap();
+    let insunits = |job: &Path, extra: &[&str]| {
+        let out = dir.path().join("out.dxf");
+        t2spline()
+            .arg("export")
+            .arg(job)
+            .arg("-o")
+            .arg(&out)
+            .args(extra)
+            .assert()
+            .success();
+        let text = std::fs::read_to_string(&out).unwrap();
+        let at = text.find("$INSUNITS\n 70\n").expect("the header variable");
+        text[at + 14..].lines().next().unwrap().to_owned()
+    };
+    assert_eq!(insunits(&example, &[]), "4");
+    assert_eq!(insunits(&in_metres, &[]), "6");
+    assert_eq!(insunits(&in_metres, &["--units", "in"]), "1");
+    t2spline()
+        .arg("export")
+        .arg(&example)
+        .args([
+            "-o",
+            dir.path().join("x.dxf").to_str().unwrap(),
+            "--units",
+            "yd",
+        ])
+        .assert()
+        .code(2)
+        .stderr(predicate::str::contains("--units").and(predicate::str::contains("yd")));
+}

@@ -187,8 +187,9 @@ fn two_outputs_of_one_run_never_share_a_file() {
                 "--csv: out holds out/r.json, the output of --output",
             ),
             (
+                // Refused by its name already: run -o writes JSON.
                 vec!["run", "J.json", "-o", "cc/stage1-layers.csv", "--csv", "cc"],
-                "--csv: cc holds cc/stage1-layers.csv, the output of --output",
+                "--output: `cc/stage1-layers.csv` ends in .csv, but run -o writes the result as JSON",
             ),
             (
                 vec![

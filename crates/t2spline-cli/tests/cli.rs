@@ -746,3 +746,82 @@ fn csv_and_output_are_written_all_or_nothing() {
     );
     assert_empty_dir(dir.path(), &[]);
 }
+
+/// A negative number in any form is an option's value, never taken for a
+/// flag: `-1e-3`, `-.5`, `-0`, `-5E0`, and lists that start with one.
+#[test]
+fn negative_numbers_in_any_form_are_values() {
+    let curve = example();
+    let curve = curve.to_str().unwrap();
+    let terrain = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/fuzzy-terrain.json");
+    let terrain = terrain.to_str().unwrap();
+    let cases: [&[&str]; 7] = [
+        &["section", curve, "--x", "-1e-3"],
+        &["section", curve, "--x", "-.5"],
+        &["region", curve, "--alpha", "-0"],
+        &["measure", terrain, "--datum", "-5E0", "--no-area"],
+        &["section", terrain, "--at", "-.5,1"],
+        &[
+            "envelope",
+            terrain,
+            "--grid",
+            "3,3",
+            "--extent",
+            "-1e0,-1,2,2",
+        ],
+        &["run", curve, "--alpha", "-.5"],
+    ];
+    for args in cases {
+        let out = t2spline().args(args).output().unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(
+            !stderr.contains("unexpected argument"),
+            "{args:?}: {stderr}"
+        );
+        if args.contains(&"-.5") && args[0] == "run" {
+            // A value, and out of range: refused by name.
+            assert_eq!(out.status.code(), Some(2), "{args:?}");
+            assert!(stderr.contains("alpha"), "{args:?}: {stderr}");
+        } else {
+            assert!(out.status.success(), "{args:?}: {stderr}");
+        }
+    }
+    let out = t2spline()
+        .args(["region", curve, "--alpha", "-0"])
+        .output()
+        .unwrap();
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(
+        text.contains("\"alpha\": 0.0") && !text.contains("-0.0"),
+        "{text}"
+    );
+}
+
+/// An output name whose extension (in any case) asks for another kind of
+/// output than the command writes is refused naming both, and nothing is
+/// written: `plot` and `report` write folders, `run -o` writes JSON.
+#[test]
+fn an_output_named_for_another_kind_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let job = example();
+    let job = job.to_str().unwrap();
+    let cases = [
+        ("plot", "figures.SVG", "plot writes a folder of figures"),
+        ("report", "report.Html", "report writes a folder"),
+        ("run", "result.CSV", "run -o writes the result as JSON"),
+    ];
+    for (command, name, words) in cases {
+        let out = dir.path().join(name);
+        let result = t2spline()
+            .args([command, job, "-o", out.to_str().unwrap()])
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&result.stderr);
+        assert_eq!(result.status.code(), Some(2), "{command}: {stderr}");
+        assert!(
+            stderr.contains("--output") && stderr.contains(name) && stderr.contains(words),
+            "{stderr}"
+        );
+        assert!(!out.exists(), "{command} wrote {name}");
+    }
+}

@@ -431,3 +431,43 @@ fn a_fit_of_readings_takes_alpha_and_its_job_runs() {
         .code(0);
     assert_eq!(read_json(&over)["alpha"], json!(0.9));
 }
+
+#[test]
+fn a_closed_or_gone_standard_error_does_not_stop_the_fit() {
+    // The report goes to standard error; `fit … 2>&1 | head` closes it early
+    // and `2>&-` closes it from the start. The fit is written either way.
+    let dir = tempfile::tempdir().unwrap();
+    for closed_at_start in [false, true] {
+        let out = dir.path().join(format!("fit-{closed_at_start}.json"));
+        let status = if closed_at_start {
+            // A shell's `2>&-`: descriptor 2 closed in the command.
+            std::process::Command::new("sh")
+                .arg("-c")
+                .arg(r#"exec "$0" fit "$1" -o "$2" 2>&-"#)
+                .arg(env!("CARGO_BIN_EXE_t2spline"))
+                .arg(example())
+                .arg(&out)
+                .status()
+                .unwrap()
+        } else {
+            let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_t2spline"))
+                .arg("fit")
+                .arg(example())
+                .arg("-o")
+                .arg(&out)
+                .stdout(std::process::Stdio::null())
+                .stderr(std::process::Stdio::piped())
+                .spawn()
+                .unwrap();
+            // The reader goes away before the report is written.
+            drop(child.stderr.take());
+            child.wait().unwrap()
+        };
+        assert!(
+            status.success(),
+            "closed at start: {closed_at_start}: {status:?}"
+        );
+        let job = read_json(&out);
+        assert!(job["points"].as_array().is_some_and(|p| !p.is_empty()));
+    }
+}

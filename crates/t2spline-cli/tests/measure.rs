@@ -1,10 +1,13 @@
 //! `measure` (quantities measured on a fuzzy curve, docs/method.md §11):
 //! the file's shape on the shipped example, the output file written
 //! atomically, exit codes and messages naming the flag and the rule, no
-//! output file when the input is bad, and a surface refused.
+//! output file when the input is bad; a surface's volumes, plan area and
+//! surface area (§14).
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
+
+mod common;
+use common::{run, s};
 
 fn example() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/paper-alg-1-1.json")
@@ -12,22 +15,6 @@ fn example() -> PathBuf {
 
 fn terrain() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/fuzzy-terrain.json")
-}
-
-fn run(args: &[&str]) -> (i32, String, String) {
-    let out = Command::new(env!("CARGO_BIN_EXE_t2spline"))
-        .args(args)
-        .output()
-        .expect("the binary runs");
-    (
-        out.status.code().expect("exited, not killed"),
-        String::from_utf8(out.stdout).expect("UTF-8"),
-        String::from_utf8(out.stderr).expect("UTF-8"),
-    )
-}
-
-fn s(p: &Path) -> &str {
-    p.to_str().expect("UTF-8 path")
 }
 
 /// `args` followed by `-o OUT` must exit 2 with a message holding `words`,
@@ -51,8 +38,16 @@ fn refused(args: &[&str], words: &str) {
 fn the_example_measured_into_a_file() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("m.json");
-    let (code, stdout, stderr) =
-        run(&["measure", s(&example()), "--at", "0.25,0.5", "-o", s(&out)]);
+    let (code, stdout, stderr) = run(&[
+        "measure",
+        s(&example()),
+        "--levels",
+        "11",
+        "--at",
+        "0.25,0.5",
+        "-o",
+        s(&out),
+    ]);
     assert_eq!(code, 0, "{stderr}");
     assert_eq!(stdout, "");
     let v: serde_json::Value =
@@ -98,15 +93,89 @@ fn bad_flags_name_the_flag_and_write_nothing() {
         "--at: item 2 `x` is not a finite number",
     );
     refused(&[job, "--at", "nan"], "--at: item 1");
-    refused(&[job, "--levels", "1"], "--levels: 1 is outside 2 ..= 1001");
+    refused(&[job, "--levels", "1"], "--levels: 1 is outside 2 ..= 51");
     refused(&[job, "--levels", "5000"], "--levels");
     refused(&[job, "--order", "0"], "--order: 0 is outside 1 ..= 64");
 }
 
 #[test]
-fn a_surface_is_refused() {
+fn a_surface_is_measured_from_its_datum() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("m.json");
     let t = terrain();
-    refused(&[s(&t)], "measures are taken of curves");
+    let (code, stdout, stderr) = run(&[
+        "measure",
+        s(&t),
+        "--levels",
+        "2",
+        "--datum",
+        "103",
+        "--no-area",
+        "-o",
+        s(&out),
+    ]);
+    assert_eq!(code, 0, "{stderr}");
+    assert_eq!(stdout, "");
+    let v: serde_json::Value = serde_json::from_slice(&std::fs::read(&out).unwrap()).unwrap();
+    assert_eq!(v["levels"], serde_json::json!([0.0, 1.0]));
+    assert_eq!(v["datum"], 103.0);
+    assert_eq!(v["tolerance"], 1e-9);
+    assert!(v.get("area").is_none(), "--no-area: {v}");
+    let plan = v["plan_area"][0].as_f64().unwrap();
+    // The patch covers 500 m x 400 m.
+    assert!((plan - 200_000.0).abs() < 1e-6, "{plan}");
+    for key in ["volume_below", "volume_above", "plan_area_below"] {
+        for f in ["upper", "primary", "lower"] {
+            let levels = v[key][f].as_array().expect("a list per function");
+            assert!(!levels.is_empty(), "{key}.{f}");
+            for l in levels {
+                let (min, max) = (l["min"].as_f64().unwrap(), l["max"].as_f64().unwrap());
+                assert!(0.0 <= min && min <= max, "{key}.{f}: {l}");
+                assert_eq!(l["exact"], true, "{key}.{f}: {l}");
+                assert!(
+                    l["gap"].as_f64().unwrap() <= 1e-9 * max.max(plan),
+                    "{key}.{f}: {l}"
+                );
+            }
+        }
+        // The level 0 interval holds the level 1 one.
+        let u = &v[key]["upper"];
+        assert!(
+            u[0]["min"].as_f64() <= u[1]["min"].as_f64()
+                && u[1]["max"].as_f64() <= u[0]["max"].as_f64(),
+            "{key}: {u}"
+        );
+    }
+    let flooded = v["plan_area_below"]["upper"][0]["max"].as_f64().unwrap();
+    assert!(0.0 < flooded && flooded < plan, "{flooded}");
+}
+
+#[test]
+fn a_surface_area_at_one_level() {
+    let (code, stdout, stderr) = run(&["measure", s(&terrain()), "--alpha", "1"]);
+    assert_eq!(code, 0, "{stderr}");
+    let v: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    let a = &v["area"]["upper"][0];
+    let (min, max) = (a["min"].as_f64().unwrap(), a["max"].as_f64().unwrap());
+    // At level 1 every height is its crisp value: one surface, a little
+    // more than its plan.
+    assert!(200_000.0 < min && (max - min) <= 1e-6 * max, "{a}");
+}
+
+#[test]
+fn surface_flags_are_checked() {
+    let t = terrain();
+    let job = s(&t);
+    refused(&[job, "--datum", "nan"], "--datum");
+    refused(
+        &[job, "--at", "0.5"],
+        "--at: parameters are measured on curves; this job is a surface",
+    );
+    let e = example();
+    refused(
+        &[s(&e), "--datum", "1"],
+        "--datum: this applies to surfaces; this job is a curve",
+    );
 }
 
 #[test]
@@ -129,4 +198,40 @@ fn the_output_may_not_be_the_job() {
     assert_ne!(code, 0);
     assert!(stderr.contains("--output"), "{stderr}");
     assert_eq!(std::fs::read(&job).unwrap(), before);
+}
+
+#[test]
+fn the_levels_are_alpha_or_levels_or_the_job_s_alpha() {
+    let job = example();
+    let levels = |args: &[&str]| -> Vec<f64> {
+        let mut all = vec!["measure", s(&job)];
+        all.extend_from_slice(args);
+        let (code, stdout, stderr) = run(&all);
+        assert_eq!(code, 0, "{args:?}: {stderr}");
+        let v: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+        v["levels"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|a| a.as_f64().unwrap())
+            .collect()
+    };
+    // The example's alpha is 0.8.
+    assert_eq!(levels(&[]), [0.8]);
+    assert_eq!(levels(&["--alpha", "0.5"]), [0.5]);
+    assert_eq!(levels(&["--levels", "3"]), [0.0, 0.5, 1.0]);
+    refused(
+        &[s(&example()), "--alpha", "2"],
+        "--alpha: alpha = 2 is outside [0, 1]",
+    );
+}
+
+#[test]
+fn negative_parameters_in_a_list_are_values() {
+    // `--at -0.5,0.25`: a list that starts with a minus sign is a value;
+    // -0.5 is outside the example's domain [0, 1] and named as such.
+    refused(&[s(&example()), "--at", "-0.5,0.25"], "--at");
+    let (code, _, stderr) = run(&["measure", s(&example()), "--at", "-0.5,0.25"]);
+    assert_eq!(code, 2);
+    assert!(!stderr.contains("unexpected argument"), "{stderr}");
 }

@@ -3,7 +3,9 @@
 //! `membership`, the CLI's messages for every hostile job of the fuzzing
 //! corpus), and each rule of its security: loopback only, the token, the
 //! `Host` header, cross-origin requests, the size of bodies, no file touched
-//! but the job saved over on request, and Ctrl-C.
+//! but the job saved over on request (and not over another's change), and
+//! Ctrl-C; and hostile clients: lying lengths, stalled heads and bodies, 200
+//! at once.
 
 use std::io::{BufRead, BufReader, Read, Write};
 use std::net::TcpStream;
@@ -485,29 +487,22 @@ fn bodies_are_limited_as_job_files_are() {
     let (status, body) = response(stream);
     assert_eq!(status, 413);
     assert!(String::from_utf8(body).unwrap().contains("64 MiB"));
-    // An undeclared one (chunked) is read to one byte past the limit and
-    // refused with the message of a job file that large.
+    // An undeclared one (chunked) is refused unread: only a declared length
+    // can be checked before the body is read.
     let mut stream = TcpStream::connect(("127.0.0.1", s.port)).unwrap();
     write!(
         stream,
-        "POST /api/run HTTP/1.1\r\nHost: {}\r\nX-T2spline-Token: {}\r\nTransfer-Encoding: chunked\r\nConnection: close\r\n\r\n",
+        "POST /api/run HTTP/1.1\r\nHost: {}\r\nX-T2spline-Token: {}\r\nTransfer-Encoding: chunked\r\nConnection: close\r\n\r\n5\r\nhello\r\n",
         s.host(),
         s.token
     )
     .unwrap();
-    let chunk = vec![b' '; 1 << 20];
-    for _ in 0..65 {
-        write!(stream, "{:x}\r\n", chunk.len()).unwrap();
-        if stream.write_all(&chunk).is_err() {
-            break;
-        }
-        let _ = stream.write_all(b"\r\n");
-    }
-    let _ = stream.write_all(b"0\r\n\r\n");
     let (status, body) = response(stream);
+    assert_eq!(status, 411);
+    assert!(String::from_utf8(body).unwrap().contains("Content-Length"));
+    // One of the limit's size is read, and answered as `run` answers it.
+    let (status, body) = s.post("/api/run", &vec![b' '; limit as usize]);
     assert_eq!(status, 422);
-    let body = String::from_utf8(body).unwrap();
-    // `run -` on a stream as large: the same message, naming `<stdin>`.
     let mut child = bin()
         .args(["run", "-"])
         .stdin(Stdio::piped())
@@ -516,11 +511,7 @@ fn bodies_are_limited_as_job_files_are() {
         .spawn()
         .unwrap();
     let mut stdin = child.stdin.take().unwrap();
-    for _ in 0..65 {
-        if stdin.write_all(&chunk).is_err() {
-            break;
-        }
-    }
+    stdin.write_all(&vec![b' '; limit as usize]).unwrap();
     drop(stdin);
     let out = child.wait_with_output().unwrap();
     assert_eq!(out.status.code(), Some(2));
@@ -571,6 +562,186 @@ fn only_the_named_job_is_written_and_only_when_asked() {
     let (status, body) = e.post("/api/save", changed.as_bytes());
     assert_eq!(status, 409, "{body}");
     assert_eq!(std::fs::read_dir(other.path()).unwrap().count(), 0);
+}
+
+#[test]
+fn a_save_over_a_file_changed_on_disk_is_refused_unless_asked() {
+    let dir = tempfile::tempdir().unwrap();
+    let job = dir.path().join("job.json");
+    let text = std::fs::read_to_string(root().join("examples/paper-alg-1-1.json")).unwrap();
+    std::fs::write(&job, &text).unwrap();
+    let s = Serve::start(&["job.json"], dir.path());
+    let page = text.replace("\"alpha\": 0.8", "\"alpha\": 0.3");
+    // Someone else edits the file after the server read it.
+    let theirs = text.replace("\"alpha\": 0.8", "\"alpha\": 0.6");
+    std::fs::write(&job, &theirs).unwrap();
+    let (status, body) = s.post("/api/save", page.as_bytes());
+    assert_eq!(status, 409, "{body}");
+    let answer: Value = serde_json::from_str(&body).unwrap();
+    assert_eq!(answer["changed"], true);
+    assert_eq!(
+        problems(&body),
+        ["job.json: the file changed on disk since it was read; reload it, or save again to overwrite it"]
+    );
+    assert_eq!(
+        std::fs::read_to_string(&job).unwrap(),
+        theirs,
+        "their change is kept"
+    );
+    // Reloading gives their text, and a save after it is no longer refused.
+    let (status, body) = s.call("GET", "/api/job?reload=1", b"");
+    assert_eq!(status, 200);
+    let reloaded: Value = serde_json::from_slice(&body).unwrap();
+    assert_eq!(reloaded["text"], theirs.as_str());
+    let (status, body) = s.post("/api/save", page.as_bytes());
+    assert_eq!(status, 200, "{body}");
+    assert_eq!(std::fs::read_to_string(&job).unwrap(), page);
+    // Changed again: `overwrite=1` writes over it, as the page offers.
+    std::fs::write(&job, &theirs).unwrap();
+    assert_eq!(s.post("/api/save", page.as_bytes()).0, 409);
+    let (status, body) = s.post("/api/save?overwrite=1", page.as_bytes());
+    assert_eq!(status, 200, "{body}");
+    assert_eq!(std::fs::read_to_string(&job).unwrap(), page);
+    // A file deleted since is a change too.
+    std::fs::remove_file(&job).unwrap();
+    assert_eq!(s.post("/api/save", page.as_bytes()).0, 409);
+}
+
+/// Sends `head` (and no more) on a new connection.
+fn send_head(s: &Serve, head: &str) -> TcpStream {
+    let mut stream = TcpStream::connect(("127.0.0.1", s.port)).unwrap();
+    stream.write_all(head.as_bytes()).unwrap();
+    stream
+}
+
+/// Whether `stream` has been answered (or closed) yet, without waiting.
+fn answered(stream: &TcpStream) -> bool {
+    stream.set_nonblocking(true).unwrap();
+    let mut byte = [0u8; 1];
+    let seen =
+        !matches!(stream.peek(&mut byte), Err(e) if e.kind() == std::io::ErrorKind::WouldBlock);
+    stream.set_nonblocking(false).unwrap();
+    seen
+}
+
+#[test]
+fn a_lying_content_length_is_refused_unread_and_the_server_lives() {
+    let dir = tempfile::tempdir().unwrap();
+    let s = Serve::start(&[], dir.path());
+    let host = s.host();
+    // Without the token: 403, nothing read or allocated from the length.
+    for length in ["1000000000000000", "18446744073709551615"] {
+        let head =
+            format!("POST /api/run HTTP/1.1\r\nHost: {host}\r\nContent-Length: {length}\r\n\r\n");
+        assert_eq!(response(send_head(&s, &head)).0, 403);
+    }
+    // With it: past the cap 413; not a number 400.
+    let token = &s.token;
+    for (length, status) in [("1000000000000000", 413), ("1e15", 400), ("-1", 400)] {
+        let head = format!(
+            "POST /api/run HTTP/1.1\r\nHost: {host}\r\nX-T2spline-Token: {token}\r\nContent-Length: {length}\r\n\r\n"
+        );
+        assert_eq!(
+            response(send_head(&s, &head)).0,
+            status,
+            "Content-Length: {length}"
+        );
+    }
+    // A head without end, past its limit: 431.
+    let long = format!(
+        "GET / HTTP/1.1\r\nHost: {host}\r\nX-Padding: {}\r\n",
+        "a".repeat(20_000)
+    );
+    let mut stream = TcpStream::connect(("127.0.0.1", s.port)).unwrap();
+    let _ = stream.write_all(long.as_bytes());
+    assert_eq!(response(stream).0, 431);
+    let (status, _) = s.call("GET", "/api/job", b"");
+    assert_eq!(status, 200, "the server still answers");
+}
+
+#[test]
+fn a_stalled_client_blocks_no_other_and_is_timed_out() {
+    let dir = tempfile::tempdir().unwrap();
+    let s = Serve::start(&[], dir.path());
+    let host = s.host();
+    let token = &s.token;
+    // One says nothing, one stops in its head, one stops in its body.
+    let silent = TcpStream::connect(("127.0.0.1", s.port)).unwrap();
+    let half_head = send_head(&s, &format!("POST /api/run HTTP/1.1\r\nHost: {host}\r\n"));
+    let half_body = send_head(
+        &s,
+        &format!("POST /api/run HTTP/1.1\r\nHost: {host}\r\nX-T2spline-Token: {token}\r\nContent-Length: 1000\r\n\r\n{{\"order\""),
+    );
+    // Meanwhile others are answered, while the stalled are not.
+    let example = std::fs::read(root().join("examples/paper-alg-1-1.json")).unwrap();
+    for _ in 0..3 {
+        assert_eq!(s.call("GET", "/api/job", b"").0, 200);
+        assert_eq!(s.call("POST", "/api/run", &example).0, 200);
+    }
+    assert!(
+        !answered(&half_body),
+        "a stalled body is still being waited for"
+    );
+    // Within seconds the stalled are let go: the body with 408, the head
+    // with 408, the silent one closed.
+    for stream in [&half_body, &half_head, &silent] {
+        stream
+            .set_read_timeout(Some(Duration::from_secs(60)))
+            .unwrap();
+    }
+    let (status, body) = response(half_body);
+    assert_eq!(status, 408);
+    assert!(String::from_utf8(body)
+        .unwrap()
+        .contains("did not arrive within"));
+    assert_eq!(response(half_head).0, 408);
+    let mut rest = Vec::new();
+    let mut silent = silent;
+    silent.read_to_end(&mut rest).unwrap();
+    assert!(
+        rest.is_empty(),
+        "a silent connection is closed without an answer"
+    );
+}
+
+#[test]
+fn two_hundred_clients_at_once_are_each_answered() {
+    let dir = tempfile::tempdir().unwrap();
+    let s = Serve::start(&[], dir.path());
+    let (port, host, token) = (s.port, s.host(), s.token.clone());
+    let example = std::fs::read(root().join("examples/paper-alg-1-1.json")).unwrap();
+    let expected_run = cli(&["run", "examples/paper-alg-1-1.json"], &root()).1;
+    let clients: Vec<_> = (0..200)
+        .map(|i| {
+            let (host, token, example) = (host.clone(), token.clone(), example.clone());
+            std::thread::spawn(move || {
+                let mut stream = TcpStream::connect(("127.0.0.1", port)).unwrap();
+                let (head, body, status): (String, &[u8], u16) = match i % 4 {
+                    0 => (format!("GET /api/job HTTP/1.1\r\nHost: {host}\r\nX-T2spline-Token: {token}\r\n\r\n"), b"", 200),
+                    1 => (format!("GET /api/job HTTP/1.1\r\nHost: {host}\r\nX-T2spline-Token: {}\r\n\r\n", "0".repeat(32)), b"", 403),
+                    2 => (format!("POST /api/run HTTP/1.1\r\nHost: {host}\r\nContent-Length: 999999999999\r\n\r\n"), b"", 403),
+                    _ => (
+                        format!("POST /api/run HTTP/1.1\r\nHost: {host}\r\nX-T2spline-Token: {token}\r\nContent-Length: {}\r\n\r\n", example.len()),
+                        &example,
+                        200,
+                    ),
+                };
+                stream.write_all(head.as_bytes()).unwrap();
+                stream.write_all(body).unwrap();
+                stream.set_read_timeout(Some(Duration::from_secs(120))).unwrap();
+                let (got, answer) = response(stream);
+                assert_eq!(got, status, "client {i}");
+                (i % 4 == 3).then(|| String::from_utf8(answer).unwrap())
+            })
+        })
+        .collect();
+    // A legitimate request is answered while they are.
+    assert_eq!(s.call("GET", "/api/job", b"").0, 200);
+    for client in clients {
+        if let Some(run) = client.join().expect("every client answered as expected") {
+            assert_eq!(run, expected_run);
+        }
+    }
 }
 
 #[test]

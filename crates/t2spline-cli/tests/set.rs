@@ -152,7 +152,7 @@ fn option_values_that_break_a_rule() {
     );
     refused(
         &["region", s(&terrain()), "--alpha", "0.5"],
-        "JOB: regions are drawn for curves",
+        &format!("{}: regions are drawn for curves", s(&terrain())),
     );
 }
 
@@ -261,4 +261,73 @@ fn a_curve_with_crisp_stations_grades_its_crisp_curve() {
     );
     assert!((g[4] - 0.6).abs() < 1e-9, "{stdout}");
     assert_eq!(lines[2], "3.5,4.8,0,0,0");
+}
+
+/// The `alpha` of every feature or level of a JSON output.
+fn alphas(json: &str) -> Vec<f64> {
+    let v: serde_json::Value = serde_json::from_str(json).expect("JSON");
+    let items = v
+        .get("features")
+        .or_else(|| v.get("levels"))
+        .and_then(serde_json::Value::as_array)
+        .unwrap_or_else(|| panic!("no features or levels: {json}"));
+    let mut out: Vec<f64> = items
+        .iter()
+        .filter_map(|f| f.pointer("/properties/alpha").or_else(|| f.get("alpha")))
+        .filter_map(serde_json::Value::as_f64)
+        .collect();
+    out.dedup();
+    out
+}
+
+#[test]
+fn the_levels_are_alpha_or_levels_or_the_job_s_alpha() {
+    let shipped = example();
+    let job = s(&shipped); // alpha 0.8
+    let ok = |args: &[&str]| {
+        let (code, stdout, stderr) = run(args);
+        assert_eq!(code, 0, "{args:?}: {stderr}");
+        stdout
+    };
+    // Neither flag: the job's alpha, as `run` uses it.
+    assert_eq!(alphas(&ok(&["region", job])), [0.8]);
+    assert_eq!(ok(&["region", job]), ok(&["region", job, "--alpha", "0.8"]));
+    assert_eq!(alphas(&ok(&["section", job, "--x", "3"])), [0.8]);
+    // --alpha A: that level; --levels N: N levels from 0 to 1.
+    assert_eq!(alphas(&ok(&["region", job, "--alpha", "0.25"])), [0.25]);
+    assert_eq!(
+        alphas(&ok(&["region", job, "--levels", "3"])),
+        [0.0, 0.5, 1.0]
+    );
+    assert_eq!(
+        alphas(&ok(&["section", job, "--x", "3", "--alpha", "0.5"])),
+        [0.5]
+    );
+    assert_eq!(
+        alphas(&ok(&["section", job, "--x", "3", "--levels", "5"])),
+        [0.0, 0.25, 0.5, 0.75, 1.0]
+    );
+    // A job without alpha: `section` takes 11 levels, `region` asks.
+    let dir = tempfile::tempdir().unwrap();
+    let mut v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(example()).unwrap()).unwrap();
+    v.as_object_mut().unwrap().remove("alpha");
+    let bare = dir.path().join("bare.json");
+    std::fs::write(&bare, v.to_string()).unwrap();
+    assert_eq!(alphas(&ok(&["section", s(&bare), "--x", "3"])).len(), 11);
+    refused(
+        &["region", s(&bare)],
+        "--alpha: the job has no alpha: give the level with --alpha A, or --levels N",
+    );
+    refused(
+        &["region", job, "--alpha", "1.5"],
+        "--alpha: alpha = 1.5 is outside [0, 1]",
+    );
+    refused(
+        &["section", job, "--x", "3", "--alpha", "-0.5"],
+        "--alpha: alpha = -0.5 is outside [0, 1]",
+    );
+    let (code, _, stderr) = run(&["region", job, "--alpha", "0.5", "--levels", "3"]);
+    assert_eq!(code, 2, "{stderr}");
+    assert!(stderr.contains("cannot be used with"), "{stderr}");
 }

@@ -92,6 +92,7 @@ fn main() -> Result<(), String> {
             name: format!("surfaces.{extension}"),
             description: None,
             timestamp: "1970-01-01T00:00:00".into(),
+            units: Default::default(),
         };
         let text = render_cad(format, &geometry, &meta, "<stdin>").map_err(|e| e.to_string())?;
         std::fs::write(folder.join(format!("surfaces.{extension}")), text)

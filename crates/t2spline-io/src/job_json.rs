@@ -37,6 +37,12 @@ pub fn job_json(job: &Job) -> Value {
                 Samples::Grid(pair) => json!(pair),
             };
             out.insert("samples".into(), samples);
+            if let Some(closed) = job.closed {
+                out.insert("closed".into(), json!(closed));
+            }
+            if let Some(units) = job.units {
+                out.insert("units".into(), json!(units.name()));
+            }
         }
         out.insert(key, value);
     }

@@ -76,9 +76,23 @@ pub const MAX_KEYS: usize = 64;
 /// bytes once parsed, so this bounds the memory of reading any file.
 pub const MAX_VALUES: usize = 4_000_000;
 
-/// The most problems a job's error lists; the rest are counted in one last
-/// line. A 64 MiB file of `0,` could otherwise make eight million messages.
-pub const MAX_PROBLEMS: usize = 1000;
+/// The most problems an error lists; the rest are counted in one last line
+/// ([`more_problems`]). A 64 MiB file of `0,` could otherwise make eight
+/// million messages, and a screen holds about twenty.
+pub const MAX_PROBLEMS: usize = 20;
+
+/// The most problems a reader of readings collects before it stops reading
+/// the file (it then counts no further): the memory of a file of nothing
+/// but errors stays small.
+pub const MAX_PROBLEMS_FOUND: usize = 1000;
+
+/// The last line of a list of problems cut at [`MAX_PROBLEMS`]: `more` were
+/// not listed; `stopped`: reading stopped there, so there may be more.
+#[must_use]
+pub fn more_problems(more: usize, stopped: bool) -> String {
+    let at_least = if stopped { "at least " } else { "" };
+    format!("… and {at_least}{more} more problems (only the first {MAX_PROBLEMS} are listed)")
+}
 
 /// Checks an order `k` against [`MAX_ORDER`]; `key` is `"order"` or `"degree"`,
 /// `given` its value and `written` the value as the file wrote it.

@@ -40,7 +40,7 @@ use crate::table::{derivative_order, jobs_column_names, one_table, Table};
 
 /// Rows per row group: large enough for a million samples in one, as
 /// pyarrow and parquet-rs do by default.
-const ROW_GROUP: usize = 1 << 20;
+pub(crate) const ROW_GROUP: usize = 1 << 20;
 
 /// Values computed per call of the column writer (a surface's `u`, `v`, the
 /// distance), so that no column is stored whole.
@@ -78,7 +78,7 @@ fn builder(metadata: Vec<KeyValue>) -> WriterPropertiesBuilder {
 
 /// The settings of a result file: [`builder`]'s; for columns of floats
 /// (`split`) the byte-stream-split encoding.
-fn properties(metadata: Vec<KeyValue>, split: bool) -> Arc<WriterProperties> {
+pub(crate) fn properties(metadata: Vec<KeyValue>, split: bool) -> Arc<WriterProperties> {
     let builder = builder(metadata);
     let builder = if split {
         builder.set_encoding(Encoding::BYTE_STREAM_SPLIT)
@@ -89,7 +89,7 @@ fn properties(metadata: Vec<KeyValue>, split: bool) -> Arc<WriterProperties> {
 }
 
 /// A required `DOUBLE` column.
-fn double(name: &str) -> Result<Arc<Type>, ParquetError> {
+pub(crate) fn double(name: &str) -> Result<Arc<Type>, ParquetError> {
     Type::primitive_type_builder(name, Physical::DOUBLE)
         .with_repetition(Repetition::REQUIRED)
         .build()
@@ -97,7 +97,7 @@ fn double(name: &str) -> Result<Arc<Type>, ParquetError> {
 }
 
 /// A message type (the schema) of `fields`.
-fn schema(fields: Vec<Arc<Type>>) -> Result<Arc<Type>, ParquetError> {
+pub(crate) fn schema(fields: Vec<Arc<Type>>) -> Result<Arc<Type>, ParquetError> {
     Type::group_type_builder("schema")
         .with_fields(fields)
         .build()
@@ -105,7 +105,7 @@ fn schema(fields: Vec<Arc<Type>>) -> Result<Arc<Type>, ParquetError> {
 }
 
 /// `ParquetError` as an I/O error, for [`crate::Staged`] and its callers.
-fn io_error(e: ParquetError) -> std::io::Error {
+pub(crate) fn io_error(e: ParquetError) -> std::io::Error {
     match e {
         ParquetError::External(inner) => match inner.downcast::<std::io::Error>() {
             Ok(io) => *io,
@@ -325,7 +325,7 @@ impl<W: Write + Send> JobsParquet<W> {
 }
 
 /// A `BYTE_ARRAY` column of UTF-8 text, required or optional.
-fn text(name: &str, repetition: Repetition) -> Result<Arc<Type>, ParquetError> {
+pub(crate) fn text(name: &str, repetition: Repetition) -> Result<Arc<Type>, ParquetError> {
     Type::primitive_type_builder(name, Physical::BYTE_ARRAY)
         .with_repetition(repetition)
         .with_logical_type(Some(LogicalType::String))
@@ -447,7 +447,7 @@ fn optional_double(name: &str) -> Result<Arc<Type>, ParquetError> {
 }
 
 /// The next column of a row group, which the schema says exists.
-fn next<'g, W: Write + Send>(
+pub(crate) fn next<'g, W: Write + Send>(
     group: &'g mut parquet::file::writer::SerializedRowGroupWriter<'_, W>,
 ) -> Result<parquet::file::writer::SerializedColumnWriter<'g>, ParquetError> {
     group

@@ -12,7 +12,7 @@
 //! breaks its rule as a typed [`Setting`] for each front end to spell
 //! (`--samples`, `samples=`), and what only a bug can cause.
 
-use t2spline::job::{Job, Overrides, RunOutput, Setting, Settings};
+use t2spline::job::{Job, LengthUnit, Overrides, RunOutput, Setting, Settings};
 use t2spline::{Alpha, TypeReduction};
 
 use crate::cad::{render_cad, CadFormat, CadMeta};
@@ -194,20 +194,28 @@ impl Prepared {
     /// The job's exact curves (or surfaces) as the text of a CAD file in
     /// `format` ([`render_cad`]: the crisp and defuzzified ones and the six
     /// layers, clamped first where the format needs it), the file named
-    /// `name` in its header, written now ([`CadMeta::now`]); `source` names
-    /// the job in messages.
+    /// `name` in its header, written now ([`CadMeta::now`]), its
+    /// coordinates in `units` (else the job's `units`, else millimetres);
+    /// `source` names the job in messages.
     ///
     /// # Errors
     /// [`RunError::File`] for what the format cannot hold (degree 0; a
     /// surface in DXF); the core's errors of [`Job::geometry`].
-    pub fn cad(&self, format: CadFormat, name: String, source: &str) -> Result<String, RunError> {
+    pub fn cad(
+        &self,
+        format: CadFormat,
+        name: String,
+        source: &str,
+        units: Option<LengthUnit>,
+    ) -> Result<String, RunError> {
         let geometry = self.job.geometry(&self.settings)?;
         let geometry = if format.clamps() {
             geometry.clamped()
         } else {
             geometry
         };
-        let meta = CadMeta::now(name, self.job.description.clone());
+        let units = units.or(self.job.units).unwrap_or_default();
+        let meta = CadMeta::now(name, self.job.description.clone(), units);
         Ok(render_cad(format, &geometry, &meta, source)?)
     }
 }

@@ -42,6 +42,7 @@ fn render(format: CadFormat, g: &Geometry) -> String {
         name: format!("curves.{format}"),
         description: Some("a beach's profile, café".into()),
         timestamp: "2026-01-02T03:04:05".into(),
+        units: Default::default(),
     };
     render_cad(format, g, &meta, "job.json").unwrap()
 }
@@ -219,6 +220,7 @@ fn degree_0_is_refused() {
         name: "a.step".into(),
         description: None,
         timestamp: "2026-01-01T00:00:00".into(),
+        units: Default::default(),
     };
     let e = render_cad(CadFormat::Step, &g, &meta, "job.json").unwrap_err();
     assert_eq!(
@@ -317,6 +319,7 @@ fn surfaces_are_written_as_nurbs_surfaces_except_in_dxf() {
         name: "s.dxf".into(),
         description: None,
         timestamp: "2026-01-01T00:00:00".into(),
+        units: Default::default(),
     };
     let e = render_cad(CadFormat::Dxf, &g, &meta, "job.json").unwrap_err();
     assert_eq!(
@@ -576,6 +579,7 @@ fn control_characters_of_the_description_never_reach_a_file_raw() {
         name: "curves\u{1b}.x".into(),
         description: Some(description.into()),
         timestamp: "2026-01-02T03:04:05".into(),
+        units: Default::default(),
     };
     let curves = geometry(5, 2, None);
     let surfaces = surface_geometry(2, None);
@@ -634,10 +638,96 @@ fn a_surface_of_degree_0_in_one_direction_is_named_a_set_of_curves() {
         name: "a.step".into(),
         description: None,
         timestamp: "2026-01-01T00:00:00".into(),
+        units: Default::default(),
     };
     let e = render_cad(CadFormat::Step, &g, &meta, "job.json").unwrap_err();
     assert_eq!(
         e.to_string(),
         "job.json: the surfaces have degree 0 in u (piecewise constant in u: a set of curves along v), which STEP cannot hold; export needs degree 1 or more in both directions"
     );
+}
+
+/// Each unit in each format's own words: DXF `$INSUNITS` and
+/// `$MEASUREMENT`, the STEP context's length unit, the IGES unit flag and
+/// name, an OBJ comment; the numbers themselves unchanged.
+#[test]
+fn every_format_records_the_unit() {
+    use t2spline::job::LengthUnit;
+    let g = geometry(5, 2, None);
+    let with = |format: CadFormat, units: LengthUnit| {
+        let meta = CadMeta {
+            name: format!("curves.{format}"),
+            description: None,
+            timestamp: "2026-01-02T03:04:05".into(),
+            units,
+        };
+        render_cad(format, &g, &meta, "job.json").unwrap()
+    };
+    let cases = [
+        (
+            LengthUnit::Millimetre,
+            "4",
+            "1",
+            "SI_UNIT(.MILLI.,.METRE.))",
+            "2,2HMM,",
+        ),
+        (
+            LengthUnit::Centimetre,
+            "5",
+            "1",
+            "SI_UNIT(.CENTI.,.METRE.))",
+            "10,2HCM,",
+        ),
+        (LengthUnit::Metre, "6", "1", "SI_UNIT($,.METRE.))", "6,1HM,"),
+        (
+            LengthUnit::Inch,
+            "1",
+            "0",
+            "(CONVERSION_BASED_UNIT('INCH',",
+            "1,4HINCH,",
+        ),
+        (
+            LengthUnit::Foot,
+            "2",
+            "0",
+            "(CONVERSION_BASED_UNIT('FOOT',",
+            "4,2HFT,",
+        ),
+    ];
+    for (units, insunits, measurement, step, iges) in cases {
+        let dxf = with(CadFormat::Dxf, units);
+        assert!(
+            dxf.contains(&format!("$INSUNITS\n 70\n{insunits}\n")),
+            "{units:?}"
+        );
+        assert!(
+            dxf.contains(&format!("$MEASUREMENT\n 70\n{measurement}\n")),
+            "{units:?}"
+        );
+        assert!(with(CadFormat::Step, units).contains(step), "{units:?}");
+        // The global section is cut into 72-column lines: join them first.
+        let text = with(CadFormat::Iges, units);
+        let global: String = text
+            .lines()
+            .filter(|l| l.as_bytes().get(72) == Some(&b'G'))
+            .map(|l| &l[..72])
+            .collect();
+        assert!(global.contains(iges), "{units:?}: {global}");
+        let obj = with(CadFormat::Obj, units);
+        assert!(
+            obj.contains(&format!("; units: {} (", units.name())),
+            "{units:?}"
+        );
+        // The control points are the same numbers in every unit.
+        let spline = |t: &str| {
+            t.lines()
+                .filter(|l| l.starts_with("v "))
+                .collect::<Vec<_>>()
+                .join("\n")
+        };
+        assert_eq!(
+            spline(&obj),
+            spline(&with(CadFormat::Obj, LengthUnit::Millimetre))
+        );
+    }
 }

@@ -299,7 +299,7 @@ proptest! {
         a in 0.0..=1.0f64,
         samples in 2usize..30,
     ) {
-        let job = Job { description: None, alpha: None, type_reduction: t2spline::TypeReduction::Paper, samples: Samples::Along(samples), model: curve };
+        let job = Job { description: None, alpha: None, type_reduction: t2spline::TypeReduction::Paper, samples: Samples::Along(samples), closed: None, units: None, model: curve };
         check_values(&compute(&job, alpha(a), samples));
     }
 }
@@ -336,7 +336,7 @@ fn write_csv_into_a_file_is_an_error_naming_it() {
 }
 
 proptest! {
-    #![proptest_config(strategies::cases(8, 24))]
+    #![proptest_config(strategies::cases(8, 16))]
 
     /// A surface: `u, v` over the grid with `v` fastest, then every surface's
     /// points in the same order, bit for bit.

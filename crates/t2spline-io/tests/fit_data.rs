@@ -362,6 +362,9 @@ fn order_errors_list_at_most_the_problem_limit() {
     // The count, `limit` violations, the rest counted, the advice.
     assert_eq!(lines.len(), limit + 3, "{:?}", &lines[..3]);
     assert!(lines[0].contains("at 1500 place(s)"), "{}", lines[0]);
-    assert_eq!(lines[limit + 1], "data.json: … and 500 more place(s)");
+    assert_eq!(
+        lines[limit + 1],
+        format!("data.json: … and {} more place(s)", 1500 - limit)
+    );
     assert_eq!(lines[limit + 2], "data.json: advice");
 }

@@ -229,7 +229,7 @@ fn unknown_top_level_keys_are_errors_with_a_suggestion_when_close() {
     });
     assert_problems(
         &v,
-        &["job.json: colour: unknown key (known keys: description, order, degree, weights, knots, alpha, type_reduction, lower_height, samples, points)"],
+        &["job.json: colour: unknown key (known keys: description, order, degree, weights, knots, alpha, type_reduction, lower_height, samples, closed, units, points)"],
     );
 }
 
@@ -679,12 +679,12 @@ fn a_point_needs_x_and_y() {
 fn points_and_numbers_must_be_objects() {
     let mut v = base();
     *at(&mut v, "/points/0") = json!([1, 2]);
-    *at(&mut v, "/points/1/y") = json!(2.0);
+    *at(&mut v, "/points/1/y") = json!("2.0");
     assert_problems(
         &v,
         &[
             "job.json: points[0]: expected a point (a JSON object), got an array",
-            "job.json: points[1].y: expected a fuzzy number (a JSON object), got a number",
+            "job.json: points[1].y: expected a fuzzy number (a JSON object, or a number for a crisp one), got a string",
         ],
     );
     let v = with(|o| {
@@ -968,4 +968,147 @@ fn reading_a_missing_file_names_it_and_the_reason_once() {
         .expect("the io error")
         .to_string();
     assert_eq!(lines[0].matches(&reason).count(), 1, "{lines:?}");
+}
+
+// ---------------------------------------------------------------------------
+// Bare numbers
+// ---------------------------------------------------------------------------
+
+/// The crisp number `x` written out in full, with height `h`.
+fn crisp_object(x: f64, h: f64) -> Value {
+    json!({"crisp": x, "upper": [x, x], "primary": [x, x], "lower": [x, x], "lower_height": h})
+}
+
+#[test]
+fn a_bare_number_is_a_crisp_number_with_the_jobs_height_else_1() {
+    for (height, h) in [(Some(0.5), 0.5), (None, 1.0)] {
+        let job = |bare: bool| {
+            let c = |x: f64| if bare { json!(x) } else { crisp_object(x, h) };
+            let mut v = json!({
+                "order": 2,
+                "points": [
+                    {"x": c(0.0), "y": c(-1.0)},
+                    {"x": number(1.0), "y": c(2.0)},
+                    {"x": c(2.0), "y": c(1.0)}
+                ]
+            });
+            // A number without a height takes the job's; one is given.
+            *at(&mut v, "/points/1/x") = crisp_object(1.0, 0.5);
+            if let Some(h) = height {
+                *at(&mut v, "/lower_height") = json!(h);
+            }
+            v
+        };
+        let (bare, full) = (parse(&job(true)), parse(&job(false)));
+        assert_eq!(bare.expect("bare numbers are crisp"), full.expect("valid"));
+    }
+    // In a surface's net and in a data file too; integers as well.
+    let surface = json!({
+        "order": [2, 2],
+        "points": [
+            [{"x": 0, "y": 0, "z": 1}, {"x": 0, "y": 1, "z": number(2.0)}],
+            [{"x": 1, "y": 0, "z": -3}, {"x": 1, "y": 1, "z": 4.5}]
+        ],
+        "lower_height": 0.5
+    });
+    let Model::Surface(s) = parse(&surface).expect("a surface").model else {
+        panic!("a surface job")
+    };
+    assert_eq!(s.points()[2].coords()[2].upper().left(), -3.0);
+    let data = json!({"degree": 1, "points": [{"x": 0, "y": 0}, {"x": 1, "y": number(1.0)}], "lower_height": 1});
+    t2spline_io::parse_data(&data.to_string(), "data.json").expect("bare numbers in data");
+}
+
+#[test]
+fn a_bare_number_breaks_rules_at_its_place() {
+    let mut v = base();
+    *at(&mut v, "/points/1/y") = json!(1e200);
+    *at(&mut v, "/points/2/x") = json!(true);
+    let got = problems(&v);
+    assert_eq!(got.len(), 2, "{got:#?}");
+    assert!(got[0].starts_with("job.json: points[1].y"), "{got:#?}");
+    assert_eq!(
+        got[0],
+        "job.json: points[1].y: crisp = 1e200 is outside [-1e150, 1e150]"
+    );
+    assert_eq!(
+        got[1],
+        "job.json: points[2].x: expected a fuzzy number (a JSON object, or a number for a crisp one), got a boolean"
+    );
+}
+
+// ---------------------------------------------------------------------------
+// Closed curves
+// ---------------------------------------------------------------------------
+
+#[test]
+fn closed_is_a_boolean_that_the_curve_must_keep() {
+    let v = with(|o| {
+        o.insert("closed".into(), json!(true));
+    });
+    let e = one_problem(&v);
+    assert!(
+        e.starts_with("job.json: closed: the curve does not close: it starts at (0, 0) and ends at (2, 1): a closed curve with clamped knots repeats its first control point as its last"),
+        "{e}"
+    );
+    let v = with(|o| {
+        o.insert("closed".into(), json!("yes"));
+    });
+    assert_problems(
+        &v,
+        &["job.json: closed: expected true or false, got a string"],
+    );
+    // The last point repeats the first: closed, and written back.
+    let v = with(|o| {
+        o.insert("closed".into(), json!(true));
+        o.insert(
+            "points".into(),
+            json!([
+                point(0.0, 0.0),
+                point(1.0, 2.0),
+                point(2.0, 1.0),
+                point(0.0, 0.0)
+            ]),
+        );
+    });
+    let job = parse(&v).expect("closes");
+    assert_eq!(job.closed, Some(true));
+    let again = t2spline_io::job_json(&job);
+    assert_eq!(again["closed"], json!(true));
+    assert_eq!(parse(&again).expect("again"), job);
+    let v = with(|o| {
+        o.insert("closed".into(), json!(false));
+    });
+    assert_eq!(parse(&v).expect("open").closed, Some(false));
+}
+
+#[test]
+fn a_surface_has_no_closed() {
+    let v = json!({
+        "order": [2, 2],
+        "closed": true,
+        "points": [[point3(0.0, 0.0, 0.0), point3(0.0, 1.0, 0.0)], [point3(1.0, 0.0, 0.0), point3(1.0, 1.0, 1.0)]],
+        "lower_height": 0.5
+    });
+    assert_problems(
+        &v,
+        &["job.json: closed: a surface job has no `closed`: it is for curves (docs/method.md §11)"],
+    );
+}
+
+#[test]
+fn units_name_a_unit_of_length() {
+    let v = with(|o| {
+        o.insert("units".into(), json!("ft"));
+    });
+    let job = parse(&v).expect("valid");
+    assert_eq!(job.units, Some(t2spline::job::LengthUnit::Foot));
+    assert_eq!(t2spline_io::job_json(&job)["units"], json!("ft"));
+    let v = with(|o| {
+        o.insert("units".into(), json!("feet"));
+    });
+    assert_problems(
+        &v,
+        &["job.json: units: expected one of mm, cm, m, in, ft (the unit of the coordinates, for CAD files), got \"feet\""],
+    );
 }

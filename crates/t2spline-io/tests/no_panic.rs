@@ -114,6 +114,7 @@ fn read_and_write(text: &str) {
                     name: "x".into(),
                     description: job.description.clone(),
                     timestamp: "2000-01-01T00:00:00".into(),
+                    units: Default::default(),
                 };
                 for format in CadFormat::ALL {
                     returns("render_cad", || {

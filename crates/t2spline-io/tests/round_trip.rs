@@ -53,6 +53,8 @@ fn job<const D: usize>(model: impl Fn(FuzzyCurve<D>) -> Model) -> impl Strategy<
                 alpha,
                 type_reduction,
                 samples: Samples::Along(samples),
+                closed: None,
+                units: None,
                 model: model(c),
             },
         )
@@ -86,6 +88,8 @@ fn surface_job() -> impl Strategy<Value = Job> {
             alpha,
             type_reduction,
             samples: Samples::Grid(samples),
+            closed: None,
+            units: None,
             model: Model::Surface(s),
         })
 }
@@ -113,7 +117,7 @@ fn round_trips(job: Job) -> Result<(), TestCaseError> {
 }
 
 proptest! {
-    #![proptest_config(strategies::cases(64, 256))]
+    #![proptest_config(strategies::cases(64, 128))]
 
     #[test]
     fn job_json_round_trips(job in any_job()) {
@@ -144,7 +148,7 @@ proptest! {
 proptest! {
     // A surface run computes the distance over the whole domain (a scan and
     // a search per span rectangle): fewer cases than for curves.
-    #![proptest_config(strategies::cases(8, 24))]
+    #![proptest_config(strategies::cases(8, 16))]
 
     #[test]
     fn surface_result_json_round_trips_exactly(

@@ -102,7 +102,10 @@ fn many_problems_are_listed_up_to_twenty_then_counted() {
     let text = format!("x,y\n{}", "a,b\n".repeat(30));
     let lines = problems(&text);
     assert_eq!(lines.len(), 21, "{lines:?}");
-    assert_eq!(lines[20], "p.csv: ... and 40 more problem(s)");
+    assert_eq!(
+        lines[20],
+        "p.csv: … and 40 more problems (only the first 20 are listed)"
+    );
 }
 
 #[test]

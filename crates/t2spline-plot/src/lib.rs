@@ -15,6 +15,11 @@
 //!   nothing, per-point detail thinned for jobs of many points), written as
 //!   deterministic SVG text; [`svg_to_png`] (feature `png`, default) rasterises
 //!   the same SVG with resvg and the bundled DejaVu Sans font, at 300 dpi.
+//! - [`notebook_figures`], [`number_notebook_figure`],
+//!   [`region_notebook_figure`], [`measures_notebook_figure`],
+//!   [`section_notebook_figure`]: the figures of one object for a notebook's
+//!   picture (the Python package's `_repr_html_`), thinned to stay small;
+//!   [`render_svg_prefixed`] writes several into one page with distinct ids.
 //! - [`render_report`]: one HTML file with the figures, tables, downloads and
 //!   the job.
 //!
@@ -56,6 +61,10 @@
     )
 )]
 
+/// Whether this build writes PNG (feature `png`); without it, figures are
+/// SVG only.
+pub const PNG: bool = cfg!(feature = "png");
+
 mod chart;
 mod data;
 mod error;
@@ -75,11 +84,14 @@ pub use chart::panel_layout::{AxisLayout, PanelLayout};
 pub use chart::png::{svg_to_png, Pixmap, PNG_DPI, PNG_SCALE};
 pub use chart::scene::{ColorBar, Facet, Figure, Item, LegendEntry, Mark, Panel, Priority, Xy};
 pub use chart::simplify::simplify;
-pub use chart::svg::render as render_svg;
+pub use chart::svg::{render as render_svg, render_prefixed as render_svg_prefixed};
 pub use error::Error;
 pub use figures::surface::View;
 pub use figures::{
-    all_figures, Aspect, FigureOptions, NumberChoice, FIGURE_NAMES, MEASURES_MAX_POINTS,
+    all_figures, measures_notebook_figure, notebook_figures, number_notebook_figure,
+    region_notebook_figure, section_notebook_figure, Aspect, FigureOptions, NumberChoice, Stages,
+    FIGURE_NAMES, MEASURES_MAX_POINTS, NOTEBOOK_MAX_REGION_POINTS, NOTEBOOK_MAX_SAMPLES,
+    NOTEBOOK_SURFACE_GRID,
 };
 pub use output::{render_files, Format};
 pub use report::{render as render_report, Stops, DATA_BUDGET, MAX_FILE_GRID, MAX_FILE_SAMPLES};

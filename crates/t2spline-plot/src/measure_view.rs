@@ -5,7 +5,7 @@
 //! levels trace the quantity's membership function. Plotting only draws them.
 
 use t2spline::job::{Model, ModelVisitor};
-use t2spline::measure::{AreaKind, Level, MeasureOptions, PerMembership};
+use t2spline::measure::{AreaKind, Level, MeasureOptions, Measures, PerMembership};
 use t2spline::{Alpha, FuzzyCurve, FuzzySurface};
 
 use crate::error::Error;
@@ -47,13 +47,14 @@ fn figure_levels(heights: &[f64]) -> Result<Vec<Alpha>, Error> {
         .collect::<Result<_, _>>()?)
 }
 
-/// The fuzzy length and area of a curve model at the figure's levels.
+/// The fuzzy length and area of a curve model at the figure's levels, the
+/// curve closed as the job's `closed` says ([`MeasureOptions::closed`]).
 ///
 /// # Errors
 /// [`Error::Surface`] for a surface; [`Error::Core`] if the core refuses
 /// the levels (never for a validated job).
-pub fn fuzzy_measures(model: &Model) -> Result<FuzzyMeasures, Error> {
-    struct Of(Vec<Alpha>);
+pub fn fuzzy_measures(model: &Model, closed: Option<bool>) -> Result<FuzzyMeasures, Error> {
+    struct Of(Vec<Alpha>, Option<bool>);
     impl ModelVisitor for Of {
         type Output = Result<FuzzyMeasures, Error>;
         fn curve<const D: usize>(self, c: &FuzzyCurve<D>) -> Self::Output {
@@ -63,35 +64,43 @@ pub fn fuzzy_measures(model: &Model) -> Result<FuzzyMeasures, Error> {
                 order: 1,
                 length: true,
                 area: D == 2,
+                closed: self.1,
             };
-            let m = c.measure(&options)?;
-            let length = FuzzyQuantity {
-                levels: m.length,
-                crisp: c.crisp_curve().arc_length(),
-            };
-            let area = match m.area {
-                Some(a) => crisp_value(&a.upper).map(|crisp| {
-                    (
-                        a.kind,
-                        FuzzyQuantity {
-                            levels: PerMembership {
-                                upper: a.upper,
-                                primary: a.primary,
-                                lower: a.lower,
-                            },
-                            crisp,
-                        },
-                    )
-                }),
-                None => None,
-            };
-            Ok(FuzzyMeasures { length, area })
+            Ok(quantities(c, c.measure(&options)?))
         }
         fn surface<const D: usize>(self, _: &FuzzySurface<D>) -> Self::Output {
             Err(Error::Surface)
         }
     }
-    model.visit(Of(figure_levels(&model.heights())?))
+    model.visit(Of(figure_levels(&model.heights())?, closed))
+}
+
+/// The fuzzy length and, for a plane curve whose measures hold level 1, the
+/// fuzzy area of `measures` taken of `c` (the area's crisp value is its
+/// bracket at level 1).
+#[must_use]
+pub fn quantities<const D: usize>(c: &FuzzyCurve<D>, m: Measures) -> FuzzyMeasures {
+    let length = FuzzyQuantity {
+        levels: m.length,
+        crisp: c.crisp_curve().arc_length(),
+    };
+    let area = match m.area {
+        Some(a) => crisp_value(&a.upper).map(|crisp| {
+            (
+                a.kind,
+                FuzzyQuantity {
+                    levels: PerMembership {
+                        upper: a.upper,
+                        primary: a.primary,
+                        lower: a.lower,
+                    },
+                    crisp,
+                },
+            )
+        }),
+        None => None,
+    };
+    FuzzyMeasures { length, area }
 }
 
 /// The crisp curve's value of a quantity: the upper function's cut at

@@ -31,6 +31,7 @@ fn options(job: &Job) -> MeasureOptions {
         order: 1,
         length: true,
         area: true,
+        closed: job.closed,
     }
 }
 

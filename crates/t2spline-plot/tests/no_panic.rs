@@ -102,7 +102,7 @@ fn figures_and_report(job: &Job, alpha: f64, number: NumberChoice, aspect: Aspec
 }
 
 proptest! {
-    #![proptest_config(t2spline::strategies::cases(8, 32))]
+    #![proptest_config(t2spline::strategies::cases(8, 16))]
 
     #[test]
     fn extreme_valid_jobs_never_panic(

@@ -2,7 +2,7 @@
 //! dtype, finite values, each error naming the argument), and results handed
 //! to numpy without copies.
 
-use numpy::{PyArray1, PyArrayDyn, PyArrayMethods, PyUntypedArrayMethods};
+use numpy::{PyArray1, PyArrayDyn, PyArrayMethods, PyUntypedArrayMethods, ToPyArray};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use t2spline::sampling::SampleBuffer;
@@ -254,12 +254,23 @@ pub(crate) fn optional_vector(
         .transpose()
 }
 
-/// A numpy array of `shape` that takes over `data` (C order) without a copy.
+/// Arrays of at most this many numbers are copied into numpy's own memory.
+const SMALL_ARRAY: usize = 4096;
+
+/// A numpy array of `shape` holding `data` (C order). A large one takes
+/// `data` over without a copy; a small one (a result of a tiny job holds
+/// dozens) is copied into one numpy allocation, which costs a third of
+/// handing the buffer over and reshaping it.
 pub(crate) fn array<'py>(
     py: Python<'py>,
     data: Vec<f64>,
     shape: &[usize],
 ) -> PyResult<Bound<'py, PyAny>> {
+    if data.len() <= SMALL_ARRAY {
+        let view = numpy::ndarray::ArrayViewD::from_shape(shape, &data)
+            .map_err(|e| crate::errors::internal_error(&format!("an array's shape: {e}")))?;
+        return Ok(view.to_pyarray(py).into_any());
+    }
     Ok(PyArray1::from_vec(py, data)
         .reshape(shape.to_vec())?
         .into_any())

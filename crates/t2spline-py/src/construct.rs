@@ -240,19 +240,28 @@ pub(crate) struct FuzzyArrays {
 
 impl FuzzyArrays {
     /// Reads `crisp` (net + `(d,)`), `upper`, `primary`, `lower` (net +
-    /// `(d, 2)`, `[left, right]` last) and `lower_height` (anything that
-    /// broadcasts to net + `(d,)`); the net has `rank` dimensions (1 for a
+    /// `(d, 2)`, `[left, right]` last; each `[c, c]` when not given, as a
+    /// crisp number's) and `lower_height` (anything that broadcasts to net +
+    /// `(d,)`; 1 when not given); the net has `rank` dimensions (1 for a
     /// curve, 2 for a surface).
     ///
     /// # Errors
     /// `TypeError` / `ValueError` naming the argument and the shape expected.
     pub(crate) fn read(
-        [crisp, upper, primary, lower, lower_height]: [&Bound<'_, PyAny>; 5],
+        crisp: &Bound<'_, PyAny>,
+        [upper, primary, lower, lower_height]: [Option<&Bound<'_, PyAny>>; 4],
         rank: usize,
     ) -> PyResult<Self> {
         let crisp = floats(crisp, "crisp")?;
         let (net, d) = crisp.net_shape("crisp", rank)?;
-        let feet = |arg, name| -> PyResult<Floats> {
+        // Feet not given: those of crisp numbers, `[c, c]`.
+        let feet = |arg: Option<&Bound<'_, PyAny>>, name| -> PyResult<Floats> {
+            let Some(arg) = arg else {
+                return Ok(Floats {
+                    shape: shape(&net, &[d, 2]),
+                    data: crisp.data.iter().flat_map(|&c| [c, c]).collect(),
+                });
+            };
             let f = floats(arg, name)?;
             f.expect_shape(
                 name,
@@ -266,7 +275,13 @@ impl FuzzyArrays {
             feet(primary, "primary")?,
             feet(lower, "lower")?,
         );
-        let h = floats(lower_height, "lower_height")?;
+        let h = match lower_height {
+            Some(h) => floats(h, "lower_height")?,
+            None => Floats {
+                shape: Vec::new(),
+                data: vec![1.0],
+            },
+        };
         let heights = h.broadcast_to(&crisp.shape).ok_or_else(|| {
             PyValueError::new_err(format!(
                 "lower_height: expected a number or an array that broadcasts to shape {}: one per coordinate of crisp, got {}",

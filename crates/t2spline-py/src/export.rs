@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::PyString;
-use t2spline::job::Overrides;
+use t2spline::job::{LengthUnit, Overrides};
 use t2spline_io::{write_atomic, CadFormat};
 
 use crate::errors::{io_error, without_gil};
@@ -35,6 +35,9 @@ use crate::run::{job_text, prepare, run_error, warn_alpha};
 ///     The level alpha of the defuzzified curve, in place of the job's.
 /// type_reduction : {"paper", "centroid", "nie-tan", "alpha-planes"}, optional
 ///     The type reduction of the defuzzified curve, in place of the job's.
+/// units : {"mm", "cm", "m", "in", "ft"}, optional
+///     The unit of the coordinates that the file records (the numbers are
+///     written as they are); by default the job's ``units``, else ``"mm"``.
 ///
 /// Raises
 /// ------
@@ -42,11 +45,12 @@ use crate::run::{job_text, prepare, run_error, warn_alpha};
 ///     For a job that breaks the rules, or curves the format cannot hold
 ///     (degree 0; a surface in DXF).
 /// ValueError
-///     For an unknown ``format``, or a path whose extension names none.
+///     For an unknown ``format`` or ``units``, or a path whose extension
+///     names none.
 /// OSError
 ///     For a file that cannot be read or written.
 #[pyfunction]
-#[pyo3(signature = (job, path, format=None, alpha=None, type_reduction=None))]
+#[pyo3(signature = (job, path, format=None, alpha=None, type_reduction=None, *, units=None))]
 pub(crate) fn export<'py>(
     py: Python<'py>,
     job: &Bound<'py, PyAny>,
@@ -54,7 +58,17 @@ pub(crate) fn export<'py>(
     format: Option<&Bound<'py, PyAny>>,
     alpha: Option<&Bound<'py, PyAny>>,
     type_reduction: Option<&Bound<'py, PyAny>>,
+    units: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<()> {
+    let units = match keyword::opt_text(units, "units")? {
+        Some(name) => Some(LengthUnit::named(&name).ok_or_else(|| {
+            PyValueError::new_err(format!(
+                "units: unknown unit {name:?} (known: {})",
+                LengthUnit::names()
+            ))
+        })?),
+        None => None,
+    };
     if !(path.is_instance_of::<PyString>() || path.hasattr("__fspath__")?) {
         return Err(PyTypeError::new_err(format!(
             "path: expected a str or os.PathLike, got {}",
@@ -90,7 +104,9 @@ pub(crate) fn export<'py>(
     warn_alpha(py, prepared.settings(), overrides.alpha.is_some(), "")?;
     let name = file_name(&path);
     without_gil(py, || {
-        let text = prepared.cad(format, name, &source).map_err(Failure::Run)?;
+        let text = prepared
+            .cad(format, name, &source, units)
+            .map_err(Failure::Run)?;
         write_atomic(&path, text.as_bytes()).map_err(Failure::Write)
     })?
     .map_err(|e| match e {

@@ -91,17 +91,17 @@ use crate::keyword;
 /// ((4, 3, 3), {'data': [5, 4], 'control': [4, 3]})
 #[pyfunction]
 #[pyo3(
-    signature = (crisp, upper, primary, lower, lower_height, *, degree, control_points=None, parametrization=None, mode=None),
-    text_signature = "(crisp, upper, primary, lower, lower_height, *, degree, control_points=None, parametrization='chord', mode='valid')"
+    signature = (crisp, upper=None, primary=None, lower=None, lower_height=None, *, degree, control_points=None, parametrization=None, mode=None),
+    text_signature = "(crisp, upper=None, primary=None, lower=None, lower_height=None, *, degree, control_points=None, parametrization='chord', mode='valid')"
 )]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn fit<'py>(
     py: Python<'py>,
     crisp: &Bound<'py, PyAny>,
-    upper: &Bound<'py, PyAny>,
-    primary: &Bound<'py, PyAny>,
-    lower: &Bound<'py, PyAny>,
-    lower_height: &Bound<'py, PyAny>,
+    upper: Option<&Bound<'py, PyAny>>,
+    primary: Option<&Bound<'py, PyAny>>,
+    lower: Option<&Bound<'py, PyAny>>,
+    lower_height: Option<&Bound<'py, PyAny>>,
     degree: &Bound<'py, PyAny>,
     control_points: Option<&Bound<'py, PyAny>>,
     parametrization: Option<&Bound<'py, PyAny>>,
@@ -120,7 +120,7 @@ pub(crate) fn fit<'py>(
         3 => 2,
         _ => 1,
     };
-    let data = FuzzyArrays::read([crisp, upper, primary, lower, lower_height], rank)?;
+    let data = FuzzyArrays::read(crisp, [upper, primary, lower, lower_height], rank)?;
     if rank == 2 {
         let [rows, cols] = [data.net[0], data.net[1]];
         if data.d != 3 {

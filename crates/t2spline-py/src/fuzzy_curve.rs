@@ -8,9 +8,10 @@ use pyo3::types::{PyDict, PyTuple};
 use t2spline::{FuzzyCurve, Layer};
 
 use crate::arrays::{array, coords_last, optional_vector};
+use crate::capability;
 use crate::classes::{PyFuzzyCurve, PyNurbsCurve, PySolution};
 use crate::closest::Targets;
-use crate::construct::{degree, layer, FuzzyArrays};
+use crate::construct::{count, degree, layer, FuzzyArrays};
 use crate::curve_methods::curve_methods;
 use crate::dim::by_dim;
 use crate::errors::compute;
@@ -26,15 +27,15 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
         crate::pickle::by_constructor(slf, &["crisp", "upper", "primary", "lower", "lower_height", "weights", "knots"])
     }
     #[new]
-    #[pyo3(signature = (crisp, upper, primary, lower, lower_height, weights=None, knots=None, *, degree=None, order=None))]
+    #[pyo3(signature = (crisp, upper=None, primary=None, lower=None, lower_height=None, weights=None, knots=None, *, degree=None, order=None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         py: Python<'_>,
         crisp: &Bound<'_, PyAny>,
-        upper: &Bound<'_, PyAny>,
-        primary: &Bound<'_, PyAny>,
-        lower: &Bound<'_, PyAny>,
-        lower_height: &Bound<'_, PyAny>,
+        upper: Option<&Bound<'_, PyAny>>,
+        primary: Option<&Bound<'_, PyAny>>,
+        lower: Option<&Bound<'_, PyAny>>,
+        lower_height: Option<&Bound<'_, PyAny>>,
         weights: Option<&Bound<'_, PyAny>>,
         knots: Option<&Bound<'_, PyAny>>,
         degree: Option<&Bound<'_, PyAny>>,
@@ -44,7 +45,7 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
             keyword::opt_int(degree, "degree")?,
             keyword::opt_int(order, "order")?,
         );
-        let data = FuzzyArrays::read([crisp, upper, primary, lower, lower_height], 1)?;
+        let data = FuzzyArrays::read(crisp, [upper, primary, lower, lower_height], 1)?;
         let weights = optional_vector(weights, "weights")?.unwrap_or_else(|| vec![1.0; data.n]);
         let knots = optional_vector(knots, "knots")?;
         let degree = self::degree(degree, order, knots.as_ref().map(Vec::len), data.n)?;
@@ -131,25 +132,68 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
         py: Python<'py>,
         point: &Bound<'py, PyAny>,
     ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>, Bound<'py, PyAny>)> {
-        let d = self.dimension();
-        let targets = Targets::extract(point, d)?;
-        let found = by_dim!(&self.0, |c| compute(py, || {
-            let mut out = [vec![], vec![], vec![]];
-            for p in targets.rows() {
-                for q in c.closest_points(p).as_array() {
-                    out[0].push(q.t);
-                    out[1].extend(q.point);
-                    out[2].push(q.distance);
-                }
-            }
-            Ok(out)
-        }))?;
-        let [t, points, distances] = found;
-        Ok((
-            targets.pack(py, t, &[7])?,
-            targets.pack(py, points, &[7, d])?,
-            targets.pack(py, distances, &[7])?,
-        ))
+        let targets = Targets::extract(point, self.dimension())?;
+        let found = by_dim!(&self.0, |c| capability::closest(py, c, &targets))?;
+        let [t, points, distances] = capability::items(found)?;
+        Ok((t, points, distances))
+    }
+
+    /// The derivatives ``C⁽⁰⁾ … C⁽ᵒʳᵈᵉʳ⁾`` of every layer curve at every value
+    /// of ``t`` (see ``NurbsCurve.derivatives``); unlike the points, the
+    /// layers' derivatives are not ordered.
+    ///
+    /// Returns
+    /// -------
+    /// numpy.ndarray
+    ///     Shape ``t.shape + (7, order + 1, dimension)``, layers in the order
+    ///     of docs/method.md §1; ``[..., i, 0, :]`` is the point of layer ``i``.
+    #[pyo3(signature = (t, order=None), text_signature = "($self, t, order=1)")]
+    fn derivatives<'py>(
+        &self,
+        py: Python<'py>,
+        t: &Bound<'py, PyAny>,
+        order: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let order = count(keyword::opt_int(order, "order")?.unwrap_or(1), "order", 0)?;
+        by_dim!(&self.0, |c| capability::curve_derivatives(py, c, t, order, self.dimension()))
+    }
+
+    /// The curvature of every layer curve at every value of ``t`` (see
+    /// ``NurbsCurve.curvature``), as ``FuzzySurface.curvatures`` gives it for
+    /// surfaces.
+    ///
+    /// Returns
+    /// -------
+    /// numpy.ndarray
+    ///     Shape ``t.shape + (7,)``, layers in the order of docs/method.md §1.
+    ///
+    /// Raises
+    /// ------
+    /// ValueError
+    ///     For a parameter outside the domain; where a layer curve stands
+    ///     still (the message names the layer).
+    ///
+    /// Examples
+    /// --------
+    /// >>> import numpy as np
+    /// >>> w = np.sqrt(0.5)                      # a quarter circle, radius 1
+    /// >>> c = np.array([[1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
+    /// >>> arc = FuzzyCurve(c, np.stack([0.5 * c, 2 * c], -1), np.stack([c, c], -1),
+    /// ...                  np.stack([c, c], -1), lower_height=0.5, weights=[1, w, 1], degree=2)
+    /// >>> arc.curvatures(0.3).round(12).tolist()   # radii 0.5, 1 and 2
+    /// [2.0, 1.0, 1.0, 1.0, 1.0, 1.0, 0.5]
+    fn curvatures<'py>(&self, py: Python<'py>, t: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+        by_dim!(&self.0, |c| capability::curve_curvature(py, c, t))
+    }
+
+    /// The tight axis-aligned box ``(min, max)`` of all seven layer curves,
+    /// each of shape ``(dimension,)``: the region the fuzzy curve can occupy
+    /// (as ``FuzzySurface.bounding_box``).
+    fn bounding_box<'py>(
+        &self,
+        py: Python<'py>,
+    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+        by_dim!(&self.0, |c| capability::bounding_box(py, c))
     }
 
     /// ``curve(t)`` is ``curve.eval_layers(t)``: the seven layer curves at
@@ -229,8 +273,12 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
     /// >>> line = FuzzyCurve(c, c[..., None] + s, c[..., None] + 0.5 * s,
     /// ...                   c[..., None] + 0.25 * s, lower_height=0.5, degree=1)
     /// >>> g = line.membership([[2.0, 0.0], [2.0, 0.5], [2.0, 3.0]])
-    /// >>> g["upper"], g["primary"], g["lower"]
-    /// (array([1. , 0.5, 0. ]), array([1., 0., 0.]), array([0.5, 0. , 0. ]))
+    /// >>> [np.round(g[k], 9) for k in ("upper", "primary", "lower")]
+    /// [array([1. , 0.5, 0. ]), array([1., 0., 0.]), array([0.5, 0. , 0. ])]
+    ///
+    /// A grade is certified to 1e-7 and never below the truth; a point on a
+    /// foot, as (2, 0.5) is on the primary one, may grade a few 1e-12 above
+    /// 0 (the one slack of docs/set.md), hence the rounding.
     fn membership<'py>(
         &self,
         py: Python<'py>,
@@ -327,7 +375,7 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
         x0: &Bound<'py, PyAny>,
         levels: Option<&Bound<'py, PyAny>>,
         tolerance: Option<&Bound<'py, PyAny>>,
-    ) -> PyResult<Bound<'py, pyo3::types::PyList>> {
+    ) -> PyResult<Bound<'py, PyAny>> {
         crate::set::curve_section(py, &self.0, x0, levels, tolerance)
     }
 
@@ -342,12 +390,19 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
     /// Parameters
     /// ----------
     /// levels : int or array_like, optional
-    ///     A count of levels equally spaced from 0 to 1 (2 to 1001, default
-    ///     11), or the levels themselves.
+    ///     A count of levels equally spaced from 0 to 1 (2 to 51, default
+    ///     11), or the levels themselves (at most 51).
     /// at : float or array_like, optional
-    ///     Parameters in the domain.
+    ///     Parameters in the domain (at most 1 000).
     /// order : int, optional
     ///     The derivative's order (1 to 64, default 1).
+    /// closed : bool, optional
+    ///     ``True``: the curve must close (``ValueError`` naming its ends
+    ///     otherwise) and its area is enclosed; ``False``: the area under it,
+    ///     even if it closes; ``None`` (default): enclosed where the crisp
+    ///     curve ends where it starts (docs/method.md §11). An enclosed area
+    ///     is positive whichever way the curve runs; ``"note"`` says when only
+    ///     the crisp layer closes.
     ///
     /// Returns
     /// -------
@@ -373,8 +428,8 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
     /// >>> [(round(l["min"], 6), round(l["max"], 6)) for l in m["length"]["upper"]]
     /// [(2.0, 6.0), (3.0, 5.0), (4.0, 4.0)]
     #[pyo3(
-        signature = (levels=None, at=None, order=None),
-        text_signature = "($self, levels=11, at=None, order=1)"
+        signature = (levels=None, at=None, order=None, *, closed=None),
+        text_signature = "($self, levels=11, at=None, order=1, *, closed=None)"
     )]
     fn measure<'py>(
         &self,
@@ -382,8 +437,9 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
         levels: Option<&Bound<'py, PyAny>>,
         at: Option<&Bound<'py, PyAny>>,
         order: Option<&Bound<'py, PyAny>>,
+        closed: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        crate::measure::curve_measure(py, &self.0, levels, at, order)
+        crate::measure::curve_measure(py, &self.0, levels, at, order, closed)
     }
 
     /// The distance between the crisp curve and the defuzzified curve of
@@ -465,6 +521,28 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
         shape: &Bound<'py, PyAny>,
     ) -> PyResult<Bound<'py, PyDict>> {
         crate::set::curve_membership_grid(py, &self.0, x_range, y_range, shape)
+    }
+
+    /// The picture in a notebook: stage 1 (the fuzzy control points, the
+    /// seven layer curves and the regions at level 0), drawn by the figure
+    /// code of ``t2spline plot``, as inline SVG under a short table; a large
+    /// curve is drawn thinned and the figure says so.
+    fn _repr_html_(&self) -> PyResult<String> {
+        use crate::dim::ToModel as _;
+        let (a, b) = self.domain();
+        let rows = by_dim!(&self.0, |c| vec![
+            ("dimension", self.dimension().to_string()),
+            ("degree (order)", format!("{} ({})", c.degree(), c.order())),
+            ("control points", c.points().len().to_string()),
+            ("domain", format!("[{a:?}, {b:?}]")),
+        ]);
+        let figures = crate::picture::stage_figures(
+            self.0.to_model()?,
+            t2spline::Alpha::ZERO,
+            t2spline::TypeReduction::Paper,
+            t2spline_plot::Stages::First,
+        )?;
+        Ok(crate::picture::page(&figures, &rows))
     }
 
     fn __repr__(&self) -> String {

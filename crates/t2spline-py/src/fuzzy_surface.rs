@@ -9,9 +9,10 @@ use pyo3::types::{PyDict, PyTuple};
 use t2spline::{FuzzySurface, Layer};
 
 use crate::arrays::{coords_last, optional_vector};
+use crate::capability;
 use crate::classes::{PyFuzzyCurve, PyFuzzySurface, PyNurbsSurface, PySurfaceSolution};
 use crate::closest::{ClosestArrays, Targets};
-use crate::construct::{layer, net_weights, rows, surface_degrees, FuzzyArrays};
+use crate::construct::{count, layer, net_weights, rows, surface_degrees, FuzzyArrays};
 use crate::curvature::{curvature_dict, spatial};
 use crate::dim::by_dim;
 use crate::errors::compute;
@@ -28,15 +29,15 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
         crate::pickle::by_constructor(slf, &["crisp", "upper", "primary", "lower", "lower_height", "weights", "knots_u", "knots_v"])
     }
     #[new]
-    #[pyo3(signature = (crisp, upper, primary, lower, lower_height, weights=None, knots_u=None, knots_v=None, *, degree=None, order=None))]
+    #[pyo3(signature = (crisp, upper=None, primary=None, lower=None, lower_height=None, weights=None, knots_u=None, knots_v=None, *, degree=None, order=None))]
     #[allow(clippy::too_many_arguments)]
     fn new(
         py: Python<'_>,
         crisp: &Bound<'_, PyAny>,
-        upper: &Bound<'_, PyAny>,
-        primary: &Bound<'_, PyAny>,
-        lower: &Bound<'_, PyAny>,
-        lower_height: &Bound<'_, PyAny>,
+        upper: Option<&Bound<'_, PyAny>>,
+        primary: Option<&Bound<'_, PyAny>>,
+        lower: Option<&Bound<'_, PyAny>>,
+        lower_height: Option<&Bound<'_, PyAny>>,
         weights: Option<&Bound<'_, PyAny>>,
         knots_u: Option<&Bound<'_, PyAny>>,
         knots_v: Option<&Bound<'_, PyAny>>,
@@ -47,7 +48,7 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
             keyword::opt_per_direction(degree, "degree")?,
             keyword::opt_per_direction(order, "order")?,
         );
-        let data = FuzzyArrays::read([crisp, upper, primary, lower, lower_height], 2)?;
+        let data = FuzzyArrays::read(crisp, [upper, primary, lower, lower_height], 2)?;
         let net = [data.net[0], data.net[1]];
         let weights = rows(net_weights(weights, net)?, net);
         let knots = [
@@ -114,27 +115,10 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
         py: Python<'py>,
         point: &Bound<'py, PyAny>,
     ) -> PyResult<ClosestArrays<'py>> {
-        let d = self.dimension();
-        let targets = Targets::extract(point, d)?;
-        let found = by_dim!(&self.0, |s| compute(py, || {
-            let mut out = [vec![], vec![], vec![], vec![]];
-            for p in targets.rows() {
-                for c in s.closest_points(p)?.as_array() {
-                    out[0].push(c.u);
-                    out[1].push(c.v);
-                    out[2].extend(c.point);
-                    out[3].push(c.distance);
-                }
-            }
-            Ok(out)
-        }))?;
-        let [u, v, points, distances] = found;
-        Ok((
-            targets.pack(py, u, &[7])?,
-            targets.pack(py, v, &[7])?,
-            targets.pack(py, points, &[7, d])?,
-            targets.pack(py, distances, &[7])?,
-        ))
+        let targets = Targets::extract(point, self.dimension())?;
+        let found = by_dim!(&self.0, |s| capability::closest(py, s, &targets))?;
+        let [u, v, points, distances] = capability::items(found)?;
+        Ok((u, v, points, distances))
     }
 
     /// The curvature of every layer surface at every pair of ``u`` and ``v``
@@ -167,6 +151,28 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
             out.extend(s.curvatures(u, v)?.into_array());
             Ok(())
         })
+    }
+
+    /// The derivatives of every layer surface at every pair of ``u`` and
+    /// ``v`` (see ``NurbsSurface.derivatives``).
+    ///
+    /// Returns
+    /// -------
+    /// numpy.ndarray
+    ///     Shape ``broadcast(u, v).shape + (7, order + 1, order + 1,
+    ///     dimension)``, layers in the order of docs/method.md §1:
+    ///     ``[..., i, k, l, :]`` is ``∂ᵏ⁺ˡS/∂uᵏ∂vˡ`` of layer ``i``; NaN where
+    ///     ``k + l > order``.
+    #[pyo3(signature = (u, v, order=None), text_signature = "($self, u, v, order=1)")]
+    fn derivatives<'py>(
+        &self,
+        py: Python<'py>,
+        u: &Bound<'py, PyAny>,
+        v: &Bound<'py, PyAny>,
+        order: Option<&Bound<'py, PyAny>>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let order = count(keyword::opt_int(order, "order")?.unwrap_or(1), "order", 0)?;
+        by_dim!(&self.0, |s| capability::surface_derivatives(py, s, u, v, order, self.dimension()))
     }
 
     /// The seven layer surfaces at every pair of ``u`` and ``v`` (broadcast
@@ -316,6 +322,55 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
         crate::set::surface_section(py, &self.0, x0, y0, levels)
     }
 
+    /// The volumes between the surface and the plane ``z = datum`` (where
+    /// it lies below and above), the plan area where it lies below, and the
+    /// surface area, each as intervals over the nets whose heights lie in
+    /// their cuts, per membership function and level (docs/method.md §14):
+    /// the dict ``t2spline measure`` writes for a surface job. x and y must
+    /// be crisp and the surface the graph of a height over its plan.
+    ///
+    /// Parameters
+    /// ----------
+    /// levels : int or array_like, optional
+    ///     A count of levels equally spaced from 0 to 1 (2 to 51, default
+    ///     11), or the levels themselves.
+    /// datum : float, optional
+    ///     The height of the plane (default 0).
+    /// area : bool, optional
+    ///     Whether to measure the surface area (default True).
+    ///
+    /// Returns
+    /// -------
+    /// dict
+    ///     ``"levels"``, ``"datum"``, ``"tolerance"``, ``"plan_area"``, and
+    ///     per quantity (``"volume_below"``, ``"volume_above"``,
+    ///     ``"plan_area_below"``, ``"area"``) a list of levels per function.
+    ///
+    /// Examples
+    /// --------
+    /// >>> import numpy as np
+    /// >>> x, y = np.meshgrid([0.0, 2.0], [0.0, 2.0], indexing="ij")
+    /// >>> crisp = np.stack([x, y, 1 + 0 * x], axis=-1)
+    /// >>> s = np.array([0.0, 0.0, 1.0])[:, None] * np.array([-0.5, 0.5])
+    /// >>> flat = FuzzySurface(crisp, crisp[..., None] + s, crisp[..., None] + 0.5 * s,
+    /// ...                     crisp[..., None] + 0 * s, lower_height=1.0, degree=1)
+    /// >>> m = flat.measure(levels=3)
+    /// >>> [(round(l["min"], 9), round(l["max"], 9)) for l in m["volume_above"]["upper"]]
+    /// [(2.0, 6.0), (3.0, 5.0), (4.0, 4.0)]
+    #[pyo3(
+        signature = (levels=None, datum=0.0, area=true),
+        text_signature = "($self, levels=11, datum=0.0, area=True)"
+    )]
+    fn measure<'py>(
+        &self,
+        py: Python<'py>,
+        levels: Option<&Bound<'py, PyAny>>,
+        datum: f64,
+        area: bool,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        crate::measure::surface_measure(py, &self.0, levels, datum, area)
+    }
+
     /// The distance between the crisp surface and the defuzzified surface
     /// of the paper's type reduction at each level of ``alphas``, sampled on
     /// a uniform grid (docs/method.md §7), as ``FuzzyCurve.distance_sweep``:
@@ -353,6 +408,33 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
         samples: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyDict>> {
         crate::distance_sweep::surface_sweep(py, &self.0, alphas, samples)
+    }
+
+    /// The picture in a notebook: stage 1 (the shaded crisp surface, the
+    /// upper envelopes, the fuzzy net), drawn by the figure code of
+    /// ``t2spline plot``, as inline SVG under a short table; a large surface
+    /// is drawn on a thinned grid and the figure says so. ``None`` (no
+    /// picture) for a surface in the plane.
+    fn _repr_html_(&self) -> PyResult<Option<String>> {
+        use crate::dim::ToModel as _;
+        let Ok(model) = self.0.to_model() else {
+            return Ok(None);
+        };
+        let rows = by_dim!(&self.0, |s| {
+            let ([p, q], [nu, nv]) = (s.degree(), s.shape());
+            vec![
+                ("dimension", self.dimension().to_string()),
+                ("degree (u, v)", format!("({p}, {q})")),
+                ("control net", format!("{nu} × {nv}")),
+            ]
+        });
+        let figures = crate::picture::stage_figures(
+            model,
+            t2spline::Alpha::ZERO,
+            t2spline::TypeReduction::Paper,
+            t2spline_plot::Stages::First,
+        )?;
+        Ok(Some(crate::picture::page(&figures, &rows)))
     }
 
     fn __repr__(&self) -> String {

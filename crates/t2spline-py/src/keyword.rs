@@ -173,6 +173,24 @@ pub(crate) fn opt_text(arg: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<O
         .transpose()
 }
 
+/// A bool (`True` or `False`, not a number) for an argument that may be
+/// `None` or left out.
+///
+/// # Errors
+/// `TypeError` naming `name` for anything else.
+pub(crate) fn opt_bool(arg: Option<&Bound<'_, PyAny>>, name: &str) -> PyResult<Option<bool>> {
+    let Some(arg) = arg.filter(|a| !a.is_none()) else {
+        return Ok(None);
+    };
+    match arg.cast::<pyo3::types::PyBool>() {
+        Ok(b) => Ok(Some(b.is_true())),
+        Err(_) => Err(PyTypeError::new_err(format!(
+            "{name}: expected True, False or None, got {}",
+            type_name(arg)
+        ))),
+    }
+}
+
 /// One int for both directions of a surface, or a pair `(u, v)` (a tuple or
 /// a list of two ints); the ints of a pair are named `name[0]`, `name[1]`.
 ///

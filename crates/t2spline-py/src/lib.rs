@@ -45,8 +45,10 @@
 )]
 
 mod arrays;
+mod capability;
 mod classes;
 mod closest;
+mod command;
 mod construct;
 mod curvature;
 mod curve_methods;
@@ -70,6 +72,7 @@ mod number;
 mod nurbs_curve;
 mod nurbs_surface;
 mod pickle;
+mod picture;
 mod readings;
 mod reduction;
 mod run;
@@ -145,6 +148,7 @@ fn _t2spline(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<classes::PySurfaceSolution>()?;
     m.add_class::<set::PyRegion>()?;
     m.add_function(wrap_pyfunction!(run::run, m)?)?;
+    m.add_function(wrap_pyfunction!(command::_cli_main, m)?)?;
     m.add_function(wrap_pyfunction!(many::run_many, m)?)?;
     m.add_function(wrap_pyfunction!(many::_run_rows, m)?)?;
     m.add_function(wrap_pyfunction!(fit::fit, m)?)?;

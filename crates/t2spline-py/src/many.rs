@@ -11,7 +11,7 @@
 use numpy::{PyArray1, PyReadonlyArray1};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyList};
+use pyo3::types::{PyDict, PyList, PyModule};
 use rayon::prelude::*;
 use t2spline::job::{Distance, Overrides, Parameter, Regime, RunOutput, Settings};
 use t2spline::TypeReduction;
@@ -89,6 +89,8 @@ fn indexed(py: Python<'_>, e: PyErr, k: usize) -> PyErr {
 ///     Each a dict with the keys of a job file, a job's JSON text (a ``str``
 ///     whose first character other than white space is ``{``), or the path
 ///     of a job file. A dict or text is named ``<jobs[k]>`` in messages.
+///     ``jobs`` itself may not be one job (a ``str``, ``bytes``, a dict or
+///     a path): that is a ``TypeError``.
 /// samples, alpha : optional
 ///     As for ``run``, for every job.
 /// errors : {"collect", "raise"}, optional
@@ -148,6 +150,7 @@ pub(crate) fn run_many<'py>(
     derivatives: Option<&Bound<'py, PyAny>>,
     type_reduction: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyList>> {
+    refuse_one_job(jobs)?;
     let overrides = run::keywords(alpha, samples, derivatives, type_reduction)?;
     let on_error = on_error(errors)?;
     let mut texts = Vec::new();
@@ -161,42 +164,102 @@ pub(crate) fn run_many<'py>(
             }
         }
     }
-    let ran: Vec<Option<Ran>> = without_gil(py, || {
-        texts
-            .par_iter()
-            .map(|t| {
-                t.as_ref()
-                    .map(|(text, source)| prepare_and_run(text, source, &overrides))
-            })
-            .collect()
-    })?;
     let mut unread = unread.into_iter().peekable();
     let results = PyList::empty(py);
-    for (k, ran) in ran.into_iter().enumerate() {
-        let outcome = match ran {
-            Some(Ok((settings, tree))) => {
-                let prefix = format!("jobs[{k}]: ");
-                run::warn_alpha(py, &settings, overrides.alpha.is_some(), &prefix)?;
-                tree.into_py(py)
-            }
-            Some(Err(failure)) => Err(failure.into_err(py)),
-            None => match unread.next_if(|(at, _)| *at == k) {
-                Some((_, e)) => Err(e),
-                None => Err(internal_error("a job without its text")),
-            },
-        };
-        match outcome {
-            Ok(result) => results.append(result)?,
-            Err(e) => {
-                let e = indexed(py, e, k);
-                match on_error {
-                    OnError::Raise => return Err(e),
-                    OnError::Collect => results.append(e.into_value(py))?,
+    // Python's cyclic collector would walk every result made so far each
+    // time it runs: quadratic in the jobs. Results hold no cycles; it is
+    // paused while they are made, and restored as it was.
+    let _paused = PausedCollector::new(py)?;
+    // The jobs run a chunk at a time, each chunk's results made Python
+    // objects before the next runs: the memory is that of the results kept
+    // and one chunk's trees, not of every job's tree at once.
+    for (c, chunk) in texts.chunks(CHUNK).enumerate() {
+        let ran: Vec<Option<Ran>> = without_gil(py, || {
+            chunk
+                .par_iter()
+                .map(|t| {
+                    t.as_ref()
+                        .map(|(text, source)| prepare_and_run(text, source, &overrides))
+                })
+                .collect()
+        })?;
+        for (i, ran) in ran.into_iter().enumerate() {
+            let k = c * CHUNK + i;
+            let outcome = match ran {
+                Some(Ok((settings, tree))) => {
+                    let prefix = format!("jobs[{k}]: ");
+                    run::warn_alpha(py, &settings, overrides.alpha.is_some(), &prefix)?;
+                    tree.into_py(py)
+                }
+                Some(Err(failure)) => Err(failure.into_err(py)),
+                None => match unread.next_if(|(at, _)| *at == k) {
+                    Some((_, e)) => Err(e),
+                    None => Err(internal_error("a job without its text")),
+                },
+            };
+            match outcome {
+                Ok(result) => results.append(result)?,
+                Err(e) => {
+                    let e = indexed(py, e, k);
+                    match on_error {
+                        OnError::Raise => return Err(e),
+                        OnError::Collect => results.append(e.into_value(py))?,
+                    }
                 }
             }
         }
     }
     Ok(results)
+}
+
+/// Python's cyclic garbage collector paused while it lives, then enabled
+/// again if it was.
+struct PausedCollector<'py> {
+    gc: Bound<'py, PyModule>,
+    was_enabled: bool,
+}
+
+impl<'py> PausedCollector<'py> {
+    fn new(py: Python<'py>) -> PyResult<Self> {
+        let gc = py.import("gc")?;
+        let was_enabled = gc.call_method0("isenabled")?.extract::<bool>()?;
+        gc.call_method0("disable")?;
+        Ok(PausedCollector { gc, was_enabled })
+    }
+}
+
+impl Drop for PausedCollector<'_> {
+    fn drop(&mut self) {
+        if self.was_enabled {
+            // Enabling cannot fail short of a broken interpreter.
+            let _ = self.gc.call_method0("enable");
+        }
+    }
+}
+
+/// Jobs run between two conversions of their results to Python objects.
+const CHUNK: usize = 2048;
+
+/// `jobs` must be many: a `str`, `bytes`, a path or a dict is one job (its
+/// characters or keys would each be taken for a job).
+fn refuse_one_job(jobs: &Bound<'_, PyAny>) -> PyResult<()> {
+    let one = if jobs.is_instance_of::<pyo3::types::PyString>() {
+        Some("a str")
+    } else if jobs.is_instance_of::<pyo3::types::PyBytes>() {
+        Some("bytes")
+    } else if jobs.is_instance_of::<PyDict>() {
+        Some("a dict")
+    } else if jobs.hasattr("__fspath__")? {
+        Some("a path")
+    } else {
+        None
+    };
+    match one {
+        Some(kind) => Err(pyo3::exceptions::PyTypeError::new_err(format!(
+            "jobs: expected an iterable of jobs (a list of dicts, job texts or paths), got {kind}; for one job use t2spline.run(job)"
+        ))),
+        None => Ok(()),
+    }
 }
 
 /// What became of one row of a table of jobs.

@@ -1,20 +1,22 @@
 //! `FuzzyCurve.measure`: the quantities of docs/method.md §11 (arc length,
 //! area, derivative, tangent angle, curvature as intervals over the control
 //! points inside their cuts) as the dict `t2spline measure` writes, every
-//! list of numbers a numpy array.
+//! list of numbers a numpy array, which shows the `measures` figure in a
+//! notebook; `FuzzySurface.measure`: the volumes, plan area and surface
+//! area of §14, as the command writes them for a surface.
 
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use t2spline::measure::{MeasureOptions, MAX_MEASURE_LEVELS};
+use t2spline::measure::{MeasureOptions, SurfaceMeasureOptions, MAX_MEASURE_LEVELS};
 use t2spline::Alpha;
 
 use crate::arrays::{floats, shape_text};
-use crate::dim::{by_dim, ByDim, Fuzzy};
+use crate::dim::{by_dim, ByDim, Fuzzy, FuzzyNet};
 use crate::errors::{compute, internal_error};
 use crate::keyword;
 use crate::value::to_value;
 
-/// `levels`: a count (2 to 1001, default 11) or the levels themselves.
+/// `levels`: a count (2 to [`MAX_MEASURE_LEVELS`], default 11) or the levels themselves.
 fn levels(arg: Option<&Bound<'_, PyAny>>) -> PyResult<Vec<Alpha>> {
     let Some(arg) = arg.filter(|a| !a.is_none()) else {
         return Ok(MeasureOptions::uniform(11)
@@ -57,16 +59,18 @@ fn params(arg: Option<&Bound<'_, PyAny>>) -> PyResult<Vec<f64>> {
     Ok(given.data)
 }
 
-/// `FuzzyCurve.measure(levels=11, at=None, order=1)`.
+/// `FuzzyCurve.measure(levels=11, at=None, order=1, *, closed=None)`.
 pub(crate) fn curve_measure<'py>(
     py: Python<'py>,
     curve: &ByDim<Fuzzy>,
     levels_arg: Option<&Bound<'py, PyAny>>,
     at_arg: Option<&Bound<'py, PyAny>>,
     order_arg: Option<&Bound<'py, PyAny>>,
+    closed_arg: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let mut options = MeasureOptions::uniform(2).map_err(crate::errors::core_error)?;
     options.levels = levels(levels_arg)?;
+    options.closed = keyword::opt_bool(closed_arg, "closed")?;
     options.at = params(at_arg)?;
     if let Some(order) = order_arg.filter(|a| !a.is_none()) {
         let k = keyword::int(order, "order")?;
@@ -75,8 +79,54 @@ pub(crate) fn curve_measure<'py>(
             .filter(|k| (1..=64).contains(k))
             .ok_or_else(|| PyValueError::new_err(format!("order: {k} is outside [1, 64]")))?;
     }
-    let measures = by_dim!(curve, |c| compute(py, || c.measure(&options)))?;
+    let (measures, figure) = by_dim!(curve, |c| {
+        let m = compute(py, || c.measure(&options))?;
+        // The picture: the `measures` figure of `t2spline plot` of these
+        // measures (nothing is measured again).
+        let figure = t2spline_plot::measures_notebook_figure(c, &m);
+        (m, figure)
+    });
+    // A function with no cut at a level, or no parameters, is an empty list.
+    let value = to_value(&measures)
+        .map_err(|e| internal_error(&e.to_string()))?
+        .empty_as_lists()
+        .into_py(py)?;
+    crate::picture::pictured(
+        value,
+        vec![figure],
+        vec![("levels", measures.levels.len().to_string())],
+    )
+}
+
+/// `FuzzySurface.measure(levels=11, datum=0.0, area=True)`.
+pub(crate) fn surface_measure<'py>(
+    py: Python<'py>,
+    surface: &ByDim<FuzzyNet>,
+    levels_arg: Option<&Bound<'py, PyAny>>,
+    datum: f64,
+    area: bool,
+) -> PyResult<Bound<'py, PyAny>> {
+    let s: &t2spline::FuzzySurface<3> = match surface {
+        ByDim::Spatial(s) => s,
+        ByDim::Planar(_) => {
+            return Err(PyValueError::new_err(
+                "measure: taken of surfaces in space (heights z over a plan); this surface is in the plane",
+            ))
+        }
+    };
+    if !datum.is_finite() {
+        return Err(PyValueError::new_err(format!(
+            "datum: {datum} is not a finite number"
+        )));
+    }
+    let options = SurfaceMeasureOptions {
+        levels: levels(levels_arg)?,
+        datum,
+        area,
+    };
+    let measures = compute(py, || s.measure(&options))?;
     to_value(&measures)
         .map_err(|e| internal_error(&e.to_string()))?
+        .empty_as_lists()
         .into_py(py)
 }

@@ -159,10 +159,7 @@ pub(crate) fn problems(text: &str) -> Vec<Problem> {
     if count > found.len() {
         found.push(Problem {
             line_column: None,
-            message: format!(
-                "… and {} more problems (only the first {MAX_PROBLEMS} are listed)",
-                count - found.len()
-            ),
+            message: t2spline_io::job::more_problems(count - found.len(), false),
         });
     }
     found

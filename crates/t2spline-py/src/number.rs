@@ -64,17 +64,21 @@ fn pair(i: t2spline::Interval) -> (f64, f64) {
 #[pymethods]
 impl PyFuzzyNumber {
     #[new]
-    #[pyo3(signature = (crisp, upper, primary, lower, lower_height))]
+    #[pyo3(signature = (crisp, upper=None, primary=None, lower=None, lower_height=None))]
     fn new(
         crisp: &Bound<'_, PyAny>,
-        upper: &Bound<'_, PyAny>,
-        primary: &Bound<'_, PyAny>,
-        lower: &Bound<'_, PyAny>,
-        lower_height: &Bound<'_, PyAny>,
+        upper: Option<&Bound<'_, PyAny>>,
+        primary: Option<&Bound<'_, PyAny>>,
+        lower: Option<&Bound<'_, PyAny>>,
+        lower_height: Option<&Bound<'_, PyAny>>,
     ) -> PyResult<Self> {
         let crisp = keyword::real(crisp, "crisp")?;
-        let lower_height = keyword::real(lower_height, "lower_height")?;
-        let feet = |arg, name| -> PyResult<[f64; 2]> {
+        // Not given: a crisp number's feet `(crisp, crisp)` and height 1.
+        let lower_height = keyword::opt_real(lower_height, "lower_height")?.unwrap_or(1.0);
+        let feet = |arg: Option<&Bound<'_, PyAny>>, name| -> PyResult<[f64; 2]> {
+            let Some(arg) = arg else {
+                return Ok([crisp; 2]);
+            };
             let f = floats(arg, name)?;
             f.expect_shape(name, &[2], ": (left, right)")?;
             Ok([f.data[0], f.data[1]])
@@ -245,6 +249,13 @@ impl PyFuzzyNumber {
             .map(|&v| self.0.membership(which, v))
             .collect();
         array(py, values, &x.shape)
+    }
+
+    /// The picture in a notebook: the number figure of ``t2spline plot``
+    /// (the three membership functions, the cut at ``alpha = h/2``, the type
+    /// reductions) as inline SVG under a table of the number's values.
+    fn _repr_html_(&self) -> PyResult<String> {
+        crate::picture::number_page(&self.0)
     }
 
     fn __repr__(&self) -> String {

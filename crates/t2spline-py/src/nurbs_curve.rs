@@ -5,7 +5,8 @@
 use pyo3::prelude::*;
 use t2spline::{KnotVector, NurbsCurve};
 
-use crate::arrays::{array, coords_last, floats, optional_vector, rows_array, Floats};
+use crate::arrays::{coords_last, floats, optional_vector, rows_array, Floats};
+use crate::capability;
 use crate::classes::PyNurbsCurve;
 use crate::closest::Targets;
 use crate::construct::{count, degree};
@@ -164,13 +165,7 @@ curve_methods!(PyNurbsCurve {
         order: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyAny>> {
         let order = count(keyword::opt_int(order, "order")?.unwrap_or(1), "order", 0)?;
-        let d = self.dimension();
-        // The order is checked by the core before anything is computed.
-        let rows = order.min(t2spline::nurbs::MAX_DERIVATIVE_ORDER) + 1;
-        by_dim!(&self.0, |c| at_params(py, t, &[rows, d], |v, out| {
-            out.extend(c.derivatives(v, order)?.into_iter().flatten());
-            Ok(())
-        }))
+        by_dim!(&self.0, |c| capability::curve_derivatives(py, c, t, order, self.dimension()))
     }
 
     /// The unit tangent ``C'(t)/|C'(t)|`` at every value of ``t``; shape
@@ -202,10 +197,7 @@ curve_methods!(PyNurbsCurve {
         py: Python<'py>,
         t: &Bound<'py, PyAny>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        by_dim!(&self.0, |c| at_params(py, t, &[], |v, out| {
-            out.push(c.curvature(v)?);
-            Ok(())
-        }))
+        by_dim!(&self.0, |c| capability::curve_curvature(py, c, t))
     }
 
     /// The rational basis ``Rᵢ(t) = wᵢNᵢ,ₚ(t) / Σⱼ wⱼNⱼ,ₚ(t)`` of every control
@@ -274,25 +266,10 @@ curve_methods!(PyNurbsCurve {
         py: Python<'py>,
         point: &Bound<'py, PyAny>,
     ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>, Bound<'py, PyAny>)> {
-        let d = self.dimension();
-        let targets = Targets::extract(point, d)?;
-        let (t, points, distances) = by_dim!(&self.0, |c| compute(py, || {
-            let found: Vec<_> = targets
-                .rows()
-                .into_iter()
-                .map(|p| c.closest_point(p))
-                .collect();
-            Ok((
-                found.iter().map(|f| f.t).collect::<Vec<_>>(),
-                found.iter().flat_map(|f| f.point).collect::<Vec<_>>(),
-                found.iter().map(|f| f.distance).collect::<Vec<_>>(),
-            ))
-        }))?;
-        Ok((
-            targets.pack(py, t, &[])?,
-            targets.pack(py, points, &[d])?,
-            targets.pack(py, distances, &[])?,
-        ))
+        let targets = Targets::extract(point, self.dimension())?;
+        let found = by_dim!(&self.0, |c| capability::closest(py, c, &targets))?;
+        let [t, points, distances] = capability::items(found)?;
+        Ok((t, points, distances))
     }
 
     /// The tight axis-aligned box of the curve ``(min, max)``, each of shape
@@ -301,12 +278,24 @@ curve_methods!(PyNurbsCurve {
         &self,
         py: Python<'py>,
     ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
-        let d = self.dimension();
-        let (lo, hi) = by_dim!(&self.0, |c| compute(py, || {
-            let b = c.bounding_box();
-            Ok((b.min.to_vec(), b.max.to_vec()))
-        }))?;
-        Ok((array(py, lo, &[d])?, array(py, hi, &[d])?))
+        by_dim!(&self.0, |c| capability::bounding_box(py, c))
+    }
+
+    /// The picture in a notebook: the curve and its control polygon, drawn
+    /// by the figure code of ``t2spline plot`` (stage 1 of the fuzzy curve
+    /// whose every number is crisp), as inline SVG under a short table.
+    fn _repr_html_(&self) -> PyResult<String> {
+        use crate::dim::ToModel as _;
+        let fuzzy: crate::dim::ByDim<crate::dim::Fuzzy> =
+            by_dim!(&self.0, |c| crate::picture::crisp_fuzzy_curve(c)?.into());
+        let (a, b) = self.domain();
+        let rows = by_dim!(&self.0, |c| vec![
+            ("dimension", self.dimension().to_string()),
+            ("degree (order)", format!("{} ({})", c.degree(), c.order())),
+            ("control points", c.control_points().len().to_string()),
+            ("domain", format!("[{a:?}, {b:?}]")),
+        ]);
+        crate::picture::crisp_page(fuzzy.to_model()?, "NURBS curve", &rows)
     }
 
     fn __repr__(&self) -> String {

@@ -6,10 +6,10 @@
 
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use t2spline::nurbs::MAX_DERIVATIVE_ORDER;
 use t2spline::{Direction, NurbsSurface};
 
 use crate::arrays::{coords_last, floats, optional_vector, Floats};
+use crate::capability;
 use crate::classes::{PyNurbsCurve, PyNurbsSurface};
 use crate::closest::{ClosestArrays, Targets};
 use crate::construct::{count, knot_vector, net_weights, rows, surface_degrees};
@@ -186,21 +186,7 @@ surface_methods!(PyNurbsSurface, PyNurbsCurve {
         order: Option<&Bound<'py, PyAny>>,
     ) -> PyResult<Bound<'py, PyAny>> {
         let order = count(keyword::opt_int(order, "order")?.unwrap_or(1), "order", 0)?;
-        let d = self.dimension();
-        // The order is checked by the core before anything is computed.
-        let rows = order.min(MAX_DERIVATIVE_ORDER) + 1;
-        by_dim!(&self.0, |s| at_pairs(py, u, v, &[rows, rows, d], |u, v, out| {
-            let derivatives = s.derivatives(u, v, order)?;
-            for k in 0..rows {
-                for l in 0..rows {
-                    match derivatives.get(k).and_then(|row| row.get(l)) {
-                        Some(value) => out.extend(value),
-                        None => out.extend((0..d).map(|_| f64::NAN)),
-                    }
-                }
-            }
-            Ok(())
-        }))
+        by_dim!(&self.0, |s| capability::surface_derivatives(py, s, u, v, order, self.dimension()))
     }
 
     /// The unit normal ``S_u × S_v / |S_u × S_v|`` at every pair of ``u`` and
@@ -318,26 +304,32 @@ surface_methods!(PyNurbsSurface, PyNurbsCurve {
         py: Python<'py>,
         point: &Bound<'py, PyAny>,
     ) -> PyResult<ClosestArrays<'py>> {
-        let d = self.dimension();
-        let targets = Targets::extract(point, d)?;
-        let found = by_dim!(&self.0, |s| compute(py, || {
-            let mut out = [vec![], vec![], vec![], vec![]];
-            for p in targets.rows() {
-                let c = s.closest_point(p)?;
-                out[0].push(c.u);
-                out[1].push(c.v);
-                out[2].extend(c.point);
-                out[3].push(c.distance);
-            }
-            Ok(out)
-        }))?;
-        let [u, v, points, distances] = found;
-        Ok((
-            targets.pack(py, u, &[])?,
-            targets.pack(py, v, &[])?,
-            targets.pack(py, points, &[d])?,
-            targets.pack(py, distances, &[])?,
-        ))
+        let targets = Targets::extract(point, self.dimension())?;
+        let found = by_dim!(&self.0, |s| capability::closest(py, s, &targets))?;
+        let [u, v, points, distances] = capability::items(found)?;
+        Ok((u, v, points, distances))
+    }
+
+    /// The picture in a notebook: the shaded surface and its control net,
+    /// drawn by the figure code of ``t2spline plot`` (stage 1 of the fuzzy
+    /// surface whose every number is crisp), as inline SVG under a short
+    /// table; ``None`` (no picture) for a surface in the plane.
+    fn _repr_html_(&self) -> PyResult<Option<String>> {
+        use crate::dim::ToModel as _;
+        let fuzzy: crate::dim::ByDim<crate::dim::FuzzyNet> =
+            by_dim!(&self.0, |s| crate::picture::crisp_fuzzy_surface(s)?.into());
+        let Ok(model) = fuzzy.to_model() else {
+            return Ok(None);
+        };
+        let rows = by_dim!(&self.0, |s| {
+            let ([p, q], [nu, nv]) = (s.degree(), s.shape());
+            vec![
+                ("dimension", self.dimension().to_string()),
+                ("degree (u, v)", format!("({p}, {q})")),
+                ("control net", format!("{nu} × {nv}")),
+            ]
+        });
+        crate::picture::crisp_page(model, "NURBS surface", &rows).map(Some)
     }
 
     fn __repr__(&self) -> String {

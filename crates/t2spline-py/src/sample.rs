@@ -15,7 +15,7 @@ use crate::errors::{compute, core_error};
 /// The most bytes the arrays of one sampling call may take (8 GiB, the limit
 /// of `t2spline bench`): larger requests are refused before anything is
 /// allocated.
-pub(crate) const MAX_OUTPUT_BYTES: u64 = t2spline::bench::MAX_OUTPUT_BYTES;
+pub(crate) const MAX_OUTPUT_BYTES: u64 = t2spline::sampling::MAX_OUTPUT_BYTES;
 
 /// Where to sample: a count of uniform parameters over the domain (an `int`),
 /// or the parameters themselves (a 1-D array).

@@ -13,7 +13,7 @@ use t2spline::{Alpha, FuzzyCurve, FuzzySurface, Membership};
 use crate::arrays::{array, floats, shape_text, Floats};
 use crate::construct::{count, PerDirection};
 use crate::dim::{by_dim, ByDim, Fuzzy, FuzzyNet};
-use crate::errors::{compute, core_error, without_gil};
+use crate::errors::{compute, core_error, internal_error, without_gil};
 use crate::keyword;
 
 /// Levels of `section(levels=N)` at most, as `t2spline section --levels`.
@@ -98,7 +98,9 @@ fn tolerance(arg: Option<&Bound<'_, PyAny>>) -> PyResult<Option<f64>> {
 /// A core error, with `tolerance: ` before an error about the tolerance.
 fn set_error(e: t2spline::Error) -> PyErr {
     match e {
-        t2spline::Error::Tolerance { .. } => PyValueError::new_err(format!("tolerance: {e}")),
+        t2spline::Error::Tolerance { .. } | t2spline::Error::ToleranceTooCoarse { .. } => {
+            PyValueError::new_err(format!("tolerance: {e}"))
+        }
         other => core_error(other),
     }
 }
@@ -242,12 +244,16 @@ impl PyRegion {
         Ok((slf.get_type().getattr("_restore")?, args))
     }
 
-    /// A region from what `__reduce__` gives (not part of the API).
+    /// A region from what `__reduce__` gives (not part of the API), checked
+    /// as a region is made: what a pickle restores is not trusted.
     ///
     /// Raises
     /// ------
     /// TypeError, ValueError
-    ///     For parts of another form, or a membership or plane unknown.
+    ///     For parts of another form, a membership or plane unknown, an
+    ///     alpha outside [0, 1], a tolerance that is not a finite positive
+    ///     number, or a ring that is too short, not finite, wound the wrong
+    ///     way or crosses itself (naming the polygon and the ring).
     #[classmethod]
     fn _restore(
         _cls: &Bound<'_, pyo3::types::PyType>,
@@ -261,10 +267,12 @@ impl PyRegion {
             .into_iter()
             .map(|(exterior, holes)| t2spline::set::Polygon { exterior, holes })
             .collect();
+        let alpha = t2spline::Alpha::try_new(alpha).map_err(crate::errors::core_error)?;
         Ok(PyRegion {
-            region: Region::from_parts(polygons, tolerance),
+            region: Region::try_from_parts(polygons, tolerance)
+                .map_err(crate::errors::core_error)?,
             membership: self::membership(Some(membership))?,
-            alpha,
+            alpha: alpha.get(),
             plane: self::plane(Some(plane), 3)?,
         })
     }
@@ -363,6 +371,13 @@ impl PyRegion {
                 shape_text(&p.shape)
             ))),
         }
+    }
+
+    /// The picture in a notebook: the region's polygons in its plane,
+    /// filled as stage 1 of ``t2spline plot`` fills them, as inline SVG
+    /// under a table of its plane, polygons, area and tolerance.
+    fn _repr_html_(&self) -> PyResult<String> {
+        crate::picture::region_page(&self.region, self.membership, self.alpha, self.plane)
     }
 
     fn __repr__(&self) -> String {
@@ -474,13 +489,25 @@ pub(crate) fn curve_section<'py>(
     x0: &Bound<'py, PyAny>,
     levels_arg: Option<&Bound<'py, PyAny>>,
     tolerance_arg: Option<&Bound<'py, PyAny>>,
-) -> PyResult<Bound<'py, PyList>> {
+) -> PyResult<Bound<'py, PyAny>> {
     let c = planar(curve, "section")?;
     let x0 = finite(x0, "x0")?;
     let levels = levels(levels_arg)?;
     let t = tolerance(tolerance_arg)?;
     let sections = without_gil(py, || c.sections(x0, &levels, t))?.map_err(set_error)?;
-    sections_list(py, &sections)
+    let list = sections_list(py, &sections)?;
+    // The picture: the `section` figure of `t2spline plot` at this station.
+    let job = t2spline::job::Job::new(t2spline::job::Model::Planar(c.clone()));
+    let figure = t2spline_plot::section_notebook_figure(&job, x0)
+        .map_err(|e| internal_error(&format!("drawing the section: {e}")))?;
+    crate::picture::pictured(
+        list.into_any(),
+        vec![figure],
+        vec![
+            ("station", format!("x = {x0:?}")),
+            ("levels", sections.len().to_string()),
+        ],
+    )
 }
 
 /// `FuzzySurface.section(x0, y0, levels=)`.

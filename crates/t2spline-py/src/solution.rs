@@ -97,6 +97,36 @@ stage_methods!(PySolution, fuzzy_curve, "n" {
         Ok(out)
     }
 
+    /// The picture in a notebook: the four stages (fuzzy curve, alpha-cut,
+    /// type-reduced, defuzzified with the largest distance magnified),
+    /// drawn by the figure code of ``t2spline plot`` as it draws this
+    /// solution's job, as inline SVG under a table of alpha, the type
+    /// reduction and the distance; a large curve is drawn thinned and the
+    /// figures say so.
+    fn _repr_html_(&self) -> PyResult<String> {
+        use crate::dim::ToModel as _;
+        let (fuzzy, alpha, method, d): (crate::dim::ByDim<crate::dim::Fuzzy>, _, _, _) =
+            by_dim!(&self.0, |s| (
+                s.fuzzy_curve().clone().into(),
+                s.alpha(),
+                s.type_reduction(),
+                s.distance()
+            ));
+        let figures = crate::picture::stage_figures(
+            fuzzy.to_model()?,
+            alpha,
+            method,
+            t2spline_plot::Stages::All,
+        )?;
+        let rows = [
+            ("alpha", format!("{:?}", alpha.get())),
+            ("type reduction", method.name().to_owned()),
+            ("distance max", format!("{:?} at t = {:?}", d.max, d.max_at)),
+            ("distance rms", format!("{:?}", d.rms)),
+        ];
+        Ok(crate::picture::page(&figures, &rows))
+    }
+
     fn __repr__(&self) -> String {
         by_dim!(&self.0, |s| format!(
             "Solution(alpha={:?}, control_points=({}, {}), degree={})",

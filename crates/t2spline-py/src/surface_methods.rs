@@ -103,15 +103,7 @@ macro_rules! surface_methods {
                 &self,
                 py: Python<'py>,
             ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
-                let d = self.dimension();
-                let (lo, hi) = $crate::dim::by_dim!(&self.0, |s| $crate::errors::compute(py, || {
-                    let b = s.bounding_box();
-                    Ok((b.min.to_vec(), b.max.to_vec()))
-                }))?;
-                Ok((
-                    $crate::arrays::array(py, lo, &[d])?,
-                    $crate::arrays::array(py, hi, &[d])?,
-                ))
+                $crate::dim::by_dim!(&self.0, |s| $crate::capability::bounding_box(py, s))
             }
 
             /// The isoparametric curve at ``t`` in ``direction``: for ``"u"``

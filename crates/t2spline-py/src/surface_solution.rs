@@ -115,6 +115,30 @@ stage_methods!(PySurfaceSolution, fuzzy_surface, "nu, nv" {
         Ok(out)
     }
 
+    /// The picture in a notebook: the four stages on the surface, drawn by
+    /// the figure code of ``t2spline plot``, as inline SVG under a table of
+    /// alpha and the type reduction; ``None`` (no picture) for a surface in
+    /// the plane.
+    fn _repr_html_(&self) -> PyResult<Option<String>> {
+        use crate::dim::ToModel as _;
+        let (fuzzy, alpha, method): (crate::dim::ByDim<crate::dim::FuzzyNet>, _, _) =
+            by_dim!(&self.0, |s| (
+                s.fuzzy_surface().clone().into(),
+                s.alpha(),
+                s.type_reduction()
+            ));
+        let Ok(model) = fuzzy.to_model() else {
+            return Ok(None);
+        };
+        let figures =
+            crate::picture::stage_figures(model, alpha, method, t2spline_plot::Stages::All)?;
+        let rows = [
+            ("alpha", format!("{:?}", alpha.get())),
+            ("type reduction", method.name().to_owned()),
+        ];
+        Ok(Some(crate::picture::page(&figures, &rows)))
+    }
+
     fn __repr__(&self) -> String {
         by_dim!(&self.0, |s| {
             let surface = s.fuzzy_surface();

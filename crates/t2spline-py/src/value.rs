@@ -80,6 +80,27 @@ impl Value {
     }
 }
 
+impl Value {
+    /// The same tree with every empty one-dimensional array a `list`: for
+    /// results whose sequences are lists of objects (the levels of a
+    /// measure), where an empty one has no numbers to make an array of.
+    pub(crate) fn empty_as_lists(self) -> Value {
+        match self {
+            Value::Array { shape, .. } if shape == [0] => Value::List(Vec::new()),
+            Value::List(items) => {
+                Value::List(items.into_iter().map(Value::empty_as_lists).collect())
+            }
+            Value::Dict(entries) => Value::Dict(
+                entries
+                    .into_iter()
+                    .map(|(k, v)| (k, v.empty_as_lists()))
+                    .collect(),
+            ),
+            other => other,
+        }
+    }
+}
+
 /// The tree of `value`.
 ///
 /// # Errors

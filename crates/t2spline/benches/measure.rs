@@ -3,7 +3,9 @@
 //! three functions, length and area) and a 20-point cubic's (length by
 //! branch and bound past 2¹⁶ vertices, area by 2²⁰ x-vertices); the
 //! baseline of the same run is sampling the example's seven layer curves
-//! at 1000 parameters.
+//! at 1000 parameters; the derivative, tangent angle and curvature of the
+//! example at 100 parameters (`--at`) at one level. For surfaces (§14): the volumes and the plan area
+//! below a datum of a bicubic 30 × 30 terrain at 11 levels (target 50 ms).
 //!
 //! ```text
 //! cargo bench -p t2spline --bench measure
@@ -14,9 +16,9 @@
 use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use t2spline::measure::MeasureOptions;
+use t2spline::measure::{MeasureOptions, SurfaceMeasureOptions};
 use t2spline::sampling::Params;
-use t2spline::{FuzzyCurve, Nt2Number, Nt2Point};
+use t2spline::{FuzzyCurve, FuzzySurface, Nt2Number, Nt2Point};
 
 /// The shipped example (`examples/paper-alg-1-1.json`).
 fn example() -> FuzzyCurve<2> {
@@ -45,6 +47,35 @@ pub fn twenty_points() -> FuzzyCurve<2> {
     FuzzyCurve::try_new(3, points, vec![1.0; 20], None).unwrap()
 }
 
+/// A bicubic terrain on a regular 30 × 30 net of 10 m stations: rolling
+/// heights around the datum 0 (seeded), spreads of 0.3 to 1 m.
+pub fn terrain_30() -> FuzzySurface<3> {
+    let mut uniform = t2spline::strategies::seeded_uniform(7);
+    let n = 30;
+    let points = (0..n)
+        .map(|i| {
+            (0..n)
+                .map(|j| {
+                    let (x, y) = (10.0 * i as f64, 10.0 * j as f64);
+                    let z = 3.0 * (x / 60.0).sin() * (y / 80.0).cos() + uniform() - 0.5;
+                    let s = 0.3 + 0.7 * uniform();
+                    let c = |v: f64| Nt2Number::try_crisp(v).unwrap();
+                    let h = Nt2Number::try_new(
+                        z,
+                        [z - s, z + s],
+                        [z - 0.6 * s, z + 0.6 * s],
+                        [z - 0.3 * s, z + 0.3 * s],
+                        0.8,
+                    )
+                    .unwrap();
+                    Nt2Point::new([c(x), c(y), h])
+                })
+                .collect()
+        })
+        .collect();
+    FuzzySurface::try_new([3, 3], points, vec![vec![1.0; n]; n], [None, None]).unwrap()
+}
+
 fn measure(c: &mut Criterion) {
     let curve = example();
     let options = MeasureOptions::uniform(11).unwrap();
@@ -60,10 +91,28 @@ fn measure(c: &mut Criterion) {
     g.bench_function("shipped example, 11 levels, length and area", |b| {
         b.iter(|| black_box(&curve).measure(&options).unwrap())
     });
+    // `measure --at` with 100 parameters at the job's one level: the
+    // derivative, the tangent angle and the curvature's bracket (a branch
+    // and bound over the box of the cut control points) per function.
+    let mut at = MeasureOptions::uniform(2).unwrap();
+    at.levels = vec![t2spline::Alpha::try_new(0.8).unwrap()];
+    at.at = (0..100).map(|k| f64::from(k) / 99.0).collect();
+    at.length = false;
+    at.area = false;
+    g.bench_function("shipped example, 100 parameters (--at), one level", |b| {
+        b.iter(|| black_box(&curve).measure(&at).unwrap())
+    });
     let twenty = twenty_points();
     g.bench_function("20-point cubic, 11 levels, length and area", |b| {
         b.iter(|| black_box(&twenty).measure(&options).unwrap())
     });
+    let terrain = terrain_30();
+    let mut volumes = SurfaceMeasureOptions::uniform(11).unwrap();
+    volumes.area = false;
+    g.bench_function(
+        "30 x 30 bicubic terrain, 11 levels, volumes and plan area",
+        |b| b.iter(|| black_box(&terrain).measure(&volumes).unwrap()),
+    );
     g.finish();
 }
 

@@ -71,7 +71,7 @@ pub enum Setting {
     Samples,
     /// The highest derivative order.
     Derivatives,
-    /// The parameters of a benchmark (`crate::bench`).
+    /// The parameters of a benchmark (`t2spline bench`).
     Points,
     /// The threads of a benchmark.
     Threads,
@@ -974,6 +974,39 @@ pub enum Error {
         /// The finest tolerance allowed for this curve.
         least: f64,
     },
+    /// The tolerance of a region's outline or a section is coarser than the
+    /// box that holds every region of the curve (`most`: the largest side
+    /// of the box of the upper cuts at level 0, or the largest coordinate's
+    /// magnitude where that box is a point): an outline so coarse says
+    /// nothing, and its area would overflow.
+    ///
+    /// ```
+    /// # use t2spline::{Alpha, Error, FuzzyCurve, Membership, Nt2Number, Nt2Point};
+    /// # let n = |c: f64| Nt2Number::try_new(c, [c - 1.0, c + 1.0], [c - 0.5, c + 0.5], [c - 0.25, c + 0.25], 0.5);
+    /// # let c = FuzzyCurve::try_new(1, vec![Nt2Point::new([n(0.0)?, n(0.0)?]), Nt2Point::new([n(4.0)?, n(3.0)?])], vec![1.0, 1.0], None)?;
+    /// let e = c.region(Membership::Upper, Alpha::try_new(0.5)?, Some(1e155)).unwrap_err();
+    /// assert_eq!(e.to_string(), "tolerance = 1e155 must be at most 6 (the size of the box that holds every region)");
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("tolerance = {} must be at most {} (the size of the box that holds every region)", Num(*value), Num(*most))]
+    ToleranceTooCoarse {
+        /// The tolerance given.
+        value: f64,
+        /// The coarsest tolerance allowed for this curve.
+        most: f64,
+    },
+
+    /// A part of a region read back breaks a rule of regions
+    /// ([`crate::set::Region::try_from_parts`]).
+    #[error("polygon {polygon}, ring {ring} ({}): {rule}", if *ring == 0 { "the exterior" } else { "a hole" })]
+    RegionPart {
+        /// Which polygon, from 0.
+        polygon: usize,
+        /// Which ring of it: 0 the exterior, then the holes.
+        ring: usize,
+        /// The rule it breaks.
+        rule: &'static str,
+    },
 
     /// A range of a membership grid is empty (its end not above its start).
     #[error("the grid's {axis} range [{}, {}] is empty: its end must be above its start", Num(*lo), Num(*hi))]
@@ -995,6 +1028,36 @@ pub enum Error {
         rows: usize,
         /// The limit on their product.
         limit: usize,
+    },
+
+    /// An envelope asks for more than [`crate::set::MAX_ENVELOPE_VALUES`]
+    /// values, or (x or y fuzzy) more than
+    /// [`crate::set::MAX_FUZZY_ENVELOPE_CELLS`] cells × levels.
+    ///
+    /// ```
+    /// # use t2spline::{Alpha, Error, FuzzySurface, Nt2Number, Nt2Point};
+    /// # use t2spline::set::PlanGrid;
+    /// let c = |x: f64| Nt2Number::try_crisp(x);
+    /// let p = |x: f64, y: f64| Ok::<_, Error>(Nt2Point::new([c(x)?, c(y)?, c(0.0)?]));
+    /// let net = vec![vec![p(0.0, 0.0)?, p(0.0, 1.0)?], vec![p(1.0, 0.0)?, p(1.0, 1.0)?]];
+    /// let s = FuzzySurface::try_new([1, 1], net, vec![vec![1.0; 2]; 2], [None, None])?;
+    /// let grid = PlanGrid::try_new([0.0, 0.0, 1.0, 1.0], [10_000, 10_000])?;
+    /// let e = s.envelope(&grid, &[Alpha::ZERO; 2]).unwrap_err();
+    /// assert_eq!(e.to_string(), "an envelope of 10000 x 10000 cells at 2 level(s) is more than the limit of 100000000 values (cells x levels x 6)");
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("an envelope of {columns} x {rows} cells at {levels} level(s) is more than the limit of {limit} {counted}")]
+    EnvelopeTooLarge {
+        /// Cells along x (points, for a list of plan points).
+        columns: usize,
+        /// Cells along y (1 for a list of plan points).
+        rows: usize,
+        /// The levels asked.
+        levels: usize,
+        /// The limit.
+        limit: usize,
+        /// What the limit counts.
+        counted: &'static str,
     },
 
     /// An index given to an accessor is past the end of what it indexes.
@@ -1043,6 +1106,104 @@ pub enum Error {
         /// End of the domain.
         end: f64,
     },
+
+    /// Volumes and areas of a surface (docs/method.md §14) are measured over
+    /// a crisp plan: this control point's x or y is fuzzy.
+    ///
+    /// ```
+    /// # use t2spline::{Error, FuzzySurface, Nt2Number, Nt2Point};
+    /// # use t2spline::measure::SurfaceMeasureOptions;
+    /// let c = |x: f64| Nt2Number::try_crisp(x);
+    /// let fuzzy = Nt2Number::try_new(2.0, [1.5, 2.5], [2.0, 2.0], [2.0, 2.0], 1.0)?;
+    /// let p = |x: Nt2Number, y: f64| Ok::<_, Error>(Nt2Point::new([x, c(y)?, c(0.0)?]));
+    /// let net = vec![vec![p(c(0.0)?, 0.0)?, p(c(0.0)?, 2.0)?], vec![p(fuzzy, 0.0)?, p(c(2.0)?, 2.0)?]];
+    /// let s = FuzzySurface::try_new([1, 1], net, vec![vec![1.0; 2]; 2], [None, None])?;
+    /// let e = s.measure(&SurfaceMeasureOptions::uniform(2)?).unwrap_err();
+    /// assert_eq!(e.to_string(), "points[1][0].x is fuzzy: volumes and areas are measured over a crisp plan (x and y crisp at every control point)");
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("points[{row}][{column}].{axis} is fuzzy: volumes and areas are measured over a crisp plan (x and y crisp at every control point)")]
+    FuzzyPlan {
+        /// The row of the control point (along u, 0-based).
+        row: usize,
+        /// Its column (along v, 0-based).
+        column: usize,
+        /// The coordinate, x or y.
+        axis: Axis,
+    },
+
+    /// Volumes and areas of a surface (docs/method.md §14) need the surface
+    /// to be the graph of a height over its plan: the plan map folds (its
+    /// Jacobian changes sign) or the surface is vertical near this place.
+    ///
+    /// ```
+    /// # use t2spline::{Error, FuzzySurface, Nt2Number, Nt2Point};
+    /// # use t2spline::measure::SurfaceMeasureOptions;
+    /// let c = |x: f64| Nt2Number::try_crisp(x);
+    /// let p = |x: f64, y: f64| Ok::<_, Error>(Nt2Point::new([c(x)?, c(y)?, c(0.0)?]));
+    /// // Along u, x runs 0 → 2 → 0: the plan folds back over itself.
+    /// let net = vec![
+    ///     vec![p(0.0, 0.0)?, p(0.0, 1.0)?],
+    ///     vec![p(2.0, 0.0)?, p(2.0, 1.0)?],
+    ///     vec![p(0.0, 0.0)?, p(0.0, 1.0)?],
+    /// ];
+    /// let s = FuzzySurface::try_new([2, 1], net, vec![vec![1.0; 2]; 3], [None, None])?;
+    /// let e = s.measure(&SurfaceMeasureOptions::uniform(2)?).unwrap_err();
+    /// assert!(e.to_string().starts_with("the surface is not the graph of a height over its plan at (u, v) = ("), "{e}");
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("the surface is not the graph of a height over its plan at (u, v) = ({}, {}), (x, y) = ({}, {}): {rule}", Num(*u), Num(*v), Num(*x), Num(*y))]
+    NotAGraph {
+        /// The parameter along u.
+        u: f64,
+        /// The parameter along v.
+        v: f64,
+        /// The plan point's x.
+        x: f64,
+        /// The plan point's y.
+        y: f64,
+        /// What is wrong there.
+        rule: &'static str,
+    },
+
+    /// A curve said to be closed whose crisp layer does not end where it
+    /// starts (docs/method.md §11).
+    ///
+    /// ```
+    /// # use t2spline::{Error, FuzzyCurve, Nt2Number, Nt2Point};
+    /// let c = |x: f64| Nt2Number::try_crisp(x);
+    /// let p = |x: f64, y: f64| Ok::<_, Error>(Nt2Point::new([c(x)?, c(y)?]));
+    /// let open = FuzzyCurve::try_new(1, vec![p(0.0, 0.0)?, p(1.0, 0.0)?, p(1.0, 1.0)?], vec![1.0; 3], None)?;
+    /// assert_eq!(open.closure_gap().unwrap_err().to_string(),
+    ///     "the curve does not close: it starts at (0, 0) and ends at (1, 1)");
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error(
+        "the curve does not close: it starts at ({}) and ends at ({})",
+        Nums(start),
+        Nums(end)
+    )]
+    NotClosed {
+        /// The crisp curve at the start of its domain.
+        start: Vec<f64>,
+        /// The crisp curve at the end of its domain.
+        end: Vec<f64>,
+    },
+}
+
+/// Numbers shown as [`Num`]s separated by `, `.
+struct Nums<'a>(&'a [f64]);
+
+impl fmt::Display for Nums<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        for (i, x) in self.0.iter().enumerate() {
+            if i > 0 {
+                f.write_str(", ")?;
+            }
+            write!(f, "{}", Num(*x))?;
+        }
+        Ok(())
+    }
 }
 
 /// The message of [`Error::InDirection`]: the curve rule in the surface's words.

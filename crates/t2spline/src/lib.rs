@@ -56,8 +56,11 @@
 //!   elevation, splitting, arc length and its inverse, closest point,
 //!   [`BoundingBox`]. [`FuzzyCurve`] applies them to all seven layers with
 //!   shared knots and weights, so the result is again a fuzzy curve.
-//! - [`pipeline`]: [`FuzzyCurve`] (stage 1), [`Solution`] (stages 2–4) and the
-//!   [`Distance`] between the crisp and the defuzzified curve (§7).
+//! - [`FuzzyCurve`] and [`FuzzySurface`] (stage 1), [`Solution`] and
+//!   [`SurfaceSolution`] (stages 2–4, both [`Stages`]) and the [`Distance`]
+//!   between the crisp and the defuzzified curve (§7).
+//! - [`capability`]: the operations curves and surfaces share, as traits;
+//!   [`prelude`]: the common types and traits in one import.
 //! - [`fit`]: curves through data or approximating them (interpolation and
 //!   least squares, The NURBS Book §9.2.1 and §9.4.1), crisp and fuzzy.
 //! - [`sampling`]: the fast sampling engine — one power form of the rational
@@ -86,20 +89,22 @@
     )
 )]
 
-pub mod bench;
 mod brent;
+pub mod capability;
 mod cubature;
 mod error;
 pub mod fit;
 pub mod fuzzy;
 mod golden_section;
+mod heap_key;
 pub mod job;
 mod limits;
 pub mod measure;
 mod nelder_mead;
 pub mod nurbs;
-pub mod pipeline;
+mod pipeline;
 mod place;
+pub mod prelude;
 mod quadrature;
 pub mod reduction;
 pub mod sampling;
@@ -111,18 +116,25 @@ pub mod vector;
 #[allow(clippy::expect_used, clippy::unwrap_used)]
 pub mod strategies;
 
+#[doc(no_inline)]
+pub use capability::{
+    Bounded, Closest, Curvature, Differentiable, KnotOperations, Layered, Parametric,
+};
 pub use error::{Error, Num};
+#[doc(no_inline)]
 pub use fuzzy::{
     Alpha, AlphaCut, Axis, Height, Interval, Layer, Layers, Membership, Nt2Number, Nt2Point,
     Nt2Point2, Nt2Point3, Tfn,
 };
 pub use limits::{MAX_MAGNITUDE, MAX_WEIGHT, MIN_WEIGHT};
+#[doc(no_inline)]
 pub use nurbs::{
     BoundingBox, ClosestPoint, ClosestSurfacePoint, Direction, Domain, KnotVector, NurbsCurve,
     NurbsSurface, SurfaceCurvature,
 };
 pub use pipeline::{
-    Distance, FuzzyCurve, FuzzySurface, Side, Solution, SurfaceDistance, SurfaceSolution,
+    Distance, FuzzyCurve, FuzzySurface, Side, Solution, Stages, SurfaceDistance, SurfaceSolution,
 };
 pub use place::Place;
+#[doc(no_inline)]
 pub use reduction::{AlphaPlanes, Reduced, TypeReduction};

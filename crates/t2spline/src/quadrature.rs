@@ -205,57 +205,71 @@ fn kronrod(
     hi: f64,
     depth: u32,
 ) -> Piece {
-    let (centre, half) = (lo + (hi - lo) / 2.0, (hi - lo) / 2.0);
-    // Nodes are kept inside the piece: rounding must not move one onto an
-    // end or past it.
-    let at = |x: f64| x.clamp(lo, hi);
-    let mut values = [[0.0; 2]; 8];
-    for (v, x) in values.iter_mut().zip(XGK) {
-        *v = if x == 0.0 {
-            [f(source, centre), 0.0]
-        } else {
-            [
-                f(source, at(centre - half * x)),
-                f(source, at(centre + half * x)),
-            ]
-        };
-    }
-    // The centre node's second value is 0 and adds nothing.
-    let (mut kronrod, mut gauss, mut absolute) = (0.0, 0.0, 0.0);
-    for (j, (v, w)) in values.iter().zip(WGK).enumerate() {
-        kronrod += w * (v[0] + v[1]);
-        absolute += w * (v[0].abs() + v[1].abs());
-        if j % 2 == 1 {
-            gauss += WG[j / 2] * (v[0] + v[1]);
-        }
-    }
-    let mean = kronrod / 2.0;
-    // The centre node (j = 7) is one node; the others come in pairs.
-    let spread: f64 = values
-        .iter()
-        .zip(WGK)
-        .enumerate()
-        .map(|(j, (v, w))| {
-            let pair = if j == 7 { 0.0 } else { (v[1] - mean).abs() };
-            w * ((v[0] - mean).abs() + pair)
-        })
-        .sum();
-    let (scale, spread, absolute) = (half.abs(), spread * half.abs(), absolute * half.abs());
-    let mut error = ((kronrod - gauss) * scale).abs();
-    if spread != 0.0 && error != 0.0 {
-        error = spread * (200.0 * error / spread).powf(1.5).min(1.0);
-    }
-    if absolute > f64::MIN_POSITIVE / (50.0 * f64::EPSILON) {
-        error = error.max(50.0 * f64::EPSILON * absolute);
-    }
+    let ([value], [error]) = kronrod_vector(|x| [f(source, x)], lo, hi);
     Piece {
         source,
         lo,
         hi,
-        value: kronrod * half,
+        value,
         error,
         depth,
     }
+}
+
+/// The Kronrod estimates of `∫ f` over `[lo, hi]` for each of the `N`
+/// components of `f`, and QUADPACK's error estimate of each (QK15, module
+/// docs), from one evaluation of `f` per node.
+pub(crate) fn kronrod_vector<const N: usize>(
+    mut f: impl FnMut(f64) -> [f64; N],
+    lo: f64,
+    hi: f64,
+) -> ([f64; N], [f64; N]) {
+    let (centre, half) = (lo + (hi - lo) / 2.0, (hi - lo) / 2.0);
+    // Nodes are kept inside the piece: rounding must not move one onto an
+    // end or past it.
+    let at = |x: f64| x.clamp(lo, hi);
+    let mut values = [[[0.0; N]; 2]; 8];
+    for (v, x) in values.iter_mut().zip(XGK) {
+        *v = if x == 0.0 {
+            [f(centre), [0.0; N]]
+        } else {
+            [f(at(centre - half * x)), f(at(centre + half * x))]
+        };
+    }
+    let (mut value, mut error) = ([0.0; N], [0.0; N]);
+    for c in 0..N {
+        // The centre node's second value is 0 and adds nothing.
+        let (mut kronrod, mut gauss, mut absolute) = (0.0, 0.0, 0.0);
+        for (j, (v, w)) in values.iter().zip(WGK).enumerate() {
+            kronrod += w * (v[0][c] + v[1][c]);
+            absolute += w * (v[0][c].abs() + v[1][c].abs());
+            if j % 2 == 1 {
+                gauss += WG[j / 2] * (v[0][c] + v[1][c]);
+            }
+        }
+        let mean = kronrod / 2.0;
+        // The centre node (j = 7) is one node; the others come in pairs.
+        let spread: f64 = values
+            .iter()
+            .zip(WGK)
+            .enumerate()
+            .map(|(j, (v, w))| {
+                let pair = if j == 7 { 0.0 } else { (v[1][c] - mean).abs() };
+                w * ((v[0][c] - mean).abs() + pair)
+            })
+            .sum();
+        let (scale, spread, absolute) = (half.abs(), spread * half.abs(), absolute * half.abs());
+        let mut e = ((kronrod - gauss) * scale).abs();
+        if spread != 0.0 && e != 0.0 {
+            e = spread * (200.0 * e / spread).powf(1.5).min(1.0);
+        }
+        if absolute > f64::MIN_POSITIVE / (50.0 * f64::EPSILON) {
+            e = e.max(50.0 * f64::EPSILON * absolute);
+        }
+        value[c] = kronrod * half;
+        error[c] = e;
+    }
+    (value, error)
 }
 
 #[cfg(test)]

@@ -8,7 +8,7 @@ mod oracle;
 use proptest::prelude::*;
 
 proptest! {
-    #![proptest_config(t2spline::strategies::cases(500, 2000))]
+    #![proptest_config(t2spline::strategies::cases(500, 1000))]
 
     #[test]
     fn arbitrary_bytes_keep_every_promise(data in proptest::collection::vec(any::<u8>(), 0..600)) {

@@ -158,11 +158,11 @@ fn check_length(c: &NurbsCurve<2>, what: &str) {
 
 /// Checks curves of 12 control points of each degree, seeds 1 to 3, with
 /// weights in `[10^-e, 10^e]`.
-/// Seeds 1 to 3 under `T2SPLINE_LONG_TESTS=1`, seed 1 (the curves the
+/// Seeds 1 and 2 under `T2SPLINE_LONG_TESTS=1`, seed 1 (the curves the
 /// comments below name) by default.
 fn check_lengths(e: f64, degrees: &[usize]) {
     for &degree in degrees {
-        for seed in 1..=test_size(1, 3) as u64 {
+        for seed in 1..=test_size(1, 2) as u64 {
             let what = format!("degree {degree}, seed {seed}");
             check_length(&curve(12, degree, e, seed), &what);
         }

@@ -810,7 +810,7 @@ fn extreme_curve() -> impl Strategy<Value = FuzzyCurve<2>> {
 }
 
 proptest! {
-    #![proptest_config(t2spline::strategies::cases(32, 256))]
+    #![proptest_config(t2spline::strategies::cases(32, 96))]
 
     /// Inputs of any scale within the limits: every output of every stage is
     /// finite, the seven layers stay ordered, and the distance is finite with
@@ -903,7 +903,7 @@ fn zero_is_a_valid_scale_for_everything() {
 }
 
 proptest! {
-    #![proptest_config(t2spline::strategies::cases(8, 32))]
+    #![proptest_config(t2spline::strategies::cases(8, 16))]
 
     /// The inputs of `extreme_inputs_give_finite_ordered_outputs` against exact
     /// rational arithmetic (fewer cases: the reference is slow).

@@ -285,10 +285,10 @@ fn bad_data_are_clear_errors() {
     ));
 }
 
-/// Cases per property (200, 1000 under `T2SPLINE_LONG_TESTS=1`); each fits a
+/// Cases per property (200, 400 under `T2SPLINE_LONG_TESTS=1`); each fits a
 /// few systems of up to 40 unknowns.
 fn cases() -> ProptestConfig {
-    t2spline::strategies::cases(200, 1000)
+    t2spline::strategies::cases(200, 400)
 }
 
 fn options_strategy(points: usize) -> impl Strategy<Value = FitOptions> {

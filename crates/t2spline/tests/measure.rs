@@ -288,6 +288,27 @@ fn a_circle_of_fuzzy_radius() {
 }
 
 #[test]
+fn a_curve_that_can_stand_still_has_lengths_from_zero() {
+    // Every control point is the same fuzzy point: the crisp curve stands
+    // still, and every cut holds a curve of length 0.
+    let n = Nt2Number::try_new(1.0, [0.0, 2.0], [0.5, 1.5], [0.8, 1.2], 0.5).unwrap();
+    let p = Nt2Point::new([n, n]);
+    let c = FuzzyCurve::try_new(2, vec![p, p, p], vec![1.0; 3], None).unwrap();
+    let m = c.measure(&MeasureOptions::uniform(3).unwrap()).unwrap();
+    for f in [&m.length.upper, &m.length.primary, &m.length.lower] {
+        for level in f {
+            let b = level.bracket();
+            assert!(b.min == 0.0 && b.max >= 0.0, "{level:?}");
+            // The crisp curve's length, 0, is inside; at level 1 nothing moves.
+            assert!(b.holds(0.0, 0.0), "{level:?}");
+            if level.alpha == 1.0 {
+                assert!(b.max < 1e-12, "{level:?}");
+            }
+        }
+    }
+}
+
+#[test]
 fn quantities_nest_over_levels_and_functions() {
     let c = example();
     let mut options = MeasureOptions::uniform(11).unwrap();
@@ -454,7 +475,7 @@ fn check_sound(
 }
 
 proptest! {
-    #![proptest_config(t2spline::strategies::cases(4, 24))]
+    #![proptest_config(t2spline::strategies::cases(4, 8))]
 
     #[test]
     fn exact_extremes_equal_every_vertex_and_no_admissible_curve_escapes(
@@ -470,7 +491,7 @@ proptest! {
 
 #[test]
 fn the_example_holds_every_admissible_curve_drawn() {
-    // 1200 random admissible curves per function at three levels (10 800
+    // 400 random admissible curves per function at three levels (3 600
     // in all) under T2SPLINE_LONG_TESTS=1, 150 (1350) by default, and all 256
     // vertices.
     let c = example();
@@ -481,7 +502,7 @@ fn the_example_holds_every_admissible_curve_drawn() {
         state ^= state << 17;
         (state >> 11) as f64 / (1u64 << 53) as f64
     };
-    let draws: Vec<Vec<f64>> = (0..t2spline::strategies::test_size(150, 1200))
+    let draws: Vec<Vec<f64>> = (0..t2spline::strategies::test_size(150, 400))
         .map(|_| (0..8).map(|_| next()).collect())
         .collect();
     for m in MEMBERSHIPS {

@@ -379,9 +379,9 @@ macro_rules! every_dimension {
 }
 
 // Every operation of a fuzzy curve in five dimensions takes seconds in
-// debug: 8 cases by default, 300 under T2SPLINE_LONG_TESTS=1.
+// debug: 8 cases by default, 48 under T2SPLINE_LONG_TESTS=1.
 proptest! {
-    #![proptest_config(t2spline::strategies::cases(8, 300))]
+    #![proptest_config(t2spline::strategies::cases(8, 48))]
 
     #[test]
     fn fuzzy_curves_never_panic(
@@ -393,7 +393,7 @@ proptest! {
 }
 
 proptest! {
-    #![proptest_config(t2spline::strategies::cases(32, 300))]
+    #![proptest_config(t2spline::strategies::cases(32, 96))]
 
     #[test]
     fn fuzzy_surfaces_never_panic(rows in 0..4usize, flat in floats(200), t in floats(4), alpha in float()) {

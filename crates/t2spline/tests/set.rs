@@ -451,3 +451,68 @@ fn the_top_of_each_membership_function_is_its_largest_level_with_a_cut() {
         .expect("ok")
         .is_none());
 }
+
+#[test]
+fn a_tolerance_coarser_than_the_curve_is_refused_at_every_scale() {
+    let mut unit_areas = Vec::new();
+    for scale in [1e-140, 1.0, 1e140] {
+        let scaled = |c: f64| c * scale;
+        let n = |c: f64| {
+            Nt2Number::try_new(
+                scaled(c),
+                [scaled(c - 1.0), scaled(c + 1.0)],
+                [scaled(c - 0.5), scaled(c + 0.5)],
+                [scaled(c - 0.25), scaled(c + 0.25)],
+                0.5,
+            )
+            .unwrap()
+        };
+        let c = FuzzyCurve::try_new(
+            1,
+            vec![
+                Nt2Point::new([n(0.0), n(0.0)]),
+                Nt2Point::new([n(4.0), n(3.0)]),
+            ],
+            vec![1.0, 1.0],
+            None,
+        )
+        .unwrap();
+        // The box of the upper cuts at level 0 is 6 × 5 (times the scale).
+        let most = 6.0 * scale * (1.0 - 1e-12);
+        let e = c
+            .region(Membership::Upper, alpha(0.5), Some(most * 1.5))
+            .unwrap_err();
+        assert!(
+            matches!(e, t2spline::Error::ToleranceTooCoarse { .. }),
+            "{e}"
+        );
+        let e = c.section(scaled(2.0), Membership::Upper, alpha(0.5), Some(1e155));
+        assert!(
+            matches!(e, Err(t2spline::Error::ToleranceTooCoarse { .. })),
+            "{e:?}"
+        );
+        // The coarsest allowed gives a finite region holding the fine one.
+        let coarse = c
+            .region(Membership::Upper, alpha(0.5), Some(most))
+            .unwrap()
+            .unwrap();
+        let fine = c
+            .region(Membership::Upper, alpha(0.5), None)
+            .unwrap()
+            .unwrap();
+        assert!(
+            coarse.area().is_finite() && coarse.area() >= fine.area(),
+            "{scale}"
+        );
+        assert!(fine.area() > 0.0 && fine.area().is_finite(), "{scale}");
+        unit_areas.push(fine.area() / (scale * scale));
+    }
+    // The same region up to scaling: areas scale as the square, to the
+    // outline's tolerance (1e-6 of the diagonal).
+    for a in &unit_areas {
+        assert!(
+            (a - unit_areas[1]).abs() <= 1e-6 * unit_areas[1],
+            "{unit_areas:?}"
+        );
+    }
+}

@@ -47,7 +47,7 @@ fn check<const D: usize>(
 }
 
 proptest! {
-    #![proptest_config(strategies::cases(50, 200))]
+    #![proptest_config(strategies::cases(50, 100))]
 
     #[test]
     fn crisp_grid_matches_eval(s in strategies::surface::<3>(), fu in fractions(), fv in fractions(), rotate in 0usize..20) {

@@ -109,7 +109,10 @@ fn folder_jobs(dir: &Path) -> Result<Vec<PathBuf>, t2spline_io::Error> {
     for entry in std::fs::read_dir(dir).map_err(failed)? {
         let entry = entry.map_err(failed)?;
         let path = entry.path();
-        if path.extension().is_none_or(|e| e != "json") {
+        if path
+            .extension()
+            .is_none_or(|e| !e.eq_ignore_ascii_case("json"))
+        {
             continue;
         }
         // The folder's listing tells a plain file without a further look;
@@ -202,7 +205,10 @@ impl Batch {
         let one_table = args
             .parquet
             .as_ref()
-            .filter(|p| p.extension().is_some_and(|e| e == "parquet"))
+            .filter(|p| {
+                p.extension()
+                    .is_some_and(|e| e.eq_ignore_ascii_case("parquet"))
+            })
             .or(args.jsonl.as_ref());
         let output = match (args.output.as_deref(), one_table) {
             (Some(dir), _) if !is_stdio(dir) => Some(dir.to_owned()),
@@ -248,7 +254,12 @@ impl Batch {
         }
         // `--parquet FILE.parquet`: one file for every job; else a folder.
         let (parquet, one_parquet) = match args.parquet.clone() {
-            Some(p) if p.extension().is_some_and(|e| e == "parquet") => (None, Some(p)),
+            Some(p)
+                if p.extension()
+                    .is_some_and(|e| e.eq_ignore_ascii_case("parquet")) =>
+            {
+                (None, Some(p))
+            }
             other => (other, None),
         };
         let batch = Batch {

@@ -1,15 +1,17 @@
 //! `t2spline bench [--case crisp|fuzzy|sweep|surface|surface-fuzzy|all] [--points N]
 //! [--threads T] [--curve JOB.json] [--reuse | --compare]`.
 
+mod harness;
+
 use std::io::Write;
 
-use t2spline::bench::{run_case, BenchCase};
 use t2spline::job::Model;
 use t2spline::sampling::{benchmark_curve, benchmark_surface};
 
 use super::prepare::about_option;
 use crate::cli::BenchArgs;
 use crate::output::read_job;
+use harness::{run_case, BenchCase};
 
 pub fn bench(args: &BenchArgs) -> anyhow::Result<()> {
     let cases = match args.case.as_str() {
@@ -42,8 +44,7 @@ pub fn bench(args: &BenchArgs) -> anyhow::Result<()> {
         .collect();
     // Every case's points are checked before the first is timed.
     for &(case, model) in &plan {
-        t2spline::bench::check_points(args.points, case, model.dimension())
-            .map_err(about_option)?;
+        harness::check_points(args.points, case, model.dimension()).map_err(about_option)?;
     }
     let mut out = std::io::stdout().lock();
     let modes: &[bool] = if args.compare {

@@ -4,6 +4,7 @@
 
 use std::path::{Path, PathBuf};
 
+use t2spline::job::LengthUnit;
 use t2spline_io::{CadFormat, Prepared};
 
 use super::prepare::{about_run, note_alpha, prepare, reduction_overrides, OptionError};
@@ -21,9 +22,19 @@ struct Plan {
 
 impl Plan {
     fn new(args: &ExportArgs) -> anyhow::Result<Plan> {
-        let format = match args.format {
-            Some(f) => from_arg(f),
-            None => from_extension(&args.output)?,
+        let format = match (args.format.map(from_arg), CadFormat::from_extension(&args.output)) {
+            (Some(given), Some(named)) if given != named => {
+                return Err(OptionError {
+                    option: "--format",
+                    message: format!(
+                        "{given} contradicts the name {}, whose extension says {named}: leave --format out, or name the file for {given}",
+                        shown(&args.output)
+                    ),
+                }
+                .into())
+            }
+            (Some(given), _) => given,
+            (None, _) => from_extension(&args.output)?,
         };
         Claims::new([args.job.as_path()]).file("--output", &args.output)?;
         let prepared = prepare(&args.job, &reduction_overrides(args.alpha, &args.reduction))?;
@@ -51,9 +62,11 @@ pub fn export(args: &ExportArgs) -> anyhow::Result<()> {
             .file_name()
             .map_or_else(String::new, |n| n.to_string_lossy().into_owned())
     };
+    // clap allows only the units' names.
+    let units = args.units.as_deref().and_then(LengthUnit::named);
     let text = plan
         .prepared
-        .cad(plan.format, name, &plan.source)
+        .cad(plan.format, name, &plan.source, units)
         .map_err(about_run)?;
     let mut out = Outputs::default();
     out.to(Some(&plan.output), text.into_bytes());

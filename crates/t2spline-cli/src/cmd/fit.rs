@@ -165,7 +165,7 @@ pub fn fit(args: FitArgs) -> anyhow::Result<()> {
     .map_err(|e| plan.data.fit_error(&e))?;
     if !plan.quiet {
         for line in report(&plan, &outcome.summary) {
-            eprintln!("t2spline fit: {line}");
+            crate::output::note("fit", line);
         }
     }
     let job = match outcome.model {

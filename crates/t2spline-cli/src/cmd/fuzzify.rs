@@ -181,7 +181,7 @@ fn raster_data(args: &FuzzifyArgs, kind: &RasterKind) -> anyhow::Result<FitData>
     let (net, note) = raster.blocks(usize::try_from(block).unwrap_or(usize::MAX))?;
     let data = fuzzify_net(&net, &options).map_err(spelled)?;
     if let Some(note) = note {
-        eprintln!("t2spline fuzzify: {note}");
+        crate::output::note("fuzzify", note);
     }
     Ok(data)
 }

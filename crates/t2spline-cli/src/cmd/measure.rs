@@ -1,12 +1,17 @@
-//! `t2spline measure JOB.json [--levels N] [--at T1,T2,…] [--order K]
-//! [-o OUT.json]`: arc length, area, derivative, tangent angle and
-//! curvature of a fuzzy curve as intervals at each level (docs/method.md
-//! §11).
+//! `t2spline measure JOB.json [--alpha A | --levels N] [--at T1,T2,…]
+//! [--order K] [--datum Z0] [--no-area] [-o OUT.json]`: arc length, area,
+//! derivative, tangent angle and curvature of a fuzzy curve (docs/method.md
+//! §11), or the volumes above and below the plane `z = Z0`, the plan area
+//! below it and the surface area of a fuzzy surface of crisp plan (§14), as
+//! intervals at each level.
 
 use t2spline::job::Model;
-use t2spline::measure::{MeasureOptions, Measures, MAX_MEASURE_LEVELS, MAX_MEASURE_PARAMETERS};
+use t2spline::measure::{
+    MeasureOptions, Measures, SurfaceMeasureOptions, MAX_MEASURE_LEVELS, MAX_MEASURE_PARAMETERS,
+};
 use t2spline::{Error, FuzzyCurve};
 
+use super::levels::Levels;
 use super::prepare::OptionError;
 use crate::clash::Claims;
 use crate::cli::MeasureArgs;
@@ -16,34 +21,77 @@ pub fn measure(args: &MeasureArgs) -> anyhow::Result<()> {
     if let Some(out) = &args.output {
         Claims::new([args.job.as_path()]).file("--output", out)?;
     }
-    let mut options = options(args)?;
+    let (levels, mut options) = options(args)?;
     let job = read_job(&args.job)?;
-    let measures = match &job.model {
-        Model::Planar(c) => run(c, &mut options)?,
+    options.levels = levels.resolve(&job)?;
+    options.closed = job.closed;
+    let mut bytes = Vec::new();
+    match &job.model {
+        Model::Planar(c) => write(&mut bytes, &run(c, &mut options, args)?)?,
         Model::Spatial(c) => {
             options.area = false;
-            run(c, &mut options)?
+            write(&mut bytes, &run(c, &mut options, args)?)?
         }
-        _ => return Err(invalid(
-            "JOB",
-            "measures are taken of curves; this job is a surface (surfaces are not measured yet)",
-        )),
-    };
-    t2spline_io::check_finite(&measures)?;
-    let mut bytes = Vec::new();
-    t2spline_io::write_json_pretty(&mut bytes, &measures)?;
+        Model::Surface(s) => {
+            if args.at.is_some() {
+                return Err(invalid(
+                    "--at",
+                    "parameters are measured on curves; this job is a surface",
+                ));
+            }
+            let surface = SurfaceMeasureOptions {
+                levels: options.levels.clone(),
+                datum: args.datum.unwrap_or(0.0),
+                area: !args.no_area,
+            };
+            let measures = s.measure(&surface).map_err(|e| match e {
+                Error::NotFinite { .. } => invalid("--datum", &e.to_string()),
+                other => other.into(),
+            })?;
+            t2spline_io::check_finite(&measures)?;
+            t2spline_io::write_json_pretty(&mut bytes, &measures)?;
+        }
+        _ => {
+            return Err(crate::output::unsuited(
+                &args.job,
+                "this kind of job is not measured",
+            ))
+        }
+    }
     let mut out = Outputs::default();
     out.to(args.output.as_deref(), bytes);
     out.commit()
+}
+
+fn write(bytes: &mut Vec<u8>, measures: &Measures) -> anyhow::Result<()> {
+    t2spline_io::check_finite(measures)?;
+    t2spline_io::write_json_pretty(bytes, measures)?;
+    Ok(())
 }
 
 /// The measurement, with a parameter outside the domain named as `--at`.
 fn run<const D: usize>(
     curve: &FuzzyCurve<D>,
     options: &mut MeasureOptions,
+    args: &MeasureArgs,
 ) -> anyhow::Result<Measures> {
+    if args.datum.is_some() || args.no_area {
+        let flag = if args.datum.is_some() {
+            "--datum"
+        } else {
+            "--no-area"
+        };
+        return Err(invalid(
+            flag,
+            "this applies to surfaces; this job is a curve",
+        ));
+    }
     curve.measure(options).map_err(|e| match e {
         Error::MeasureAt { .. } => invalid("--at", &e.to_string()),
+        Error::OutOfRange {
+            what: "parameters × levels",
+            ..
+        } => invalid("--at", &e.to_string()),
         other => other.into(),
     })
 }
@@ -56,16 +104,12 @@ fn invalid(option: &'static str, message: &str) -> anyhow::Error {
     .into()
 }
 
-/// The options from the flags, each checked and named.
-fn options(args: &MeasureArgs) -> anyhow::Result<MeasureOptions> {
-    let levels = usize::try_from(args.levels).unwrap_or(usize::MAX);
-    if !(2..=MAX_MEASURE_LEVELS).contains(&levels) {
-        return Err(invalid(
-            "--levels",
-            &format!("{} is outside 2 ..= {MAX_MEASURE_LEVELS}", args.levels),
-        ));
-    }
-    let mut options = MeasureOptions::uniform(levels)?;
+/// The options from the flags, each checked and named (the levels resolved
+/// once the job is read).
+fn options(args: &MeasureArgs) -> anyhow::Result<(Levels, MeasureOptions)> {
+    let max = u64::try_from(MAX_MEASURE_LEVELS).unwrap_or(u64::MAX);
+    let levels = Levels::from_arg(&args.levels, Some(11), max)?;
+    let mut options = MeasureOptions::uniform(2)?;
     if !(1..=64).contains(&args.order) {
         return Err(invalid(
             "--order",
@@ -76,7 +120,7 @@ fn options(args: &MeasureArgs) -> anyhow::Result<MeasureOptions> {
     if let Some(text) = &args.at {
         options.at = parse_at(text)?;
     }
-    Ok(options)
+    Ok((levels, options))
 }
 
 /// `T1,T2,…` as finite numbers, each error naming the item.

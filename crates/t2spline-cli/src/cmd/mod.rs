@@ -3,9 +3,12 @@
 
 mod batch;
 mod bench;
+mod contour;
+mod envelope;
 mod export;
 mod fit;
 mod fuzzify;
+mod levels;
 mod measure;
 pub mod membership;
 mod plot;
@@ -34,6 +37,8 @@ pub fn dispatch(cli: Cli) -> anyhow::Result<()> {
         Command::Membership(args) => membership::membership(&args),
         Command::Region(args) => region::region(&args),
         Command::Section(args) => section::section(&args),
+        Command::Envelope(args) => envelope::envelope(&args),
+        Command::Contour(args) => contour::contour(&args),
         Command::Bench(args) => bench::bench(&args),
         Command::Serve(args) => serve::serve(&args),
     }

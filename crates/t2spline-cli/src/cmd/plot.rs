@@ -107,15 +107,23 @@ pub fn plot(args: &PlotArgs) -> anyhow::Result<()> {
     // Stages 2–4 as `run` gives them; the paper's level where it is drawn.
     let (alpha, job) = (settings.paper_alpha(), prepared.job());
     let format = match args.format {
-        FormatArg::Svg => Format::Svg,
-        FormatArg::Png => Format::Png,
-        FormatArg::Both => Format::Both,
+        Some(FormatArg::Svg) => Format::Svg,
+        Some(FormatArg::Png) => Format::Png,
+        Some(FormatArg::Both) => Format::Both,
+        None if t2spline_plot::PNG => Format::Both,
+        None => Format::Svg,
     };
     // Everything is rendered before anything is written, and written all or
     // nothing; the paths written go to standard output.
     let figures =
         all_figures(job, alpha, &figure_options(&args.figures, job)?).map_err(about_number)?;
     let files = render_files(&figures, format)?;
+    crate::output::refuse_extension(
+        "--output",
+        &args.output,
+        &["svg", "png", "pdf", "html", "jpg", "jpeg"],
+        "plot writes a folder of figures (SVG and PNG files, as --format says), not one file: name a folder, e.g. `figures`",
+    )?;
     Claims::new([args.job.as_path()]).folder(
         "--output",
         &args.output,

@@ -5,7 +5,6 @@
 //! on alpha: one that the type reduction does not use, one that lies a few
 //! ulps above a number's lower height (the other side of the paper's jump).
 
-use std::io::Write as _;
 use std::path::Path;
 
 use t2spline::job::{Overrides, Setting, Settings};
@@ -123,7 +122,6 @@ pub fn alpha_notes(settings: &Settings, from_option: bool, effect: &str) -> Vec<
 /// Says [`alpha_notes`] on standard error, one line each, for `command`.
 pub fn note_alpha(command: &str, settings: &Settings, from_option: bool, effect: &str) {
     for note in alpha_notes(settings, from_option, effect) {
-        // A closed standard error must not stop the command.
-        let _ = writeln!(std::io::stderr().lock(), "t2spline {command}: {note}");
+        crate::output::note(command, note);
     }
 }

@@ -1,52 +1,63 @@
-//! `t2spline region JOB.json --alpha A [-o OUT.geojson] [--tolerance T]`: the
-//! region a fuzzy curve can occupy at a level, as GeoJSON.
+//! `t2spline region JOB.json [--alpha A | --levels N] [-o OUT.geojson]
+//! [--tolerance T]`: the region a fuzzy curve can occupy at a level (the
+//! job's alpha when neither is given), as GeoJSON.
 
 use t2spline::job::{Job, Model};
 use t2spline::set::{Plane, Region, MEMBERSHIPS};
 use t2spline::{Alpha, FuzzyCurve, Membership};
 use t2spline_io::set::{write_region_geojson, RegionFeature};
 
+use super::levels::{Levels, MAX_LEVELS};
 use super::prepare::OptionError;
 use crate::clash::Claims;
 use crate::cli::RegionArgs;
 use crate::output::{read_job, Outputs};
 
+/// Why a surface has no region.
+const NOT_A_CURVE: &str = "regions are drawn for curves; for a surface, ask `t2spline membership` of points or `t2spline section --at X0,Y0`";
+
 pub fn region(args: &RegionArgs) -> anyhow::Result<()> {
     if let Some(out) = &args.output {
         Claims::new([args.job.as_path()]).file("--output", out)?;
     }
-    let alpha = Alpha::try_new(args.alpha).map_err(|e| OptionError {
-        option: "--alpha",
-        message: e.to_string(),
-    })?;
+    let levels = Levels::from_arg(&args.levels, None, MAX_LEVELS)?;
     let job = read_job(&args.job)?;
-    let bytes = geojson(&job, alpha, args.tolerance)?;
+    if matches!(job.model, Model::Surface(_)) {
+        return Err(crate::output::unsuited(&args.job, NOT_A_CURVE));
+    }
+    let levels = levels.resolve(&job)?;
+    let bytes = geojson(&job, &levels, args.tolerance)?;
     let mut out = Outputs::default();
     out.to(args.output.as_deref(), bytes);
     out.commit()
 }
 
-/// The regions of `job`'s curve at `alpha` as GeoJSON bytes (also the
-/// `serve` page's): one Feature per membership function with a cut there,
-/// on the `xy` plane of a plane curve and on every plane of a space curve.
+/// The regions of `job`'s curve at each of `levels` as GeoJSON bytes (also
+/// the `serve` page's, at one level): one Feature per level and membership
+/// function with a cut there, on the `xy` plane of a plane curve and on
+/// every plane of a space curve.
 ///
 /// # Errors
 /// A surface (regions are drawn for curves), a `tolerance` out of its range.
-pub fn geojson(job: &Job, alpha: Alpha, tolerance: Option<f64>) -> anyhow::Result<Vec<u8>> {
-    let regions: Vec<(Membership, Plane, Region)> = match &job.model {
-        Model::Planar(c) => regions(c, &[Plane::Xy], alpha, tolerance)?,
-        Model::Spatial(c) => regions(c, &Plane::ALL, alpha, tolerance)?,
-        _ => {
-            return Err(OptionError {
-                option: "JOB",
-                message: "regions are drawn for curves; for a surface, ask `t2spline membership` of points or `t2spline section --at X0,Y0`".into(),
+pub fn geojson(job: &Job, levels: &[Alpha], tolerance: Option<f64>) -> anyhow::Result<Vec<u8>> {
+    let mut regions: Vec<(Alpha, Membership, Plane, Region)> = Vec::new();
+    for &alpha in levels {
+        let at_level = match &job.model {
+            Model::Planar(c) => self::regions(c, &[Plane::Xy], alpha, tolerance)?,
+            Model::Spatial(c) => self::regions(c, &Plane::ALL, alpha, tolerance)?,
+            _ => {
+                return Err(OptionError {
+                    option: "JOB",
+                    message: NOT_A_CURVE.into(),
+                }
+                .into())
             }
-            .into())
-        }
-    };
+        };
+        regions.extend(at_level.into_iter().map(|(m, p, r)| (alpha, m, p, r)));
+    }
     let features: Vec<RegionFeature<'_>> = regions
         .iter()
-        .map(|(membership, plane, region)| RegionFeature {
+        .map(|(alpha, membership, plane, region)| RegionFeature {
             membership: *membership,
             alpha: alpha.get(),
             plane: *plane,
@@ -71,10 +82,13 @@ fn regions<const D: usize>(
             let region = curve
                 .region_in(plane, m, alpha, tolerance)
                 .map_err(|e| match e {
-                    t2spline::Error::Tolerance { .. } => anyhow::Error::from(OptionError {
-                        option: "--tolerance",
-                        message: e.to_string(),
-                    }),
+                    t2spline::Error::Tolerance { .. }
+                    | t2spline::Error::ToleranceTooCoarse { .. } => {
+                        anyhow::Error::from(OptionError {
+                            option: "--tolerance",
+                            message: e.to_string(),
+                        })
+                    }
                     other => other.into(),
                 })?;
             if let Some(r) = region {

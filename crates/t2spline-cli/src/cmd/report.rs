@@ -17,6 +17,12 @@ const REPORT: &str = "report.html";
 const DEFAULT_START: f64 = 0.5;
 
 pub fn report(args: &ReportArgs) -> anyhow::Result<()> {
+    crate::output::refuse_extension(
+        "--output",
+        &args.output,
+        &["html", "htm"],
+        &format!("report writes a folder (the page `{REPORT}` and the files it offers for download): name a folder, e.g. `report`"),
+    )?;
     Claims::new([args.job.as_path()]).folder("--output", &args.output, [REPORT])?;
     let default_start = Alpha::try_new(DEFAULT_START)?;
     let overrides = reduction_overrides(args.alpha, &args.reduction);

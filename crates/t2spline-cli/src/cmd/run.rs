@@ -29,6 +29,14 @@ impl Plan {
             csv: args.csv.clone(),
             parquet: args.parquet.clone(),
         };
+        if let Some(json) = &out.json {
+            crate::output::refuse_extension(
+                "--output",
+                json,
+                &["csv", "tsv", "txt", "parquet", "jsonl"],
+                "run -o writes the result as JSON: use --csv DIR for CSV files, --parquet FILE.parquet or --jsonl FILE",
+            )?;
+        }
         let mut claims = Claims::new([path]);
         out.claim(&mut claims)?;
         if let Some(file) = &args.jsonl {

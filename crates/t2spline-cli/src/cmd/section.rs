@@ -1,33 +1,34 @@
-//! `t2spline section JOB.json --x X0 | --at X0,Y0 [--levels N] [-o OUT.json]`:
+//! `t2spline section JOB.json --x X0 | --at X0,Y0 [--alpha A | --levels N]
+//! [-o OUT.json]`:
 //! the fuzzy value at a station.
 
 use t2spline::job::Model;
-use t2spline::Alpha;
 use t2spline_io::set::{write_section_json, Station};
 
+use super::levels::{Levels, MAX_LEVELS};
 use super::prepare::OptionError;
 use crate::clash::Claims;
 use crate::cli::SectionArgs;
 use crate::output::{read_job, Outputs};
 
-/// Levels at most.
-const MAX_LEVELS: u64 = 1001;
-
 pub fn section(args: &SectionArgs) -> anyhow::Result<()> {
     if let Some(out) = &args.output {
         Claims::new([args.job.as_path()]).file("--output", out)?;
     }
-    let levels = levels(args.levels)?;
+    let levels = Levels::from_arg(&args.levels, Some(11), MAX_LEVELS)?;
     let at = args.at.as_deref().map(parse_at).transpose()?;
     if let Some(x0) = args.x.filter(|x| !x.is_finite()) {
         return Err(missing("--x", &format!("{x0} is not a finite number")));
     }
     let job = read_job(&args.job)?;
+    let levels = levels.resolve(&job)?;
     let tolerance_error = |e: t2spline::Error| match e {
-        t2spline::Error::Tolerance { .. } => anyhow::Error::from(OptionError {
-            option: "--tolerance",
-            message: e.to_string(),
-        }),
+        t2spline::Error::Tolerance { .. } | t2spline::Error::ToleranceTooCoarse { .. } => {
+            anyhow::Error::from(OptionError {
+                option: "--tolerance",
+                message: e.to_string(),
+            })
+        }
         other => other.into(),
     };
     let (station, sections) = match (&job.model, args.x, at) {
@@ -48,8 +49,8 @@ pub fn section(args: &SectionArgs) -> anyhow::Result<()> {
         (Model::Planar(_), _, _) => return Err(missing("--x", "the job is a plane curve: give its station as --x X0")),
         (Model::Surface(_), _, _) => return Err(missing("--at", "the job is a surface: give its station as --at X0,Y0")),
         _ => {
-            return Err(missing(
-                "JOB",
+            return Err(crate::output::unsuited(
+                &args.job,
                 "sections are taken of plane curves (--x) and surfaces (--at); for a space curve, ask `t2spline region` for its projections",
             ))
         }
@@ -67,19 +68,6 @@ fn missing(option: &'static str, message: &str) -> anyhow::Error {
         message: message.to_owned(),
     }
     .into()
-}
-
-/// `n` levels from 0 to 1.
-fn levels(n: u64) -> anyhow::Result<Vec<Alpha>> {
-    if !(2..=MAX_LEVELS).contains(&n) {
-        return Err(missing(
-            "--levels",
-            &format!("{n} is outside 2 ..= {MAX_LEVELS}"),
-        ));
-    }
-    Ok((0..n)
-        .filter_map(|k| Alpha::try_new(k as f64 / (n - 1) as f64).ok())
-        .collect())
 }
 
 /// `X0,Y0` as two finite numbers.

@@ -7,6 +7,7 @@
 
 mod answer;
 mod api;
+mod http;
 mod security;
 mod server;
 
@@ -20,16 +21,12 @@ const EXAMPLE: &str = include_str!("../../../../examples/paper-alg-1-1.json");
 
 pub fn serve(args: &ServeArgs) -> anyhow::Result<()> {
     let job = match &args.job {
-        Some(path) => Served {
-            name: job_name(path),
-            text: read_input(path)?,
-            path: (!is_stdio(path)).then(|| path.clone()),
-        },
-        None => Served {
-            name: "paper-alg-1-1.json".to_owned(),
-            text: EXAMPLE.to_owned(),
-            path: None,
-        },
+        Some(path) => Served::new(
+            job_name(path),
+            read_input(path)?,
+            (!is_stdio(path)).then(|| path.clone()),
+        ),
+        None => Served::new("paper-alg-1-1.json".to_owned(), EXAMPLE.to_owned(), None),
     };
     // A job that breaks a rule is refused as `run` refuses it.
     t2spline_io::parse_job(&job.text, &job.name)?;

@@ -23,12 +23,12 @@
 
 use std::fmt::Write as _;
 
-use t2spline::job::{Geometry, NamedCurve};
+use t2spline::job::{Geometry, LengthUnit, NamedCurve};
 
-use super::{extents, real};
+use super::{extents, real, CadMeta};
 
 /// The DXF text of `geometry`.
-pub(super) fn render(geometry: &Geometry) -> String {
+pub(super) fn render(geometry: &Geometry, meta: &CadMeta) -> String {
     let mut w = Writer::default();
     let (lo, hi) = extents(geometry);
     // Handles are fixed for the tables; entities start after them.
@@ -38,8 +38,15 @@ pub(super) fn render(geometry: &Geometry) -> String {
         w.var("$DWGCODEPAGE", 3, "ANSI_1252");
         w.point_var("$EXTMIN", lo);
         w.point_var("$EXTMAX", hi);
-        w.var("$INSUNITS", 70, "4");
-        w.var("$MEASUREMENT", 70, "1");
+        let (insunits, measurement) = match meta.units {
+            LengthUnit::Inch => ("1", "0"),
+            LengthUnit::Foot => ("2", "0"),
+            LengthUnit::Millimetre => ("4", "1"),
+            LengthUnit::Centimetre => ("5", "1"),
+            LengthUnit::Metre => ("6", "1"),
+        };
+        w.var("$INSUNITS", 70, insunits);
+        w.var("$MEASUREMENT", 70, measurement);
         w.var("$HANDSEED", 5, &format!("{:X}", body.next));
     });
     w.section("CLASSES", |_| {});

@@ -22,7 +22,7 @@
 
 use std::fmt::Write as _;
 
-use t2spline::job::Geometry;
+use t2spline::job::{Geometry, LengthUnit};
 use t2spline::{Direction, NurbsCurve, NurbsSurface};
 
 use super::{real, CadMeta};
@@ -154,6 +154,28 @@ fn curve_parameters(c: &NurbsCurve<3>, planar: bool, name_de: usize) -> String {
 }
 
 /// The global section's parameters (IGES 5.3 §2.2.4.3), one string.
+/// The IGES 5.3 unit flag (global parameter 14) of `units`.
+fn unit_flag(units: LengthUnit) -> &'static str {
+    match units {
+        LengthUnit::Inch => "1",
+        LengthUnit::Millimetre => "2",
+        LengthUnit::Foot => "4",
+        LengthUnit::Metre => "6",
+        LengthUnit::Centimetre => "10",
+    }
+}
+
+/// The IGES 5.3 unit name (global parameter 15) of `units`.
+fn unit_name(units: LengthUnit) -> &'static str {
+    match units {
+        LengthUnit::Inch => "INCH",
+        LengthUnit::Millimetre => "MM",
+        LengthUnit::Foot => "FT",
+        LengthUnit::Metre => "M",
+        LengthUnit::Centimetre => "CM",
+    }
+}
+
 fn global(meta: &CadMeta) -> String {
     let date = meta.timestamp.replace(['-', ':'], "").replace('T', ".");
     let version = concat!("t2spline ", env!("CARGO_PKG_VERSION"));
@@ -171,8 +193,8 @@ fn global(meta: &CadMeta) -> String {
         "17".into(),
         hollerith("t2spline"),
         "1.0".into(),
-        "2".into(),
-        hollerith("MM"),
+        unit_flag(meta.units).into(),
+        hollerith(unit_name(meta.units)),
         "1".into(),
         "1.0".into(),
         hollerith(&date),
@@ -371,6 +393,7 @@ mod tests {
                 name: "a.igs".into(),
                 description: None,
                 timestamp: "2026-01-02T03:04:05".into(),
+                units: Default::default(),
             }),
             72,
         );

@@ -7,9 +7,9 @@
 //!
 //! | format | entity | name in | unclamped curves | units |
 //! |---|---|---|---|---|
-//! | DXF (R2000, ASCII) | `SPLINE` (rational flag and a weight per control point when a weight is not 1) | layer | clamped exactly (knot insertion) | `$INSUNITS` millimetres |
-//! | STEP (AP214, ISO 10303-21) | `B_SPLINE_CURVE_WITH_KNOTS` and `RATIONAL_B_SPLINE_CURVE` (complex entity) in a wireframe shape of one product | entity name and presentation layer | as they are (knot multiplicities, domain `[U[p], U[n]]`) | millimetres |
-//! | IGES 5.3 | entity 126 (rational B-spline curve) with a name property (406 form 15) | name property, label | as they are (`V(0)`, `V(1)` give the domain) | millimetres |
+//! | DXF (R2000, ASCII) | `SPLINE` (rational flag and a weight per control point when a weight is not 1) | layer | clamped exactly (knot insertion) | `$INSUNITS` (millimetres unless the job's `units` or `--units` say otherwise) |
+//! | STEP (AP214, ISO 10303-21) | `B_SPLINE_CURVE_WITH_KNOTS` and `RATIONAL_B_SPLINE_CURVE` (complex entity) in a wireframe shape of one product | entity name and presentation layer | as they are (knot multiplicities, domain `[U[p], U[n]]`) | the context's length unit (SI, or a conversion-based inch or foot) |
+//! | IGES 5.3 | entity 126 (rational B-spline curve) with a name property (406 form 15) | name property, label | as they are (`V(0)`, `V(1)` give the domain) | the global section's unit flag and name |
 //! | OBJ | `cstype rat bspline`, `deg`, `curv`, `parm u` | group | as they are (`curv u0 u1`) | none |
 //!
 //! Surface jobs (docs/method.md §8) export their eight surfaces, named the same way:
@@ -36,7 +36,7 @@ mod step;
 use std::fmt;
 use std::path::Path;
 
-use t2spline::job::Geometry;
+use t2spline::job::{Geometry, LengthUnit};
 use t2spline::Num;
 
 use crate::error::{Error, Problem};
@@ -130,18 +130,23 @@ pub struct CadMeta {
     pub description: Option<String>,
     /// When the file was written, as `YYYY-MM-DDThh:mm:ss` (UTC).
     pub timestamp: String,
+    /// The unit of the coordinates, which the file records (DXF
+    /// `$INSUNITS`, the STEP context's length unit, the IGES unit flag, an
+    /// OBJ comment); the numbers are written as they are.
+    pub units: LengthUnit,
 }
 
 impl CadMeta {
     /// The header of a file named `name` written now (or at
     /// `SOURCE_DATE_EPOCH`, seconds since 1970, when set) of a job with
-    /// `description`.
+    /// `description`, its coordinates in `units`.
     #[must_use]
-    pub fn now(name: String, description: Option<String>) -> CadMeta {
+    pub fn now(name: String, description: Option<String>, units: LengthUnit) -> CadMeta {
         CadMeta {
             name,
             description,
             timestamp: clock::timestamp(),
+            units,
         }
     }
 }
@@ -159,7 +164,7 @@ impl CadMeta {
 /// let text = std::fs::read_to_string("../../examples/paper-alg-1-1.json")?;
 /// let job = t2spline_io::parse_job(&text, "paper-alg-1-1.json")?;
 /// let geometry = job.geometry(&job.settings(&Overrides::default())?)?;
-/// let meta = CadMeta { name: "out.obj".into(), description: None, timestamp: "2026-01-01T00:00:00".into() };
+/// let meta = CadMeta { name: "out.obj".into(), description: None, timestamp: "2026-01-01T00:00:00".into(), units: Default::default() };
 /// let obj = render_cad(CadFormat::Obj, &geometry, &meta, "paper-alg-1-1.json")?;
 /// assert!(obj.contains("g defuzzified\n") && obj.contains("cstype rat bspline\n"));
 /// # Ok::<(), Box<dyn std::error::Error>>(())
@@ -222,7 +227,7 @@ pub fn render_cad(
         "{format} needs clamped curves"
     );
     Ok(match format {
-        CadFormat::Dxf => dxf::render(geometry),
+        CadFormat::Dxf => dxf::render(geometry, meta),
         CadFormat::Step => step::render(geometry, meta),
         CadFormat::Iges => iges::render(geometry, meta),
         CadFormat::Obj => obj::render(geometry, meta),

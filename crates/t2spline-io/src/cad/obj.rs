@@ -33,8 +33,9 @@ pub(super) fn render(geometry: &Geometry, meta: &CadMeta) -> String {
     }
     let _ = writeln!(
         out,
-        "# written {} UTC; no units (the job's)",
-        meta.timestamp
+        "# written {} UTC; units: {} (OBJ itself records none)",
+        meta.timestamp,
+        meta.units.name()
     );
     let mut next = 1;
     for curve in &geometry.curves {

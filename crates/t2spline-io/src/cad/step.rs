@@ -24,7 +24,7 @@
 
 use std::fmt::Write as _;
 
-use t2spline::job::Geometry;
+use t2spline::job::{Geometry, LengthUnit};
 use t2spline::{Direction, KnotVector, NurbsCurve, NurbsSurface};
 
 use super::{real, CadMeta};
@@ -54,7 +54,7 @@ pub(super) fn render(geometry: &Geometry, meta: &CadMeta) -> String {
         "PRODUCT_DEFINITION('design','',{formation},{definition_context})"
     ));
     let shape = data.add(&format!("PRODUCT_DEFINITION_SHAPE('','',{definition})"));
-    let length = data.add("(LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT(.MILLI.,.METRE.))");
+    let length = length_unit(&mut data, meta.units);
     let angle = data.add("(NAMED_UNIT(*) PLANE_ANGLE_UNIT() SI_UNIT($,.RADIAN.))");
     let solid = data.add("(NAMED_UNIT(*) SI_UNIT($,.STERADIAN.) SOLID_ANGLE_UNIT())");
     let uncertainty = data.add(&format!(
@@ -138,6 +138,34 @@ impl Data {
         self.count += 1;
         let _ = writeln!(self.text, "#{}={entity};", self.count);
         format!("#{}", self.count)
+    }
+}
+
+/// The length unit of the representation context: an SI unit (milli-,
+/// centi- or plain metres), or an inch or a foot as a conversion-based unit
+/// of the millimetre (ISO 10303-41).
+fn length_unit(data: &mut Data, units: LengthUnit) -> String {
+    let si = |prefix: &str| format!("(LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT({prefix},.METRE.))");
+    match units {
+        LengthUnit::Millimetre => data.add(&si(".MILLI.")),
+        LengthUnit::Centimetre => data.add(&si(".CENTI.")),
+        LengthUnit::Metre => data.add(&si("$")),
+        LengthUnit::Inch | LengthUnit::Foot => {
+            let mm = data.add(&si(".MILLI."));
+            let factor = data.add(&format!(
+                "LENGTH_MEASURE_WITH_UNIT(LENGTH_MEASURE({}),{mm})",
+                r(units.millimetres())
+            ));
+            let exponents = data.add("DIMENSIONAL_EXPONENTS(1.0,0.0,0.0,0.0,0.0,0.0,0.0)");
+            let name = if units == LengthUnit::Inch {
+                "INCH"
+            } else {
+                "FOOT"
+            };
+            data.add(&format!(
+                "(CONVERSION_BASED_UNIT('{name}',{factor}) LENGTH_UNIT() NAMED_UNIT({exponents}))"
+            ))
+        }
     }
 }
 

@@ -1,10 +1,11 @@
 //! The top-level keys that job and data files read alike, curve or surface:
 //! the known keys, `description`, `order`/`degree`, `alpha`,
 //! `lower_height`, `samples` and `type_reduction`; and the place of an error
-//! about a knot vector.
+//! about a knot vector; `units`, and whether a curve said to be closed
+//! closes (read alike by the validator and the one-pass reading).
 
 use serde_json::{Map, Value};
-use t2spline::job::check_samples;
+use t2spline::job::{check_samples, LengthUnit, Model};
 use t2spline::{Alpha, Height, TypeReduction};
 
 use super::position::element;
@@ -23,8 +24,24 @@ pub(super) const TOP_KEYS: &[&str] = &[
     "type_reduction",
     "lower_height",
     "samples",
+    "closed",
+    "units",
     "points",
 ];
+
+/// How a closed curve closes, for the message of one that does not
+/// (docs/method.md §11).
+pub(super) const CLOSURE_RULE: &str = "a closed curve with clamped knots repeats its first control point as its last; with periodic knots (the first 2p spans as long as the last 2p) its last p points repeat its first p";
+
+/// Whether a curve model closes ([`FuzzyCurve::closure_gap`]); a surface
+/// is never asked.
+pub(super) fn closure_gap(model: &Model) -> Result<(), t2spline::Error> {
+    match model {
+        Model::Planar(c) => c.closure_gap().map(drop),
+        Model::Spatial(c) => c.closure_gap().map(drop),
+        _ => Ok(()),
+    }
+}
 
 /// The top-level keys that every job and data file reads alike, as parsed
 /// (`None`: missing or invalid, and reported).
@@ -37,6 +54,24 @@ pub(super) struct Common {
 }
 
 impl Walker {
+    /// `units`, one of [`LengthUnit::names`]; `None` when missing or
+    /// wrong (reported).
+    pub(super) fn units(&mut self, o: &Map<String, Value>) -> Option<LengthUnit> {
+        let v = o.get("units")?;
+        let unit = v.as_str().and_then(LengthUnit::named);
+        if unit.is_none() {
+            self.report(
+                "units",
+                format!(
+                    "expected one of {} (the unit of the coordinates, for CAD files), got {}",
+                    LengthUnit::names(),
+                    written(v)
+                ),
+            );
+        }
+        unit
+    }
+
     /// The keys every file shares, in the order of the file format: unknown
     /// keys (against `known`), `description`, the model's order (read by
     /// `order`, as the kind of model needs), `alpha`, `lower_height`.

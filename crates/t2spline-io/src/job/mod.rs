@@ -19,8 +19,8 @@ mod walker;
 
 pub use crate::job_json::job_json;
 pub use crate::limits::{
-    MAX_ARRAY, MAX_FILE_BYTES, MAX_KEYS, MAX_NESTING, MAX_ORDER, MAX_POINTS, MAX_PROBLEMS,
-    MAX_SURFACE_WORK, MAX_VALUES,
+    more_problems, MAX_ARRAY, MAX_FILE_BYTES, MAX_KEYS, MAX_NESTING, MAX_ORDER, MAX_POINTS,
+    MAX_PROBLEMS, MAX_SURFACE_WORK, MAX_VALUES,
 };
 pub use crate::read::{read_text, read_text_from};
 pub use position::{locate, LineColumn};

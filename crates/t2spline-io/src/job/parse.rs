@@ -18,7 +18,7 @@ use t2spline::fit::FuzzyData;
 use t2spline::job::{Job, Model, Samples, DEFAULT_SAMPLES};
 use t2spline::{Alpha, FuzzyCurve, KnotVector, Nt2Point, Place};
 
-use super::common::{knot_error_path, TOP_KEYS};
+use super::common::{closure_gap, knot_error_path, CLOSURE_RULE, TOP_KEYS};
 use super::point::{complete, RawPoint};
 use super::position::{self, element, Oversized};
 use super::surface;
@@ -148,9 +148,7 @@ fn walk<T>(
     if more > 0 {
         problems.push(Problem {
             line_column: None,
-            message: format!(
-                "… and {more} more problems (only the first {MAX_PROBLEMS} are listed)"
-            ),
+            message: crate::limits::more_problems(more, false),
         });
     }
     match out {
@@ -263,6 +261,8 @@ impl Walker {
         }
         let header = self.header(o, TOP_KEYS, "a job needs its fuzzy control points");
         let type_reduction = self.type_reduction(o);
+        let closed = o.get("closed").and_then(|v| self.boolean(v, "closed"));
+        let units = self.units(o);
         let weights = o.get("weights").and_then(|v| self.numbers(v, "weights"));
         let knots = o.get("knots").and_then(|v| {
             if v.is_object() {
@@ -302,12 +302,20 @@ impl Walker {
                 FuzzyCurve::try_new(degree, p, weights, knots).map(Model::Spatial)
             }
         };
+        if let (Ok(model), Some(true)) = (&model, closed) {
+            if let Err(e) = closure_gap(model) {
+                self.report("closed", format!("{e}: {CLOSURE_RULE}"));
+                return None;
+            }
+        }
         match model {
             Ok(model) => Some(Job {
                 description: header.description,
                 alpha: header.alpha,
                 type_reduction,
                 samples: Samples::Along(samples.unwrap_or(DEFAULT_SAMPLES)),
+                closed,
+                units,
                 model,
             }),
             Err(e) => {

@@ -6,7 +6,7 @@ use serde_json::Value;
 use t2spline::{Axis, Nt2Number, Nt2Point, Place};
 
 use super::position::{child, element};
-use super::walker::Walker;
+use super::walker::{kind, Walker};
 
 const POINT_KEYS: &[&str] = &["x", "y", "z"];
 const NUMBER_KEYS: &[&str] = &["crisp", "upper", "primary", "lower", "lower_height"];
@@ -56,6 +56,29 @@ impl Walker {
         height: Result<Option<f64>, ()>,
     ) -> Option<Nt2Number> {
         let key = child(point, place.axis.map_or("?", Axis::name));
+        // A bare number is a crisp number: the job's height, else 1.
+        if let Some(x) = v.as_f64() {
+            let h = height.ok().flatten().unwrap_or(1.0);
+            // Its seven values are one: its problems are the crisp value's.
+            let problems = Nt2Number::problems(x, [x; 2], [x; 2], [x; 2], h);
+            for e in problems.into_iter().filter(|e| {
+                matches!(e, t2spline::Error::NotFinite { what, .. }
+                    | t2spline::Error::OutOfRange { what, .. } if *what == "crisp")
+            }) {
+                self.located(&key, e.at(place));
+            }
+            return Nt2Number::try_new(x, [x; 2], [x; 2], [x; 2], h).ok();
+        }
+        if !v.is_object() {
+            self.report(
+                &key,
+                format!(
+                    "expected a fuzzy number (a JSON object, or a number for a crisp one), got {}",
+                    kind(v)
+                ),
+            );
+            return None;
+        }
         let o = self.object(v, &key, "a fuzzy number")?;
         self.unknown_keys(o, &key, NUMBER_KEYS);
         let mut get = |name: &str| {

@@ -64,9 +64,16 @@ impl Walker {
     /// A surface job (docs/method.md §8): every problem of every key, then the rules
     /// that tie the net, weights and knots together in each direction.
     pub(super) fn surface_job(&mut self, o: &Map<String, Value>) -> Option<Job> {
+        if o.contains_key("closed") {
+            self.report(
+                "closed",
+                "a surface job has no `closed`: it is for curves (docs/method.md §11)",
+            );
+        }
         let (common, degree) = self.common(o, TOP_KEYS, |w| w.degrees(o));
         let samples = self.grid_samples(o.get("samples"));
         let type_reduction = self.type_reduction(o);
+        let units = self.units(o);
         let net = match o.get("points") {
             None => {
                 self.report("points", "missing: a job needs its fuzzy control points");
@@ -109,6 +116,8 @@ impl Walker {
                 alpha: common.alpha,
                 type_reduction,
                 samples: Samples::Grid(samples),
+                closed: None,
+                units,
                 model: Model::Surface(surface),
             }),
             Err(e) => {

@@ -96,6 +96,14 @@ impl Walker {
         }
     }
 
+    pub(super) fn boolean(&mut self, v: &Value, key: &str) -> Option<bool> {
+        let b = v.as_bool();
+        if b.is_none() {
+            self.report(key, format!("expected true or false, got {}", kind(v)));
+        }
+        b
+    }
+
     pub(super) fn number(&mut self, v: &Value, key: &str) -> Option<f64> {
         let x = v.as_f64();
         if x.is_none() {

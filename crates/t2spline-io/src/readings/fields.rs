@@ -97,13 +97,15 @@ pub(super) fn shorten(text: &str) -> String {
 }
 
 /// `problems`, at most [`MAX_PROBLEMS`](crate::limits::MAX_PROBLEMS) of them,
-/// then a count of the rest.
+/// then a count of the rest ("at least" when the reader stopped at
+/// [`MAX_PROBLEMS_FOUND`](crate::limits::MAX_PROBLEMS_FOUND)).
 pub(super) fn capped(mut problems: Vec<Problem>) -> Vec<Problem> {
     let limit = crate::limits::MAX_PROBLEMS;
     if problems.len() > limit {
         let more = problems.len() - limit;
+        let stopped = problems.len() > crate::limits::MAX_PROBLEMS_FOUND;
         problems.truncate(limit);
-        problems.push(Problem::new(format!("… and {more} more problem(s)")));
+        problems.push(Problem::new(crate::limits::more_problems(more, stopped)));
     }
     problems
 }

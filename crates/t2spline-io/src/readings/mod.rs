@@ -58,7 +58,7 @@ use std::path::Path;
 use t2spline::fit::{Readings, MIN_READINGS};
 
 use crate::error::{Error, Problem};
-use crate::limits::{MAX_POINTS, MAX_PROBLEMS};
+use crate::limits::{MAX_POINTS, MAX_PROBLEMS_FOUND};
 use crate::read::read_text;
 use fields::shorten;
 
@@ -184,7 +184,7 @@ fn parse_readings_within(text: &str, source: &str, max_rows: usize) -> Result<Re
     let mut reader = Rows::new(delimiter, dimension);
     for row in rows {
         reader.row(row);
-        if reader.problems.len() > MAX_PROBLEMS || reader.over_limit {
+        if reader.problems.len() > MAX_PROBLEMS_FOUND || reader.over_limit {
             break;
         }
     }
@@ -342,7 +342,7 @@ impl Rows {
     /// The stations and their readings, or every problem.
     fn finish(mut self) -> Result<(Vec<String>, Vec<usize>, Readings), Vec<Problem>> {
         for ((name, &count), &line) in self.names.iter().zip(&self.rows).zip(&self.first_line) {
-            if count < MIN_READINGS && self.problems.len() <= MAX_PROBLEMS {
+            if count < MIN_READINGS && self.problems.len() <= MAX_PROBLEMS_FOUND {
                 self.problems.push(Problem {
                     line_column: Some((line, 1)),
                     message: format!(

@@ -34,7 +34,7 @@ use super::fields::{self, shorten};
 use super::tokens;
 use crate::error::{Error, Problem};
 use crate::fit_data::FitData;
-use crate::limits::{MAX_POINTS, MAX_PROBLEMS};
+use crate::limits::{MAX_POINTS, MAX_PROBLEMS_FOUND};
 
 /// The columns of a net's readings file.
 pub(super) const NET_HEADER: [&str; 5] = ["row", "col", "x", "y", "z"];
@@ -162,7 +162,7 @@ pub(super) fn parse_within(
     };
     for row in rows {
         reader.row(row);
-        if reader.problems.len() > MAX_PROBLEMS || reader.over_limit {
+        if reader.problems.len() > MAX_PROBLEMS_FOUND || reader.over_limit {
             break;
         }
     }

@@ -29,7 +29,7 @@ use t2spline::MAX_MAGNITUDE;
 use super::fields::{self, shorten};
 use super::net::{NetReadings, StationSource};
 use crate::error::{Error, Problem};
-use crate::limits::{MAX_POINTS, MAX_PROBLEMS};
+use crate::limits::{MAX_POINTS, MAX_PROBLEMS_FOUND};
 
 /// A line and a character column, from 1.
 type At = (usize, usize);
@@ -124,7 +124,9 @@ impl Raster {
                     .filter(|z| !z.is_nan())
                     .map(|&z| [x, y, z])
                     .collect();
-                if readings.len() < t2spline::fit::MIN_READINGS && problems.len() <= MAX_PROBLEMS {
+                if readings.len() < t2spline::fit::MIN_READINGS
+                    && problems.len() <= MAX_PROBLEMS_FOUND
+                {
                     problems.push(Problem::new(format!(
                         "block ({i}, {j}) (cell rows {}..{}, columns {}..{}): {} reading(s) with data; percentiles need at least {}",
                         rows_of[0],
@@ -231,7 +233,7 @@ pub fn parse_grid_csv(text: &str, source: &str) -> Result<Raster, Error> {
     let mut problems = Vec::new();
     let mut cells: Vec<([f64; 2], f64, usize)> = Vec::with_capacity(rows.len());
     for row in rows {
-        if problems.len() > MAX_PROBLEMS {
+        if problems.len() > MAX_PROBLEMS_FOUND {
             break;
         }
         let f = &row.fields;
@@ -340,7 +342,7 @@ pub fn parse_grid_csv(text: &str, source: &str) -> Result<Raster, Error> {
                     *l = *line;
                 }
             }
-            Some(first) if problems.len() <= MAX_PROBLEMS => {
+            Some(first) if problems.len() <= MAX_PROBLEMS_FOUND => {
                 problems.push(Problem {
                     line_column: Some((*line, 1)),
                     message: format!(
@@ -354,7 +356,7 @@ pub fn parse_grid_csv(text: &str, source: &str) -> Result<Raster, Error> {
         }
     }
     for (k, &line) in line_of.iter().enumerate() {
-        if line == 0 && problems.len() <= MAX_PROBLEMS {
+        if line == 0 && problems.len() <= MAX_PROBLEMS_FOUND {
             let (x, y) = (
                 xs.get(k % columns_n).copied().unwrap_or(0.0),
                 ys.get(k / columns_n).copied().unwrap_or(0.0),
@@ -610,11 +612,11 @@ pub fn parse_ascii_grid(text: &str, source: &str) -> Result<Raster, Error> {
             }
         };
         values.push(if Some(v) == nodata { f64::NAN } else { v });
-        if problems.len() > MAX_PROBLEMS {
+        if problems.len() > MAX_PROBLEMS_FOUND {
             break;
         }
     }
-    if values.len() < cells && problems.len() <= MAX_PROBLEMS {
+    if values.len() < cells && problems.len() <= MAX_PROBLEMS_FOUND {
         problems.push(Problem {
             line_column: Some(last),
             message: format!(

@@ -47,6 +47,21 @@ pub(crate) enum Fault {
 /// found before a record past the limit is stored.
 pub(crate) fn records(text: &str, delimiter: char, max: usize) -> Result<Vec<Record>, Fault> {
     let mut out = Vec::new();
+    each_record(text, delimiter, max, |record| out.push(record))?;
+    Ok(out)
+}
+
+/// As [`records`], but hands each record to `take` as it is read, so that a
+/// reader keeps only what it makes of them; gives the count of records.
+/// More than `max` is [`Fault::TooMany`], found before the record past the
+/// limit is handed over.
+pub(crate) fn each_record(
+    text: &str,
+    delimiter: char,
+    max: usize,
+    mut take: impl FnMut(Record),
+) -> Result<usize, Fault> {
+    let mut count = 0usize;
     let mut chars = text.chars().peekable();
     let (mut line, mut column) = (1, 1);
     let mut fields: Vec<Field> = Vec::new();
@@ -112,17 +127,18 @@ pub(crate) fn records(text: &str, delimiter: char, max: usize) -> Result<Vec<Rec
                 let end = (line, column);
                 let blank = matches!(&fields[..], [only] if only.text.trim().is_empty());
                 if !blank {
-                    if out.len() == max {
+                    if count == max {
                         return Err(Fault::TooMany);
                     }
-                    out.push(Record {
+                    count += 1;
+                    take(Record {
                         fields: std::mem::take(&mut fields),
                         end,
                     });
                 }
                 fields.clear();
                 if c.is_none() {
-                    return Ok(out);
+                    return Ok(count);
                 }
                 line += 1;
                 column = 1;

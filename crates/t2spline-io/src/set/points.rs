@@ -6,12 +6,11 @@ use t2spline::{Num, MAX_MAGNITUDE};
 
 use crate::error::{Error, Problem};
 use crate::read::read_text;
-use crate::readings::tokens::{records, Fault, Field};
+use crate::readings::tokens::{each_record, Fault, Field, Record};
 
 /// Rows of a query-point file at most (ten million: 240 MB of coordinates).
 pub const MAX_QUERY_POINTS: usize = 10_000_000;
-/// Problems listed at most; then a count of the rest.
-const MAX_PROBLEMS: usize = 20;
+use crate::limits::{more_problems, MAX_PROBLEMS};
 
 /// The points of a query-point file, in file order.
 #[derive(Clone, Debug, PartialEq)]
@@ -87,8 +86,14 @@ pub fn parse_points(text: &str, source: &str) -> Result<QueryPoints, Error> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let first_line = text.lines().next().unwrap_or("");
     let delimiter = if first_line.contains(';') { ';' } else { ',' };
-    let rows = records(text, delimiter, MAX_QUERY_POINTS.saturating_add(1)).map_err(|fault| {
-        invalid(vec![match fault {
+    // Each row is made a point as it is read: no more memory than the points
+    // (24 bytes each), and the limit refuses the file at its first row past it.
+    let mut reader = PointRows::default();
+    let read = each_record(text, delimiter, MAX_QUERY_POINTS.saturating_add(1), |row| {
+        reader.row(row, delimiter);
+    });
+    if let Err(fault) = read {
+        return Err(invalid(vec![match fault {
             Fault::Quote(q) => Problem {
                 line_column: Some((q.line, q.column)),
                 message: q.message.to_owned(),
@@ -96,92 +101,30 @@ pub fn parse_points(text: &str, source: &str) -> Result<QueryPoints, Error> {
             Fault::TooMany => Problem::new(format!(
                 "more than {MAX_QUERY_POINTS} points; split the file"
             )),
-        }])
-    })?;
-    let mut rows = rows.into_iter();
-    let Some(header) = rows.next() else {
-        return Err(invalid(vec![Problem::new(
-            "empty: the first line must be the header x,y (or x,y,z)",
-        )]));
-    };
-    let names: Vec<String> = header
-        .fields
-        .iter()
-        .map(|f| f.text.trim().to_ascii_lowercase())
-        .collect();
-    let dimension = match names
-        .iter()
-        .map(String::as_str)
-        .collect::<Vec<_>>()
-        .as_slice()
-    {
-        ["x", "y"] => 2,
-        ["x", "y", "z"] => 3,
-        _ => {
-            return Err(invalid(vec![Problem {
+        }]));
+    }
+    let PointRows {
+        dimension,
+        bad_header,
+        points,
+        mut problems,
+        more,
+    } = reader;
+    let Some(dimension) = dimension else {
+        return Err(invalid(vec![if bad_header {
+            Problem {
                 line_column: Some((1, 1)),
                 message: format!(
                     "the header must be x,y or x,y,z, not `{}`",
                     crate::printable(first_line.trim_end())
                 ),
-            }]))
-        }
-    };
-    let axes = ["x", "y", "z"];
-    let mut points: Vec<[f64; 3]> = Vec::new();
-    let mut problems = Vec::new();
-    let mut more = 0usize;
-    let mut push = |problems: &mut Vec<Problem>, line, column, message| {
-        if problems.len() < MAX_PROBLEMS {
-            problems.push(Problem {
-                line_column: Some((line, column)),
-                message,
-            });
-        } else {
-            more += 1;
-        }
-    };
-    for row in rows {
-        let mut p = [0.0; 3];
-        for (c, axis) in axes.iter().enumerate().take(dimension) {
-            match row.fields.get(c) {
-                Some(f) => match number(f, delimiter) {
-                    Ok(x) => p[c] = x,
-                    Err(m) => push(
-                        &mut problems,
-                        f.line,
-                        f.column,
-                        format!("{axis} (column {}): {m}", c + 1),
-                    ),
-                },
-                None => push(
-                    &mut problems,
-                    row.end.0,
-                    row.end.1,
-                    format!(
-                        "{axis} (column {}) is missing; every row has {}",
-                        c + 1,
-                        axes[..dimension].join(",")
-                    ),
-                ),
             }
-        }
-        if let Some(f) = row.fields.get(dimension) {
-            push(
-                &mut problems,
-                f.line,
-                f.column,
-                format!(
-                    "column {} is one too many; every row has {}",
-                    dimension + 1,
-                    axes[..dimension].join(",")
-                ),
-            );
-        }
-        points.push(p);
-    }
+        } else {
+            Problem::new("empty: the first line must be the header x,y (or x,y,z)")
+        }]));
+    };
     if more > 0 {
-        problems.push(Problem::new(format!("... and {more} more problem(s)")));
+        problems.push(Problem::new(more_problems(more, false)));
     }
     if points.is_empty() && problems.is_empty() {
         problems.push(Problem::new(
@@ -195,6 +138,95 @@ pub fn parse_points(text: &str, source: &str) -> Result<QueryPoints, Error> {
         2 => QueryPoints::Plane(points.into_iter().map(|p| [p[0], p[1]]).collect()),
         _ => QueryPoints::Space(points),
     })
+}
+
+/// The reader of a query-point file, fed one row at a time: the header
+/// first (x,y or x,y,z), then one point per row.
+#[derive(Debug, Default)]
+struct PointRows {
+    /// 2 or 3 once the header is read.
+    dimension: Option<usize>,
+    /// The first row is not a header; the rows are then not read.
+    bad_header: bool,
+    points: Vec<[f64; 3]>,
+    problems: Vec<Problem>,
+    /// Problems past [`MAX_PROBLEMS`], counted.
+    more: usize,
+}
+
+impl PointRows {
+    fn push(&mut self, line: usize, column: usize, message: String) {
+        if self.problems.len() < MAX_PROBLEMS {
+            self.problems.push(Problem {
+                line_column: Some((line, column)),
+                message,
+            });
+        } else {
+            self.more += 1;
+        }
+    }
+
+    fn row(&mut self, row: Record, delimiter: char) {
+        if self.bad_header {
+            return;
+        }
+        let Some(dimension) = self.dimension else {
+            self.header(&row);
+            return;
+        };
+        let axes = ["x", "y", "z"];
+        let mut p = [0.0; 3];
+        for (c, axis) in axes.iter().enumerate().take(dimension) {
+            match row.fields.get(c) {
+                Some(f) => match number(f, delimiter) {
+                    Ok(x) => p[c] = x,
+                    Err(m) => {
+                        self.push(f.line, f.column, format!("{axis} (column {}): {m}", c + 1))
+                    }
+                },
+                None => self.push(
+                    row.end.0,
+                    row.end.1,
+                    format!(
+                        "{axis} (column {}) is missing; every row has {}",
+                        c + 1,
+                        axes[..dimension].join(",")
+                    ),
+                ),
+            }
+        }
+        if let Some(f) = row.fields.get(dimension) {
+            self.push(
+                f.line,
+                f.column,
+                format!(
+                    "column {} is one too many; every row has {}",
+                    dimension + 1,
+                    axes[..dimension].join(",")
+                ),
+            );
+        }
+        self.points.push(p);
+    }
+
+    /// The header: x,y or x,y,z in any case.
+    fn header(&mut self, header: &Record) {
+        let names: Vec<String> = header
+            .fields
+            .iter()
+            .map(|f| f.text.trim().to_ascii_lowercase())
+            .collect();
+        match names
+            .iter()
+            .map(String::as_str)
+            .collect::<Vec<_>>()
+            .as_slice()
+        {
+            ["x", "y"] => self.dimension = Some(2),
+            ["x", "y", "z"] => self.dimension = Some(3),
+            _ => self.bad_header = true,
+        }
+    }
 }
 
 /// A coordinate: a finite number of magnitude at most 1e150.

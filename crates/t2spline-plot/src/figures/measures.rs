@@ -16,7 +16,7 @@ use super::style::{crisp_marker, layer_stroke, upper_band};
 use crate::chart::scene::{Figure, LegendEntry, Mark, Panel, Priority, Xy};
 use crate::chart::ticks::short;
 use crate::error::Error;
-use crate::measure_view::{fuzzy_measures, FuzzyQuantity};
+use crate::measure_view::{fuzzy_measures, FuzzyMeasures, FuzzyQuantity};
 
 /// The membership function traced by cuts: the least ends up the levels,
 /// then the largest ends down (outer bounds where a cut is not exact).
@@ -109,7 +109,20 @@ fn legend() -> Vec<LegendEntry> {
 /// # Errors
 /// [`Error::Surface`] for a surface job.
 pub fn measures_figure(job: &Job) -> Result<Figure, Error> {
-    let m = fuzzy_measures(&job.model)?;
+    let m = fuzzy_measures(&job.model, job.closed)?;
+    let levels = m.length.levels.upper.len();
+    Ok(measures_figure_of(
+        &m,
+        &format!(
+            "Each function is traced by its cuts at {levels} levels (0, 0.05, …, 1 and every h), joined by straight lines; docs/method.md §11."
+        ),
+    ))
+}
+
+/// The `measures` figure of the fuzzy measures `m`; `levels_note`, the last
+/// note, says at which levels the functions are traced.
+#[must_use]
+pub fn measures_figure_of(m: &FuzzyMeasures, levels_note: &str) -> Figure {
     let mut panels = vec![panel("arc length", &m.length)];
     let mut notes = Vec::new();
     let mut quantities = vec![("arc length", &m.length)];
@@ -121,7 +134,6 @@ pub fn measures_figure(job: &Job) -> Result<Figure, Error> {
         panels.push(panel(name, area));
         quantities.push((name, area));
     }
-    let levels = m.length.levels.upper.len();
     for (name, q) in quantities {
         if let Some(gap) = widest_gap(q) {
             notes.push(format!(
@@ -130,9 +142,7 @@ pub fn measures_figure(job: &Job) -> Result<Figure, Error> {
             ));
         }
     }
-    notes.push(format!(
-        "Each function is traced by its cuts at {levels} levels (0, 0.05, …, 1 and every h), joined by straight lines; docs/method.md §11."
-    ));
+    notes.push(levels_note.to_owned());
     let subtitle = match &m.area {
         Some((_, a)) => format!(
             "crisp arc length {}, crisp area {}",
@@ -149,5 +159,5 @@ pub fn measures_figure(job: &Job) -> Result<Figure, Error> {
         legend(),
     );
     fig.notes = notes;
-    Ok(fig)
+    fig
 }

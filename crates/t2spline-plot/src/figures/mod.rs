@@ -23,6 +23,7 @@
 
 pub mod curve;
 mod measures;
+mod notebook;
 mod number;
 mod number_reductions;
 pub mod style;
@@ -33,6 +34,11 @@ use t2spline::{Alpha, Axis};
 
 pub use curve::reductions_figure;
 pub use measures::measures_figure;
+pub use notebook::{
+    measures_notebook_figure, notebook_figures, number_notebook_figure, region_notebook_figure,
+    section_notebook_figure, Stages, NOTEBOOK_MAX_REGION_POINTS, NOTEBOOK_MAX_SAMPLES,
+    NOTEBOOK_SURFACE_GRID,
+};
 pub use number::number_figure;
 pub use style::reduction_label;
 

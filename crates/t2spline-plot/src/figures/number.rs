@@ -215,16 +215,40 @@ pub fn number_figure(
     choice: NumberChoice,
 ) -> Result<Figure, Error> {
     let x = data::number(&job.model, choice.point, choice.axis)?;
+    let title = format!(
+        "Fuzzy number: coordinate {} of control point {}",
+        Axis::name(choice.axis),
+        choice.point_name(&job.model)
+    );
+    Ok(lone_number_figure(
+        &x,
+        alpha,
+        method,
+        title,
+        Axis::name(choice.axis),
+    ))
+}
+
+/// The `number` figure of the number `x` at `alpha`, titled `title`: what
+/// [`number_figure`] draws for a number of a job, for a number on its own
+/// (a notebook's picture of one); `x_label` names the horizontal axis.
+#[must_use]
+pub fn lone_number_figure(
+    x: &Nt2Number,
+    alpha: Alpha,
+    method: TypeReduction,
+    title: String,
+    x_label: &str,
+) -> Figure {
     let c = x.alpha_cut(alpha);
     let tfn = c.type_reduce();
-    let name = Axis::name(choice.axis);
-    let mut panel = Panel::graph(name, "membership grade");
+    let mut panel = Panel::graph(x_label, "membership grade");
     panel.y_range = Some([-0.07, 1.12]);
-    membership(&mut panel, &x);
+    membership(&mut panel, x);
     cut(&mut panel, &c, alpha.get());
     reduced(&mut panel, &tfn, x.crisp());
     let mut legend = legend(c.lower().is_some(), tfn.defuzzify());
-    legend.extend(number_reductions::add_reductions(&mut panel, &x));
+    legend.extend(number_reductions::add_reductions(&mut panel, x));
     let regime = if c.lower().is_some() {
         "α ≤ h: three cut ends averaged"
     } else {
@@ -238,16 +262,7 @@ pub fn number_figure(
             short(tfn.right(), 4),
             short(tfn.defuzzify(), 4)
         ),
-        method => number_reductions::reduction_subtitle(&x, method),
+        method => number_reductions::reduction_subtitle(x, method),
     };
-    Ok(Figure::new(
-        "number",
-        format!(
-            "Fuzzy number: coordinate {name} of control point {}",
-            choice.point_name(&job.model)
-        ),
-        subtitle,
-        vec![panel],
-        legend,
-    ))
+    Figure::new("number", title, subtitle, vec![panel], legend)
 }

@@ -22,11 +22,14 @@ impl Alpha {
     /// # use t2spline::Alpha;
     /// assert_eq!(Alpha::try_new(0.8)?.get(), 0.8);
     /// assert!(Alpha::try_new(f64::NAN).is_err());
+    /// // −0 is the level 0, written as 0.
+    /// assert!(Alpha::try_new(-0.0)?.get().is_sign_positive());
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn try_new(value: f64) -> Result<Self, Error> {
         if (0.0..=1.0).contains(&value) {
-            Ok(Alpha(value))
+            // `+ 0.0` turns −0 into +0 and leaves every other value.
+            Ok(Alpha(value + 0.0))
         } else {
             Err(Error::OutOfRange {
                 place: Place::NONE,

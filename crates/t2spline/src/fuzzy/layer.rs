@@ -18,6 +18,24 @@ impl<T> Layers<T> {
         Layers(Layer::ALL.map(&mut f))
     }
 
+    /// Builds the seven values from a fallible function of the layer, in
+    /// docs/method.md §1 order, stopping at the first error.
+    ///
+    /// # Errors
+    /// The first error of `f`.
+    pub fn try_from_fn<E>(mut f: impl FnMut(Layer) -> Result<T, E>) -> Result<Self, E> {
+        let mut values = Vec::with_capacity(Layer::ALL.len());
+        for layer in Layer::ALL {
+            values.push(f(layer)?);
+        }
+        let mut values = values.into_iter();
+        // One value was pushed per layer, in the same order.
+        #[allow(clippy::expect_used)]
+        Ok(Layers::from_fn(|_| {
+            values.next().expect("one value per layer")
+        }))
+    }
+
     /// Applies `f` to every value.
     pub fn map<U>(self, f: impl FnMut(T) -> U) -> Layers<U> {
         Layers(self.0.map(f))

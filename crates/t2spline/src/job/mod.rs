@@ -40,6 +40,7 @@ mod run;
 #[cfg(feature = "serde")]
 mod serialize;
 mod settings;
+mod units;
 
 pub use crate::error::Setting;
 pub use geometry::{Geometry, NamedCurve};
@@ -53,6 +54,7 @@ pub use settings::{
     check_derivative_order, check_grid_samples, check_samples, Overrides, Samples, Settings,
     DEFAULT_SAMPLES, DEFAULT_SURFACE_SAMPLES, MAX_DERIVATIVE_ORDER, MAX_SAMPLES,
 };
+pub use units::LengthUnit;
 
 use crate::fuzzy::{Alpha, Axis, Nt2Number, Nt2Point};
 use crate::pipeline::{FuzzyCurve, FuzzySurface};
@@ -72,6 +74,14 @@ pub struct Job {
     /// Uniform parameters at which curves or surfaces are sampled (checked by
     /// [`Job::settings`]).
     pub samples: Samples,
+    /// Whether a curve is closed (the job file's `"closed"`): `Some(true)`
+    /// asks that it close, `Some(false)` that it be measured as open, `None`
+    /// leaves it to the geometry (docs/method.md §11, [`FuzzyCurve::closure`]).
+    pub closed: Option<bool>,
+    /// The unit of the coordinates (the job file's `"units"`), for the
+    /// files that record one (CAD export); `None`: not said (millimetres
+    /// there).
+    pub units: Option<LengthUnit>,
     /// The fuzzy model.
     pub model: Model,
 }
@@ -92,6 +102,8 @@ impl Job {
             alpha: None,
             type_reduction: TypeReduction::Paper,
             samples,
+            closed: None,
+            units: None,
             model,
         }
     }

@@ -77,11 +77,24 @@ fn moments(rule: &Rule, n: usize) -> Vec<Vec<f64>> {
     m
 }
 
+/// The closing of an enclosed area: the rational basis at both ends of the
+/// domain, `(first index, values)`, for the chord from the end back to the
+/// start, and how many last points are one point with the first.
+pub(crate) struct Closing {
+    pub(crate) start: (usize, Vec<f64>),
+    pub(crate) end: (usize, Vec<f64>),
+    pub(crate) merged: usize,
+    /// What to say of the closing ([`Closure::note`](crate::measure::Closure::note)).
+    pub(crate) note: Option<String>,
+}
+
 impl AreaForm {
-    /// The form of a curve with `n` control points; `closed` merges the
-    /// last point into the first.
-    pub(crate) fn new(rules: &Rules, n: usize, closed: bool) -> Self {
-        let kind = if closed {
+    /// The form of a curve with `n` control points: under it, or enclosed
+    /// with `closing`, whose chord from `C(b)` back to `C(a)` adds
+    /// `½ (Rᵢ(b)·Rⱼ(a) − Rᵢ(a)·Rⱼ(b))` to `Kᵢⱼ` (exact: no quadrature), and
+    /// whose last `merged` points are the first `merged` again.
+    pub(crate) fn new(rules: &Rules, n: usize, closing: Option<&Closing>) -> Self {
+        let kind = if closing.is_some() {
             AreaKind::Enclosed
         } else {
             AreaKind::Under
@@ -89,8 +102,9 @@ impl AreaForm {
         let p = rules.fine.width - 1;
         let fine = moments(&rules.fine, n);
         let coarse = moments(&rules.coarse, n);
-        let merged = |i: usize| if closed && i + 1 == n { 0 } else { i };
-        let points = if closed { n - 1 } else { n };
+        let wrap = closing.map_or(0, |c| c.merged);
+        let merged = |i: usize| if i + wrap >= n { i + wrap - n } else { i };
+        let points = n - wrap;
         let get = |m: &Vec<Vec<f64>>, i: usize, j: usize| -> f64 {
             if j + p < i || j > i + p {
                 0.0
@@ -110,6 +124,22 @@ impl AreaForm {
                 e.1 += entry(&coarse, i, j);
             }
         }
+        // Wrapped points that are one point close every admissible curve.
+        if let Some(c) = closing.filter(|c| c.merged == 0) {
+            let (sa, ra) = (&c.start.0, &c.start.1);
+            let (sb, rb) = (&c.end.0, &c.end.1);
+            let mut add = |i: usize, j: usize, k: f64| {
+                let e = dense.entry((merged(i), merged(j))).or_insert((0.0, 0.0));
+                e.0 += k;
+                e.1 += k;
+            };
+            for (di, rib) in rb.iter().enumerate() {
+                for (dj, rja) in ra.iter().enumerate() {
+                    add(sb + di, sa + dj, 0.5 * rib * rja);
+                    add(sa + dj, sb + di, -0.5 * rja * rib);
+                }
+            }
+        }
         let mut rows = vec![Vec::new(); points];
         let mut cols = vec![Vec::new(); points];
         let mut errors = Vec::new();
@@ -126,6 +156,27 @@ impl AreaForm {
             rows,
             cols,
             errors,
+        }
+    }
+
+    /// The form itself, or for an enclosed area `−K` where the crisp
+    /// curve (its control points `crisp`, x and y interleaved) runs
+    /// clockwise: an enclosed area is positive whichever way the curve runs.
+    pub(crate) fn positive_for(self, crisp: &[f64]) -> Self {
+        if self.kind == AreaKind::Under {
+            return self;
+        }
+        let value: f64 = self
+            .rows
+            .iter()
+            .enumerate()
+            .flat_map(|(a, row)| row.iter().map(move |&(b, k)| (a, b, k)))
+            .map(|(a, b, k)| k * crisp[2 * a] * crisp[2 * b + 1])
+            .sum();
+        if value < 0.0 {
+            self.negated()
+        } else {
+            self
         }
     }
 

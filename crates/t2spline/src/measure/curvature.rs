@@ -20,8 +20,9 @@
 //! Where the derivative box holds the origin, some admissible curve stops at
 //! `t` and has no curvature there: the quantity is undefined.
 
-use std::cmp::Ordering;
 use std::collections::BinaryHeap;
+
+use crate::heap_key::heap_ordered_by;
 
 use crate::measure::bracket::Bracket;
 use crate::measure::cut_box::CutBox;
@@ -38,6 +39,8 @@ pub(crate) struct Local {
     dim: usize,
     a: Vec<f64>,
     b: Vec<f64>,
+    /// `aⱼbₖ − bⱼaₖ`, row `j`, column `k`.
+    cross: Vec<f64>,
     lo: Vec<f64>,
     hi: Vec<f64>,
 }
@@ -64,10 +67,15 @@ impl Local {
     pub(crate) fn new(cut: &CutBox, first: usize, a: &[f64], b: &[f64]) -> Self {
         let d = cut.dim;
         let range = first * d..(first + a.len()) * d;
+        let n = a.len();
+        let cross = (0..n * n)
+            .map(|q| a[q / n] * b[q % n] - b[q / n] * a[q % n])
+            .collect();
         Local {
             dim: d,
             a: a.to_vec(),
             b: b.to_vec(),
+            cross,
             lo: cut.lo[range.clone()].to_vec(),
             hi: cut.hi[range].to_vec(),
         }
@@ -80,8 +88,20 @@ impl Local {
         let comb = |coef: &[f64], c: usize| -> f64 {
             coef.iter().enumerate().map(|(j, a)| a * x[j * d + c]).sum()
         };
-        let d1: Vec<f64> = (0..d).map(|c| comb(&self.a, c)).collect();
-        let d2: Vec<f64> = (0..d).map(|c| comb(&self.b, c)).collect();
+        // The two derivatives, on the stack for every dimension but huge ones.
+        let mut small = [0.0; 16];
+        let mut large = Vec::new();
+        let both: &mut [f64] = if 2 * d <= small.len() {
+            &mut small[..2 * d]
+        } else {
+            large.resize(2 * d, 0.0);
+            &mut large
+        };
+        let (d1, d2) = both.split_at_mut(d);
+        for c in 0..d {
+            d1[c] = comb(&self.a, c);
+            d2[c] = comb(&self.b, c);
+        }
         let speed2: f64 = d1.iter().map(|v| v * v).sum();
         if speed2 == 0.0 {
             return None;
@@ -93,7 +113,7 @@ impl Local {
                 cross2 += v * v;
             }
         }
-        Some(cross2.sqrt() / speed2.powf(1.5))
+        Some(cross2.sqrt() / (speed2 * speed2.sqrt()))
     }
 
     /// An enclosure of κ over the sub-box `[lo, hi]`; the upper end is
@@ -121,7 +141,7 @@ impl Local {
             for e in c + 1..d {
                 let mut comp = [0.0, 0.0];
                 for j in 0..n {
-                    let inner = linear(&|k| self.a[j] * self.b[k] - self.b[j] * self.a[k], e);
+                    let inner = linear(&|k| self.cross[j * n + k], e);
                     let p = times([lo[j * d + c], hi[j * d + c]], inner);
                     comp = [comp[0] + p[0], comp[1] + p[1]];
                 }
@@ -129,9 +149,9 @@ impl Local {
                 cross2 = [cross2[0] + s[0], cross2[1] + s[1]];
             }
         }
-        let lo_k = cross2[0].sqrt() / speed2[1].powf(1.5);
+        let lo_k = cross2[0].sqrt() / (speed2[1] * speed2[1].sqrt());
         let hi_k = if speed2[0] > 0.0 {
-            cross2[1].sqrt() / speed2[0].powf(1.5)
+            cross2[1].sqrt() / (speed2[0] * speed2[0].sqrt())
         } else {
             f64::INFINITY
         };
@@ -165,40 +185,63 @@ impl Local {
         let sign = if up { 1.0 } else { -1.0 };
         let key = |e: [f64; 2]| if up { e[1] } else { -e[0] };
         let mut best = sign * start;
+        // The sub-boxes: `lo` then `hi` in a slot of `store` each, reused
+        // once dropped.
+        let len = self.lo.len();
+        let mut store: Vec<f64> = self.lo.iter().chain(&self.hi).copied().collect();
+        let mut free: Vec<usize> = Vec::new();
         let mut heap = BinaryHeap::new();
         heap.push(Cell {
             key: key(self.enclosure(&self.lo, &self.hi)),
-            lo: self.lo.clone(),
-            hi: self.hi.clone(),
+            slot: 0,
         });
         let mut expanded = 0;
+        let mut centre = self.lo.clone();
         while let Some(cell) = heap.peek() {
             if cell.key <= best + AGREEMENT * best.abs() || expanded >= BUDGET {
                 break;
             }
-            let Some(cell) = heap.pop() else { break };
+            let Some(Cell { slot, .. }) = heap.pop() else {
+                break;
+            };
             expanded += 1;
-            let Some(v) = self.split(&cell.lo, &cell.hi) else {
+            let (lo, hi) = store[slot..slot + 2 * len].split_at(len);
+            let Some(v) = self.split(lo, hi) else {
                 // A single point: its value is its bound.
-                if let Some(k) = self.value(&cell.lo) {
+                if let Some(k) = self.value(lo) {
                     best = best.max(sign * k);
                 }
+                free.push(slot);
                 continue;
             };
-            let mid = cell.lo[v] + (cell.hi[v] - cell.lo[v]) / 2.0;
-            for half in 0..2 {
-                let (mut lo, mut hi) = (cell.lo.clone(), cell.hi.clone());
-                if half == 0 {
-                    hi[v] = mid;
-                } else {
-                    lo[v] = mid;
+            let mid = lo[v] + (hi[v] - lo[v]) / 2.0;
+            // The upper half in a copy; the lower half in place.
+            let upper = match free.pop() {
+                Some(t) => {
+                    store.copy_within(slot..slot + 2 * len, t);
+                    t
                 }
-                if let Some(k) = self.value(&Self::centre(&lo, &hi)) {
+                None => {
+                    let t = store.len();
+                    store.extend_from_within(slot..slot + 2 * len);
+                    t
+                }
+            };
+            store[slot + len + v] = mid;
+            store[upper + v] = mid;
+            for s in [slot, upper] {
+                let (lo, hi) = store[s..s + 2 * len].split_at(len);
+                for ((m, l), h) in centre.iter_mut().zip(lo).zip(hi) {
+                    *m = l + (h - l) / 2.0;
+                }
+                if let Some(k) = self.value(&centre) {
                     best = best.max(sign * k);
                 }
-                let key = key(self.enclosure(&lo, &hi));
+                let key = key(self.enclosure(lo, hi));
                 if key > best + AGREEMENT * best.abs() {
-                    heap.push(Cell { key, lo, hi });
+                    heap.push(Cell { key, slot: s });
+                } else {
+                    free.push(s);
                 }
             }
         }
@@ -207,28 +250,13 @@ impl Local {
     }
 }
 
+/// A sub-box waiting in the search: its bound, and where its ends are stored.
 struct Cell {
     key: f64,
-    lo: Vec<f64>,
-    hi: Vec<f64>,
+    slot: usize,
 }
 
-impl PartialEq for Cell {
-    fn eq(&self, other: &Self) -> bool {
-        self.key.total_cmp(&other.key) == Ordering::Equal
-    }
-}
-impl Eq for Cell {}
-impl PartialOrd for Cell {
-    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
-        Some(self.cmp(other))
-    }
-}
-impl Ord for Cell {
-    fn cmp(&self, other: &Self) -> Ordering {
-        self.key.total_cmp(&other.key)
-    }
-}
+heap_ordered_by!(Cell, key);
 
 /// The bracket of κ at a parameter whose first-derivative coefficients are
 /// `a` and second `b`, on the points from `first`; `None` where the

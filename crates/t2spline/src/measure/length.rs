@@ -575,8 +575,10 @@ pub(crate) fn length_bracket(
     let short = adaptive(&x_min);
     let long = adaptive(&x_max);
     // The attained ends by the adaptive quadrature, the bounds widened to
-    // hold them with its accuracy.
-    let least = [least[0].min(short * (1.0 - accuracy)), short];
+    // hold them with its accuracy; a length is never negative, so a lower
+    // bound below 0 (the rule's error estimate on a curve that can stand
+    // still) is 0.
+    let least = [least[0].min(short * (1.0 - accuracy)).max(0.0), short];
     let largest = [long, largest[1].max(long * (1.0 + accuracy))];
     let tolerance = LENGTH_MIN_TOLERANCE * long.abs().max(f64::MIN_POSITIVE);
     let exact =

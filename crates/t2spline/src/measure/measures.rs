@@ -3,7 +3,7 @@
 
 use crate::error::Error;
 use crate::fuzzy::{Alpha, Membership};
-use crate::measure::area::{area_bracket, AreaForm, AreaKind};
+use crate::measure::area::{area_bracket, AreaForm, AreaKind, Closing};
 use crate::measure::bracket::Bracket;
 use crate::measure::coefficients;
 use crate::measure::curvature::curvature_bracket;
@@ -11,13 +11,19 @@ use crate::measure::cut_box::CutBox;
 use crate::measure::derivative::{angle_range, derivative_box};
 use crate::measure::length::length_bracket;
 use crate::measure::rule::{rules, Rules};
+use crate::nurbs::curve::rational_basis_span;
 use crate::nurbs::derivatives::check_order;
 use crate::pipeline::FuzzyCurve;
 
-/// Levels at most in one measurement.
-pub const MAX_MEASURE_LEVELS: usize = 1001;
-/// Parameters at most in one measurement.
-pub const MAX_MEASURE_PARAMETERS: usize = 10_000;
+/// Levels at most in one measurement: each level costs a length and an
+/// area bracket per function, about 0.14 s on a 20-point cubic (release, one
+/// core), so 51 levels take seconds (docs/performance.md, docs/jobs.md).
+pub const MAX_MEASURE_LEVELS: usize = 51;
+/// Parameters at most in one measurement, counted once per level
+/// (parameters × levels): each costs a curvature bracket per function, up
+/// to about 2 ms where its search ends at its budget, so the limit takes
+/// seconds.
+pub const MAX_MEASURE_PARAMETERS: usize = 1_000;
 
 /// One value per membership function.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -42,7 +48,7 @@ impl<T> PerMembership<T> {
         }
     }
 
-    fn from_fn(mut f: impl FnMut(Membership) -> T) -> Self {
+    pub(crate) fn from_fn(mut f: impl FnMut(Membership) -> T) -> Self {
         PerMembership {
             upper: f(Membership::Upper),
             primary: f(Membership::Primary),
@@ -68,7 +74,7 @@ pub struct Level {
 }
 
 impl Level {
-    fn of(alpha: f64, b: Bracket) -> Self {
+    pub(crate) fn of(alpha: f64, b: Bracket) -> Self {
         Level {
             alpha,
             min: b.min,
@@ -141,6 +147,9 @@ pub struct DerivativeLevel {
 pub struct AreaMeasure {
     /// Under an open curve or enclosed by a closed one.
     pub kind: AreaKind,
+    /// Why an enclosed area is closed by a chord ([`Closure::note`](crate::measure::Closure::note)).
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub note: Option<String>,
     /// Under the upper membership function.
     pub upper: Vec<Level>,
     /// Under the primary membership function.
@@ -196,6 +205,11 @@ pub struct MeasureOptions {
     pub length: bool,
     /// Whether to measure the area (plane curves).
     pub area: bool,
+    /// Whether the curve is closed (its area enclosed): `Some(true)` asks
+    /// that it close ([`Error::NotClosed`] otherwise), `Some(false)` measures
+    /// the area under it even if it closes, `None` closes a curve whose
+    /// crisp layer closes ([`FuzzyCurve::closure`]).
+    pub closed: Option<bool>,
 }
 
 impl MeasureOptions {
@@ -210,7 +224,7 @@ impl MeasureOptions {
                 place: crate::error::Place::NONE,
                 what: "levels",
                 value: count as f64,
-                range: "[2, 1001]",
+                range: "[2, 51]",
             });
         }
         let levels = (0..count)
@@ -222,31 +236,79 @@ impl MeasureOptions {
             order: 1,
             length: true,
             area: true,
+            closed: None,
         })
     }
 }
 
-/// Whether a plane curve is closed in the sense of docs/method.md §11:
-/// clamped knots and the first and last control points carrying the same
-/// fuzzy numbers (so that they are one point of the box).
-pub(crate) fn is_closed<const D: usize>(curve: &FuzzyCurve<D>) -> bool {
-    let p = curve.points();
-    p.len() >= 3 && curve.knots().is_clamped() && p.first() == p.last()
+/// The closing of a plane curve's enclosed area, or `None` for the area
+/// under it: `closed` as a job gives it (`Some(true)`: it must close), or
+/// `None` to close a curve whose crisp layer closes (docs/method.md §11).
+///
+/// # Errors
+/// [`Error::NotClosed`] when `closed` is `Some(true)` and the curve does not
+/// close.
+pub(crate) fn closing<const D: usize>(
+    curve: &FuzzyCurve<D>,
+    closed: Option<bool>,
+) -> Result<Option<Closing>, Error> {
+    let closure = match closed {
+        Some(false) => return Ok(None),
+        Some(true) => curve.closure_gap()?,
+        None => match curve.closure() {
+            Some(c) => c,
+            None => return Ok(None),
+        },
+    };
+    let [a, b] = [curve.domain().start, curve.domain().end];
+    Ok(Some(Closing {
+        start: rational_basis_span(curve.knots(), curve.weights(), a),
+        end: rational_basis_span(curve.knots(), curve.weights(), b),
+        merged: if closure.merged { closure.wrap } else { 0 },
+        note: closure.note(),
+    }))
 }
 
 /// The rules and the area form of a curve, shared by every level.
 pub(crate) struct Prepared {
     pub(crate) rules: Rules,
     pub(crate) area: Option<AreaForm>,
+    /// What to say with an enclosed area ([`Closure::note`](crate::measure::Closure::note)).
+    pub(crate) note: Option<String>,
 }
 
 impl Prepared {
-    pub(crate) fn of<const D: usize>(curve: &FuzzyCurve<D>, area: bool) -> Self {
+    /// The rules, and the area form when `area` asks for it (plane curves),
+    /// closed as [`closing`] says and oriented so that the crisp curve's
+    /// enclosed area is positive.
+    ///
+    /// # Errors
+    /// As [`closing`].
+    pub(crate) fn of<const D: usize>(
+        curve: &FuzzyCurve<D>,
+        area: bool,
+        closed: Option<bool>,
+    ) -> Result<Self, Error> {
         let crisp: Vec<f64> = curve.points().iter().flat_map(|p| p.crisp()).collect();
         let rules = rules(curve.knots(), curve.weights(), &crisp, D);
-        let area =
-            (area && D == 2).then(|| AreaForm::new(&rules, curve.points().len(), is_closed(curve)));
-        Prepared { rules, area }
+        let (mut form, mut note) = (None, None);
+        if area && D == 2 {
+            let closing = closing(curve, closed)?;
+            note = closing.as_ref().and_then(|c| c.note.clone());
+            let f = AreaForm::new(&rules, curve.points().len(), closing.as_ref());
+            form = Some(f.positive_for(&crisp));
+        }
+        Ok(Prepared {
+            rules,
+            area: form,
+            note,
+        })
+    }
+
+    /// The rules alone (no area).
+    pub(crate) fn rules_of<const D: usize>(curve: &FuzzyCurve<D>) -> Rules {
+        let crisp: Vec<f64> = curve.points().iter().flat_map(|p| p.crisp()).collect();
+        rules(curve.knots(), curve.weights(), &crisp, D)
     }
 }
 
@@ -346,8 +408,8 @@ fn leveled(
     boxes: &PerMembership<Vec<(f64, CutBox)>>,
     f: impl Fn(&CutBox) -> Option<Bracket> + Sync,
 ) -> PerMembership<Vec<(f64, Option<Bracket>)>> {
-    let one = |(alpha, cut): &(f64, CutBox)| (*alpha, f(cut).map(Ends::of));
-    let mut all: PerMembership<Vec<(f64, Option<Ends>)>> = PerMembership::from_fn(|m| {
+    let one = |(alpha, cut): &(f64, CutBox)| (*alpha, f(cut));
+    nested(PerMembership::from_fn(|m| {
         #[cfg(feature = "parallel")]
         {
             use rayon::prelude::*;
@@ -357,6 +419,19 @@ fn leveled(
         {
             boxes.get(m).iter().map(one).collect()
         }
+    }))
+}
+
+/// Brackets at every level and function tightened by nesting ([`nest`]).
+pub(crate) fn nested(
+    brackets: PerMembership<Vec<(f64, Option<Bracket>)>>,
+) -> PerMembership<Vec<(f64, Option<Bracket>)>> {
+    let mut all: PerMembership<Vec<(f64, Option<Ends>)>> = PerMembership::from_fn(|m| {
+        brackets
+            .get(m)
+            .iter()
+            .map(|(a, b)| (*a, b.map(Ends::of)))
+            .collect()
     });
     {
         let PerMembership {
@@ -405,7 +480,7 @@ impl<const D: usize> FuzzyCurve<D> {
     /// # Errors
     /// [`Error::OutOfRange`] for no levels or more than
     /// [`MAX_MEASURE_LEVELS`], more than [`MAX_MEASURE_PARAMETERS`]
-    /// parameters, or an order above 64 or 0; [`Error::MeasureAt`] for a
+    /// parameters × levels, or an order above 64 or 0; [`Error::MeasureAt`] for a
     /// parameter outside the domain.
     ///
     /// # Examples
@@ -424,7 +499,7 @@ impl<const D: usize> FuzzyCurve<D> {
     /// ```
     pub fn measure(&self, options: &MeasureOptions) -> Result<Measures, Error> {
         self.check_measure(options)?;
-        let prepared = Prepared::of(self, options.area);
+        let prepared = Prepared::of(self, options.area, options.closed)?;
         let boxes = self.cut_boxes(&options.levels);
         let finish = |l: PerMembership<Vec<(f64, Option<Bracket>)>>| {
             PerMembership::from_fn(|m| {
@@ -447,6 +522,7 @@ impl<const D: usize> FuzzyCurve<D> {
             let l = finish(leveled(&boxes, |cut| Some(area_bracket(form, cut))));
             AreaMeasure {
                 kind: form.kind,
+                note: prepared.note.clone(),
                 upper: l.upper,
                 primary: l.primary,
                 lower: l.lower,
@@ -472,15 +548,15 @@ impl<const D: usize> FuzzyCurve<D> {
                 place: none,
                 what: "levels",
                 value: options.levels.len() as f64,
-                range: "[1, 1001]",
+                range: "[1, 51]",
             });
         }
-        if options.at.len() > MAX_MEASURE_PARAMETERS {
+        if options.at.len() * options.levels.len() > MAX_MEASURE_PARAMETERS {
             return Err(Error::OutOfRange {
                 place: none,
-                what: "the number of parameters",
-                value: options.at.len() as f64,
-                range: "[0, 10000]",
+                what: "parameters × levels",
+                value: (options.at.len() * options.levels.len()) as f64,
+                range: "[0, 1000]",
             });
         }
         if options.order == 0 {
@@ -562,11 +638,9 @@ impl<const D: usize> FuzzyCurve<D> {
     #[must_use]
     pub fn length_bracket(&self, membership: Membership, alpha: Alpha) -> Option<Bracket> {
         let cut = CutBox::of(self.points(), membership, alpha)?;
-        Some(length_bracket(
-            &Prepared::of(self, false).rules,
-            &cut,
-            &|x| self.adaptive_length(x),
-        ))
+        Some(length_bracket(&Prepared::rules_of(self), &cut, &|x| {
+            self.adaptive_length(x)
+        }))
     }
 
     /// The exact range of the derivative of order `order` at `t`, per
@@ -615,20 +689,21 @@ impl<const D: usize> FuzzyCurve<D> {
 }
 
 impl FuzzyCurve<2> {
-    /// The area's bracket (under the curve, or enclosed where the curve is
-    /// closed: clamped, with equal first and last fuzzy points) over the box
-    /// under `membership` at `alpha`; `None` where the function has no cut.
+    /// The area's bracket (under the curve, or enclosed where the curve
+    /// closes: [`FuzzyCurve::closure`]) over the box under `membership` at
+    /// `alpha`; `None` where the function has no cut.
     #[must_use]
     pub fn area_bracket(&self, membership: Membership, alpha: Alpha) -> Option<Bracket> {
         let cut = CutBox::of(self.points(), membership, alpha)?;
-        let prepared = Prepared::of(self, true);
+        // Closed as the geometry says: no closure is asked, none refused.
+        let prepared = Prepared::of(self, true, None).ok()?;
         prepared.area.as_ref().map(|form| area_bracket(form, &cut))
     }
 
     /// Which area [`FuzzyCurve::area_bracket`] measures.
     #[must_use]
     pub fn area_kind(&self) -> AreaKind {
-        if is_closed(self) {
+        if self.closure().is_some() {
             AreaKind::Enclosed
         } else {
             AreaKind::Under

@@ -1,5 +1,7 @@
 //! Quantities measured on a fuzzy curve (docs/method.md §11): derivatives,
-//! tangent angle, arc length, area and curvature as type-2 fuzzy quantities.
+//! tangent angle, arc length, area and curvature as type-2 fuzzy quantities;
+//! and on a fuzzy surface of crisp plan (§14): the volumes above and below a
+//! plane, the plan area below it and the surface area.
 //!
 //! For a quantity `Q` of the control points (weights and knots crisp), a
 //! membership function `m` and a level `alpha`, the value is the interval
@@ -28,19 +30,30 @@
 
 mod area;
 mod bracket;
+mod closure;
 mod coefficients;
+mod crossing;
 mod curvature;
 mod cut_box;
 mod derivative;
 mod length;
 mod measures;
+mod plan;
+mod roots;
 mod rule;
+mod surface_area;
+mod surface_measures;
 mod vertices;
+mod volume;
 
 pub use area::{AreaKind, MAX_ENUMERATED_AREA_VARIABLES};
 pub use bracket::Bracket;
+pub use closure::{Closure, CLOSURE_TOLERANCE};
 pub use length::{LENGTH_MIN_TOLERANCE, MAX_ENUMERATED_LENGTH_VARIABLES};
 pub use measures::{
     AreaMeasure, AtMeasure, DerivativeLevel, Level, MeasureOptions, Measures, PartialLevel,
     PerMembership, MAX_MEASURE_LEVELS, MAX_MEASURE_PARAMETERS,
 };
+pub use surface_area::{MAX_ENUMERATED_SURFACE_AREA_VARIABLES, SURFACE_AREA_TOLERANCE};
+pub use surface_measures::{SurfaceMeasureOptions, SurfaceMeasures};
+pub use volume::VOLUME_TOLERANCE;

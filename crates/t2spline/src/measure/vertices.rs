@@ -13,8 +13,9 @@
 //! improved by local search (flip one choice while that raises the value),
 //! from the given starts and from the completion of each node expanded.
 
-use std::cmp::Ordering;
 use std::collections::BinaryHeap;
+
+use crate::heap_key::heap_ordered_by;
 
 /// A function of binary choices and an upper bound of it over completions.
 pub(crate) trait VertexProblem {
@@ -43,22 +44,7 @@ struct Node {
     fixed: Vec<Option<bool>>,
 }
 
-impl PartialEq for Node {
-    fn eq(&self, other: &Self) -> bool {
-        self.bound.total_cmp(&other.bound) == Ordering::Equal
-    }
-}
-impl Eq for Node {}
-impl PartialOrd for Node {
-    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
-        Some(self.cmp(other))
-    }
-}
-impl Ord for Node {
-    fn cmp(&self, other: &Self) -> Ordering {
-        self.bound.total_cmp(&other.bound)
-    }
-}
+heap_ordered_by!(Node, bound);
 
 /// Passes of local search at most.
 const PASSES: usize = 8;

@@ -20,7 +20,7 @@
 //! algorithms (`surface/operations.rs`).
 //!
 //! Fuzzy curves apply the same operations to their seven layers with shared
-//! knots and weights (`FuzzyCurve`, in [`crate::pipeline`]).
+//! knots and weights ([`FuzzyCurve`](crate::FuzzyCurve)).
 
 mod arc_length;
 pub use arc_length::LENGTH_TOLERANCE;

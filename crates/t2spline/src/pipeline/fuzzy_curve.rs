@@ -1,6 +1,7 @@
 //! Stage 1: the normal type-2 fuzzy rational B-spline curve (NT2FRBsC) and its
 //! seven layer curves (docs/method.md §6–§7, paper Eq. 5.1, Fig. 5.1).
 
+use crate::capability::Layered;
 use crate::error::Error;
 use crate::fuzzy::{Alpha, Axis, Height, Layer, Layers, Nt2Number, Nt2Point};
 use crate::nurbs::curve::{check_weights, rational_basis_span};
@@ -130,7 +131,7 @@ impl<const D: usize> FuzzyCurve<D> {
     /// The layer curve through one value of every control point (docs/method.md §6).
     #[must_use]
     pub fn layer_curve(&self, layer: Layer) -> NurbsCurve<D> {
-        self.with_control_points(self.points.iter().map(|p| p.layer(layer)).collect())
+        Layered::layer(self, layer)
     }
 
     /// The curve through the crisp values: the crisp rational B-spline.

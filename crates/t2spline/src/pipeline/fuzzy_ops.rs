@@ -22,6 +22,7 @@
 //! crisp)`, then `primary.left ← min(primary.left, lower.left)`, …); the tests
 //! check that nothing larger than rounding is ever repaired.
 
+use crate::capability::layered;
 use crate::error::{Error, Place};
 use crate::fuzzy::{Axis, Height, Layer, Layers, Nt2Number, Nt2Point};
 use crate::nurbs::degree_elevation::{check_elevation, elevate};
@@ -227,11 +228,7 @@ impl<const D: usize> FuzzyCurve<D> {
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn derivatives(&self, t: f64, order: usize) -> Result<Layers<Vec<[f64; D]>>, Error> {
-        self.domain().check(t)?;
-        crate::nurbs::derivatives::check_order(order)?;
-        Ok(Layers::from_fn(|l| {
-            self.layer_curve(l).derivatives_unchecked(t, order)
-        }))
+        layered::derivatives(self, t, order)
     }
 
     /// The point of every layer curve closest to `target` (see
@@ -266,11 +263,35 @@ impl<const D: usize> FuzzyCurve<D> {
     /// ```
     #[must_use]
     pub fn bounding_box(&self) -> BoundingBox<D> {
-        let [first, rest @ ..] = Layer::ALL;
-        rest.iter()
-            .fold(self.layer_curve(first).bounding_box(), |b, &l| {
-                b.union(self.layer_curve(l).bounding_box())
-            })
+        layered::bounding_box(self)
+    }
+
+    /// The curvature of every layer curve at `t` (see
+    /// [`NurbsCurve::curvature`](crate::NurbsCurve::curvature)).
+    ///
+    /// # Errors
+    /// [`Error::OutOfDomain`] if `t` is NaN or outside the domain;
+    /// [`Error::InLayer`] naming the first layer (in the order of
+    /// docs/method.md §1) whose first derivative vanishes at `t`, wrapping
+    /// [`Error::Singular`].
+    ///
+    /// # Examples
+    /// A quarter circle of radius 1 whose points spread radially: the layer
+    /// `upper_left` has radius 0.5, `upper_right` radius 2.
+    /// ```
+    /// # use t2spline::{FuzzyCurve, Layer, Nt2Number, Nt2Point};
+    /// let n = |c: f64| Nt2Number::try_new(c, [0.5 * c, 2.0 * c], [c, c], [c, c], 0.5);
+    /// let p = |x: f64, y: f64| Ok::<_, t2spline::Error>(Nt2Point::new([n(x)?, n(y)?]));
+    /// let w = std::f64::consts::FRAC_1_SQRT_2;
+    /// let c = FuzzyCurve::try_new(2, vec![p(1.0, 0.0)?, p(1.0, 1.0)?, p(0.0, 1.0)?], vec![1.0, w, 1.0], None)?;
+    /// let k = c.curvatures(0.3)?;
+    /// assert!((k[Layer::Crisp] - 1.0).abs() < 1e-14);
+    /// assert!((k[Layer::UpperLeft] - 2.0).abs() < 1e-14);
+    /// assert!((k[Layer::UpperRight] - 0.5).abs() < 1e-14);
+    /// # Ok::<(), t2spline::Error>(())
+    /// ```
+    pub fn curvatures(&self, t: f64) -> Result<Layers<f64>, Error> {
+        layered::curvatures(self, t)
     }
 }
 

@@ -2,6 +2,7 @@
 //! control points, its seven layer surfaces, and the surface operations on all
 //! seven layers at once.
 
+use crate::capability::{layered, Layered};
 use crate::error::{Error, Place};
 use crate::fuzzy::{Alpha, Axis, Height, Layer, Layers, Nt2Number, Nt2Point};
 use crate::nurbs::degree_elevation::{check_elevation, elevate};
@@ -137,6 +138,11 @@ impl<const D: usize> FuzzySurface<D> {
         self.knots(direction).domain()
     }
 
+    /// Checks `(u, v)` against the domain.
+    pub(crate) fn check(&self, u: f64, v: f64) -> Result<(), Error> {
+        check_params(&self.knots, u, v)
+    }
+
     /// A crisp surface with this surface's weights and knots through
     /// `control_points` (one per fuzzy control point, row by row).
     pub(crate) fn with_control_points(&self, control_points: Vec<[f64; D]>) -> NurbsSurface<D> {
@@ -146,7 +152,7 @@ impl<const D: usize> FuzzySurface<D> {
     /// The layer surface through one value of every control point (docs/method.md §8).
     #[must_use]
     pub fn layer_surface(&self, layer: Layer) -> NurbsSurface<D> {
-        self.with_control_points(self.points.iter().map(|p| p.layer(layer)).collect())
+        Layered::layer(self, layer)
     }
 
     /// The surface through the crisp values: the crisp rational B-spline surface.
@@ -210,9 +216,23 @@ impl<const D: usize> FuzzySurface<D> {
         target: [f64; D],
     ) -> Result<Layers<ClosestSurfacePoint<D>>, Error> {
         check_target(&target)?;
-        Ok(Layers::from_fn(|l| {
-            self.layer_surface(l).closest_point_searching(target, true)
-        }))
+        layered::closest(self, target)
+    }
+
+    /// The derivatives of every layer surface at `(u, v)` up to `order` (see
+    /// [`NurbsSurface::derivatives`]): `[layer][k][l]` = `∂ᵏ⁺ˡS/∂uᵏ∂vˡ`.
+    ///
+    /// # Errors
+    /// [`Error::InDirection`] wrapping [`Error::OutOfDomain`] if `u` or `v` is
+    /// NaN or outside its domain; [`Error::OutOfRange`] for an order above
+    /// [`MAX_DERIVATIVE_ORDER`](crate::nurbs::MAX_DERIVATIVE_ORDER).
+    pub fn derivatives(
+        &self,
+        u: f64,
+        v: f64,
+        order: usize,
+    ) -> Result<Layers<Vec<Vec<[f64; D]>>>, Error> {
+        layered::derivatives(self, [u, v], order)
     }
 
     /// The bounding box of all seven layer surfaces (see
@@ -237,11 +257,7 @@ impl<const D: usize> FuzzySurface<D> {
     /// ```
     #[must_use]
     pub fn bounding_box(&self) -> BoundingBox<D> {
-        let [first, rest @ ..] = Layer::ALL;
-        rest.iter()
-            .fold(self.layer_surface(first).bounding_box(), |b, &l| {
-                b.union(self.layer_surface(l).bounding_box())
-            })
+        layered::bounding_box(self)
     }
 
     /// Runs stages 2–4 of Algorithm 1.1 on the control net at level `alpha`
@@ -433,14 +449,7 @@ impl FuzzySurface<3> {
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn curvatures(&self, u: f64, v: f64) -> Result<Layers<SurfaceCurvature>, Error> {
-        check_params(&self.knots, u, v)?;
-        let mut values = Vec::with_capacity(Layer::ALL.len());
-        for layer in Layer::ALL {
-            let c = self.layer_surface(layer).curvature_unchecked(u, v);
-            values.push(c.map_err(|e| e.in_layer(layer))?);
-        }
-        // Seven values, one per layer in order.
-        Ok(Layers::from_fn(|l| values[l.index()]))
+        layered::curvatures(self, [u, v])
     }
 }
 
@@ -483,7 +492,7 @@ mod tests {
     }
 
     proptest! {
-        #![proptest_config(strategies::cases(4, 16))]
+        #![proptest_config(strategies::cases(4, 8))]
 
         /// The layer-wise closest points are those of the layer surfaces; the
         /// box is the union of the layer surfaces' boxes, spanned by the two

@@ -9,12 +9,14 @@
 //! same for surfaces (docs/method.md §8), with the same per-number stages, and measure
 //! the [`SurfaceDistance`].
 
+mod capabilities;
 mod distance;
 mod fuzzy_curve;
 mod fuzzy_ops;
 mod fuzzy_surface;
 pub(crate) mod point_stages;
 mod solution;
+mod stages;
 mod surface_distance;
 mod surface_solution;
 
@@ -23,5 +25,6 @@ pub use fuzzy_curve::FuzzyCurve;
 pub use fuzzy_surface::FuzzySurface;
 pub use point_stages::Side;
 pub use solution::Solution;
+pub use stages::Stages;
 pub use surface_distance::SurfaceDistance;
 pub use surface_solution::SurfaceSolution;

@@ -1,11 +1,11 @@
 //! Stages 2–4 of Algorithm 1.1 (docs/method.md §7): alpha-cut, type reduction and
 //! defuzzification of the control points, and the curves through them.
 
-use crate::fuzzy::{Alpha, AlphaCut, Layer};
+use crate::fuzzy::Layer;
 use crate::nurbs::NurbsCurve;
-use crate::pipeline::point_stages::{PointStages, Side};
+use crate::pipeline::point_stages::Side;
+use crate::pipeline::stages::Stages;
 use crate::pipeline::{Distance, FuzzyCurve};
-use crate::reduction::{Reduced, TypeReduction};
 
 /// The four stages of Algorithm 1.1 at one level alpha (docs/method.md §7):
 ///
@@ -16,7 +16,8 @@ use crate::reduction::{Reduced, TypeReduction};
 /// 4. **D-TR-α-NT2FRBsC** — defuzzified control points and the crisp solution
 ///    curve, compared with the crisp curve (Fig. 5.4).
 ///
-/// Stages 3–4 reduce each number by the solution's [`TypeReduction`] (docs/method.md
+/// Stages 3–4 reduce each number by the solution's
+/// [`TypeReduction`](crate::TypeReduction) (docs/method.md
 /// §9; [`FuzzyCurve::solve`] takes the paper's, [`FuzzyCurve::solve_with`]
 /// any): with the paper's, stage 3 is the triangle `(left, crisp, right)`;
 /// with the others, `[left, right]` is a centroid interval, which need not
@@ -38,108 +39,46 @@ use crate::reduction::{Reduced, TypeReduction};
 /// assert!(s.distance().max < 1e-12);
 /// # Ok::<(), t2spline::Error>(())
 /// ```
-#[derive(Clone, Debug, PartialEq)]
-pub struct Solution<const D: usize> {
-    curve: FuzzyCurve<D>,
-    stages: PointStages<D>,
-}
+/// The accessors of every stage are those of [`Stages`], written once for
+/// curves and surfaces; this type adds the names of the curves.
+pub type Solution<const D: usize> = Stages<FuzzyCurve<D>, D>;
 
 impl<const D: usize> Solution<D> {
-    pub(crate) fn new(curve: FuzzyCurve<D>, alpha: Alpha, method: TypeReduction) -> Self {
-        let stages = PointStages::new(curve.points(), alpha, method);
-        Solution { curve, stages }
-    }
-
-    /// The per-number stages of the control points.
-    pub(crate) fn stages(&self) -> &PointStages<D> {
-        &self.stages
-    }
-
-    /// The level alpha of the cut (stage 2); stages 3–4 use it only with
-    /// [`TypeReduction::Paper`].
-    #[must_use]
-    pub fn alpha(&self) -> Alpha {
-        self.stages.alpha()
-    }
-
-    /// The type reduction of stages 3–4 (docs/method.md §9).
-    #[must_use]
-    pub fn type_reduction(&self) -> TypeReduction {
-        self.stages.type_reduction()
-    }
-
     /// Stage 1: the fuzzy curve.
     #[must_use]
     pub fn fuzzy_curve(&self) -> &FuzzyCurve<D> {
-        &self.curve
-    }
-
-    /// Stage 2: the alpha-cut of every control point, per coordinate.
-    #[must_use]
-    pub fn alpha_cut_points(&self) -> &[[AlphaCut; D]] {
-        self.stages.alpha_cut_points()
-    }
-
-    /// Stage 2: the control points of one alpha-cut layer; `None` for a lower
-    /// layer when some number is cut above its lower height (docs/method.md §2).
-    #[must_use]
-    pub fn alpha_cut_layer(&self, layer: Layer) -> Option<Vec<[f64; D]>> {
-        self.stages.alpha_cut_layer(layer)
+        self.fuzzy()
     }
 
     /// Stage 2: the curve through one alpha-cut layer, when that layer exists
     /// for every control point.
     #[must_use]
     pub fn alpha_cut_curve(&self, layer: Layer) -> Option<NurbsCurve<D>> {
-        self.alpha_cut_layer(layer)
-            .map(|points| self.curve.with_control_points(points))
-    }
-
-    /// Stage 3: every coordinate of every control point reduced by the
-    /// solution's [`TypeReduction`] ([`Nt2Number::reduce`](crate::Nt2Number::reduce)):
-    /// for the paper's, the feet of the type-reduced triangle and its
-    /// centroid; for the others, `left`/`right` need not enclose `crisp`.
-    #[must_use]
-    pub fn type_reduced_points(&self) -> &[[Reduced; D]] {
-        self.stages.type_reduced_points()
-    }
-
-    /// Stage 3: the left or right type-reduced control points.
-    #[must_use]
-    pub fn type_reduced_side(&self, side: Side) -> Vec<[f64; D]> {
-        self.stages.type_reduced_side(side)
+        self.alpha_cut(layer)
     }
 
     /// Stage 3: the curve through the left or right type-reduced control points.
     #[must_use]
     pub fn type_reduced_curve(&self, side: Side) -> NurbsCurve<D> {
-        self.curve.with_control_points(self.type_reduced_side(side))
-    }
-
-    /// Stage 4: the defuzzified control points.
-    #[must_use]
-    pub fn defuzzified_points(&self) -> &[[f64; D]] {
-        self.stages.defuzzified_points()
+        self.type_reduced(side)
     }
 
     /// Stage 4: the crisp type-2 solution curve through the defuzzified points.
     #[must_use]
     pub fn defuzzified_curve(&self) -> NurbsCurve<D> {
-        self.curve
-            .with_control_points(self.stages.defuzzified_points().to_vec())
+        self.defuzzified()
     }
 
     /// The crisp curve through the crisp control points.
     #[must_use]
     pub fn crisp_curve(&self) -> NurbsCurve<D> {
-        self.curve.crisp_curve()
+        self.crisp()
     }
 
     /// The distance between the crisp and the defuzzified curve at equal `t`
     /// over the whole domain (docs/method.md §7); see [`Distance`].
     #[must_use]
     pub fn distance(&self) -> Distance {
-        let difference = self.stages.offsets(self.curve.points());
-        Distance::of_curve(&self.curve.with_control_points(difference))
+        Distance::of_curve(&self.offsets())
     }
 }

@@ -12,19 +12,13 @@
 //! Both are linear in alpha, so at a parameter `t` the box corners
 //! `Σ Rᵢ(t)·leftᵢ(alpha)` are again linear in alpha with the slopes
 //! `Σ Rᵢ(t)·slopeᵢ`, and the level at which a value enters the box has a
-//! closed form ([`CutLines::grade`]).
+//! closed form (`set/certify.rs` bounds it over whole spans).
 
 use crate::fuzzy::{Membership, Nt2Point};
 
 /// The three membership functions, in the order of every array of the set view.
 pub const MEMBERSHIPS: [Membership; 3] =
     [Membership::Upper, Membership::Primary, Membership::Lower];
-
-/// The top and the two sides of up to three coordinates.
-pub(crate) const SIDES: usize = 7;
-
-/// The values of the functions of [`CutLines::sides`] at one parameter.
-pub(crate) type Sides = [f64; SIDES];
 
 /// The cut ends of one coordinate of one control point, under one membership
 /// function, as lines in alpha.
@@ -100,35 +94,6 @@ impl<const D: usize> CutLines<D> {
             .iter()
             .fold(1.0_f64, |m, &h| m.min(h))
     }
-
-    /// The level up to which the box at this parameter holds `p`, capped by
-    /// `top` (negative when the box at alpha 0 does not hold `p`):
-    ///
-    /// ```text
-    /// grade = min( top, min over c of (p_c − A_c)/G_c, (B_c − p_c)/G'_c )
-    /// A_c = Σ Rᵢ foot_left,  G_c = Σ Rᵢ slope_left,  B_c, G'_c likewise on the right
-    /// ```
-    /// A zero slope (a crisp side) admits every level when `p` is on the
-    /// inside of that side and none otherwise (a negative grade).
-    pub(crate) fn grade(&self, first: usize, basis: &[f64], top: f64, p: &[f64; D]) -> f64 {
-        self.sides(first, basis, top, p)
-            .into_iter()
-            .fold(f64::INFINITY, f64::min)
-    }
-
-    /// The functions whose minimum is [`CutLines::grade`]: `top`, then per
-    /// coordinate the levels admitted by its left and by its right side
-    /// (`+∞` past the coordinates there are).
-    pub(crate) fn sides(&self, first: usize, basis: &[f64], top: f64, p: &[f64; D]) -> Sides {
-        let sums = self.sums(first, basis);
-        let mut out = [f64::INFINITY; SIDES];
-        out[0] = top;
-        for (c, (s, &x)) in sums.iter().zip(p).enumerate().take((SIDES - 1) / 2) {
-            out[1 + 2 * c] = level(x - s[0], s[1]);
-            out[2 + 2 * c] = level(s[2] - x, s[3]);
-        }
-        out
-    }
 }
 
 impl<const D: usize> CutLines<D> {
@@ -149,17 +114,32 @@ impl<const D: usize> CutLines<D> {
     }
 }
 
-/// The largest alpha with `alpha · slope ≤ room`: `room/slope`; for a zero
-/// slope (a crisp side) `+∞` on its inside, and outside a negative number
-/// that grows towards 0 with `room`, `1e12·room/(1 + |room|)`, rather than
-/// `−∞`: the searches for the sup compare values, and a flat `−∞` would hide
-/// on which side the admitted parameters lie.
-fn level(room: f64, slope: f64) -> f64 {
-    if slope > 0.0 {
-        room / slope
-    } else if room >= 0.0 {
-        f64::INFINITY
-    } else {
-        1e12 * room / (1.0 + room.abs())
+/// The slack of "on the set", relative to the job's extent: a point counts
+/// as in a box when it lies within `RELATIVE_SLACK · E` of it in every
+/// coordinate (docs/set.md, "On the set"). Every part of the set view
+/// (grades, regions, sections, of curves and surfaces) uses this one slack.
+pub const RELATIVE_SLACK: f64 = 1e-12;
+
+/// The slack of the set view of `points` ([`RELATIVE_SLACK`] of their
+/// extent): `E` is the largest side of the box of every upper cut at level 0,
+/// or 1/16 of the largest magnitude of a foot if that is larger (a computed
+/// point far from the origin is rounded by about 2⁻⁵³ of its magnitude).
+pub(crate) fn slack<const D: usize>(points: &[Nt2Point<D>]) -> f64 {
+    let mut lo = [f64::INFINITY; D];
+    let mut hi = [f64::NEG_INFINITY; D];
+    let mut magnitude = 0.0_f64;
+    for p in points {
+        for (c, x) in p.coords().iter().enumerate() {
+            let u = x.upper();
+            lo[c] = lo[c].min(u.left());
+            hi[c] = hi[c].max(u.right());
+            magnitude = magnitude.max(u.left().abs()).max(u.right().abs());
+        }
     }
+    let side = lo
+        .iter()
+        .zip(&hi)
+        .map(|(l, h)| h - l)
+        .fold(0.0_f64, f64::max);
+    RELATIVE_SLACK * side.max(magnitude / 16.0)
 }

@@ -26,18 +26,34 @@
 //! - [`FuzzySurface::membership`](crate::FuzzySurface::membership) and
 //!   [`FuzzySurface::sections`](crate::FuzzySurface::sections): the same for
 //!   surfaces (the fuzzy height of a terrain at a location).
+//! - [`FuzzySurface::envelope`](crate::FuzzySurface::envelope): the least and
+//!   greatest height of a surface above every cell of a plan grid.
+//! - [`FuzzySurface::contour`](crate::FuzzySurface::contour): the plan
+//!   points where a surface can cross a height, as polygons.
 
+pub(crate) mod bernstein;
+mod certify;
+mod contour;
 mod cut_lines;
+mod envelope;
 mod grid;
 pub(crate) mod membership;
 mod polygon;
 pub(crate) mod region;
 mod scan;
 mod section;
-mod surface;
+pub(crate) mod surface;
 mod sweep;
 
-pub use cut_lines::MEMBERSHIPS;
+pub use certify::GRADE_TOLERANCE;
+pub use contour::{
+    Contour, ContourLevel, CONTOUR_CELLS_PER_SPAN, MAX_CONTOUR_CELLS, MIN_CONTOUR_CELLS,
+};
+pub use cut_lines::{MEMBERSHIPS, RELATIVE_SLACK};
+pub use envelope::{
+    Envelope, EnvelopeBounds, EnvelopeLevel, PlanGrid, MAX_ENVELOPE_VALUES,
+    MAX_FUZZY_ENVELOPE_CELLS,
+};
 pub use grid::{MembershipGrid, MAX_GRID_CELLS};
 pub use membership::Grades;
 pub use polygon::{Polygon, Region};

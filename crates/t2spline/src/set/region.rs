@@ -136,14 +136,8 @@ impl<const D: usize> FuzzyCurve<D> {
                 count: D,
             });
         }
-        let tolerance = tolerance.unwrap_or_else(|| self.default_tolerance());
+        let tolerance = self.checked_tolerance(axes, tolerance)?;
         let least = self.least_tolerance(axes);
-        if !(tolerance.is_finite() && tolerance > 0.0 && tolerance >= least) {
-            return Err(Error::Tolerance {
-                value: tolerance,
-                least,
-            });
-        }
         let quarter = 0.25 * tolerance;
         let sweep =
             Sweep::of(self, membership, alpha.get(), axes, quarter).map_err(|TooManyBoxes| {
@@ -172,6 +166,41 @@ impl<const D: usize> FuzzyCurve<D> {
         let union = union_tree(leaves);
         let polygons = union.into_iter().filter_map(Polygon::from_rings).collect();
         Ok(Some(Region::new(polygons, tolerance)))
+    }
+
+    /// `tolerance`, or the default, checked for an outline in the plane of
+    /// `axes`: positive, at least [`FuzzyCurve::least_tolerance`], and at
+    /// most the box that holds every region (its largest side, or where
+    /// that box is a point the largest coordinate's magnitude).
+    pub(crate) fn checked_tolerance(
+        &self,
+        axes: [usize; 2],
+        tolerance: Option<f64>,
+    ) -> Result<f64, Error> {
+        let tolerance = tolerance.unwrap_or_else(|| self.default_tolerance());
+        let least = self.least_tolerance(axes);
+        if !(tolerance.is_finite() && tolerance > 0.0 && tolerance >= least) {
+            return Err(Error::Tolerance {
+                value: tolerance,
+                least,
+            });
+        }
+        let extent = self.footprint_extent(axes);
+        let most = if extent > 0.0 {
+            extent
+        } else {
+            self.points()
+                .iter()
+                .flat_map(|p| axes.map(|c| p.coords()[c].crisp().abs()))
+                .fold(f64::MIN_POSITIVE, f64::max)
+        };
+        if tolerance > most {
+            return Err(Error::ToleranceTooCoarse {
+                value: tolerance,
+                most,
+            });
+        }
+        Ok(tolerance)
     }
 
     /// The finest tolerance of an outline in the plane of `axes`:
@@ -203,7 +232,7 @@ impl<const D: usize> FuzzyCurve<D> {
 const LEAF: usize = 16;
 
 /// OGC-valid output (holes apart from their exterior, no self-touching rings).
-fn overlay_options() -> OverlayOptions<f64> {
+pub(crate) fn overlay_options() -> OverlayOptions<f64> {
     OverlayOptions {
         ogc: true,
         ..OverlayOptions::default()

@@ -42,7 +42,10 @@ impl FuzzyCurve<2> {
     /// has no cut at `alpha` anywhere. Interval ends are within `tolerance`
     /// (`None`: the [default](FuzzyCurve::default_tolerance)): the region's
     /// sampled sweep (as for [`FuzzyCurve::region`], not grown) is cut by the
-    /// line, and intervals closer than half the tolerance are joined.
+    /// line, and intervals closer than half the tolerance are joined. A line
+    /// within the set view's slack of the region
+    /// ([`RELATIVE_SLACK`](crate::set::RELATIVE_SLACK) of the job's extent)
+    /// meets it, as [`FuzzyCurve::membership`] counts such points in.
     ///
     /// # Errors
     /// [`Error::QueryPoint`] if `x0` is not finite; [`Error::Tolerance`] as
@@ -68,7 +71,7 @@ impl FuzzyCurve<2> {
         tolerance: Option<f64>,
     ) -> Result<Option<Vec<[f64; 2]>>, Error> {
         crate::set::membership::check_point(0, &[x0])?;
-        let tolerance = self.checked_tolerance(tolerance)?;
+        let tolerance = self.checked_tolerance([0, 1], tolerance)?;
         let sweep = Sweep::of(self, membership, alpha.get(), [0, 1], 0.25 * tolerance).map_err(
             |TooManyBoxes| Error::Tolerance {
                 value: tolerance,
@@ -78,13 +81,14 @@ impl FuzzyCurve<2> {
         if sweep.runs.is_empty() {
             return Ok(None);
         }
+        let slack = crate::set::cut_lines::slack(self.points());
         let mut intervals = Vec::new();
         for run in &sweep.runs {
             if run.len() == 1 {
-                intervals.extend(cut(&run[0], &run[0], x0));
+                intervals.extend(cut(&run[0], &run[0], x0, slack));
             }
             for w in run.windows(2) {
-                intervals.extend(cut(&w[0], &w[1], x0));
+                intervals.extend(cut(&w[0], &w[1], x0, slack));
             }
         }
         Ok(Some(join(intervals, 0.5 * tolerance)))
@@ -114,25 +118,22 @@ impl FuzzyCurve<2> {
             })
             .collect()
     }
-
-    /// `tolerance`, or the default, checked as for regions (the same least).
-    fn checked_tolerance(&self, tolerance: Option<f64>) -> Result<f64, Error> {
-        let tolerance = tolerance.unwrap_or_else(|| self.default_tolerance());
-        let least = self.least_tolerance([0, 1]);
-        if tolerance.is_finite() && tolerance > 0.0 && tolerance >= least {
-            Ok(tolerance)
-        } else {
-            Err(Error::Tolerance {
-                value: tolerance,
-                least,
-            })
-        }
-    }
 }
 
-/// The interval where the line `x = x0` meets the convex hull of two boxes.
-fn cut(b0: &PlaneBox, b1: &PlaneBox, x0: f64) -> Option<[f64; 2]> {
+/// The interval where the line `x = x0` meets the convex hull of two boxes;
+/// a line within `slack` of the hull (the set view's slack) meets it at its
+/// nearest side, as [`FuzzyCurve::membership`] counts such a point in.
+fn cut(b0: &PlaneBox, b1: &PlaneBox, x0: f64, slack: f64) -> Option<[f64; 2]> {
     let hull = hull_of(b0, b1, 0.0);
+    let (least, most) = hull
+        .iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, m), v| {
+            (l.min(v[0]), m.max(v[0]))
+        });
+    if !(least - slack <= x0 && x0 <= most + slack) {
+        return None;
+    }
+    let x0 = x0.clamp(least, most);
     let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
     let n = hull.len();
     for i in 0..n {

@@ -7,15 +7,19 @@ use crate::fuzzy::Alpha;
 use crate::nurbs::basis::basis_functions;
 use crate::nurbs::surface::patches::{patch_min, Patch};
 use crate::nurbs::Direction;
+use crate::nurbs::NurbsSurface;
 use crate::pipeline::FuzzySurface;
-use crate::set::cut_lines::{CutLines, MEMBERSHIPS};
-use crate::set::membership::{check_point, Grades};
+use crate::set::bernstein::bezier_matrix;
+use crate::set::certify::{Form, Work, GRADE_TOLERANCE};
+use crate::set::cut_lines::{slack, CutLines, MEMBERSHIPS};
+use crate::set::membership::{check_point, sup_of, Grades};
 use crate::set::section::SectionLevel;
 
 /// Scan cells per patch and direction for the station's heights.
 const STATION_STEPS: usize = 48;
-/// Bisections of an interval end of a station section.
-const END_BISECTIONS: usize = 48;
+/// Bisections of an interval end of a station section: from a bracket of
+/// 1/24 of the height to about 1e-11 of it.
+const END_BISECTIONS: usize = 32;
 
 /// One patch of a surface under one membership function: the lines of the
 /// `ku·kv` control points acting there (row by row), their top and their box
@@ -32,13 +36,17 @@ pub(crate) struct SurfaceGrader<'a, const D: usize> {
     surface: &'a FuzzySurface<D>,
     /// Per function, per patch.
     patches: [Vec<PatchLines<D>>; 3],
+    /// Per function, per patch: the Bézier forms the grades are certified on.
+    forms: [Vec<Form<D>>; 3],
+    /// The slack of "on the set" ([`slack`]).
+    slack: f64,
 }
 
 impl<'a, const D: usize> SurfaceGrader<'a, D> {
     pub(crate) fn new(surface: &'a FuzzySurface<D>) -> Self {
         let crisp = surface.crisp_surface();
         let ([ku, kv], nv) = (crisp.order(), surface.shape()[1]);
-        let patches = MEMBERSHIPS.map(|m| {
+        let patches: [Vec<PatchLines<D>>; 3] = MEMBERSHIPS.map(|m| {
             let all = CutLines::of(surface.points(), m);
             crisp
                 .patches()
@@ -71,7 +79,27 @@ impl<'a, const D: usize> SurfaceGrader<'a, D> {
                 })
                 .collect()
         });
-        SurfaceGrader { surface, patches }
+        let weights = surface.weights();
+        let forms = patches.each_ref().map(|patches| {
+            patches
+                .iter()
+                .map(|pl| {
+                    let [su, sv] = pl.patch.0;
+                    let mu = bezier_matrix(surface.knots(Direction::U).as_slice(), ku - 1, su);
+                    let mv = bezier_matrix(surface.knots(Direction::V).as_slice(), kv - 1, sv);
+                    let w: Vec<f64> = (su + 1 - ku..=su)
+                        .flat_map(|i| (sv + 1 - kv..=sv).map(move |j| weights[i * nv + j]))
+                        .collect();
+                    Form::new([&mu, &mv], [ku, kv], &w, &pl.lines.ends, pl.top)
+                })
+                .collect()
+        });
+        SurfaceGrader {
+            surface,
+            patches,
+            forms,
+            slack: slack(surface.points()),
+        }
     }
 
     /// The `ku·kv` rational basis functions of a patch at `(u, v)`, row by row.
@@ -112,86 +140,43 @@ impl<'a, const D: usize> SurfaceGrader<'a, D> {
         }
     }
 
-    /// The grade of `p` at `(u, v)` of a patch under its lines.
-    fn grade_at(&self, pl: &PatchLines<D>, uv: [f64; 2], p: &[f64; D]) -> f64 {
-        let mut b = Vec::new();
-        self.basis(&pl.patch, uv, &mut b);
-        pl.lines.grade(0, &b, pl.top, p)
+    /// The largest level at which function `k` has a cut on some patch.
+    pub(crate) fn top(&self, k: usize) -> f64 {
+        self.patches[k]
+            .iter()
+            .map(|pl| pl.top)
+            .fold(f64::NEG_INFINITY, f64::max)
     }
 
     /// The grades of `p`.
     pub(crate) fn grades(&self, p: &[f64; D]) -> Grades {
-        let mut best = [0.0_f64; 3];
-        for (k, patches) in self.patches.iter().enumerate() {
-            for pl in patches {
-                // The slack of the crisp coordinates (below) lets a point on
-                // the hull's edge, rounded out of it, count.
-                let slack = 1e-9 * pl.hull.iter().map(|h| h[1] - h[0]).fold(0.0_f64, f64::max);
-                if pl.top <= best[k]
-                    || !pl
-                        .hull
-                        .iter()
-                        .zip(p)
-                        .all(|(h, &x)| h[0] - slack <= x && x <= h[1] + slack)
-                {
-                    continue;
-                }
-                let floor = best[k];
-                let (neg, _) = patch_min(&pl.patch, |uv| -self.grade_at(pl, uv, p), |v| -v > floor);
-                best[k] = best[k].max(-neg);
-                best[k] = best[k].max(self.crisp_axes_grade(pl, p));
-            }
-        }
-        Grades::ordered(best)
+        self.grades_with(p, &mut Work::default())
     }
 
-    /// The grade of `p` where the surface passes through it in the
-    /// coordinates whose cuts have no width on the patch (crisp positions, as
-    /// in a terrain): there the box is a point in those coordinates, so the
-    /// grade is positive only on that set of parameters, which a scan of the
-    /// grade cannot find. The parameters nearest `p` in those coordinates are
-    /// searched instead; within 1e-9 of the patch's size they count as
-    /// passing through `p`, and the grade of the other coordinates there is
-    /// returned (0 when no coordinate is crisp or none is near).
-    fn crisp_axes_grade(&self, pl: &PatchLines<D>, p: &[f64; D]) -> f64 {
-        let crisp: [bool; D] = std::array::from_fn(|c| {
-            pl.lines.ends.iter().all(|e| {
-                e[c].foot_left == e[c].foot_right
-                    && e[c].slope_left == 0.0
-                    && e[c].slope_right == 0.0
-            })
-        });
-        if !crisp.contains(&true) {
-            return 0.0;
-        }
-        let size = pl
-            .hull
-            .iter()
-            .map(|h| h[1] - h[0])
-            .fold(0.0_f64, f64::max)
-            .max(f64::MIN_POSITIVE);
-        let mut basis = Vec::new();
-        let off = |uv: [f64; 2]| {
-            let mut b = Vec::new();
-            self.basis(&pl.patch, uv, &mut b);
-            let sums = pl.lines.sums(0, &b);
-            sums.iter()
-                .zip(p)
-                .zip(&crisp)
-                .filter(|(_, &c)| c)
-                .map(|((s, &x), _)| (s[0] - x) * (s[0] - x))
-                .sum::<f64>()
-                .sqrt()
-        };
-        let (d, uv) = patch_min(&pl.patch, off, |_| true);
-        if d.is_nan() || d > 1e-9 * size {
-            return 0.0;
-        }
-        self.basis(&pl.patch, uv, &mut basis);
-        let sums = pl.lines.sums(0, &basis);
-        // `p` moved onto the surface in its crisp coordinates.
-        let on: [f64; D] = std::array::from_fn(|c| if crisp[c] { sums[c][0] } else { p[c] });
-        pl.lines.grade(0, &basis, pl.top, &on).max(0.0)
+    /// The grades of `p`, searched in the buffers `work`.
+    pub(crate) fn grades_with(&self, p: &[f64; D], work: &mut Work) -> Grades {
+        Grades::ordered(
+            self.forms
+                .each_ref()
+                .map(|f| sup_of(f, p, self.slack, [0.0, 0.0, f64::INFINITY], work)),
+        )
+    }
+
+    /// Whether `p` is in the region of function `k` at `alpha`: a grade of
+    /// at least `alpha` less [`GRADE_TOLERANCE`] is reached at some `(u, v)`,
+    /// or the certified bound comes within the tolerance of it; at level 0,
+    /// whether `p` is within the slack of the support. Cells whose bound is
+    /// below that level are dropped without a search.
+    fn reaches(&self, k: usize, p: &[f64; D], alpha: f64, work: &mut Work) -> bool {
+        let goal = alpha - GRADE_TOLERANCE;
+        let found = sup_of(
+            &self.forms[k],
+            p,
+            self.slack,
+            [f64::NEG_INFINITY, goal, goal],
+            work,
+        );
+        found >= goal
     }
 }
 
@@ -199,12 +184,14 @@ impl<const D: usize> FuzzySurface<D> {
     /// The membership grades of the point `p` in the fuzzy surface as a set
     /// (docs/method.md §10): for each membership function, the largest level
     /// at which some surface with control points inside their cuts passes
-    /// through `p`. The sup over `(u, v)` is found patch by patch: patches
-    /// whose control points' box at level 0 misses `p` are skipped, the rest
-    /// scanned on a 17 × 17 grid with every local peak refined by Nelder–Mead.
-    /// Coordinates whose cuts have no width (crisp positions, as in a
-    /// terrain) are met where the surface passes within 1e-9 of the patch's
-    /// size of `p` in them; the grade of the other coordinates is taken there.
+    /// through `p` (within the set view's slack,
+    /// [`RELATIVE_SLACK`](crate::set::RELATIVE_SLACK) of the job's extent).
+    /// The sup over `(u, v)` is certified as for curves
+    /// ([`FuzzyCurve::membership`](crate::FuzzyCurve::membership)): a branch
+    /// and bound over the span rectangles on the Bernstein forms of the cut
+    /// ends, the upper bound returned within
+    /// [`GRADE_TOLERANCE`](crate::set::GRADE_TOLERANCE) of the lower;
+    /// patches whose control points' box at level 0 misses `p` are skipped.
     ///
     /// # Errors
     /// [`Error::QueryPoint`] if a coordinate of `p` is NaN or infinite.
@@ -225,6 +212,12 @@ impl<const D: usize> FuzzySurface<D> {
         Ok(SurfaceGrader::new(self).grades(p))
     }
 
+    /// The slack of "on the set", as [`FuzzyCurve::set_slack`](crate::FuzzyCurve::set_slack).
+    #[must_use]
+    pub fn set_slack(&self) -> f64 {
+        slack(self.points())
+    }
+
     /// [`FuzzySurface::membership`] of many points, sharing the preparation.
     ///
     /// # Errors
@@ -234,7 +227,11 @@ impl<const D: usize> FuzzySurface<D> {
             check_point(i, p)?;
         }
         let grader = SurfaceGrader::new(self);
-        Ok(points.iter().map(|p| grader.grades(p)).collect())
+        let mut work = Work::default();
+        Ok(points
+            .iter()
+            .map(|p| grader.grades_with(p, &mut work))
+            .collect())
     }
 }
 
@@ -259,12 +256,22 @@ impl FuzzySurface<3> {
         levels: &[Alpha],
     ) -> Result<Vec<SectionLevel>, Error> {
         check_point(0, &[x0, y0])?;
-        let grader = SurfaceGrader::new(self);
+        Ok(self.sections_with(&SurfaceGrader::new(self), [x0, y0], levels))
+    }
+
+    /// [`FuzzySurface::sections`] at a finite location with a grader made
+    /// once for many locations.
+    pub(crate) fn sections_with(
+        &self,
+        grader: &SurfaceGrader<'_, 3>,
+        [x0, y0]: [f64; 2],
+        levels: &[Alpha],
+    ) -> Vec<SectionLevel> {
         let inverses = self.crisp_through([x0, y0]);
         let mut out = Vec::with_capacity(levels.len());
         for &alpha in levels {
             let [upper, primary, lower] =
-                [0, 1, 2].map(|k| self.station(&grader, &inverses, k, [x0, y0], alpha.get()));
+                [0, 1, 2].map(|k| self.station(grader, &inverses, k, [x0, y0], alpha.get()));
             out.push(SectionLevel {
                 alpha: alpha.get(),
                 upper,
@@ -272,35 +279,22 @@ impl FuzzySurface<3> {
                 lower,
             });
         }
-        Ok(out)
+        out
     }
 
     /// Per patch (in the order of `patches()`), the parameters where the
     /// crisp surface passes through the vertical line `(x0, y0)`: the
     /// smallest horizontal distance found on the patch (a 17 × 17 scan refined
-    /// by Nelder–Mead), kept if it is below 1e-9 of the surface's size.
+    /// by Nelder–Mead), kept if it is within the set view's slack.
     fn crisp_through(&self, [x0, y0]: [f64; 2]) -> Vec<Vec<[f64; 2]>> {
         let crisp = self.crisp_surface();
-        // The size of the control points' upper cuts at level 0.
-        let size = (0..3)
-            .map(|c| {
-                let (lo, hi) =
-                    self.points()
-                        .iter()
-                        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
-                            let u = p.coords()[c].upper();
-                            (lo.min(u.left()), hi.max(u.right()))
-                        });
-                hi - lo
-            })
-            .fold(0.0_f64, f64::max)
-            .max(f64::MIN_POSITIVE);
+        // Within the set view's slack, the line is met.
+        let slack = slack(self.points());
         crisp
             .patches()
             .iter()
             .map(|patch| {
                 let b = crisp.patch_box(patch);
-                let slack = 1e-9 * size;
                 if !(b.min[0] - slack <= x0
                     && x0 <= b.max[0] + slack
                     && b.min[1] - slack <= y0
@@ -314,7 +308,10 @@ impl FuzzySurface<3> {
                         .map_or(f64::INFINITY, |p| (p[0] - x0).hypot(p[1] - y0))
                 };
                 let (d, uv) = patch_min(patch, off, |_| true);
-                if d <= 1e-9 * size {
+                // The search ends near the point; Newton's method on the
+                // plan map takes it to the precision the slack asks for.
+                let uv = polish(&crisp, patch, uv, [x0, y0]);
+                if off(uv).min(d) <= slack {
                     vec![uv]
                 } else {
                     Vec::new()
@@ -360,8 +357,26 @@ impl FuzzySurface<3> {
                 grader.basis(&pl.patch, uv, &mut basis);
                 found.push(pl.lines.box_at(0, &basis, alpha)[2]);
             }
+            // With crisp x and y on the patch every box is a point across
+            // the line, met only where the crisp surface meets it (above):
+            // no scan.
+            let crisp_xy = pl.lines.ends.iter().all(|e| {
+                e[..2].iter().all(|c| {
+                    c.foot_left == c.foot_right && c.slope_left == 0.0 && c.slope_right == 0.0
+                })
+            });
+            if crisp_xy {
+                continue;
+            }
             let [[a0, b0], [a1, b1]] = pl.patch.1;
             let n = STATION_STEPS;
+            // The z-range of every node whose box holds the line; nodes next
+            // to each other on the scan are one piece of the parameters that
+            // hold it, whose z-ranges make one interval (a union of intervals
+            // with continuous ends over a connected set): joined here, so
+            // that a crisp z (one value per node) does not leave an interval
+            // per node to refine.
+            let mut nodes: Vec<Option<[f64; 2]>> = Vec::with_capacity((n + 1) * (n + 1));
             for i in 0..=n {
                 for j in 0..=n {
                     let uv = [
@@ -370,12 +385,13 @@ impl FuzzySurface<3> {
                     ];
                     grader.basis(&pl.patch, [uv[0].min(b0), uv[1].min(b1)], &mut basis);
                     let b = pl.lines.box_at(0, &basis, alpha);
-                    if b[0][0] <= x0 && x0 <= b[0][1] && b[1][0] <= y0 && y0 <= b[1][1] {
-                        found.push(b[2]);
-                        from_grid = true;
-                    }
+                    let holds = b[0][0] <= x0 && x0 <= b[0][1] && b[1][0] <= y0 && y0 <= b[1][1];
+                    nodes.push(holds.then_some(b[2]));
                 }
             }
+            let pieces = pieces_of(&nodes, n + 1);
+            from_grid |= !pieces.is_empty();
+            found.extend(pieces);
         }
         found.sort_by(|a, b| a[0].total_cmp(&b[0]));
         // Intervals closer than the refinement's accuracy are one.
@@ -387,14 +403,14 @@ impl FuzzySurface<3> {
                 _ => joined.push(iv),
             }
         }
-        // Refine each end outward by bisection on the grade: the scan's ends
+        // Refine each end outward by bisection on the region: the scan's ends
         // lie inside the true interval.
-        let membership = MEMBERSHIPS[k];
-        let grade = |z: f64| grader.grades(&[x0, y0, z]).get(membership);
+        let mut work = Work::default();
+        let mut holds = |z: f64| grader.reaches(k, &[x0, y0, z], alpha, &mut work);
         let reach = (2.0 * scale / STATION_STEPS as f64).max(f64::MIN_POSITIVE);
         for iv in joined.iter_mut().filter(|_| from_grid) {
-            iv[0] = refine_end(&grade, iv[0], iv[0] - reach, alpha);
-            iv[1] = refine_end(&grade, iv[1], iv[1] + reach, alpha);
+            iv[0] = refine_end(&mut holds, iv[0], iv[0] - reach);
+            iv[1] = refine_end(&mut holds, iv[1], iv[1] + reach);
         }
         // Ends refined across a gap may now overlap.
         let mut out: Vec<[f64; 2]> = Vec::new();
@@ -408,19 +424,52 @@ impl FuzzySurface<3> {
     }
 }
 
-/// Moves `inside` (grade ≥ alpha) towards `outside` as far as the grade stays
-/// at least `alpha`, by bisection.
-fn refine_end(grade: &impl Fn(f64) -> f64, inside: f64, outside: f64, alpha: f64) -> f64 {
-    // In the region at `alpha`: a grade of at least `alpha`; at level 0 (every
-    // grade is at least 0) a positive grade, whose closure is the region.
-    let holds = |z: f64| {
-        let g = grade(z);
-        if alpha > 0.0 {
-            g >= alpha - 1e-12
-        } else {
-            g > 0.0
+/// The z-interval of every piece of neighbouring nodes (4-neighbours on a
+/// `side × side` scan, row by row) that hold the line: the least and the
+/// largest z of the piece's nodes.
+fn pieces_of(nodes: &[Option<[f64; 2]>], side: usize) -> Vec<[f64; 2]> {
+    let mut seen = vec![false; nodes.len()];
+    let mut out = Vec::new();
+    let mut stack = Vec::new();
+    for start in 0..nodes.len() {
+        if seen[start] || nodes[start].is_none() {
+            continue;
         }
-    };
+        seen[start] = true;
+        stack.push(start);
+        let mut range = [f64::INFINITY, f64::NEG_INFINITY];
+        while let Some(q) = stack.pop() {
+            if let Some([lo, hi]) = nodes[q] {
+                range = [range[0].min(lo), range[1].max(hi)];
+            }
+            let (i, j) = (q / side, q % side);
+            let mut visit = |r: usize| {
+                if !seen[r] && nodes[r].is_some() {
+                    seen[r] = true;
+                    stack.push(r);
+                }
+            };
+            if i > 0 {
+                visit(q - side);
+            }
+            if i + 1 < side {
+                visit(q + side);
+            }
+            if j > 0 {
+                visit(q - 1);
+            }
+            if j + 1 < side {
+                visit(q + 1);
+            }
+        }
+        out.push(range);
+    }
+    out
+}
+
+/// Moves `inside` (in the region) towards `outside` as far as the region
+/// holds, by bisection.
+fn refine_end(holds: &mut impl FnMut(f64) -> bool, inside: f64, outside: f64) -> f64 {
     let (mut a, mut b) = (inside, outside);
     // Widen the bracket until its far end is outside.
     for _ in 0..20 {
@@ -438,4 +487,34 @@ fn refine_end(grade: &impl Fn(f64) -> f64, inside: f64, outside: f64, alpha: f64
         }
     }
     a
+}
+
+/// `uv` moved by Newton's method on the plan map `(u, v) ↦ (x, y)` of
+/// `crisp` towards the plan point `target`, staying in `patch` (its own
+/// polynomial piece): at most 8 steps, each kept only if it comes closer.
+fn polish(crisp: &NurbsSurface<3>, patch: &Patch, mut uv: [f64; 2], target: [f64; 2]) -> [f64; 2] {
+    let (spans, [[a0, b0], [a1, b1]]) = (patch.0, patch.1);
+    let miss = |uv: [f64; 2]| {
+        let p = crisp.derivatives_in_spans(spans, uv[0], uv[1], 0)[0][0];
+        (p[0] - target[0]).hypot(p[1] - target[1])
+    };
+    let mut best = miss(uv);
+    for _ in 0..8 {
+        let d = crisp.derivatives_in_spans(spans, uv[0], uv[1], 1);
+        let (p, su, sv) = (d[0][0], d[1][0], d[0][1]);
+        let (rx, ry) = (target[0] - p[0], target[1] - p[1]);
+        let det = su[0] * sv[1] - su[1] * sv[0];
+        if det == 0.0 || !det.is_finite() {
+            break;
+        }
+        let du = (rx * sv[1] - ry * sv[0]) / det;
+        let dv = (su[0] * ry - su[1] * rx) / det;
+        let next = [(uv[0] + du).clamp(a0, b0), (uv[1] + dv).clamp(a1, b1)];
+        let m = miss(next);
+        if m.is_nan() || m >= best {
+            break;
+        }
+        (uv, best) = (next, m);
+    }
+    uv
 }

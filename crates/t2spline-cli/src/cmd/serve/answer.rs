@@ -3,6 +3,7 @@
 //! routes (`server.rs`) and the endpoints (`api.rs`) that use them.
 
 use std::path::PathBuf;
+use std::sync::{Mutex, MutexGuard, PoisonError};
 
 /// The job being edited: its name in messages, its text as read at start,
 /// and the file it may be saved over (none for the example or standard
@@ -16,6 +17,28 @@ pub struct Served {
     pub text: String,
     /// The job file named on the command line.
     pub path: Option<PathBuf>,
+    /// The file's text as the server last read or wrote it: a save over a
+    /// file that changed since is refused unless asked to overwrite.
+    on_disk: Mutex<String>,
+}
+
+impl Served {
+    /// The job `text` named `name`, read from `path` (none: nothing to
+    /// save over).
+    pub fn new(name: String, text: String, path: Option<PathBuf>) -> Served {
+        Served {
+            name,
+            on_disk: Mutex::new(text.clone()),
+            text,
+            path,
+        }
+    }
+
+    /// The file's text as last read or written (a poisoned lock still
+    /// holds it: every write to it is one assignment).
+    pub(super) fn on_disk(&self) -> MutexGuard<'_, String> {
+        self.on_disk.lock().unwrap_or_else(PoisonError::into_inner)
+    }
 }
 
 /// An answer: status, media type and body.

@@ -4,12 +4,12 @@
 //!
 //! | request | answer |
 //! |---|---|
-//! | `GET /api/job` | `{"name", "text", "saveable"}`: the job as read at start |
+//! | `GET /api/job[?reload=1]` | `{"name", "text", "saveable"}`: the job as read at start (`reload`: as the file holds it now) |
 //! | `POST /api/run` | the result, the bytes `t2spline run` writes |
 //! | `POST /api/canonical` | the job in canonical form (explicit knots, weights, heights) |
 //! | `POST /api/region[?tolerance=T]` | the regions at the job's alpha, as `t2spline region [--tolerance T]` writes them |
 //! | `POST /api/membership` | `{"job": TEXT, "points": CSV}`: the grades, as `t2spline membership` writes them |
-//! | `POST /api/save` | the job written over the file named on the command line, as `run -o` writes |
+//! | `POST /api/save[?overwrite=1]` | the job written over the file named on the command line, as `run -o` writes; 409 with `"changed": true` when the file changed since it was read, unless `overwrite` |
 //!
 //! A job that breaks a rule is answered 422 with `{"problems": [...]}`, one
 //! line each as the command line prints them (without `t2spline: `).
@@ -19,10 +19,9 @@ use std::path::Path;
 use t2spline::job::Overrides;
 use t2spline_io::job::MAX_FILE_BYTES;
 use t2spline_io::{MissingAlpha, Prepared};
-use tiny_http::Request;
 
 use super::answer::{Answer, Served};
-use super::security::header;
+use super::http::Request;
 use crate::cmd::prepare::{about_run, OptionError};
 use crate::exit::Exit;
 
@@ -44,38 +43,42 @@ fn failed(e: &anyhow::Error) -> Answer {
 }
 
 /// Reads the body as a job file's text (at most 64 MiB, UTF-8) and answers
-/// it with `answer`.
+/// it with `answer`. A declared length past the limit is refused unread.
 pub fn with_body(
     request: &mut Request,
     job: &Served,
     answer: impl FnOnce(&str, &Served) -> anyhow::Result<Answer>,
 ) -> Answer {
-    // A declared length past the limit is refused unread.
-    let declared = header(request, "Content-Length").and_then(|l| l.trim().parse::<u64>().ok());
-    if declared.is_some_and(|n| n > MAX_FILE_BYTES) {
-        return Answer::problem(
-            413,
-            &format!(
-                "{}: the request body is larger than a job file may be ({} MiB)",
-                job.name,
-                MAX_FILE_BYTES >> 20
-            ),
-        );
-    }
-    let text = match t2spline_io::job::read_text_from(request.as_reader(), &job.name) {
+    let body = match request.body(MAX_FILE_BYTES, &job.name) {
+        Ok(body) => body,
+        Err(failure) => return Answer::problem(failure.status, &failure.message),
+    };
+    let text = match t2spline_io::job::read_text_from(body.as_slice(), &job.name) {
         Ok(text) => text,
         Err(e) => return failed(&e.into()),
     };
     answer(&text, job).unwrap_or_else(|e| failed(&e))
 }
 
-/// The job as read at start.
-pub fn job(job: &Served) -> Answer {
+/// The job as read at start, or with `reload` as the file holds it now
+/// (the page's answer to a file changed on disk).
+pub fn job(job: &Served, reload: bool) -> Answer {
+    let text = match (&job.path, reload) {
+        (Some(path), true) => match t2spline_io::job::read_text(path) {
+            Ok(text) => {
+                let mut on_disk = job.on_disk();
+                on_disk.clone_from(&text);
+                text
+            }
+            Err(e) => return failed(&e.into()),
+        },
+        _ => job.text.clone(),
+    };
     Answer::json(
         200,
         &serde_json::json!({
             "name": job.name,
-            "text": job.text,
+            "text": text,
             "saveable": job.path.is_some(),
         }),
     )
@@ -114,7 +117,7 @@ pub fn region(text: &str, job: &Served, query: Option<&str>) -> anyhow::Result<A
     };
     let prepared = prepare(text, job)?;
     let alpha = prepared.settings().alpha();
-    let bytes = crate::cmd::region::geojson(prepared.job(), alpha, tolerance)?;
+    let bytes = crate::cmd::region::geojson(prepared.job(), &[alpha], tolerance)?;
     Ok(Answer::new(200, "application/geo+json", bytes))
 }
 
@@ -132,8 +135,10 @@ pub fn membership(text: &str, job: &Served) -> anyhow::Result<Answer> {
     Ok(Answer::new(200, "text/csv", bytes))
 }
 
-/// Saves the job (checked first) over the file named on the command line.
-pub fn save(text: &str, job: &Served) -> anyhow::Result<Answer> {
+/// Saves the job (checked first) over the file named on the command line,
+/// unless the file changed on disk since the server read or wrote it (409,
+/// `"changed": true`) and `overwrite` was not asked.
+pub fn save(text: &str, job: &Served, overwrite: bool) -> anyhow::Result<Answer> {
     let Some(path) = &job.path else {
         return Ok(Answer::problem(
             409,
@@ -141,6 +146,19 @@ pub fn save(text: &str, job: &Served) -> anyhow::Result<Answer> {
         ));
     };
     t2spline_io::parse_job(text, &job.name)?;
+    let mut on_disk = job.on_disk();
+    let now = std::fs::read(path).ok();
+    if !overwrite && now.as_deref() != Some(on_disk.as_bytes()) {
+        let message = format!(
+            "{}: the file changed on disk since it was read; reload it, or save again to overwrite it",
+            job.name
+        );
+        return Ok(Answer::json(
+            409,
+            &serde_json::json!({ "problems": [message], "changed": true }),
+        ));
+    }
     t2spline_io::write_atomic(path, text.as_bytes())?;
+    text.clone_into(&mut on_disk);
     Ok(Answer::json(200, &serde_json::json!({ "saved": job.name })))
 }

@@ -491,9 +491,33 @@ function download() {
   a.remove();
 }
 
-async function save() {
-  const r = await api("/api/save", jobText());
-  $("status").textContent = r.status === 200 ? "saved over " + state.name : JSON.parse(r.text).problems.join("\n");
+/**
+ * Saves over the job file. When the file changed on disk since it was read
+ * (409, `changed`), the user chooses: overwrite it, or load it as it is now
+ * (undo brings the page's job back).
+ */
+async function save(overwrite) {
+  const r = await api("/api/save" + (overwrite ? "?overwrite=1" : ""), jobText());
+  if (r.status === 200) {
+    $("status").textContent = "saved over " + state.name;
+    return;
+  }
+  const answer = JSON.parse(r.text);
+  if (r.status === 409 && answer.changed) {
+    const ask = state.name + " changed on disk since it was read.\n" +
+      "OK: overwrite it with this page's job.\n" +
+      "Cancel: load the file as it is now (undo brings this job back).";
+    if (confirm(ask)) return save(true);
+    const fresh = await api("/api/job?reload=1");
+    if (fresh.status !== 200) {
+      $("status").textContent = JSON.parse(fresh.text).problems.join("\n");
+      return;
+    }
+    await load(JSON.parse(fresh.text).text, state.name);
+    $("status").textContent = "loaded " + state.name + " as it is on disk";
+    return;
+  }
+  $("status").textContent = answer.problems.join("\n");
 }
 
 /** Loads a job's text: its canonical form is what the page edits. */
@@ -557,7 +581,7 @@ async function main() {
   $("undo").addEventListener("click", undo);
   $("redo").addEventListener("click", redo);
   $("download").addEventListener("click", download);
-  $("save").addEventListener("click", save);
+  $("save").addEventListener("click", () => save(false));
   $("show-regions").addEventListener("change", draw);
   $("show-layers").addEventListener("change", draw);
   $("show-map").addEventListener("change", schedule);

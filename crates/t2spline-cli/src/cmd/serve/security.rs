@@ -7,7 +7,7 @@
 //! token keeps out other users and programs of this computer that cannot
 //! read the terminal.
 
-use tiny_http::Request;
+use super::http::Request;
 
 /// Why a request is refused (status 403), as the response says.
 #[derive(Debug, PartialEq, Eq)]
@@ -42,15 +42,6 @@ pub fn new_token() -> anyhow::Result<String> {
     Ok(bytes.iter().map(|b| format!("{b:02x}")).collect())
 }
 
-/// The value of header `name` (case-insensitive), if present.
-pub fn header<'a>(request: &'a Request, name: &str) -> Option<&'a str> {
-    request
-        .headers()
-        .iter()
-        .find(|h| h.field.as_str().as_str().eq_ignore_ascii_case(name))
-        .map(|h| h.value.as_str())
-}
-
 /// The value of the query parameter `name` of `url` (no percent-decoding:
 /// the token is hex).
 pub fn query<'a>(url: &'a str, name: &str) -> Option<&'a str> {
@@ -77,19 +68,24 @@ fn same(a: &str, b: &str) -> bool {
 /// The first rule it breaks.
 pub fn check(request: &Request, port: u16, token: &str) -> Result<(), Refusal> {
     let hosts = [format!("127.0.0.1:{port}"), format!("localhost:{port}")];
-    match header(request, "Host") {
+    match request.header("Host") {
         Some(h) if hosts.iter().any(|ok| ok == h) => {}
         _ => return Err(Refusal::Host),
     }
-    if let Some(origin) = header(request, "Origin") {
+    if let Some(origin) = request.header("Origin") {
         if !hosts.iter().any(|h| origin == format!("http://{h}")) {
             return Err(Refusal::Origin);
         }
     }
-    if header(request, "Sec-Fetch-Site").is_some_and(|s| s == "cross-site" || s == "same-site") {
+    if request
+        .header("Sec-Fetch-Site")
+        .is_some_and(|s| s == "cross-site" || s == "same-site")
+    {
         return Err(Refusal::Origin);
     }
-    let given = header(request, "X-T2spline-Token").or_else(|| query(request.url(), "token"));
+    let given = request
+        .header("X-T2spline-Token")
+        .or_else(|| query(request.url(), "token"));
     match given {
         Some(t) if same(t, token) => Ok(()),
         _ => Err(Refusal::Token),

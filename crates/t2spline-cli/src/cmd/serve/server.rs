@@ -1,19 +1,33 @@
 //! The server of `t2spline serve`: one self-contained page (`page.html` with
 //! `page.css` and `page.js` inlined, nothing fetched from elsewhere) and a
 //! small JSON API (`api.rs`), on 127.0.0.1 only, every request checked first
-//! (`security.rs`). Requests are answered one at a time, in order; every
+//! (`security.rs`). Each connection is served on a thread of its own with
+//! the limits of `http.rs`; every
 //! computation goes through the I/O and core crates as the other commands'.
 
-use std::io::Cursor;
-
-use tiny_http::{Header, Request, Response, StatusCode};
+use std::net::TcpListener;
+use std::sync::Arc;
 
 use super::answer::{Answer, Served};
+use super::http::{self, Request};
 use super::{api, security};
+
+/// The headers of every answer.
+const HEADERS: &[(&str, &str)] = &[
+    ("Cache-Control", "no-store"),
+    ("X-Content-Type-Options", "nosniff"),
+    ("Referrer-Policy", "no-referrer"),
+    ("X-Frame-Options", "DENY"),
+];
+
+/// The page's policy: nothing fetched from elsewhere.
+const PAGE_POLICY: &str =
+    "default-src 'none'; script-src 'unsafe-inline'; style-src 'unsafe-inline'; \
+     connect-src 'self'; img-src 'self' data: blob:; frame-ancestors 'none'";
 
 /// A listening server.
 pub struct Server {
-    http: tiny_http::Server,
+    listener: TcpListener,
     port: u16,
     token: String,
     job: Served,
@@ -40,14 +54,11 @@ impl Server {
     /// The port cannot be bound; no random bytes for the token.
     pub fn start(job: Served, port: u16) -> anyhow::Result<Server> {
         let token = security::new_token()?;
-        let http = tiny_http::Server::http(("127.0.0.1", port))
+        let listener = TcpListener::bind(("127.0.0.1", port))
             .map_err(|e| anyhow::anyhow!("--port: cannot listen on 127.0.0.1:{port}: {e}"))?;
-        let port = http
-            .server_addr()
-            .to_ip()
-            .map_or(port, |address| address.port());
+        let port = listener.local_addr().map_or(port, |address| address.port());
         Ok(Server {
-            http,
+            listener,
             port,
             token,
             job,
@@ -60,11 +71,17 @@ impl Server {
         format!("http://127.0.0.1:{}/?token={}", self.port, self.token)
     }
 
-    /// Answers requests until the process ends (Ctrl-C, `signals.rs`).
+    /// Answers requests until the process ends (Ctrl-C, `signals.rs`), each
+    /// connection on a thread of its own (`http.rs`).
     pub fn run(self) {
-        for request in self.http.incoming_requests() {
-            self.answer(request);
-        }
+        let listener = self.listener.try_clone();
+        let Ok(listener) = listener else { return };
+        let server = Arc::new(self);
+        http::serve(
+            &listener,
+            move |request| server.answer(request),
+            JSON_HEADERS,
+        );
     }
 
     /// Checks and answers one request; a panic (a bug) is answered 500 and
@@ -78,42 +95,29 @@ impl Server {
                     .unwrap_or_else(|_| Answer::problem(500, "internal error (a bug)"))
             }
         };
-        let is_page = answer.media.starts_with("text/html");
-        let mut response = Response::new(
-            StatusCode(answer.status),
-            Vec::new(),
-            Cursor::new(answer.body),
-            None,
-            None,
-        )
-        .with_header(header("Content-Type", answer.media))
-        .with_header(header("Cache-Control", "no-store"))
-        .with_header(header("X-Content-Type-Options", "nosniff"))
-        .with_header(header("Referrer-Policy", "no-referrer"))
-        .with_header(header("X-Frame-Options", "DENY"));
-        if is_page {
-            response = response.with_header(header(
-                "Content-Security-Policy",
-                "default-src 'none'; script-src 'unsafe-inline'; style-src 'unsafe-inline'; \
-                 connect-src 'self'; img-src 'self' data: blob:; frame-ancestors 'none'",
-            ));
+        let mut headers = vec![("Content-Type", answer.media)];
+        headers.extend_from_slice(HEADERS);
+        if answer.media.starts_with("text/html") {
+            headers.push(("Content-Security-Policy", PAGE_POLICY));
         }
-        // The browser may have gone; nothing to do then.
-        let _ = request.respond(response);
+        request.respond(answer.status, &headers, &answer.body);
     }
 
     /// The answer to a checked request.
     fn route(&self, request: &mut Request) -> Answer {
         let url = request.url().to_owned();
         let path = url.split_once('?').map_or(url.as_str(), |(p, _)| p);
-        let method = request.method().as_str().to_owned();
+        let method = request.method().to_owned();
+        let overwrite = security::query(&url, "overwrite") == Some("1");
         match (method.as_str(), path) {
             ("GET", "/") => Answer::new(
                 200,
                 "text/html; charset=utf-8",
                 self.page.clone().into_bytes(),
             ),
-            ("GET", "/api/job") => api::job(&self.job),
+            ("GET", "/api/job") => {
+                api::job(&self.job, security::query(&url, "reload") == Some("1"))
+            }
             ("POST", "/api/run") => api::with_body(request, &self.job, api::run),
             ("POST", "/api/canonical") => api::with_body(request, &self.job, api::canonical),
             ("POST", "/api/region") => {
@@ -123,7 +127,9 @@ impl Server {
                 })
             }
             ("POST", "/api/membership") => api::with_body(request, &self.job, api::membership),
-            ("POST", "/api/save") => api::with_body(request, &self.job, api::save),
+            ("POST", "/api/save") => api::with_body(request, &self.job, |text, job| {
+                api::save(text, job, overwrite)
+            }),
             (_, "/" | "/api/job" | "/api/run" | "/api/canonical" | "/api/region")
             | (_, "/api/membership" | "/api/save") => Answer::problem(405, "method not allowed"),
             _ => Answer::problem(404, "not found"),
@@ -131,7 +137,9 @@ impl Server {
     }
 }
 
-fn header(name: &str, value: &str) -> Header {
-    // Both are ASCII constants here.
-    Header::from_bytes(name.as_bytes(), value.as_bytes()).expect("an ASCII header")
-}
+/// The headers of the answers `http.rs` gives by itself (busy, too slow).
+const JSON_HEADERS: &[(&str, &str)] = &[
+    ("Content-Type", "application/json"),
+    ("Cache-Control", "no-store"),
+    ("X-Content-Type-Options", "nosniff"),
+];

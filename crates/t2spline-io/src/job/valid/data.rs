@@ -21,7 +21,7 @@ use crate::limits::{check_net_size, MAX_POINTS};
 /// at all; `None` if it has one, or anything this reading does not expect.
 pub(in super::super) fn data(text: &str) -> Option<FitData> {
     let raw = raw::read(text)?;
-    if raw.weights.is_some() || raw.knots.is_some() {
+    if raw.weights.is_some() || raw.knots.is_some() || raw.closed.is_some() || raw.units.is_some() {
         return None;
     }
     let Header {

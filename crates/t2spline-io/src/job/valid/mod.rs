@@ -21,11 +21,12 @@ mod raw;
 pub(super) use data::data;
 
 use t2spline::job::{
-    check_grid_samples, check_samples, Job, Model, Samples, DEFAULT_SAMPLES,
+    check_grid_samples, check_samples, Job, LengthUnit, Model, Samples, DEFAULT_SAMPLES,
     DEFAULT_SURFACE_SAMPLES,
 };
 use t2spline::{Alpha, FuzzyCurve, FuzzySurface, Height, Nt2Number, Nt2Point, TypeReduction};
 
+use super::common::closure_gap;
 use crate::limits::{check_net_size, check_order, check_surface_work, MAX_POINTS};
 use raw::{Knots, Points, RawJob, RawNumber, Weights, Whole};
 
@@ -117,11 +118,23 @@ fn build(raw: RawJob) -> Option<Job> {
         (Some(Whole::One(n)), _) => Samples::Along(sample_count(n)?),
         (Some(Whole::Pair(_)), _) => return None,
     };
+    let units = match raw.units {
+        Some(name) => Some(LengthUnit::named(&name)?),
+        None => None,
+    };
+    // A surface has no closure; a curve said to close must.
+    match (raw.closed, &model) {
+        (Some(_), Model::Surface(_)) => return None,
+        (Some(true), _) => closure_gap(&model).ok()?,
+        _ => {}
+    }
     Some(Job {
         description: raw.description,
         alpha,
         type_reduction: raw.type_reduction.unwrap_or(TypeReduction::Paper),
         samples,
+        closed: raw.closed,
+        units,
         model,
     })
 }
@@ -200,7 +213,8 @@ fn surface(
 }
 
 /// The points of `D` coordinates whose numbers are `numbers`, point after
-/// point; a number without a height of its own takes `height`.
+/// point; a number without a height of its own takes `height`, and a bare
+/// number (crisp) takes `height` or else 1.
 fn fuzzy_points<const D: usize>(
     numbers: &[RawNumber],
     height: Option<f64>,
@@ -208,7 +222,7 @@ fn fuzzy_points<const D: usize>(
     let numbers = numbers
         .iter()
         .map(|n| {
-            let h = n.height.or(height)?;
+            let h = n.height.or(height).or(n.bare.then_some(1.0))?;
             Nt2Number::try_new(n.crisp, n.upper, n.primary, n.lower, h).ok()
         })
         .collect::<Option<Vec<_>>>()?;

@@ -48,6 +48,8 @@ pub(super) struct RawJob {
     pub type_reduction: Option<TypeReduction>,
     pub lower_height: Option<f64>,
     pub samples: Option<Whole>,
+    pub closed: Option<bool>,
+    pub units: Option<String>,
     pub points: Option<Points>,
     /// The JSON values of the file, counted as
     /// [`oversized`](super::super::position::oversized) counts them.
@@ -81,6 +83,23 @@ pub(super) struct RawNumber {
     pub primary: [f64; 2],
     pub lower: [f64; 2],
     pub height: Option<f64>,
+    /// Given as a bare number: a crisp number, whose height is the job's
+    /// `lower_height` when given, else 1.
+    pub bare: bool,
+}
+
+impl RawNumber {
+    /// The crisp number `x`, given as a bare number.
+    fn bare(x: f64) -> Self {
+        RawNumber {
+            crisp: x,
+            upper: [x; 2],
+            primary: [x; 2],
+            lower: [x; 2],
+            height: None,
+            bare: true,
+        }
+    }
 }
 
 /// `points`: the numbers of every point, point after point, each point's
@@ -223,6 +242,8 @@ impl<'de> Visitor<'de> for JobVisitor<'_> {
                 }
                 "lower_height" => job.lower_height = Some(map.next_value()?),
                 "samples" => job.samples = Some(map.next_value_seed(WholeSeed(count))?),
+                "closed" => job.closed = Some(map.next_value()?),
+                "units" => job.units = Some(map.next_value()?),
                 "points" => job.points = Some(map.next_value_seed(PointsSeed(count))?),
                 _ => return Err(refuse()),
             }
@@ -542,13 +563,14 @@ impl<'de> Visitor<'de> for PointVisitor<'_> {
     }
 }
 
-/// A fuzzy number: `crisp`, `upper`, `primary` and `lower` all given.
+/// A fuzzy number: `crisp`, `upper`, `primary` and `lower` all given, or a
+/// bare number (a crisp number).
 struct NumberVisitor<'c>(&'c Count);
 
 impl<'de> DeserializeSeed<'de> for NumberVisitor<'_> {
     type Value = RawNumber;
     fn deserialize<D: Deserializer<'de>>(self, d: D) -> Result<RawNumber, D::Error> {
-        d.deserialize_map(self)
+        d.deserialize_any(self)
     }
 }
 
@@ -556,6 +578,18 @@ impl<'de> Visitor<'de> for NumberVisitor<'_> {
     type Value = RawNumber;
     fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
         f.write_str("a fuzzy number")
+    }
+    // As `Value::as_f64` reads them, so as the validator does.
+    #[allow(clippy::cast_precision_loss)]
+    fn visit_u64<E: de::Error>(self, n: u64) -> Result<RawNumber, E> {
+        Ok(RawNumber::bare(n as f64))
+    }
+    #[allow(clippy::cast_precision_loss)]
+    fn visit_i64<E: de::Error>(self, n: i64) -> Result<RawNumber, E> {
+        Ok(RawNumber::bare(n as f64))
+    }
+    fn visit_f64<E: de::Error>(self, x: f64) -> Result<RawNumber, E> {
+        Ok(RawNumber::bare(x))
     }
     fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<RawNumber, A::Error> {
         let count = self.0;
@@ -566,6 +600,7 @@ impl<'de> Visitor<'de> for NumberVisitor<'_> {
             primary: [0.0; 2],
             lower: [0.0; 2],
             height: None,
+            bare: false,
         };
         let mut seen = 0;
         while let Some(i) = next_key(&mut map, &NUMBER, &mut seen, count)? {

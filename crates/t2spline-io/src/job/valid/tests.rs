@@ -113,6 +113,27 @@ fn edits_of_the_text_give_what_the_validator_gives() {
         valid
             .replace(r#""lower_height": 0.5"#, r#""lower_height": 2"#)
             .replace(r#""crisp": "#, r#""lower_height": 0.5, "crisp": "#),
+        // Bare numbers: crisp, with the job's height; out of range.
+        valid.replace(
+            r#"{"crisp": 0, "upper": [-1, 1], "primary": [-0.5, 0.5], "lower": [-0.25, 0.25]}"#,
+            "-0",
+        ),
+        valid.replace(
+            r#"{"crisp": 0, "upper": [-1, 1], "primary": [-0.5, 0.5], "lower": [-0.25, 0.25]}"#,
+            "1e300",
+        ),
+        valid.replace(r#""lower_height": 0.5, "#, "").replace(
+            r#"{"crisp": 0, "upper": [-1, 1], "primary": [-0.5, 0.5], "lower": [-0.25, 0.25]}"#,
+            "18446744073709551615",
+        ),
+        // Closure: asked of an open curve, declined, not a boolean.
+        job(r#""order": 2, "closed": true,"#),
+        job(r#""order": 2, "closed": false,"#),
+        job(r#""order": 2, "closed": 1,"#),
+        job(r#""order": 2, "closed": null,"#),
+        job(r#""order": 2, "units": "in","#),
+        job(r#""order": 2, "units": "inch","#),
+        job(r#""order": 2, "units": 1,"#),
         format!("{valid} x"),
         format!("{valid},"),
         format!("\n\t {valid}\r\n"),
@@ -174,6 +195,7 @@ fn a_curve_of_more_points_than_the_limit_is_refused() {
         primary: [0.0; 2],
         lower: [0.0; 2],
         height: None,
+        bare: false,
     };
     let points = |n| Points {
         numbers: vec![zero; 2 * n],
@@ -277,7 +299,7 @@ pub(super) fn edit(v: &mut Value, place: &str, how: usize, pick: usize) {
 }
 
 proptest! {
-    #![proptest_config(t2spline::strategies::cases(750, 3000))]
+    #![proptest_config(t2spline::strategies::cases(750, 1500))]
 
     #[test]
     fn edited_jobs_give_what_the_validator_gives(

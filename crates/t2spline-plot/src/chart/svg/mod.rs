@@ -48,6 +48,16 @@ pub fn render(fig: &Figure) -> String {
     document(&layout, &fig.title, &parts(fig, &layout, ""), None)
 }
 
+/// Renders a figure as a complete SVG document whose element ids begin
+/// with `prefix`, so that several figures can share one HTML page (a
+/// notebook) without their clip paths mixing; `render(fig)` is
+/// `render_prefixed(fig, "")`.
+#[must_use]
+pub fn render_prefixed(fig: &Figure, prefix: &str) -> String {
+    let layout = layout::fit(&[fig]);
+    document(&layout, &fig.title, &parts(fig, &layout, prefix), None)
+}
+
 /// The SVG document around `parts`; with `wrap = Some(prefix)` each part is
 /// wrapped in `<g id="{prefix}{index}">`.
 #[must_use]

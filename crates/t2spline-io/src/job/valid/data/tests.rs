@@ -190,7 +190,7 @@ fn the_limit_of_points_is_kept() {
 }
 
 proptest! {
-    #![proptest_config(t2spline::strategies::cases(250, 2000))]
+    #![proptest_config(t2spline::strategies::cases(250, 750))]
 
     #[test]
     fn edited_data_files_give_what_the_validator_gives(

@@ -3,16 +3,17 @@
 //!
 //! This module measures wall time (`std::time::Instant`) and nothing else; the
 //! criterion benchmarks in `benches/` time the same cases on the same
-//! benchmark curve ([`crate::sampling::benchmark_curve`]).
+//! benchmark curve ([`t2spline::sampling::benchmark_curve`]).
 
 use std::fmt;
 use std::hint::black_box;
 use std::time::Instant;
 
-use crate::error::{Error, Setting};
-use crate::job::{Model, ModelVisitor};
-use crate::pipeline::{FuzzyCurve, FuzzySurface};
-use crate::sampling::{benchmark_levels, CurveSamples, Grid, LayerSamples, Params, SweepSamples};
+use t2spline::job::{Model, ModelVisitor, Setting};
+use t2spline::sampling::{
+    benchmark_levels, CurveSamples, Grid, LayerSamples, Params, SweepSamples, MAX_OUTPUT_BYTES,
+};
+use t2spline::{Error, FuzzyCurve, FuzzySurface};
 
 /// The side of the square grid of about `points` parameter values.
 fn grid_side(points: usize) -> usize {
@@ -22,25 +23,20 @@ fn grid_side(points: usize) -> usize {
 /// Timed runs per case; the median is reported.
 pub const RUNS: usize = 5;
 
-/// The most memory the output arrays of one benchmark run may take, in bytes
-/// (8 GiB): the points asked for are refused before anything is allocated
-/// when a case's output would need more.
-pub const MAX_OUTPUT_BYTES: u64 = 8 << 30;
-
 /// The most threads a benchmark may ask for.
 pub const MAX_THREADS: usize = 1024;
 
 /// What a benchmark case samples, at `points` uniform parameters.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum BenchCase {
-    /// The crisp curve ([`crate::NurbsCurve::sample_soa`]).
+    /// The crisp curve ([`t2spline::NurbsCurve::sample_soa`]).
     Crisp,
     /// All seven layer curves ([`FuzzyCurve::sample_layers`]).
     Fuzzy,
     /// Stages 1–4 at the 11 levels 0, 0.1, …, 1 ([`benchmark_levels`]) and
     /// every resulting curve ([`FuzzyCurve::sample_sweep`]).
     Sweep,
-    /// The crisp surface on a `√N × √N` grid ([`crate::NurbsSurface::sample_grid`]).
+    /// The crisp surface on a `√N × √N` grid ([`t2spline::NurbsSurface::sample_grid`]).
     Surface,
     /// All seven layer surfaces on a `√N × √N` grid
     /// ([`FuzzySurface::sample_layers`]).
@@ -154,15 +150,8 @@ impl fmt::Display for BenchResult {
 /// model of `dimension` coordinates within [`MAX_OUTPUT_BYTES`].
 ///
 /// # Errors
-/// [`Error::Setting`] ([`Setting::Points`]) naming the rule.
-///
-/// # Examples
-/// ```
-/// # use t2spline::bench::{check_points, BenchCase};
-/// assert_eq!(check_points(1000, BenchCase::Fuzzy, 2), Ok(1000));
-/// let e = check_points(100_000_000_000, BenchCase::Crisp, 2).unwrap_err();
-/// assert_eq!(e.to_string(), "points = 100000000000: the output of case crisp would take 1600 GB, more than the limit of 8.6 GB");
-/// ```
+/// [`Error::Setting`] ([`Setting::Points`]) naming the rule (examples in
+/// this module's tests).
 pub fn check_points(points: u64, case: BenchCase, dimension: usize) -> Result<usize, Error> {
     let refuse = |message: String| Error::Setting {
         setting: Setting::Points,
@@ -195,17 +184,8 @@ pub fn check_points(points: u64, case: BenchCase, dimension: usize) -> Result<us
 ///
 /// # Errors
 /// [`Error::Setting`]: points refused by [`check_points`], threads outside
-/// `1 ..= MAX_THREADS`, or a thread pool the system cannot make.
-///
-/// # Examples
-/// ```
-/// # use t2spline::bench::{run_case, BenchCase};
-/// # use t2spline::job::Model;
-/// let model = Model::Planar(t2spline::sampling::benchmark_curve());
-/// let r = run_case(&model, BenchCase::Fuzzy, 1000, 1, false)?;
-/// assert!(r.to_string().starts_with("bench fuzzy points=1000 threads=1 seconds="));
-/// # Ok::<(), t2spline::Error>(())
-/// ```
+/// `1 ..= MAX_THREADS`, or a thread pool the system cannot make (examples
+/// in this module's tests).
 pub fn run_case(
     model: &Model,
     case: BenchCase,
@@ -255,7 +235,6 @@ pub fn run_case(
 }
 
 /// Runs `f` on a rayon pool of `threads` threads.
-#[cfg(feature = "parallel")]
 fn with_threads<T: Send>(threads: usize, f: impl FnOnce() -> T + Send) -> Result<T, Error> {
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
@@ -265,12 +244,6 @@ fn with_threads<T: Send>(threads: usize, f: impl FnOnce() -> T + Send) -> Result
             message: format!("threads = {threads}: {e}"),
         })?;
     Ok(pool.install(f))
-}
-
-/// Without the `parallel` feature the engine runs on the calling thread only.
-#[cfg(not(feature = "parallel"))]
-fn with_threads<T: Send>(_threads: usize, f: impl FnOnce() -> T + Send) -> Result<T, Error> {
-    Ok(f())
 }
 
 /// The timing of one case on one kind of model.
@@ -371,12 +344,31 @@ fn median_time(once: &mut dyn FnMut()) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sampling::benchmark_curve;
+    use t2spline::sampling::{benchmark_curve, benchmark_surface};
+
+    #[test]
+    fn points_are_checked_against_the_output_limit() {
+        assert_eq!(check_points(1000, BenchCase::Fuzzy, 2), Ok(1000));
+        let e = check_points(100_000_000_000, BenchCase::Crisp, 2).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "points = 100000000000: the output of case crisp would take 1600 GB, more than the limit of 8.6 GB"
+        );
+    }
+
+    #[test]
+    fn a_case_runs_and_says_what_it_timed() {
+        let model = Model::Planar(t2spline::sampling::benchmark_curve());
+        let r = run_case(&model, BenchCase::Fuzzy, 1000, 1, false).unwrap();
+        assert!(r
+            .to_string()
+            .starts_with("bench fuzzy points=1000 threads=1 seconds="));
+    }
 
     #[test]
     fn every_case_runs_and_reports_in_the_documented_format() {
         let curve = Model::Planar(benchmark_curve());
-        let surface = Model::Surface(crate::sampling::benchmark_surface());
+        let surface = Model::Surface(benchmark_surface());
         for (case, reuse) in BenchCase::ALL
             .into_iter()
             .zip([false, true, false, true, false])

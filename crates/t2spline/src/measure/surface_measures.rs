@@ -1,0 +1,218 @@
+//! The volumes, plan area and surface area of a fuzzy surface at many
+//! levels, under the three membership functions (docs/method.md §14): what
+//! `t2spline measure` writes for a surface job.
+//!
+//! With x and y crisp, the height above a plan point is `Σ Rₖ·zₖ` with
+//! `Rₖ ≥ 0`, so every quantity that grows (or shrinks) with the height at
+//! every plan point grows (or shrinks) with each `zₖ`: the volumes and the
+//! plan area take their ends at the two extreme nets, every height at its
+//! cut's left end or every one at its right end, the nets of the envelope.
+//!
+//! ```text
+//! V_below ∈ [V_below(right net), V_below(left net)]
+//! V_above ∈ [V_above(left net),  V_above(right net)]
+//! A_below ∈ [A_below(right net), A_below(left net)]
+//! ```
+//! The surface area is convex in the heights (`surface_area.rs`).
+
+use crate::error::{Error, Place};
+use crate::fuzzy::{Alpha, Membership};
+use crate::measure::bracket::Bracket;
+use crate::measure::cut_box::CutBox;
+use crate::measure::measures::{nested, Level, PerMembership, MAX_MEASURE_LEVELS};
+use crate::measure::plan::Plan;
+use crate::measure::surface_area::{heights, surface_area_bracket, AreaRule};
+use crate::measure::volume::{VolumeForm, Volumes, VOLUME_TOLERANCE};
+use crate::pipeline::FuzzySurface;
+
+/// What to measure on a surface.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SurfaceMeasureOptions {
+    /// The levels (1 to [`MAX_MEASURE_LEVELS`]).
+    pub levels: Vec<Alpha>,
+    /// The height `z₀` of the plane the volumes are measured from.
+    pub datum: f64,
+    /// Whether to measure the surface area (a convex minimisation and a
+    /// vertex search per level and function; the volumes cost far less).
+    pub area: bool,
+}
+
+impl SurfaceMeasureOptions {
+    /// `count` levels from 0 to 1, datum 0, with the surface area.
+    ///
+    /// # Errors
+    /// [`Error::OutOfRange`] unless `2 ≤ count ≤` [`MAX_MEASURE_LEVELS`].
+    pub fn uniform(count: usize) -> Result<Self, Error> {
+        let levels = crate::measure::MeasureOptions::uniform(count)?.levels;
+        Ok(SurfaceMeasureOptions {
+            levels,
+            datum: 0.0,
+            area: true,
+        })
+    }
+}
+
+/// Every quantity of docs/method.md §14 at many levels. A membership
+/// function's lists hold only the levels where it has a cut.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct SurfaceMeasures {
+    /// The levels asked for.
+    pub levels: Vec<f64>,
+    /// The height of the plane the volumes are measured from.
+    pub datum: f64,
+    /// The relative tolerance the volumes and plan areas are integrated to;
+    /// each level's `gap` is the error bound reached.
+    pub tolerance: f64,
+    /// The plan area of the surface (the same for every net), and its
+    /// error bound.
+    pub plan_area: [f64; 2],
+    /// The volume between the plane and the surface where it lies below.
+    pub volume_below: PerMembership<Vec<Level>>,
+    /// The volume between the plane and the surface where it lies above.
+    pub volume_above: PerMembership<Vec<Level>>,
+    /// The plan area where the surface lies below the plane.
+    pub plan_area_below: PerMembership<Vec<Level>>,
+    /// The surface area.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub area: Option<PerMembership<Vec<Level>>>,
+}
+
+/// The heights of the nets of every level and function.
+type Boxes = PerMembership<Vec<(f64, CutBox)>>;
+
+fn finish(l: PerMembership<Vec<(f64, Option<Bracket>)>>) -> PerMembership<Vec<Level>> {
+    let l = nested(l);
+    PerMembership::from_fn(|m| {
+        l.get(m)
+            .iter()
+            .filter_map(|(a, b)| b.map(|b| Level::of(*a, b)))
+            .collect()
+    })
+}
+
+/// The bracket of a non-negative quantity from its values `[value, error]`
+/// at the extreme net where it is least and at the one where it is largest;
+/// exact where both errors are within the tolerance of the largest value or
+/// of `scale` (the plan area, times the greatest depth for a volume).
+fn from_nets(least: [f64; 2], largest: [f64; 2], scale: f64) -> Bracket {
+    let scale = largest[0].abs().max(scale);
+    let exact = least[1].max(largest[1]) <= VOLUME_TOLERANCE * scale;
+    Bracket::from_ends(
+        [(least[0] - least[1]).max(0.0), least[0]],
+        [largest[0], largest[0] + largest[1]],
+        exact,
+    )
+}
+
+impl FuzzySurface<3> {
+    /// The volumes between the surface and the plane `z = options.datum`,
+    /// the plan area below it and (with `options.area`) the surface area,
+    /// each an interval over the nets whose heights lie in their cuts, at
+    /// each level and under each membership function (docs/method.md §14).
+    ///
+    /// # Errors
+    /// [`Error::OutOfRange`] for no levels or more than
+    /// [`MAX_MEASURE_LEVELS`]; [`Error::NotFinite`] for a datum that is not
+    /// finite; [`Error::FuzzyPlan`] where x or y of a control point is fuzzy;
+    /// [`Error::NotAGraph`] where the surface folds over its plan or has a
+    /// vertical part.
+    ///
+    /// # Examples
+    /// A square of side 2 at height 1 whose heights may move 0.5 either way:
+    /// the volume above z = 0 lies in [4·0.5, 4·1.5] at level 0.
+    /// ```
+    /// # use t2spline::{FuzzySurface, Nt2Number, Nt2Point};
+    /// # use t2spline::measure::SurfaceMeasureOptions;
+    /// let c = |x: f64| Nt2Number::try_crisp(x);
+    /// let z = Nt2Number::try_new(1.0, [0.5, 1.5], [0.75, 1.25], [1.0, 1.0], 1.0)?;
+    /// let p = |x: f64, y: f64| Ok::<_, t2spline::Error>(Nt2Point::new([c(x)?, c(y)?, z]));
+    /// let net = vec![vec![p(0.0, 0.0)?, p(0.0, 2.0)?], vec![p(2.0, 0.0)?, p(2.0, 2.0)?]];
+    /// let s = FuzzySurface::try_new([1, 1], net, vec![vec![1.0; 2]; 2], [None, None])?;
+    /// let m = s.measure(&SurfaceMeasureOptions::uniform(3)?)?;
+    /// let above = &m.volume_above.upper[0];
+    /// assert!((above.min - 2.0).abs() < 1e-9 && (above.max - 6.0).abs() < 1e-9);
+    /// assert_eq!(m.volume_below.upper[0].max, 0.0);
+    /// # Ok::<(), t2spline::Error>(())
+    /// ```
+    pub fn measure(&self, options: &SurfaceMeasureOptions) -> Result<SurfaceMeasures, Error> {
+        if options.levels.is_empty() || options.levels.len() > MAX_MEASURE_LEVELS {
+            return Err(Error::OutOfRange {
+                place: Place::NONE,
+                what: "levels",
+                value: options.levels.len() as f64,
+                range: "[1, 51]",
+            });
+        }
+        if !options.datum.is_finite() {
+            return Err(Error::NotFinite {
+                place: Place::NONE,
+                what: "datum",
+                value: options.datum,
+            });
+        }
+        let plan = Plan::of(self)?;
+        plan.check_graph()?;
+        let crisp: Vec<f64> = self
+            .points()
+            .iter()
+            .map(|p| p.coords()[2].crisp())
+            .collect();
+        let area_rule = options.area.then(|| AreaRule::new(&plan, &crisp));
+        let form = VolumeForm::new(plan);
+        let boxes: Boxes = PerMembership::from_fn(|m| {
+            options
+                .levels
+                .iter()
+                .filter_map(|&a| CutBox::of(self.points(), m, a).map(|b| (a.get(), b)))
+                .collect()
+        });
+        let datum = options.datum;
+        let plan_area = form.area[0];
+        let nets: PerMembership<Vec<(f64, [Volumes; 2], f64)>> = PerMembership::from_fn(|m| {
+            boxes
+                .get(m)
+                .iter()
+                .map(|(a, cut)| {
+                    let ([lo, hi], _) = heights(cut);
+                    let depth = lo
+                        .iter()
+                        .chain(&hi)
+                        .fold(0.0_f64, |d, z| d.max((z - datum).abs()));
+                    let nets = [form.eval(&lo, datum), form.eval(&hi, datum)];
+                    (*a, nets, plan_area * depth)
+                })
+                .collect()
+        });
+        let pick = |f: &dyn Fn(&[Volumes; 2], f64) -> Bracket| {
+            finish(PerMembership::from_fn(|m| {
+                nets.get(m)
+                    .iter()
+                    .map(|(a, v, scale)| (*a, Some(f(v, *scale))))
+                    .collect()
+            }))
+        };
+        let volume_below = pick(&|[l, r], scale| from_nets(r.below, l.below, scale));
+        let volume_above = pick(&|[l, r], scale| from_nets(l.above, r.above, scale));
+        let plan_area_below = pick(&|[l, r], _| from_nets(r.plan_below, l.plan_below, plan_area));
+        let area = area_rule.map(|rule| {
+            finish(PerMembership::from_fn(|m: Membership| {
+                boxes
+                    .get(m)
+                    .iter()
+                    .map(|(a, cut)| (*a, Some(surface_area_bracket(&rule, cut))))
+                    .collect()
+            }))
+        });
+        Ok(SurfaceMeasures {
+            levels: options.levels.iter().map(|a| a.get()).collect(),
+            datum,
+            tolerance: VOLUME_TOLERANCE,
+            plan_area: form.area,
+            volume_below,
+            volume_above,
+            plan_area_below,
+            area,
+        })
+    }
+}
