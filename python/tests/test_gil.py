@@ -88,6 +88,9 @@ def test_a_thread_runs_while_a_fuzzy_surface_is_sampled_and_solved() -> None:
 
 def test_a_thread_runs_while_points_are_graded() -> None:
     curve = t2spline.benchmark_curve()
-    points = np.random.default_rng(0).uniform([0.0, -2.0], [9.0, 3.0], size=(1000, 2))
+    # Enough points that grading them takes far longer than a thread switch
+    # (5 ms): 1 000 points take 4 ms, too short for the other thread to be
+    # scheduled at all.
+    points = np.random.default_rng(0).uniform([0.0, -2.0], [9.0, 3.0], size=(50_000, 2))
     stall, duration = longest_stall(lambda: curve.membership(points))
     assert stall < 0.5 * duration, (stall, duration)
