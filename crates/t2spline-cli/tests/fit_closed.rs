@@ -101,6 +101,21 @@ fn readings_around_a_circle_give_a_closed_job_enclosing_pi_r_squared() {
         assert!((w[1] - w[0] - 1.0 / 16.0).abs() < 1e-12, "{knots:?}");
     }
     t2spline().arg("run").arg(&job).assert().code(0);
+    // The other commands take it as the closed curve it is.
+    let out = |name: &str| dir.path().join(name);
+    for args in [
+        vec!["validate".into(), job.clone()],
+        vec![
+            "region".into(),
+            job.clone(),
+            "-o".into(),
+            out("region.geojson"),
+        ],
+        vec!["export".into(), job.clone(), "-o".into(), out("pond.dxf")],
+        vec!["plot".into(), job.clone(), "-o".into(), out("figures")],
+    ] {
+        t2spline().args(&args).assert().code(0);
+    }
     let (m, crisp) = area_at_alpha_1(&job);
     assert_eq!(m["area"]["kind"], "enclosed", "{m}");
     // The crisp curve interpolates 16 exact points of the circle (the medians
