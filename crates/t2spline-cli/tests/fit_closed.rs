@@ -192,6 +192,10 @@ fn a_repeated_last_point_is_the_first_and_least_squares_closes() {
         ),
         "{report}"
     );
+    // As many control points as distinct points: interpolation.
+    let (full, report) = fitted(&twice, &["--control-points", "10"]);
+    assert_eq!(full, a);
+    assert!(report.contains("periodic interpolation"), "{report}");
     let (ls, report) = fitted(&twice, &["--control-points", "6"]);
     assert!(report.contains("periodic least squares"), "{report}");
     assert_eq!(ls["points"].as_array().unwrap().len(), 6 + 3);

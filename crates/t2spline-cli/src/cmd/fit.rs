@@ -226,11 +226,17 @@ pub fn fit(args: FitArgs) -> anyhow::Result<()> {
 
 /// The lines of the report on standard error.
 fn report(plan: &Plan, s: &FitSummary) -> Vec<String> {
-    let method = match (plan.options.control_points, s.closed) {
-        (None, None) => "interpolation",
-        (Some(_), None) => "least squares, end points interpolated",
-        (None, Some(_)) => "periodic interpolation",
-        (Some(_), Some(_)) => "periodic least squares",
+    // A closed fit with as many control points as distinct data points
+    // interpolates them: its knots are those of interpolation.
+    let interpolates = match s.closed {
+        Some(l) => s.control_points == l.data,
+        None => plan.options.control_points.is_none(),
+    };
+    let method = match (interpolates, s.closed) {
+        (true, None) => "interpolation",
+        (false, None) => "least squares, end points interpolated",
+        (true, Some(_)) => "periodic interpolation",
+        (false, Some(_)) => "periodic least squares",
     };
     let mut lines: Vec<String> = plan.fuzzified.iter().cloned().collect();
     match (&plan.surface, s.net, s.closed) {
@@ -323,7 +329,7 @@ fn report(plan: &Plan, s: &FitSummary) -> Vec<String> {
     for (layer, d) in s.deviations.iter() {
         let spread = &s.spread_deviations[layer];
         let line = if layer == Layer::Crisp {
-            let note = if plan.options.control_points.is_none() {
+            let note = if interpolates {
                 "interpolated"
             } else {
                 "least squares"
