@@ -251,3 +251,54 @@ fn bad_closed_fits_are_one_line_each_and_write_nothing() {
         assert!(!out.exists(), "{message}");
     }
 }
+
+/// The example of docs/fitting.md ("Closed curves"): the pond's readings,
+/// and the areas the page quotes.
+#[test]
+fn the_pond_of_the_docs_encloses_the_areas_quoted() {
+    let readings =
+        Path::new(env!("CARGO_MANIFEST_DIR")).join("../../docs/fit-example/pond-readings.csv");
+    let dir = tempfile::tempdir().unwrap();
+    let job = dir.path().join("pond.json");
+    t2spline()
+        .arg("fit")
+        .arg(&readings)
+        .args([
+            "--closed",
+            "--tolerance",
+            "0.05",
+            "--alpha",
+            "0.5",
+            "-q",
+            "-o",
+        ])
+        .arg(&job)
+        .assert()
+        .code(0);
+    let out = t2spline()
+        .arg("measure")
+        .arg(&job)
+        .args(["--alpha", "0.5"])
+        .assert()
+        .code(0)
+        .get_output()
+        .stdout
+        .clone();
+    let m: Value = serde_json::from_slice(&out).unwrap();
+    let bounds = |f: &str| {
+        let l = &m["area"][f][0];
+        [l["min"].as_f64().unwrap(), l["max"].as_f64().unwrap()]
+    };
+    let quoted = [
+        ("lower", [1255.96, 1255.96], 0.005),
+        ("primary", [1247.8, 1264.0], 0.05),
+        ("upper", [1240.2, 1272.1], 0.05),
+    ];
+    for (f, want, tol) in quoted {
+        let got = bounds(f);
+        assert!(
+            (got[0] - want[0]).abs() <= tol && (got[1] - want[1]).abs() <= tol,
+            "{f}: {got:?}, the docs say {want:?}"
+        );
+    }
+}
