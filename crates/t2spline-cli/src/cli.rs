@@ -299,7 +299,8 @@ pub struct FitArgs {
     pub parametrization: String,
     /// Approximate the data by least squares with M control points (the end
     /// points interpolated) instead of interpolating them; for a net (a
-    /// surface), M,N control points in u and v (M alone: M in both).
+    /// surface), M,N control points in u and v (M alone: M in both); with
+    /// `--closed`, M distinct control points and no end points.
     #[arg(long, value_name = "M[,N]")]
     pub control_points: Option<String>,
     /// How the six non-crisp layers are fitted: `valid` fits the spreads as
@@ -309,6 +310,12 @@ pub struct FitArgs {
     #[arg(long, value_name = "MODE", default_value = "valid",
           value_parser = clap::builder::PossibleValuesParser::new(["valid", "independent"]))]
     pub fuzzy_fit: String,
+    /// Fit a closed curve: the data points are a loop (the chord from the
+    /// last back to the first counts; a last point repeating the first is
+    /// the same point), the knots periodic, the first p control points
+    /// repeated at the end, and the job says `"closed": true`. Curves only.
+    #[arg(long)]
+    pub closed: bool,
     /// Do not print the report on standard error.
     #[arg(short, long)]
     pub quiet: bool,

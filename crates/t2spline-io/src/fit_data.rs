@@ -62,9 +62,9 @@ impl FitData {
     /// file's `description`, its `order` or `degree` key, the weights and
     /// knots of the fit, the file's `alpha`, `type_reduction`, `lower_height`
     /// and `samples`,
-    /// and the control points (a number's `lower_height` only where it differs
-    /// from the top-level one). It parses back with
-    /// [`parse_job`](crate::parse_job).
+    /// `"closed": true` for a closed fit (`closed`), and the control points
+    /// (a number's `lower_height` only where it differs from the top-level
+    /// one). It parses back with [`parse_job`](crate::parse_job).
     ///
     /// # Examples
     /// ```
@@ -76,13 +76,13 @@ impl FitData {
     ///    "y": {"crisp": 1, "upper": [0, 3], "primary": [0.5, 2], "lower": [0.8, 1.5]}}
     /// ]}"#, "data.json")?;
     /// let outcome = data.points.fit(&FitOptions::interpolation(data.degree), FuzzyFitMode::Valid)?;
-    /// let job = data.job_json(&outcome.model.expect("a valid fit"));
+    /// let job = data.job_json(&outcome.model.expect("a valid fit"), false);
     /// assert_eq!(job["knots"], serde_json::json!([0.0, 0.0, 1.0, 1.0]));
     /// assert!(t2spline_io::parse_job(&job.to_string(), "job.json").is_ok());
     /// # Ok::<(), Box<dyn std::error::Error>>(())
     /// ```
     #[must_use]
-    pub fn job_json(&self, model: &Model) -> Value {
+    pub fn job_json(&self, model: &Model, closed: bool) -> Value {
         let mut out = Map::new();
         if let Some(d) = &self.description {
             out.insert("description".into(), json!(d));
@@ -113,6 +113,9 @@ impl FitData {
                     }
                     if let Some(n) = self.samples {
                         out.insert("samples".into(), json!(n));
+                    }
+                    if closed {
+                        out.insert("closed".into(), json!(true));
                     }
                     out.insert(key, value);
                 }

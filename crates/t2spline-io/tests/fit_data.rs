@@ -34,7 +34,7 @@ fn fit(
         .map_err(|e| data.fit_error(&e))?;
     Ok(Fitted {
         summary: outcome.summary,
-        job: outcome.model.map(|m| data.job_json(&m)),
+        job: outcome.model.map(|m| data.job_json(&m, options.closed)),
     })
 }
 

@@ -86,7 +86,7 @@ fn read_and_write(text: &str) {
         let options = FitOptions::interpolation(data.degree);
         if let Ok(outcome) = returns("fit", || data.points.fit(&options, FuzzyFitMode::Valid)) {
             if let Ok(model) = &outcome.model {
-                returns("FitData::job_json", || data.job_json(model));
+                returns("FitData::job_json", || data.job_json(model, false));
             }
         }
     }

@@ -205,6 +205,7 @@ pub(crate) fn fit<'py>(
         control_points: control_points
             .map(|m| crate::construct::count(m, "control_points", 1))
             .transpose()?,
+        closed: false,
     };
     let outcome = compute(py, move || {
         let points = match data.points()? {
@@ -372,6 +373,7 @@ pub(crate) fn fit_job<'py>(
                 degree: data.degree,
                 parametrization,
                 control_points: counts.map(|[m, _]| m),
+                closed: false,
             };
             (options, Some(surface))
         }
@@ -395,6 +397,7 @@ pub(crate) fn fit_job<'py>(
                 degree: data.degree,
                 parametrization,
                 control_points: m,
+                closed: false,
             };
             (options, None)
         }
@@ -406,7 +409,7 @@ pub(crate) fn fit_job<'py>(
         }
         .map_err(|e| data.fit_error(&e))?;
         let job = match outcome.model {
-            Ok(model) => data.job_json(&model),
+            Ok(model) => data.job_json(&model, false),
             Err(violations) => {
                 return Err(data.order_error(
                     &violations,

@@ -478,6 +478,45 @@ pub enum Error {
         count: usize,
     },
 
+    /// A closed curve of degree `p` around a loop of data needs at least
+    /// `p + 1` distinct data points; a last point repeating the first
+    /// (`repeated`) is the first again and does not count.
+    ///
+    /// ```
+    /// # use t2spline::Error;
+    /// # use t2spline::fit::{fit_curve, FitOptions};
+    /// let q = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 0.0]];
+    /// let e = fit_curve(&q, &FitOptions::interpolation(3).closed()).unwrap_err();
+    /// assert_eq!(e, Error::TooFewClosedDataPoints { degree: 3, count: 3, repeated: true });
+    /// assert_eq!(e.to_string(), "points: a closed curve of degree 3 needs at least 4 distinct data points around its loop, got 3 (the last point repeats the first and counts once)");
+    /// ```
+    #[error("points: a closed curve of degree {degree} needs at least {} distinct data points around its loop, got {count}{}", degree.saturating_add(1), if *repeated { " (the last point repeats the first and counts once)" } else { "" })]
+    TooFewClosedDataPoints {
+        /// The degree `p`.
+        degree: usize,
+        /// The number of distinct data points.
+        count: usize,
+        /// Whether the data's last point repeated the first.
+        repeated: bool,
+    },
+
+    /// A net of data points (a surface) cannot be fitted closed: closed fits
+    /// are for curves.
+    ///
+    /// ```
+    /// # use t2spline::{Error, Nt2Number, Nt2Point};
+    /// # use t2spline::fit::{FitOptions, FuzzyData, FuzzyFitMode};
+    /// let c = |x: f64| Nt2Number::try_crisp(x);
+    /// let net = (0..3)
+    ///     .map(|i| (0..3).map(|j| Ok(Nt2Point::new([c(i as f64)?, c(j as f64)?, c(0.0)?]))).collect())
+    ///     .collect::<Result<Vec<Vec<_>>, Error>>()?;
+    /// let e = FuzzyData::Net(net).fit(&FitOptions::interpolation(2).closed(), FuzzyFitMode::Valid).unwrap_err();
+    /// assert_eq!(e, Error::ClosedSurfaceFit);
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("closed: a net of data points is fitted by a surface, which cannot be closed; a closed fit is for the data points of a curve, taken as a loop")]
+    ClosedSurfaceFit,
+
     /// A station of a readings file has fewer readings than percentiles need
     /// ([`MIN_READINGS`](crate::fit::MIN_READINGS)).
     ///

@@ -308,6 +308,7 @@ fn options_strategy(points: usize) -> impl Strategy<Value = FitOptions> {
                 degree,
                 parametrization,
                 control_points,
+                closed: false,
             }
         })
 }

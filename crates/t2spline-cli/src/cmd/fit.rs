@@ -1,5 +1,5 @@
 //! `t2spline fit DATA.json [-o JOB.json] [--parametrization M] [--control-points M]
-//! [--fuzzy-fit valid|independent] [--alpha A] [-q]`; a readings file (CSV) is
+//! [--closed] [--fuzzy-fit valid|independent] [--alpha A] [-q]`; a readings file (CSV) is
 //! fuzzified first with `fuzzify`'s options.
 
 use std::path::PathBuf;
@@ -8,7 +8,7 @@ use anyhow::anyhow;
 use t2spline::fit::{
     Deviation, FitOptions, FitSummary, FuzzyData, FuzzyFitMode, Parametrization, SurfaceFitOptions,
 };
-use t2spline::{Alpha, Layer};
+use t2spline::{Alpha, Error, Layer};
 use t2spline_io::{is_readings, parse_data, parse_job, printable, to_json_pretty, FitData};
 
 use super::prepare::OptionError;
@@ -80,6 +80,28 @@ impl Plan {
             }
             (data, None)
         };
+        if args.closed {
+            if let FuzzyData::Net(_) = data.points {
+                return Err(OptionError {
+                    option: "--closed",
+                    message: format!(
+                        "only for the data points of a curve, taken as a loop; {} holds a net of data points (a surface), which is not fitted closed",
+                        printable(&data.source)
+                    ),
+                }
+                .into());
+            }
+            let distinct = data.points.loop_len();
+            if distinct <= data.degree {
+                return Err(data
+                    .fit_error(&Error::TooFewClosedDataPoints {
+                        degree: data.degree,
+                        count: distinct,
+                        repeated: distinct < data.len(),
+                    })
+                    .into());
+            }
+        }
         let counts = args
             .control_points
             .as_deref()
@@ -129,12 +151,20 @@ impl Plan {
                     }
                 };
                 if let Some(m) = m {
+                    let (max, what) = if args.closed {
+                        (
+                            data.points.loop_len(),
+                            "distinct data points around the loop of",
+                        )
+                    } else {
+                        (data.len(), "data points of")
+                    };
                     check_count(
                         m,
                         data.degree,
-                        data.len(),
+                        max,
                         "",
-                        &format!("data points of {}", printable(&data.source)),
+                        &format!("{what} {}", printable(&data.source)),
                     )?;
                 }
                 (m, None)
@@ -145,6 +175,7 @@ impl Plan {
                 degree: data.degree,
                 parametrization,
                 control_points,
+                closed: args.closed,
             },
             surface,
             data,
@@ -169,7 +200,7 @@ pub fn fit(args: FitArgs) -> anyhow::Result<()> {
         }
     }
     let job = match outcome.model {
-        Ok(model) => plan.data.job_json(&model),
+        Ok(model) => plan.data.job_json(&model, plan.options.closed),
         Err(violations) => {
             return Err(plan
                 .data
@@ -195,13 +226,21 @@ pub fn fit(args: FitArgs) -> anyhow::Result<()> {
 
 /// The lines of the report on standard error.
 fn report(plan: &Plan, s: &FitSummary) -> Vec<String> {
-    let method = match plan.options.control_points {
-        None => "interpolation".to_owned(),
-        Some(_) => "least squares, end points interpolated".to_owned(),
+    // A closed fit with as many control points as distinct data points
+    // interpolates them: its knots are those of interpolation.
+    let interpolates = match s.closed {
+        Some(l) => s.control_points == l.data,
+        None => plan.options.control_points.is_none(),
+    };
+    let method = match (interpolates, s.closed) {
+        (true, None) => "interpolation",
+        (false, None) => "least squares, end points interpolated",
+        (true, Some(_)) => "periodic interpolation",
+        (false, Some(_)) => "periodic least squares",
     };
     let mut lines: Vec<String> = plan.fuzzified.iter().cloned().collect();
-    match (&plan.surface, s.net) {
-        (Some(o), Some(net)) => lines.push(format!(
+    match (&plan.surface, s.net, s.closed) {
+        (Some(o), Some(net), _) => lines.push(format!(
             "{}: a net of {} × {} data points, degree {} × {}, {} parameters averaged over rows and columns: {method}, {} × {} control points, condition number {:.1e} (the larger of u and v)",
             printable(&plan.data.source),
             net.data[0],
@@ -213,6 +252,23 @@ fn report(plan: &Plan, s: &FitSummary) -> Vec<String> {
             net.control[1],
             s.condition,
         )),
+        (_, _, Some(l)) => {
+            let repeat = if l.repeated_last {
+                " (the last repeats the first and is taken as it)"
+            } else {
+                ""
+            };
+            lines.push(format!(
+                "{}: a closed loop of {} data points{repeat}, degree {}, {} parameters with the closing chord: {method}, periodic knots, {} control points and the first {} again at the end, condition number {:.1e}",
+                printable(&plan.data.source),
+                l.data,
+                plan.options.degree,
+                plan.options.parametrization,
+                s.control_points,
+                l.wrap,
+                s.condition,
+            ));
+        }
         _ => lines.push(format!(
             "{}: {} data points, degree {}, {} parameters: {method}, {} control points, condition number {:.1e}",
             printable(&plan.data.source),
@@ -273,7 +329,7 @@ fn report(plan: &Plan, s: &FitSummary) -> Vec<String> {
     for (layer, d) in s.deviations.iter() {
         let spread = &s.spread_deviations[layer];
         let line = if layer == Layer::Crisp {
-            let note = if plan.options.control_points.is_none() {
+            let note = if interpolates {
                 "interpolated"
             } else {
                 "least squares"

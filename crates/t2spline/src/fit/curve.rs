@@ -3,8 +3,10 @@
 //! interpolated (§9.4.1).
 
 use crate::error::Error;
-use crate::fit::design::Design;
-use crate::fit::knots::{approximation_knots, averaging_knots, check_counts};
+use crate::fit::knots::{
+    approximation_knots, averaging_knots, check_counts, check_loop_counts, periodic_knots,
+};
+use crate::fit::system::System;
 use crate::fit::Parametrization;
 use crate::nurbs::{KnotVector, NurbsCurve};
 
@@ -28,7 +30,17 @@ pub struct FitOptions {
     /// `None`: interpolate, one control point per data point (§9.2.1).
     /// `Some(n)`: least squares with `n` control points, `p + 1 ≤ n ≤` the
     /// number of data points, the end points interpolated (§9.4.1).
+    /// For a closed fit, `n` distinct control points, `p + 1 ≤ n ≤` the
+    /// number of distinct data points, and no end points.
     pub control_points: Option<usize>,
+    /// Whether the data are a loop and the curve closed: periodic knots
+    /// ([`periodic_knots`](crate::fit::periodic_knots)) on the loop
+    /// parameters ([`Parametrization::loop_parameters`]), the last `p`
+    /// control points repeating the first `p`, so that the curve is
+    /// `C^{p−1}` where it closes. A last data point whose crisp values equal
+    /// the first's (within [`CLOSURE_TOLERANCE`](crate::measure::CLOSURE_TOLERANCE)
+    /// of the data's size) is the first point again, not another.
+    pub closed: bool,
 }
 
 impl FitOptions {
@@ -39,6 +51,7 @@ impl FitOptions {
             degree,
             parametrization: Parametrization::ChordLength,
             control_points: None,
+            closed: false,
         }
     }
 
@@ -61,6 +74,30 @@ impl FitOptions {
         }
     }
 
+    /// The same options for a closed curve through a loop of data points
+    /// ([`FitOptions::closed`]).
+    ///
+    /// # Examples
+    /// ```
+    /// # use t2spline::fit::{fit_curve, FitOptions};
+    /// // Eight points of the unit circle: a closed cubic through them.
+    /// let q: Vec<[f64; 2]> = (0..8)
+    ///     .map(|k| { let a = f64::from(k) * std::f64::consts::FRAC_PI_4; [a.cos(), a.sin()] })
+    ///     .collect();
+    /// let fit = fit_curve(&q, &FitOptions::interpolation(3).closed())?;
+    /// assert_eq!(fit.curve.control_points().len(), 8 + 3); // the first 3 repeated
+    /// let (a, b) = (fit.curve.eval(0.0)?, fit.curve.eval(1.0)?);
+    /// assert!((a[0] - b[0]).abs() < 1e-14 && (a[1] - b[1]).abs() < 1e-14);
+    /// # Ok::<(), t2spline::Error>(())
+    /// ```
+    #[must_use]
+    pub fn closed(self) -> Self {
+        FitOptions {
+            closed: true,
+            ..self
+        }
+    }
+
     /// The parameters of `points` and the knot vector of the fit: averaging
     /// (Eq. 9.8) for interpolation, Eqs. 9.68–9.69 for least squares with
     /// fewer control points than data points. Least squares with as many
@@ -72,6 +109,9 @@ impl FitOptions {
         &self,
         points: &[[f64; D]],
     ) -> Result<(Vec<f64>, KnotVector), Error> {
+        if self.closed {
+            return self.loop_parameters_and_knots(points);
+        }
         check_counts(points.len(), self.degree)?;
         let params = self.parametrization.parameters(points)?;
         let knots = match self.control_points {
@@ -85,6 +125,44 @@ impl FitOptions {
             _ => averaging_knots(&params, self.degree)?,
         };
         Ok((params, knots))
+    }
+
+    /// [`FitOptions::parameters_and_knots`] of a closed fit: the loop
+    /// parameters of the distinct points (one fewer than `points` when the
+    /// last repeats the first) and the periodic knots.
+    fn loop_parameters_and_knots<const D: usize>(
+        &self,
+        points: &[[f64; D]],
+    ) -> Result<(Vec<f64>, KnotVector), Error> {
+        let distinct = loop_length(points);
+        check_loop_counts(distinct, self.degree, distinct < points.len())?;
+        let params = self.parametrization.loop_parameters(&points[..distinct])?;
+        let count = self.control_points.unwrap_or(distinct);
+        let knots = periodic_knots(&params, self.degree, count)?;
+        Ok((params, knots))
+    }
+}
+
+/// The number of distinct points of a loop: all of them, or all but the
+/// last when its crisp values are the first's within
+/// [`CLOSURE_TOLERANCE`](crate::measure::CLOSURE_TOLERANCE) of the points'
+/// largest extent along a coordinate (the rule by which a curve closes,
+/// docs/method.md §11).
+pub(crate) fn loop_length<const D: usize>(points: &[[f64; D]]) -> usize {
+    let n = points.len();
+    if n < 2 {
+        return n;
+    }
+    let size = crate::measure::extent(points);
+    let apart = points[0]
+        .iter()
+        .zip(&points[n - 1])
+        .map(|(a, b)| (a - b).abs())
+        .fold(0.0, f64::max);
+    if apart <= crate::measure::CLOSURE_TOLERANCE * size {
+        n - 1
+    } else {
+        n
     }
 }
 
@@ -140,10 +218,10 @@ pub fn fit_curve<const D: usize>(
 ) -> Result<CurveFit<D>, Error> {
     check_finite(points)?;
     let (params, knots) = options.parameters_and_knots(points)?;
-    let design = Design::new(&params, &knots)?;
-    let control = design.fit(points)?;
+    let design = System::new(&params, &knots, options.closed)?;
+    let control = design.fit(&points[..params.len()])?;
     check_within_limit(&control, None)?;
-    let weights = vec![1.0; design.count()];
+    let weights = vec![1.0; knots.count()];
     let curve = NurbsCurve::try_new(control, weights, knots)?;
     Ok(CurveFit {
         curve,

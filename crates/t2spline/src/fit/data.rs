@@ -51,6 +51,20 @@ pub struct FitSummary {
     /// Coordinates whose data mix lower heights, with the (smallest) height
     /// given to the control points.
     pub mixed_heights: Vec<(Axis, Height)>,
+    /// For a closed curve: its loop. `control_points` then counts the
+    /// distinct control points (the curve repeats the first `p` at its end).
+    pub closed: Option<LoopCounts>,
+}
+
+/// The loop of a closed fit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LoopCounts {
+    /// The distinct data points around the loop.
+    pub data: usize,
+    /// Whether the data's last point repeated the first and was taken as it.
+    pub repeated_last: bool,
+    /// The control points the curve repeats at its end: its degree `p`.
+    pub wrap: usize,
 }
 
 /// The shape of a fitted net: stations and control points in u and in v.
@@ -81,6 +95,34 @@ impl FuzzyData {
             FuzzyData::Planar(p) => p.len(),
             FuzzyData::Spatial(p) => p.len(),
             FuzzyData::Net(rows) => rows.iter().map(Vec::len).sum(),
+        }
+    }
+
+    /// The number of distinct data points of a curve taken as a loop: all
+    /// of them, or all but the last when its crisp values repeat the first's
+    /// ([`FitOptions::closed`]); of a net, all of its points.
+    ///
+    /// # Examples
+    /// ```
+    /// # use t2spline::fit::FuzzyData;
+    /// # use t2spline::{Nt2Number, Nt2Point};
+    /// let p = |x: f64, y: f64| Ok::<_, t2spline::Error>(Nt2Point::new([Nt2Number::try_crisp(x)?, Nt2Number::try_crisp(y)?]));
+    /// let square = vec![p(0.0, 0.0)?, p(1.0, 0.0)?, p(1.0, 1.0)?, p(0.0, 1.0)?];
+    /// assert_eq!(FuzzyData::Planar(square.clone()).loop_len(), 4);
+    /// let again = square.into_iter().chain([p(0.0, 0.0)?]).collect();
+    /// assert_eq!(FuzzyData::Planar(again).loop_len(), 4);
+    /// # Ok::<(), t2spline::Error>(())
+    /// ```
+    #[must_use]
+    pub fn loop_len(&self) -> usize {
+        fn crisp<const D: usize>(p: &[Nt2Point<D>]) -> usize {
+            let q: Vec<[f64; D]> = p.iter().map(Nt2Point::crisp).collect();
+            super::curve::loop_length(&q)
+        }
+        match self {
+            FuzzyData::Planar(p) => crisp(p),
+            FuzzyData::Spatial(p) => crisp(p),
+            FuzzyData::Net(_) => self.len(),
         }
     }
 
@@ -123,6 +165,7 @@ impl FuzzyData {
             FuzzyData::Spatial(p) => {
                 outcome(p.len(), &fit_fuzzy(p, options, mode)?, Model::Spatial)
             }
+            FuzzyData::Net(_) if options.closed => Err(Error::ClosedSurfaceFit),
             FuzzyData::Net(_) => self.fit_net(
                 &SurfaceFitOptions {
                     degree: [options.degree; 2],
@@ -162,6 +205,7 @@ impl FuzzyData {
             degree: options.degree[0],
             parametrization: options.parametrization,
             control_points: options.control_points.map(|[n, _]| n),
+            closed: false,
         };
         match self {
             FuzzyData::Planar(_) | FuzzyData::Spatial(_) => self.fit(&curve, mode),
@@ -195,7 +239,7 @@ fn outcome<const D: usize>(
     Ok(FitOutcome {
         summary: FitSummary {
             data_points,
-            control_points: fit.knots().count(),
+            control_points: fit.distinct_control_points(),
             mode: fit.mode(),
             condition: fit.condition(),
             deviations: *fit.deviations(),
@@ -203,6 +247,11 @@ fn outcome<const D: usize>(
             independent_violations: fit.independent_violations().to_vec(),
             mixed_heights,
             net: None,
+            closed: fit.is_closed().then(|| LoopCounts {
+                data: fit.params().len(),
+                repeated_last: fit.repeated_last(),
+                wrap: fit.knots().count() - fit.distinct_control_points(),
+            }),
         },
         model,
     })
@@ -226,6 +275,7 @@ fn net_outcome(rows: &[Vec<Nt2Point<3>>], fit: &FuzzySurfaceFit) -> Result<FitOu
             spread_deviations: *fit.spread_deviations(),
             independent_violations: fit.independent_violations().to_vec(),
             mixed_heights,
+            closed: None,
             net: Some(NetCounts {
                 data: [rows.len(), rows.first().map_or(0, Vec::len)],
                 control,

@@ -45,15 +45,7 @@ impl Design {
     /// the system exceeds [`MAX_CONDITION`].
     pub(crate) fn new(params: &[f64], knots: &KnotVector) -> Result<Self, Error> {
         let (p, n) = (knots.degree(), knots.count());
-        let rows: Vec<(usize, Vec<f64>)> = params
-            .iter()
-            .map(|&t| {
-                let span = knots.find_span(t);
-                let mut values = vec![0.0; p + 1];
-                basis_functions(knots.as_slice(), p, span, t, &mut values);
-                (span - p, values)
-            })
-            .collect();
+        let rows = basis_rows(params, knots);
         let m = rows.len() - 1;
         let mut interior = BandMatrix::new(n.saturating_sub(2), p + 1);
         for (first, values) in &rows[1..m] {
@@ -157,19 +149,41 @@ impl Design {
 
     /// The curve values `Σᵢ Nᵢ,ₚ(ūₖ)·Pᵢ` at every parameter.
     pub(crate) fn values<const R: usize>(&self, control: &[[f64; R]]) -> Vec<[f64; R]> {
-        self.rows
-            .iter()
-            .map(|(first, basis)| {
-                let mut out = [0.0; R];
-                for (b, p) in basis.iter().zip(&control[*first..]) {
-                    for (o, x) in out.iter_mut().zip(p) {
-                        *o += b * x;
-                    }
-                }
-                out
-            })
-            .collect()
+        curve_values(&self.rows, control)
     }
+}
+
+/// For each parameter, the index of the first control point that counts
+/// there and the `p + 1` basis values `N_{first,p} … N_{first+p,p}`.
+pub(crate) fn basis_rows(params: &[f64], knots: &KnotVector) -> Vec<(usize, Vec<f64>)> {
+    let p = knots.degree();
+    params
+        .iter()
+        .map(|&t| {
+            let span = knots.find_span(t);
+            let mut values = vec![0.0; p + 1];
+            basis_functions(knots.as_slice(), p, span, t, &mut values);
+            (span - p, values)
+        })
+        .collect()
+}
+
+/// The curve values `Σᵢ Nᵢ,ₚ(ūₖ)·Pᵢ` at the parameters of `rows`.
+pub(crate) fn curve_values<const R: usize>(
+    rows: &[(usize, Vec<f64>)],
+    control: &[[f64; R]],
+) -> Vec<[f64; R]> {
+    rows.iter()
+        .map(|(first, basis)| {
+            let mut out = [0.0; R];
+            for (b, p) in basis.iter().zip(&control[*first..]) {
+                for (o, x) in out.iter_mut().zip(p) {
+                    *o += b * x;
+                }
+            }
+            out
+        })
+        .collect()
 }
 
 /// Renumbers the column of a [`Error::SingularFit`] from the interior system

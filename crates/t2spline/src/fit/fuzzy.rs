@@ -6,7 +6,7 @@ use std::str::FromStr;
 
 use crate::error::Error;
 use crate::fit::curve::{check_finite, check_within_limit};
-use crate::fit::design::Design;
+use crate::fit::system::System;
 use crate::fit::FitOptions;
 use crate::fuzzy::{Axis, Height, Layer, Layers, Nt2Number, Nt2Point, RULES};
 use crate::nurbs::KnotVector;
@@ -100,6 +100,11 @@ pub struct FuzzyFit<const D: usize> {
     spread_deviations: Layers<Deviation>,
     independent_violations: Vec<OrderViolation>,
     condition: f64,
+    /// How many of the last control points repeat the first: `p` for a
+    /// closed fit, 0 for an open one.
+    wrap: usize,
+    /// Whether the data's last point repeated the first (closed fits only).
+    repeated_last: bool,
 }
 
 /// Fits a fuzzy curve (weights 1) to fuzzy data points.
@@ -140,10 +145,16 @@ pub fn fit_fuzzy<const D: usize>(
     options: &FitOptions,
     mode: FuzzyFitMode,
 ) -> Result<FuzzyFit<D>, Error> {
-    let layer_data = Layers::from_fn(|l| data.iter().map(|p| p.layer(l)).collect::<Vec<_>>());
+    let mut layer_data = Layers::from_fn(|l| data.iter().map(|p| p.layer(l)).collect::<Vec<_>>());
     check_finite(&layer_data[Layer::Crisp])?;
     let (params, knots) = options.parameters_and_knots(&layer_data[Layer::Crisp])?;
-    let design = Design::new(&params, &knots)?;
+    // A closed fit takes a last point repeating the first as the first:
+    // the loop has one data point fewer than the file.
+    let repeated_last = params.len() < data.len();
+    for layer in Layer::ALL {
+        layer_data[layer].truncate(params.len());
+    }
+    let design = System::new(&params, &knots, options.closed)?;
     let crisp = design.fit(&layer_data[Layer::Crisp])?;
     let mut independent = Layers::from_fn(|_| Vec::new());
     for layer in Layer::ALL {
@@ -153,7 +164,8 @@ pub fn fit_fuzzy<const D: usize>(
             design.fit(&layer_data[layer])?
         };
     }
-    let independent_violations = violations(&independent);
+    let wrap = if options.closed { knots.degree() } else { 0 };
+    let independent_violations = violations(&independent, wrap);
     let control = match mode {
         FuzzyFitMode::Independent => independent,
         FuzzyFitMode::Valid => nested_spreads(&design, &layer_data, crisp)?,
@@ -187,12 +199,14 @@ pub fn fit_fuzzy<const D: usize>(
         spread_deviations,
         independent_violations,
         condition: design.condition(),
+        wrap,
+        repeated_last,
     })
 }
 
 /// The control values of [`FuzzyFitMode::Valid`].
 fn nested_spreads<const D: usize>(
-    design: &Design,
+    design: &System,
     data: &Layers<Vec<[f64; D]>>,
     crisp: Vec<[f64; D]>,
 ) -> Result<Layers<Vec<[f64; D]>>, Error> {
@@ -239,10 +253,15 @@ fn nested_spreads<const D: usize>(
     Ok(control)
 }
 
-/// Every place where the seven control values break the order of docs/method.md §1.
-pub(crate) fn violations<const D: usize>(control: &Layers<Vec<[f64; D]>>) -> Vec<OrderViolation> {
+/// Every place where the seven control values break the order of docs/method.md §1;
+/// the last `wrap` control points, which repeat the first, are not counted
+/// again.
+pub(crate) fn violations<const D: usize>(
+    control: &Layers<Vec<[f64; D]>>,
+    wrap: usize,
+) -> Vec<OrderViolation> {
     let mut out = Vec::new();
-    for i in 0..control[Layer::Crisp].len() {
+    for i in 0..control[Layer::Crisp].len().saturating_sub(wrap) {
         for axis in Axis::of::<D>() {
             let v = Layer::ALL.map(|l| control[l][i][axis.index()]);
             for (r, rule) in RULES.iter().enumerate() {
@@ -387,7 +406,29 @@ impl<const D: usize> FuzzyFit<D> {
     /// empty for [`FuzzyFitMode::Valid`].
     #[must_use]
     pub fn violations(&self) -> Vec<OrderViolation> {
-        violations(&self.control)
+        violations(&self.control, self.wrap)
+    }
+
+    /// Whether the curve is closed: periodic knots, its last `p` control
+    /// points repeating its first `p` ([`FitOptions::closed`]).
+    #[must_use]
+    pub fn is_closed(&self) -> bool {
+        self.wrap > 0
+    }
+
+    /// The number of distinct control points: all of them for an open
+    /// curve, all but the last `p` (which repeat the first) for a closed one.
+    #[must_use]
+    pub fn distinct_control_points(&self) -> usize {
+        self.knots.count() - self.wrap
+    }
+
+    /// For a closed fit, whether the data's last point repeated the first
+    /// (its crisp values within [`CLOSURE_TOLERANCE`](crate::measure::CLOSURE_TOLERANCE)
+    /// of the data's size) and was taken as the same point.
+    #[must_use]
+    pub fn repeated_last(&self) -> bool {
+        self.repeated_last
     }
 
     /// Where fitting every layer on its own breaks the order of docs/method.md §1 for

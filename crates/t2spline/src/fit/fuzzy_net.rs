@@ -102,7 +102,7 @@ pub fn fit_fuzzy_surface(
     let flat = |net: &Layers<Vec<Vec<[f64; 3]>>>| -> Layers<Vec<[f64; 3]>> {
         Layers::from_fn(|l| net[l].concat())
     };
-    let independent_violations = violations(&flat(&independent));
+    let independent_violations = violations(&flat(&independent), 0);
     let control = match mode {
         FuzzyFitMode::Independent => independent,
         FuzzyFitMode::Valid => nested_spreads(&design, &layer_data, &crisp)?,
@@ -277,7 +277,7 @@ impl FuzzySurfaceFit {
     /// [`FuzzyFitMode::Valid`].
     #[must_use]
     pub fn violations(&self) -> Vec<OrderViolation> {
-        violations(&self.control)
+        violations(&self.control, 0)
     }
 
     /// Where fitting every layer on its own breaks the order, in both modes.

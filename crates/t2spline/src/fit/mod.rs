@@ -4,7 +4,10 @@
 //! - [`Parametrization`]: parameters of the data points (Eqs. 9.3–9.6).
 //! - [`averaging_knots`] (Eq. 9.8) and [`approximation_knots`] (Eqs. 9.68–9.69).
 //! - [`fit_curve`]: a crisp B-spline through the data (Algorithm A9.1) or
-//!   approximating them with the end points interpolated (§9.4.1).
+//!   approximating them with the end points interpolated (§9.4.1); or, with
+//!   [`FitOptions::closed`], a closed curve around a loop of data: loop
+//!   parameters with the closing chord, [`periodic_knots`], the wrapped
+//!   columns folded (`cyclic.rs`).
 //! - [`fuzzify`]: fuzzy data points from repeated readings (median,
 //!   quartiles, 10th–90th percentiles, extremes widened by the instrument's
 //!   accuracy; [`FuzzifyRule`]).
@@ -17,7 +20,8 @@
 //!   fitted on its own and checked ([`FuzzyFitMode::Independent`]).
 //!
 //! All linear systems are banded and solved by Givens QR
-//! (`banded.rs`); the valid fuzzy fit adds non-negative least squares
+//! (`banded.rs`; a closed fit's cyclic band becomes a plain band of width
+//! `2p + 1` once its columns are interleaved); the valid fuzzy fit adds non-negative least squares
 //! (Lawson–Hanson, `nnls.rs`).
 //!
 //! ```
@@ -32,6 +36,7 @@
 
 pub(crate) mod banded;
 mod curve;
+mod cyclic;
 mod data;
 mod design;
 mod fuzzify;
@@ -42,15 +47,16 @@ mod net;
 mod nnls;
 mod parametrization;
 mod surface;
+mod system;
 
 pub use curve::{fit_curve, CurveFit, FitOptions};
-pub use data::{FitOutcome, FitSummary, FuzzyData, NetCounts};
+pub use data::{FitOutcome, FitSummary, FuzzyData, LoopCounts, NetCounts};
 pub use fuzzify::{
     fuzzify, fuzzify_number, percentile, FuzzifyRule, Readings, DEFAULT_LOWER_HEIGHT, MIN_READINGS,
 };
 pub use fuzzy::{fit_fuzzy, Deviation, FuzzyFit, FuzzyFitMode, OrderViolation};
 pub use fuzzy_net::{fit_fuzzy_surface, FuzzySurfaceFit};
-pub use knots::{approximation_knots, averaging_knots};
+pub use knots::{approximation_knots, averaging_knots, periodic_knots};
 pub use net::SurfaceFitOptions;
 pub use parametrization::Parametrization;
 pub use surface::{fit_surface, SurfaceFit};

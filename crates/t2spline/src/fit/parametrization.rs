@@ -113,6 +113,82 @@ impl Parametrization {
     }
 }
 
+impl Parametrization {
+    /// The parameters `ū₀ … ū_{N−1}` of `points` taken as a loop (at least
+    /// two, the last not repeating the first): the closing chord from
+    /// `Q_{N−1}` back to `Q₀` counts, so the loop's parameter runs once
+    /// around `[0, 1)` and `ū_N = 1` is `Q₀` again.
+    ///
+    /// ```text
+    /// uniform:      ūₖ = k/N
+    /// chord length: ūₖ = sₖ/d,  sₖ = Σ_{i<k} |Q_{i+1} − Qᵢ|,  d = s_{N−1} + |Q₀ − Q_{N−1}|
+    /// centripetal:  the same with the square roots of the chords
+    /// ```
+    /// (The NURBS Book Eqs. 9.3–9.6 around the closed polygon; FITPACK's
+    /// `percur` and scipy's `splprep(per=1)` take the same chord-length
+    /// parameters of a loop whose last point repeats the first.)
+    ///
+    /// # Errors
+    /// As [`Parametrization::parameters`]; the closing pair is named
+    /// `points[N−1]` and `points[0]`.
+    ///
+    /// # Examples
+    /// ```
+    /// # use t2spline::fit::Parametrization;
+    /// // A 3-4-5 triangle: chords 3, 4 and the closing 5.
+    /// let q = [[0.0, 0.0], [3.0, 0.0], [3.0, 4.0]];
+    /// assert_eq!(Parametrization::ChordLength.loop_parameters(&q)?, vec![0.0, 0.25, 7.0 / 12.0]);
+    /// assert_eq!(Parametrization::Uniform.loop_parameters(&q)?, vec![0.0, 1.0 / 3.0, 2.0 / 3.0]);
+    /// # Ok::<(), t2spline::Error>(())
+    /// ```
+    pub fn loop_parameters<const D: usize>(self, points: &[[f64; D]]) -> Result<Vec<f64>, Error> {
+        let n = points.len();
+        if n < 2 {
+            return Err(Error::TooFewDataPoints {
+                degree: 1,
+                count: n,
+            });
+        }
+        if self == Parametrization::Uniform {
+            return Ok((0..n).map(|k| k as f64 / n as f64).collect());
+        }
+        let mut cumulative = Vec::with_capacity(n + 1);
+        cumulative.push(0.0);
+        let mut total = 0.0;
+        for k in 0..n {
+            let next = (k + 1) % n;
+            let chord = distance(&points[k], &points[next]);
+            if chord == 0.0 {
+                return Err(Error::CoincidentDataPoints {
+                    first: k,
+                    second: next,
+                });
+            }
+            total += match self {
+                Parametrization::Centripetal => chord.sqrt(),
+                _ => chord,
+            };
+            cumulative.push(total);
+        }
+        if !total.is_finite() {
+            return Err(Error::NotFinite {
+                place: crate::Place::NONE,
+                what: "total chord length",
+                value: total,
+            });
+        }
+        // ū_N = d/d = 1 exactly; it closes the loop and is not returned.
+        let u: Vec<f64> = cumulative.into_iter().map(|s| s / total).collect();
+        match u.windows(2).position(|w| w[0] >= w[1]) {
+            Some(k) => Err(Error::CoincidentDataPoints {
+                first: k,
+                second: (k + 1) % n,
+            }),
+            None => Ok(u[..n].to_vec()),
+        }
+    }
+}
+
 impl fmt::Display for Parametrization {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(self.name())
@@ -178,6 +254,28 @@ mod tests {
         assert!(Parametrization::Centripetal.parameters(&q).is_err());
         // Uniform parameters do not look at the geometry.
         assert!(Parametrization::Uniform.parameters(&q).is_ok());
+    }
+
+    #[test]
+    fn loop_parameters_count_the_closing_chord() {
+        // A unit square: four equal chords, the closing one included.
+        let q = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
+        for method in Parametrization::ALL {
+            assert_eq!(
+                method.loop_parameters(&q).unwrap(),
+                vec![0.0, 0.25, 0.5, 0.75],
+                "{method}"
+            );
+        }
+        // The closing pair is named when it coincides.
+        let q = [[0.0, 0.0], [1.0, 0.0], [0.0, 0.0]];
+        assert_eq!(
+            Parametrization::ChordLength.loop_parameters(&q),
+            Err(Error::CoincidentDataPoints {
+                first: 2,
+                second: 0
+            })
+        );
     }
 
     #[test]

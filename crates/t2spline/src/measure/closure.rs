@@ -119,7 +119,7 @@ fn point_at<const D: usize>(c: &FuzzyCurve<D>, crisp: &[[f64; D]], t: f64) -> [f
 
 /// The largest extent of the points along a coordinate (1 if they are all
 /// one point, so that the tolerance stays relative to something).
-fn extent<const D: usize>(points: &[[f64; D]]) -> f64 {
+pub(crate) fn extent<const D: usize>(points: &[[f64; D]]) -> f64 {
     let mut size: f64 = 0.0;
     for d in 0..D {
         let (lo, hi) = points
@@ -145,7 +145,11 @@ fn wrap(knots: &KnotVector, p: usize) -> usize {
     }
     let k = knots.as_slice();
     let m = k.len();
-    if p == 0 || m < 4 * p + 1 {
+    // m = n + 2p + 1 knots for n + p control points; the comparison below is
+    // span i against span i + n, which needs n ≥ 1 (for n < 2p the two
+    // ranges overlap, and the test is still that the spacing repeats with
+    // period n: a closed fit of degree p through p + 1 points has n = p + 1).
+    if p == 0 || m < 2 * p + 2 {
         return 0;
     }
     let scale = (k[m - 1] - k[0]).abs().max(f64::MIN_POSITIVE);

@@ -48,6 +48,7 @@ mod volume;
 
 pub use area::{AreaKind, MAX_ENUMERATED_AREA_VARIABLES};
 pub use bracket::Bracket;
+pub(crate) use closure::extent;
 pub use closure::{Closure, CLOSURE_TOLERANCE};
 pub use length::{LENGTH_MIN_TOLERANCE, MAX_ENUMERATED_LENGTH_VARIABLES};
 pub use measures::{
