@@ -189,6 +189,22 @@ BAD_NET_READINGS = (
 BAD_READINGS = "station,x,y\nS01,1.0,1.0\nS01,1.0,abc\nS02,2.0,2.0\nS01,1.5,1.5\nS01,2.0,1.0\n"
 
 
+def _small_net() -> str:
+    def n(c: float) -> Dict[str, Any]:
+        return {"crisp": c, "upper": [c - 0.5, c + 0.5], "primary": [c - 0.25, c + 0.25],
+                "lower": [c - 0.1, c + 0.1]}
+
+    rows = [[{"x": n(j), "y": n(i), "z": n(i * j)} for j in range(4)] for i in range(3)]
+    head = ['{', '  "degree": [3, 3],', '  "lower_height": 0.5,', '  "alpha": 0.5,', '  "samples": 5,',
+            '  "type_reduction": "paper",', '  "description": "three rows of four stations",',
+            '  "points": [']
+    body = ["    " + json.dumps(r) + ("," if i < 2 else "") for i, r in enumerate(rows)]
+    return "\n".join([*head, *body, "  ]", "}", ""])
+
+
+SMALL_NET = _small_net()
+
+
 def _big_data() -> str:
     """crates/t2spline-cli/tests/fit.rs: data near 1e150 whose interpolant
     swings beyond it."""
@@ -223,6 +239,13 @@ def _write_inputs(work: Path, commands: str, cli: Path) -> None:
     shutil.copy(EXAMPLE, work / "lines" / "a.json")
     (work / "lines" / "b.json").write_text('{\n  "order": 2,\n  "alhpa": 0.5\n}\n')
     shutil.copy(ROOT / "fixtures" / "spiral-3d.json", work / "lines" / "c.json")
+    if "fit data.json" in commands:
+        # docs/jobs.md: a net of 3 rows, too few for degree 3, `points` on line 8.
+        (work / "data.json").write_text(SMALL_NET)
+    if "dem.asc" in commands:
+        # docs/fitting.md: an ESRI grid of 4 × 5 cells, in blocks of 2 × 2.
+        cells = "".join(" ".join(str(5 * r + c) for c in range(5)) + "\n" for r in range(4))
+        (work / "dem.asc").write_text("ncols 5\nnrows 4\nxllcorner 0\nyllcorner 0\ncellsize 1\n" + cells)
     if "out/beach-data.json" in commands:
         # The first command of the beach example (README, docs/fitting.md).
         (work / "out").mkdir()
@@ -420,18 +443,19 @@ class Program:
 
     def __init__(self, cli: Path) -> None:
         self.cli = str(cli)
-        self.done: Dict[Tuple[str, ...], subprocess.CompletedProcess[str]] = {}
+        self.done: Dict[Tuple[Tuple[str, ...], str], subprocess.CompletedProcess[str]] = {}
 
-    def run(self, *args: str) -> "subprocess.CompletedProcess[str]":
-        if args not in self.done:
-            self.done[args] = subprocess.run(
-                [self.cli, *args], cwd=ROOT, capture_output=True, text=True, timeout=120
+    def run(self, *args: str, stdin: str = "") -> "subprocess.CompletedProcess[str]":
+        if (args, stdin) not in self.done:
+            self.done[args, stdin] = subprocess.run(
+                [self.cli, *args], cwd=ROOT, input=stdin, capture_output=True, text=True,
+                timeout=120,
             )
-        return self.done[args]
+        return self.done[args, stdin]
 
-    def out(self, *args: str) -> str:
+    def out(self, *args: str, stdin: str = "") -> str:
         """The standard output of a command that must succeed."""
-        done = self.run(*args)
+        done = self.run(*args, stdin=stdin)
         assert done.returncode == 0, (args, done.stderr)
         return str(done.stdout)
 
@@ -513,6 +537,21 @@ def readings_per_station() -> Dict[str, int]:
     return count
 
 
+def last_point_box(p: Program) -> List[float]:
+    """The upper cut at level 0 of the example's last control point:
+    x from, x to, y from, y to."""
+    layers = p.json("run", EX, "--samples", "3")["control_points"]["layers"]
+    left, right = layers["upper_left"][-1], layers["upper_right"][-1]
+    return [left[0], right[0], left[1], right[1]]
+
+
+def upper_box_side(p: Program) -> float:
+    layers = p.json("run", EX, "--samples", "3")["control_points"]["layers"]
+    sides = [max(q[k] for q in layers["upper_right"]) - min(q[k] for q in layers["upper_left"])
+             for k in range(2)]
+    return round(max(sides), 12)
+
+
 def worked_value(p: Program) -> List[Any]:
     """The x number of the example's first control point through the four
     stages, at alpha 0.8."""
@@ -536,6 +575,22 @@ def error_max(p: Program, *args: str) -> float:
 def section(p: Program, *args: str) -> List[Dict[str, Any]]:
     levels: List[Dict[str, Any]] = p.json("section", *args)["levels"]
     return levels
+
+
+def terrain_grades(p: Program, z: str) -> List[str]:
+    """`membership` of the terrain at (250, 200, z): upper, primary, lower."""
+    lines = p.out("membership", TERRAIN, "-", stdin=f"x,y,z\n250,200,{z}\n").splitlines()
+    assert lines[0] == "x,y,z,upper,primary,lower", lines
+    return lines[1].split(",")[3:]
+
+
+def envelope_bands(p: Program) -> int:
+    """The bands of the seabed's GeoTIFF at 3 levels: one per level,
+    function and bound, as the table's rows of one cell."""
+    rows = p.out("envelope", SEABED, "--grid", "1,1", "--levels", "3").splitlines()
+    header = rows[0].split(",")
+    assert header == ["x", "y", "alpha", "membership", "lower", "upper"], header
+    return 2 * len({tuple(r.split(",")[2:4]) for r in rows[1:]})
 
 
 def grade(p: Program, row: str, column: str) -> float:
@@ -638,6 +693,9 @@ CLAIMS: List[Claim] = [
           lambda p: [error_max(p, EX, "--alpha", "0.6"), error_max(p, EX, "--alpha", "0.600001")]),
     Claim("README.md", "same distance over (u, v); the largest, {:.4f} m, is at the corner",
           lambda p: [error_max(p, TERRAIN)]),
+    Claim("docs/fitting.md", "13 stations from the dune crest to the waterline, each surveyed {} times "
+          "with RTK-GNSS on a pole ({} rows)",
+          lambda p: [*set(readings_per_station().values()), sum(readings_per_station().values())]),
     Claim("README.md", "13 stations, 20 readings each",
           lambda p: [len(json.loads((ROOT / FIT_DATA).read_text())["points"]),
                      *{n for n in readings_per_station().values()}]),
@@ -682,6 +740,17 @@ CLAIMS: List[Claim] = [
     ],
     Claim("docs/set.md", "| 1 | {:.5f} | {:.5f} | — |",
           lambda p: list(region_areas(p, "1").values())),
+    Claim("docs/set.md",
+          "whose upper cut at alpha 0 is the box `[{:g}, {:g}] × [{:g}, {:g}]`: the curve can end "
+          "anywhere in that rectangle, not only on the segment from `({:g}, {:g})` to `({:g}, {:g})`.",
+          lambda p: last_point_box(p) + last_point_box(p)[::2] + last_point_box(p)[1::2]),
+    Claim("docs/set.md", "(the largest side of the box of the upper cuts at level 0, {:g} on the example",
+          lambda p: [upper_box_side(p)]),
+    Claim("docs/set.md",
+          "`(250, 200, 111.745625)`, on the crisp surface, has grades {:g}, {:g} and {:g}; "
+          "`(250, 200, 111.26)`, just inside the upper interval of the section below, {:.3f}.",
+          lambda p: [*map(float, terrain_grades(p, "111.745625")),
+                     float(terrain_grades(p, "111.26")[0])]),
     Claim("docs/set.md", "(its height at x = 3.5 is {:.3f})",
           lambda p: [section(p, EX, "--x", "3.5", "--alpha", "1")[0]["upper"][0][0]]),
     Claim("docs/set.md", "its upper grade is {} (the x number",
@@ -724,6 +793,8 @@ CLAIMS: List[Claim] = [
                      for m in ("upper", "primary", "lower")]),
     Claim("docs/terrain.md", "at alpha 0 the upper band is {} km²",
           lambda p: [spaced(round(contour_areas(p, "--levels", "3")[(0.0, "upper")]["area"] / 1e6, -3))]),
+    Claim("docs/terrain.md", "and bound, {} here (levels 0, 0.5 and 1;",
+          lambda p: [envelope_bands(p)]),
     Claim("docs/terrain.md", "here 239 × 178 cells of about {:.1f} km), grown to hold the truth",
           lambda p: [contour_areas(p)[(0.5, "upper")]["tolerance"] / math.sqrt(2) / 1e3]),
     Claim("docs/terrain.md",
