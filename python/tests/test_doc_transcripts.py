@@ -33,10 +33,16 @@ land in that folder. The shown output is compared with the real output
 - `VOLATILE` transcripts (timings) match any number where a number is
   shown; everything else is checked as above.
 
+**Excerpts.** `EXCERPTS` are ```json blocks that show a command's output or
+a file the program wrote without a `$` prompt; they are compared by the
+same rules (a piece from the middle of a file as if `…` stood around it).
+
 **Prose.** `CLAIMS` lists numbers the pages quote outside transcripts: the
 phrase (with format fields, the rounding shown) that must occur in the page,
 whitespace collapsed, once filled with the values computed from the
-program's output of the claim's command.
+program's output of the commands its function runs (from the repository
+root). Numbers that are timings or sizes of files (docs/performance.md, the
+README's speed table, docs/figures.md's report sizes) are not claims here.
 """
 
 from __future__ import annotations
@@ -549,7 +555,7 @@ def upper_box_side(p: Program) -> float:
     layers = p.json("run", EX, "--samples", "3")["control_points"]["layers"]
     sides = [max(q[k] for q in layers["upper_right"]) - min(q[k] for q in layers["upper_left"])
              for k in range(2)]
-    return round(max(sides), 12)
+    return round(float(max(sides)), 12)
 
 
 def worked_value(p: Program) -> List[Any]:
