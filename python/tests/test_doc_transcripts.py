@@ -381,13 +381,19 @@ def check_output(where: str, shown: List[str], real: str, volatile: bool) -> Non
         return
     pos = 0
     for k, fragment in enumerate(fragments):
+        last = k == len(fragments) - 1
         if k == 0 and anchored_start:
             at = 0 if find(fragment, have[: len(fragment)], 0, volatile) == 0 else -1
+        elif last and anchored_end:
+            # The last part ends the output (the first occurrence might not).
+            at = len(have) - len(fragment)
+            at = at if at >= pos and find(fragment, have, at, volatile) == at else -1
         else:
             at = find(fragment, have, pos, volatile)
+        anchor = " at its start" if k == 0 and anchored_start else " at its end" if last and anchored_end else ""
         assert at >= 0, (
             f"{where}: the shown output's part\n  {show(fragment)}\n"
-            f"is not in the real output{' at its start' if k == 0 and anchored_start else ''}"
+            f"is not in the real output{anchor}"
             f" after\n  {show(have[max(0, pos - 12):pos])}\nwhich goes on\n  {show(have[pos:pos + 60])}"
         )
         pos = at + len(fragment)
@@ -875,6 +881,11 @@ class Excerpt:
 EXCERPTS = [
     Excerpt("docs/jobs.md", "writes (abridged; the whole file is",
             lambda p: p.out("run", EX, "--samples", "3")),
+    # The README's tour of the job file: the shipped jobs, abridged.
+    Excerpt("README.md", "`examples/paper-alg-1-1.json` (abridged):",
+            lambda p: (ROOT / EX).read_text(encoding="utf-8")),
+    Excerpt("README.md", "abridged from `examples/fuzzy-cylinder.json`",
+            lambda p: (ROOT / "examples" / "fuzzy-cylinder.json").read_text(encoding="utf-8")),
     # `out/beach-data.json` is the shipped data file, byte for byte (below).
     Excerpt("docs/fitting.md", "One of its stations",
             lambda p: (ROOT / FIT_DATA).read_text(encoding="utf-8"), part=True),
