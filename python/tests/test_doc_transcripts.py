@@ -884,6 +884,8 @@ EXCERPTS = [
     # The README's tour of the job file: the shipped jobs, abridged.
     Excerpt("README.md", "`examples/paper-alg-1-1.json` (abridged):",
             lambda p: (ROOT / EX).read_text(encoding="utf-8")),
+    Excerpt("docs/jobs.md", "`examples/paper-alg-1-1.json` (abridged):",
+            lambda p: (ROOT / EX).read_text(encoding="utf-8")),
     Excerpt("README.md", "abridged from `examples/fuzzy-cylinder.json`",
             lambda p: (ROOT / "examples" / "fuzzy-cylinder.json").read_text(encoding="utf-8")),
     # `out/beach-data.json` is the shipped data file, byte for byte (below).
