@@ -584,6 +584,12 @@ pub struct MeasureArgs {
     /// vertex search per level; the volumes cost far less).
     #[arg(long)]
     pub no_area: bool,
+    /// Surfaces: a second surface job of the same plan map (the same
+    /// degrees, knots, weights and crisp x and y; e.g. the last survey):
+    /// adds the cut and fill, the volumes where the job's surface lies above
+    /// and below this one.
+    #[arg(long, value_name = "JOB2")]
+    pub against: Option<PathBuf>,
     /// Write the JSON here instead of standard output (`-` is standard
     /// output).
     #[arg(short, long, value_name = "FILE")]
