@@ -112,7 +112,8 @@ RESURVEY = ROOT / "fixtures" / "fuzzy-terrain-resurvey.json"
 
 def test_cut_and_fill_as_the_command_writes_them(cli: Path) -> None:
     done = subprocess.run(
-        [str(cli), "measure", str(RESURVEY), "--against", str(TERRAIN), "--levels", "3", "--no-area"],
+        [str(cli), "measure", str(RESURVEY), "--against", str(TERRAIN), "--levels", "3"]
+        + ["--no-area"],
         capture_output=True,
         text=True,
     )
@@ -144,9 +145,9 @@ def test_two_flat_squares_have_their_closed_form_cut_and_fill() -> None:
 def test_against_another_plan_is_refused() -> None:
     x, y = np.meshgrid([0.0, 3.0], [0.0, 2.0], indexing="ij")
     crisp = np.stack([x, y, 0 * x], axis=-1)
+    crisp_cut = crisp[..., None] + np.zeros(2)
     wider = t2spline.FuzzySurface(
-        crisp, crisp[..., None] + 0 * np.ones(2), crisp[..., None] + 0 * np.ones(2),
-        crisp[..., None] + 0 * np.ones(2), lower_height=1.0, degree=1,
+        crisp, crisp_cut, crisp_cut, crisp_cut, lower_height=1.0, degree=1
     )
     with pytest.raises(ValueError, match=r"plans differ \(x of points\[1\]\[0\]: 3, not 2\)"):
         flat(1.0, 0.5).measure(levels=2, against=wider)

@@ -60,7 +60,8 @@ pub enum Command {
     /// The uncertainty of what is measured on a fuzzy curve (arc length,
     /// area, derivative, tangent angle and curvature) or on a fuzzy surface
     /// of crisp plan (the volumes above and below a datum, the plan area
-    /// below it, the surface area), as intervals over the control points
+    /// below it, the surface area; with --against, the cut and fill between
+    /// two surfaces of one plan map), as intervals over the control points
     /// inside their cuts, at each level (JSON).
     Measure(MeasureArgs),
     /// Time the sampling engine: one line per case with the median of 5 runs.

@@ -60,6 +60,18 @@ pub(crate) fn same_plan(plan: &Plan, other: &FuzzySurface<3>) -> Result<(), Erro
     }
 }
 
+/// The two difference nets of one level and function.
+struct Corners {
+    alpha: f64,
+    /// The volumes of `l₁ − r₂` and `r₁ − l₂`.
+    volumes: [Volumes; 2],
+    /// The plan area times the largest `|dₖ|`.
+    scale: f64,
+}
+
+/// Which volume of the two difference nets is least and which largest.
+type Ends = fn(&[Volumes; 2]) -> ([f64; 2], [f64; 2]);
+
 /// The cut and fill of `first` over `second` (of the plan of `form`, checked
 /// by [`same_plan`]) at each level, per membership function; a function
 /// without a cut at a level in either surface is left out there.
@@ -70,9 +82,7 @@ pub(crate) fn cut_fill(
     levels: &[Alpha],
 ) -> [PerMembership<Vec<Level>>; 2] {
     let plan_area = form.area[0];
-    // Per function and level: the volumes of the difference nets `l₁ − r₂`
-    // and `r₁ − l₂`, the scale and the rounding of the differences.
-    let nets: PerMembership<Vec<(f64, [Volumes; 2], f64, f64)>> = PerMembership::from_fn(|m| {
+    let corners: PerMembership<Vec<Corners>> = PerMembership::from_fn(|m| {
         levels
             .iter()
             .filter_map(|&a| {
@@ -86,29 +96,30 @@ pub(crate) fn cut_fill(
                     .iter()
                     .chain(&largest)
                     .fold(0.0_f64, |d, z| d.max(z.abs()));
-                let volumes = [form.eval(&least, 0.0), form.eval(&largest, 0.0)];
-                Some((
-                    a.get(),
-                    volumes,
-                    plan_area * depth,
-                    plan_area * depth * f64::EPSILON,
-                ))
+                Some(Corners {
+                    alpha: a.get(),
+                    volumes: [form.eval(&least, 0.0), form.eval(&largest, 0.0)],
+                    scale: plan_area * depth,
+                })
             })
             .collect()
     });
-    let pick = |f: &dyn Fn(&[Volumes; 2]) -> ([f64; 2], [f64; 2])| {
+    let pick = |ends: Ends| {
         finish(PerMembership::from_fn(|m| {
-            nets.get(m)
+            corners
+                .get(m)
                 .iter()
-                .map(|(a, v, scale, rounding)| {
-                    let (least, largest) = f(v);
-                    let widen = |x: [f64; 2]| [x[0], x[1] + rounding];
-                    (*a, Some(from_nets(widen(least), widen(largest), *scale)))
+                .map(|c| {
+                    let (least, largest) = ends(&c.volumes);
+                    // The rounding of the differences (module docs).
+                    let widen = |x: [f64; 2]| [x[0], x[1] + c.scale * f64::EPSILON];
+                    let bracket = from_nets(widen(least), widen(largest), c.scale);
+                    (c.alpha, Some(bracket))
                 })
                 .collect()
         }))
     };
-    let cut = pick(&|[l, r]| (l.above, r.above));
-    let fill = pick(&|[l, r]| (r.below, l.below));
+    let cut = pick(|[l, r]| (l.above, r.above));
+    let fill = pick(|[l, r]| (r.below, l.below));
     [cut, fill]
 }
