@@ -368,6 +368,10 @@ fn against_a_curve_or_another_plan_is_refused() {
         &[s(&curve), "--against", s(&old)],
         "--against: this applies to surfaces; this job is a curve",
     );
+    refused(
+        &["-", "--against", "-"],
+        "--against: standard input is read once, and the job reads it already",
+    );
     // The resurvey with one position moved, and with a degree changed.
     let mut job: serde_json::Value = serde_json::from_slice(&std::fs::read(&new).unwrap()).unwrap();
     job["points"][2][3]["x"]["crisp"] = 201.0.into();
