@@ -510,7 +510,12 @@ class FuzzySurface:
         self, x0: float, y0: float, levels: Union[int, ArrayLike] = 11
     ) -> list[SectionLevel]: ...
     def measure(
-        self, levels: Union[int, ArrayLike] = 11, datum: float = 0.0, area: bool = True
+        self,
+        levels: Union[int, ArrayLike] = 11,
+        datum: float = 0.0,
+        area: bool = True,
+        *,
+        against: Optional[FuzzySurface] = None,
     ) -> SurfaceMeasures: ...
     def distance_sweep(
         self, alphas: ArrayLike, samples: Union[int, Tuple[int, int]] = 101

@@ -356,9 +356,13 @@ class SurfaceMeasures(_SurfaceMeasuresBase, total=False):
     (unless ``area=False``) the surface area ``area``, per membership
     function and level; ``tolerance`` is the relative accuracy the volumes
     and plan areas are integrated to, each level's ``gap`` the bound
-    reached; ``plan_area`` the plan's area and its error bound."""
+    reached; ``plan_area`` the plan's area and its error bound. With
+    ``against=other``, ``cut`` and ``fill``: the volumes where the surface
+    lies above and below ``other``."""
 
     area: MeasureLevels
+    cut: MeasureLevels
+    fill: MeasureLevels
 
 
 class _AreaMeasureBase(TypedDict):

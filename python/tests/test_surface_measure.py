@@ -105,3 +105,49 @@ def test_a_function_without_a_cut_at_a_level_is_an_empty_list() -> None:
     c = curve.measure(levels=[1.0])
     assert c["length"]["lower"] == [] and isinstance(c["length"]["lower"], list)
     assert c["at"] == [] and isinstance(c["at"], list)
+
+
+RESURVEY = ROOT / "fixtures" / "fuzzy-terrain-resurvey.json"
+
+
+def test_cut_and_fill_as_the_command_writes_them(cli: Path) -> None:
+    done = subprocess.run(
+        [str(cli), "measure", str(RESURVEY), "--against", str(TERRAIN), "--levels", "3"]
+        + ["--no-area"],
+        capture_output=True,
+        text=True,
+    )
+    assert done.returncode == 0, done.stderr
+    want = json.loads(done.stdout)
+    new = t2spline.FuzzySurface.from_job(RESURVEY)
+    got = new.measure(levels=3, area=False, against=t2spline.FuzzySurface.from_job(TERRAIN))
+    for q in ("cut", "fill", *QUANTITIES):
+        for f in ("upper", "primary", "lower"):
+            assert got[q][f] == want[q][f], (q, f)
+    assert "cut" not in new.measure(levels=3, area=False)
+
+
+def test_two_flat_squares_have_their_closed_form_cut_and_fill() -> None:
+    # 1 ± 0.5 against 0.75 ± 0.25 over a 2 × 2 square: at level α the
+    # difference 0.25 + δ, |δ| ≤ 0.75 (1 − α), is flat, so the cut is
+    # 4·max(0.25 + δ, 0) and the fill 4·max(−0.25 − δ, 0).
+    m = flat(1.0, 0.5).measure(levels=[0.0, 0.5, 1.0], area=False, against=flat(0.75, 0.25))
+    for level, cut, fill in zip((0.0, 0.5, 1.0), m["cut"]["upper"], m["fill"]["upper"]):
+        d = 0.75 * (1.0 - level)
+        assert cut["alpha"] == fill["alpha"] == level
+        assert cut["min"] == pytest.approx(4 * max(0.25 - d, 0.0), abs=1e-9)
+        assert cut["max"] == pytest.approx(4 * (0.25 + d), abs=1e-9)
+        assert fill["min"] == pytest.approx(0.0, abs=1e-9)
+        assert fill["max"] == pytest.approx(4 * max(d - 0.25, 0.0), abs=1e-9)
+        assert cut["exact"] and fill["exact"]
+
+
+def test_against_another_plan_is_refused() -> None:
+    x, y = np.meshgrid([0.0, 3.0], [0.0, 2.0], indexing="ij")
+    crisp = np.stack([x, y, 0 * x], axis=-1)
+    crisp_cut = crisp[..., None] + np.zeros(2)
+    wider = t2spline.FuzzySurface(
+        crisp, crisp_cut, crisp_cut, crisp_cut, lower_height=1.0, degree=1
+    )
+    with pytest.raises(ValueError, match=r"plans differ \(x of points\[1\]\[0\]: 3, not 2\)"):
+        flat(1.0, 0.5).measure(levels=2, against=wider)

@@ -137,7 +137,8 @@ def calls() -> Dict[str, Callable[[], Any]]:
         "FuzzySurface.membership": lambda: surface.membership([[0.5, 0.5, 0.5]]),
         "FuzzySurface.section": lambda: surface.section(0.5, 0.5, levels=3),
         "FuzzySurface.distance_sweep": lambda: surface.distance_sweep(0.5, samples=(5, 4)),
-        "FuzzySurface.measure": lambda: terrain.measure(levels=[0.5], datum=103.0),
+        # With `against`, the optional keys `cut` and `fill` too.
+        "FuzzySurface.measure": lambda: terrain.measure(levels=[0.5], datum=103.0, against=terrain),
         "SurfaceSolution.alpha_cut": lambda: net.alpha_cut,
         "SurfaceSolution.sample": lambda: net.sample(5, 4),
         "SurfaceSolution.distance": lambda: net.distance(),

@@ -60,7 +60,8 @@ pub enum Command {
     /// The uncertainty of what is measured on a fuzzy curve (arc length,
     /// area, derivative, tangent angle and curvature) or on a fuzzy surface
     /// of crisp plan (the volumes above and below a datum, the plan area
-    /// below it, the surface area), as intervals over the control points
+    /// below it, the surface area; with --against, the cut and fill between
+    /// two surfaces of one plan map), as intervals over the control points
     /// inside their cuts, at each level (JSON).
     Measure(MeasureArgs),
     /// Time the sampling engine: one line per case with the median of 5 runs.
@@ -591,6 +592,12 @@ pub struct MeasureArgs {
     /// vertex search per level; the volumes cost far less).
     #[arg(long)]
     pub no_area: bool,
+    /// Surfaces: a second surface job of the same plan map (the same
+    /// degrees, knots, weights and crisp x and y; e.g. the last survey):
+    /// adds the cut and fill, the volumes where the job's surface lies above
+    /// and below this one.
+    #[arg(long, value_name = "JOB2")]
+    pub against: Option<PathBuf>,
     /// Write the JSON here instead of standard output (`-` is standard
     /// output).
     #[arg(short, long, value_name = "FILE")]

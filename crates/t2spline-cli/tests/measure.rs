@@ -2,7 +2,7 @@
 //! the file's shape on the shipped example, the output file written
 //! atomically, exit codes and messages naming the flag and the rule, no
 //! output file when the input is bad; a surface's volumes, plan area and
-//! surface area (§14).
+//! surface area (§14), and the cut and fill against a resurvey.
 
 use std::path::{Path, PathBuf};
 
@@ -15,6 +15,11 @@ fn example() -> PathBuf {
 
 fn terrain() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/fuzzy-terrain.json")
+}
+
+/// `examples/fuzzy-terrain.json` resurveyed: a pit dug, its spoil heaped.
+fn resurvey() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../fixtures/fuzzy-terrain-resurvey.json")
 }
 
 /// `args` followed by `-o OUT` must exit 2 with a message holding `words`,
@@ -234,4 +239,177 @@ fn negative_parameters_in_a_list_are_values() {
     let (code, _, stderr) = run(&["measure", s(&example()), "--at", "-0.5,0.25"]);
     assert_eq!(code, 2);
     assert!(!stderr.contains("unexpected argument"), "{stderr}");
+}
+
+#[test]
+fn cut_and_fill_against_the_last_survey() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = |name: &str| dir.path().join(name);
+    let (out, alone, last) = (file("m.json"), file("a.json"), file("b.json"));
+    let (new, old) = (resurvey(), terrain());
+    let measured = |job: &Path, out: &Path, more: &[&str]| {
+        let mut args = vec![
+            "measure",
+            s(job),
+            "--levels",
+            "3",
+            "--no-area",
+            "-o",
+            s(out),
+        ];
+        args.extend(more);
+        let (code, stdout, stderr) = run(&args);
+        assert_eq!((code, stdout.as_str()), (0, ""), "{stderr}");
+        serde_json::from_slice::<serde_json::Value>(&std::fs::read(out).unwrap()).unwrap()
+    };
+    let v = measured(&new, &out, &["--against", s(&old)]);
+    let a = measured(&new, &alone, &[]);
+    let b = measured(&old, &last, &[]);
+    // The surface's own keys as without --against, and only cut and fill more.
+    for key in [
+        "levels",
+        "datum",
+        "tolerance",
+        "plan_area",
+        "volume_below",
+        "volume_above",
+    ] {
+        assert_eq!(v[key], a[key], "{key}");
+    }
+    let keys = |x: &serde_json::Value| x.as_object().unwrap().keys().cloned().collect::<Vec<_>>();
+    let mut more = keys(&a);
+    more.extend(["cut".to_owned(), "fill".to_owned()]);
+    more.sort();
+    let mut got = keys(&v);
+    got.sort();
+    assert_eq!(got, more);
+    // cut − fill = ∫∫ z₁ − ∫∫ z₂, the difference of the signed volumes
+    // V_above − V_below, at the corner nets: (l₁, r₂) for the least,
+    // (r₁, l₂) for the largest.
+    let at = |x: &serde_json::Value, key: &str, f: &str, i: usize, end: &str| {
+        x[key][f][i][end].as_f64().unwrap()
+    };
+    for f in ["upper", "primary"] {
+        for i in 0..3 {
+            let least = (at(&v, "volume_above", f, i, "min") - at(&v, "volume_below", f, i, "max"))
+                - (at(&b, "volume_above", f, i, "max") - at(&b, "volume_below", f, i, "min"));
+            let largest = (at(&v, "volume_above", f, i, "max")
+                - at(&v, "volume_below", f, i, "min"))
+                - (at(&b, "volume_above", f, i, "min") - at(&b, "volume_below", f, i, "max"));
+            let (cut, fill) = (
+                [at(&v, "cut", f, i, "min"), at(&v, "cut", f, i, "max")],
+                [at(&v, "fill", f, i, "min"), at(&v, "fill", f, i, "max")],
+            );
+            // 1e-9 of the plan area times the heights (~116 m).
+            let tolerance = 1e-9 * 200_000.0 * 120.0;
+            assert!((cut[0] - fill[1] - least).abs() < tolerance, "{f} {i}");
+            assert!((cut[1] - fill[0] - largest).abs() < tolerance, "{f} {i}");
+        }
+    }
+    // At level 1 (crisp heights) one number each: the heap (up to 1.2 m
+    // over part of the plan) and the pit (up to 2 m), each well below its
+    // largest shift times the plan area.
+    let crisp = |key: &str| {
+        let l = &v[key]["upper"][2];
+        assert_eq!(l["alpha"], 1.0);
+        assert_eq!(l["exact"], true, "{key}: {l}");
+        let (min, max) = (l["min"].as_f64().unwrap(), l["max"].as_f64().unwrap());
+        assert!((max - min).abs() <= 1e-9 * max, "{key}: {l}");
+        min
+    };
+    let (cut, fill) = (crisp("cut"), crisp("fill"));
+    assert!(1_000.0 < cut && cut < 1.2 * 200_000.0 / 4.0, "{cut}");
+    assert!(fill > cut && fill < 2.0 * 200_000.0 / 4.0, "{fill} {cut}");
+    for key in ["cut", "fill"] {
+        for f in ["upper", "primary", "lower"] {
+            let levels = v[key][f].as_array().expect("a list per function");
+            for (l, next) in levels.iter().zip(levels.iter().skip(1)) {
+                // Nested: the level 0 interval holds the level 0.5 one.
+                assert!(
+                    l["min"].as_f64() <= next["min"].as_f64(),
+                    "{key}.{f}: {l} {next}"
+                );
+                assert!(
+                    next["max"].as_f64() <= l["max"].as_f64(),
+                    "{key}.{f}: {l} {next}"
+                );
+                assert_eq!(l["exact"], true, "{key}.{f}: {l}");
+            }
+        }
+        // The lower function reaches 0.6: levels 0 and 0.5 only.
+        assert_eq!(v[key]["lower"].as_array().unwrap().len(), 2, "{key}");
+    }
+    // The same survey against itself: no cut and no fill at level 1.
+    let (code, stdout, stderr) = run(&[
+        "measure",
+        s(&old),
+        "--alpha",
+        "1",
+        "--no-area",
+        "--against",
+        s(&old),
+    ]);
+    assert_eq!(code, 0, "{stderr}");
+    let same: serde_json::Value = serde_json::from_str(&stdout).unwrap();
+    for key in ["cut", "fill"] {
+        assert_eq!(same[key]["upper"][0]["max"], 0.0, "{key}: {same}");
+    }
+}
+
+#[test]
+fn against_a_curve_or_another_plan_is_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let (new, old, curve) = (resurvey(), terrain(), example());
+    refused(
+        &[s(&new), "--against", s(&curve)],
+        "paper-alg-1-1.json: not a surface job; cut and fill are measured between two surfaces",
+    );
+    refused(
+        &[s(&curve), "--against", s(&old)],
+        "--against: this applies to surfaces; this job is a curve",
+    );
+    refused(
+        &["-", "--against", "-"],
+        "--against: standard input is read once, and the job reads it already",
+    );
+    // The resurvey with one position moved, and with a degree changed.
+    let mut job: serde_json::Value = serde_json::from_slice(&std::fs::read(&new).unwrap()).unwrap();
+    job["points"][2][3]["x"]["crisp"] = 201.0.into();
+    for f in ["upper", "primary", "lower"] {
+        job["points"][2][3]["x"][f] = serde_json::json!([201.0, 201.0]);
+    }
+    let moved = dir.path().join("survey-2019.json");
+    std::fs::write(&moved, serde_json::to_vec(&job).unwrap()).unwrap();
+    refused(
+        &[s(&old), "--against", s(&moved)],
+        &format!(
+            "--against {}: its plan differs from {}'s (x of points[2][3]: 201, not 200); cut and fill need one plan map for both surfaces",
+            moved.display(),
+            old.display()
+        ),
+    );
+    job["points"][2][3]["x"]["crisp"] = 200.0.into();
+    for f in ["upper", "primary", "lower"] {
+        job["points"][2][3]["x"][f] = serde_json::json!([199.0, 201.0]);
+    }
+    std::fs::write(&moved, serde_json::to_vec(&job).unwrap()).unwrap();
+    refused(
+        &[s(&old), "--against", s(&moved)],
+        "(points[2][3].x is fuzzy)",
+    );
+    let mut job: serde_json::Value = serde_json::from_slice(&std::fs::read(&new).unwrap()).unwrap();
+    job["order"] = serde_json::json!([2, 3]);
+    std::fs::write(&moved, serde_json::to_vec(&job).unwrap()).unwrap();
+    refused(
+        &[s(&old), "--against", s(&moved)],
+        "(degree in u: 1, not 2)",
+    );
+    // The output may not overwrite the second job.
+    let copy = dir.path().join("old.json");
+    std::fs::copy(&old, &copy).unwrap();
+    let before = std::fs::read(&copy).unwrap();
+    let (code, _, stderr) = run(&["measure", s(&new), "--against", s(&copy), "-o", s(&copy)]);
+    assert_ne!(code, 0);
+    assert!(stderr.contains("--output"), "{stderr}");
+    assert_eq!(std::fs::read(&copy).unwrap(), before);
 }

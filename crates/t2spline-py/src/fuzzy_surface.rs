@@ -338,13 +338,20 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
     ///     The height of the plane (default 0).
     /// area : bool, optional
     ///     Whether to measure the surface area (default True).
+    /// against : FuzzySurface, optional
+    ///     A second surface of the same plan map (the same degrees, knots,
+    ///     weights and crisp x and y; e.g. the last survey): adds ``"cut"``
+    ///     and ``"fill"``, the volumes where this surface lies above and
+    ///     below it, as ``t2spline measure --against`` writes them. A plan
+    ///     that differs raises ``ValueError`` naming the difference.
     ///
     /// Returns
     /// -------
     /// dict
     ///     ``"levels"``, ``"datum"``, ``"tolerance"``, ``"plan_area"``, and
     ///     per quantity (``"volume_below"``, ``"volume_above"``,
-    ///     ``"plan_area_below"``, ``"area"``) a list of levels per function.
+    ///     ``"plan_area_below"``, ``"area"``, and with ``against``
+    ///     ``"cut"``, ``"fill"``) a list of levels per function.
     ///
     /// Examples
     /// --------
@@ -358,8 +365,8 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
     /// >>> [(round(l["min"], 9), round(l["max"], 9)) for l in m["volume_above"]["upper"]]
     /// [(2.0, 6.0), (3.0, 5.0), (4.0, 4.0)]
     #[pyo3(
-        signature = (levels=None, datum=0.0, area=true),
-        text_signature = "($self, levels=11, datum=0.0, area=True)"
+        signature = (levels=None, datum=0.0, area=true, *, against=None),
+        text_signature = "($self, levels=11, datum=0.0, area=True, *, against=None)"
     )]
     fn measure<'py>(
         &self,
@@ -367,8 +374,10 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
         levels: Option<&Bound<'py, PyAny>>,
         datum: f64,
         area: bool,
+        against: Option<PyRef<'py, PyFuzzySurface>>,
     ) -> PyResult<Bound<'py, PyAny>> {
-        crate::measure::surface_measure(py, &self.0, levels, datum, area)
+        let against = against.as_ref().map(|a| &a.0);
+        crate::measure::surface_measure(py, &self.0, levels, datum, area, against)
     }
 
     /// The distance between the crisp surface and the defuzzified surface

@@ -3,7 +3,8 @@
 //! points inside their cuts) as the dict `t2spline measure` writes, every
 //! list of numbers a numpy array, which shows the `measures` figure in a
 //! notebook; `FuzzySurface.measure`: the volumes, plan area and surface
-//! area of §14, as the command writes them for a surface.
+//! area of §14, and with `against` the cut and fill between two surfaces of
+//! one plan map, as the command writes them for a surface.
 
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -98,22 +99,30 @@ pub(crate) fn curve_measure<'py>(
     )
 }
 
-/// `FuzzySurface.measure(levels=11, datum=0.0, area=True)`.
+/// A surface in space, else a `ValueError` naming `what`.
+fn spatial<'a>(
+    surface: &'a ByDim<FuzzyNet>,
+    what: &str,
+) -> PyResult<&'a t2spline::FuzzySurface<3>> {
+    match surface {
+        ByDim::Spatial(s) => Ok(s),
+        ByDim::Planar(_) => Err(PyValueError::new_err(format!(
+            "{what}: taken of surfaces in space (heights z over a plan); this surface is in the plane"
+        ))),
+    }
+}
+
+/// `FuzzySurface.measure(levels=11, datum=0.0, area=True, *, against=None)`.
 pub(crate) fn surface_measure<'py>(
     py: Python<'py>,
     surface: &ByDim<FuzzyNet>,
     levels_arg: Option<&Bound<'py, PyAny>>,
     datum: f64,
     area: bool,
+    against: Option<&ByDim<FuzzyNet>>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let s: &t2spline::FuzzySurface<3> = match surface {
-        ByDim::Spatial(s) => s,
-        ByDim::Planar(_) => {
-            return Err(PyValueError::new_err(
-                "measure: taken of surfaces in space (heights z over a plan); this surface is in the plane",
-            ))
-        }
-    };
+    let s = spatial(surface, "measure")?;
+    let against = against.map(|a| spatial(a, "against")).transpose()?;
     if !datum.is_finite() {
         return Err(PyValueError::new_err(format!(
             "datum: {datum} is not a finite number"
@@ -124,7 +133,10 @@ pub(crate) fn surface_measure<'py>(
         datum,
         area,
     };
-    let measures = compute(py, || s.measure(&options))?;
+    let measures = compute(py, || match against {
+        Some(other) => s.measure_against(other, &options),
+        None => s.measure(&options),
+    })?;
     to_value(&measures)
         .map_err(|e| internal_error(&e.to_string()))?
         .empty_as_lists()

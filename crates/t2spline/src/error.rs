@@ -1205,6 +1205,33 @@ pub enum Error {
         rule: &'static str,
     },
 
+    /// The cut and fill between two surfaces (docs/method.md §14) need one
+    /// plan map for both: the same degrees, knots and weights and the same
+    /// crisp x and y at every control point. `what` names the first
+    /// difference found (in the second surface).
+    ///
+    /// ```
+    /// # use t2spline::{Error, FuzzySurface, Nt2Number, Nt2Point};
+    /// # use t2spline::measure::SurfaceMeasureOptions;
+    /// let c = |x: f64| Nt2Number::try_crisp(x);
+    /// let p = |x: f64, y: f64| Ok::<_, Error>(Nt2Point::new([c(x)?, c(y)?, c(0.0)?]));
+    /// let net = |w: f64| Ok::<_, Error>(vec![vec![p(0.0, 0.0)?, p(0.0, w)?], vec![p(2.0, 0.0)?, p(2.0, w)?]]);
+    /// let a = FuzzySurface::try_new([1, 1], net(2.0)?, vec![vec![1.0; 2]; 2], [None, None])?;
+    /// let b = FuzzySurface::try_new([1, 1], net(3.0)?, vec![vec![1.0; 2]; 2], [None, None])?;
+    /// let e = a.measure_against(&b, &SurfaceMeasureOptions::uniform(2)?).unwrap_err();
+    /// assert_eq!(e.to_string(), "the two surfaces' plans differ (y of points[0][1]: 3, not 2): cut and fill need one plan map for both surfaces");
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error(
+        "the two surfaces' plans differ ({what}): cut and fill need one plan map for both surfaces"
+    )]
+    PlansDiffer {
+        /// What differs: `degree in u`, `knots in v`, `net shape`,
+        /// `weight of points[i][j]`, `x of points[i][j]`,
+        /// `points[i][j].y is fuzzy`, ….
+        what: String,
+    },
+
     /// A curve said to be closed whose crisp layer does not end where it
     /// starts (docs/method.md §11).
     ///

@@ -1,25 +1,35 @@
 //! `t2spline measure JOB.json [--alpha A | --levels N] [--at T1,T2,…]
-//! [--order K] [--datum Z0] [--no-area] [-o OUT.json]`: arc length, area,
-//! derivative, tangent angle and curvature of a fuzzy curve (docs/method.md
-//! §11), or the volumes above and below the plane `z = Z0`, the plan area
-//! below it and the surface area of a fuzzy surface of crisp plan (§14), as
-//! intervals at each level.
+//! [--order K] [--datum Z0] [--no-area] [--against JOB2] [-o OUT.json]`:
+//! arc length, area, derivative, tangent angle and curvature of a fuzzy
+//! curve (docs/method.md §11), or the volumes above and below the plane
+//! `z = Z0`, the plan area below it and the surface area of a fuzzy surface
+//! of crisp plan (§14), and with `--against` the cut and fill between it
+//! and a second surface of the same plan map, as intervals at each level.
 
 use t2spline::job::Model;
 use t2spline::measure::{
     MeasureOptions, Measures, SurfaceMeasureOptions, MAX_MEASURE_LEVELS, MAX_MEASURE_PARAMETERS,
 };
-use t2spline::{Error, FuzzyCurve};
+use t2spline::{Error, FuzzyCurve, FuzzySurface};
 
 use super::levels::Levels;
 use super::prepare::OptionError;
 use crate::clash::Claims;
 use crate::cli::MeasureArgs;
-use crate::output::{read_job, Outputs};
+use crate::output::{is_stdio, read_job, shown, unsuited, Outputs};
 
 pub fn measure(args: &MeasureArgs) -> anyhow::Result<()> {
     if let Some(out) = &args.output {
-        Claims::new([args.job.as_path()]).file("--output", out)?;
+        let inputs = std::iter::once(args.job.as_path()).chain(args.against.as_deref());
+        Claims::new(inputs).file("--output", out)?;
+    }
+    if let Some(against) = &args.against {
+        if is_stdio(against) && is_stdio(&args.job) {
+            return Err(invalid(
+                "--against",
+                "standard input is read once, and the job reads it already",
+            ));
+        }
     }
     let (levels, mut options) = options(args)?;
     let job = read_job(&args.job)?;
@@ -44,23 +54,46 @@ pub fn measure(args: &MeasureArgs) -> anyhow::Result<()> {
                 datum: args.datum.unwrap_or(0.0),
                 area: !args.no_area,
             };
-            let measures = s.measure(&surface).map_err(|e| match e {
+            let against = match &args.against {
+                Some(path) => Some((path, surface_job(path)?)),
+                None => None,
+            };
+            let measured = match &against {
+                Some((_, other)) => s.measure_against(other, &surface),
+                None => s.measure(&surface),
+            };
+            let measures = measured.map_err(|e| match e {
                 Error::NotFinite { .. } => invalid("--datum", &e.to_string()),
+                Error::PlansDiffer { what } => {
+                    let path = against.as_ref().map_or(args.job.as_path(), |a| a.0);
+                    anyhow::anyhow!(
+                        "--against {}: its plan differs from {}'s ({what}); cut and fill need one plan map for both surfaces",
+                        shown(path),
+                        shown(&args.job)
+                    )
+                }
                 other => other.into(),
             })?;
             t2spline_io::check_finite(&measures)?;
             t2spline_io::write_json_pretty(&mut bytes, &measures)?;
         }
-        _ => {
-            return Err(crate::output::unsuited(
-                &args.job,
-                "this kind of job is not measured",
-            ))
-        }
+        _ => return Err(unsuited(&args.job, "this kind of job is not measured")),
     }
     let mut out = Outputs::default();
     out.to(args.output.as_deref(), bytes);
     out.commit()
+}
+
+/// The surface of the job `--against` names; a job of another kind is
+/// refused, naming the file.
+fn surface_job(path: &std::path::Path) -> anyhow::Result<FuzzySurface<3>> {
+    match read_job(path)?.model {
+        Model::Surface(s) => Ok(s),
+        _ => Err(anyhow::anyhow!(
+            "--against {}: not a surface job; cut and fill are measured between two surfaces",
+            shown(path)
+        )),
+    }
 }
 
 fn write(bytes: &mut Vec<u8>, measures: &Measures) -> anyhow::Result<()> {
@@ -75,11 +108,13 @@ fn run<const D: usize>(
     options: &mut MeasureOptions,
     args: &MeasureArgs,
 ) -> anyhow::Result<Measures> {
-    if args.datum.is_some() || args.no_area {
+    if args.datum.is_some() || args.no_area || args.against.is_some() {
         let flag = if args.datum.is_some() {
             "--datum"
-        } else {
+        } else if args.no_area {
             "--no-area"
+        } else {
+            "--against"
         };
         return Err(invalid(
             flag,

@@ -1,7 +1,8 @@
 //! Quantities measured on a fuzzy curve (docs/method.md §11): derivatives,
 //! tangent angle, arc length, area and curvature as type-2 fuzzy quantities;
 //! and on a fuzzy surface of crisp plan (§14): the volumes above and below a
-//! plane, the plan area below it and the surface area.
+//! plane, the plan area below it and the surface area, and the cut and fill
+//! between two surfaces of one plan.
 //!
 //! For a quantity `Q` of the control points (weights and knots crisp), a
 //! membership function `m` and a level `alpha`, the value is the interval
@@ -35,6 +36,7 @@ mod coefficients;
 mod crossing;
 mod curvature;
 mod cut_box;
+mod cut_fill;
 mod derivative;
 mod length;
 mod measures;

@@ -285,6 +285,57 @@ impl Plan {
     }
 }
 
+impl Plan {
+    /// The first difference between two plans, `None` where they are one
+    /// plan map: the net's shape, a degree, the knots, a weight, an x or a
+    /// y (compared exactly; `other`'s value first).
+    pub(crate) fn difference(&self, other: &Plan) -> Option<String> {
+        let shape = |p: &Plan| [p.xy.len() / p.nv.max(1), p.nv];
+        let [a, b] = [shape(other), shape(self)];
+        if a != b {
+            return Some(format!(
+                "net shape: {} × {} control points, not {} × {}",
+                a[0], a[1], b[0], b[1]
+            ));
+        }
+        for (d, name) in ["u", "v"].into_iter().enumerate() {
+            let [mine, theirs] = [&self.knots[d], &other.knots[d]];
+            if mine.degree() != theirs.degree() {
+                return Some(format!(
+                    "degree in {name}: {}, not {}",
+                    theirs.degree(),
+                    mine.degree()
+                ));
+            }
+            if mine.as_slice() != theirs.as_slice() {
+                return Some(format!("knots in {name}"));
+            }
+        }
+        let at = |k: usize| format!("points[{}][{}]", k / self.nv, k % self.nv);
+        for k in 0..self.xy.len() {
+            if self.weights[k] != other.weights[k] {
+                return Some(format!(
+                    "weight of {}: {}, not {}",
+                    at(k),
+                    other.weights[k],
+                    self.weights[k]
+                ));
+            }
+            for (c, axis) in ["x", "y"].into_iter().enumerate() {
+                if self.xy[k][c] != other.xy[k][c] {
+                    return Some(format!(
+                        "{axis} of {}: {}, not {}",
+                        at(k),
+                        other.xy[k][c],
+                        self.xy[k][c]
+                    ));
+                }
+            }
+        }
+        None
+    }
+}
+
 const FOLDS: &str = "the plan map folds there (its Jacobian changes sign)";
 const VERTICAL: &str =
     "the surface is vertical there (the plan map's Jacobian vanishes on a whole span rectangle)";

@@ -13,12 +13,14 @@
 //! V_above ∈ [V_above(left net),  V_above(right net)]
 //! A_below ∈ [A_below(right net), A_below(left net)]
 //! ```
-//! The surface area is convex in the heights (`surface_area.rs`).
+//! The surface area is convex in the heights (`surface_area.rs`). Against a
+//! second surface of the same plan map, the cut and fill (`cut_fill.rs`).
 
 use crate::error::{Error, Place};
 use crate::fuzzy::{Alpha, Membership};
 use crate::measure::bracket::Bracket;
 use crate::measure::cut_box::CutBox;
+use crate::measure::cut_fill::{cut_fill, same_plan};
 use crate::measure::measures::{nested, Level, PerMembership, MAX_MEASURE_LEVELS};
 use crate::measure::plan::Plan;
 use crate::measure::surface_area::{heights, surface_area_bracket, AreaRule};
@@ -76,12 +78,21 @@ pub struct SurfaceMeasures {
     /// The surface area.
     #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
     pub area: Option<PerMembership<Vec<Level>>>,
+    /// Against a second surface ([`FuzzySurface::measure_against`]): the
+    /// cut, the volume where this surface lies above the second,
+    /// `∫∫ max(z₁ − z₂, 0) dx dy`.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub cut: Option<PerMembership<Vec<Level>>>,
+    /// Against a second surface: the fill, the volume where this surface
+    /// lies below the second, `∫∫ max(z₂ − z₁, 0) dx dy`.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub fill: Option<PerMembership<Vec<Level>>>,
 }
 
 /// The heights of the nets of every level and function.
 type Boxes = PerMembership<Vec<(f64, CutBox)>>;
 
-fn finish(l: PerMembership<Vec<(f64, Option<Bracket>)>>) -> PerMembership<Vec<Level>> {
+pub(super) fn finish(l: PerMembership<Vec<(f64, Option<Bracket>)>>) -> PerMembership<Vec<Level>> {
     let l = nested(l);
     PerMembership::from_fn(|m| {
         l.get(m)
@@ -95,7 +106,7 @@ fn finish(l: PerMembership<Vec<(f64, Option<Bracket>)>>) -> PerMembership<Vec<Le
 /// at the extreme net where it is least and at the one where it is largest;
 /// exact where both errors are within the tolerance of the largest value or
 /// of `scale` (the plan area, times the greatest depth for a volume).
-fn from_nets(least: [f64; 2], largest: [f64; 2], scale: f64) -> Bracket {
+pub(super) fn from_nets(least: [f64; 2], largest: [f64; 2], scale: f64) -> Bracket {
     let scale = largest[0].abs().max(scale);
     let exact = least[1].max(largest[1]) <= VOLUME_TOLERANCE * scale;
     Bracket::from_ends(
@@ -136,6 +147,59 @@ impl FuzzySurface<3> {
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn measure(&self, options: &SurfaceMeasureOptions) -> Result<SurfaceMeasures, Error> {
+        self.measure_with(None, options)
+    }
+
+    /// [`FuzzySurface::measure`], and the cut and fill between this surface
+    /// and `other` (docs/method.md §14): the volumes where this one lies
+    /// above and below `other`, each an interval over the nets of both
+    /// surfaces whose heights lie in their cuts, exact,
+    ///
+    /// ```text
+    /// cut  ∈ [cut(l₁, r₂),  cut(r₁, l₂)],   fill ∈ [fill(r₁, l₂), fill(l₁, r₂)]
+    /// ```
+    /// (`l`, `r`: every height at its cut's left or right end). A function
+    /// without a cut at a level in either surface is left out there.
+    ///
+    /// # Errors
+    /// As [`FuzzySurface::measure`], and [`Error::PlansDiffer`] unless both
+    /// surfaces have one plan map: the same degrees, knots and weights and
+    /// the same crisp x and y at every control point.
+    ///
+    /// # Examples
+    /// Two planes over the square [0, 2]², `z₁ = x` and `z₂ = 1` crisp:
+    /// the first lies 1/2 above the second on average over half the square.
+    /// ```
+    /// # use t2spline::{FuzzySurface, Nt2Number, Nt2Point};
+    /// # use t2spline::measure::SurfaceMeasureOptions;
+    /// let c = |x: f64| Nt2Number::try_crisp(x);
+    /// let p = |x: f64, y: f64, z: f64| Ok::<_, t2spline::Error>(Nt2Point::new([c(x)?, c(y)?, c(z)?]));
+    /// let net = |z: [f64; 2]| Ok::<_, t2spline::Error>(vec![
+    ///     vec![p(0.0, 0.0, z[0])?, p(0.0, 2.0, z[0])?],
+    ///     vec![p(2.0, 0.0, z[1])?, p(2.0, 2.0, z[1])?],
+    /// ]);
+    /// let w = vec![vec![1.0; 2]; 2];
+    /// let one = FuzzySurface::try_new([1, 1], net([0.0, 2.0])?, w.clone(), [None, None])?;
+    /// let two = FuzzySurface::try_new([1, 1], net([1.0, 1.0])?, w, [None, None])?;
+    /// let m = one.measure_against(&two, &SurfaceMeasureOptions::uniform(2)?)?;
+    /// let (cut, fill) = (&m.cut.unwrap().upper[0], &m.fill.unwrap().upper[0]);
+    /// assert!((cut.min - 1.0).abs() < 1e-9 && (cut.max - 1.0).abs() < 1e-9);
+    /// assert!((fill.min - 1.0).abs() < 1e-9 && (fill.max - 1.0).abs() < 1e-9);
+    /// # Ok::<(), t2spline::Error>(())
+    /// ```
+    pub fn measure_against(
+        &self,
+        other: &FuzzySurface<3>,
+        options: &SurfaceMeasureOptions,
+    ) -> Result<SurfaceMeasures, Error> {
+        self.measure_with(Some(other), options)
+    }
+
+    fn measure_with(
+        &self,
+        other: Option<&FuzzySurface<3>>,
+        options: &SurfaceMeasureOptions,
+    ) -> Result<SurfaceMeasures, Error> {
         if options.levels.is_empty() || options.levels.len() > MAX_MEASURE_LEVELS {
             return Err(Error::OutOfRange {
                 place: Place::NONE,
@@ -153,6 +217,9 @@ impl FuzzySurface<3> {
         }
         let plan = Plan::of(self)?;
         plan.check_graph()?;
+        if let Some(other) = other {
+            same_plan(&plan, other)?;
+        }
         let crisp: Vec<f64> = self
             .points()
             .iter()
@@ -160,6 +227,10 @@ impl FuzzySurface<3> {
             .collect();
         let area_rule = options.area.then(|| AreaRule::new(&plan, &crisp));
         let form = VolumeForm::new(plan);
+        let [cut, fill] = match other {
+            Some(other) => cut_fill(&form, self, other, &options.levels).map(Some),
+            None => [None, None],
+        };
         let boxes: Boxes = PerMembership::from_fn(|m| {
             options
                 .levels
@@ -213,6 +284,8 @@ impl FuzzySurface<3> {
             volume_above,
             plan_area_below,
             area,
+            cut,
+            fill,
         })
     }
 }
