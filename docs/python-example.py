@@ -89,7 +89,7 @@ print(f"distance at alpha = 0.5: {distances[50]:.4f}, just above: {distances[51]
 solution = curve.solve(0.3)
 samples = solution.sample(400)
 print("type-reduced left/right and defuzzified curves:",
-      samples["type_reduced_left"].shape, samples["defuzzified"].shape)
+      samples["type_reduced"]["left"].shape, samples["defuzzified"].shape)
 
 # %% [markdown]
 # ## 4. One fuzzy number and its membership functions

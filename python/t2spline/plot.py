@@ -57,7 +57,7 @@ except ImportError:  # pragma: no cover - exercised without matplotlib only
 from matplotlib.patches import PathPatch
 from matplotlib.path import Path
 
-from ._t2spline import FuzzyCurve, FuzzyNumber, NurbsCurve, Region
+from ._t2spline import FuzzyCurve, FuzzyNumber, NurbsCurve, Region, _palette
 
 __all__ = ["stage1", "stage2", "stage3", "stage4", "stages", "membership",
            "region", "membership_map", "section"]
@@ -65,9 +65,14 @@ __all__ = ["stage1", "stage2", "stage3", "stage4", "stages", "membership",
 Result = Mapping[str, Any]
 Coords = Tuple[int, int]
 
-#: Colours of the three membership functions (Okabe–Ito), as ``t2spline plot``.
-UPPER, PRIMARY, LOWER = "#0072B2", "#009E73", "#D55E00"
-CRISP, SOLUTION, GREY = "black", "#CC79A7", "#999999"
+#: The colours of the figures by series, from the table that ``t2spline plot``
+#: draws with (Okabe–Ito and greys): ``upper``, ``primary``, ``lower``,
+#: ``crisp``, ``polygon``, ``type_reduced_left``, ``type_reduced_right``,
+#: ``solution``, ``distance``.
+PALETTE: Mapping[str, str] = dict(_palette())
+UPPER, PRIMARY, LOWER = PALETTE["upper"], PALETTE["primary"], PALETTE["lower"]
+CRISP, SOLUTION, GREY = PALETTE["crisp"], PALETTE["solution"], PALETTE["polygon"]
+LEFT, RIGHT = PALETTE["type_reduced_left"], PALETTE["type_reduced_right"]
 _FUNCTIONS: Tuple[Tuple[Literal["upper", "primary", "lower"], str, float], ...] = (
     ("upper", UPPER, 1.2), ("primary", PRIMARY, 2.6), ("lower", LOWER, 4.4))
 
@@ -228,11 +233,11 @@ def stage3(ax: Axes, result: Result, *, coords: Coords = (0, 1)) -> Axes:
     _check(result, coords)
     curves, cps = result["curves"], result["control_points"]
     left, right = curves["type_reduced"]["left"], curves["type_reduced"]["right"]
-    _band(ax, left, right, coords, PRIMARY, 0.15, "between left and right")
-    ax.plot(*_xy(left, coords), "--", color=PRIMARY, label="type-reduced left")
-    ax.plot(*_xy(right, coords), "-", color=PRIMARY, label="type-reduced right")
-    ax.plot(*_xy(cps["type_reduced_left"], coords), "<", color=PRIMARY, markersize=5)
-    ax.plot(*_xy(cps["type_reduced_right"], coords), ">", color=PRIMARY, markersize=5)
+    _band(ax, left, right, coords, LEFT, 0.15, "between left and right")
+    ax.plot(*_xy(left, coords), "--", color=LEFT, label="type-reduced left")
+    ax.plot(*_xy(right, coords), ":", color=RIGHT, linewidth=2, label="type-reduced right")
+    ax.plot(*_xy(cps["type_reduced_left"], coords), "^", color=LEFT, markersize=5)
+    ax.plot(*_xy(cps["type_reduced_right"], coords), "D", color=RIGHT, markersize=5)
     ax.plot(*_xy(curves["crisp"], coords), color=CRISP, linewidth=1, label="crisp curve")
     ax.set_title(f"Stage 3: type reduction at alpha = {result['alpha']:g}")
     return ax
@@ -258,7 +263,7 @@ def stage4(ax: Axes, result: Result, *, coords: Coords = (0, 1)) -> Axes:
         _curve(result, cps["defuzzified"]).eval(t),
     ])
     # The distance may be a small fraction of the figure: open circles find it.
-    ax.plot(*_xy(ends, coords), "-o", color="#E69F00", linewidth=2.5, markersize=9,
+    ax.plot(*_xy(ends, coords), "-o", color=PALETTE["distance"], linewidth=2.5, markersize=9,
             markerfacecolor="none", label=f"max distance {error['max']:.3g} (rms {error['rms']:.3g})")
     ax.set_title("Stage 4: crisp and defuzzified curve")
     return ax

@@ -57,6 +57,7 @@ __all__ = [
     "SurfaceDistance",
     "SurfaceLayerSamples",
     "SurfaceStageSamples",
+    "TypeReducedSamples",
     "TypeReductionName",
     "Which",
 ]
@@ -146,13 +147,21 @@ class AlphaCutCurves(TypedDict):
     upper_right: Floats
 
 
+class TypeReducedSamples(TypedDict):
+    """The type-reduced curves (surfaces) of stage 3, as in the result
+    file's ``curves.type_reduced``."""
+
+    left: Floats
+    right: Floats
+
+
 class StageSamples(TypedDict):
-    """``Solution.sample``: the curves of stages 2–4 at the parameters."""
+    """``Solution.sample``: the curves of stages 2–4 at the parameters, under
+    the keys of the result file's ``curves``."""
 
     params: Floats
     alpha_cut: AlphaCutCurves
-    type_reduced_left: Floats
-    type_reduced_right: Floats
+    type_reduced: TypeReducedSamples
     defuzzified: Floats
 
 
@@ -180,8 +189,7 @@ class SurfaceStageSamples(TypedDict):
     u: Floats
     v: Floats
     alpha_cut: AlphaCutCurves
-    type_reduced_left: Floats
-    type_reduced_right: Floats
+    type_reduced: TypeReducedSamples
     defuzzified: Floats
 
 

@@ -4,6 +4,11 @@ a fuzzy curve offers too, each equal to the layer objects' own answers."""
 
 from __future__ import annotations
 
+import inspect
+import json
+import subprocess
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -100,11 +105,9 @@ CURVE_ONLY = {
         "param_at_length": "a surface has no arc-length parameter",
         "tangent": "a surface has a normal instead",
         "clamped": "surfaces are built clamped",
-        "degree": "a surface has degree_u and degree_v",
         "knots": "a surface has knots_u and knots_v",
     },
     "FuzzyCurve": {
-        "degree": "a surface has degree_u and degree_v",
         "knots": "a surface has knots_u and knots_v",
         "layer_curve": "its surface counterpart is layer_surface",
         "crisp_curve": "its surface counterpart is crisp_surface",
@@ -117,16 +120,16 @@ SURFACE_ONLY = {
         "isocurve": "a curve has no isocurves",
         "normal": "a curve in space has no single normal",
         "shape": "a curve's control points are a list, not a net",
-        "degree_u": "a curve has one degree",
-        "degree_v": "a curve has one degree",
+        "degree_u": "deprecated: degree[0]",
+        "degree_v": "deprecated: degree[1]",
         "knots_u": "a curve has one knot vector",
         "knots_v": "a curve has one knot vector",
     },
     "FuzzySurface": {
         "isocurve": "a curve has no isocurves",
         "shape": "a curve's control points are a list, not a net",
-        "degree_u": "a curve has one degree",
-        "degree_v": "a curve has one degree",
+        "degree_u": "deprecated: degree[0]",
+        "degree_v": "deprecated: degree[1]",
         "knots_u": "a curve has one knot vector",
         "knots_v": "a curve has one knot vector",
         "layer_surface": "its curve counterpart is layer_curve",
@@ -191,3 +194,113 @@ def test_a_fuzzy_surface_differentiates_its_layers_as_their_surfaces_do() -> Non
             d[:, :, i], surface.layer_surface(name).derivatives(u, v, order=2)
         )
     assert np.isnan(d[..., 2, 1, :]).all() and not np.isnan(d[..., 1, 1, :]).any()
+
+
+# A surface's operation in one direction takes the curve operation's
+# arguments, then the direction as a keyword.
+DIRECTED = ["insert_knot", "refine_knots", "elevate_degree", "split_at"]
+
+
+@pytest.mark.parametrize(
+    "curve, surface", [("NurbsCurve", "NurbsSurface"), ("FuzzyCurve", "FuzzySurface")]
+)
+@pytest.mark.parametrize("method", DIRECTED)
+def test_a_surface_operation_takes_the_curve_arguments_then_a_direction(
+    curve: str, surface: str, method: str
+) -> None:
+    c = inspect.signature(getattr(getattr(t2spline, curve), method))
+    s = inspect.signature(getattr(getattr(t2spline, surface), method))
+    assert list(s.parameters) == [*c.parameters, "direction"]
+    assert s.parameters["direction"].kind is inspect.Parameter.KEYWORD_ONLY
+    for name, p in c.parameters.items():
+        assert s.parameters[name].default == p.default, (method, name)
+
+
+def test_the_old_forms_still_work_with_a_deprecation_warning() -> None:
+    surface = t2spline.FuzzySurface.from_job(CYLINDER)
+    net = surface.crisp_surface()
+    pairs = [
+        (lambda s: s.insert_knot("u", 0.3, 2), lambda s: s.insert_knot(0.3, 2, direction="u")),
+        (lambda s: s.refine_knots("v", [0.2, 0.7]), lambda s: s.refine_knots([0.2, 0.7], direction="v")),
+        (lambda s: s.elevate_degree("v"), lambda s: s.elevate_degree(direction="v")),
+        (lambda s: s.elevate_degree("u", times=2), lambda s: s.elevate_degree(2, direction="u")),
+    ]
+    for s in (surface, net):
+        for old, new in pairs:
+            with pytest.warns(DeprecationWarning, match="use .*direction="):
+                before = old(s)
+            np.testing.assert_array_equal(before.weights, new(s).weights)
+            np.testing.assert_array_equal(before.knots_u, new(s).knots_u)
+            np.testing.assert_array_equal(before.knots_v, new(s).knots_v)
+        with pytest.warns(DeprecationWarning):
+            a, b = s.split_at("u", 0.4)
+        a2, b2 = s.split_at(0.4, direction="u")
+        np.testing.assert_array_equal(a.knots_u, a2.knots_u)
+        np.testing.assert_array_equal(b.knots_u, b2.knots_u)
+        with pytest.warns(DeprecationWarning):
+            iso = s.isocurve("v", 0.5)
+        np.testing.assert_array_equal(iso.knots, s.isocurve(0.5, direction="v").knots)
+        with pytest.warns(DeprecationWarning, match=r"use degree\[0\]"):
+            assert s.degree_u == s.degree[0]
+        with pytest.warns(DeprecationWarning, match=r"use degree\[1\]"):
+            assert s.degree_v == s.degree[1]
+        assert s.order == (s.degree[0] + 1, s.degree[1] + 1)
+    curve = t2spline.FuzzyCurve.from_job(EXAMPLE)
+    with pytest.warns(DeprecationWarning, match=r"insert_knot\(t="):
+        old_curve = curve.insert_knot(u=0.3)
+    np.testing.assert_array_equal(old_curve.knots, curve.insert_knot(t=0.3).knots)
+    with pytest.raises(TypeError, match="missing the keyword argument direction"):
+        net.insert_knot(0.3)
+    with pytest.raises(TypeError, match="at most 2 positional"):
+        net.insert_knot(0.3, 1, 2, direction="u")
+
+
+def test_a_solution_samples_under_the_result_file_keys(cli: Path, tmp_path: Path) -> None:
+    result = json.loads(
+        subprocess.run(
+            [str(cli), "run", str(EXAMPLE), "--samples", "9"], check=True, capture_output=True, text=True
+        ).stdout
+    )
+    solution = t2spline.FuzzyCurve.from_job(EXAMPLE).solve(result["alpha"])
+    stages = solution.sample(9)
+    curves = result["curves"]
+    assert set(stages) - {"params"} <= set(curves)
+    np.testing.assert_array_equal(stages["params"], curves["params"])
+    for side in ("left", "right"):
+        np.testing.assert_array_equal(stages["type_reduced"][side], curves["type_reduced"][side])
+        with pytest.warns(DeprecationWarning, match=rf"\['type_reduced'\]\['{side}'\]"):
+            old = stages[f"type_reduced_{side}"]
+        assert old is stages["type_reduced"][side]
+    np.testing.assert_array_equal(stages["defuzzified"], curves["defuzzified"])
+    with pytest.raises(KeyError):
+        stages["type_reduced_middle"]
+    surface = t2spline.FuzzySurface.from_job(CYLINDER).solve(0.5)
+    assert list(surface.sample(3, 2)["type_reduced"]) == ["left", "right"]
+
+
+def test_plot_draws_with_the_colours_of_the_figures(cli: Path, tmp_path: Path) -> None:
+    """`t2spline.plot` takes its colours from the figures' own table, and the
+    CLI's stage figures draw with those colours."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib.figure import Figure
+
+    import t2spline.plot as tplot
+
+    palette = dict(t2spline._t2spline._palette())
+    assert tplot.PALETTE == palette
+    assert (tplot.UPPER, tplot.PRIMARY, tplot.LOWER) == (palette["upper"], palette["primary"], palette["lower"])
+    subprocess.run([str(cli), "plot", str(EXAMPLE), "-o", str(tmp_path), "--format", "svg"], check=True,
+                   capture_output=True)
+    drawn = {path.stem: path.read_text().lower() for path in tmp_path.glob("*.svg")}
+    for name in ("upper", "primary", "lower"):
+        assert palette[name].lower() in drawn["stage1-fuzzy"], name
+    for name in ("type_reduced_left", "type_reduced_right"):
+        assert palette[name].lower() in drawn["stage3-type-reduced"], name
+    assert palette["solution"].lower() in drawn["stage4-defuzzified"]
+    ax = Figure().add_subplot()
+    tplot.stage3(ax, json.loads(subprocess.run([str(cli), "run", str(EXAMPLE)], check=True,
+                                               capture_output=True, text=True).stdout))
+    used = {matplotlib.colors.to_hex(line.get_color()) for line in ax.get_lines()}
+    assert {palette["type_reduced_left"], palette["type_reduced_right"]} <= used

@@ -88,7 +88,7 @@ pub use chart::svg::{render as render_svg, render_prefixed as render_svg_prefixe
 pub use error::Error;
 pub use figures::surface::View;
 pub use figures::{
-    all_figures, measures_notebook_figure, notebook_figures, number_notebook_figure,
+    all_figures, measures_notebook_figure, notebook_figures, number_notebook_figure, palette,
     region_notebook_figure, section_notebook_figure, Aspect, FigureOptions, NumberChoice, Stages,
     FIGURE_NAMES, MEASURES_MAX_POINTS, NOTEBOOK_MAX_REGION_POINTS, NOTEBOOK_MAX_SAMPLES,
     NOTEBOOK_SURFACE_GRID,

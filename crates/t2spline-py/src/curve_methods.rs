@@ -91,14 +91,14 @@ macro_rules! curve_methods {
                 $crate::curve_methods::uniform_params(py, domain, count, "count")
             }
 
-            /// The same curve with the knot ``u`` inserted ``times`` times
+            /// The same curve with the knot ``t`` inserted ``times`` times
             /// (Boehm, The NURBS Book A5.1). A fuzzy curve inserts it into
             /// all seven layers at once; their order holds exactly.
             ///
             /// Raises
             /// ------
             /// ValueError
-            ///     If ``u`` is outside the domain or would repeat more than
+            ///     If ``t`` is outside the domain or would repeat more than
             ///     ``order`` times; for a fuzzy curve, when a coordinate mixes
             ///     lower heights (new control points need one height per
             ///     coordinate).
@@ -109,17 +109,31 @@ macro_rules! curve_methods {
             /// >>> d = c.insert_knot(0.3)
             /// >>> d.control_points.shape, bool(abs(d.eval(0.7) - c.eval(0.7)).max() < 1e-14)
             /// ((5, 2), True)
-            #[pyo3(signature = (u, times=None), text_signature = "($self, u, times=1)")]
+            #[pyo3(signature = (t=None, times=None, *, u=None), text_signature = "($self, t, times=1)")]
             fn insert_knot(
                 &self,
                 py: Python<'_>,
-                u: &Bound<'_, PyAny>,
+                t: Option<&Bound<'_, PyAny>>,
                 times: Option<&Bound<'_, PyAny>>,
+                u: Option<&Bound<'_, PyAny>>,
             ) -> PyResult<Self> {
-                let u = $crate::keyword::real(u, "u")?;
+                const METHOD: &str = concat!(stringify!($class), ".insert_knot");
+                let t = match (t, u) {
+                    (Some(_), Some(_)) => {
+                        return Err(pyo3::exceptions::PyTypeError::new_err(format!(
+                            "{METHOD}: t and u name the same argument; give t"
+                        )))
+                    }
+                    (None, Some(u)) => {
+                        $crate::directed::deprecated(py, "insert_knot(u=…)", "insert_knot(t=…)")?;
+                        u
+                    }
+                    (t, None) => $crate::directed::required(t, METHOD, "t")?,
+                };
+                let at = $crate::keyword::real(t, "t")?;
                 let times = $crate::keyword::times(times)?;
                 $crate::dim::by_dim!(&self.0, |c| $crate::errors::compute(py, || Ok(c
-                    .insert_knot(u, times)?
+                    .insert_knot(at, times)?
                     .into())))
             }
 

@@ -53,6 +53,7 @@ mod construct;
 mod curvature;
 mod curve_methods;
 mod dim;
+mod directed;
 mod distance_sweep;
 mod errors;
 mod export;
@@ -149,6 +150,7 @@ fn _t2spline(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<set::PyRegion>()?;
     m.add_function(wrap_pyfunction!(run::run, m)?)?;
     m.add_function(wrap_pyfunction!(command::_cli_main, m)?)?;
+    m.add_function(wrap_pyfunction!(picture::_palette, m)?)?;
     m.add_function(wrap_pyfunction!(many::run_many, m)?)?;
     m.add_function(wrap_pyfunction!(many::_run_rows, m)?)?;
     m.add_function(wrap_pyfunction!(fit::fit, m)?)?;

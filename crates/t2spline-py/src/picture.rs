@@ -217,3 +217,16 @@ pub(crate) fn pictured<'py>(
         .getattr("pictured")?
         .call1((value, picture))
 }
+
+/// The colours of the figures by series (``"upper"``, ``"primary"``,
+/// ``"lower"``, ``"crisp"``, ``"polygon"``, ``"type_reduced_left"``,
+/// ``"type_reduced_right"``, ``"solution"``, ``"distance"``), each
+/// ``"#rrggbb"``: the table that ``t2spline.plot`` draws with, so that its
+/// figures look as ``t2spline plot`` draws them.
+#[pyfunction]
+pub(crate) fn _palette() -> Vec<(&'static str, String)> {
+    t2spline_plot::palette()
+        .into_iter()
+        .map(|(name, colour)| (name, colour.to_string()))
+        .collect()
+}

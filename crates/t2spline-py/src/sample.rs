@@ -7,6 +7,7 @@
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyInt};
+use rayon::prelude::*;
 use t2spline::sampling::{Params, SampleBuffer};
 
 use crate::arrays::{array, broadcast_shape, floats, shape_text};
@@ -260,9 +261,13 @@ impl Pairs {
     }
 }
 
+/// Indices per task of the thread pool; fewer run on the calling thread.
+const CHUNK: usize = 8192;
+
 /// `f(k, out)` for every flat index `k` of an array of `shape`: the result
 /// of shape `shape + tail` (a `float` for a scalar and no tail), computed
-/// with the GIL released within [`MAX_OUTPUT_BYTES`].
+/// with the GIL released within [`MAX_OUTPUT_BYTES`], on rayon's pool for
+/// more than [`CHUNK`] indices.
 fn at_each<'py>(
     py: Python<'py>,
     shape: &[usize],
@@ -274,16 +279,50 @@ fn at_each<'py>(
     check_bytes(count as u128 * width as u128, || {
         format!("{count} parameters of {width} values each")
     })?;
-    let values = compute(py, || {
-        let mut out = Vec::with_capacity(count * width);
-        for k in 0..count {
-            f(k, &mut out)?;
-        }
-        Ok(out)
-    })?;
+    let values = compute(py, || each_index(count, width, &f))?;
     if shape.is_empty() && tail.is_empty() {
         return Ok(values[0].into_pyobject(py)?.into_any());
     }
     let shape: Vec<usize> = shape.iter().chain(tail).copied().collect();
     array(py, values, &shape)
+}
+
+/// The values `f(0, ·), f(1, ·), …, f(count − 1, ·)`, each `width` long, in
+/// order: in chunks of [`CHUNK`] indices on rayon's pool (each chunk written
+/// straight into its place of the result), on this thread when there is
+/// only one chunk. The error is the one of the least index, as a loop gives.
+fn each_index(
+    count: usize,
+    width: usize,
+    f: &(impl Fn(usize, &mut Vec<f64>) -> Result<(), t2spline::Error> + Sync),
+) -> Result<Vec<f64>, t2spline::Error> {
+    if count <= CHUNK {
+        let mut out = Vec::with_capacity(count * width);
+        for k in 0..count {
+            f(k, &mut out)?;
+        }
+        return Ok(out);
+    }
+    // A zeroed allocation: its pages are first touched by the tasks.
+    let mut out = vec![0.0; count * width];
+    let outcomes: Vec<Result<(), t2spline::Error>> = out
+        .par_chunks_mut((CHUNK * width).max(1))
+        .enumerate()
+        .map(|(chunk, slots)| {
+            let mut values = Vec::with_capacity(slots.len());
+            let first = chunk * CHUNK;
+            for k in first..(first + CHUNK).min(count) {
+                f(k, &mut values)?;
+            }
+            debug_assert_eq!(values.len(), slots.len(), "f gives `width` values");
+            for (slot, value) in slots.iter_mut().zip(values) {
+                *slot = value;
+            }
+            Ok(())
+        })
+        .collect();
+    match outcomes.into_iter().find_map(Result::err) {
+        Some(error) => Err(error),
+        None => Ok(out),
+    }
 }

@@ -12,7 +12,7 @@ use crate::construct::{layer, side};
 use crate::dim::by_dim;
 use crate::errors::compute;
 use crate::sample::{check_output, ParamsArg};
-use crate::stage_methods::{stage_methods, stage_samples};
+use crate::stage_methods::{stage_methods, stage_samples, stage_samples_dict};
 
 stage_methods!(PySolution, fuzzy_curve, "n" {
 
@@ -77,13 +77,16 @@ stage_methods!(PySolution, fuzzy_curve, "n" {
     /// dict
     ///     ``"params"`` (shape ``(m,)``); ``"alpha_cut"``: the six alpha-cut
     ///     layer curves (shape ``(m, d)``, ``None`` for an absent lower layer);
-    ///     ``"type_reduced_left"``, ``"type_reduced_right"`` and
-    ///     ``"defuzzified"`` (shape ``(m, d)``).
+    ///     ``"type_reduced"``: ``"left"`` and ``"right"``; and
+    ///     ``"defuzzified"`` (shape ``(m, d)``): the keys of the result
+    ///     file's ``curves``. The flat keys of earlier releases
+    ///     (``"type_reduced_left"``) still answer, with a
+    ///     ``DeprecationWarning``.
     fn sample<'py>(
         &self,
         py: Python<'py>,
         params: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyDict>> {
+    ) -> PyResult<Bound<'py, PyAny>> {
         let params = ParamsArg::extract(params, "params")?;
         let n = params.len();
         check_output(n, 9 * self.0.dimension(), "params")?;
@@ -94,7 +97,7 @@ stage_methods!(PySolution, fuzzy_curve, "n" {
             let stages = compute(py, || s.sample_stages(params.params()))?;
             stage_samples(&out, &stages, &[n])
         })?;
-        Ok(out)
+        stage_samples_dict(out)
     }
 
     /// The picture in a notebook: the four stages (fuzzy curve, alpha-cut,

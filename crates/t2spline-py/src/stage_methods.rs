@@ -15,8 +15,9 @@ pub(crate) fn six_layers() -> impl Iterator<Item = Layer> {
 
 /// The sampled stages 2–4 as `Solution.sample` and `SurfaceSolution.sample`
 /// give them, into `out`: `"alpha_cut"` (a dict of the six layers, `None`
-/// for an absent lower layer), `"type_reduced_left"`, `"type_reduced_right"`
-/// and `"defuzzified"`, each of shape `samples + (d,)`.
+/// for an absent lower layer), `"type_reduced"` (a dict of `"left"` and
+/// `"right"`) and `"defuzzified"`, each of shape `samples + (d,)`: the keys of
+/// the result file's `curves`.
 pub(crate) fn stage_samples<const D: usize>(
     out: &Bound<'_, PyDict>,
     stages: &t2spline::sampling::StageSamples<D>,
@@ -34,17 +35,31 @@ pub(crate) fn stage_samples<const D: usize>(
         }
     }
     out.set_item("alpha_cut", cuts)?;
-    for (key, samples_of) in [
-        ("type_reduced_left", stages.type_reduced(Side::Left)),
-        ("type_reduced_right", stages.type_reduced(Side::Right)),
-        ("defuzzified", stages.defuzzified()),
-    ] {
-        out.set_item(
-            key,
-            crate::arrays::columns_array(py, samples_of.coords(), samples)?,
+    let reduced = PyDict::new(py);
+    for (side, name) in [(Side::Left, "left"), (Side::Right, "right")] {
+        let curve = stages.type_reduced(side);
+        reduced.set_item(
+            name,
+            crate::arrays::columns_array(py, curve.coords(), samples)?,
         )?;
     }
+    out.set_item("type_reduced", reduced)?;
+    out.set_item(
+        "defuzzified",
+        crate::arrays::columns_array(py, stages.defuzzified().coords(), samples)?,
+    )?;
     Ok(())
+}
+
+/// `samples` as the dict that `sample` returns: a `t2spline._samples.SampledStages`,
+/// which still answers the flat keys of earlier releases
+/// (`type_reduced_left`), with a `DeprecationWarning`.
+pub(crate) fn stage_samples_dict<'py>(samples: Bound<'py, PyDict>) -> PyResult<Bound<'py, PyAny>> {
+    samples
+        .py()
+        .import("t2spline._samples")?
+        .getattr("SampledStages")?
+        .call1((samples,))
 }
 
 /// `stage_methods!(Class, model, "net" { methods })`: the `#[pymethods]`

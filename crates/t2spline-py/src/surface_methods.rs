@@ -6,8 +6,8 @@
 
 /// `surface_methods!(Class, Curve { methods })`: the `#[pymethods]` block of
 /// `Class` (a wrapper of a `ByDim` of surfaces whose isocurves are `Curve`s)
-/// with its own `methods` and the shared ones: `dimension`, `degree_u`,
-/// `degree_v`, `order`, `shape`, `weights`, `knots_u`, `knots_v`, `domain`,
+/// with its own `methods` and the shared ones: `dimension`, `degree` (and
+/// the deprecated `degree_u`, `degree_v`), `order`, `shape`, `weights`, `knots_u`, `knots_v`, `domain`,
 /// `uniform_params`, `bounding_box`, `isocurve`, `insert_knot`, `refine_knots`,
 /// `elevate_degree`, `split_at`, `segment`.
 macro_rules! surface_methods {
@@ -22,16 +22,25 @@ macro_rules! surface_methods {
                 self.0.dimension()
             }
 
-            /// The degree ``p`` in u.
+            /// The degrees ``(p, q)`` in u and in v.
             #[getter]
-            fn degree_u(&self) -> usize {
-                $crate::dim::by_dim!(&self.0, |s| s.degree()[0])
+            fn degree(&self) -> (usize, usize) {
+                let [p, q] = $crate::dim::by_dim!(&self.0, |s| s.degree());
+                (p, q)
             }
 
-            /// The degree ``q`` in v.
+            /// The degree ``p`` in u. Deprecated: use ``degree[0]``.
             #[getter]
-            fn degree_v(&self) -> usize {
-                $crate::dim::by_dim!(&self.0, |s| s.degree()[1])
+            fn degree_u(&self, py: Python<'_>) -> PyResult<usize> {
+                $crate::directed::deprecated(py, "degree_u", "degree[0]")?;
+                Ok(self.degree().0)
+            }
+
+            /// The degree ``q`` in v. Deprecated: use ``degree[1]``.
+            #[getter]
+            fn degree_v(&self, py: Python<'_>) -> PyResult<usize> {
+                $crate::directed::deprecated(py, "degree_v", "degree[1]")?;
+                Ok(self.degree().1)
             }
 
             /// The orders ``(p + 1, q + 1)``.
@@ -115,16 +124,20 @@ macro_rules! surface_methods {
             /// Examples
             /// --------
             /// >>> s = NurbsSurface([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]], degree=1)
-            /// >>> s.isocurve("u", 0.25).eval(0.6).tolist()     # S(0.25, 0.6) = (u, v, u·v)
+            /// >>> s.isocurve(0.25, direction="u").eval(0.6).tolist()     # S(0.25, 0.6) = (u, v, u·v)
             /// [0.25, 0.6, 0.15]
+            #[pyo3(signature = (t, old=None, *, direction=None), text_signature = "($self, t, *, direction)")]
             fn isocurve(
                 &self,
                 py: Python<'_>,
-                direction: &Bound<'_, PyAny>,
                 t: &Bound<'_, PyAny>,
+                old: Option<&Bound<'_, PyAny>>,
+                direction: Option<&Bound<'_, PyAny>>,
             ) -> PyResult<$curve> {
-                let t = $crate::keyword::real(t, "t")?;
-                let direction = $crate::construct::direction(direction)?;
+                const METHOD: &str = concat!(stringify!($class), ".isocurve");
+                let (direction, [t, _]) =
+                    $crate::directed::directed(METHOD, 1, [Some(t), old, None], direction)?;
+                let t = $crate::keyword::real($crate::directed::required(t, METHOD, "t")?, "t")?;
                 $crate::dim::by_dim!(&self.0, |s| $crate::errors::compute(py, || Ok(s
                     .isocurve(direction, t)?
                     .into())))
@@ -141,16 +154,19 @@ macro_rules! surface_methods {
             ///     If ``t`` is outside the domain of ``direction`` or would
             ///     repeat more than its order; for a fuzzy surface, when a
             ///     coordinate mixes lower heights.
-            #[pyo3(signature = (direction, t, times=None), text_signature = "($self, direction, t, times=1)")]
+            #[pyo3(signature = (t, times=None, old=None, *, direction=None), text_signature = "($self, t, times=1, *, direction)")]
             fn insert_knot(
                 &self,
                 py: Python<'_>,
-                direction: &Bound<'_, PyAny>,
                 t: &Bound<'_, PyAny>,
                 times: Option<&Bound<'_, PyAny>>,
+                old: Option<&Bound<'_, PyAny>>,
+                direction: Option<&Bound<'_, PyAny>>,
             ) -> PyResult<Self> {
-                let direction = $crate::construct::direction(direction)?;
-                let t = $crate::keyword::real(t, "t")?;
+                const METHOD: &str = concat!(stringify!($class), ".insert_knot");
+                let (direction, [t, times]) =
+                    $crate::directed::directed(METHOD, 2, [Some(t), times, old], direction)?;
+                let t = $crate::keyword::real($crate::directed::required(t, METHOD, "t")?, "t")?;
                 let times = $crate::keyword::times(times)?;
                 $crate::dim::by_dim!(&self.0, |s| $crate::errors::compute(py, || Ok(s
                     .insert_knot(direction, t, times)?
@@ -159,13 +175,18 @@ macro_rules! surface_methods {
 
             /// The same surface with all of ``knots`` inserted in
             /// ``direction`` (knot refinement, A5.4 on every line of the net).
+            #[pyo3(signature = (knots, old=None, *, direction=None), text_signature = "($self, knots, *, direction)")]
             fn refine_knots(
                 &self,
                 py: Python<'_>,
-                direction: &Bound<'_, PyAny>,
                 knots: &Bound<'_, PyAny>,
+                old: Option<&Bound<'_, PyAny>>,
+                direction: Option<&Bound<'_, PyAny>>,
             ) -> PyResult<Self> {
-                let direction = $crate::construct::direction(direction)?;
+                const METHOD: &str = concat!(stringify!($class), ".refine_knots");
+                let (direction, [knots, _]) =
+                    $crate::directed::directed(METHOD, 1, [Some(knots), old, None], direction)?;
+                let knots = $crate::directed::required(knots, METHOD, "knots")?;
                 let new = $crate::arrays::optional_vector(Some(knots), "knots")?
                     .unwrap_or_default();
                 $crate::dim::by_dim!(&self.0, |s| $crate::errors::compute(py, || Ok(s
@@ -176,14 +197,17 @@ macro_rules! surface_methods {
             /// The same surface with its degree in ``direction`` raised by
             /// ``times`` (A5.9 on every line of the net; an unclamped
             /// direction is first cut to its domain).
-            #[pyo3(signature = (direction, times=None), text_signature = "($self, direction, times=1)")]
+            #[pyo3(signature = (times=None, old=None, *, direction=None), text_signature = "($self, times=1, *, direction)")]
             fn elevate_degree(
                 &self,
                 py: Python<'_>,
-                direction: &Bound<'_, PyAny>,
                 times: Option<&Bound<'_, PyAny>>,
+                old: Option<&Bound<'_, PyAny>>,
+                direction: Option<&Bound<'_, PyAny>>,
             ) -> PyResult<Self> {
-                let direction = $crate::construct::direction(direction)?;
+                const METHOD: &str = concat!(stringify!($class), ".elevate_degree");
+                let (direction, [times, _]) =
+                    $crate::directed::directed(METHOD, 1, [times, old, None], direction)?;
                 let times = $crate::keyword::times(times)?;
                 $crate::dim::by_dim!(&self.0, |s| $crate::errors::compute(py, || Ok(s
                     .elevate_degree(direction, times)?
@@ -193,14 +217,18 @@ macro_rules! surface_methods {
             /// The two surfaces on either side of ``t`` in ``direction``,
             /// strictly inside its domain: for ``"u"`` the pieces over
             /// ``[a, t] × [c, d]`` and ``[t, b] × [c, d]``.
+            #[pyo3(signature = (t, old=None, *, direction=None), text_signature = "($self, t, *, direction)")]
             fn split_at(
                 &self,
                 py: Python<'_>,
-                direction: &Bound<'_, PyAny>,
                 t: &Bound<'_, PyAny>,
+                old: Option<&Bound<'_, PyAny>>,
+                direction: Option<&Bound<'_, PyAny>>,
             ) -> PyResult<(Self, Self)> {
-                let direction = $crate::construct::direction(direction)?;
-                let t = $crate::keyword::real(t, "t")?;
+                const METHOD: &str = concat!(stringify!($class), ".split_at");
+                let (direction, [t, _]) =
+                    $crate::directed::directed(METHOD, 1, [Some(t), old, None], direction)?;
+                let t = $crate::keyword::real($crate::directed::required(t, METHOD, "t")?, "t")?;
                 $crate::dim::by_dim!(&self.0, |s| $crate::errors::compute(py, || {
                     let [a, b] = s.split_at(direction, t)?;
                     Ok((a.into(), b.into()))

@@ -11,7 +11,7 @@ use crate::construct::{layer, side};
 use crate::dim::by_dim;
 use crate::errors::compute;
 use crate::sample::GridArg;
-use crate::stage_methods::{stage_methods, stage_samples};
+use crate::stage_methods::{stage_methods, stage_samples, stage_samples_dict};
 
 stage_methods!(PySurfaceSolution, fuzzy_surface, "nu, nv" {
 
@@ -91,15 +91,16 @@ stage_methods!(PySurfaceSolution, fuzzy_surface, "nu, nv" {
     /// dict
     ///     ``"u"``, ``"v"`` (shapes ``(su,)``, ``(sv,)``); ``"alpha_cut"``:
     ///     the six alpha-cut layer surfaces (shape ``(su, sv, d)``, ``None``
-    ///     for an absent lower layer); ``"type_reduced_left"``,
-    ///     ``"type_reduced_right"`` and ``"defuzzified"`` (shape
-    ///     ``(su, sv, d)``).
+    ///     for an absent lower layer); ``"type_reduced"``: ``"left"`` and
+    ///     ``"right"``; and ``"defuzzified"`` (shape ``(su, sv, d)``). The
+    ///     flat keys of earlier releases (``"type_reduced_left"``) still
+    ///     answer, with a ``DeprecationWarning``.
     fn sample<'py>(
         &self,
         py: Python<'py>,
         u: &Bound<'py, PyAny>,
         v: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyDict>> {
+    ) -> PyResult<Bound<'py, PyAny>> {
         let grid = GridArg::extract(u, v)?;
         grid.check_output(9 * self.0.dimension())?;
         let out = PyDict::new(py);
@@ -112,7 +113,7 @@ stage_methods!(PySurfaceSolution, fuzzy_surface, "nu, nv" {
             let stages = compute(py, || s.sample_stages(grid.u.params(), grid.v.params()))?;
             stage_samples(&out, stages.samples(), &grid.shape())
         })?;
-        Ok(out)
+        stage_samples_dict(out)
     }
 
     /// The picture in a notebook: the four stages on the surface, drawn by

@@ -40,7 +40,7 @@ pub use notebook::{
     NOTEBOOK_SURFACE_GRID,
 };
 pub use number::number_figure;
-pub use style::reduction_label;
+pub use style::{palette, reduction_label};
 
 use crate::chart::scene::Figure;
 use crate::error::Error;

@@ -5,7 +5,8 @@
 use t2spline::{Layer, TypeReduction};
 
 use crate::chart::paint::{
-    Fill, Marker, Shape, Stroke, BLACK, BLUE, GREEN, GREY, INK, ORANGE, PURPLE, SKY, VERMILLION,
+    Color, Fill, Marker, Shape, Stroke, BLACK, BLUE, GREEN, GREY, INK, ORANGE, PURPLE, SKY,
+    VERMILLION,
     WHITE,
 };
 
@@ -183,4 +184,25 @@ pub fn reduction_marker(method: TypeReduction) -> Marker {
         TypeReduction::NieTan => Marker::filled(Shape::Triangle, 7.5, BLUE),
         TypeReduction::AlphaPlanes => Marker::filled(Shape::Circle, 6.5, ORANGE),
     }
+}
+
+/// The colour of each series of the method, by name, as the figures draw
+/// it: `upper`, `primary` and `lower` (a function's layers), `crisp`,
+/// `polygon` (the control polygon), `type_reduced_left`,
+/// `type_reduced_right`, `solution` (the defuzzified curve) and `distance`.
+/// Taken from the strokes above, so that a plotting front end that reads
+/// this table (the Python package's `t2spline.plot`) draws as `plot` does.
+#[must_use]
+pub fn palette() -> [(&'static str, Color); 9] {
+    [
+        ("upper", layer_stroke(Layer::UpperLeft).color),
+        ("primary", layer_stroke(Layer::PrimaryLeft).color),
+        ("lower", layer_stroke(Layer::LowerLeft).color),
+        ("crisp", crisp_stroke().color),
+        ("polygon", polygon_stroke().color),
+        ("type_reduced_left", left_stroke().color),
+        ("type_reduced_right", right_stroke().color),
+        ("solution", solution_stroke().color),
+        ("distance", distance_stroke().color),
+    ]
 }
