@@ -6,8 +6,7 @@ use t2spline::{Layer, TypeReduction};
 
 use crate::chart::paint::{
     Color, Fill, Marker, Shape, Stroke, BLACK, BLUE, GREEN, GREY, INK, ORANGE, PURPLE, SKY,
-    VERMILLION,
-    WHITE,
+    VERMILLION, WHITE,
 };
 
 /// The layers of each function, for legends and bars: (left, right, name).
