@@ -3,12 +3,15 @@ against scipy's ``BSpline.__call__``, measured in one run.
 
 The same non-rational cubic (a plane curve of 100 control points on a
 clamped uniform knot vector) is built in both libraries, and both evaluate
-it at the same 10⁶ parameters drawn uniformly from its domain, unsorted. The
-two sides alternate round by round on a shared, noisy machine, and every
-figure is a ratio within one round; the median ratio is reported. scipy
-evaluates on one thread; t2spline is timed on one thread
-(``RAYON_NUM_THREADS=1`` in a child process) and with its default thread
-pool. Before timing, the two results are compared (they agree to 1e-12).
+it at the same 10⁶ parameters drawn uniformly from its domain, unsorted:
+scipy's ``BSpline.__call__`` (de Boor, one thread) against t2spline's
+``eval`` (de Boor at each parameter, in chunks on the thread pool) and
+``sample`` (the sampling engine: the power form of each span). Each side
+is timed in a child process, t2spline on one thread
+(``RAYON_NUM_THREADS=1``) and on its default pool; the sides alternate round
+by round on a shared, noisy machine, every figure is a ratio within one
+round, and the median ratio is reported. Before timing, the values are
+compared (they agree to 1e-12).
 
     python python/bench/bench_eval.py [--rounds 5] [--points 1000000]
 """
@@ -21,6 +24,7 @@ import statistics
 import subprocess
 import sys
 import time
+from typing import Callable, Dict, List, Optional
 
 import numpy as np
 
@@ -42,7 +46,7 @@ def parameters(count: int) -> np.ndarray:
     return np.random.default_rng(7).uniform(0.0, 1.0, count)
 
 
-def seconds_of(f, t: np.ndarray) -> float:
+def seconds_of(f: Callable[[np.ndarray], object], t: np.ndarray) -> float:
     """The least of three timed calls after a warm-up call."""
     f(t)
     best = float("inf")
@@ -53,24 +57,25 @@ def seconds_of(f, t: np.ndarray) -> float:
     return best
 
 
-def ours(count: int) -> float:
+def ours(count: int, method: str) -> float:
     import t2spline
 
     points, knots = curve_data()
     curve = t2spline.NurbsCurve(points, knots=knots, degree=DEGREE)
-    return seconds_of(curve.eval, parameters(count))
+    return seconds_of(getattr(curve, method), parameters(count))
 
 
 def theirs(count: int) -> float:
-    from scipy.interpolate import BSpline
+    from scipy.interpolate import BSpline  # type: ignore[import-untyped]
 
     points, knots = curve_data()
     spline = BSpline(knots, points, DEGREE, extrapolate=False)
     return seconds_of(spline, parameters(count))
 
 
-def in_child(side: str, count: int, threads: int | None) -> float:
-    """Seconds of one side, timed in a fresh process (one thread if asked)."""
+def in_child(side: str, count: int, threads: Optional[int]) -> float:
+    """Seconds of one side (`theirs`, or one of our methods), timed in a
+    fresh process (one thread if asked)."""
     env = dict(os.environ)
     if threads is not None:
         env["RAYON_NUM_THREADS"] = str(threads)
@@ -100,26 +105,28 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--rounds", type=int, default=5)
     parser.add_argument("--points", type=int, default=1_000_000)
-    parser.add_argument("--child", choices=["ours", "theirs"], help=argparse.SUPPRESS)
+    parser.add_argument("--child", choices=["eval", "sample", "theirs"], help=argparse.SUPPRESS)
     args = parser.parse_args()
     if args.child:
-        print((ours if args.child == "ours" else theirs)(args.points))
+        print(theirs(args.points) if args.child == "theirs" else ours(args.points, args.child))
         return
     difference = check_agreement(args.points)
     if difference > 1e-12:
         sys.exit(f"t2spline and scipy disagree by {difference:.3g}")
-    one, pool = [], []
+    ratios: Dict[str, List[float]] = {}
     for _ in range(args.rounds):
         scipy_s = in_child("theirs", args.points, None)
-        one.append(in_child("ours", args.points, 1) / scipy_s)
-        pool.append(in_child("ours", args.points, None) / scipy_s)
+        for method in ("eval", "sample"):
+            for threads in (1, None):
+                name = f"{method}, {'one thread' if threads else 'thread pool'}"
+                ratios.setdefault(name, []).append(in_child(method, args.points, threads) / scipy_s)
     print(
-        f"eval of {args.points} unsorted parameters, cubic of {CONTROL_POINTS} points "
+        f"{args.points} unsorted parameters, cubic of {CONTROL_POINTS} points "
         f"(largest difference from scipy {difference:.2g}); last round scipy {scipy_s * 1e3:.1f} ms"
     )
-    print(f"  t2spline / scipy, one thread:  median {statistics.median(one):.2f}  (rounds {', '.join(f'{r:.2f}' for r in one)})")
-    print(f"  t2spline / scipy, thread pool: median {statistics.median(pool):.2f}  (rounds {', '.join(f'{r:.2f}' for r in pool)})")
-
+    for name, values in ratios.items():
+        rounds = ", ".join(f"{r:.2f}" for r in values)
+        print(f"  t2spline {name} / scipy: median {statistics.median(values):.2f}  (rounds {rounds})")
 
 if __name__ == "__main__":
     main()

@@ -431,7 +431,8 @@ def test_a_transcript_shows_what_the_program_prints(
 ) -> None:
     work = tmp_path / "work"
     work.mkdir()
-    for folder in ("examples", "fixtures"):
+    for folder in ("examples", "fixtures", "docs/fit-example"):
+        (work / folder).parent.mkdir(parents=True, exist_ok=True)
         (work / folder).symlink_to(ROOT / folder, target_is_directory=True)
     _write_inputs(work, "\n".join(c.text for c in transcript.commands), cli)
     status = 0

@@ -134,11 +134,11 @@ CASES: list[tuple[str, Callable[[], Any], type, str]] = [
     ("type_reduced_curve", lambda: fuzzy_curve().solve(0.5).type_reduced_curve(0), TypeError,
      f"side: {TEXT} int"),
     # surfaces
-    ("isocurve direction", lambda: surface().isocurve(0, 0.5), TypeError, f"direction: {TEXT} int"),
+    ("isocurve direction", lambda: surface().isocurve(0.5, direction=0), TypeError, f"direction: {TEXT} int"),
     ("isocurve t", lambda: surface().isocurve("0.5", direction="u"), TypeError, f"t: {REAL} str"),
     ("surface insert_knot", lambda: surface().insert_knot(0.5, times="1", direction="u"), TypeError,
      f"times: {INT} str"),
-    ("surface refine_knots", lambda: surface().refine_knots(1, [0.5]), TypeError, f"direction: {TEXT} int"),
+    ("surface refine_knots", lambda: surface().refine_knots([0.5], direction=1), TypeError, f"direction: {TEXT} int"),
     ("surface elevate_degree", lambda: surface().elevate_degree(times=0.5, direction="v"), TypeError,
      f"times: {INT} float"),
     ("surface split_at", lambda: surface().split_at(None, direction="u"), TypeError, f"t: {REAL} NoneType"),

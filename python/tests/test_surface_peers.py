@@ -207,8 +207,8 @@ def operation_errors() -> Dict[str, float]:
             a, b = s.domain[k]
             t = float(rng.uniform(a, b))
             for name, mine, peer in (
-                ("insertion", s.insert_knot(direction, t, times=2), splipy_surface(case)),
-                ("elevation", s.elevate_degree(direction), splipy_surface(case)),
+                ("insertion", s.insert_knot(t, times=2, direction=direction), splipy_surface(case)),
+                ("elevation", s.elevate_degree(direction=direction), splipy_surface(case)),
             ):
                 if name == "insertion":
                     peer.insert_knot([t, t], direction=k)

@@ -300,7 +300,6 @@ def test_plot_draws_with_the_colours_of_the_figures(cli: Path, tmp_path: Path) -
         assert palette[name].lower() in drawn["stage3-type-reduced"], name
     assert palette["solution"].lower() in drawn["stage4-defuzzified"]
     ax = Figure().add_subplot()
-    tplot.stage3(ax, json.loads(subprocess.run([str(cli), "run", str(EXAMPLE)], check=True,
-                                               capture_output=True, text=True).stdout))
+    tplot.stage3(ax, t2spline.run(EXAMPLE))
     used = {matplotlib.colors.to_hex(line.get_color()) for line in ax.get_lines()}
     assert {palette["type_reduced_left"], palette["type_reduced_right"]} <= used

@@ -117,20 +117,23 @@ macro_rules! curve_methods {
                 times: Option<&Bound<'_, PyAny>>,
                 u: Option<&Bound<'_, PyAny>>,
             ) -> PyResult<Self> {
-                const METHOD: &str = concat!(stringify!($class), ".insert_knot");
-                let t = match (t, u) {
+                let at = match (t, u) {
                     (Some(_), Some(_)) => {
-                        return Err(pyo3::exceptions::PyTypeError::new_err(format!(
-                            "{METHOD}: t and u name the same argument; give t"
-                        )))
+                        return Err(pyo3::exceptions::PyTypeError::new_err(
+                            "insert_knot: t and u name the same argument; give t",
+                        ))
                     }
                     (None, Some(u)) => {
                         $crate::directed::deprecated(py, "insert_knot(u=…)", "insert_knot(t=…)")?;
-                        u
+                        $crate::keyword::real(u, "t")?
                     }
-                    (t, None) => $crate::directed::required(t, METHOD, "t")?,
+                    (Some(t), None) => $crate::keyword::real(t, "t")?,
+                    (None, None) => {
+                        return Err(pyo3::exceptions::PyTypeError::new_err(
+                            "insert_knot: missing the argument t",
+                        ))
+                    }
                 };
-                let at = $crate::keyword::real(t, "t")?;
                 let times = $crate::keyword::times(times)?;
                 $crate::dim::by_dim!(&self.0, |c| $crate::errors::compute(py, || Ok(c
                     .insert_knot(at, times)?

@@ -126,18 +126,18 @@ macro_rules! surface_methods {
             /// >>> s = NurbsSurface([[[0, 0, 0], [0, 1, 0]], [[1, 0, 0], [1, 1, 1]]], degree=1)
             /// >>> s.isocurve(0.25, direction="u").eval(0.6).tolist()     # S(0.25, 0.6) = (u, v, u·v)
             /// [0.25, 0.6, 0.15]
-            #[pyo3(signature = (t, old=None, *, direction=None), text_signature = "($self, t, *, direction)")]
+            #[pyo3(signature = (*args, t=None, direction=None), text_signature = "($self, t, *, direction)")]
             fn isocurve(
                 &self,
                 py: Python<'_>,
-                t: &Bound<'_, PyAny>,
-                old: Option<&Bound<'_, PyAny>>,
+                args: &Bound<'_, pyo3::types::PyTuple>,
+                t: Option<&Bound<'_, PyAny>>,
                 direction: Option<&Bound<'_, PyAny>>,
             ) -> PyResult<$curve> {
-                const METHOD: &str = concat!(stringify!($class), ".isocurve");
-                let (direction, [t, _]) =
-                    $crate::directed::directed(METHOD, 1, [Some(t), old, None], direction)?;
-                let t = $crate::keyword::real($crate::directed::required(t, METHOD, "t")?, "t")?;
+                let class = stringify!($class);
+                let (direction, [t]) =
+                    $crate::directed::directed(class, "isocurve", ["t"], args, [t], direction)?;
+                let t = $crate::keyword::real(&$crate::directed::required(t, "isocurve", "t")?, "t")?;
                 $crate::dim::by_dim!(&self.0, |s| $crate::errors::compute(py, || Ok(s
                     .isocurve(direction, t)?
                     .into())))
@@ -154,20 +154,21 @@ macro_rules! surface_methods {
             ///     If ``t`` is outside the domain of ``direction`` or would
             ///     repeat more than its order; for a fuzzy surface, when a
             ///     coordinate mixes lower heights.
-            #[pyo3(signature = (t, times=None, old=None, *, direction=None), text_signature = "($self, t, times=1, *, direction)")]
+            #[pyo3(signature = (*args, t=None, times=None, direction=None), text_signature = "($self, t, times=1, *, direction)")]
             fn insert_knot(
                 &self,
                 py: Python<'_>,
-                t: &Bound<'_, PyAny>,
+                args: &Bound<'_, pyo3::types::PyTuple>,
+                t: Option<&Bound<'_, PyAny>>,
                 times: Option<&Bound<'_, PyAny>>,
-                old: Option<&Bound<'_, PyAny>>,
                 direction: Option<&Bound<'_, PyAny>>,
             ) -> PyResult<Self> {
-                const METHOD: &str = concat!(stringify!($class), ".insert_knot");
-                let (direction, [t, times]) =
-                    $crate::directed::directed(METHOD, 2, [Some(t), times, old], direction)?;
-                let t = $crate::keyword::real($crate::directed::required(t, METHOD, "t")?, "t")?;
-                let times = $crate::keyword::times(times)?;
+                let class = stringify!($class);
+                let (direction, [t, times]) = $crate::directed::directed(
+                    class, "insert_knot", ["t", "times"], args, [t, times], direction,
+                )?;
+                let t = $crate::keyword::real(&$crate::directed::required(t, "insert_knot", "t")?, "t")?;
+                let times = $crate::keyword::times(times.as_ref())?;
                 $crate::dim::by_dim!(&self.0, |s| $crate::errors::compute(py, || Ok(s
                     .insert_knot(direction, t, times)?
                     .into())))
@@ -175,19 +176,20 @@ macro_rules! surface_methods {
 
             /// The same surface with all of ``knots`` inserted in
             /// ``direction`` (knot refinement, A5.4 on every line of the net).
-            #[pyo3(signature = (knots, old=None, *, direction=None), text_signature = "($self, knots, *, direction)")]
+            #[pyo3(signature = (*args, knots=None, direction=None), text_signature = "($self, knots, *, direction)")]
             fn refine_knots(
                 &self,
                 py: Python<'_>,
-                knots: &Bound<'_, PyAny>,
-                old: Option<&Bound<'_, PyAny>>,
+                args: &Bound<'_, pyo3::types::PyTuple>,
+                knots: Option<&Bound<'_, PyAny>>,
                 direction: Option<&Bound<'_, PyAny>>,
             ) -> PyResult<Self> {
-                const METHOD: &str = concat!(stringify!($class), ".refine_knots");
-                let (direction, [knots, _]) =
-                    $crate::directed::directed(METHOD, 1, [Some(knots), old, None], direction)?;
-                let knots = $crate::directed::required(knots, METHOD, "knots")?;
-                let new = $crate::arrays::optional_vector(Some(knots), "knots")?
+                let class = stringify!($class);
+                let (direction, [knots]) = $crate::directed::directed(
+                    class, "refine_knots", ["knots"], args, [knots], direction,
+                )?;
+                let knots = $crate::directed::required(knots, "refine_knots", "knots")?;
+                let new = $crate::arrays::optional_vector(Some(&knots), "knots")?
                     .unwrap_or_default();
                 $crate::dim::by_dim!(&self.0, |s| $crate::errors::compute(py, || Ok(s
                     .refine_knots(direction, &new)?
@@ -197,18 +199,19 @@ macro_rules! surface_methods {
             /// The same surface with its degree in ``direction`` raised by
             /// ``times`` (A5.9 on every line of the net; an unclamped
             /// direction is first cut to its domain).
-            #[pyo3(signature = (times=None, old=None, *, direction=None), text_signature = "($self, times=1, *, direction)")]
+            #[pyo3(signature = (*args, times=None, direction=None), text_signature = "($self, times=1, *, direction)")]
             fn elevate_degree(
                 &self,
                 py: Python<'_>,
+                args: &Bound<'_, pyo3::types::PyTuple>,
                 times: Option<&Bound<'_, PyAny>>,
-                old: Option<&Bound<'_, PyAny>>,
                 direction: Option<&Bound<'_, PyAny>>,
             ) -> PyResult<Self> {
-                const METHOD: &str = concat!(stringify!($class), ".elevate_degree");
-                let (direction, [times, _]) =
-                    $crate::directed::directed(METHOD, 1, [times, old, None], direction)?;
-                let times = $crate::keyword::times(times)?;
+                let class = stringify!($class);
+                let (direction, [times]) = $crate::directed::directed(
+                    class, "elevate_degree", ["times"], args, [times], direction,
+                )?;
+                let times = $crate::keyword::times(times.as_ref())?;
                 $crate::dim::by_dim!(&self.0, |s| $crate::errors::compute(py, || Ok(s
                     .elevate_degree(direction, times)?
                     .into())))
@@ -217,18 +220,18 @@ macro_rules! surface_methods {
             /// The two surfaces on either side of ``t`` in ``direction``,
             /// strictly inside its domain: for ``"u"`` the pieces over
             /// ``[a, t] × [c, d]`` and ``[t, b] × [c, d]``.
-            #[pyo3(signature = (t, old=None, *, direction=None), text_signature = "($self, t, *, direction)")]
+            #[pyo3(signature = (*args, t=None, direction=None), text_signature = "($self, t, *, direction)")]
             fn split_at(
                 &self,
                 py: Python<'_>,
-                t: &Bound<'_, PyAny>,
-                old: Option<&Bound<'_, PyAny>>,
+                args: &Bound<'_, pyo3::types::PyTuple>,
+                t: Option<&Bound<'_, PyAny>>,
                 direction: Option<&Bound<'_, PyAny>>,
             ) -> PyResult<(Self, Self)> {
-                const METHOD: &str = concat!(stringify!($class), ".split_at");
-                let (direction, [t, _]) =
-                    $crate::directed::directed(METHOD, 1, [Some(t), old, None], direction)?;
-                let t = $crate::keyword::real($crate::directed::required(t, METHOD, "t")?, "t")?;
+                let class = stringify!($class);
+                let (direction, [t]) =
+                    $crate::directed::directed(class, "split_at", ["t"], args, [t], direction)?;
+                let t = $crate::keyword::real(&$crate::directed::required(t, "split_at", "t")?, "t")?;
                 $crate::dim::by_dim!(&self.0, |s| $crate::errors::compute(py, || {
                     let [a, b] = s.split_at(direction, t)?;
                     Ok((a.into(), b.into()))
