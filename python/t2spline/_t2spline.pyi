@@ -566,6 +566,7 @@ def fit(
     control_points: Optional[int] = None,
     parametrization: Literal["chord", "centripetal", "uniform"] = "chord",
     mode: Literal["valid", "independent"] = "valid",
+    closed: bool = False,
 ) -> Tuple[FuzzyCurve, FitSummary]: ...
 @overload
 def fit(
@@ -579,6 +580,7 @@ def fit(
     control_points: Optional[PerDirection] = None,
     parametrization: Literal["chord", "centripetal", "uniform"] = "chord",
     mode: Literal["valid", "independent"] = "valid",
+    closed: bool = False,
 ) -> Tuple[Union[FuzzyCurve, FuzzySurface], FitSummary]: ...
 
 def fit_job(
@@ -588,6 +590,7 @@ def fit_job(
     parametrization: Literal["chord", "centripetal", "uniform"] = "chord",
     mode: Literal["valid", "independent"] = "valid",
     alpha: Optional[float] = None,
+    closed: bool = False,
 ) -> dict[str, Any]:
     """The job `t2spline fit` writes for a data file (or its dict)."""
 

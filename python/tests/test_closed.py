@@ -39,3 +39,37 @@ def test_closed_asks_or_declines() -> None:
         line.measure(levels=2, closed=True)
     with pytest.raises(TypeError, match="closed"):
         line.measure(levels=2, closed="yes")  # type: ignore[arg-type]
+
+
+POND = "docs/fit-example/pond-readings.csv"
+
+
+def test_a_closed_fit_is_the_command_s(cli, tmp_path, monkeypatch) -> None:
+    """`fit_job(data, closed=True)` writes the job of `t2spline fit --closed`,
+    and `fit(..., closed=True)` the same curve: periodic, closed, its area
+    enclosed and near the pond's πr² (r = 20 m)."""
+    import json
+    import subprocess
+
+    from conftest import ROOT
+
+    monkeypatch.chdir(ROOT)
+    out = tmp_path / "pond.json"
+    subprocess.run([str(cli), "fit", POND, "--closed", "--tolerance", "0.05", "--alpha", "0.5",
+                    "-o", str(out)], check=True, capture_output=True)
+    data = t2spline.fuzzify(POND, tolerance=0.05, alpha=0.5)
+    job = t2spline.fit_job(data, closed=True)
+    assert job == json.loads(out.read_text())
+    assert job["closed"] is True
+    curve = t2spline.FuzzyCurve.from_job(job)
+    p = curve.degree
+    np.testing.assert_array_equal(curve.crisp[:p], curve.crisp[-p:])
+    crisp = np.array([[pt[k]["crisp"] for k in ("x", "y")] for pt in data["points"]])
+    fitted, summary = t2spline.fit(crisp, degree=3, closed=True)
+    np.testing.assert_allclose(fitted.crisp, curve.crisp, rtol=0, atol=1e-9)
+    area = fitted.measure(levels=2, closed=True)["area"]
+    assert area["kind"] == "enclosed"
+    crisp_area = area["upper"][-1]["min"]
+    assert abs(crisp_area - np.pi * 20.0**2) < 0.01 * np.pi * 20.0**2
+    with pytest.raises(ValueError, match="closed=True is for a loop of points of a curve"):
+        t2spline.fit(np.zeros((3, 3, 3)) + np.arange(3)[:, None, None], degree=1, closed=True)

@@ -303,3 +303,25 @@ def test_plot_draws_with_the_colours_of_the_figures(cli: Path, tmp_path: Path) -
     tplot.stage3(ax, t2spline.run(EXAMPLE))
     used = {matplotlib.colors.to_hex(line.get_color()) for line in ax.get_lines()}
     assert {palette["type_reduced_left"], palette["type_reduced_right"]} <= used
+
+
+def test_eval_stacks_the_layers_and_sample_names_them_as_the_result_file(cli: Path) -> None:
+    """`eval*` gives one array (parameters' axes, then the seven layers in
+    order); `sample` gives what `run` writes: for a fuzzy curve the result
+    file's `curves.layers` under the same names, with `params`."""
+    curve = t2spline.FuzzyCurve.from_job(EXAMPLE)
+    result = json.loads(
+        subprocess.run([str(cli), "run", str(EXAMPLE), "--samples", "5"], check=True,
+                       capture_output=True, text=True).stdout
+    )
+    samples = curve.sample(5)
+    stacked = curve.eval_layers(samples["params"])
+    assert stacked.shape == (5, 7, 2)
+    np.testing.assert_array_equal(samples["params"], result["curves"]["params"])
+    for i, name in enumerate(LAYERS):
+        np.testing.assert_allclose(stacked[:, i], samples[name], rtol=0, atol=1e-12)
+        if name != "crisp":
+            np.testing.assert_array_equal(samples[name], result["curves"]["layers"][name])
+    np.testing.assert_array_equal(samples["crisp"], result["curves"]["crisp"])
+    crisp = curve.crisp_curve()
+    assert crisp.sample(5).shape == crisp.eval(samples["params"]).shape == (5, 2)

@@ -52,6 +52,11 @@ use crate::keyword;
 ///     How the data get their parameters (The NURBS Book Eqs. 9.3–9.6; for
 ///     a net, averaged over its rows and columns, Algorithm A9.3).
 /// mode : {'valid', 'independent'}
+/// closed : bool
+///     Fit a closed curve around the points taken as a loop (``t2spline fit
+///     --closed``): the closing chord in the parametrization, periodic knots,
+///     the first ``p`` control points repeated at the end; a last point equal
+///     to the first counts once. Curves only.
 ///
 /// Returns
 /// -------
@@ -91,8 +96,8 @@ use crate::keyword;
 /// ((4, 3, 3), {'data': [5, 4], 'control': [4, 3]})
 #[pyfunction]
 #[pyo3(
-    signature = (crisp, upper=None, primary=None, lower=None, lower_height=None, *, degree, control_points=None, parametrization=None, mode=None),
-    text_signature = "(crisp, upper=None, primary=None, lower=None, lower_height=None, *, degree, control_points=None, parametrization='chord', mode='valid')"
+    signature = (crisp, upper=None, primary=None, lower=None, lower_height=None, *, degree, control_points=None, parametrization=None, mode=None, closed=None),
+    text_signature = "(crisp, upper=None, primary=None, lower=None, lower_height=None, *, degree, control_points=None, parametrization='chord', mode='valid', closed=False)"
 )]
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn fit<'py>(
@@ -106,8 +111,10 @@ pub(crate) fn fit<'py>(
     control_points: Option<&Bound<'py, PyAny>>,
     parametrization: Option<&Bound<'py, PyAny>>,
     mode: Option<&Bound<'py, PyAny>>,
+    closed: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<(Py<PyAny>, Bound<'py, PyDict>)> {
     let degree = keyword::per_direction(degree, "degree")?;
+    let closed = keyword::opt_bool(closed, "closed")?.unwrap_or(false);
     let control_points = keyword::opt_per_direction(control_points, "control_points")?;
     let parametrization = self::parametrization(parametrization)?;
     let mode = self::mode(mode)?;
@@ -122,6 +129,9 @@ pub(crate) fn fit<'py>(
     };
     let data = FuzzyArrays::read(crisp, [upper, primary, lower, lower_height], rank)?;
     if rank == 2 {
+        if closed {
+            return Err(PyValueError::new_err(CLOSED_NET));
+        }
         let [rows, cols] = [data.net[0], data.net[1]];
         if data.d != 3 {
             return Err(PyValueError::new_err(format!(
@@ -205,7 +215,7 @@ pub(crate) fn fit<'py>(
         control_points: control_points
             .map(|m| crate::construct::count(m, "control_points", 1))
             .transpose()?,
-        closed: false,
+        closed,
     };
     let outcome = compute(py, move || {
         let points = match data.points()? {
@@ -220,6 +230,10 @@ pub(crate) fn fit<'py>(
     let curve = Py::new(py, PyFuzzyCurve(curve))?.into_any();
     Ok((curve, summary(py, &outcome.summary)?))
 }
+
+/// The refusal of `closed=True` for a net of data points.
+const CLOSED_NET: &str =
+    "closed: a net of data points is fitted as an open surface; closed=True is for a loop of points of a curve";
 
 /// A count of control points in one direction of a net, within
 /// `[min, max]` (the degree + 1, the rows or columns of the net).
@@ -312,8 +326,8 @@ fn order_error(violations: &[OrderViolation]) -> PyErr {
 /// (8, 12, 0.5)
 #[pyfunction]
 #[pyo3(
-    signature = (data, *, control_points=None, parametrization=None, mode=None, alpha=None),
-    text_signature = "(data, *, control_points=None, parametrization='chord', mode='valid', alpha=None)"
+    signature = (data, *, control_points=None, parametrization=None, mode=None, alpha=None, closed=None),
+    text_signature = "(data, *, control_points=None, parametrization='chord', mode='valid', alpha=None, closed=False)"
 )]
 pub(crate) fn fit_job<'py>(
     py: Python<'py>,
@@ -322,8 +336,10 @@ pub(crate) fn fit_job<'py>(
     parametrization: Option<&Bound<'py, PyAny>>,
     mode: Option<&Bound<'py, PyAny>>,
     alpha: Option<&Bound<'py, PyAny>>,
+    closed: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let counts = keyword::opt_per_direction(control_points, "control_points")?;
+    let closed = keyword::opt_bool(closed, "closed")?.unwrap_or(false);
     let parametrization = self::parametrization(parametrization)?;
     let mode = self::mode(mode)?;
     let alpha = keyword::opt_real(alpha, "alpha")?
@@ -344,6 +360,7 @@ pub(crate) fn fit_job<'py>(
         data.alpha = alpha;
     }
     let (options, surface) = match &data.points {
+        FuzzyData::Net(_) if closed => return Err(PyValueError::new_err(CLOSED_NET)),
         FuzzyData::Net(rows) => {
             let shape = [rows.len(), rows.first().map_or(0, Vec::len)];
             let degree = [data.degree, data.degree_v.unwrap_or(data.degree)];
@@ -397,7 +414,7 @@ pub(crate) fn fit_job<'py>(
                 degree: data.degree,
                 parametrization,
                 control_points: m,
-                closed: false,
+                closed,
             };
             (options, None)
         }
@@ -409,7 +426,7 @@ pub(crate) fn fit_job<'py>(
         }
         .map_err(|e| data.fit_error(&e))?;
         let job = match outcome.model {
-            Ok(model) => data.job_json(&model, false),
+            Ok(model) => data.job_json(&model, closed),
             Err(violations) => {
                 return Err(data.order_error(
                     &violations,
