@@ -75,16 +75,31 @@ impl Parametrization {
         if self == Parametrization::Uniform {
             return Ok((0..=m).map(|k| k as f64 / m as f64).collect());
         }
-        let mut cumulative = Vec::with_capacity(m + 1);
-        cumulative.push(0.0);
+        self.chord_parameters(points, (0..m).map(|k| (k, k + 1)))
+    }
+
+    /// The normalised partial sums `ūₖ = sₖ/d` of the chords (or their
+    /// square roots, centripetal) between the points of each pair of
+    /// `pairs`, taken in order: `ū₀ = 0`, then one parameter a pair, the
+    /// last `d/d = 1` exactly. A chord too short to move the rounded sum
+    /// gives equal parameters, which no interpolant can honour either.
+    ///
+    /// # Errors
+    /// [`Error::CoincidentDataPoints`] naming the pair whose chord is 0 or
+    /// too short; [`Error::NotFinite`] if the sum overflows.
+    fn chord_parameters<const D: usize>(
+        self,
+        points: &[[f64; D]],
+        pairs: impl Iterator<Item = (usize, usize)> + Clone,
+    ) -> Result<Vec<f64>, Error> {
+        let coincident =
+            |(first, second): (usize, usize)| Error::CoincidentDataPoints { first, second };
+        let mut cumulative = vec![0.0];
         let mut total = 0.0;
-        for (k, pair) in points.windows(2).enumerate() {
-            let chord = distance(&pair[0], &pair[1]);
+        for (a, b) in pairs.clone() {
+            let chord = distance(&points[a], &points[b]);
             if chord == 0.0 {
-                return Err(Error::CoincidentDataPoints {
-                    first: k,
-                    second: k + 1,
-                });
+                return Err(coincident((a, b)));
             }
             total += match self {
                 Parametrization::Centripetal => chord.sqrt(),
@@ -99,15 +114,15 @@ impl Parametrization {
                 value: total,
             });
         }
-        // ūₖ = sₖ/d with sₖ the partial sums: ū_m = d/d = 1 exactly. A chord
-        // too short to move the rounded sum gives equal parameters, which no
-        // interpolant can honour either.
         let u: Vec<f64> = cumulative.into_iter().map(|s| s / total).collect();
         match u.windows(2).position(|w| w[0] >= w[1]) {
-            Some(k) => Err(Error::CoincidentDataPoints {
-                first: k,
-                second: k + 1,
-            }),
+            Some(k) => Err(pairs.clone().nth(k).map_or(
+                Error::CoincidentDataPoints {
+                    first: k,
+                    second: k + 1,
+                },
+                coincident,
+            )),
             None => Ok(u),
         }
     }
@@ -152,40 +167,10 @@ impl Parametrization {
         if self == Parametrization::Uniform {
             return Ok((0..n).map(|k| k as f64 / n as f64).collect());
         }
-        let mut cumulative = Vec::with_capacity(n + 1);
-        cumulative.push(0.0);
-        let mut total = 0.0;
-        for k in 0..n {
-            let next = (k + 1) % n;
-            let chord = distance(&points[k], &points[next]);
-            if chord == 0.0 {
-                return Err(Error::CoincidentDataPoints {
-                    first: k,
-                    second: next,
-                });
-            }
-            total += match self {
-                Parametrization::Centripetal => chord.sqrt(),
-                _ => chord,
-            };
-            cumulative.push(total);
-        }
-        if !total.is_finite() {
-            return Err(Error::NotFinite {
-                place: crate::Place::NONE,
-                what: "total chord length",
-                value: total,
-            });
-        }
-        // ū_N = d/d = 1 exactly; it closes the loop and is not returned.
-        let u: Vec<f64> = cumulative.into_iter().map(|s| s / total).collect();
-        match u.windows(2).position(|w| w[0] >= w[1]) {
-            Some(k) => Err(Error::CoincidentDataPoints {
-                first: k,
-                second: (k + 1) % n,
-            }),
-            None => Ok(u[..n].to_vec()),
-        }
+        // ū_N = d/d = 1 closes the loop; it is not returned.
+        let mut u = self.chord_parameters(points, (0..n).map(|k| (k, (k + 1) % n)))?;
+        u.truncate(n);
+        Ok(u)
     }
 }
 
