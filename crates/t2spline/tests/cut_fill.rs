@@ -7,15 +7,14 @@
 //! and functions; `cut − fill` the difference of the two surfaces' signed
 //! volumes; plans that differ refused, naming the difference.
 
+mod brute;
 mod terrain;
 
 use proptest::prelude::*;
 use t2spline::measure::{Level, PerMembership, SurfaceMeasureOptions, SurfaceMeasures};
 use t2spline::set::MEMBERSHIPS;
 use t2spline::strategies::{cases, height, number_with_height, seeded_uniform, test_size};
-use t2spline::{
-    Alpha, Direction, Error, FuzzySurface, Membership, Nt2Number, Nt2Point, NurbsSurface,
-};
+use t2spline::{Alpha, Error, FuzzySurface, Membership, Nt2Number, Nt2Point, NurbsSurface};
 use terrain::{cumulative, net};
 
 fn alpha(a: f64) -> Alpha {
@@ -265,45 +264,16 @@ fn pair() -> impl Strategy<Value = (FuzzySurface<3>, FuzzySurface<3>)> {
 /// evaluated on its own at the nodes of `cells × cells` cells of 4 × 4
 /// Gauss nodes per span rectangle, `|J|` from the first one's partials.
 fn brute(one: &NurbsSurface<3>, two: &NurbsSurface<3>, cells: usize) -> [f64; 2] {
-    let g = (
-        [
-            -0.861_136_311_594_052_6,
-            -0.339_981_043_584_856_3,
-            0.339_981_043_584_856_3,
-            0.861_136_311_594_052_6,
-        ],
-        [
-            0.347_854_845_137_453_9,
-            0.652_145_154_862_546_1,
-            0.652_145_154_862_546_1,
-            0.347_854_845_137_453_9,
-        ],
-    );
     let mut out = [0.0; 2];
-    let spans = |d: Direction| -> Vec<[f64; 2]> { one.knots(d).spans().map(|(_, r)| r).collect() };
-    for [u0, u1] in spans(Direction::U) {
-        for [v0, v1] in spans(Direction::V) {
-            let (hu, hv) = ((u1 - u0) / cells as f64, (v1 - v0) / cells as f64);
-            for a in 0..cells {
-                for b in 0..cells {
-                    for (x, wx) in g.0.iter().zip(&g.1) {
-                        for (y, wy) in g.0.iter().zip(&g.1) {
-                            let u = u0 + hu * (a as f64 + 0.5 * (x + 1.0));
-                            let v = v0 + hv * (b as f64 + 0.5 * (y + 1.0));
-                            let d = one.derivatives(u, v, 1).expect("in the domain");
-                            let p = two.eval(u, v).expect("in the domain");
-                            let (su, sv) = (d[1][0], d[0][1]);
-                            let j = (su[0] * sv[1] - su[1] * sv[0]).abs();
-                            let w = 0.25 * wx * wy * hu * hv * j;
-                            let diff = d[0][0][2] - p[2];
-                            out[0] += diff.max(0.0) * w;
-                            out[1] += (-diff).max(0.0) * w;
-                        }
-                    }
-                }
-            }
-        }
-    }
+    brute::gauss_cells(one, cells, |u, v, w| {
+        let d = one.derivatives(u, v, 1).expect("in the domain");
+        let p = two.eval(u, v).expect("in the domain");
+        let (su, sv) = (d[1][0], d[0][1]);
+        let w = w * (su[0] * sv[1] - su[1] * sv[0]).abs();
+        let diff = d[0][0][2] - p[2];
+        out[0] += diff.max(0.0) * w;
+        out[1] += (-diff).max(0.0) * w;
+    });
     out
 }
 

@@ -4,15 +4,14 @@
 //! inside the reported intervals, the extreme nets attain the exact ends,
 //! and the intervals nest across levels and functions.
 
+mod brute;
 mod terrain;
 
 use proptest::prelude::*;
 use t2spline::measure::{Level, PerMembership, SurfaceMeasureOptions, SurfaceMeasures};
 use t2spline::set::MEMBERSHIPS;
 use t2spline::strategies::{cases, height, number_with_height, seeded_uniform, test_size};
-use t2spline::{
-    Alpha, Direction, Error, FuzzySurface, Membership, Nt2Number, Nt2Point, NurbsSurface,
-};
+use t2spline::{Alpha, Error, FuzzySurface, Membership, Nt2Number, Nt2Point, NurbsSurface};
 use terrain::{cumulative, net};
 
 fn alpha(a: f64) -> Alpha {
@@ -199,50 +198,21 @@ fn terrain() -> impl Strategy<Value = FuzzySurface<3>> {
 /// force: every span rectangle cut into `cells × cells` cells, 4 × 4 Gauss
 /// nodes each, with the partials of `NurbsSurface::derivatives`.
 fn brute(s: &NurbsSurface<3>, datum: f64, cells: usize) -> [f64; 4] {
-    let g = (
-        [
-            -0.861_136_311_594_052_6,
-            -0.339_981_043_584_856_3,
-            0.339_981_043_584_856_3,
-            0.861_136_311_594_052_6,
-        ],
-        [
-            0.347_854_845_137_453_9,
-            0.652_145_154_862_546_1,
-            0.652_145_154_862_546_1,
-            0.347_854_845_137_453_9,
-        ],
-    );
     let mut out = [0.0; 4];
-    let spans = |d: Direction| -> Vec<[f64; 2]> { s.knots(d).spans().map(|(_, r)| r).collect() };
-    for [u0, u1] in spans(Direction::U) {
-        for [v0, v1] in spans(Direction::V) {
-            let (hu, hv) = ((u1 - u0) / cells as f64, (v1 - v0) / cells as f64);
-            for a in 0..cells {
-                for b in 0..cells {
-                    for (x, wx) in g.0.iter().zip(&g.1) {
-                        for (y, wy) in g.0.iter().zip(&g.1) {
-                            let u = u0 + hu * (a as f64 + 0.5 * (x + 1.0));
-                            let v = v0 + hv * (b as f64 + 0.5 * (y + 1.0));
-                            let d = s.derivatives(u, v, 1).expect("in the domain");
-                            let (su, sv, z) = (d[1][0], d[0][1], d[0][0][2]);
-                            let n = [
-                                su[1] * sv[2] - su[2] * sv[1],
-                                su[2] * sv[0] - su[0] * sv[2],
-                                su[0] * sv[1] - su[1] * sv[0],
-                            ];
-                            let w = 0.25 * wx * wy * hu * hv;
-                            let j = n[2].abs() * w;
-                            out[0] += (datum - z).max(0.0) * j;
-                            out[1] += (z - datum).max(0.0) * j;
-                            out[2] += if z < datum { j } else { 0.0 };
-                            out[3] += (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt() * w;
-                        }
-                    }
-                }
-            }
-        }
-    }
+    brute::gauss_cells(s, cells, |u, v, w| {
+        let d = s.derivatives(u, v, 1).expect("in the domain");
+        let (su, sv, z) = (d[1][0], d[0][1], d[0][0][2]);
+        let n = [
+            su[1] * sv[2] - su[2] * sv[1],
+            su[2] * sv[0] - su[0] * sv[2],
+            su[0] * sv[1] - su[1] * sv[0],
+        ];
+        let j = n[2].abs() * w;
+        out[0] += (datum - z).max(0.0) * j;
+        out[1] += (z - datum).max(0.0) * j;
+        out[2] += if z < datum { j } else { 0.0 };
+        out[3] += (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt() * w;
+    });
     out
 }
 
