@@ -34,7 +34,8 @@ use crate::pipeline::{FuzzyCurve, FuzzySurface};
 use crate::reduction::TypeReduction;
 
 use super::model::ModelVisitor;
-use super::{Job, Settings};
+use super::settings::Settings;
+use super::Job;
 
 /// One named curve of a run, as continuous pieces in parameter order.
 #[derive(Clone, Debug, PartialEq)]

@@ -12,8 +12,9 @@
 //! new span found by binary search. There is no `unsafe` and no
 //! target-specific code: the portable x86-64 baseline.
 
+use super::params::Params;
+use super::sampler::Sampler;
 use crate::sampling::power_form::Span;
-use crate::sampling::{Params, Sampler};
 
 /// Parameters per block: the parameters, local variables and reciprocal
 /// denominators of a block stay in the first-level cache.

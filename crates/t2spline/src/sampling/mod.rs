@@ -109,7 +109,6 @@ mod samples;
 mod surfaces;
 
 pub use benchmark::{benchmark_curve, benchmark_levels, benchmark_surface};
-pub(crate) use buffer::Fresh;
 pub use buffer::{release_cached_memory, SampleBuffer, LARGE_BYTES};
 pub use distance_sweep::DistanceSweep;
 pub use grid::GridSampler;
