@@ -14,11 +14,11 @@
 
 use super::buffer::{Fresh, SampleBuffer};
 use super::params::Params;
+use super::params::BLOCK;
 use crate::error::{Error, Place};
 use crate::nurbs::basis::basis_functions;
 use crate::nurbs::surface::net_weights_flat;
 use crate::nurbs::{Direction, KnotVector};
-use crate::sampling::kernel::BLOCK;
 use crate::sampling::sampler::{check_outputs, outputs};
 
 /// Evaluates many rational B-spline surfaces that share knots `[U, V]` and a

@@ -311,7 +311,7 @@ impl Sampler {
                 let chunk = params
                     .len()
                     .div_ceil(threads * 4)
-                    .next_multiple_of(kernel::BLOCK)
+                    .next_multiple_of(super::params::BLOCK)
                     .max(MIN_CHUNK);
                 self.run_parallel(params, sorted, out, chunk);
                 return;
