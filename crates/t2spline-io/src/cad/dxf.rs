@@ -25,7 +25,8 @@ use std::fmt::Write as _;
 
 use t2spline::job::{Geometry, LengthUnit, NamedCurve};
 
-use super::{extents, real, CadMeta};
+use super::meta::CadMeta;
+use super::real::real;
 
 /// The DXF text of `geometry`.
 pub(super) fn render(geometry: &Geometry, meta: &CadMeta) -> String {
@@ -350,4 +351,23 @@ impl Writer {
         entries(self);
         self.pair(0, "ENDTAB");
     }
+}
+
+/// The smallest box around every control point (the curves lie inside it:
+/// the convex hull property), for DXF's drawing extents.
+fn extents(geometry: &Geometry) -> ([f64; 3], [f64; 3]) {
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    let curves = geometry.curves.iter().flat_map(|c| &c.pieces);
+    let surfaces = geometry.surfaces.iter().flat_map(|s| &s.patches);
+    for p in curves
+        .flat_map(|p| p.control_points())
+        .chain(surfaces.flat_map(|s| s.control_points()))
+    {
+        for i in 0..3 {
+            lo[i] = lo[i].min(p[i]);
+            hi[i] = hi[i].max(p[i]);
+        }
+    }
+    (lo, hi)
 }

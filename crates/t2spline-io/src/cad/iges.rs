@@ -25,7 +25,8 @@ use std::fmt::Write as _;
 use t2spline::job::{Geometry, LengthUnit};
 use t2spline::{Direction, NurbsCurve, NurbsSurface};
 
-use super::{real, CadMeta};
+use super::meta::CadMeta;
+use super::real::real;
 
 /// The IGES text of `geometry`.
 pub(super) fn render(geometry: &Geometry, meta: &CadMeta) -> String {

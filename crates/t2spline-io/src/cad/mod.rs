@@ -30,16 +30,19 @@
 mod clock;
 mod dxf;
 mod iges;
+mod meta;
 mod obj;
+mod real;
 mod step;
 
 use std::fmt;
 use std::path::Path;
 
-use t2spline::job::{Geometry, LengthUnit};
-use t2spline::Num;
+use t2spline::job::Geometry;
 
 use crate::error::{Error, Problem};
+
+pub use meta::CadMeta;
 
 /// A CAD file format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -118,36 +121,6 @@ impl CadFormat {
 impl fmt::Display for CadFormat {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(self.name())
-    }
-}
-
-/// What a CAD file says about itself.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct CadMeta {
-    /// The file's name (STEP `FILE_NAME`, IGES global section).
-    pub name: String,
-    /// The job's description, if any.
-    pub description: Option<String>,
-    /// When the file was written, as `YYYY-MM-DDThh:mm:ss` (UTC).
-    pub timestamp: String,
-    /// The unit of the coordinates, which the file records (DXF
-    /// `$INSUNITS`, the STEP context's length unit, the IGES unit flag, an
-    /// OBJ comment); the numbers are written as they are.
-    pub units: LengthUnit,
-}
-
-impl CadMeta {
-    /// The header of a file named `name` written now (or at
-    /// `SOURCE_DATE_EPOCH`, seconds since 1970, when set) of a job with
-    /// `description`, its coordinates in `units`.
-    #[must_use]
-    pub fn now(name: String, description: Option<String>, units: LengthUnit) -> CadMeta {
-        CadMeta {
-            name,
-            description,
-            timestamp: clock::timestamp(),
-            units,
-        }
     }
 }
 
@@ -232,69 +205,4 @@ pub fn render_cad(
         CadFormat::Iges => iges::render(geometry, meta),
         CadFormat::Obj => obj::render(geometry, meta),
     })
-}
-
-/// A float in the shortest form that reads back exactly, with a decimal
-/// point in the mantissa and `exponent` (`'E'`, or `'D'` for IGES double
-/// precision) before a power of ten: `3.0`, `-0.25`, `1.5E-7`.
-pub(crate) fn real(x: f64, exponent: char) -> String {
-    let text = Num(x).to_string();
-    let (mantissa, power) = match text.split_once('e') {
-        Some((m, p)) => (m.to_owned(), Some(p)),
-        None => (text, None),
-    };
-    let mut out = mantissa;
-    if !out.contains('.') {
-        out.push_str(".0");
-    }
-    if let Some(p) = power {
-        out.push(exponent);
-        out.push_str(p);
-    }
-    out
-}
-
-/// The smallest box around every control point (the curves lie inside it:
-/// the convex hull property), for DXF's drawing extents.
-pub(crate) fn extents(geometry: &Geometry) -> ([f64; 3], [f64; 3]) {
-    let mut lo = [f64::INFINITY; 3];
-    let mut hi = [f64::NEG_INFINITY; 3];
-    let curves = geometry.curves.iter().flat_map(|c| &c.pieces);
-    let surfaces = geometry.surfaces.iter().flat_map(|s| &s.patches);
-    for p in curves
-        .flat_map(|p| p.control_points())
-        .chain(surfaces.flat_map(|s| s.control_points()))
-    {
-        for i in 0..3 {
-            lo[i] = lo[i].min(p[i]);
-            hi[i] = hi[i].max(p[i]);
-        }
-    }
-    (lo, hi)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn reals_read_back_exactly_with_a_decimal_point() {
-        assert_eq!(real(3.0, 'E'), "3.0");
-        assert_eq!(real(-0.25, 'E'), "-0.25");
-        assert_eq!(real(1.5e-7, 'E'), "1.5E-7");
-        assert_eq!(real(1e300, 'D'), "1.0D300");
-        assert_eq!(real(0.1 + 0.2, 'E'), "0.30000000000000004");
-        for x in [
-            0.1,
-            1.0 / 3.0,
-            2f64.sqrt() * 1e-200,
-            -7.25e151,
-            f64::MIN_POSITIVE,
-        ] {
-            let text = real(x, 'E');
-            assert_eq!(text.parse::<f64>().unwrap(), x, "{text}");
-            let iges = real(x, 'D').replace('D', "E");
-            assert_eq!(iges.parse::<f64>().unwrap(), x, "{iges}");
-        }
-    }
 }

@@ -19,7 +19,8 @@ use std::fmt::Write as _;
 use t2spline::job::Geometry;
 use t2spline::Direction;
 
-use super::{real, CadMeta};
+use super::meta::CadMeta;
+use super::real::real;
 
 /// The OBJ text of `geometry`.
 pub(super) fn render(geometry: &Geometry, meta: &CadMeta) -> String {

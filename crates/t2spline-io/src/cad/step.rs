@@ -27,7 +27,8 @@ use std::fmt::Write as _;
 use t2spline::job::{Geometry, LengthUnit};
 use t2spline::{Direction, KnotVector, NurbsCurve, NurbsSurface};
 
-use super::{real, CadMeta};
+use super::meta::CadMeta;
+use super::real::real;
 
 /// The STEP text of `geometry`.
 pub(super) fn render(geometry: &Geometry, meta: &CadMeta) -> String {

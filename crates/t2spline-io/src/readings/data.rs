@@ -5,7 +5,7 @@ use serde_json::Value;
 use t2spline::fit::{FuzzifyRule, FuzzyData};
 use t2spline::{Alpha, Nt2Point, Num};
 
-use super::ReadingsFile;
+use super::curve::ReadingsFile;
 use crate::error::{Error, Problem};
 use crate::fit_data::FitData;
 use crate::job_json::PointView;

@@ -7,6 +7,10 @@ use t2spline::{Num, MAX_MAGNITUDE};
 use super::tokens;
 use crate::error::Problem;
 
+/// The most rows (readings) a readings file may have: 4 million, about what
+/// a 64 MiB file of short rows holds.
+pub const MAX_ROWS: usize = 4_000_000;
+
 /// The separator of a file: a semicolon if its first line has one, else a
 /// comma.
 pub(super) fn delimiter(text: &str) -> char {

@@ -13,7 +13,7 @@
 //! most [`MAX_PROBLEMS`](crate::limits::MAX_PROBLEMS), then a count):
 //! - the header is `row,col,x,y,z` (any case, spaces around names ignored),
 //!   comma or semicolon separated, with a decimal comma in a semicolon file,
-//!   as for the readings of a curve ([`parse_readings`](super::parse_readings));
+//!   as for the readings of a curve ([`parse_readings`](super::curve::parse_readings));
 //! - `row` and `col` are whole numbers from 0, the station `(row, col)`:
 //!   row `i` lies along u, column `j` along v (`points[i][j]`);
 //! - the rows of a station may stand anywhere in the file; a station's
@@ -22,7 +22,7 @@
 //!   given), every station present: a missing station, a row shorter than
 //!   the longest (ragged) and a station with fewer than
 //!   [`MIN_READINGS`] readings are refused, naming the station;
-//! - limits before memory: [`MAX_ROWS`](super::MAX_ROWS) readings and
+//! - limits before memory: [`MAX_ROWS`](super::fields::MAX_ROWS) readings and
 //!   [`MAX_POINTS`] stations, the net's `R × C` among them.
 
 use std::collections::HashMap;
@@ -107,7 +107,7 @@ struct Station {
 /// missing or extra column, a row or column that is not a whole number from
 /// 0, a value that is not a finite number within the range, a station with
 /// fewer than two readings, a missing station or a ragged row of the net,
-/// more than [`MAX_ROWS`](super::MAX_ROWS) readings or
+/// more than [`MAX_ROWS`](super::fields::MAX_ROWS) readings or
 /// [`MAX_POINTS`] stations.
 ///
 /// # Examples
@@ -122,7 +122,7 @@ struct Station {
 /// # Ok::<(), t2spline_io::Error>(())
 /// ```
 pub fn parse_net_readings(text: &str, source: &str) -> Result<NetReadings, Error> {
-    parse_within(text, source, super::MAX_ROWS)
+    parse_within(text, source, super::fields::MAX_ROWS)
 }
 
 /// [`parse_net_readings`] with at most `max_rows` readings.

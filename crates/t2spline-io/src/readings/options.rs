@@ -10,8 +10,9 @@ use std::fmt;
 use t2spline::fit::{FuzzifyRule, DEFAULT_LOWER_HEIGHT};
 use t2spline::Alpha;
 
+use super::curve::parse_readings;
+use super::net::parse_net_readings;
 use super::net::NetReadings;
-use super::{parse_net_readings, parse_readings};
 use crate::error::Error;
 use crate::fit_data::FitData;
 use crate::limits::MAX_ORDER;
@@ -96,7 +97,7 @@ fn refused(option: ReadingsOption, message: impl Into<String>) -> ReadingsError 
 /// The validated data of a fit from the readings file `text` (named
 /// `source` in messages) by `options`: the readings of a curve's stations
 /// (header `station,x,y[,z]`) or of a net's (header `row,col,x,y,z`,
-/// [`parse_net_readings`](super::parse_net_readings), then
+/// [`parse_net_readings`](super::net::parse_net_readings), then
 /// [`fuzzify_net`]); median, quartiles, 10th–90th
 /// percentiles and the extremes widened by the tolerance of each station
 /// (the core's [`Readings::fuzzify`](t2spline::fit::Readings::fuzzify)),

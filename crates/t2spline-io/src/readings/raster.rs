@@ -196,7 +196,7 @@ fn centre(at: &[f64], range: [usize; 2]) -> f64 {
 /// wrong header, a missing or extra column, an `x` or `y` that is not a
 /// number, a `z` that is neither a number nor empty nor `nan`, a cell given
 /// twice, cells missing from the grid, uneven spacing, more than
-/// [`MAX_ROWS`](super::MAX_ROWS) rows.
+/// [`MAX_ROWS`](super::fields::MAX_ROWS) rows.
 ///
 /// # Examples
 /// ```
@@ -214,8 +214,12 @@ pub fn parse_grid_csv(text: &str, source: &str) -> Result<Raster, Error> {
     };
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let delimiter = fields::delimiter(text);
-    let records = fields::records(text, delimiter, super::MAX_ROWS.min(MAX_RASTER_CELLS))
-        .map_err(|p| invalid(vec![p]))?;
+    let records = fields::records(
+        text,
+        delimiter,
+        super::fields::MAX_ROWS.min(MAX_RASTER_CELLS),
+    )
+    .map_err(|p| invalid(vec![p]))?;
     let Some((header, rows)) = records.split_first() else {
         return Err(invalid(vec![Problem::new(
             "the file is empty; expected the header `x,y,z` and one cell per row",

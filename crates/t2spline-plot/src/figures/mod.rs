@@ -21,6 +21,7 @@
 //! Curve figures live in [`curve`]; the layout, legend, colour bar and SVG/PNG
 //! output they use are independent of what is drawn.
 
+mod aspect;
 pub mod curve;
 mod measures;
 mod notebook;
@@ -30,8 +31,9 @@ pub mod style;
 pub mod surface;
 
 use t2spline::job::Job;
-use t2spline::{Alpha, Axis};
+use t2spline::Alpha;
 
+pub use aspect::Aspect;
 pub use curve::reductions_figure;
 pub use measures::measures_figure;
 pub use notebook::{
@@ -39,7 +41,7 @@ pub use notebook::{
     section_notebook_figure, Stages, NOTEBOOK_MAX_REGION_POINTS, NOTEBOOK_MAX_SAMPLES,
     NOTEBOOK_SURFACE_GRID,
 };
-pub use number::number_figure;
+pub use number::{number_figure, NumberChoice};
 pub use style::{palette, reduction_label};
 
 use crate::chart::scene::Figure;
@@ -68,58 +70,6 @@ pub const FIGURE_NAMES: [&str; 11] = [
 /// beyond, the largest length and the area are branch-and-bound brackets at
 /// every level, seconds to minutes of work (`t2spline measure` gives them).
 pub const MEASURES_MAX_POINTS: usize = 20;
-
-/// Which number the `number` figure shows.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct NumberChoice {
-    /// Control point index, from 0 (of a surface: `i·nv + j`, the net row by
-    /// row).
-    pub point: usize,
-    /// Coordinate.
-    pub axis: Axis,
-}
-
-impl Default for NumberChoice {
-    fn default() -> Self {
-        NumberChoice {
-            point: 0,
-            axis: Axis::X,
-        }
-    }
-}
-
-impl NumberChoice {
-    /// The chosen control point as a reader names it: its index `I` on a
-    /// curve, `(i, j)` in a surface's net (`I = i·nv + j`).
-    ///
-    /// # Examples
-    /// ```
-    /// use t2spline_plot::NumberChoice;
-    /// let job = t2spline_io::read_job("../../examples/fuzzy-terrain.json".as_ref())?;
-    /// let [_, nv] = job.model.net_shape().unwrap();
-    /// let choice = NumberChoice { point: 2 * nv + 1, ..NumberChoice::default() };
-    /// assert_eq!(choice.point_name(&job.model), "(2, 1)");
-    /// # Ok::<(), Box<dyn std::error::Error>>(())
-    /// ```
-    #[must_use]
-    pub fn point_name(&self, model: &t2spline::job::Model) -> String {
-        match model.net_shape() {
-            Some([_, nv]) if nv > 0 => format!("({}, {})", self.point / nv, self.point % nv),
-            _ => self.point.to_string(),
-        }
-    }
-}
-
-/// How the axes of curve panels are scaled.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum Aspect {
-    /// One data unit has the same length on both axes: shapes are true.
-    #[default]
-    Equal,
-    /// Each axis fitted to its data: for elongated data (a profile 86 m long
-    /// and 6 m high), whose spreads equal aspect shows as nothing.
-    Auto,
-}
 
 /// What the figures show beyond the job and alpha.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]

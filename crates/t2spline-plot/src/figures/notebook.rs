@@ -17,12 +17,12 @@ use t2spline::measure::Measures;
 use t2spline::set::Region;
 use t2spline::{Alpha, FuzzyCurve, Membership, Nt2Number, TypeReduction};
 
+use super::aspect::Aspect;
 use super::curve::{self, region_mark, CurveScene, Zoom};
 use super::measures::measures_figure_of;
 use super::number::lone_number_figure;
 use super::style::{lower_band, upper_band};
 use super::surface::{self, SurfaceScene, View};
-use super::Aspect;
 use crate::chart::scene::{Figure, LegendEntry, Panel};
 use crate::chart::ticks::short;
 use crate::data;

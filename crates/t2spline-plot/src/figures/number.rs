@@ -6,13 +6,54 @@
 use t2spline::job::Job;
 use t2spline::{Alpha, AlphaCut, Axis, Interval, Layer, Nt2Number, Tfn, TypeReduction};
 
+use super::number_reductions;
 use super::style::{layer_marker, layer_stroke, upper_band};
-use super::{number_reductions, NumberChoice};
 use crate::chart::paint::{Marker, Shape, Stroke, GREY, INK, PURPLE};
 use crate::chart::scene::{Figure, LegendEntry, Mark, Panel, Priority, Xy};
 use crate::chart::ticks::short;
 use crate::data;
 use crate::error::Error;
+
+/// Which number the `number` figure shows.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct NumberChoice {
+    /// Control point index, from 0 (of a surface: `i·nv + j`, the net row by
+    /// row).
+    pub point: usize,
+    /// Coordinate.
+    pub axis: Axis,
+}
+
+impl Default for NumberChoice {
+    fn default() -> Self {
+        NumberChoice {
+            point: 0,
+            axis: Axis::X,
+        }
+    }
+}
+
+impl NumberChoice {
+    /// The chosen control point as a reader names it: its index `I` on a
+    /// curve, `(i, j)` in a surface's net (`I = i·nv + j`).
+    ///
+    /// # Examples
+    /// ```
+    /// use t2spline_plot::NumberChoice;
+    /// let job = t2spline_io::read_job("../../examples/fuzzy-terrain.json".as_ref())?;
+    /// let [_, nv] = job.model.net_shape().unwrap();
+    /// let choice = NumberChoice { point: 2 * nv + 1, ..NumberChoice::default() };
+    /// assert_eq!(choice.point_name(&job.model), "(2, 1)");
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    #[must_use]
+    pub fn point_name(&self, model: &t2spline::job::Model) -> String {
+        match model.net_shape() {
+            Some([_, nv]) if nv > 0 => format!("({}, {})", self.point / nv, self.point % nv),
+            _ => self.point.to_string(),
+        }
+    }
+}
 
 /// The type-reduced triangle.
 fn tfn_stroke() -> Stroke {

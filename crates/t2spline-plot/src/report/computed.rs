@@ -6,8 +6,8 @@ use rayon::prelude::*;
 use t2spline::job::{Job, RunOutput};
 use t2spline::{Alpha, TypeReduction};
 
+use super::budget::file_samples;
 use super::downloads::files_of;
-use super::file_samples;
 use super::file_stops::FileStops;
 use super::reductions::{self, ReductionFrame};
 use super::stop_figures::stop_figures;

@@ -7,10 +7,12 @@ use serde_json::{json, Value};
 use t2spline::job::{Job, Samples};
 use t2spline::{Alpha, TypeReduction};
 
+use super::budget::{file_samples, DATA_BUDGET};
 use super::downloads::files_of;
+use super::frames::static_svg;
 use super::stop_figures::stop_figures;
 use super::stops::{self, finest_within, Stops};
-use super::{file_samples, pack, reductions, static_svg, DATA_BUDGET};
+use super::{pack, reductions};
 use crate::data;
 use crate::error::Error;
 use crate::figures::FigureOptions;

@@ -112,3 +112,10 @@ pub fn frames(
         data: json!({ "prefix": prefix, "parts": changing, "frames": per_alpha }),
     }
 }
+
+/// A figure that does not change with alpha, as one SVG.
+pub(super) fn static_svg(fig: &Figure) -> String {
+    let mut l = layout::fit(&[fig]);
+    l.tolerance = REPORT_TOLERANCE;
+    svg::document(&l, &fig.title, &svg::parts(fig, &l, ""), None)
+}

@@ -23,6 +23,7 @@
 //! `t2spline run --samples 1001`'s (`101,101`), and the page says so and
 //! that `t2spline run` gives the full result.
 
+mod budget;
 mod computed;
 mod data_block;
 mod downloads;
@@ -36,45 +37,17 @@ mod stop_figures;
 mod stops;
 pub mod tables;
 
+pub use budget::{DATA_BUDGET, MAX_FILE_GRID, MAX_FILE_SAMPLES};
 pub use stops::Stops;
 
-use t2spline::job::{Job, Samples};
+use t2spline::job::Job;
 use t2spline::Alpha;
 
-use crate::chart::scene::Figure;
-use crate::chart::{layout, svg};
 use crate::error::Error;
 use crate::figures::FigureOptions;
 use computed::Computed;
 use data_block::DataBlock;
 use sections::Still;
-
-/// The most bytes the packed per-stop data may take; the grid of stops is
-/// coarsened to stay within it.
-pub const DATA_BUDGET: usize = 3_500_000;
-
-/// The most samples per curve of the result files a report carries. A job
-/// sampled more finely gets, at every stop that carries files, the files of
-/// `t2spline run --samples 1001` instead, and the page says so: a page needs
-/// no more, and the memory and size of a report then no longer grow with
-/// the job's `samples` (at 30 000 samples the files of every stop took
-/// 2.9 GB, at 100 000 the report ran out of memory).
-pub const MAX_FILE_SAMPLES: usize = 1001;
-
-/// The most samples per direction of a surface's result files in a report
-/// (101 × 101 at most), as [`MAX_FILE_SAMPLES`] for a curve.
-pub const MAX_FILE_GRID: usize = 101;
-
-/// The samples of the result files a report of a job sampled at `samples`
-/// carries: the job's, at most [`MAX_FILE_SAMPLES`] along a curve and
-/// [`MAX_FILE_GRID`] in each direction of a surface.
-#[must_use]
-pub(crate) fn file_samples(samples: Samples) -> Samples {
-    match samples {
-        Samples::Along(n) => Samples::Along(n.min(MAX_FILE_SAMPLES)),
-        Samples::Grid(grid) => Samples::Grid(grid.map(|n| n.min(MAX_FILE_GRID))),
-    }
-}
 
 /// Renders the report of `job` (whose file text is `job_text`) with the
 /// slider at `start`; `options` chooses the number shown and the aspect of
@@ -102,13 +75,6 @@ pub fn render(
     sections::page(
         job, job_text, start, options, &stops, &frames, &still, &block,
     )
-}
-
-/// A figure that does not change with alpha, as one SVG.
-fn static_svg(fig: &Figure) -> String {
-    let mut l = layout::fit(&[fig]);
-    l.tolerance = frames::REPORT_TOLERANCE;
-    svg::document(&l, &fig.title, &svg::parts(fig, &l, ""), None)
 }
 
 #[cfg(test)]

@@ -7,8 +7,8 @@ use std::fmt::Write as _;
 
 use t2spline::job::{Parameter, RunOutput, Spline};
 
+use super::stops::Stops;
 use super::tables::{number_text, rounded};
-use super::Stops;
 use crate::chart::svg::escape;
 use crate::chart::ticks::short;
 

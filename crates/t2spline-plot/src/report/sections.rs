@@ -8,10 +8,11 @@ use t2spline::{Alpha, Axis, Layer};
 use super::computed::Computed;
 use super::data_block::DataBlock;
 use super::file_stops::thinned_note;
+use super::frames::static_svg;
 use super::page::{Page, Section};
 use super::stops::Stops;
 use super::tables::{self, number_text, rounded};
-use super::{pack, reductions, static_svg};
+use super::{pack, reductions};
 use crate::error::Error;
 use crate::figures::curve::{
     membership_figure, reductions_figure, section_figure, stage1_figure, sweep_figure, CurveScene,

@@ -1,8 +1,10 @@
+use super::budget::file_samples;
 use super::downloads::{files_of, unpack};
 use super::*;
 use base64::Engine as _;
 use serde_json::{json, Value};
 use t2spline::job::RunOutput;
+use t2spline::job::Samples;
 use t2spline::TypeReduction;
 
 use crate::data;

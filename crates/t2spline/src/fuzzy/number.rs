@@ -1,81 +1,9 @@
 //! The normal triangular type-2 fuzzy number (NT2TFN) of docs/method.md §1.
 
+use super::interval::Interval;
+use super::layer::{Layer, Layers};
 use crate::error::{Error, Place};
-use crate::fuzzy::{Alpha, AlphaCut, Layer, Layers};
 use crate::limits::{within_magnitude, MAGNITUDE_RANGE};
-
-/// A closed interval `[left, right]` of finite numbers with `left ≤ right`.
-#[derive(Clone, Copy, Debug, PartialEq)]
-#[cfg_attr(feature = "serde", derive(serde::Serialize))]
-pub struct Interval {
-    left: f64,
-    right: f64,
-}
-
-impl Interval {
-    /// Makes `[left, right]`.
-    ///
-    /// # Errors
-    /// [`Error::NotFinite`] if an end is NaN or infinite; [`Error::Order`] if
-    /// `left > right`.
-    ///
-    /// # Examples
-    /// ```
-    /// # use t2spline::Interval;
-    /// assert_eq!(Interval::try_new(1.0, 2.0)?.width(), 1.0);
-    /// assert!(Interval::try_new(2.0, 1.0).is_err());
-    /// # Ok::<(), t2spline::Error>(())
-    /// ```
-    pub fn try_new(left: f64, right: f64) -> Result<Self, Error> {
-        for (what, value) in [("left", left), ("right", right)] {
-            if !value.is_finite() {
-                return Err(Error::NotFinite {
-                    place: Place::NONE,
-                    what,
-                    value,
-                });
-            }
-        }
-        if left > right {
-            return Err(Error::Order {
-                place: Place::NONE,
-                rule: "left <= right",
-                left,
-                right,
-            });
-        }
-        Ok(Interval { left, right })
-    }
-
-    pub(crate) fn new_unchecked(left: f64, right: f64) -> Self {
-        debug_assert!(left <= right, "interval [{left}, {right}]");
-        Interval { left, right }
-    }
-
-    /// The left end.
-    #[must_use]
-    pub fn left(&self) -> f64 {
-        self.left
-    }
-
-    /// The right end.
-    #[must_use]
-    pub fn right(&self) -> f64 {
-        self.right
-    }
-
-    /// `right − left`.
-    #[must_use]
-    pub fn width(&self) -> f64 {
-        self.right - self.left
-    }
-
-    /// Whether `other` lies inside `self` (ends included).
-    #[must_use]
-    pub fn contains(&self, other: &Interval) -> bool {
-        self.left <= other.left && other.right <= self.right
-    }
-}
 
 /// The height `h` of the lower membership function, in `(0, 1]` (docs/method.md §1).
 ///
@@ -317,13 +245,13 @@ impl Nt2Number {
     #[must_use]
     pub fn layer(&self, layer: Layer) -> f64 {
         match layer {
-            Layer::UpperLeft => self.upper.left,
-            Layer::PrimaryLeft => self.primary.left,
-            Layer::LowerLeft => self.lower.left,
+            Layer::UpperLeft => self.upper.left(),
+            Layer::PrimaryLeft => self.primary.left(),
+            Layer::LowerLeft => self.lower.left(),
             Layer::Crisp => self.crisp,
-            Layer::LowerRight => self.lower.right,
-            Layer::PrimaryRight => self.primary.right,
-            Layer::UpperRight => self.upper.right,
+            Layer::LowerRight => self.lower.right(),
+            Layer::PrimaryRight => self.primary.right(),
+            Layer::UpperRight => self.upper.right(),
         }
     }
 
@@ -345,20 +273,6 @@ impl Nt2Number {
             lower: Interval::new_unchecked(a[2], a[4]),
             height,
         }
-    }
-
-    /// The alpha-cut at level `alpha` (docs/method.md §2, paper Eqs. 4.1–4.2).
-    ///
-    /// ```text
-    /// cut(e, s) = e + s·(crisp − e)
-    /// α ≤ h:  s = α on upper and primary ends, s = α/h on lower ends
-    /// α > h:  s = α on upper and primary ends; the lower cut is absent
-    /// ```
-    /// At `α = h` the first rule applies and the lower cut is the single value
-    /// `crisp`.
-    #[must_use]
-    pub fn alpha_cut(&self, alpha: Alpha) -> AlphaCut {
-        AlphaCut::of(self, alpha)
     }
 
     /// The membership grade of `x` in one of the three triangles (docs/method.md §1).
@@ -383,7 +297,7 @@ impl Nt2Number {
             Membership::Primary => (self.primary, 1.0),
             Membership::Lower => (self.lower, self.height.get()),
         };
-        triangle(x, feet.left, self.crisp, feet.right, top)
+        triangle(x, feet.left(), self.crisp, feet.right(), top)
     }
 }
 

@@ -1,7 +1,10 @@
 //! Normal type-2 fuzzy data points in 2-D and 3-D (docs/method.md §5).
 
+use super::alpha::Alpha;
+use super::alpha_cut::AlphaCut;
+use super::layer::Layer;
+use super::number::Nt2Number;
 use crate::error::Error;
-use crate::fuzzy::{Alpha, AlphaCut, Layer, Nt2Number};
 pub use crate::place::Axis;
 
 impl Axis {

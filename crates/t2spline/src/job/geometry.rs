@@ -33,7 +33,9 @@ use crate::nurbs::{Direction, KnotVector, NurbsCurve, NurbsSurface};
 use crate::pipeline::{FuzzyCurve, FuzzySurface};
 use crate::reduction::TypeReduction;
 
-use super::{Job, ModelVisitor, Settings};
+use super::model::ModelVisitor;
+use super::settings::Settings;
+use super::Job;
 
 /// One named curve of a run, as continuous pieces in parameter order.
 #[derive(Clone, Debug, PartialEq)]

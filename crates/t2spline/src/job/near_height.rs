@@ -9,7 +9,7 @@
 
 use std::fmt;
 
-use super::Model;
+use super::model::Model;
 use crate::fuzzy::Alpha;
 
 /// How many units in the last place above a lower height an alpha may lie

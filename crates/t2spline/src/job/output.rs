@@ -12,7 +12,8 @@ use std::fmt;
 use crate::fuzzy::Layer;
 use crate::reduction::TypeReduction;
 
-use super::{NearHeight, Points};
+use super::near_height::NearHeight;
+use super::points::Points;
 
 /// Everything a run computes: the stages' control points, every curve (or
 /// surface) sampled at uniform parameters, and the distance between the crisp

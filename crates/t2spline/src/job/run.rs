@@ -9,11 +9,15 @@ use crate::pipeline::{FuzzyCurve, FuzzySurface, Side};
 use crate::reduction::TypeReduction;
 use crate::sampling::{CurveSamples, Params, SweepSamples};
 
+use super::model::ModelVisitor;
+use super::output::RunOutput;
 use super::output::{
     ControlPoints, CrispDefuzzified, Distance, LeftRight, Parameter, Parameters, Regime, Sampled,
     SixLayers, Spline,
 };
-use super::{Job, ModelVisitor, Points, RunOutput, Samples, Settings};
+use super::points::Points;
+use super::settings::{Samples, Settings};
+use super::Job;
 
 impl Job {
     /// Runs stages 1–4 at `settings.alpha` with `settings.type_reduction`

@@ -5,7 +5,8 @@ use crate::error::{Error, Setting};
 use crate::fuzzy::Alpha;
 use crate::reduction::TypeReduction;
 
-use super::{Job, NearHeight};
+use super::near_height::NearHeight;
+use super::Job;
 
 /// The number of samples when a job gives none (docs/jobs.md).
 pub const DEFAULT_SAMPLES: usize = 101;

@@ -15,7 +15,7 @@
 //! Nothing is written before the engine writes: each page is first touched
 //! by the thread that fills it, with no zero-filling pass. The mappings of
 //! dropped buffers are kept for the next large output, up to
-//! [`CACHE_BYTES`](crate::sampling::CACHE_BYTES) (`mapping.rs` says why);
+//! [`CACHE_BYTES`](super::memory::CACHE_BYTES) (`mapping.rs` says why);
 //! [`release_cached_memory`] returns them. Elsewhere than Linux, and below
 //! [`LARGE_BYTES`], a buffer is a `Vec<f64>` from the global allocator.
 //!
@@ -186,7 +186,7 @@ fn is_large(n: usize) -> bool {
 }
 
 /// Returns the memory that the mappings of dropped sample buffers keep for
-/// reuse (at most [`CACHE_BYTES`](crate::sampling::CACHE_BYTES)) to the
+/// reuse (at most [`CACHE_BYTES`](super::memory::CACHE_BYTES)) to the
 /// system; the next large output is then mapped anew. Does nothing where
 /// buffers are ordinary vectors (elsewhere than Linux).
 ///
@@ -420,8 +420,8 @@ mod tests {
         drop(again);
         release_cached_memory();
         // More than the cache holds is unmapped on drop.
-        let huge = SampleBuffer::fresh(crate::sampling::CACHE_BYTES / 8 + 1, Fresh::HugePages);
+        let huge = SampleBuffer::fresh(super::super::memory::CACHE_BYTES / 8 + 1, Fresh::HugePages);
         drop(huge);
-        assert!(cached_bytes() <= crate::sampling::CACHE_BYTES);
+        assert!(cached_bytes() <= super::super::memory::CACHE_BYTES);
     }
 }

@@ -1,6 +1,10 @@
 //! The engine behind the curve types: `sample_soa`, `sample_layers`,
 //! `sample_sweep` and `sample_stages`.
 
+use super::buffer::{Fresh, SampleBuffer};
+use super::params::Params;
+use super::sampler::Sampler;
+use super::samples::{CurveSamples, LayerSamples, StageSamples, SweepSamples};
 use crate::error::Error;
 use crate::fuzzy::Alpha;
 use crate::nurbs::NurbsCurve;
@@ -8,9 +12,6 @@ use crate::pipeline::point_stages::PointStages;
 use crate::pipeline::{FuzzyCurve, Solution};
 use crate::reduction::TypeReduction;
 use crate::sampling::plan::Plan;
-use crate::sampling::{
-    CurveSamples, Fresh, LayerSamples, Params, SampleBuffer, Sampler, StageSamples, SweepSamples,
-};
 
 impl<const D: usize> NurbsCurve<D> {
     /// A [`Sampler`] for this curve: one channel per coordinate.

@@ -18,11 +18,12 @@
 //! (on a grid the product of the two directions' weights). At the figures'
 //! sampling both are within a fraction of a per cent of the exact values.
 
+use super::params::Params;
+use super::sampler::Sampler;
 use crate::error::Error;
 use crate::fuzzy::Alpha;
 use crate::nurbs::NurbsSurface;
 use crate::pipeline::{FuzzyCurve, FuzzySurface};
-use crate::sampling::{Params, Sampler};
 use crate::vector::euclidean_norm;
 
 /// Levels sampled together: bounds the memory of a sweep over many alphas

@@ -12,13 +12,14 @@
 //! same accuracy and order, but `q + 1` more products and a scratch array per
 //! point.
 
+use super::buffer::{Fresh, SampleBuffer};
+use super::params::Params;
+use super::params::BLOCK;
 use crate::error::{Error, Place};
 use crate::nurbs::basis::basis_functions;
 use crate::nurbs::surface::net_weights_flat;
 use crate::nurbs::{Direction, KnotVector};
-use crate::sampling::kernel::BLOCK;
 use crate::sampling::sampler::{check_outputs, outputs};
-use crate::sampling::{Fresh, Params, SampleBuffer};
 
 /// Evaluates many rational B-spline surfaces that share knots `[U, V]` and a
 /// net of weights — the seven layer surfaces of a fuzzy surface, the surfaces

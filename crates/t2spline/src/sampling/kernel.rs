@@ -12,12 +12,9 @@
 //! new span found by binary search. There is no `unsafe` and no
 //! target-specific code: the portable x86-64 baseline.
 
+use super::params::{Params, BLOCK};
+use super::sampler::Sampler;
 use crate::sampling::power_form::Span;
-use crate::sampling::{Params, Sampler};
-
-/// Parameters per block: the parameters, local variables and reciprocal
-/// denominators of a block stay in the first-level cache.
-pub(crate) const BLOCK: usize = 512;
 
 /// Evaluates the parameters `first ..` of `params` (as many as each slice of
 /// `out` is long) into `out`, one slice per channel; `sorted` says that the

@@ -13,7 +13,7 @@
 
 use std::sync::Mutex;
 
-use crate::sampling::CACHE_BYTES;
+use super::memory::CACHE_BYTES;
 
 /// The size of a transparent huge page on x86-64 and (with 4 KiB base
 /// pages) aarch64.

@@ -100,6 +100,7 @@ mod grid;
 mod kernel;
 #[cfg(target_os = "linux")]
 mod mapping;
+mod memory;
 mod params;
 mod plan;
 mod power_form;
@@ -108,18 +109,10 @@ mod samples;
 mod surfaces;
 
 pub use benchmark::{benchmark_curve, benchmark_levels, benchmark_surface};
-pub(crate) use buffer::Fresh;
 pub use buffer::{release_cached_memory, SampleBuffer, LARGE_BYTES};
 pub use distance_sweep::DistanceSweep;
-/// The most memory the mappings of dropped sample buffers keep for reuse
-/// (Linux; 256 MiB: the 21 coordinates of a fuzzy surface's seven layers at
-/// 10⁶ points are 168 MB); [`release_cached_memory`] returns it.
-pub const CACHE_BYTES: usize = 256 << 20;
-/// The most memory the output arrays of one request to the engine may take,
-/// in bytes (8 GiB): the front ends refuse the points asked for before
-/// anything is allocated when the output would need more.
-pub const MAX_OUTPUT_BYTES: u64 = 8 << 30;
 pub use grid::GridSampler;
+pub use memory::{CACHE_BYTES, MAX_OUTPUT_BYTES};
 pub use params::Params;
 pub use sampler::{Bound, Sampler};
 pub use samples::{CurveSamples, Grid, LayerSamples, StageSamples, SweepSamples};

@@ -2,7 +2,10 @@
 
 use crate::error::Error;
 use crate::nurbs::Domain;
-use crate::sampling::kernel::BLOCK;
+
+/// Parameters per block: the parameters, local variables and reciprocal
+/// denominators of a block stay in the first-level cache.
+pub(crate) const BLOCK: usize = 512;
 
 /// `0, 1, …, BLOCK − 1` as floats.
 const STEPS: [f64; BLOCK] = {

@@ -4,12 +4,12 @@
 //! [`SweepSamples`]. Shared by the curve engine (`curves.rs`) and the grid
 //! engine (`surfaces.rs`), so both sample exactly the same stages.
 
+use super::buffer::SampleBuffer;
+use super::sampler::Bound;
+use super::samples::{CurveSamples, LayerSamples, StageSamples, SweepSamples};
 use crate::fuzzy::{Layer, Layers, Nt2Point};
 use crate::pipeline::point_stages::{PointStages, Side};
 use crate::reduction::TypeReduction;
-use crate::sampling::{
-    Bound, CurveSamples, LayerSamples, SampleBuffer, StageSamples, SweepSamples,
-};
 
 /// Where the channels of one level's stages are: the alpha-cut layers (none
 /// for the crisp layer and for absent lower cuts), the type-reduced left and

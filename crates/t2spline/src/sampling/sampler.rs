@@ -1,13 +1,14 @@
 //! The sampling engine: many curves with one knot vector and one set of weights,
 //! evaluated together from one power form per span.
 
+use super::buffer::{Fresh, SampleBuffer};
+use super::params::Params;
 use crate::error::{Error, Place};
 use crate::nurbs::curve::check_weights;
 use crate::nurbs::{Domain, KnotVector};
 use crate::sampling::direct::Direct;
 use crate::sampling::kernel;
 use crate::sampling::power_form::{PowerBasis, Span};
-use crate::sampling::{Fresh, Params, SampleBuffer};
 
 /// A rule that keeps one sampled channel between two others, applied after
 /// evaluation: `out[channel] = clamp(out[channel], out[at_least], out[at_most])`.
@@ -310,7 +311,7 @@ impl Sampler {
                 let chunk = params
                     .len()
                     .div_ceil(threads * 4)
-                    .next_multiple_of(kernel::BLOCK)
+                    .next_multiple_of(super::params::BLOCK)
                     .max(MIN_CHUNK);
                 self.run_parallel(params, sorted, out, chunk);
                 return;

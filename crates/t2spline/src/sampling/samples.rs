@@ -2,9 +2,9 @@
 
 use std::ops::Index;
 
+use super::buffer::SampleBuffer;
 use crate::fuzzy::{Alpha, Layer, Layers};
 use crate::pipeline::Side;
-use crate::sampling::SampleBuffer;
 
 /// One curve sampled at `len()` parameters, one vector per coordinate
 /// (structure of arrays): `coord(0)[i]` is the x coordinate at the i-th

@@ -1,6 +1,9 @@
 //! The grid engine behind the surface types: `sample_grid`, `sample_layers`,
 //! `sample_sweep` and `sample_stages` of surfaces.
 
+use super::buffer::{Fresh, SampleBuffer};
+use super::params::Params;
+use super::samples::{CurveSamples, Grid, LayerSamples, StageSamples, SweepSamples};
 use crate::error::Error;
 use crate::fuzzy::Alpha;
 use crate::nurbs::{Direction, NurbsSurface};
@@ -8,10 +11,7 @@ use crate::pipeline::point_stages::PointStages;
 use crate::pipeline::{FuzzySurface, SurfaceSolution};
 use crate::reduction::TypeReduction;
 use crate::sampling::plan::Plan;
-use crate::sampling::{
-    CurveSamples, Fresh, Grid, GridSampler, LayerSamples, Params, SampleBuffer, StageSamples,
-    SweepSamples,
-};
+use crate::sampling::GridSampler;
 
 impl<const D: usize> NurbsSurface<D> {
     /// A [`GridSampler`] for this surface: one channel per coordinate.

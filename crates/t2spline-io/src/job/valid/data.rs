@@ -12,8 +12,9 @@
 
 use t2spline::fit::FuzzyData;
 
+use super::fuzzy_points::fuzzy_points;
+use super::header::{degree_of, header, sample_count, Header};
 use super::raw::{self, Whole};
-use super::{fuzzy_points, header, Header};
 use crate::fit_data::FitData;
 use crate::limits::{check_net_size, MAX_POINTS};
 
@@ -33,12 +34,12 @@ pub(in super::super) fn data(text: &str) -> Option<FitData> {
     let points = raw.points?;
     let samples = match raw.samples {
         None => None,
-        Some(Whole::One(s)) => Some(super::sample_count(s)?),
+        Some(Whole::One(s)) => Some(sample_count(s)?),
         Some(Whole::Pair(_)) => return None,
     };
     let (degree, degree_v, points) = match (points.net, order) {
         (None, Whole::One(order)) => {
-            let degree = super::degree_of(key, order)?;
+            let degree = degree_of(key, order)?;
             let n = points.numbers.len() / points.dimension;
             if degree == 0 || n <= degree || n > MAX_POINTS {
                 return None;
@@ -51,7 +52,7 @@ pub(in super::super) fn data(text: &str) -> Option<FitData> {
             (degree, None, points)
         }
         (Some([nu, nv]), Whole::Pair([ku, kv])) => {
-            let [p, q] = [super::degree_of(key, ku)?, super::degree_of(key, kv)?];
+            let [p, q] = [degree_of(key, ku)?, degree_of(key, kv)?];
             if points.dimension != 3 || p == 0 || q == 0 || nu <= p || nv <= q {
                 return None;
             }

@@ -16,49 +16,22 @@
 //! same readers ([`data`]).
 
 mod data;
+mod fuzzy_points;
+mod header;
 mod raw;
 
 pub(super) use data::data;
 
 use t2spline::job::{
-    check_grid_samples, check_samples, Job, LengthUnit, Model, Samples, DEFAULT_SAMPLES,
-    DEFAULT_SURFACE_SAMPLES,
+    check_grid_samples, Job, LengthUnit, Model, Samples, DEFAULT_SAMPLES, DEFAULT_SURFACE_SAMPLES,
 };
-use t2spline::{Alpha, FuzzyCurve, FuzzySurface, Height, Nt2Number, Nt2Point, TypeReduction};
+use t2spline::{FuzzyCurve, FuzzySurface, TypeReduction};
 
 use super::common::closure_gap;
-use crate::limits::{check_net_size, check_order, check_surface_work, MAX_POINTS};
-use raw::{Knots, Points, RawJob, RawNumber, Weights, Whole};
-
-/// What a job and a data file give alike, each rule checked: the key that
-/// gives the order (`order` or `degree`, exactly one of them) and its value,
-/// `alpha`, and the top-level `lower_height`.
-struct Header {
-    key: &'static str,
-    order: Whole,
-    alpha: Option<Alpha>,
-    height: Option<f64>,
-}
-
-/// The [`Header`] of `raw`, if its rules hold.
-fn header(raw: &RawJob) -> Option<Header> {
-    let (key, order) = match (raw.order, raw.degree) {
-        (Some(order), None) => ("order", order),
-        (None, Some(degree)) => ("degree", degree),
-        _ => return None,
-    };
-    let alpha = raw.alpha.map(Alpha::try_new).transpose().ok()?;
-    let height = match raw.lower_height {
-        Some(h) => Some(Height::try_new(h).ok()?.get()),
-        None => None,
-    };
-    Some(Header {
-        key,
-        order,
-        alpha,
-        height,
-    })
-}
+use crate::limits::{check_net_size, check_surface_work, MAX_POINTS};
+use fuzzy_points::fuzzy_points;
+use header::{degree_of, header, sample_count, Header};
+use raw::{Knots, Points, RawJob, Weights, Whole};
 
 /// The job in `text` (without a byte-order mark) if it has no problem at
 /// all; `None` if it has one, or anything this reading does not expect.
@@ -139,23 +112,6 @@ fn build(raw: RawJob) -> Option<Job> {
     })
 }
 
-/// The degree of an order given as `key` (`order` or `degree`): an order of
-/// at least 1, within [`MAX_ORDER`](crate::limits::MAX_ORDER).
-fn degree_of(key: &str, given: u64) -> Option<usize> {
-    if key == "order" && given == 0 {
-        return None;
-    }
-    // The text is for the message, which a refusal leaves to the validator.
-    Some(check_order(key, given, "").ok()? - 1)
-}
-
-/// A number of samples within the limits of
-/// [`check_samples`](t2spline::job::check_samples).
-fn sample_count(n: u64) -> Option<usize> {
-    // The text is for the message, which a refusal leaves to the validator.
-    check_samples(n, "").ok()
-}
-
 /// A grid of samples: each number and the whole grid within the limits.
 fn grid(n: [u64; 2]) -> Option<[usize; 2]> {
     let grid = [sample_count(n[0])?, sample_count(n[1])?];
@@ -210,26 +166,6 @@ fn surface(
     FuzzySurface::try_new(degree, net, weights, knots)
         .ok()
         .map(Model::Surface)
-}
-
-/// The points of `D` coordinates whose numbers are `numbers`, point after
-/// point; a number without a height of its own takes `height`, and a bare
-/// number (crisp) takes `height` or else 1.
-fn fuzzy_points<const D: usize>(
-    numbers: &[RawNumber],
-    height: Option<f64>,
-) -> Option<Vec<Nt2Point<D>>> {
-    let numbers = numbers
-        .iter()
-        .map(|n| {
-            let h = n.height.or(height).or(n.bare.then_some(1.0))?;
-            Nt2Number::try_new(n.crisp, n.upper, n.primary, n.lower, h).ok()
-        })
-        .collect::<Option<Vec<_>>>()?;
-    numbers
-        .chunks_exact(D)
-        .map(|p| p.try_into().ok().map(Nt2Point::new))
-        .collect()
 }
 
 #[cfg(test)]

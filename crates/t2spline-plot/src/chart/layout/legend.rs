@@ -9,7 +9,7 @@ use crate::chart::paint::font_size;
 use crate::chart::panel_layout::PanelLayout;
 use crate::chart::scene::LegendEntry;
 
-use super::PAD;
+use super::spacing::PAD;
 
 /// Legend: sample width, gap, row height, padding.
 pub const LEGEND_SWATCH: f64 = 30.0;

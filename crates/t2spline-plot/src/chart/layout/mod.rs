@@ -11,9 +11,11 @@
 
 mod axes;
 mod legend;
+mod spacing;
 mod texts;
 
 pub use legend::{LegendLayout, LEGEND_ROW, LEGEND_SWATCH};
+pub use spacing::{NOTE_ROW, TICK_LEN};
 pub use texts::{wrap, FixedLabels};
 
 use crate::chart::font::{cap_height, line_height};
@@ -24,15 +26,7 @@ use crate::chart::panel_layout::PanelLayout;
 use crate::chart::scene::{Figure, Priority};
 use axes::{data_ranges, label_width, placed, with_ranges};
 use legend::LegendSize;
-
-/// Outer margin of the page.
-const PAD: f64 = 10.0;
-/// Length of a tick mark.
-pub const TICK_LEN: f64 = 5.0;
-/// Width reserved right of the panels for a colour bar and its labels.
-const COLORBAR_SPACE: f64 = 96.0;
-/// Height of a line of notes.
-pub const NOTE_ROW: f64 = 14.0;
+use spacing::{COLORBAR_SPACE, PAD};
 
 /// A whole page.
 #[derive(Clone, Debug, PartialEq)]

@@ -10,8 +10,8 @@ use crate::chart::paint::{font_size, Fill, INK, MUTED, WHITE};
 use crate::chart::scene::{ColorBar, LegendEntry};
 use crate::chart::ticks::short;
 
+use super::element::{rect_attrs, stroke_attrs, text_el};
 use super::marks::markers;
-use super::{rect_attrs, stroke_attrs, text_el};
 
 pub(super) fn legend(entries: &[LegendEntry], l: &LegendLayout) -> String {
     let r = l.rect;
@@ -137,7 +137,7 @@ pub(super) fn notes(notes: &[String], top: f64) -> String {
             "<text x=\"10\" y=\"{}\" font-size=\"{}\" fill=\"{MUTED}\">{}</text>",
             coord(top + (k as f64 + 1.0) * NOTE_ROW - 3.0),
             font_size::NOTE,
-            super::escape(n)
+            super::element::escape(n)
         );
     }
     s

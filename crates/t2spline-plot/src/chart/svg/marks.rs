@@ -11,7 +11,7 @@ use crate::chart::panel_layout::PanelLayout;
 use crate::chart::scene::{Facet, Mark, Xy};
 use crate::chart::simplify::simplify;
 
-use super::{points_attr, stroke_attrs, text_el};
+use super::element::{points_attr, stroke_attrs, text_el};
 
 /// The stretches of a polyline between its gaps (non-finite points), in
 /// pixels, each simplified to within `tolerance`.

@@ -8,18 +8,21 @@
 
 use std::fmt::Write as _;
 
+mod element;
 mod legend;
 mod marks;
 pub(crate) mod number;
 
 use crate::chart::font::{cap_height, line_height, SVG_FONT_STACK};
-use crate::chart::geometry::{Px, Rect};
+use crate::chart::geometry::Rect;
 use crate::chart::labels::{place, Placed};
 use crate::chart::layout::{self, Layout, TICK_LEN};
 use crate::chart::obstacles::panel_obstacles;
-use crate::chart::paint::{font_size, Stroke, GRID, INK, WHITE};
+use crate::chart::paint::{font_size, GRID, INK, WHITE};
 use crate::chart::panel_layout::PanelLayout;
 use crate::chart::scene::{Figure, Item, Mark, Panel};
+pub use element::escape;
+use element::{rect_attrs, text_el};
 use number::coord;
 
 /// One piece of a figure's SVG, with a key stable across figures of one kind.
@@ -214,58 +217,6 @@ fn texts(
     placed
 }
 
-/// Escapes text for SVG/XML.
-#[must_use]
-pub fn escape(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('"', "&quot;")
-}
-
-/// `<rect>` position attributes of `r`: ` x="…" y="…" width="…" height="…"`.
-pub(crate) fn rect_attrs(r: &Rect) -> String {
-    format!(
-        " x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\"",
-        coord(r.x),
-        coord(r.y),
-        coord(r.w),
-        coord(r.h)
-    )
-}
-
-pub(crate) fn stroke_attrs(s: &Stroke) -> String {
-    let mut a = format!(
-        "fill=\"none\" stroke=\"{}\" stroke-width=\"{}\" stroke-linejoin=\"round\"",
-        s.color,
-        coord(s.width)
-    );
-    if let Some(d) = s.dash {
-        let _ = write!(a, " stroke-dasharray=\"{d}\"");
-    }
-    a
-}
-
-pub(crate) fn points_attr(pts: &[Px]) -> String {
-    let mut s = String::with_capacity(pts.len() * 14);
-    for (k, p) in pts.iter().enumerate() {
-        if k > 0 {
-            s.push(' ');
-        }
-        let _ = write!(s, "{},{}", coord(p[0]), coord(p[1]));
-    }
-    s
-}
-
-pub(crate) fn text_el(x: f64, y: f64, size: f64, anchor: &str, extra: &str, text: &str) -> String {
-    format!(
-        "<text x=\"{}\" y=\"{}\" font-size=\"{size}\" text-anchor=\"{anchor}\" fill=\"{INK}\"{extra}>{}</text>\n",
-        coord(x),
-        coord(y),
-        escape(text)
-    )
-}
-
 /// Grid, frame, ticks, tick labels, axis labels and panel title; also the clip
 /// path of the plot area.
 fn frame(panel: &Panel, pl: &PanelLayout, clip: &str) -> String {
@@ -364,14 +315,4 @@ fn frame(panel: &Panel, pl: &PanelLayout, clip: &str) -> String {
         ));
     }
     s
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn text_is_escaped() {
-        assert_eq!(escape("a < b & \"c\""), "a &lt; b &amp; &quot;c&quot;");
-    }
 }

@@ -7,8 +7,8 @@
 
 use t2spline::job::Points;
 
-use super::Projection;
-use crate::figures::Aspect;
+use super::projection::Projection;
+use crate::figures::aspect::Aspect;
 
 /// Plot width of a panel of a one-panel figure, in pixels (about what the
 /// layout gives it).

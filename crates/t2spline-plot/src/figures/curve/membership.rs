@@ -8,13 +8,15 @@ use t2spline::job::Job;
 use t2spline::set::Region;
 use t2spline::Membership;
 
-use super::{crisp_curve, CurveScene, Projection};
+use super::projection::Projection;
+use super::scene::CurveScene;
+use super::series::crisp_curve;
 use crate::chart::paint::{viridis, Color};
 use crate::chart::scene::{ColorBar, Figure, LegendEntry, Mark, Panel, Xy};
 use crate::chart::ticks::short;
 use crate::error::Error;
+use crate::figures::aspect::Aspect;
 use crate::figures::style::{contour_stroke, crisp_stroke, halo_stroke};
-use crate::figures::Aspect;
 use crate::set_view::{self, Map};
 
 /// The levels whose regions are drawn as contours.

@@ -5,13 +5,15 @@
 use t2spline::job::{Job, RunOutput};
 use t2spline::{Alpha, TypeReduction};
 
-use super::{crisp_curve, crisp_legend, crisp_points, line, polygon, project, CurveScene};
+use super::projection::project;
+use super::scene::CurveScene;
+use super::series::{crisp_curve, crisp_legend, crisp_points, line, polygon};
 use crate::chart::scene::{Figure, LegendEntry, Mark, Panel, Xy};
 use crate::chart::ticks::short;
 use crate::data;
 use crate::error::Error;
+use crate::figures::aspect::Aspect;
 use crate::figures::style::{reduction_label, reduction_marker, reduction_stroke};
-use crate::figures::Aspect;
 
 /// `paper (α = 0.8)` or `centroid (Karnik–Mendel)`: a reduction with the
 /// level it used, if any.

@@ -10,7 +10,7 @@ use t2spline::job::Job;
 use t2spline::set::SectionLevel;
 use t2spline::{Alpha, Layer, Membership};
 
-use super::CurveScene;
+use super::scene::CurveScene;
 use crate::chart::paint::{Stroke, GREY, INK};
 use crate::chart::scene::{Figure, LegendEntry, Mark, Panel, Xy};
 use crate::chart::ticks::short;

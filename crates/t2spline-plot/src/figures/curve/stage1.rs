@@ -4,10 +4,10 @@
 use t2spline::job::{Points, RunOutput};
 use t2spline::Layer;
 
-use super::{
-    crisp_legend, crisp_points, names, point_name, polygon, project, regions, regions_legend,
-    weights_phrase, CurveScene,
-};
+use super::phrases::{point_name, weights_phrase};
+use super::projection::project;
+use super::scene::CurveScene;
+use super::series::{crisp_legend, crisp_points, names, polygon, regions, regions_legend};
 use crate::chart::paint::{Stroke, BLUE, GREEN, VERMILLION};
 use crate::chart::scene::{Figure, LegendEntry, Mark, Panel};
 use crate::figures::style::{layer_stroke, FUNCTIONS};

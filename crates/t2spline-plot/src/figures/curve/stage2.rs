@@ -3,9 +3,11 @@
 use t2spline::job::{Points, RunOutput};
 use t2spline::Layer;
 
-use super::{
-    alpha_phrase, crisp_legend, crisp_points, line, markers, names, point_name, polygon, project,
-    regions, regions_legend, CurveScene,
+use super::phrases::{alpha_phrase, point_name};
+use super::projection::project;
+use super::scene::CurveScene;
+use super::series::{
+    crisp_legend, crisp_points, line, markers, names, polygon, regions, regions_legend,
 };
 use crate::chart::scene::{Figure, LegendEntry};
 use crate::chart::ticks::short;

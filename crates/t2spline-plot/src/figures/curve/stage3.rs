@@ -2,10 +2,10 @@
 
 use t2spline::job::RunOutput;
 
-use super::{
-    alpha_phrase, band, crisp_curve, crisp_points, line, markers, names, point_name, polygon,
-    project, CurveScene,
-};
+use super::phrases::{alpha_phrase, point_name};
+use super::projection::{band, project};
+use super::scene::CurveScene;
+use super::series::{crisp_curve, crisp_points, line, markers, names, polygon};
 use crate::chart::paint::{Stroke, GREY};
 use crate::chart::scene::{Figure, LegendEntry, Mark, Panel};
 use crate::chart::ticks::short;

@@ -4,11 +4,11 @@
 use t2spline::job::Job;
 
 use super::largest::{largest_distance, Ends};
+use super::phrases::reduction_phrase;
+use super::projection::project;
+use super::scene::CurveScene;
+use super::series::{crisp_curve, crisp_legend, crisp_points, line, markers, polygon};
 use super::zoom::zoom_panel;
-use super::{
-    crisp_curve, crisp_legend, crisp_points, line, markers, polygon, project, reduction_phrase,
-    CurveScene,
-};
 use crate::chart::scene::{Figure, LegendEntry};
 use crate::chart::ticks::short;
 use crate::data;

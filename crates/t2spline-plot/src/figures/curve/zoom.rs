@@ -7,7 +7,8 @@ use t2spline::job::{Job, Points, RunOutput};
 use t2spline::Alpha;
 
 use super::largest::{largest_distance, Ends};
-use super::{line, markers, projections, Projection};
+use super::projection::{projections, Projection};
+use super::series::{line, markers};
 use crate::chart::scene::{Panel, Xy};
 use crate::chart::ticks::short;
 use crate::data;
@@ -160,7 +161,7 @@ pub(super) fn zoom_panel(job: &Job, r: &RunOutput, ends: &Ends) -> Result<Panel,
         &stretches(r, win, ij, data::curve_spline(r).max_at),
         ij,
     )?;
-    let mut p = pr.panel(crate::figures::Aspect::Equal);
+    let mut p = pr.panel(crate::figures::aspect::Aspect::Equal);
     let projection = if r.dimension > 2 {
         format!(", {} projection", pr.name())
     } else {

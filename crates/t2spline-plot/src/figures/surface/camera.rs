@@ -18,7 +18,7 @@ use std::str::FromStr;
 
 use crate::chart::scene::Xy;
 use crate::error::Error;
-use crate::figures::Aspect;
+use crate::figures::aspect::Aspect;
 
 /// A point or vector in 3-D.
 pub type Xyz = [f64; 3];

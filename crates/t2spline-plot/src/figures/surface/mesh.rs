@@ -310,8 +310,8 @@ pub fn ticks(p: &mut Panel, cam: &Camera, names: [&str; 3]) {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::figures::aspect::Aspect;
     use crate::figures::surface::camera::View;
-    use crate::figures::Aspect;
 
     fn plane(z: f64) -> Vec<Xyz> {
         let mut v = Vec::new();

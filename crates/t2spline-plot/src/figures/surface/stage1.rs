@@ -4,12 +4,15 @@
 use t2spline::job::Points;
 use t2spline::Layer;
 
-use super::{crisp_legend, distances, Bins, SurfaceScene};
+use super::bins::Bins;
+use super::crisp::crisp_legend;
+use super::crisp::SURFACE;
+use super::mesh::Paint;
+use super::points::distances;
+use super::scene::SurfaceScene;
 use crate::chart::scene::{Figure, LegendEntry};
 use crate::figures::curve::weights_phrase;
 use crate::figures::style::{layer_stroke, upper_band, FUNCTIONS};
-use crate::figures::surface::mesh::Paint;
-use crate::figures::surface::SURFACE;
 
 /// Stage 1: the shaded crisp surface, the two upper layer surfaces as
 /// translucent envelopes, the boundaries of the primary and lower layer

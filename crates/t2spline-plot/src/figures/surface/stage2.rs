@@ -2,12 +2,15 @@
 
 use t2spline::Layer;
 
-use super::{crisp_legend, distances, Bins, SurfaceScene};
+use super::bins::Bins;
+use super::crisp::crisp_legend;
+use super::crisp::SURFACE;
+use super::mesh::Paint;
+use super::points::distances;
+use super::scene::SurfaceScene;
 use crate::chart::scene::{Figure, LegendEntry};
 use crate::figures::curve::alpha_phrase;
 use crate::figures::style::{layer_stroke, upper_band, FUNCTIONS};
-use crate::figures::surface::mesh::Paint;
-use crate::figures::surface::SURFACE;
 
 /// Stage 2: the shaded crisp surface, the upper cut surfaces as translucent
 /// envelopes, the boundaries of the primary and (where every number has one)

@@ -1,11 +1,14 @@
 //! Stage 3 of a surface job: the type-reduced left and right surfaces.
 
-use super::{crisp_legend, distances, Bins, SurfaceScene};
+use super::bins::Bins;
+use super::crisp::crisp_legend;
+use super::crisp::SURFACE;
+use super::mesh::Paint;
+use super::points::distances;
+use super::scene::SurfaceScene;
 use crate::chart::scene::{Figure, LegendEntry, Mark};
 use crate::figures::curve::alpha_phrase;
 use crate::figures::style::{left_marker, left_stroke, reduced_band, right_marker, right_stroke};
-use crate::figures::surface::mesh::Paint;
-use crate::figures::surface::SURFACE;
 
 /// Stage 3: the shaded crisp surface, the type-reduced left and right
 /// surfaces as translucent envelopes with their control points; beside it,

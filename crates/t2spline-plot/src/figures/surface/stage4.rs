@@ -4,7 +4,10 @@
 use t2spline::job::{Job, Parameter};
 use t2spline::Alpha;
 
-use super::{distances, Bins, SurfaceScene};
+use super::bins::Bins;
+use super::mesh::Paint;
+use super::points::distances;
+use super::scene::SurfaceScene;
 use crate::chart::paint::{Marker, Shape, BLACK};
 use crate::chart::scene::{Figure, LegendEntry, Mark, Priority, Xy};
 use crate::chart::ticks::short;
@@ -14,7 +17,6 @@ use crate::figures::curve::{largest_distance, reduction_phrase};
 use crate::figures::style::{
     distance_marker, distance_stroke, polygon_stroke, solution_marker, solution_stroke,
 };
-use crate::figures::surface::mesh::Paint;
 
 /// Stage 4: the crisp surface coloured by `‖D(u, v) − C(u, v)‖` (the
 /// distance to the defuzzified surface at equal parameters, lightly shaded),

@@ -1,7 +1,7 @@
 //! The axis-aligned bounding box of a surface.
 
+use super::tensor_product::NurbsSurface;
 use crate::nurbs::surface::patches::{patch_min, Patch, HULL_SLACK};
-use crate::nurbs::surface::NurbsSurface;
 use crate::nurbs::BoundingBox;
 
 /// Where each face of a box is reached: `at[0][d]` for `min[d]`, `at[1][d]`

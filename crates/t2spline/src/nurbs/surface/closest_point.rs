@@ -1,11 +1,11 @@
 //! The point of a surface closest to a given point (The NURBS Book, §6.1,
 //! Eqs. 6.5–6.8), a global minimum over the whole domain.
 
+use super::tensor_product::NurbsSurface;
 use crate::error::{Error, Place};
 use crate::fuzzy::Axis;
 use crate::limits::{within_magnitude, MAGNITUDE_RANGE};
 use crate::nurbs::surface::patches::{patch_min, Patch, HULL_SLACK};
-use crate::nurbs::surface::NurbsSurface;
 use crate::nurbs::BoundingBox;
 use crate::vector::euclidean_norm;
 use crate::vector::{dot, sub};

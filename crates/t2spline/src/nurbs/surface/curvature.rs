@@ -4,8 +4,8 @@
 //! Surfaces*, §3-2 and §3-3; Farin, *Curves and Surfaces for CAGD*, the
 //! chapter on the differential geometry of surfaces).
 
+use super::tensor_product::NurbsSurface;
 use crate::error::Error;
-use crate::nurbs::surface::NurbsSurface;
 use crate::vector::cross;
 use crate::vector::dot;
 use crate::vector::euclidean_norm;

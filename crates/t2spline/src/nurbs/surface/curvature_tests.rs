@@ -4,7 +4,9 @@
 
 use super::tests::quarter_cylinder;
 use super::*;
+use crate::error::Error;
 use crate::fuzzy::{Layer, Nt2Number, Nt2Point};
+use crate::nurbs::KnotVector;
 use crate::pipeline::FuzzySurface;
 use crate::vector::cross;
 use crate::vector::dot;

@@ -1,9 +1,10 @@
 //! Partial derivatives of any order of a rational surface and its normal
 //! (The NURBS Book, A3.6 and A4.4).
 
+use super::tensor_product::NurbsSurface;
 use crate::error::Error;
 use crate::nurbs::derivatives::{basis_derivatives, binomial, check_order};
-use crate::nurbs::surface::{Direction, NurbsSurface};
+use crate::place::Direction;
 use crate::vector::{cross, euclidean_norm};
 
 impl<const D: usize> NurbsSurface<D> {

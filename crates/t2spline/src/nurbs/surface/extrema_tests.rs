@@ -5,6 +5,7 @@ use proptest::prelude::*;
 
 use super::tests::{quarter_cylinder, wavy};
 use super::*;
+use crate::error::Error;
 use crate::nurbs::BoundingBox;
 use crate::vector::euclidean_norm;
 

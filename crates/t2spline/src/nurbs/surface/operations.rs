@@ -13,14 +13,15 @@
 //! surfaces (`pipeline/fuzzy_surface.rs`) stack their seven layers into the
 //! same rows.
 
+use super::tensor_product::NurbsSurface;
 use crate::error::Error;
 use crate::nurbs::basis::basis_functions;
 use crate::nurbs::degree_elevation::{check_elevation, elevate};
 use crate::nurbs::homogeneous::{check_rows, from_rows, to_rows, Row};
 use crate::nurbs::knot_insertion::{insert, refine};
 use crate::nurbs::split::segment;
-use crate::nurbs::surface::{Direction, NurbsSurface};
 use crate::nurbs::{KnotVector, NurbsCurve};
+use crate::place::Direction;
 
 /// The knots `[U, V]` and the homogeneous rows of a net, row by row
 /// (`rows[i·nv + j]`, each of the same width).

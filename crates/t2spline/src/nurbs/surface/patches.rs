@@ -7,9 +7,10 @@
 //! (the convex hull property, The NURBS Book §4.4): bounds from those points
 //! decide which patches need a search at all.
 
+use super::tensor_product::NurbsSurface;
 use crate::nelder_mead::nelder_mead_min;
-use crate::nurbs::surface::{Direction, NurbsSurface};
 use crate::nurbs::BoundingBox;
+use crate::place::Direction;
 
 /// A span rectangle: its span indices `[su, sv]` and its ranges in u and v.
 pub(crate) type Patch = ([usize; 2], [[f64; 2]; 2]);

@@ -2,6 +2,8 @@
 //! that name their place, and the operations against the original surface.
 
 use super::*;
+use crate::error::Error;
+use crate::nurbs::KnotVector;
 use crate::nurbs::NurbsCurve;
 
 /// The quarter cylinder of radius `r` about the z axis, height 2: rational

@@ -11,13 +11,14 @@
 //! ```
 //! valid while `alpha` is at most the least top of the points acting there.
 
+use super::bounds::{EnvelopeLevel, Gathered};
+use super::plan_grid::PlanGrid;
 use crate::fuzzy::Alpha;
 use crate::nurbs::surface::TensorBasis;
 use crate::nurbs::Direction;
 use crate::pipeline::FuzzySurface;
 use crate::set::cut_lines::{CutLines, MEMBERSHIPS};
 use crate::set::envelope::plan_map::{Separable, Table};
-use crate::set::envelope::{EnvelopeLevel, Gathered, PlanGrid};
 
 /// Per function, the sums `[Σ R·L, Σ R·G, Σ R·R, Σ R·G']` at a point.
 type Sums = [[f64; 4]; 3];

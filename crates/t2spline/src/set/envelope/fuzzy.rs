@@ -2,9 +2,9 @@
 //! set ([`FuzzySurface::sections`]), its intervals hulled into the least and
 //! the greatest height.
 
+use super::bounds::{EnvelopeLevel, Gathered};
 use crate::fuzzy::Alpha;
 use crate::pipeline::FuzzySurface;
-use crate::set::envelope::{EnvelopeLevel, Gathered};
 use crate::set::surface::SurfaceGrader;
 
 /// The envelope at `points`, one section per point.

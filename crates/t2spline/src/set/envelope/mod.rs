@@ -26,161 +26,23 @@
 //! the level. A function without a cut anywhere at a level (the lower one
 //! above the heights `h`) is `None` at that level.
 
+mod bounds;
 mod crisp;
 mod fuzzy;
+mod plan_grid;
 mod plan_map;
 
-use crate::error::Error;
-use crate::fuzzy::{Alpha, Membership};
-use crate::pipeline::FuzzySurface;
+pub use bounds::{EnvelopeBounds, EnvelopeLevel};
+pub use plan_grid::{PlanGrid, MAX_ENVELOPE_VALUES};
 
-/// Values of an envelope at most (cells × levels × 6, at 8 bytes each
-/// 800 MB): the 1 000 × 1 000 grid at 11 levels is 66 million.
-pub const MAX_ENVELOPE_VALUES: usize = 100_000_000;
+use crate::error::Error;
+use crate::fuzzy::Alpha;
+use crate::pipeline::FuzzySurface;
 
 /// Cells × levels at most where x or y of a control point is fuzzy, since
 /// each cell is then a search of the set: about 40 ms per cell and level for
 /// a 6 × 5 net (docs/performance.md), so the limit is some minutes.
 pub const MAX_FUZZY_ENVELOPE_CELLS: usize = 10_000;
-
-/// A regular grid over a plan extent: `nx × ny` cells over
-/// `[x0, x1] × [y0, y1]`, whose centres are the plan points of an envelope.
-#[derive(Clone, Debug, PartialEq)]
-pub struct PlanGrid {
-    extent: [f64; 4],
-    shape: [usize; 2],
-}
-
-impl PlanGrid {
-    /// The grid of `shape = [nx, ny]` cells over `extent = [x0, y0, x1, y1]`.
-    ///
-    /// # Errors
-    /// [`Error::OutOfRange`] with no cell along x or y;
-    /// [`Error::EnvelopeTooLarge`] past [`MAX_ENVELOPE_VALUES`] cells;
-    /// [`Error::QueryPoint`] if a bound is not finite; [`Error::GridRange`] if
-    /// a range is empty.
-    ///
-    /// # Examples
-    /// ```
-    /// # use t2spline::set::PlanGrid;
-    /// let g = PlanGrid::try_new([0.0, 0.0, 4.0, 2.0], [4, 2])?;
-    /// assert_eq!(g.xs(), vec![0.5, 1.5, 2.5, 3.5]);
-    /// assert_eq!(g.ys(), vec![0.5, 1.5]);
-    /// let e = PlanGrid::try_new([0.0, 0.0, 4.0, 2.0], [0, 2]).unwrap_err();
-    /// assert_eq!(e.to_string(), "grid cells along x = 0 is outside 1, 2, …");
-    /// # Ok::<(), t2spline::Error>(())
-    /// ```
-    pub fn try_new(extent: [f64; 4], shape: [usize; 2]) -> Result<Self, Error> {
-        let [x0, y0, x1, y1] = extent;
-        let [columns, rows] = shape;
-        for (what, n) in [
-            ("grid cells along x", columns),
-            ("grid cells along y", rows),
-        ] {
-            if n == 0 {
-                return Err(Error::OutOfRange {
-                    place: crate::place::Place::NONE,
-                    what,
-                    value: 0.0,
-                    range: "1, 2, …",
-                });
-            }
-        }
-        if columns.saturating_mul(rows) > MAX_ENVELOPE_VALUES {
-            return Err(Error::EnvelopeTooLarge {
-                columns,
-                rows,
-                levels: 1,
-                limit: MAX_ENVELOPE_VALUES,
-                counted: "values (cells x levels x 6)",
-            });
-        }
-        for (index, p) in [[x0, y0], [x1, y1]].iter().enumerate() {
-            crate::set::membership::check_point(index, p)?;
-        }
-        for (axis, [lo, hi]) in [(crate::Axis::X, [x0, x1]), (crate::Axis::Y, [y0, y1])] {
-            if lo >= hi || !(hi - lo).is_finite() {
-                return Err(Error::GridRange { axis, lo, hi });
-            }
-        }
-        Ok(PlanGrid { extent, shape })
-    }
-
-    /// `[x0, y0, x1, y1]`.
-    #[must_use]
-    pub fn extent(&self) -> [f64; 4] {
-        self.extent
-    }
-
-    /// `[nx, ny]`: cells along x and along y.
-    #[must_use]
-    pub fn shape(&self) -> [usize; 2] {
-        self.shape
-    }
-
-    /// The size of a cell, `[(x1 − x0)/nx, (y1 − y0)/ny]`.
-    #[must_use]
-    pub fn cell_size(&self) -> [f64; 2] {
-        let [x0, y0, x1, y1] = self.extent;
-        [
-            (x1 - x0) / self.shape[0] as f64,
-            (y1 - y0) / self.shape[1] as f64,
-        ]
-    }
-
-    /// The cell centres along x, increasing: `x0 + (i + ½)·(x1 − x0)/nx`.
-    #[must_use]
-    pub fn xs(&self) -> Vec<f64> {
-        let d = self.cell_size()[0];
-        (0..self.shape[0])
-            .map(|i| self.extent[0] + (i as f64 + 0.5) * d)
-            .collect()
-    }
-
-    /// The cell centres along y, increasing.
-    #[must_use]
-    pub fn ys(&self) -> Vec<f64> {
-        let d = self.cell_size()[1];
-        (0..self.shape[1])
-            .map(|j| self.extent[1] + (j as f64 + 0.5) * d)
-            .collect()
-    }
-}
-
-/// The least and the greatest height per plan point (NaN: NODATA).
-#[derive(Clone, Debug, PartialEq)]
-pub struct EnvelopeBounds {
-    /// The least height.
-    pub least: Vec<f64>,
-    /// The greatest height.
-    pub greatest: Vec<f64>,
-}
-
-/// The envelope of every membership function at one level; `None` where the
-/// function has no cut at this level.
-#[derive(Clone, Debug, PartialEq)]
-pub struct EnvelopeLevel {
-    /// The level.
-    pub alpha: f64,
-    /// The upper function's bounds.
-    pub upper: Option<EnvelopeBounds>,
-    /// The primary function's bounds.
-    pub primary: Option<EnvelopeBounds>,
-    /// The lower function's bounds.
-    pub lower: Option<EnvelopeBounds>,
-}
-
-impl EnvelopeLevel {
-    /// The bounds of one function.
-    #[must_use]
-    pub fn get(&self, membership: Membership) -> Option<&EnvelopeBounds> {
-        match membership {
-            Membership::Upper => self.upper.as_ref(),
-            Membership::Primary => self.primary.as_ref(),
-            Membership::Lower => self.lower.as_ref(),
-        }
-    }
-}
 
 /// The envelope of a fuzzy surface on a [`PlanGrid`]: per level, bounds per
 /// cell, row by row (`y` outer, increasing; `x` inner):
@@ -350,83 +212,5 @@ impl FuzzySurface<3> {
             ));
         }
         Ok(())
-    }
-}
-
-/// Bounds being gathered: per level, per function (upper, primary, lower),
-/// `None` where the function has no cut at that level.
-pub(crate) struct Gathered {
-    pub(crate) levels: Vec<(f64, [Option<EnvelopeBounds>; 3])>,
-}
-
-impl Gathered {
-    /// Empty bounds (`+∞`, `−∞`) for `n` points, at each level where
-    /// `present(alpha)` holds per function.
-    pub(crate) fn new(n: usize, levels: &[Alpha], present: impl Fn(usize, f64) -> bool) -> Self {
-        let levels = levels
-            .iter()
-            .map(|a| {
-                let alpha = a.get();
-                let bounds = [0, 1, 2].map(|k| {
-                    present(k, alpha).then(|| EnvelopeBounds {
-                        least: vec![f64::INFINITY; n],
-                        greatest: vec![f64::NEG_INFINITY; n],
-                    })
-                });
-                (alpha, bounds)
-            })
-            .collect();
-        Gathered { levels }
-    }
-
-    /// The finished levels: points never reached NaN; ends that rounding
-    /// crossed (at a function's top, where both are the same sum) put in
-    /// order; and the order of the functions (upper ⊇ primary ⊇ lower) made
-    /// exact where rounding of the separate sums could break it by an ulp.
-    pub(crate) fn finish(self) -> Vec<EnvelopeLevel> {
-        self.levels
-            .into_iter()
-            .map(|(alpha, bounds)| {
-                let [mut upper, mut primary, mut lower] = bounds;
-                for b in [&mut upper, &mut primary, &mut lower].into_iter().flatten() {
-                    for (lo, hi) in b.least.iter_mut().zip(&mut b.greatest) {
-                        if *lo == f64::INFINITY {
-                            (*lo, *hi) = (f64::NAN, f64::NAN);
-                        } else if *lo > *hi {
-                            (*lo, *hi) = (*hi, *lo);
-                        }
-                    }
-                }
-                nest(upper.as_ref(), primary.as_mut());
-                nest(primary.as_ref(), lower.as_mut());
-                EnvelopeLevel {
-                    alpha,
-                    upper,
-                    primary,
-                    lower,
-                }
-            })
-            .collect()
-    }
-}
-
-/// Clamps `inner` into `outer` where both have data.
-fn nest(outer: Option<&EnvelopeBounds>, inner: Option<&mut EnvelopeBounds>) {
-    let (Some(o), Some(i)) = (outer, inner) else {
-        return;
-    };
-    let pairs = o.least.iter().zip(&o.greatest);
-    for ((lo, hi), (olo, ohi)) in i.least.iter_mut().zip(&mut i.greatest).zip(pairs) {
-        if lo.is_nan() || olo.is_nan() {
-            continue;
-        }
-        *lo = lo.max(*olo);
-        *hi = hi.min(*ohi);
-        if *lo > *hi {
-            // Intervals that rounding moved apart by an ulp (at a top, where
-            // both are one value): the point between, inside the outer.
-            let m = (0.5 * (*lo + *hi)).max(*olo).min(*ohi);
-            (*lo, *hi) = (m, m);
-        }
     }
 }
