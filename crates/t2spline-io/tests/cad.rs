@@ -187,7 +187,8 @@ fn unclamped_curves_are_kept_where_the_format_allows() {
         iges.contains("-1.0,-0.5,0.0,0.25,1.0,1.5,2.0,3.0,"),
         "{iges}"
     );
-    // DXF gets the same curve clamped to its domain [0, 1.5].
+    // DXF gets the same curve clamped to its domain [0, 1.5], whether the
+    // caller clamped it or not.
     assert!(CadFormat::Dxf.clamps());
     let dxf = render(CadFormat::Dxf, &g.clamped());
     assert!(
@@ -196,6 +197,7 @@ fn unclamped_curves_are_kept_where_the_format_allows() {
         ),
         "{dxf}"
     );
+    assert_eq!(render(CadFormat::Dxf, &g), dxf);
 }
 
 #[test]

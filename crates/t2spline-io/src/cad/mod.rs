@@ -124,7 +124,8 @@ impl fmt::Display for CadFormat {
     }
 }
 
-/// The text of a CAD file of `geometry`.
+/// The text of a CAD file of `geometry`; for a format that needs clamped
+/// curves ([`CadFormat::clamps`]), of the same curves clamped to their domains.
 ///
 /// # Errors
 /// [`Error::Invalid`] (naming `source`, the job) for curves of degree 0,
@@ -190,15 +191,20 @@ pub fn render_cad(
             ))],
         });
     }
-    debug_assert!(
-        !format.clamps()
-            || geometry
-                .curves
-                .iter()
-                .flat_map(|c| &c.pieces)
-                .all(|p| p.knots().is_clamped()),
-        "{format} needs clamped curves"
-    );
+    // A format that needs clamped curves gets them here, whatever the
+    // caller passed: the same curves, each clamped to its domain.
+    let unclamped = geometry
+        .curves
+        .iter()
+        .flat_map(|c| &c.pieces)
+        .any(|p| !p.knots().is_clamped());
+    let clamped;
+    let geometry = if format.clamps() && unclamped {
+        clamped = geometry.clamped();
+        &clamped
+    } else {
+        geometry
+    };
     Ok(match format {
         CadFormat::Dxf => dxf::render(geometry, meta),
         CadFormat::Step => step::render(geometry, meta),
