@@ -35,10 +35,10 @@
 use crate::error::Error;
 use crate::fuzzy::Alpha;
 use crate::measure::cut_box::CutBox;
+use crate::measure::extreme_nets::{finish, from_nets};
 use crate::measure::measures::{Level, PerMembership};
 use crate::measure::plan::Plan;
 use crate::measure::surface_area::heights;
-use crate::measure::surface_measures::{finish, from_nets};
 use crate::measure::volume::{VolumeForm, Volumes};
 use crate::pipeline::FuzzySurface;
 

@@ -38,6 +38,7 @@ mod curvature;
 mod cut_box;
 mod cut_fill;
 mod derivative;
+mod extreme_nets;
 mod length;
 mod measures;
 mod plan;

@@ -21,7 +21,8 @@ use crate::fuzzy::{Alpha, Membership};
 use crate::measure::bracket::Bracket;
 use crate::measure::cut_box::CutBox;
 use crate::measure::cut_fill::{cut_fill, same_plan};
-use crate::measure::measures::{nested, Level, PerMembership, MAX_MEASURE_LEVELS};
+use crate::measure::extreme_nets::{finish, from_nets};
+use crate::measure::measures::{Level, PerMembership, MAX_MEASURE_LEVELS};
 use crate::measure::plan::Plan;
 use crate::measure::surface_area::{heights, surface_area_bracket, AreaRule};
 use crate::measure::volume::{VolumeForm, Volumes, VOLUME_TOLERANCE};
@@ -91,30 +92,6 @@ pub struct SurfaceMeasures {
 
 /// The heights of the nets of every level and function.
 type Boxes = PerMembership<Vec<(f64, CutBox)>>;
-
-pub(super) fn finish(l: PerMembership<Vec<(f64, Option<Bracket>)>>) -> PerMembership<Vec<Level>> {
-    let l = nested(l);
-    PerMembership::from_fn(|m| {
-        l.get(m)
-            .iter()
-            .filter_map(|(a, b)| b.map(|b| Level::of(*a, b)))
-            .collect()
-    })
-}
-
-/// The bracket of a non-negative quantity from its values `[value, error]`
-/// at the extreme net where it is least and at the one where it is largest;
-/// exact where both errors are within the tolerance of the largest value or
-/// of `scale` (the plan area, times the greatest depth for a volume).
-pub(super) fn from_nets(least: [f64; 2], largest: [f64; 2], scale: f64) -> Bracket {
-    let scale = largest[0].abs().max(scale);
-    let exact = least[1].max(largest[1]) <= VOLUME_TOLERANCE * scale;
-    Bracket::from_ends(
-        [(least[0] - least[1]).max(0.0), least[0]],
-        [largest[0], largest[0] + largest[1]],
-        exact,
-    )
-}
 
 impl FuzzySurface<3> {
     /// The volumes between the surface and the plane `z = options.datum`,
