@@ -58,14 +58,9 @@ pub fn fuzzy_measures(model: &Model, closed: Option<bool>) -> Result<FuzzyMeasur
     impl ModelVisitor for Of {
         type Output = Result<FuzzyMeasures, Error>;
         fn curve<const D: usize>(self, c: &FuzzyCurve<D>) -> Self::Output {
-            let options = MeasureOptions {
-                levels: self.0,
-                at: Vec::new(),
-                order: 1,
-                length: true,
-                area: D == 2,
-                closed: self.1,
-            };
+            let options = MeasureOptions::new(self.0, Vec::new(), 1)?
+                .closed(self.1)
+                .quantities(true, D == 2);
             Ok(quantities(c, c.measure(&options)?))
         }
         fn surface<const D: usize>(self, _: &FuzzySurface<D>) -> Self::Output {

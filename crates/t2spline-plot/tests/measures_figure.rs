@@ -25,14 +25,9 @@ fn levels(job: &Job) -> Vec<Alpha> {
 }
 
 fn options(job: &Job) -> MeasureOptions {
-    MeasureOptions {
-        levels: levels(job),
-        at: Vec::new(),
-        order: 1,
-        length: true,
-        area: true,
-        closed: job.closed,
-    }
+    MeasureOptions::new(levels(job), Vec::new(), 1)
+        .unwrap()
+        .closed(job.closed)
 }
 
 fn line<'a>(p: &'a Panel, key: &str) -> &'a [[f64; 2]] {

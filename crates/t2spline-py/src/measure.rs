@@ -8,7 +8,9 @@
 
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use t2spline::measure::{MeasureOptions, SurfaceMeasureOptions, MAX_MEASURE_LEVELS};
+use t2spline::measure::{
+    uniform_levels, MeasureOptions, SurfaceMeasureOptions, DEFAULT_MEASURE_LEVELS,
+};
 use t2spline::Alpha;
 
 use crate::arrays::{floats, shape_text};
@@ -17,28 +19,21 @@ use crate::errors::{compute, internal_error};
 use crate::keyword;
 use crate::value::to_value;
 
-/// `levels`: a count (2 to [`MAX_MEASURE_LEVELS`], default 11) or the levels themselves.
+/// `levels`: a count (default [`DEFAULT_MEASURE_LEVELS`]) or the levels
+/// themselves; their number is checked by the options
+/// ([`MeasureOptions::new`]).
 fn levels(arg: Option<&Bound<'_, PyAny>>) -> PyResult<Vec<Alpha>> {
     let Some(arg) = arg.filter(|a| !a.is_none()) else {
-        return Ok(MeasureOptions::uniform(11)
-            .map_err(crate::errors::core_error)?
-            .levels);
+        return uniform_levels(DEFAULT_MEASURE_LEVELS).map_err(crate::errors::core_error);
     };
     if let Ok(n) = arg.extract::<i64>() {
-        let n = keyword::count(n, "levels", 2)?;
-        if n > MAX_MEASURE_LEVELS {
-            return Err(PyValueError::new_err(format!(
-                "levels: {n} is more than the limit of {MAX_MEASURE_LEVELS}"
-            )));
-        }
-        return Ok(MeasureOptions::uniform(n)
-            .map_err(crate::errors::core_error)?
-            .levels);
+        let n = keyword::count(n, "levels", 0)?;
+        return uniform_levels(n).map_err(crate::errors::core_error);
     }
     let given = floats(arg, "levels")?;
-    if given.shape.len() != 1 || given.data.is_empty() || given.data.len() > MAX_MEASURE_LEVELS {
+    if given.shape.len() != 1 {
         return Err(PyValueError::new_err(format!(
-            "levels: expected a count of at least 2 or a 1-D array of 1 to {MAX_MEASURE_LEVELS} levels, got shape {}",
+            "levels: expected a count or a 1-D array of levels, got shape {}",
             shape_text(&given.shape)
         )));
     }
@@ -69,17 +64,13 @@ pub(crate) fn curve_measure<'py>(
     order_arg: Option<&Bound<'py, PyAny>>,
     closed_arg: Option<&Bound<'py, PyAny>>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let mut options = MeasureOptions::uniform(2).map_err(crate::errors::core_error)?;
-    options.levels = levels(levels_arg)?;
-    options.closed = keyword::opt_bool(closed_arg, "closed")?;
-    options.at = params(at_arg)?;
-    if let Some(order) = order_arg.filter(|a| !a.is_none()) {
-        let k = keyword::int(order, "order")?;
-        options.order = usize::try_from(k)
-            .ok()
-            .filter(|k| (1..=64).contains(k))
-            .ok_or_else(|| PyValueError::new_err(format!("order: {k} is outside [1, 64]")))?;
-    }
+    let order = match order_arg.filter(|a| !a.is_none()) {
+        Some(order) => keyword::count(keyword::int(order, "order")?, "order", 0)?,
+        None => 1,
+    };
+    let options = MeasureOptions::new(levels(levels_arg)?, params(at_arg)?, order)
+        .map_err(crate::errors::core_error)?
+        .closed(keyword::opt_bool(closed_arg, "closed")?);
     let (measures, figure) = by_dim!(curve, |c| {
         let m = compute(py, || c.measure(&options))?;
         // The picture: the `measures` figure of `t2spline plot` of these
@@ -123,16 +114,9 @@ pub(crate) fn surface_measure<'py>(
 ) -> PyResult<Bound<'py, PyAny>> {
     let s = spatial(surface, "measure")?;
     let against = against.map(|a| spatial(a, "against")).transpose()?;
-    if !datum.is_finite() {
-        return Err(PyValueError::new_err(format!(
-            "datum: {datum} is not a finite number"
-        )));
-    }
-    let options = SurfaceMeasureOptions {
-        levels: levels(levels_arg)?,
-        datum,
-        area,
-    };
+    let options = SurfaceMeasureOptions::new(levels(levels_arg)?, datum)
+        .map_err(crate::errors::core_error)?
+        .with_area(area);
     let measures = compute(py, || match against {
         Some(other) => s.measure_against(other, &options),
         None => s.measure(&options),

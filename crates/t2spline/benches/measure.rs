@@ -94,11 +94,13 @@ fn measure(c: &mut Criterion) {
     // `measure --at` with 100 parameters at the job's one level: the
     // derivative, the tangent angle and the curvature's bracket (a branch
     // and bound over the box of the cut control points) per function.
-    let mut at = MeasureOptions::uniform(2).unwrap();
-    at.levels = vec![t2spline::Alpha::try_new(0.8).unwrap()];
-    at.at = (0..100).map(|k| f64::from(k) / 99.0).collect();
-    at.length = false;
-    at.area = false;
+    let at = MeasureOptions::new(
+        vec![t2spline::Alpha::try_new(0.8).unwrap()],
+        (0..100).map(|k| f64::from(k) / 99.0).collect(),
+        1,
+    )
+    .unwrap()
+    .quantities(false, false);
     g.bench_function("shipped example, 100 parameters (--at), one level", |b| {
         b.iter(|| black_box(&curve).measure(&at).unwrap())
     });
@@ -107,8 +109,7 @@ fn measure(c: &mut Criterion) {
         b.iter(|| black_box(&twenty).measure(&options).unwrap())
     });
     let terrain = terrain_30();
-    let mut volumes = SurfaceMeasureOptions::uniform(11).unwrap();
-    volumes.area = false;
+    let volumes = SurfaceMeasureOptions::uniform(11).unwrap().with_area(false);
     g.bench_function(
         "30 x 30 bicubic terrain, 11 levels, volumes and plan area",
         |b| b.iter(|| black_box(&terrain).measure(&volumes).unwrap()),

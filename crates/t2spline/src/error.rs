@@ -75,6 +75,14 @@ pub enum Setting {
     Points,
     /// The threads of a benchmark.
     Threads,
+    /// The levels of a measurement.
+    Levels,
+    /// The parameters of a measurement.
+    At,
+    /// The order of a measurement's derivative.
+    Order,
+    /// The height of the plane a surface's volumes are measured from.
+    Datum,
 }
 
 impl Setting {
@@ -87,6 +95,10 @@ impl Setting {
             Setting::Derivatives => "derivatives",
             Setting::Points => "points",
             Setting::Threads => "threads",
+            Setting::Levels => "levels",
+            Setting::At => "at",
+            Setting::Order => "order",
+            Setting::Datum => "datum",
         }
     }
 }
@@ -1125,11 +1137,10 @@ pub enum Error {
     ///
     /// ```
     /// # use t2spline::{Error, FuzzyCurve, Nt2Number, Nt2Point};
-    /// # use t2spline::measure::MeasureOptions;
+    /// # use t2spline::measure::{uniform_levels, MeasureOptions};
     /// let n = |c: f64| Nt2Number::try_new(c, [c - 1.0, c + 1.0], [c, c], [c, c], 1.0);
     /// let line = FuzzyCurve::try_new(1, vec![Nt2Point::new([n(0.0)?, n(0.0)?]), Nt2Point::new([n(1.0)?, n(1.0)?])], vec![1.0, 1.0], None)?;
-    /// let mut options = MeasureOptions::uniform(2)?;
-    /// options.at = vec![0.5, 1.5];
+    /// let options = MeasureOptions::new(uniform_levels(2)?, vec![0.5, 1.5], 1)?;
     /// let e = line.measure(&options).unwrap_err();
     /// assert_eq!(e.to_string(), "at[1] = 1.5 is outside the domain [0, 1]");
     /// # Ok::<(), Error>(())

@@ -163,8 +163,8 @@ fn closed_is_asked_or_declined() {
         None,
     )
     .expect("a curve");
-    let mut o = MeasureOptions::uniform(2).expect("levels");
-    o.closed = Some(true);
+    let o = MeasureOptions::uniform(2).expect("levels");
+    let o = o.closed(Some(true));
     let e = line.measure(&o).expect_err("open");
     assert!(matches!(e, Error::NotClosed { .. }), "{e}");
     assert_eq!(
@@ -173,10 +173,10 @@ fn closed_is_asked_or_declined() {
     );
     // A closed curve measured as open: the area under it.
     let circle = periodic_circle(8, 3, 0.2, false);
-    o.closed = Some(false);
+    let o = o.closed(Some(false));
     let m = circle.measure(&o).expect("measured");
     assert_eq!(m.area.expect("plane").kind, AreaKind::Under);
-    o.closed = None;
+    let o = o.closed(None);
     let m = circle.measure(&o).expect("measured");
     let area = m.area.expect("plane");
     assert_eq!(area.kind, AreaKind::Enclosed);

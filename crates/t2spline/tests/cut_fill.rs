@@ -26,11 +26,13 @@ fn crisp(x: f64) -> Nt2Number {
 }
 
 fn options(levels: &[f64]) -> SurfaceMeasureOptions {
-    SurfaceMeasureOptions {
-        levels: levels.iter().map(|&a| alpha(a)).collect(),
-        datum: 0.0,
-        area: false,
-    }
+    datum_options(levels, 0.0)
+}
+
+fn datum_options(levels: &[f64], datum: f64) -> SurfaceMeasureOptions {
+    SurfaceMeasureOptions::new(levels.iter().map(|&a| alpha(a)).collect(), datum)
+        .unwrap()
+        .with_area(false)
 }
 
 fn close(a: f64, b: f64, tolerance: f64) -> bool {
@@ -353,8 +355,7 @@ proptest! {
         (one, two) in pair(), datum in -5.0..5.0f64,
     ) {
         let levels = [0.0, 0.3, 0.6, 1.0];
-        let mut o = options(&levels);
-        o.datum = datum;
+        let o = datum_options(&levels, datum);
         let m = one.measure_against(&two, &o).expect("one plan");
         let other = two.measure(&o).expect("measured");
         let tolerance = 1e-8 * m.plan_area[0] * (depth(&one, &two) + datum.abs());

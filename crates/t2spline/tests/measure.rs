@@ -311,8 +311,12 @@ fn a_curve_that_can_stand_still_has_lengths_from_zero() {
 #[test]
 fn quantities_nest_over_levels_and_functions() {
     let c = example();
-    let mut options = MeasureOptions::uniform(11).unwrap();
-    options.at = vec![0.0, 0.3, 0.75, 1.0];
+    let options = MeasureOptions::new(
+        t2spline::measure::uniform_levels(11).unwrap(),
+        vec![0.0, 0.3, 0.75, 1.0],
+        1,
+    )
+    .unwrap();
     let m = c.measure(&options).unwrap();
     assert_eq!(m.length.upper.len(), 11);
     // The lower function up to its height 0.6: levels 0 … 0.6.
@@ -560,12 +564,12 @@ fn levels_are_answered_whatever_their_order() {
     // at each alpha what the increasing order gives.
     let c = example();
     let at = |levels: &[f64]| {
-        let mut options = MeasureOptions::uniform(2).unwrap();
-        options.levels = levels
+        let levels = levels
             .iter()
             .map(|&a| t2spline::Alpha::try_new(a).unwrap())
             .collect();
-        c.measure(&options).unwrap()
+        c.measure(&MeasureOptions::new(levels, Vec::new(), 1).unwrap())
+            .unwrap()
     };
     for levels in [
         vec![0.9, 0.1],

@@ -241,11 +241,11 @@ fn fuzzy_curve_operations<const D: usize>(
     }
     // The quantities measured on the curve, at arbitrary parameters, orders
     // and levels.
-    let mut options = t2spline::measure::MeasureOptions::uniform(3).unwrap();
-    options.at = t.to_vec();
-    options.order = n;
-    options.levels.push(alpha);
-    returns("FuzzyCurve::measure", || curve.measure(&options)).ok();
+    let mut levels = t2spline::measure::uniform_levels(3).unwrap();
+    levels.push(alpha);
+    if let Ok(options) = t2spline::measure::MeasureOptions::new(levels, t.to_vec(), n) {
+        returns("FuzzyCurve::measure", || curve.measure(&options)).ok();
+    }
     for m in t2spline::set::MEMBERSHIPS {
         returns("FuzzyCurve::length_bracket", || {
             curve.length_bracket(m, alpha)

@@ -48,11 +48,7 @@ fn tilted_plane(fuzzy: bool) -> FuzzySurface<3> {
 }
 
 fn options(levels: &[f64], datum: f64) -> SurfaceMeasureOptions {
-    SurfaceMeasureOptions {
-        levels: levels.iter().map(|&a| alpha(a)).collect(),
-        datum,
-        area: true,
-    }
+    SurfaceMeasureOptions::new(levels.iter().map(|&a| alpha(a)).collect(), datum).unwrap()
 }
 
 fn close(a: f64, b: f64, tolerance: f64) -> bool {
@@ -251,8 +247,7 @@ proptest! {
         let levels = [0.0, 0.5, 1.0];
         // The surface area (most of a debug build's time) under
         // T2SPLINE_LONG_TESTS=1 only, which CI sets.
-        let mut o = options(&levels, datum);
-        o.area = test_size(0, 1) == 1;
+        let o = options(&levels, datum).with_area(test_size(0, 1) == 1);
         let m = s.measure(&o).expect("a terrain is a graph");
         let plan = m.plan_area[0];
         let scale = plan * (s.bounding_box().max[2] - s.bounding_box().min[2]).max(1e-9);
@@ -307,8 +302,7 @@ proptest! {
         let datum = b.min[2] + datum_at * (b.max[2] - b.min[2]);
         let levels = [0.0, 0.25, 0.5, 0.75, 1.0];
         // The surface area (the slow part) under T2SPLINE_LONG_TESTS=1 only.
-        let mut o = options(&levels, datum);
-        o.area = test_size(0, 1) == 1;
+        let o = options(&levels, datum).with_area(test_size(0, 1) == 1);
         let m = s.measure(&o).expect("measured");
         let mut lists = vec![&m.volume_below, &m.volume_above, &m.plan_area_below];
         lists.extend(m.area.as_ref());

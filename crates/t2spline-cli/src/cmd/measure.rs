@@ -8,12 +8,12 @@
 
 use t2spline::job::Model;
 use t2spline::measure::{
-    MeasureOptions, Measures, SurfaceMeasureOptions, MAX_MEASURE_LEVELS, MAX_MEASURE_PARAMETERS,
+    MeasureOptions, Measures, SurfaceMeasureOptions, DEFAULT_MEASURE_LEVELS, MAX_MEASURE_LEVELS,
 };
-use t2spline::{Error, FuzzyCurve, FuzzySurface};
+use t2spline::{Alpha, Error, FuzzyCurve, FuzzySurface};
 
 use super::levels::Levels;
-use super::prepare::OptionError;
+use super::prepare::{about_option, OptionError};
 use crate::clash::Claims;
 use crate::cli::MeasureArgs;
 use crate::output::{is_stdio, read_job, shown, unsuited, Outputs};
@@ -31,17 +31,18 @@ pub fn measure(args: &MeasureArgs) -> anyhow::Result<()> {
             ));
         }
     }
-    let (levels, mut options) = options(args)?;
+    let (levels, at) = options(args)?;
     let job = read_job(&args.job)?;
-    options.levels = levels.resolve(&job)?;
-    options.closed = job.closed;
+    let levels = levels.resolve(&job)?;
+    let curve = |area: bool| {
+        MeasureOptions::new(levels.clone(), at.clone(), order(args))
+            .map(|o| o.closed(job.closed).quantities(true, area))
+            .map_err(about_option)
+    };
     let mut bytes = Vec::new();
     match &job.model {
-        Model::Planar(c) => write(&mut bytes, &run(c, &mut options, args)?)?,
-        Model::Spatial(c) => {
-            options.area = false;
-            write(&mut bytes, &run(c, &mut options, args)?)?
-        }
+        Model::Planar(c) => write(&mut bytes, &run(c, &curve(true)?, args)?)?,
+        Model::Spatial(c) => write(&mut bytes, &run(c, &curve(false)?, args)?)?,
         Model::Surface(s) => {
             if args.at.is_some() {
                 return Err(invalid(
@@ -49,11 +50,9 @@ pub fn measure(args: &MeasureArgs) -> anyhow::Result<()> {
                     "parameters are measured on curves; this job is a surface",
                 ));
             }
-            let surface = SurfaceMeasureOptions {
-                levels: options.levels.clone(),
-                datum: args.datum.unwrap_or(0.0),
-                area: !args.no_area,
-            };
+            let surface = SurfaceMeasureOptions::new(levels, args.datum.unwrap_or(0.0))
+                .map_err(about_option)?
+                .with_area(!args.no_area);
             let against = match &args.against {
                 Some(path) => Some((path, surface_job(path)?)),
                 None => None,
@@ -63,7 +62,6 @@ pub fn measure(args: &MeasureArgs) -> anyhow::Result<()> {
                 None => s.measure(&surface),
             };
             let measures = measured.map_err(|e| match e {
-                Error::NotFinite { .. } => invalid("--datum", &e.to_string()),
                 Error::PlansDiffer { what } => {
                     let path = against.as_ref().map_or(args.job.as_path(), |a| a.0);
                     anyhow::anyhow!(
@@ -105,7 +103,7 @@ fn write(bytes: &mut Vec<u8>, measures: &Measures) -> anyhow::Result<()> {
 /// The measurement, with a parameter outside the domain named as `--at`.
 fn run<const D: usize>(
     curve: &FuzzyCurve<D>,
-    options: &mut MeasureOptions,
+    options: &MeasureOptions,
     args: &MeasureArgs,
 ) -> anyhow::Result<Measures> {
     if args.datum.is_some() || args.no_area || args.against.is_some() {
@@ -123,10 +121,6 @@ fn run<const D: usize>(
     }
     curve.measure(options).map_err(|e| match e {
         Error::MeasureAt { .. } => invalid("--at", &e.to_string()),
-        Error::OutOfRange {
-            what: "parameters × levels",
-            ..
-        } => invalid("--at", &e.to_string()),
         other => other.into(),
     })
 }
@@ -139,37 +133,34 @@ fn invalid(option: &'static str, message: &str) -> anyhow::Error {
     .into()
 }
 
-/// The options from the flags, each checked and named (the levels resolved
-/// once the job is read).
-fn options(args: &MeasureArgs) -> anyhow::Result<(Levels, MeasureOptions)> {
-    let max = u64::try_from(MAX_MEASURE_LEVELS).unwrap_or(u64::MAX);
-    let levels = Levels::from_arg(&args.levels, Some(11), max)?;
-    let mut options = MeasureOptions::uniform(2)?;
-    if !(1..=64).contains(&args.order) {
-        return Err(invalid(
-            "--order",
-            &format!("{} is outside 1 ..= 64", args.order),
-        ));
-    }
-    options.order = args.order as usize;
-    if let Some(text) = &args.at {
-        options.at = parse_at(text)?;
-    }
-    Ok((levels, options))
+/// The levels and parameters from the flags, each checked and named before
+/// the job is read (the levels resolved once it is): the parameters and the
+/// order by the core's rules of [`MeasureOptions`] at one level, and again
+/// at the levels of the job.
+fn options(args: &MeasureArgs) -> anyhow::Result<(Levels, Vec<f64>)> {
+    let count = |n: usize| u64::try_from(n).unwrap_or(u64::MAX);
+    let levels = Levels::from_arg(
+        &args.levels,
+        Some(count(DEFAULT_MEASURE_LEVELS)),
+        count(MAX_MEASURE_LEVELS),
+    )?;
+    let at = match &args.at {
+        Some(text) => parse_at(text)?,
+        None => Vec::new(),
+    };
+    MeasureOptions::new(vec![Alpha::ONE], at.clone(), order(args)).map_err(about_option)?;
+    Ok((levels, at))
+}
+
+/// `--order` (a count the core checks; one beyond `usize` is beyond its
+/// limit too).
+fn order(args: &MeasureArgs) -> usize {
+    usize::try_from(args.order).unwrap_or(usize::MAX)
 }
 
 /// `T1,T2,…` as finite numbers, each error naming the item.
 fn parse_at(text: &str) -> anyhow::Result<Vec<f64>> {
     let parts: Vec<&str> = text.split(',').map(str::trim).collect();
-    if parts.len() > MAX_MEASURE_PARAMETERS {
-        return Err(invalid(
-            "--at",
-            &format!(
-                "{} parameters are more than the limit of {MAX_MEASURE_PARAMETERS}",
-                parts.len()
-            ),
-        ));
-    }
     parts
         .iter()
         .enumerate()

@@ -28,6 +28,10 @@ pub fn option_name(setting: Setting) -> &'static str {
         Setting::Derivatives => "--derivatives",
         Setting::Points => "--points",
         Setting::Threads => "--threads",
+        Setting::Levels => "--levels",
+        Setting::At => "--at",
+        Setting::Order => "--order",
+        Setting::Datum => "--datum",
     }
 }
 

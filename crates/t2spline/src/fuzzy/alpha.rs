@@ -10,6 +10,9 @@ pub struct Alpha(f64);
 impl Alpha {
     /// The level 0: the cut keeps every number whole (its whole footprint).
     pub const ZERO: Alpha = Alpha(0.0);
+    /// The level 1: the cut of a normal number's upper membership function
+    /// is its crisp value.
+    pub const ONE: Alpha = Alpha(1.0);
 
     /// Validates a level.
     ///

@@ -10,20 +10,11 @@ use crate::measure::curvature::curvature_bracket;
 use crate::measure::cut_box::CutBox;
 use crate::measure::derivative::{angle_range, derivative_box};
 use crate::measure::length::length_bracket;
+use crate::measure::options::MeasureOptions;
 use crate::measure::rule::{rules, Rules};
 use crate::nurbs::curve::rational_basis_span;
 use crate::nurbs::derivatives::check_order;
 use crate::pipeline::FuzzyCurve;
-
-/// Levels at most in one measurement: each level costs a length and an
-/// area bracket per function, about 0.14 s on a 20-point cubic (release, one
-/// core), so 51 levels take seconds (docs/performance.md, docs/jobs.md).
-pub const MAX_MEASURE_LEVELS: usize = 51;
-/// Parameters at most in one measurement, counted once per level
-/// (parameters × levels): each costs a curvature bracket per function, up
-/// to about 2 ms where its search ends at its budget, so the limit takes
-/// seconds.
-pub const MAX_MEASURE_PARAMETERS: usize = 1_000;
 
 /// One value per membership function.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -190,55 +181,6 @@ pub struct Measures {
     pub area: Option<AreaMeasure>,
     /// The quantities at each parameter asked for.
     pub at: Vec<AtMeasure>,
-}
-
-/// What to measure.
-#[derive(Clone, Debug, PartialEq)]
-pub struct MeasureOptions {
-    /// The levels (1 to [`MAX_MEASURE_LEVELS`]).
-    pub levels: Vec<Alpha>,
-    /// The parameters for derivatives, tangent and curvature.
-    pub at: Vec<f64>,
-    /// The order of the derivative at each parameter (1 to 64).
-    pub order: usize,
-    /// Whether to measure the arc length.
-    pub length: bool,
-    /// Whether to measure the area (plane curves).
-    pub area: bool,
-    /// Whether the curve is closed (its area enclosed): `Some(true)` asks
-    /// that it close ([`Error::NotClosed`] otherwise), `Some(false)` measures
-    /// the area under it even if it closes, `None` closes a curve whose
-    /// crisp layer closes ([`FuzzyCurve::closure`]).
-    pub closed: Option<bool>,
-}
-
-impl MeasureOptions {
-    /// `count` levels from 0 to 1, no parameters, the first derivative,
-    /// length and area.
-    ///
-    /// # Errors
-    /// [`Error::OutOfRange`] unless `2 ≤ count ≤` [`MAX_MEASURE_LEVELS`].
-    pub fn uniform(count: usize) -> Result<Self, Error> {
-        if !(2..=MAX_MEASURE_LEVELS).contains(&count) {
-            return Err(Error::OutOfRange {
-                place: crate::error::Place::NONE,
-                what: "levels",
-                value: count as f64,
-                range: "[2, 51]",
-            });
-        }
-        let levels = (0..count)
-            .map(|k| Alpha::try_new(k as f64 / (count - 1) as f64))
-            .collect::<Result<_, _>>()?;
-        Ok(MeasureOptions {
-            levels,
-            at: Vec::new(),
-            order: 1,
-            length: true,
-            area: true,
-            closed: None,
-        })
-    }
 }
 
 /// The closing of a plane curve's enclosed area, or `None` for the area
@@ -472,16 +414,14 @@ impl<const D: usize> FuzzyCurve<D> {
     }
 
     /// Every quantity of docs/method.md §11: the arc length (and a plane
-    /// curve's area) at each level, the derivative of order `options.order`,
+    /// curve's area) at each level, the derivative of order `options.order()`,
     /// the tangent angle (plane curves) and the curvature at each parameter
-    /// of `options.at`; each an interval over the box of cut control points
+    /// of `options.at()`; each an interval over the box of cut control points
     /// under each membership function.
     ///
     /// # Errors
-    /// [`Error::OutOfRange`] for no levels or more than
-    /// [`MAX_MEASURE_LEVELS`], more than [`MAX_MEASURE_PARAMETERS`]
-    /// parameters × levels, or an order above 64 or 0; [`Error::MeasureAt`] for a
-    /// parameter outside the domain.
+    /// [`Error::MeasureAt`] for a parameter outside the domain (the
+    /// options checked their other rules when made).
     ///
     /// # Examples
     /// A straight segment from 0 to 4 whose end points may each move 1 along
@@ -499,8 +439,8 @@ impl<const D: usize> FuzzyCurve<D> {
     /// ```
     pub fn measure(&self, options: &MeasureOptions) -> Result<Measures, Error> {
         self.check_measure(options)?;
-        let prepared = Prepared::of(self, options.area, options.closed)?;
-        let boxes = self.cut_boxes(&options.levels);
+        let prepared = Prepared::of(self, options.area(), options.closing())?;
+        let boxes = self.cut_boxes(options.levels());
         let finish = |l: PerMembership<Vec<(f64, Option<Bracket>)>>| {
             PerMembership::from_fn(|m| {
                 l.get(m)
@@ -509,7 +449,7 @@ impl<const D: usize> FuzzyCurve<D> {
                     .collect::<Vec<_>>()
             })
         };
-        let length = if options.length {
+        let length = if options.length() {
             finish(leveled(&boxes, |cut| {
                 Some(length_bracket(&prepared.rules, cut, &|x| {
                     self.adaptive_length(x)
@@ -529,47 +469,22 @@ impl<const D: usize> FuzzyCurve<D> {
             }
         });
         let at = options
-            .at
+            .at()
             .iter()
-            .map(|&t| self.measure_at(t, options.order, &boxes))
+            .map(|&t| self.measure_at(t, options.order(), &boxes))
             .collect();
         Ok(Measures {
-            levels: options.levels.iter().map(|a| a.get()).collect(),
+            levels: options.levels().iter().map(|a| a.get()).collect(),
             length,
             area,
             at,
         })
     }
 
+    /// The parameters inside the domain (the options checked the rest).
     fn check_measure(&self, options: &MeasureOptions) -> Result<(), Error> {
-        let none = crate::error::Place::NONE;
-        if options.levels.is_empty() || options.levels.len() > MAX_MEASURE_LEVELS {
-            return Err(Error::OutOfRange {
-                place: none,
-                what: "levels",
-                value: options.levels.len() as f64,
-                range: "[1, 51]",
-            });
-        }
-        if options.at.len() * options.levels.len() > MAX_MEASURE_PARAMETERS {
-            return Err(Error::OutOfRange {
-                place: none,
-                what: "parameters × levels",
-                value: (options.at.len() * options.levels.len()) as f64,
-                range: "[0, 1000]",
-            });
-        }
-        if options.order == 0 {
-            return Err(Error::OutOfRange {
-                place: none,
-                what: "derivative order",
-                value: 0.0,
-                range: "[1, 64]",
-            });
-        }
-        check_order(options.order)?;
         let domain = self.domain();
-        for (index, &t) in options.at.iter().enumerate() {
+        for (index, &t) in options.at().iter().enumerate() {
             if !domain.contains(t) {
                 return Err(Error::MeasureAt {
                     index,

@@ -41,6 +41,7 @@ mod derivative;
 mod extreme_nets;
 mod length;
 mod measures;
+mod options;
 mod plan;
 mod roots;
 mod rule;
@@ -55,9 +56,12 @@ pub(crate) use closure::extent;
 pub use closure::{Closure, CLOSURE_TOLERANCE};
 pub use length::{LENGTH_MIN_TOLERANCE, MAX_ENUMERATED_LENGTH_VARIABLES};
 pub use measures::{
-    AreaMeasure, AtMeasure, DerivativeLevel, Level, MeasureOptions, Measures, PartialLevel,
-    PerMembership, MAX_MEASURE_LEVELS, MAX_MEASURE_PARAMETERS,
+    AreaMeasure, AtMeasure, DerivativeLevel, Level, Measures, PartialLevel, PerMembership,
+};
+pub use options::{
+    uniform_levels, MeasureOptions, SurfaceMeasureOptions, DEFAULT_MEASURE_LEVELS, MAX_MEASURE_LEVELS,
+    MAX_MEASURE_PARAMETERS,
 };
 pub use surface_area::{MAX_ENUMERATED_SURFACE_AREA_VARIABLES, SURFACE_AREA_TOLERANCE};
-pub use surface_measures::{SurfaceMeasureOptions, SurfaceMeasures};
+pub use surface_measures::SurfaceMeasures;
 pub use volume::VOLUME_TOLERANCE;

@@ -16,44 +16,18 @@
 //! The surface area is convex in the heights (`surface_area.rs`). Against a
 //! second surface of the same plan map, the cut and fill (`cut_fill.rs`).
 
-use crate::error::{Error, Place};
-use crate::fuzzy::{Alpha, Membership};
+use crate::error::Error;
+use crate::fuzzy::Membership;
 use crate::measure::bracket::Bracket;
 use crate::measure::cut_box::CutBox;
 use crate::measure::cut_fill::{cut_fill, same_plan};
 use crate::measure::extreme_nets::{finish, from_nets};
-use crate::measure::measures::{Level, PerMembership, MAX_MEASURE_LEVELS};
+use crate::measure::measures::{Level, PerMembership};
+use crate::measure::options::SurfaceMeasureOptions;
 use crate::measure::plan::Plan;
 use crate::measure::surface_area::{heights, surface_area_bracket, AreaRule};
 use crate::measure::volume::{VolumeForm, Volumes, VOLUME_TOLERANCE};
 use crate::pipeline::FuzzySurface;
-
-/// What to measure on a surface.
-#[derive(Clone, Debug, PartialEq)]
-pub struct SurfaceMeasureOptions {
-    /// The levels (1 to [`MAX_MEASURE_LEVELS`]).
-    pub levels: Vec<Alpha>,
-    /// The height `z₀` of the plane the volumes are measured from.
-    pub datum: f64,
-    /// Whether to measure the surface area (a convex minimisation and a
-    /// vertex search per level and function; the volumes cost far less).
-    pub area: bool,
-}
-
-impl SurfaceMeasureOptions {
-    /// `count` levels from 0 to 1, datum 0, with the surface area.
-    ///
-    /// # Errors
-    /// [`Error::OutOfRange`] unless `2 ≤ count ≤` [`MAX_MEASURE_LEVELS`].
-    pub fn uniform(count: usize) -> Result<Self, Error> {
-        let levels = crate::measure::MeasureOptions::uniform(count)?.levels;
-        Ok(SurfaceMeasureOptions {
-            levels,
-            datum: 0.0,
-            area: true,
-        })
-    }
-}
 
 /// Every quantity of docs/method.md §14 at many levels. A membership
 /// function's lists hold only the levels where it has a cut.
@@ -94,15 +68,13 @@ pub struct SurfaceMeasures {
 type Boxes = PerMembership<Vec<(f64, CutBox)>>;
 
 impl FuzzySurface<3> {
-    /// The volumes between the surface and the plane `z = options.datum`,
-    /// the plan area below it and (with `options.area`) the surface area,
+    /// The volumes between the surface and the plane `z = options.datum()`,
+    /// the plan area below it and (with `options.area()`) the surface area,
     /// each an interval over the nets whose heights lie in their cuts, at
     /// each level and under each membership function (docs/method.md §14).
     ///
     /// # Errors
-    /// [`Error::OutOfRange`] for no levels or more than
-    /// [`MAX_MEASURE_LEVELS`]; [`Error::NotFinite`] for a datum that is not
-    /// finite; [`Error::FuzzyPlan`] where x or y of a control point is fuzzy;
+    /// [`Error::FuzzyPlan`] where x or y of a control point is fuzzy;
     /// [`Error::NotAGraph`] where the surface folds over its plan or has a
     /// vertical part.
     ///
@@ -177,21 +149,6 @@ impl FuzzySurface<3> {
         other: Option<&FuzzySurface<3>>,
         options: &SurfaceMeasureOptions,
     ) -> Result<SurfaceMeasures, Error> {
-        if options.levels.is_empty() || options.levels.len() > MAX_MEASURE_LEVELS {
-            return Err(Error::OutOfRange {
-                place: Place::NONE,
-                what: "levels",
-                value: options.levels.len() as f64,
-                range: "[1, 51]",
-            });
-        }
-        if !options.datum.is_finite() {
-            return Err(Error::NotFinite {
-                place: Place::NONE,
-                what: "datum",
-                value: options.datum,
-            });
-        }
         let plan = Plan::of(self)?;
         plan.check_graph()?;
         if let Some(other) = other {
@@ -202,20 +159,20 @@ impl FuzzySurface<3> {
             .iter()
             .map(|p| p.coords()[2].crisp())
             .collect();
-        let area_rule = options.area.then(|| AreaRule::new(&plan, &crisp));
+        let area_rule = options.area().then(|| AreaRule::new(&plan, &crisp));
         let form = VolumeForm::new(plan);
         let [cut, fill] = match other {
-            Some(other) => cut_fill(&form, self, other, &options.levels).map(Some),
+            Some(other) => cut_fill(&form, self, other, options.levels()).map(Some),
             None => [None, None],
         };
         let boxes: Boxes = PerMembership::from_fn(|m| {
             options
-                .levels
+                .levels()
                 .iter()
                 .filter_map(|&a| CutBox::of(self.points(), m, a).map(|b| (a.get(), b)))
                 .collect()
         });
-        let datum = options.datum;
+        let datum = options.datum();
         let plan_area = form.area[0];
         let nets: PerMembership<Vec<(f64, [Volumes; 2], f64)>> = PerMembership::from_fn(|m| {
             boxes
@@ -253,7 +210,7 @@ impl FuzzySurface<3> {
             }))
         });
         Ok(SurfaceMeasures {
-            levels: options.levels.iter().map(|a| a.get()).collect(),
+            levels: options.levels().iter().map(|a| a.get()).collect(),
             datum,
             tolerance: VOLUME_TOLERANCE,
             plan_area: form.area,
