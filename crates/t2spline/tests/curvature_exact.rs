@@ -103,12 +103,17 @@ fn exact_curvature(points: &[[f64; 2]], weights: &[f64], t: f64) -> (f64, f64) {
     let b2 = &b[0] * &b[0] + &b[1] * &b[1];
     // κ = (|wedge| / ‖C'‖²) / ‖C'‖, each factor rounded once (no
     // underflow of κ² for κ down to 1e-200).
-    let ratio = (num_traits::Signed::abs(&wedge) / &a2).to_f64().expect("finite");
+    let ratio = (num_traits::Signed::abs(&wedge) / &a2)
+        .to_f64()
+        .expect("finite");
     let kappa = ratio / a2.to_f64().expect("finite").sqrt();
     let condition = if wedge.is_zero() {
         f64::INFINITY
     } else {
-        ((a2 * b2) / (&wedge * &wedge)).to_f64().expect("finite").sqrt()
+        ((a2 * b2) / (&wedge * &wedge))
+            .to_f64()
+            .expect("finite")
+            .sqrt()
     };
     (kappa, condition)
 }

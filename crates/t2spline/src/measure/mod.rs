@@ -59,8 +59,8 @@ pub use measures::{
     AreaMeasure, AtMeasure, DerivativeLevel, Level, Measures, PartialLevel, PerMembership,
 };
 pub use options::{
-    uniform_levels, MeasureOptions, SurfaceMeasureOptions, DEFAULT_MEASURE_LEVELS, MAX_MEASURE_LEVELS,
-    MAX_MEASURE_PARAMETERS,
+    uniform_levels, MeasureOptions, SurfaceMeasureOptions, DEFAULT_MEASURE_LEVELS,
+    MAX_MEASURE_LEVELS, MAX_MEASURE_PARAMETERS,
 };
 pub use surface_area::{MAX_ENUMERATED_SURFACE_AREA_VARIABLES, SURFACE_AREA_TOLERANCE};
 pub use surface_measures::SurfaceMeasures;

@@ -264,20 +264,35 @@ mod tests {
         let (s, m) = setting(MeasureOptions::uniform(52).unwrap_err());
         assert_eq!((s, m.as_str()), (Setting::Levels, "52 is outside 2 ..= 51"));
         let (s, m) = setting(MeasureOptions::new(Vec::new(), vec![], 1).unwrap_err());
-        assert_eq!((s, m.as_str()), (Setting::Levels, "0 levels are outside 1 ..= 51"));
+        assert_eq!(
+            (s, m.as_str()),
+            (Setting::Levels, "0 levels are outside 1 ..= 51")
+        );
         let (s, m) = setting(MeasureOptions::new(one.clone(), vec![0.5, f64::NAN], 1).unwrap_err());
-        assert_eq!((s, m.as_str()), (Setting::At, "item 2 (NaN) is not a finite number"));
+        assert_eq!(
+            (s, m.as_str()),
+            (Setting::At, "item 2 (NaN) is not a finite number")
+        );
         let (s, m) = setting(MeasureOptions::new(one.clone(), vec![0.5; 1001], 1).unwrap_err());
         assert_eq!(
             (s, m.as_str()),
-            (Setting::At, "parameters × levels = 1001 is outside [0, 1000]")
+            (
+                Setting::At,
+                "parameters × levels = 1001 is outside [0, 1000]"
+            )
         );
         for order in [0, 65] {
             let (s, m) = setting(MeasureOptions::new(one.clone(), vec![], order).unwrap_err());
-            assert_eq!((s, m), (Setting::Order, format!("{order} is outside 1 ..= 64")));
+            assert_eq!(
+                (s, m),
+                (Setting::Order, format!("{order} is outside 1 ..= 64"))
+            );
         }
         let (s, m) = setting(SurfaceMeasureOptions::new(one, f64::INFINITY).unwrap_err());
-        assert_eq!((s, m.as_str()), (Setting::Datum, "inf is not a finite number"));
+        assert_eq!(
+            (s, m.as_str()),
+            (Setting::Datum, "inf is not a finite number")
+        );
     }
 
     #[test]
@@ -288,6 +303,9 @@ mod tests {
         let o = MeasureOptions::new(vec![Alpha::ONE], vec![0.0; 1000], 64).unwrap();
         assert_eq!((o.at().len(), o.order(), o.closing()), (1000, 64, None));
         let o = o.closed(Some(true)).quantities(false, true);
-        assert_eq!((o.closing(), o.length(), o.area()), (Some(true), false, true));
+        assert_eq!(
+            (o.closing(), o.length(), o.area()),
+            (Some(true), false, true)
+        );
     }
 }
