@@ -20,7 +20,7 @@
 
 use std::path::PathBuf;
 
-use t2spline_io::Error;
+use t2spline_io::{Error, Status};
 
 /// A command-line option whose value breaks a rule: `--alpha: …`. Exit code 2.
 #[derive(Debug)]
@@ -64,10 +64,19 @@ impl Exit {
             return failed.exit;
         }
         match e.chain().find_map(|c| c.downcast_ref::<Error>()) {
-            Some(Error::Read { .. }) => Exit::Read,
-            Some(Error::Write { .. }) => Exit::Write,
-            Some(Error::NotFinite { .. }) => Exit::Internal,
-            _ => Exit::Invalid,
+            Some(e) => Exit::of_status(Status::of_error(e)),
+            None => Exit::Invalid,
+        }
+    }
+
+    /// The exit of a job's [`Status`].
+    pub fn of_status(status: Status) -> Exit {
+        match status {
+            Status::Ok => Exit::Ok,
+            Status::Invalid => Exit::Invalid,
+            Status::Unreadable => Exit::Read,
+            Status::Unwritable => Exit::Write,
+            Status::Internal => Exit::Internal,
         }
     }
 
@@ -97,15 +106,16 @@ impl Exit {
         }
     }
 
-    /// The word for a job's status in a summary.
+    /// The word for a job's status in a summary ([`Status::word`]).
     pub fn status(self) -> &'static str {
-        match self {
-            Exit::Ok => "ok",
-            Exit::Internal => "internal",
-            Exit::Invalid => "invalid",
-            Exit::Read => "unreadable",
-            Exit::Write => "unwritable",
-        }
+        let status = match self {
+            Exit::Ok => Status::Ok,
+            Exit::Internal => Status::Internal,
+            Exit::Invalid => Status::Invalid,
+            Exit::Read => Status::Unreadable,
+            Exit::Write => Status::Unwritable,
+        };
+        status.word()
     }
 }
 

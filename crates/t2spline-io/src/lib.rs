@@ -91,6 +91,7 @@ mod printable;
 mod read;
 mod readings;
 pub mod set;
+mod status;
 mod summary;
 mod table;
 mod target;
@@ -115,6 +116,7 @@ pub use readings::{
     NetReadings, Raster, RasterGeometry, ReadingsError, ReadingsFile, ReadingsOption,
     ReadingsOptions, StationSource, DEFAULT_DEGREE, MAX_NPY_BYTES, MAX_RASTER_CELLS, MAX_ROWS,
 };
+pub use status::Status;
 pub use summary::{write_summary_csv, JobSummary, SUMMARY_COLUMNS};
 pub use table::{sample_column_names, sample_columns, SampleColumn};
 pub use temporary::remove_temporary_files;

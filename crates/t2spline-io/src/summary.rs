@@ -12,7 +12,7 @@ pub struct JobSummary {
     /// The job file as given.
     pub file: String,
     /// `ok`, or the kind of failure: `invalid`, `unreadable`, `unwritable`,
-    /// `internal`.
+    /// `internal` ([`Status::word`](crate::Status::word)).
     pub status: String,
     /// The type reduction's name (`paper`, `centroid`, `nie-tan`,
     /// `alpha-planes`; docs/method.md §9), if it ran.

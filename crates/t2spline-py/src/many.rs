@@ -15,7 +15,7 @@ use pyo3::types::{PyDict, PyList, PyModule};
 use rayon::prelude::*;
 use t2spline::job::{Distance, Overrides, Parameter, Regime, RunOutput, Settings};
 use t2spline::TypeReduction;
-use t2spline_io::RunError;
+use t2spline_io::{RunError, Status};
 
 use crate::errors::{internal_error, without_gil};
 use crate::keyword;
@@ -296,13 +296,10 @@ impl RowRun {
     }
 }
 
-/// A failure's status (`invalid`, `internal`) and its message: the error's
+/// A failure's status ([`Status::of_run`]) and its message: the error's
 /// lines joined by `; `, as `t2spline run`'s summary writes them.
 fn status(e: &RunError) -> (&'static str, String) {
-    let status = match e {
-        RunError::File(t2spline_io::Error::NotFinite { .. }) => "internal",
-        _ => "invalid",
-    };
+    let status = Status::of_run(e).word();
     let text = match e {
         RunError::File(e) => e.lines().join("; "),
         RunError::Setting { setting, message } => format!("{}: {message}", setting.name()),
@@ -320,10 +317,13 @@ fn run_row(text: Option<&[u8]>, source: &str, overrides: &Overrides, keep: bool)
         result: Err((status, message)),
     };
     let Some(bytes) = text else {
-        return failed("invalid", format!("{source}: no job (null)"));
+        return failed(Status::Invalid.word(), format!("{source}: no job (null)"));
     };
     let Ok(text) = std::str::from_utf8(bytes) else {
-        return failed("invalid", format!("{source}: the job is not UTF-8 text"));
+        return failed(
+            Status::Invalid.word(),
+            format!("{source}: the job is not UTF-8 text"),
+        );
     };
     match prepare(text, source, overrides) {
         Err(e) => {
@@ -452,7 +452,7 @@ pub(crate) fn _run_rows<'py>(
         regime.push(ok.and_then(|r| r.regime).map(|r| r.as_str()));
         match &row.result {
             Ok(_) => {
-                status.push("ok");
+                status.push(Status::Ok.word());
                 message.push((!notes.is_empty()).then(|| notes.join("; ")));
             }
             Err((s, m)) => {

@@ -7,6 +7,7 @@
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
+use t2spline::job::{AlphaNote, ALPHA_IGNORED};
 use t2spline::reduction::discrete::{SampledCentroid, SampledSet};
 use t2spline::{Alpha, TypeReduction};
 
@@ -25,27 +26,21 @@ pub(crate) fn type_reduction(name: Option<&str>) -> PyResult<Option<TypeReductio
 }
 
 /// Says with a `UserWarning` that `reduction` does not use the alpha
-/// `given` (by `source`: `"alpha="`, `"the job's alpha "`), as ``t2spline
-/// run`` says it on standard error.
+/// `given` by `alpha=`, as ``t2spline run`` says it on standard error
+/// ([`AlphaNote::sentence`]).
 ///
 /// # Errors
 /// The error of the warning filter (warnings turned into errors).
 pub(crate) fn warn_unused_alpha(
     py: Python<'_>,
     reduction: TypeReduction,
-    source: &str,
     given: Alpha,
 ) -> PyResult<()> {
-    warn(py, &unused_alpha(reduction, source, given))
-}
-
-/// That `reduction` does not use the alpha given (by `source`) and what is
-/// done instead.
-pub(crate) fn unused_alpha(reduction: TypeReduction, source: &str, given: Alpha) -> String {
-    format!(
-        "type reduction {reduction} does not use alpha; {source}{} is ignored (stage 2 is cut at alpha = 0, the whole footprint)",
-        given.get()
-    )
+    let note = AlphaNote::Unused {
+        reduction,
+        alpha: given,
+    };
+    warn(py, &note.sentence("alpha=", ALPHA_IGNORED))
 }
 
 /// A `UserWarning` saying `message`.
@@ -80,7 +75,7 @@ pub(crate) fn solve_settings(
         )),
         (false, given) => {
             if let Some(a) = given {
-                warn_unused_alpha(py, reduction, "alpha=", a)?;
+                warn_unused_alpha(py, reduction, a)?;
             }
             Ok((Alpha::ZERO, reduction))
         }

@@ -7,7 +7,7 @@ use std::path::PathBuf;
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyString};
-use t2spline::job::{check_samples, Job, Model, Overrides, Setting, Settings};
+use t2spline::job::{check_samples, Job, Model, Overrides, Setting, Settings, ALPHA_IGNORED};
 use t2spline::TypeReduction;
 use t2spline_io::{MissingAlpha, Prepared, RunError};
 
@@ -307,21 +307,20 @@ pub(crate) fn execute(prepared: &Prepared) -> Result<Value, Failure> {
     to_value(&output).map_err(|e| Failure::Internal(e.to_string()))
 }
 
-/// The notes on a run's alpha: that the type reduction does not use the
-/// alpha given (`alpha=` if `from_keyword`, else the job's), that alpha lies
-/// a few ulps above a number's lower height (the other side of the paper's
-/// jump); none if alpha is as meant.
+/// The notes on a run's alpha ([`Settings::alpha_notes`]): the alpha given
+/// by `alpha=` if `from_keyword`, else by the job; none if alpha is as
+/// meant.
 pub(crate) fn alpha_notes(settings: &Settings, from_keyword: bool) -> Vec<String> {
-    let near = settings.near_height().map(|near| near.to_string());
-    let unused = settings.unused_alpha().map(|a| {
-        let source = if from_keyword {
-            "alpha="
-        } else {
-            "the job's alpha "
-        };
-        reduction::unused_alpha(settings.type_reduction(), source, a)
-    });
-    near.into_iter().chain(unused).collect()
+    let source = if from_keyword {
+        "alpha="
+    } else {
+        "the job's alpha "
+    };
+    settings
+        .alpha_notes()
+        .iter()
+        .map(|note| note.sentence(source, ALPHA_IGNORED))
+        .collect()
 }
 
 /// A `UserWarning` for each of [`alpha_notes`], after `prefix` (which job

@@ -13,6 +13,7 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 
 use rayon::prelude::*;
+use t2spline::job::ALPHA_IGNORED;
 use t2spline::job::{Overrides, Parameter, RunOutput};
 use t2spline_io::{
     printable, sync_file_systems, write_jobs_jsonl, write_jobs_parquet, write_summary_csv,
@@ -20,7 +21,7 @@ use t2spline_io::{
 };
 
 use super::prepare::{about_run, alpha_notes, prepare, OptionError};
-use super::results::{overrides, Destinations, ALPHA_IGNORED};
+use super::results::{overrides, Destinations};
 use crate::clash::Claims;
 use crate::cli::RunArgs;
 use crate::exit::{Exit, JobsFailed};

@@ -89,38 +89,20 @@ pub fn prepare_with(
     Ok((prepared, text))
 }
 
-/// That the type reduction does not use the alpha given (`--alpha` if
-/// `from_option`, else the job file's), and what that alpha still does
-/// (`effect`); `None` if every alpha given is used.
-pub fn unused_alpha(settings: &Settings, from_option: bool, effect: &str) -> Option<String> {
-    let a = settings.unused_alpha()?;
-    let source = if from_option {
-        "--alpha"
-    } else {
-        "the job's alpha"
-    };
-    Some(format!(
-        "note: type reduction {} does not use alpha; {source} {} {effect}",
-        settings.type_reduction(),
-        a.get()
-    ))
-}
-
-/// That alpha lies a few ulps above a lower height of the job's numbers
-/// (the paper's reduction jumps there), as a note; `None` otherwise.
-pub fn near_height(settings: &Settings) -> Option<String> {
-    settings.near_height().map(|near| format!("note: {near}"))
-}
-
-/// The notes on a run's alpha: [`unused_alpha`] and [`near_height`].
+/// The notes on a run's alpha ([`Settings::alpha_notes`]), each a line
+/// `note: …`: the alpha given by `--alpha` if `from_option`, else by the job
+/// file, and what it still does in the command (`effect`).
 pub fn alpha_notes(settings: &Settings, from_option: bool, effect: &str) -> Vec<String> {
-    [
-        unused_alpha(settings, from_option, effect),
-        near_height(settings),
-    ]
-    .into_iter()
-    .flatten()
-    .collect()
+    let source = if from_option {
+        "--alpha "
+    } else {
+        "the job's alpha "
+    };
+    settings
+        .alpha_notes()
+        .iter()
+        .map(|note| format!("note: {}", note.sentence(source, effect)))
+        .collect()
 }
 
 /// Says [`alpha_notes`] on standard error, one line each, for `command`.

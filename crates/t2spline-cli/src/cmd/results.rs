@@ -83,10 +83,6 @@ impl Destinations {
     }
 }
 
-/// What an alpha does in a run whose type reduction does not use it.
-pub(super) const ALPHA_IGNORED: &str =
-    "is ignored (stage 2 is cut at alpha = 0, the whole footprint)";
-
 /// The settings of a run from the options.
 pub(super) fn overrides(args: &RunArgs) -> Overrides {
     Overrides {

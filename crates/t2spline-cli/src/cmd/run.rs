@@ -4,11 +4,12 @@
 
 use std::path::Path;
 
+use t2spline::job::ALPHA_IGNORED;
 use t2spline_io::{write_jobs_jsonl, write_json_pretty, Prepared, Staged};
 
 use super::batch::output_name;
 use super::prepare::{about_run, note_alpha, prepare};
-use super::results::{overrides, Destinations, ALPHA_IGNORED};
+use super::results::{overrides, Destinations};
 use crate::clash::Claims;
 use crate::cli::RunArgs;
 use crate::output::{is_stdio, to_stdout};

@@ -1,5 +1,6 @@
 //! `t2spline validate JOB.json`: report every problem, or a one-line summary.
 
+use t2spline::job::UnusedBy;
 use t2spline_io::printable;
 
 use crate::cli::ValidateArgs;
@@ -11,11 +12,7 @@ pub fn validate(args: &ValidateArgs) -> anyhow::Result<()> {
         None => "not set".to_owned(),
         Some(a) if job.type_reduction.uses_alpha() => a.get().to_string(),
         // The note of the commands that run the job (`unused_alpha`).
-        Some(a) => format!(
-            "{} (unused: type reduction {} does not use alpha)",
-            a.get(),
-            job.type_reduction
-        ),
+        Some(a) => format!("{} (unused: {})", a.get(), UnusedBy(job.type_reduction)),
     };
     let line = format!(
         "{}: ok: {}, alpha {alpha}, {} samples\n",

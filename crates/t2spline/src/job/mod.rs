@@ -32,6 +32,7 @@
 // iterators, `split_first`), as ARCHITECTURE.md explains.
 #![cfg_attr(not(test), deny(clippy::indexing_slicing))]
 
+mod alpha_note;
 mod geometry;
 mod model;
 mod near_height;
@@ -44,6 +45,7 @@ mod settings;
 mod units;
 
 pub use crate::error::Setting;
+pub use alpha_note::{AlphaNote, UnusedBy, ALPHA_IGNORED};
 pub use geometry::{Geometry, NamedCurve};
 pub use model::{Model, ModelVisitor};
 pub use near_height::{NearHeight, NEAR_HEIGHT_ULPS};
