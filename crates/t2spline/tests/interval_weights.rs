@@ -78,9 +78,7 @@ fn vertices<const D: usize>(terms: &IntervalTerms<D>) -> Vec<[f64; D]> {
             let c = code % per;
             code /= per;
             w[i] = terms.weights()[i][c & 1];
-            for k in 0..D {
-                p[i][k] = terms.points()[i][k][(c >> (k + 1)) & 1];
-            }
+            p[i] = std::array::from_fn(|k| terms.points()[i][k][(c >> (k + 1)) & 1]);
         }
         out.push(point(terms, &w, &p));
     }

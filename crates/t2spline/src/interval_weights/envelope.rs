@@ -24,6 +24,10 @@ use crate::fuzzy::{Axis, Interval};
 use super::km::{max_switch, min_switch};
 use super::terms::{IntervalTerms, Vertex};
 
+/// The relative slack of membership and sections: `1e-12` of the set's
+/// extent ([`IntervalTerms::slack`]; docs/method.md §15).
+pub const MEMBERSHIP_SLACK: f64 = 1e-12;
+
 impl<const D: usize> IntervalTerms<D> {
     /// The envelope `[C̲ₖ(t), C̄ₖ(t)]` of every coordinate (module docs;
     /// docs/method.md §15), exact at the Karnik–Mendel switch points.
@@ -44,6 +48,24 @@ impl<const D: usize> IntervalTerms<D> {
             let (lo, hi) = (lo.value, hi.value);
             Interval::new_unchecked(lo.min(hi), hi)
         })
+    }
+
+    /// The slack `τ` of [`contains`](Self::contains) and
+    /// [`section`](Self::section): a point within `τ` of the set in every
+    /// coordinate counts as a member, a line within `τ` meets it.
+    /// `τ = MEMBERSHIP_SLACK·E + 64u·M`, `E` the largest width of the
+    /// envelope ([`MEMBERSHIP_SLACK`] = 1e-12), `M` the largest magnitude of
+    /// its ends and `u` the unit roundoff: the extent of the set, as the
+    /// set view of crisp weights counts it (docs/method.md §10), and the
+    /// rounding of a point computed as a weighted average.
+    #[must_use]
+    pub fn slack(&self) -> f64 {
+        let (mut extent, mut magnitude) = (0.0_f64, 0.0_f64);
+        for range in self.envelope() {
+            extent = extent.max(range.width());
+            magnitude = magnitude.max(range.left().abs()).max(range.right().abs());
+        }
+        MEMBERSHIP_SLACK * extent + 64.0 * f64::EPSILON * magnitude
     }
 
     /// The vertex choices that attain the two ends of coordinate `axis`'s

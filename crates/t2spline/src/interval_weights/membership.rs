@@ -48,14 +48,17 @@
 //! that is not extreme, or outside its orthant, is a valid test too (any
 //! direction is), so the candidates need no filtering.
 //!
-//! **Slack.** A ray with `g(d) < −(ε·G(d) + 64u·M(d))`, where
-//! `G(d) = Σ θ̄ᵢ Σ_k |d_k|·max(|P̲ᵢₖ − qₖ|, |P̄ᵢₖ − qₖ|)` (the reach of the
-//! terms from `q`, so `ε` = [`MEMBERSHIP_SLACK`] is relative),
-//! `M(d) = Σ θ̄ᵢ Σ_k |d_k|·max(|P̲ᵢₖ|, |P̄ᵢₖ|, |qₖ|)` and `u` the unit
-//! roundoff, proves `q` outside beyond rounding; a point within that slack
-//! of the set counts in, as every vertex and every envelope end computed in
-//! floating point must. `g + ε·G + 64u·M` is linear on the same cells as
-//! `g`, so the finite test stays exact for the widened set.
+//! **Slack.** Rounding makes every vertex and every envelope end a computed
+//! point, a few units in the last place off the set. So the test is the
+//! exact one above for the boxes widened by the slack `τ` in every
+//! coordinate (`P̲ᵢₖ − τ`, `P̄ᵢₖ + τ`), whose set is `S(t) + [−τ, τ]^D` (the
+//! average of offsets in `[−τ, τ]^D` lies in it, and one offset for every
+//! term reaches all of it): a point within `τ` of the set in every
+//! coordinate counts in, one farther out is outside up to the rounding of
+//! `g`. `τ` = [`IntervalTerms::slack`], [`MEMBERSHIP_SLACK`](super::envelope::MEMBERSHIP_SLACK) of the set's
+//! extent. A point outside the widened envelope is refused at once, with
+//! `±e_k` as the witness (this also keeps every difference `P − q` within
+//! the range of coordinates).
 
 use crate::error::Error;
 use crate::fuzzy::Axis;
@@ -63,20 +66,10 @@ use crate::fuzzy::Axis;
 use super::km::binary_scale;
 use super::terms::IntervalTerms;
 
-/// The relative slack of [`IntervalTerms::contains`]: a point is outside
-/// only if some direction separates it by more than `1e-12` of the size of
-/// the terms (docs/method.md §15).
-pub const MEMBERSHIP_SLACK: f64 = 1e-12;
-
-/// The rounding allowed on top of [`MEMBERSHIP_SLACK`], relative to the
-/// magnitude of the coordinates: a point computed as a weighted average
-/// carries a few units in the last place of its coordinates.
-const ROUNDING: f64 = 64.0 * f64::EPSILON;
-
 impl<const D: usize> IntervalTerms<D> {
     /// Whether `q` is a point of the curve for some weights and points in
     /// their cuts (module docs; docs/method.md §15), within
-    /// [`MEMBERSHIP_SLACK`].
+    /// [`slack`](Self::slack) in every coordinate.
     ///
     /// # Errors
     /// [`Error::QueryPoint`] (index 0) for a coordinate of `q` that is not
@@ -114,39 +107,46 @@ impl<const D: usize> IntervalTerms<D> {
             }
         }
         let n = self.basis().len();
+        let tau = self.slack();
+        for (k, range) in self.envelope().iter().enumerate() {
+            let mut e = [0.0; D];
+            if q[k] > range.right() + tau {
+                e[k] = 1.0;
+                return Ok(Some(e));
+            }
+            if q[k] < range.left() - tau {
+                e[k] = -1.0;
+                return Ok(Some(e));
+            }
+        }
         let scale = binary_scale(self.upper());
-        // Differences to q, relative: P − q may reach 2e150 and more with q.
+        // The differences to q of the widened boxes' ends.
         let lo: Vec<[f64; D]> = self
             .points()
             .iter()
-            .map(|p| std::array::from_fn(|k| p[k][0] - q[k]))
+            .map(|p| std::array::from_fn(|k| (p[k][0] - q[k]) - tau))
             .collect();
         let hi: Vec<[f64; D]> = self
             .points()
             .iter()
-            .map(|p| std::array::from_fn(|k| p[k][1] - q[k]))
+            .map(|p| std::array::from_fn(|k| (p[k][1] - q[k]) + tau))
             .collect();
         let separates = |d: &[f64; D]| -> bool {
             let size = d.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
             if size == 0.0 || !size.is_finite() {
                 return false;
             }
-            let (mut g, mut reach, mut magnitude) = (0.0, 0.0, 0.0);
+            let mut g = 0.0;
             for i in 0..n {
-                let (mut m, mut far, mut large) = (0.0, 0.0, 0.0);
+                let mut m = 0.0;
                 for k in 0..D {
                     let dk = d[k] / size;
                     m += (dk * lo[i][k]).max(dk * hi[i][k]);
-                    far += dk.abs() * lo[i][k].abs().max(hi[i][k].abs());
-                    let [pl, ph] = self.points()[i][k];
-                    large += dk.abs() * pl.abs().max(ph.abs()).max(q[k].abs());
                 }
                 let (a, b) = (self.lower()[i] / scale, self.upper()[i] / scale);
                 g += if m >= 0.0 { b * m } else { a * m };
-                reach += b * far;
-                magnitude += b * large;
             }
-            g < -(MEMBERSHIP_SLACK * reach + ROUNDING * magnitude)
+            g < 0.0
         };
         let mut normals: Vec<[f64; D]> = Vec::with_capacity(n + D);
         for orthant in 0..(1usize << D) {
@@ -178,7 +178,7 @@ impl<const D: usize> IntervalTerms<D> {
 /// the cross product of each pair for `D = 3`; zero vectors skipped.
 fn rays<const D: usize>(normals: &[[f64; D]]) -> impl Iterator<Item = [f64; D]> + '_ {
     let m = normals.len();
-    let padded: Vec<[f64; 3]> = normals.iter().map(|v| pad(v)).collect();
+    let padded: Vec<[f64; 3]> = normals.iter().map(pad).collect();
     let found: Vec<[f64; 3]> = match D {
         1 => vec![[1.0, 0.0, 0.0]],
         2 => padded.iter().map(|v| [-v[1], v[0], 0.0]).collect(),

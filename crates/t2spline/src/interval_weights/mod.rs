@@ -39,6 +39,6 @@ mod support;
 mod terms;
 
 pub use curve::IntervalCurve;
+pub use envelope::MEMBERSHIP_SLACK;
 pub use km::weighted_average_range;
-pub use membership::MEMBERSHIP_SLACK;
 pub use terms::{IntervalTerms, Vertex};

@@ -43,7 +43,6 @@
 use crate::error::{Error, Place};
 use crate::fuzzy::{Axis, Interval};
 
-use super::membership::MEMBERSHIP_SLACK;
 use super::terms::IntervalTerms;
 
 /// The most support queries for one end of a section; a bound, not an
@@ -53,9 +52,9 @@ const MAX_STEPS: usize = 10_000;
 impl<const D: usize> IntervalTerms<D> {
     /// The section `{ q_of : q ∈ S(t), q_along = at }` as an interval,
     /// `None` if the set does not reach `at` (module docs; docs/method.md
-    /// §15). A line within [`MEMBERSHIP_SLACK`] of the set's extent meets
-    /// it; if the set's `along` extent is itself within that slack, the
-    /// section is the whole `of` envelope.
+    /// §15). A line within [`slack`](Self::slack) of the set meets it; if
+    /// the set's `along` extent is itself within the slack, the section is
+    /// the whole `of` envelope.
     ///
     /// # Errors
     /// [`Error::SectionAxes`] if `along` and `of` are the same or not both
@@ -98,11 +97,7 @@ impl<const D: usize> IntervalTerms<D> {
         };
         let env = self.envelope();
         let (x, y) = (env[kx], env[ky]);
-        let magnitude = [x.left(), x.right(), y.left(), y.right()]
-            .iter()
-            .fold(0.0_f64, |m, v| m.max(v.abs()));
-        let extent = x.width().max(y.width());
-        let slack = MEMBERSHIP_SLACK * extent + 8.0 * f64::EPSILON * magnitude;
+        let slack = self.slack();
         if at < x.left() - slack || at > x.right() + slack {
             return Ok(None);
         }
@@ -180,5 +175,75 @@ impl<const D: usize> Plane<'_, D> {
             }
         }
         best
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::fuzzy::Axis;
+    use crate::interval_weights::terms::IntervalTerms;
+
+    #[test]
+    fn a_crisp_x_gives_the_y_envelope_at_that_x_only() {
+        // Every x is 2: the set is a vertical segment; at x = 2 the whole y
+        // envelope, elsewhere nothing.
+        let terms = IntervalTerms::try_new(
+            &[0.3, 0.7],
+            &[[1.0, 2.0], [0.5, 4.0]],
+            &[[[2.0, 2.0], [0.0, 1.0]], [[2.0, 2.0], [3.0, 5.0]]],
+        )
+        .unwrap();
+        let y = terms.envelope()[1];
+        assert_eq!(terms.section(Axis::X, 2.0, Axis::Y).unwrap(), Some(y));
+        assert_eq!(terms.section(Axis::X, 2.0 + 1e-9, Axis::Y).unwrap(), None);
+        assert!(terms.contains([2.0, y.left()]).unwrap());
+        assert!(!terms.contains([2.0 + 1e-9, y.left()]).unwrap());
+    }
+
+    #[test]
+    fn extreme_magnitudes_stay_finite() {
+        // Coordinates at the range's ends and weights from 1e-150 to 1e150.
+        let terms = IntervalTerms::try_new(
+            &[0.25, 0.5, 0.25],
+            &[[1e-150, 1e150], [1.0, 1.0], [1e-150, 1e-149]],
+            &[
+                [[-1e150, 1e150], [-1e150, -1e150]],
+                [[0.0, 1.0], [1e150, 1e150]],
+                [[1e150, 1e150], [-1.0, 1.0]],
+            ],
+        )
+        .unwrap();
+        for range in terms.envelope() {
+            assert!(range.left().is_finite() && range.right().is_finite());
+        }
+        for d in [[1.0, 0.0], [-1e150, 1e150], [1e-300, 1.0]] {
+            assert!(terms.support(d).unwrap().is_finite(), "{d:?}");
+        }
+        for q in [
+            [0.0, 0.0],
+            [1e150, -1e150],
+            [f64::MAX, f64::MIN],
+            [1e-300, 5e149],
+        ] {
+            terms.contains(q).unwrap();
+        }
+        assert!(!terms.contains([f64::MAX, 0.0]).unwrap());
+        for at in [0.0, 1e149, -1e150, f64::MAX] {
+            if let Some(s) = terms.section(Axis::X, at, Axis::Y).unwrap() {
+                assert!(s.left().is_finite() && s.right().is_finite(), "{at}: {s:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn one_coordinate() {
+        // D = 1: the set is the envelope; membership is the interval test.
+        let terms =
+            IntervalTerms::try_new(&[0.5, 0.5], &[[1.0, 3.0]; 2], &[[[0.0, 0.0]], [[1.0, 1.0]]])
+                .unwrap();
+        assert!(terms.contains([0.5]).unwrap());
+        assert!(terms.contains([0.25]).unwrap());
+        assert!(!terms.contains([0.2]).unwrap());
+        assert_eq!(terms.separating_direction([0.8]).unwrap(), Some([1.0]));
     }
 }
