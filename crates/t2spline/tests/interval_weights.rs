@@ -12,8 +12,9 @@
 
 use proptest::prelude::*;
 use t2spline::interval_weights::{weighted_average_range, IntervalCurve, IntervalTerms};
+use t2spline::reduction::discrete::SampledSet;
 use t2spline::strategies::{cases, seeded_uniform, test_size};
-use t2spline::{Axis, Error, NurbsCurve};
+use t2spline::{Alpha, Axis, Error, Layer, NurbsCurve};
 
 type Rng = Box<dyn FnMut() -> f64>;
 
@@ -331,6 +332,97 @@ fn crisp_weights_give_the_crisp_weight_curves_of_the_ends() {
             assert!(!point_curve
                 .contains(t, [q[0] + 1e-6, q[1]])
                 .expect("finite"));
+        }
+    }
+}
+
+#[test]
+fn crisp_weights_give_the_alpha_cut_curves_of_a_run() {
+    // The shipped example at alpha = 0.4: its cuts with its crisp weights as
+    // interval curves; the envelope at t is today's stage-2 upper (and
+    // primary) cut curves at t.
+    let curve = t2spline::strategies::paper_example();
+    for a in [0.0, 0.4, 0.6, 1.0] {
+        let alpha = Alpha::try_new(a).expect("a level");
+        let solution = curve.solve(alpha);
+        for (membership, left, right) in [
+            (0, Layer::UpperLeft, Layer::UpperRight),
+            (1, Layer::PrimaryLeft, Layer::PrimaryRight),
+        ] {
+            let cuts: Vec<[[f64; 2]; 2]> = curve
+                .points()
+                .iter()
+                .map(|p| {
+                    std::array::from_fn(|k| {
+                        let cut = p.coords()[k].alpha_cut(alpha);
+                        let c = if membership == 0 {
+                            cut.upper()
+                        } else {
+                            cut.primary()
+                        };
+                        [c.left(), c.right()]
+                    })
+                })
+                .collect();
+            let weights: Vec<[f64; 2]> = curve.weights().iter().map(|&w| [w, w]).collect();
+            let interval = IntervalCurve::try_new(
+                curve.degree(),
+                cuts,
+                weights,
+                Some(curve.knots().as_slice().to_vec()),
+            )
+            .expect("a curve");
+            let (lc, rc) = (
+                solution
+                    .alpha_cut_curve(left)
+                    .expect("upper and primary cuts exist"),
+                solution
+                    .alpha_cut_curve(right)
+                    .expect("upper and primary cuts exist"),
+            );
+            for j in 0..=20 {
+                let t = j as f64 / 20.0;
+                let env = interval.envelope(t).expect("in the domain");
+                let (l, r) = (lc.eval(t).expect("t"), rc.eval(t).expect("t"));
+                for k in 0..2 {
+                    assert!(
+                        (env[k].left() - l[k]).abs() <= 1e-14 * (1.0 + l[k].abs()),
+                        "{a} {t} {k}"
+                    );
+                    assert!(
+                        (env[k].right() - r[k]).abs() <= 1e-14 * (1.0 + r[k].abs()),
+                        "{a} {t} {k}"
+                    );
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn the_km_range_is_the_discrete_centroid_of_the_reductions() {
+    // Sorted values with lmf ≤ umf are a sampled interval type-2 set: its
+    // centroid by KM, EKM and EIASC (reduction::discrete) is the same
+    // weighted-average range.
+    let mut r = rng(8);
+    for case in 0..test_size(200, 2000) {
+        let n = 1 + case % 9;
+        let mut x: Vec<f64> = (0..n).map(|_| 10.0 * r() - 5.0).collect();
+        x.sort_by(f64::total_cmp);
+        let lmf: Vec<f64> = (0..n).map(|_| 0.05 + r()).collect();
+        let umf: Vec<f64> = lmf.iter().map(|a| a + 2.0 * r()).collect();
+        let weights: Vec<[f64; 2]> = lmf.iter().zip(&umf).map(|(&a, &b)| [a, b]).collect();
+        let ours = weighted_average_range(&x, &weights).expect("valid");
+        let set = SampledSet::try_new(&x, &lmf, &umf).expect("a sampled set");
+        for c in [set.km(), set.ekm(), set.eiasc()] {
+            assert!(
+                (ours.left() - c.left()).abs() <= 1e-13 * (1.0 + c.left().abs()),
+                "{case}"
+            );
+            assert!(
+                (ours.right() - c.right()).abs() <= 1e-13 * (1.0 + c.right().abs()),
+                "{case}"
+            );
         }
     }
 }
