@@ -1310,6 +1310,24 @@ pub enum Error {
         rule: &'static str,
     },
 
+    /// More terms at one parameter than the functions of uncertain weights
+    /// take ([`MAX_TERMS`](crate::interval_weights::MAX_TERMS); docs/method.md §15).
+    ///
+    /// ```
+    /// # use t2spline::Error;
+    /// # use t2spline::interval_weights::IntervalCurve;
+    /// let points = vec![[[0.0, 1.0]]; 200];
+    /// let e = IntervalCurve::try_new(150, points, vec![[1.0, 2.0]; 200], None).unwrap_err();
+    /// assert_eq!(e.to_string(), "151 terms at one parameter are more than the limit of 128: uncertain weights are taken on curves of degree below 128");
+    /// ```
+    #[error("{count} terms at one parameter are more than the limit of {limit}: uncertain weights are taken on curves of degree below {limit}")]
+    TooManyTerms {
+        /// The number of terms (basis values above 0, or the order).
+        count: usize,
+        /// The limit.
+        limit: usize,
+    },
+
     /// A section of a set needs two different coordinates of its points: the
     /// one fixed and the one whose range is asked for (docs/method.md §15).
     ///

@@ -763,6 +763,21 @@ fn bad_input_is_an_error_naming_its_place() {
         e(&[0.5], &[[1.0, 1.0]; 2], &ok_points),
         "weights: expected 1, got 2"
     );
+    // The limit counts terms with a basis value above 0.
+    let many = vec![[[0.0, 1.0]; 2]; 200];
+    let mut basis = vec![0.0; 200];
+    assert!(matches!(
+        IntervalTerms::try_new(&vec![0.005; 200], &[[1.0, 2.0]; 200], &many),
+        Err(Error::TooManyTerms {
+            count: 200,
+            limit: 128
+        })
+    ));
+    basis[7] = 0.5;
+    basis[8] = 0.5;
+    let sparse =
+        IntervalTerms::try_new(&basis, &[[1.0, 2.0]; 200], &many).expect("two terms count");
+    assert!(sparse.contains([0.5, 0.5]).expect("finite"));
     let terms = IntervalTerms::try_new(&[0.5, 0.5], &[[1.0, 2.0]; 2], &ok_points).expect("valid");
     assert!(matches!(
         terms.contains([f64::NAN, 0.0]),
@@ -906,4 +921,65 @@ proptest! {
 
 fn qs_seed(u: f64) -> u64 {
     u.to_bits()
+}
+
+/// Any `f64`, the awkward ones (NaN, ±∞, 0, subnormal, the range's ends)
+/// more often than chance would draw them.
+fn awkward() -> impl Strategy<Value = f64> {
+    prop_oneof![
+        any::<f64>(),
+        Just(f64::NAN),
+        Just(f64::INFINITY),
+        Just(0.0),
+        Just(-0.0),
+        Just(5e-324),
+        Just(1e-150),
+        Just(1e150),
+        Just(-1e150),
+        Just(f64::MAX),
+        -10.0f64..10.0,
+        0.0f64..5.0,
+    ]
+}
+
+proptest! {
+    #![proptest_config(cases(256, 4096))]
+
+    /// Hostile input: every function returns, never panics, and what it
+    /// returns is finite.
+    #[test]
+    fn never_panics(
+        n in 1usize..5,
+        values in prop::collection::vec(awkward(), 40),
+        q in (awkward(), awkward(), awkward()),
+        at in awkward(),
+    ) {
+        let v = |i: usize| values[i % values.len()];
+        let basis: Vec<f64> = (0..n).map(v).collect();
+        let weights: Vec<[f64; 2]> = (0..n).map(|i| [v(4 + 2 * i), v(5 + 2 * i)]).collect();
+        let points: Vec<[[f64; 2]; 3]> = (0..n)
+            .map(|i| std::array::from_fn(|k| [v(12 + 6 * i + 2 * k), v(13 + 6 * i + 2 * k)]))
+            .collect();
+        if let Ok(terms) = IntervalTerms::try_new(&basis, &weights, &points) {
+            for range in terms.envelope() {
+                prop_assert!(range.left().is_finite() && range.right().is_finite());
+            }
+            if let Ok(h) = terms.support([q.0, q.1, q.2]) {
+                prop_assert!(h.is_finite());
+            }
+            let _ = terms.contains([q.0, q.1, q.2]);
+            for (along, of) in [(Axis::X, Axis::Y), (Axis::Z, Axis::X)] {
+                if let Ok(Some(s)) = terms.section(along, at, of) {
+                    prop_assert!(s.left().is_finite() && s.right().is_finite());
+                }
+            }
+        }
+        let degree = n - 1;
+        let flat: Vec<[[f64; 2]; 2]> = points.iter().map(|p| [p[0], p[1]]).collect();
+        if let Ok(curve) = IntervalCurve::try_new(degree, flat, weights, None) {
+            let _ = curve.envelope(at);
+            let _ = curve.contains(at, [q.0, q.1]);
+            let _ = curve.section(at, Axis::X, q.2, Axis::Y);
+        }
+    }
 }

@@ -9,7 +9,7 @@ use crate::fuzzy::{Axis, Interval};
 use crate::nurbs::basis::try_basis_functions;
 use crate::nurbs::KnotVector;
 
-use super::terms::IntervalTerms;
+use super::terms::{check_cuts, IntervalTerms, MAX_TERMS};
 
 /// A rational B-spline whose coordinates and weights are intervals: the cuts
 /// `[P̲ᵢₖ, P̄ᵢₖ]` and `[w̲ᵢ, w̄ᵢ]` of a curve with uncertain points and weights
@@ -28,7 +28,8 @@ impl<const D: usize> IntervalCurve<D> {
     /// default (docs/method.md §6).
     ///
     /// # Errors
-    /// [`Error::Dimension`] unless `1 ≤ D ≤ 3`; [`Error::TooFewControlPoints`]
+    /// [`Error::Dimension`] unless `1 ≤ D ≤ 3`; [`Error::TooManyTerms`] for a
+    /// degree of [`MAX_TERMS`] or more; [`Error::TooFewControlPoints`]
     /// and the knot errors of [`KnotVector::try_new`]; [`Error::WeightCount`]
     /// if there is not one weight per point; the errors of
     /// [`IntervalTerms::try_new`] for a cut.
@@ -59,7 +60,13 @@ impl<const D: usize> IntervalCurve<D> {
                 found: weights.len(),
             });
         }
-        IntervalTerms::try_new(&vec![1.0; n], &weights, &points)?;
+        if degree >= MAX_TERMS {
+            return Err(Error::TooManyTerms {
+                count: degree.saturating_add(1),
+                limit: MAX_TERMS,
+            });
+        }
+        check_cuts(&weights, &points)?;
         Ok(IntervalCurve {
             points,
             weights,

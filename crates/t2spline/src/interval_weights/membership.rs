@@ -152,7 +152,8 @@ impl<const D: usize> IntervalTerms<D> {
         for orthant in 0..(1usize << D) {
             normals.clear();
             normals.extend((0..D).map(|k| std::array::from_fn(|j| f64::from(u8::from(j == k)))));
-            normals.extend((0..n).map(|i| {
+            // A term with θ̄ = 0 adds nothing to g: no hyperplane of its own.
+            normals.extend((0..n).filter(|&i| self.upper()[i] > 0.0).map(|i| {
                 std::array::from_fn(|k| {
                     if orthant >> k & 1 == 1 {
                         hi[i][k]

@@ -41,4 +41,4 @@ mod terms;
 pub use curve::IntervalCurve;
 pub use envelope::MEMBERSHIP_SLACK;
 pub use km::weighted_average_range;
-pub use terms::{IntervalTerms, Vertex};
+pub use terms::{IntervalTerms, Vertex, MAX_TERMS};

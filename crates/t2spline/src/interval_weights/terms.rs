@@ -18,6 +18,65 @@ use crate::limits::{within_magnitude, MAGNITUDE_RANGE, MAX_WEIGHT, MIN_WEIGHT};
 
 use super::km::binary_scale;
 
+/// The most terms with a basis value above 0 at one parameter: a curve of
+/// degree up to 127. Membership in three coordinates tries `O(n²)`
+/// directions of `O(n)` work each; the limit keeps it to milliseconds.
+pub const MAX_TERMS: usize = 128;
+
+/// Checks the cuts of weights and points (the rules of
+/// [`IntervalTerms::try_new`]), for terms or for a whole curve.
+pub(crate) fn check_cuts<const D: usize>(
+    weights: &[[f64; 2]],
+    points: &[[[f64; 2]; D]],
+) -> Result<(), Error> {
+    let axes = Axis::first::<D>()?;
+    for (index, &[left, right]) in weights.iter().enumerate() {
+        for value in [left, right] {
+            if !(value.is_finite() && value > 0.0) {
+                return Err(Error::Weight { index, value });
+            }
+            if !(MIN_WEIGHT..=MAX_WEIGHT).contains(&value) {
+                return Err(Error::WeightOutOfRange { index, value });
+            }
+        }
+        if left > right {
+            return Err(Error::WeightCut {
+                index,
+                left,
+                right,
+                rule: "is out of order: its left end is above its right end",
+            });
+        }
+    }
+    for (i, p) in points.iter().enumerate() {
+        for (&axis, &[left, right]) in axes.iter().zip(p) {
+            let place = Place::new(i, axis);
+            for (what, value) in [("left", left), ("right", right)] {
+                if !value.is_finite() {
+                    return Err(Error::NotFinite { place, what, value });
+                }
+                if !within_magnitude(value) {
+                    return Err(Error::OutOfRange {
+                        place,
+                        what,
+                        value,
+                        range: MAGNITUDE_RANGE,
+                    });
+                }
+            }
+            if left > right {
+                return Err(Error::Order {
+                    place,
+                    rule: "left <= right",
+                    left,
+                    right,
+                });
+            }
+        }
+    }
+    Ok(())
+}
+
 /// The checked terms of the weighted average at one parameter: basis values,
 /// weight cuts and coordinate cuts (module docs; docs/method.md §15).
 ///
@@ -75,7 +134,8 @@ impl<const D: usize> IntervalTerms<D> {
     /// [`Error::Dimension`] unless `1 ≤ D ≤ 3`; [`Error::Length`] if
     /// `basis` is empty or `weights` or `points` is not as long;
     /// [`Error::Basis`] for a basis value that is not finite, negative or
-    /// above `1e150`, or if every one is 0; [`Error::Weight`] for a weight
+    /// above `1e150`, or if every one is 0; [`Error::TooManyTerms`] for more
+    /// than [`MAX_TERMS`] basis values above 0; [`Error::Weight`] for a weight
     /// end that is not finite and greater than 0, [`Error::WeightOutOfRange`]
     /// outside `[1e-150, 1e150]`, [`Error::WeightCut`] for `w̲ > w̄`;
     /// [`Error::NotFinite`], [`Error::OutOfRange`] (outside `[-1e150, 1e150]`)
@@ -99,7 +159,7 @@ impl<const D: usize> IntervalTerms<D> {
         weights: &[[f64; 2]],
         points: &[[[f64; 2]; D]],
     ) -> Result<Self, Error> {
-        let axes = Axis::first::<D>()?;
+        Axis::first::<D>()?;
         if basis.is_empty() {
             return Err(Error::Length {
                 what: "basis",
@@ -135,50 +195,14 @@ impl<const D: usize> IntervalTerms<D> {
                 rule: "is 0, as every basis value is; at least one must be greater than 0",
             });
         }
-        for (index, &[left, right]) in weights.iter().enumerate() {
-            for value in [left, right] {
-                if !(value.is_finite() && value > 0.0) {
-                    return Err(Error::Weight { index, value });
-                }
-                if !(MIN_WEIGHT..=MAX_WEIGHT).contains(&value) {
-                    return Err(Error::WeightOutOfRange { index, value });
-                }
-            }
-            if left > right {
-                return Err(Error::WeightCut {
-                    index,
-                    left,
-                    right,
-                    rule: "is out of order: its left end is above its right end",
-                });
-            }
+        let count = basis.iter().filter(|&&n| n > 0.0).count();
+        if count > MAX_TERMS {
+            return Err(Error::TooManyTerms {
+                count,
+                limit: MAX_TERMS,
+            });
         }
-        for (i, p) in points.iter().enumerate() {
-            for (&axis, &[left, right]) in axes.iter().zip(p) {
-                let place = Place::new(i, axis);
-                for (what, value) in [("left", left), ("right", right)] {
-                    if !value.is_finite() {
-                        return Err(Error::NotFinite { place, what, value });
-                    }
-                    if !within_magnitude(value) {
-                        return Err(Error::OutOfRange {
-                            place,
-                            what,
-                            value,
-                            range: MAGNITUDE_RANGE,
-                        });
-                    }
-                }
-                if left > right {
-                    return Err(Error::Order {
-                        place,
-                        rule: "left <= right",
-                        left,
-                        right,
-                    });
-                }
-            }
-        }
+        check_cuts(weights, points)?;
         Ok(Self::new_unchecked(basis, weights, points))
     }
 
