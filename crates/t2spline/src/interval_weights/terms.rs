@@ -20,7 +20,8 @@ use super::km::binary_scale;
 
 /// The most terms with a basis value above 0 at one parameter: a curve of
 /// degree up to 127. Membership in three coordinates tries `O(n²)`
-/// directions of `O(n)` work each; the limit keeps it to milliseconds.
+/// directions of `O(n)` work each; the limit keeps it below about 50 ms
+/// a point (docs/performance.md).
 pub const MAX_TERMS: usize = 128;
 
 /// Checks the cuts of weights and points (the rules of
