@@ -916,7 +916,9 @@ pub enum Error {
     /// A sample of a sampled interval type-2 set breaks a rule of
     /// [`SampledSet::try_new`](crate::reduction::discrete::SampledSet::try_new):
     /// finite values, `x` within [`MAX_MAGNITUDE`](crate::MAX_MAGNITUDE) and not
-    /// decreasing, `0 ≤ lmf ≤ umf ≤ 1e150`.
+    /// decreasing, `0 ≤ lmf ≤ umf ≤ 1e150`; or a value given to
+    /// [`weighted_average_range`](crate::interval_weights::weighted_average_range)
+    /// is not finite (`what` = `"values"`).
     ///
     /// ```
     /// # use t2spline::Error;
@@ -1266,6 +1268,102 @@ pub enum Error {
         /// The crisp curve at the end of its domain.
         end: Vec<f64>,
     },
+
+    /// The cut `[left, right]` of an uncertain weight is not valid
+    /// (docs/method.md §15): both ends finite, `0 < left ≤ right` (at least
+    /// 0 for [`weighted_average_range`](crate::interval_weights::weighted_average_range)).
+    ///
+    /// ```
+    /// # use t2spline::Error;
+    /// # use t2spline::interval_weights::IntervalTerms;
+    /// let e = IntervalTerms::try_new(&[1.0], &[[2.0, 1.0]], &[[[0.0, 1.0]]]).unwrap_err();
+    /// assert_eq!(e.to_string(), "weights[0] = [2, 1] is out of order: its left end is above its right end");
+    /// ```
+    #[error("weights[{index}] = [{}, {}] {rule}", Num(*left), Num(*right))]
+    WeightCut {
+        /// Index of the weight (0-based).
+        index: usize,
+        /// The left end of its cut.
+        left: f64,
+        /// The right end of its cut.
+        right: f64,
+        /// The rule it breaks, as the end of the message.
+        rule: &'static str,
+    },
+
+    /// A basis value given for the weighted average at one parameter is not
+    /// a finite number at least 0, or every one is 0 (docs/method.md §15).
+    ///
+    /// ```
+    /// # use t2spline::Error;
+    /// # use t2spline::interval_weights::IntervalTerms;
+    /// let e = IntervalTerms::try_new(&[-0.5], &[[1.0, 1.0]], &[[[0.0, 1.0]]]).unwrap_err();
+    /// assert_eq!(e.to_string(), "basis[0] = -0.5 must be a finite number at least 0");
+    /// ```
+    #[error("basis[{index}] = {} {rule}", Num(*value))]
+    Basis {
+        /// Index of the basis value (0-based).
+        index: usize,
+        /// The offending value.
+        value: f64,
+        /// The rule it breaks, as the end of the message.
+        rule: &'static str,
+    },
+
+    /// More terms at one parameter than the functions of uncertain weights
+    /// take ([`MAX_TERMS`](crate::interval_weights::MAX_TERMS); docs/method.md §15).
+    ///
+    /// ```
+    /// # use t2spline::Error;
+    /// # use t2spline::interval_weights::IntervalCurve;
+    /// let points = vec![[[0.0, 1.0]]; 200];
+    /// let e = IntervalCurve::try_new(150, points, vec![[1.0, 2.0]; 200], None).unwrap_err();
+    /// assert_eq!(e.to_string(), "151 terms at one parameter are more than the limit of 128: uncertain weights are taken on curves of degree below 128");
+    /// ```
+    #[error("{count} terms at one parameter are more than the limit of {limit}: uncertain weights are taken on curves of degree below {limit}")]
+    TooManyTerms {
+        /// The number of terms (basis values above 0, or the order).
+        count: usize,
+        /// The limit.
+        limit: usize,
+    },
+
+    /// A section of a set needs two different coordinates of its points: the
+    /// one fixed and the one whose range is asked for (docs/method.md §15).
+    ///
+    /// ```
+    /// # use t2spline::{Axis, Error};
+    /// # use t2spline::interval_weights::IntervalTerms;
+    /// let terms = IntervalTerms::try_new(&[1.0], &[[1.0, 1.0]], &[[[0.0, 1.0], [0.0, 1.0]]])?;
+    /// let e = terms.section(Axis::X, 0.5, Axis::X).unwrap_err();
+    /// assert_eq!(e.to_string(), "a section fixes one coordinate and ranges over another; got x twice");
+    /// let e = terms.section(Axis::X, 0.5, Axis::Z).unwrap_err();
+    /// assert_eq!(e.to_string(), "a section of points with 2 coordinates cannot use z");
+    /// # Ok::<(), Error>(())
+    /// ```
+    #[error("{}", section_axes(*along, *of, *dimension))]
+    SectionAxes {
+        /// The coordinate fixed.
+        along: Axis,
+        /// The coordinate whose range is asked for.
+        of: Axis,
+        /// The number of coordinates of the points.
+        dimension: usize,
+    },
+}
+
+/// The message of [`Error::SectionAxes`].
+fn section_axes(along: Axis, of: Axis, dimension: usize) -> String {
+    if along == of {
+        format!("a section fixes one coordinate and ranges over another; got {along} twice")
+    } else {
+        let bad = if along.index() >= dimension {
+            along
+        } else {
+            of
+        };
+        format!("a section of points with {dimension} coordinates cannot use {bad}")
+    }
 }
 
 /// Numbers shown as [`Num`]s separated by `, `.

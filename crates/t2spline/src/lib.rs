@@ -59,6 +59,10 @@
 //! - [`FuzzyCurve`] and [`FuzzySurface`] (stage 1), [`Solution`] and
 //!   [`SurfaceSolution`] (stages 2–4, both [`Stages`]) and the [`Distance`]
 //!   between the crisp and the defuzzified curve (§7).
+//! - [`interval_weights`]: curves whose weights are uncertain too (§15): at one
+//!   parameter and level, the envelope of each coordinate by Karnik–Mendel,
+//!   the support function, membership of a point and sections of the convex
+//!   set the curve reaches, exact.
 //! - [`capability`]: the operations curves and surfaces share, as traits;
 //!   [`prelude`]: the common types and traits in one import.
 //! - [`fit`]: curves through data or approximating them (interpolation and
@@ -97,6 +101,7 @@ pub mod fit;
 pub mod fuzzy;
 mod golden_section;
 mod heap_key;
+pub mod interval_weights;
 pub mod job;
 mod limits;
 pub mod measure;
