@@ -75,3 +75,10 @@ def test_a_dict_value_with_no_form_in_a_job_file_is_named_by_its_place() -> None
     job["knots"] = {(0, 1): [0, 1]}
     with pytest.raises(TypeError, match=r"^job: knots: a key of type tuple is not a string$"):
         t2spline.run(job)
+
+
+def test_to_json_writes_places_as_the_job_reader_does() -> None:
+    with pytest.raises(TypeError, match=r'^result\["a b"\]\[1\]: a value of type set has no form in JSON$'):
+        t2spline.to_json({"a b": [1, {2}]})
+    with pytest.raises(ValueError, match=r"^result\.y\[1\]: inf is not a finite number"):
+        t2spline.to_json({"y": [1.0, float("inf")]})

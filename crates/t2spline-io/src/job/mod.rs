@@ -17,6 +17,8 @@ mod point;
 mod position;
 mod schema;
 mod surface;
+#[cfg(test)]
+mod tests;
 mod valid;
 mod walker;
 
