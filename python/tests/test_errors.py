@@ -210,7 +210,7 @@ def test_wrong_types_are_type_errors_naming_the_argument() -> None:
         t2spline.NurbsCurve([[0, 0], [1, 1]], degree=2**64)
     job = copy.deepcopy(JOB)
     job["weights"] = {1, 2}
-    with pytest.raises(TypeError, match="^job: a value of type set"):
+    with pytest.raises(TypeError, match=r"^job: weights: a value of type set has no form in a job file$"):
         t2spline.run(job)
 
 

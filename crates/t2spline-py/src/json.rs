@@ -7,6 +7,7 @@ use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyFloat, PyInt, PyList, PyString, PyTuple};
 use serde_json::{Map, Number, Value};
+use t2spline_io::job::{child, element};
 
 /// `json.loads(text)`.
 ///
@@ -19,7 +20,8 @@ pub(crate) fn loads<'py>(py: Python<'py>, text: &str) -> PyResult<Bound<'py, PyA
 /// The JSON value of a Python value: dicts (string keys, in their order),
 /// lists and tuples, numpy arrays and numbers (by ``tolist``), floats, ints,
 /// bools, strings and None. NaN is ``null``, as the result file writes an
-/// absent lower end; infinity is refused.
+/// absent lower end; infinity is refused. Places are written as the I/O
+/// crate writes every place (`result.curves.crisp`, `result["a b"]`).
 fn value(obj: &Bound<'_, PyAny>, path: &str) -> PyResult<Value> {
     if obj.is_none() {
         return Ok(Value::Null);
@@ -54,7 +56,7 @@ fn value(obj: &Bound<'_, PyAny>, path: &str) -> PyResult<Value> {
                 )));
             };
             let key = key.to_cow()?.into_owned();
-            let inner = value(&v, &format!("{path}.{key}"))?;
+            let inner = value(&v, &child(path, &key))?;
             out.insert(key, inner);
         }
         return Ok(Value::Object(out));
@@ -62,7 +64,7 @@ fn value(obj: &Bound<'_, PyAny>, path: &str) -> PyResult<Value> {
     if obj.is_instance_of::<PyList>() || obj.is_instance_of::<PyTuple>() {
         let mut out = Vec::new();
         for (k, item) in obj.try_iter()?.enumerate() {
-            out.push(value(&item?, &format!("{path}[{k}]"))?);
+            out.push(value(&item?, &element(path, k))?);
         }
         return Ok(Value::Array(out));
     }

@@ -30,8 +30,11 @@ pub(crate) const DICT_SOURCE: &str = "<dict>";
 /// numbers), a path is read as `t2spline run` reads it.
 ///
 /// # Errors
-/// `TypeError` for anything else; `JobError` for NaN or infinity in a dict,
-/// each named at its place ([`crate::non_finite`]); the errors of reading a
+/// `TypeError` for anything else, and for a value of a dict that has no form
+/// in a job file, named by its place ([`crate::dict_place`]); `JobError`
+/// for NaN or infinity in a dict,
+/// each named at its place by the I/O crate, as `t2spline run` names them in
+/// a file ([`t2spline_io::job::non_finite`]); the errors of reading a
 /// file.
 pub(crate) fn job_text(job: &Bound<'_, PyAny>) -> PyResult<(String, String)> {
     job_text_named(job, DICT_SOURCE)
@@ -51,11 +54,22 @@ pub(crate) fn job_text_named(
         let kwargs = PyDict::new(py);
         kwargs.set_item("indent", 2)?;
         kwargs.set_item("default", wrap_pyfunction!(json_default, py)?)?;
-        let text: String = json
-            .call_method("dumps", (job,), Some(&kwargs))?
-            .extract()?;
+        let text: String = match json.call_method("dumps", (job,), Some(&kwargs)) {
+            Ok(text) => text.extract()?,
+            Err(e) if e.is_instance_of::<PyTypeError>(py) => {
+                // `json.dumps` names the type alone: name the place too.
+                return Err(match crate::dict_place::unwritable(job, "")? {
+                    Some((place, rule)) => {
+                        let shown = if place.is_empty() { "job" } else { &place };
+                        PyTypeError::new_err(format!("job: {shown}: {rule}"))
+                    }
+                    None => e,
+                });
+            }
+            Err(e) => return Err(e),
+        };
         // `json.dumps` writes NaN and infinity as words that are not JSON.
-        let problems = crate::non_finite::problems(&text);
+        let problems = t2spline_io::job::non_finite(&text);
         if !problems.is_empty() {
             return Err(io_error(
                 py,

@@ -1,5 +1,5 @@
-//! The top-level keys that job and data files read alike, curve or surface:
-//! the known keys, `description`, `order`/`degree`, `alpha`,
+//! The top-level keys that job and data files read alike, curve or surface
+//! (named in [`schema`](super::schema)): `description`, `order`/`degree`, `alpha`,
 //! `lower_height`, `samples` and `type_reduction`; and the place of an error
 //! about a knot vector; `units`, and whether a curve said to be closed
 //! closes (read alike by the validator and the one-pass reading).
@@ -8,30 +8,10 @@ use serde_json::{Map, Value};
 use t2spline::job::{check_samples, LengthUnit, Model};
 use t2spline::{Alpha, Height, TypeReduction};
 
-use super::position::element;
+use super::place::element;
 use super::walker::{kind, suggestion, written, Walker};
 use crate::limits::check_order;
 use crate::printable;
-
-/// The top-level keys of a job file, curve or surface.
-pub(super) const TOP_KEYS: &[&str] = &[
-    "description",
-    "order",
-    "degree",
-    "weights",
-    "knots",
-    "alpha",
-    "type_reduction",
-    "lower_height",
-    "samples",
-    "closed",
-    "units",
-    "points",
-];
-
-/// How a closed curve closes, for the message of one that does not
-/// (docs/method.md §11).
-pub(super) const CLOSURE_RULE: &str = "a closed curve with clamped knots repeats its first control point as its last; with periodic knots (the first 2p spans as long as the last 2p) its last p points repeat its first p";
 
 /// Whether a curve model closes ([`FuzzyCurve::closure_gap`]); a surface
 /// is never asked.

@@ -10,10 +10,15 @@
 #![cfg_attr(not(test), deny(clippy::indexing_slicing))]
 
 mod common;
+mod non_finite;
 pub(crate) mod parse;
+mod place;
 mod point;
 mod position;
+mod schema;
 mod surface;
+#[cfg(test)]
+mod tests;
 mod valid;
 mod walker;
 
@@ -23,6 +28,8 @@ pub use crate::limits::{
     MAX_PROBLEMS, MAX_SURFACE_WORK, MAX_VALUES,
 };
 pub use crate::read::{read_text, read_text_from};
+pub use non_finite::non_finite;
+pub use place::{child, element};
 pub use position::{locate, LineColumn};
 
 use std::path::Path;
@@ -36,7 +43,9 @@ use crate::fit_data::FitData;
 /// messages.
 ///
 /// # Errors
-/// [`Error::Invalid`] listing every problem found: JSON syntax, duplicate,
+/// [`Error::Invalid`] listing every problem found: JSON syntax (a text that
+/// is JSON but for the words `NaN`, `Infinity` or `-Infinity` names each word
+/// at its place instead, as [`non_finite`] does), duplicate,
 /// unknown or missing keys, wrong types, the limits of [`MAX_FILE_BYTES`] and the other `MAX_*` constants, and
 /// every rule of docs/method.md §1, §6, docs/jobs.md and, for a surface job (`points` given as
 /// rows of a net), docs/method.md §8. Each names its line and column (of the key or element

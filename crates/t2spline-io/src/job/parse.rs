@@ -18,31 +18,18 @@ use t2spline::fit::FuzzyData;
 use t2spline::job::{Job, Model, Samples, DEFAULT_SAMPLES};
 use t2spline::{Alpha, FuzzyCurve, KnotVector, Nt2Point, Place};
 
-use super::common::{closure_gap, knot_error_path, CLOSURE_RULE, TOP_KEYS};
+use super::common::{closure_gap, knot_error_path};
+use super::non_finite::non_finite;
+use super::place::element;
 use super::point::{complete, RawPoint};
-use super::position::{self, element, Oversized};
+use super::position::{self, Oversized};
+use super::schema::{CLOSURE_RULE, DATA_KEYS, FIT_MAKES, FIT_MAKES_RULE, TOP_KEYS};
 use super::surface;
 use super::valid;
 use super::walker::{kind, Walker};
 use crate::error::Problem;
 use crate::fit_data::FitData;
 use crate::limits::{MAX_ARRAY, MAX_KEYS, MAX_NESTING, MAX_POINTS, MAX_PROBLEMS, MAX_VALUES};
-
-/// The keys of a data file for `t2spline fit`: those of a job but the two the
-/// fit computes ([`FIT_MAKES`]).
-const DATA_KEYS: &[&str] = &[
-    "description",
-    "order",
-    "degree",
-    "alpha",
-    "type_reduction",
-    "lower_height",
-    "samples",
-    "points",
-];
-
-/// The keys of a job that a data file may not have: the fit makes them.
-const FIT_MAKES: &[&str] = &["weights", "knots"];
 
 /// Parses `text` as a job, or returns every problem found, each with its line
 /// and column.
@@ -114,7 +101,16 @@ fn walk<T>(
             message,
         }]);
     }
-    let value: Value = serde_json::from_str(text).map_err(|e| vec![syntax_problem(text, &e)])?;
+    let value: Value = serde_json::from_str(text).map_err(|e| {
+        // JSON but for `NaN` or `Infinity` in place of numbers: those words
+        // are the problems, named as a dict's are from Python.
+        let words = non_finite(text);
+        if words.is_empty() {
+            vec![syntax_problem(text, &e)]
+        } else {
+            words
+        }
+    })?;
     let mut w = Walker::default();
     let out = read(&mut w, &value);
     let wanted: HashSet<String> = w.problems.iter().map(|(path, _)| path.clone()).collect();
@@ -335,10 +331,7 @@ impl Walker {
         let o = self.object(root, "", "the data file")?;
         for key in FIT_MAKES {
             if o.contains_key(*key) {
-                self.report(
-                    key,
-                    "not allowed in a data file: the fit makes the weights (all 1) and the knots",
-                );
+                self.report(key, FIT_MAKES_RULE);
             }
         }
         self.refused = FIT_MAKES;

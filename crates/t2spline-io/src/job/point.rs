@@ -5,11 +5,9 @@
 use serde_json::Value;
 use t2spline::{Axis, Nt2Number, Nt2Point, Place};
 
-use super::position::{child, element};
+use super::place::{child, element};
+use super::schema::{FUZZY_NUMBER_EXPECTED, FUZZY_NUMBER_KEYS, POINT_KEYS};
 use super::walker::{kind, Walker};
-
-const POINT_KEYS: &[&str] = &["x", "y", "z"];
-const NUMBER_KEYS: &[&str] = &["crisp", "upper", "primary", "lower", "lower_height"];
 
 /// The fuzzy numbers of one point, per axis, once parsed.
 pub(super) type RawPoint = Vec<(Axis, Option<Nt2Number>)>;
@@ -30,7 +28,7 @@ impl Walker {
         coordinates: impl FnOnce(&mut Self, &[&'static str]) -> bool,
     ) -> Option<RawPoint> {
         let o = self.object(item, key, "a point")?;
-        self.unknown_keys(o, key, POINT_KEYS);
+        self.unknown_keys(o, key, &POINT_KEYS);
         let axes: Vec<Axis> = [Axis::X, Axis::Y, Axis::Z]
             .into_iter()
             .filter(|a| o.contains_key(a.name()))
@@ -72,15 +70,12 @@ impl Walker {
         if !v.is_object() {
             self.report(
                 &key,
-                format!(
-                    "expected a fuzzy number (a JSON object, or a number for a crisp one), got {}",
-                    kind(v)
-                ),
+                format!("expected {FUZZY_NUMBER_EXPECTED}, got {}", kind(v)),
             );
             return None;
         }
         let o = self.object(v, &key, "a fuzzy number")?;
-        self.unknown_keys(o, &key, NUMBER_KEYS);
+        self.unknown_keys(o, &key, &FUZZY_NUMBER_KEYS);
         let mut get = |name: &str| {
             let v = o.get(name);
             if v.is_none() {

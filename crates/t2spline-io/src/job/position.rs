@@ -14,55 +14,11 @@
 use std::collections::{HashMap, HashSet};
 use std::fmt::Write;
 
+use super::place::{child, parent};
 use crate::limits::MAX_PROBLEMS;
-use crate::printable::push_escaped;
 
 /// A line and a column, both from 1.
 pub type LineColumn = (usize, usize);
-
-/// The longest key shown in a path before it is cut with `…`.
-const MAX_KEY_CHARS: usize = 40;
-
-/// The path of member `key` of the object at `prefix`: `prefix.key` for plain
-/// keys, and `prefix["…"]` (escaped, at most [`MAX_KEY_CHARS`] characters) for
-/// any other, so that a path never carries control characters to a terminal and
-/// a key such as `"y.upper"` cannot pose as a nested path.
-pub(crate) fn child(prefix: &str, key: &str) -> String {
-    let plain = !key.is_empty()
-        && key.len() <= MAX_KEY_CHARS
-        && key.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_')
-        && !key.as_bytes().first().is_some_and(u8::is_ascii_digit);
-    match (plain, prefix.is_empty()) {
-        (true, true) => key.to_owned(),
-        (true, false) => format!("{prefix}.{key}"),
-        (false, _) => format!("{prefix}[{}]", quote(key)),
-    }
-}
-
-/// The path of element `i` of the array at `prefix`.
-pub(crate) fn element(prefix: &str, i: usize) -> String {
-    format!("{prefix}[{i}]")
-}
-
-/// `key` as a JSON string literal safe to print: quotes, backslashes, control
-/// characters (C0, DEL, C1) and bidirectional-text controls escaped, and cut
-/// after [`MAX_KEY_CHARS`] characters.
-pub(crate) fn quote(key: &str) -> String {
-    let mut out = String::from("\"");
-    for (i, c) in key.chars().enumerate() {
-        if i == MAX_KEY_CHARS {
-            out.push('…');
-            break;
-        }
-        match c {
-            '"' => out.push_str("\\\""),
-            '\\' => out.push_str("\\\\"),
-            c => push_escaped(&mut out, c),
-        }
-    }
-    out.push('"');
-    out
-}
 
 /// A key that appears twice in one object.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -75,6 +31,18 @@ pub(crate) struct Duplicate {
     pub first: LineColumn,
 }
 
+/// A number written as a word that JSON does not have: `NaN`, `Infinity`,
+/// `-Infinity` (as `json.dumps` and other writers put them).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) struct NonFinite {
+    /// The path of the value.
+    pub path: String,
+    /// Where its place is: the key of an object member, else the value.
+    pub at: LineColumn,
+    /// The number, as messages show it: `NaN`, `inf` or `-inf`.
+    pub shown: &'static str,
+}
+
 /// What a scan found.
 #[derive(Debug, Default)]
 pub(crate) struct Scan {
@@ -85,6 +53,13 @@ pub(crate) struct Scan {
     pub duplicates: Vec<Duplicate>,
     /// How many more repeated keys there were.
     pub more_duplicates: usize,
+    /// The first [`MAX_PROBLEMS`] words `NaN`, `Infinity` and `-Infinity`
+    /// where a value belongs, in file order.
+    pub non_finite: Vec<NonFinite>,
+    /// How many more there were.
+    pub more_non_finite: usize,
+    /// Where every one of those words is in the text, in bytes.
+    pub words: Vec<std::ops::Range<usize>>,
 }
 
 impl Scan {
@@ -121,22 +96,9 @@ pub fn locate(text: &str, path: &str) -> LineColumn {
     scan(text, &HashSet::from([path.to_owned()])).locate(path)
 }
 
-/// The path one level up: `a.b[2]` → `a.b` → `a` → `""`; `None` above the root.
-/// Quoted keys (`a["x.y"]`) are cut at the `[` that opens them.
-fn parent(path: &str) -> Option<&str> {
-    if path.is_empty() {
-        return None;
-    }
-    let cut = if path.ends_with("\"]") {
-        path.rfind("[\"")
-    } else {
-        path.rfind(['.', '['])
-    };
-    Some(&path[..cut.unwrap_or(0)])
-}
-
-/// Scans `text` (JSON that `serde_json` accepted) for the positions of the
-/// `wanted` paths and of all their ancestors, and for duplicate keys.
+/// Scans `text` (JSON that `serde_json` accepted, or JSON but for the words
+/// `NaN`, `Infinity` and `-Infinity`) for the positions of the `wanted` paths
+/// and of all their ancestors, for duplicate keys and for those words.
 pub(crate) fn scan(text: &str, wanted: &HashSet<String>) -> Scan {
     // Ancestors too, so that `locate` can fall back from a missing key.
     let mut all: HashSet<&str> = HashSet::new();
@@ -155,11 +117,13 @@ pub(crate) fn scan(text: &str, wanted: &HashSet<String>) -> Scan {
         line: 1,
         column: 1,
         path: String::new(),
+        at: (1, 1),
         wanted: all,
         out: Scan::default(),
     };
     s.skip_space();
-    s.record(s.here());
+    s.at = s.here();
+    s.record(s.at);
     // `None`: the text ended early or broke the grammar; keep what was found.
     let _ = s.value(0);
     s.out
@@ -249,6 +213,8 @@ struct Scanner<'a, 'w> {
     line: usize,
     column: usize,
     path: String,
+    /// The position of the current path (see [`Scan::positions`]).
+    at: LineColumn,
     wanted: HashSet<&'w str>,
     out: Scan,
 }
@@ -304,13 +270,36 @@ impl Scanner<'_, '_> {
             b'[' => self.array(depth),
             b'"' => self.string().map(drop),
             _ => {
+                let start = self.i;
                 while matches!(self.peek(), Some(b) if b.is_ascii_alphanumeric() || matches!(b, b'+' | b'-' | b'.'))
                 {
                     self.bump();
                 }
+                self.word(start);
                 Some(())
             }
         }
+    }
+
+    /// Notes the literal from byte `start` to here if it is a word for a
+    /// number that is not finite.
+    fn word(&mut self, start: usize) {
+        let shown = match self.bytes.get(start..self.i) {
+            Some(b"NaN") => "NaN",
+            Some(b"Infinity") => "inf",
+            Some(b"-Infinity") => "-inf",
+            _ => return,
+        };
+        self.out.words.push(start..self.i);
+        if self.out.non_finite.len() >= MAX_PROBLEMS {
+            self.out.more_non_finite += 1;
+            return;
+        }
+        self.out.non_finite.push(NonFinite {
+            path: self.path.clone(),
+            at: self.at,
+            shown,
+        });
     }
 
     fn object(&mut self, depth: usize) -> Option<()> {
@@ -342,6 +331,7 @@ impl Scanner<'_, '_> {
             }
             self.expect(b':')?;
             self.skip_space();
+            self.at = at;
             self.value(depth + 1)?;
             self.path.truncate(outer);
             self.skip_space();
@@ -367,7 +357,8 @@ impl Scanner<'_, '_> {
         for i in 0.. {
             self.skip_space();
             let _ = write!(self.path, "[{i}]");
-            self.record(self.here());
+            self.at = self.here();
+            self.record(self.at);
             self.value(depth + 1)?;
             self.path.truncate(outer);
             self.skip_space();
@@ -449,23 +440,6 @@ mod tests {
                 first: (1, 2)
             }]
         );
-    }
-
-    #[test]
-    fn odd_keys_are_quoted_escaped_and_cut() {
-        assert_eq!(child("", "alpha"), "alpha");
-        assert_eq!(child("p", "y.upper"), "p[\"y.upper\"]");
-        assert_eq!(
-            child("p", "\u{1b}[31m\u{202e}"),
-            "p[\"\\u001b[31m\\u202e\"]"
-        );
-        assert_eq!(child("", "3d"), "[\"3d\"]");
-        let long = "k".repeat(100);
-        assert_eq!(child("", &long), format!("[\"{}…\"]", "k".repeat(40)));
-        assert_eq!(parent("p[\"a.b[1]\"]"), Some("p"));
-        assert_eq!(parent("points[2].y"), Some("points[2]"));
-        assert_eq!(parent("points"), Some(""));
-        assert_eq!(parent(""), None);
     }
 
     #[test]

@@ -20,14 +20,13 @@ use t2spline::job::{check_grid_samples, Job, Model, Samples, DEFAULT_SURFACE_SAM
 use t2spline::nurbs::net_weight_problems;
 use t2spline::{Direction, Error as CoreError, FuzzySurface, KnotVector, Nt2Point, Place};
 
-use super::common::{knot_error_path, TOP_KEYS};
+use super::common::knot_error_path;
+use super::place::{child, element};
 use super::point::complete;
-use super::position::{child, element};
+use super::schema::{KNOT_DIRECTIONS, TOP_KEYS};
 use super::walker::{kind, written, Walker};
 use crate::fit_data::FitData;
 use crate::limits::{check_net_size, check_surface_work};
-
-const KNOT_KEYS: [&str; 2] = ["u", "v"];
 
 /// Whether the job object `o` is a surface job: more entries of `points` are
 /// arrays (rows of a net) than objects (points of a curve); with as many of
@@ -407,9 +406,9 @@ impl Walker {
             );
             return None;
         };
-        self.unknown_keys(o, "knots", &KNOT_KEYS);
+        self.unknown_keys(o, "knots", &KNOT_DIRECTIONS);
         let mut valid = true;
-        let values = KNOT_KEYS.map(|d| {
+        let values = KNOT_DIRECTIONS.map(|d| {
             let values = o.get(d).map(|v| self.numbers(v, &child("knots", d)));
             valid &= !matches!(values, Some(None));
             values.flatten()

@@ -5,7 +5,7 @@
 
 use serde_json::{Map, Value};
 
-use super::position::{child, element};
+use super::place::{child, element};
 use crate::limits::MAX_PROBLEMS;
 
 /// The validator's state: the first [`MAX_PROBLEMS`] problems, as (JSON path,

@@ -21,16 +21,10 @@ use std::marker::PhantomData;
 use serde::de::{self, DeserializeSeed, Deserializer, MapAccess, SeqAccess, Visitor};
 use t2spline::TypeReduction;
 
-use super::super::common::TOP_KEYS;
+use super::super::schema::{
+    FUZZY_NUMBER_KEYS, FUZZY_NUMBER_REQUIRED, KNOT_DIRECTIONS, POINT_KEYS, TOP_KEYS,
+};
 use crate::limits::{MAX_ARRAY, MAX_KEYS, MAX_VALUES};
-
-/// The keys of a point, by axis.
-const POINT: [&str; 3] = ["x", "y", "z"];
-/// The keys of a fuzzy number, the four required first (as
-/// [`NumberVisitor`] reads them, by place).
-const NUMBER: [&str; 5] = ["crisp", "upper", "primary", "lower", "lower_height"];
-/// The keys of a surface's knots, by direction.
-const DIRECTIONS: [&str; 2] = ["u", "v"];
 
 // No object of a job comes near the limit of keys; arrays and values are
 // counted.
@@ -431,7 +425,7 @@ impl<'de> Visitor<'de> for KnotsSeed<'_> {
         self.0.container()?;
         let mut values = [None, None];
         let mut seen = 0;
-        while let Some(i) = next_key(&mut map, &DIRECTIONS, &mut seen, self.0)? {
+        while let Some(i) = next_key(&mut map, &KNOT_DIRECTIONS, &mut seen, self.0)? {
             let slot = values.get_mut(i).ok_or_else(refuse)?;
             *slot = Some(map.next_value_seed(Numbers(self.0))?);
         }
@@ -555,7 +549,7 @@ impl<'de> Visitor<'de> for PointVisitor<'_> {
         self.0.container()?;
         let mut axes = [None; 3];
         let mut seen = 0;
-        while let Some(i) = next_key(&mut map, &POINT, &mut seen, self.0)? {
+        while let Some(i) = next_key(&mut map, &POINT_KEYS, &mut seen, self.0)? {
             let slot = axes.get_mut(i).ok_or_else(refuse)?;
             *slot = Some(map.next_value_seed(NumberVisitor(self.0))?);
         }
@@ -603,18 +597,21 @@ impl<'de> Visitor<'de> for NumberVisitor<'_> {
             bare: false,
         };
         let mut seen = 0;
-        while let Some(i) = next_key(&mut map, &NUMBER, &mut seen, count)? {
+        while let Some(i) = next_key(&mut map, &FUZZY_NUMBER_KEYS, &mut seen, count)? {
             // `[f64; 2]` refuses other lengths (`serde_json` a third entry).
-            match i {
-                0 => n.crisp = map.next_value()?,
-                1 => n.upper = count.pair().and_then(|()| map.next_value())?,
-                2 => n.primary = count.pair().and_then(|()| map.next_value())?,
-                3 => n.lower = count.pair().and_then(|()| map.next_value())?,
-                _ => n.height = Some(map.next_value()?),
+            // Matched by name, not by place in the list.
+            match FUZZY_NUMBER_KEYS.get(i).copied().unwrap_or_default() {
+                "crisp" => n.crisp = map.next_value()?,
+                "upper" => n.upper = count.pair().and_then(|()| map.next_value())?,
+                "primary" => n.primary = count.pair().and_then(|()| map.next_value())?,
+                "lower" => n.lower = count.pair().and_then(|()| map.next_value())?,
+                "lower_height" => n.height = Some(map.next_value()?),
+                _ => return Err(refuse()),
             }
         }
-        // The first four are required.
-        if seen & 0b1111 != 0b1111 {
+        // The required ones, the first of the keys.
+        let required = (1 << FUZZY_NUMBER_REQUIRED) - 1;
+        if seen & required != required {
             return Err(refuse());
         }
         Ok(n)

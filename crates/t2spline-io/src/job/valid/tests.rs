@@ -5,17 +5,23 @@
 use proptest::prelude::*;
 use serde_json::{json, Value};
 
-use super::super::common::TOP_KEYS;
 use super::super::parse::{parse, parse_walking};
 use super::super::position::{oversized, Oversized};
+use super::super::schema::TOP_KEYS;
 use super::raw;
 use crate::limits::{MAX_ARRAY, MAX_VALUES};
 
-/// Jobs of the repository: the examples, the fixtures and the fuzz seeds.
+/// Jobs of the repository: the examples, the fixtures (the bad jobs too)
+/// and the fuzz seeds.
 pub(super) fn corpus() -> Vec<(String, String)> {
     let root = concat!(env!("CARGO_MANIFEST_DIR"), "/../..");
     let mut files = Vec::new();
-    for dir in ["examples", "fixtures", "fuzz/seeds/job"] {
+    for dir in [
+        "examples",
+        "fixtures",
+        "fixtures/bad-jobs",
+        "fuzz/seeds/job",
+    ] {
         for entry in std::fs::read_dir(format!("{root}/{dir}")).unwrap() {
             let path = entry.unwrap().path();
             if path.extension().is_some_and(|e| e == "json") {
