@@ -7,6 +7,7 @@
 //! the intervals; plans that do not overlap, and a fuzzy x, refused.
 
 mod brute;
+#[allow(dead_code)] // `cumulative` serves the other users of the module.
 mod terrain;
 
 use proptest::prelude::*;

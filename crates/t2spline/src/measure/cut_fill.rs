@@ -1,4 +1,4 @@
-//! The cut and fill between two fuzzy surfaces of one crisp plan map
+//! The cut and fill between two fuzzy surfaces of crisp plan
 //! (docs/method.md §14): the volume where the first lies above the second
 //! and the volume where it lies below, as intervals over the nets whose
 //! heights lie in their cuts.
@@ -24,8 +24,8 @@
 //! difference heights `dₖ = z₁ₖ − z₂ₖ`, and the cut and fill are its volumes
 //! above and below the datum 0 (`volume.rs`): `cut(l₁, r₂) = V_above(l₁ − r₂)`,
 //! `fill(l₁, r₂) = V_below(l₁ − r₂)`, and so on. Plans that differ are
-//! refused ([`Error::PlansDiffer`]): the difference is then no surface of
-//! one plan.
+//! integrated over their overlap (`overlap.rs`): the difference is then no
+//! surface of one plan.
 //!
 //! Forming `dₖ` is one correctly rounded subtraction, off by at most
 //! `ε/2·|dₖ|`, which moves a volume by at most that times the plan area:
@@ -73,13 +73,17 @@ pub(crate) fn second_plan(plan: &Plan, other: &FuzzySurface<3>) -> Result<Option
 pub(crate) fn overlap(one: &Plan, two: Plan, areas: [f64; 2]) -> Result<(Overlap, f64), Error> {
     let overlap = Overlap::new(one.clone(), two);
     let ([area], _) = overlap.area();
-    if !(area > 1e-12 * areas[0].min(areas[1])) {
+    if area.is_nan() || area <= 1e-12 * areas[0].min(areas[1]) {
         return Err(Error::PlansDiffer {
             what: "the plans do not overlap".to_string(),
         });
     }
     Ok((overlap, area))
 }
+
+/// Per level and function: the function, the level, the corner pairs of
+/// nets `[(l₁, r₂), (r₁, l₂)]` and the scale of the tolerance.
+type Pairs = (Membership, f64, [[Vec<f64>; 2]; 2], f64);
 
 /// The cut and fill of `first` over `second` over the overlap of their
 /// plans (`overlap.rs`), at each level, per membership function: the same
@@ -94,7 +98,7 @@ pub(crate) fn cut_fill_overlap(
     levels: &[Alpha],
 ) -> [PerMembership<Vec<Level>>; 2] {
     // Per level and function: the corners (l₁, r₂) and (r₁, l₂).
-    let mut corners: Vec<(Membership, f64, [[Vec<f64>; 2]; 2], f64)> = Vec::new();
+    let mut corners: Vec<Pairs> = Vec::new();
     for m in [Membership::Upper, Membership::Primary, Membership::Lower] {
         for &a in levels {
             let (Some(one), Some(two)) = (

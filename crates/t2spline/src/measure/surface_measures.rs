@@ -14,7 +14,7 @@
 //! A_below ∈ [A_below(right net), A_below(left net)]
 //! ```
 //! The surface area is convex in the heights (`surface_area.rs`). Against a
-//! second surface of the same plan map, the cut and fill (`cut_fill.rs`).
+//! second surface, the cut and fill (`cut_fill.rs`, `overlap.rs`).
 
 use crate::error::{Error, Place};
 use crate::fuzzy::{Alpha, Membership};
@@ -130,7 +130,10 @@ impl FuzzySurface<3> {
     /// [`FuzzySurface::measure`], and the cut and fill between this surface
     /// and `other` (docs/method.md §14): the volumes where this one lies
     /// above and below `other`, each an interval over the nets of both
-    /// surfaces whose heights lie in their cuts, exact,
+    /// surfaces whose heights lie in their cuts, exact where both have one
+    /// plan map, else integrated over the overlap of the two plans to the
+    /// stated tolerance (`gap` the error bound reached, `exact` false where
+    /// it is missed),
     ///
     /// ```text
     /// cut  ∈ [cut(l₁, r₂),  cut(r₁, l₂)],   fill ∈ [fill(r₁, l₂), fill(l₁, r₂)]
@@ -139,9 +142,9 @@ impl FuzzySurface<3> {
     /// without a cut at a level in either surface is left out there.
     ///
     /// # Errors
-    /// As [`FuzzySurface::measure`], and [`Error::PlansDiffer`] unless both
-    /// surfaces have one plan map: the same degrees, knots and weights and
-    /// the same crisp x and y at every control point.
+    /// As [`FuzzySurface::measure`], and [`Error::PlansDiffer`] where x or
+    /// y of `other` is fuzzy or the two plans do not overlap;
+    /// [`Error::NotAGraph`] where `other`'s plan map folds.
     ///
     /// # Examples
     /// Two planes over the square [0, 2]², `z₁ = x` and `z₂ = 1` crisp:
