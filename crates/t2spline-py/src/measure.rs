@@ -3,8 +3,9 @@
 //! points inside their cuts) as the dict `t2spline measure` writes, every
 //! list of numbers a numpy array, which shows the `measures` figure in a
 //! notebook; `FuzzySurface.measure`: the volumes, plan area and surface
-//! area of §14, and with `against` the cut and fill between two surfaces of
-//! one plan map, as the command writes them for a surface.
+//! area of §14, and with `against` the cut and fill between two surfaces
+//! (of one plan map, or over the overlap of their plans), as the command
+//! writes them for a surface.
 
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;

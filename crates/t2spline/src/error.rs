@@ -1218,10 +1218,10 @@ pub enum Error {
         rule: &'static str,
     },
 
-    /// The cut and fill between two surfaces (docs/method.md §14) need one
-    /// plan map for both: the same degrees, knots and weights and the same
-    /// crisp x and y at every control point. `what` names the first
-    /// difference found (in the second surface).
+    /// The cut and fill between two surfaces (docs/method.md §14) need
+    /// crisp x and y in both and plans that overlap (of positive area).
+    /// `what` names the fuzzy coordinate of the second surface, or says
+    /// that the plans do not overlap.
     ///
     /// ```
     /// # use t2spline::{Error, FuzzySurface, Nt2Number, Nt2Point};
@@ -1230,13 +1230,15 @@ pub enum Error {
     /// let p = |x: f64, y: f64| Ok::<_, Error>(Nt2Point::new([c(x)?, c(y)?, c(0.0)?]));
     /// let net = |w: f64| Ok::<_, Error>(vec![vec![p(0.0, 0.0)?, p(0.0, w)?], vec![p(2.0, 0.0)?, p(2.0, w)?]]);
     /// let a = FuzzySurface::try_new([1, 1], net(2.0)?, vec![vec![1.0; 2]; 2], [None, None])?;
-    /// let b = FuzzySurface::try_new([1, 1], net(3.0)?, vec![vec![1.0; 2]; 2], [None, None])?;
+    /// let q = |x: f64, y: f64| Ok::<_, Error>(Nt2Point::new([c(x)?, c(y)?, c(0.0)?]));
+    /// let far = vec![vec![q(5.0, 0.0)?, q(5.0, 2.0)?], vec![q(7.0, 0.0)?, q(7.0, 2.0)?]];
+    /// let b = FuzzySurface::try_new([1, 1], far, vec![vec![1.0; 2]; 2], [None, None])?;
     /// let e = a.measure_against(&b, &SurfaceMeasureOptions::uniform(2)?).unwrap_err();
-    /// assert_eq!(e.to_string(), "the two surfaces' plans differ (y of points[0][1]: 3, not 2): cut and fill need one plan map for both surfaces");
+    /// assert_eq!(e.to_string(), "the two surfaces' plans cannot be compared (the plans do not overlap): cut and fill need crisp x and y in both surfaces and plans that overlap");
     /// # Ok::<(), Error>(())
     /// ```
     #[error(
-        "the two surfaces' plans differ ({what}): cut and fill need one plan map for both surfaces"
+        "the two surfaces' plans cannot be compared ({what}): cut and fill need crisp x and y in both surfaces and plans that overlap"
     )]
     PlansDiffer {
         /// What differs: `degree in u`, `knots in v`, `net shape`,

@@ -65,7 +65,7 @@ pub fn measure(args: &MeasureArgs) -> anyhow::Result<()> {
                 Error::PlansDiffer { what } => {
                     let path = against.as_ref().map_or(args.job.as_path(), |a| a.0);
                     anyhow::anyhow!(
-                        "--against {}: its plan differs from {}'s ({what}); cut and fill need one plan map for both surfaces",
+                        "--against {}: its plan cannot be compared with {}'s ({what}); cut and fill need crisp x and y in both surfaces and plans that overlap",
                         shown(path),
                         shown(&args.job)
                     )

@@ -7,6 +7,21 @@ use crate::measure::bracket::Bracket;
 use crate::measure::measures::{nested, Level, PerMembership};
 use crate::measure::volume::VOLUME_TOLERANCE;
 
+/// `f` of each item, on rayon's pool with the feature `parallel` (the
+/// extreme nets are independent; each result is computed by the same
+/// operations either way), in order.
+pub(super) fn each<T: Sync, R: Send>(items: &[T], f: impl Fn(&T) -> R + Sync + Send) -> Vec<R> {
+    #[cfg(feature = "parallel")]
+    {
+        use rayon::prelude::*;
+        items.par_iter().map(f).collect()
+    }
+    #[cfg(not(feature = "parallel"))]
+    {
+        items.iter().map(f).collect()
+    }
+}
+
 /// The levels of each function from their brackets, nested across levels
 /// and functions (`measures::nested`); a level without a bracket is left out.
 pub(super) fn finish(l: PerMembership<Vec<(f64, Option<Bracket>)>>) -> PerMembership<Vec<Level>> {

@@ -2,7 +2,7 @@
 //! tangent angle, arc length, area and curvature as type-2 fuzzy quantities;
 //! and on a fuzzy surface of crisp plan (§14): the volumes above and below a
 //! plane, the plan area below it and the surface area, and the cut and fill
-//! between two surfaces of one plan.
+//! between two surfaces (of one plan map, or over their plans' overlap).
 //!
 //! For a quantity `Q` of the control points (weights and knots crisp), a
 //! membership function `m` and a level `alpha`, the value is the interval
@@ -39,9 +39,11 @@ mod cut_box;
 mod cut_fill;
 mod derivative;
 mod extreme_nets;
+mod inverse;
 mod length;
 mod measures;
 mod options;
+mod overlap;
 mod plan;
 mod roots;
 mod rule;

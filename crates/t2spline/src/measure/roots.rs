@@ -10,7 +10,7 @@
 
 /// The value at `s` by de Casteljau's algorithm (on the stack up to 16
 /// coefficients).
-pub(crate) fn eval(c: &[f64], s: f64) -> f64 {
+fn eval(c: &[f64], s: f64) -> f64 {
     let n = c.len();
     let mut stack = [0.0; 16];
     let mut heap = Vec::new();
@@ -90,10 +90,100 @@ pub(crate) fn sign_changes_in_unit(c: &[f64]) -> Vec<f64> {
     out
 }
 
-/// [`sign_changes_in_unit`] appended to `out` (no allocation when `out`
-/// has room).
-pub(crate) fn sign_changes_into(c: &[f64], out: &mut Vec<f64>) {
-    roots(c, out);
+/// [`sign_changes_in_unit`] appended to `out`, for a polynomial given both ways: its Bernstein
+/// coefficients `c` count the sign changes, its power coefficients `a`
+/// (`Σ aₖ·sᵏ`, the same polynomial) give the values by Horner's rule, a
+/// third of de Casteljau's work at degree 3.
+pub(crate) fn sign_changes_power_into(c: &[f64], a: &[f64], out: &mut Vec<f64>) {
+    roots_power(c, a, out);
+}
+
+/// The value of the power form `Σ aₖ·sᵏ` at `s` by Horner's rule.
+pub(crate) fn horner(a: &[f64], s: f64) -> f64 {
+    a.iter().rev().fold(0.0, |v, &x| v * s + x)
+}
+
+fn roots_power(c: &[f64], a: &[f64], out: &mut Vec<f64>) {
+    let n = c.len();
+    let changes = sign_changes(c);
+    if changes == 0 || n < 2 || a.len() != n {
+        return;
+    }
+    let (first, last) = (c[0], c[n - 1]);
+    if changes == 1 && first != 0.0 && last != 0.0 {
+        // Start where the chord through the ends crosses zero.
+        let chord = first / (first - last);
+        let start = if chord > 0.0 && chord < 1.0 {
+            chord
+        } else {
+            0.5
+        };
+        out.push(bracketed_by(
+            |x| horner_slope(a, x),
+            [0.0, 1.0],
+            first > 0.0,
+            start,
+        ));
+        return;
+    }
+    // Monotone pieces between the derivative's sign changes (as `roots`).
+    let degree = (n - 1) as f64;
+    let slope: Vec<f64> = c.windows(2).map(|w| degree * (w[1] - w[0])).collect();
+    let slope_power: Vec<f64> = a
+        .iter()
+        .enumerate()
+        .skip(1)
+        .map(|(k, x)| k as f64 * x)
+        .collect();
+    let mut ends = vec![0.0];
+    roots_power(&slope, &slope_power, &mut ends);
+    ends.push(1.0);
+    let mut previous = (0.0, first);
+    for &x in &ends[1..] {
+        let fx = if x == 1.0 { last } else { horner(a, x) };
+        let (lo, fa) = previous;
+        if x > lo && fa != 0.0 && fx != 0.0 && (fa > 0.0) != (fx > 0.0) {
+            let guess = |e: f64, toward: f64| {
+                let (f, _, f2) = horner_slopes(a, e);
+                e + toward * (-2.0 * f / f2).sqrt()
+            };
+            let start = if fa.abs() <= fx.abs() && lo > 0.0 {
+                guess(lo, 1.0)
+            } else if x < 1.0 {
+                guess(x, -1.0)
+            } else {
+                0.5 * (lo + x)
+            };
+            let start = if start > lo && start < x {
+                start
+            } else {
+                0.5 * (lo + x)
+            };
+            out.push(bracketed_by(
+                |t| horner_slope(a, t),
+                [lo, x],
+                fa > 0.0,
+                start,
+            ));
+        } else if fx == 0.0 && x > 0.0 && x < 1.0 {
+            out.push(x);
+        }
+        previous = (x, fx);
+    }
+}
+
+/// The value and the slope of the power form at `s` by Horner's rule.
+fn horner_slope(a: &[f64], s: f64) -> (f64, f64) {
+    a.iter()
+        .rev()
+        .fold((0.0, 0.0), |(v, d), &x| (v * s + x, d * s + v))
+}
+
+/// The value and the first two derivatives of the power form at `s`.
+fn horner_slopes(a: &[f64], s: f64) -> (f64, f64, f64) {
+    a.iter().rev().fold((0.0, 0.0, 0.0), |(v, d, d2), &x| {
+        (v * s + x, d * s + v, d2 * s + 2.0 * d)
+    })
 }
 
 fn sign_changes(c: &[f64]) -> usize {
@@ -168,10 +258,20 @@ fn roots(c: &[f64], out: &mut Vec<f64>) {
 
 /// The one root in `[lo, hi]`, where the polynomial is positive at `lo`
 /// exactly when `positive_at_lo`.
-fn bracketed(c: &[f64], [mut lo, mut hi]: [f64; 2], positive_at_lo: bool, start: f64) -> f64 {
+fn bracketed(c: &[f64], bracket: [f64; 2], positive_at_lo: bool, start: f64) -> f64 {
+    bracketed_by(|x| eval_and_slope(c, x), bracket, positive_at_lo, start)
+}
+
+/// [`bracketed`] with the value and slope from `f`.
+fn bracketed_by(
+    f: impl Fn(f64) -> (f64, f64),
+    [mut lo, mut hi]: [f64; 2],
+    positive_at_lo: bool,
+    start: f64,
+) -> f64 {
     let mut x = start;
     for _ in 0..200 {
-        let (f, slope) = eval_and_slope(c, x);
+        let (f, slope) = f(x);
         if f == 0.0 {
             return x;
         }
@@ -214,5 +314,13 @@ mod tests {
         for (x, want) in r.iter().zip([0.2, 0.5, 0.9]) {
             assert!((x - want).abs() < 1e-14, "{r:?}");
         }
+        // The same by Horner's rule on the power form.
+        let mut p = Vec::new();
+        sign_changes_power_into(&beta, &[a, b, c, d], &mut p);
+        assert_eq!(p.len(), 3, "{p:?}");
+        for (x, y) in p.iter().zip(&r) {
+            assert!((x - y).abs() < 1e-14, "{p:?}");
+        }
+        assert!((horner(&[a, b, c, d], 0.3) - f(0.3)).abs() < 1e-15);
     }
 }

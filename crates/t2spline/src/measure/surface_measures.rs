@@ -14,14 +14,14 @@
 //! A_below ∈ [A_below(right net), A_below(left net)]
 //! ```
 //! The surface area is convex in the heights (`surface_area.rs`). Against a
-//! second surface of the same plan map, the cut and fill (`cut_fill.rs`).
+//! second surface, the cut and fill (`cut_fill.rs`, `overlap.rs`).
 
 use crate::error::Error;
 use crate::fuzzy::Membership;
 use crate::measure::bracket::Bracket;
 use crate::measure::cut_box::CutBox;
-use crate::measure::cut_fill::{cut_fill, same_plan};
-use crate::measure::extreme_nets::{finish, from_nets};
+use crate::measure::cut_fill::{cut_fill, cut_fill_overlap, overlap, second_plan};
+use crate::measure::extreme_nets::{each, finish, from_nets};
 use crate::measure::measures::{Level, PerMembership};
 use crate::measure::options::SurfaceMeasureOptions;
 use crate::measure::plan::Plan;
@@ -102,7 +102,10 @@ impl FuzzySurface<3> {
     /// [`FuzzySurface::measure`], and the cut and fill between this surface
     /// and `other` (docs/method.md §14): the volumes where this one lies
     /// above and below `other`, each an interval over the nets of both
-    /// surfaces whose heights lie in their cuts, exact,
+    /// surfaces whose heights lie in their cuts, exact where both have one
+    /// plan map, else integrated over the overlap of the two plans to the
+    /// stated tolerance (`gap` the error bound reached, `exact` false where
+    /// it is missed),
     ///
     /// ```text
     /// cut  ∈ [cut(l₁, r₂),  cut(r₁, l₂)],   fill ∈ [fill(r₁, l₂), fill(l₁, r₂)]
@@ -111,9 +114,9 @@ impl FuzzySurface<3> {
     /// without a cut at a level in either surface is left out there.
     ///
     /// # Errors
-    /// As [`FuzzySurface::measure`], and [`Error::PlansDiffer`] unless both
-    /// surfaces have one plan map: the same degrees, knots and weights and
-    /// the same crisp x and y at every control point.
+    /// As [`FuzzySurface::measure`], and [`Error::PlansDiffer`] where x or
+    /// y of `other` is fuzzy or the two plans do not overlap;
+    /// [`Error::NotAGraph`] where `other`'s plan map folds.
     ///
     /// # Examples
     /// Two planes over the square [0, 2]², `z₁ = x` and `z₂ = 1` crisp:
@@ -151,19 +154,29 @@ impl FuzzySurface<3> {
     ) -> Result<SurfaceMeasures, Error> {
         let plan = Plan::of(self)?;
         plan.check_graph()?;
-        if let Some(other) = other {
-            same_plan(&plan, other)?;
-        }
+        let second = match other {
+            Some(other) => Some((other, second_plan(&plan, other)?)),
+            None => None,
+        };
         let crisp: Vec<f64> = self
             .points()
             .iter()
             .map(|p| p.coords()[2].crisp())
             .collect();
         let area_rule = options.area().then(|| AreaRule::new(&plan, &crisp));
+        let one = second
+            .as_ref()
+            .is_some_and(|(_, two)| two.is_some())
+            .then(|| plan.clone());
         let form = VolumeForm::new(plan);
-        let [cut, fill] = match other {
-            Some(other) => cut_fill(&form, self, other, options.levels()).map(Some),
-            None => [None, None],
+        let [cut, fill] = match (second, one) {
+            (Some((other, Some(two))), Some(one)) => {
+                let areas = [form.area[0], VolumeForm::new(two.clone()).area[0]];
+                let (overlap, area) = overlap(&one, two, areas)?;
+                cut_fill_overlap(&overlap, area, self, other, options.levels()).map(Some)
+            }
+            (Some((other, _)), _) => cut_fill(&form, self, other, options.levels()).map(Some),
+            (None, _) => [None, None],
         };
         let boxes: Boxes = PerMembership::from_fn(|m| {
             options
@@ -174,18 +187,33 @@ impl FuzzySurface<3> {
         });
         let datum = options.datum();
         let plan_area = form.area[0];
+        // Every extreme net of every level and function, evaluated on
+        // rayon's pool (`each`): two per cut.
+        let cuts: Vec<(Membership, f64, [Vec<f64>; 2])> =
+            [Membership::Upper, Membership::Primary, Membership::Lower]
+                .into_iter()
+                .flat_map(|m| {
+                    boxes
+                        .get(m)
+                        .iter()
+                        .map(move |(a, cut)| (m, *a, heights(cut).0))
+                })
+                .collect();
+        let all: Vec<&[f64]> = cuts
+            .iter()
+            .flat_map(|(_, _, [lo, hi])| [lo.as_slice(), hi.as_slice()])
+            .collect();
+        let volumes = each(&all, |z| form.eval(z, datum));
         let nets: PerMembership<Vec<(f64, [Volumes; 2], f64)>> = PerMembership::from_fn(|m| {
-            boxes
-                .get(m)
-                .iter()
-                .map(|(a, cut)| {
-                    let ([lo, hi], _) = heights(cut);
+            cuts.iter()
+                .zip(volumes.chunks_exact(2))
+                .filter(|((n, _, _), _)| *n == m)
+                .map(|((_, a, [lo, hi]), v)| {
                     let depth = lo
                         .iter()
-                        .chain(&hi)
+                        .chain(hi)
                         .fold(0.0_f64, |d, z| d.max((z - datum).abs()));
-                    let nets = [form.eval(&lo, datum), form.eval(&hi, datum)];
-                    (*a, nets, plan_area * depth)
+                    (*a, [v[0], v[1]], plan_area * depth)
                 })
                 .collect()
         });

@@ -22,7 +22,7 @@
 //! its greatest depth.
 
 use crate::cubature::gauss_legendre;
-use crate::measure::crossing::{Patch, Rules};
+use crate::measure::crossing::{Patch, Rules, Scratch};
 use crate::measure::plan::{Basis1, Plan};
 
 /// The relative tolerance aimed at by the volumes and the plan area.
@@ -202,6 +202,7 @@ impl VolumeForm {
         let nv = self.plan.nv;
         let (mut below, mut above, mut plan_below) = ([0.0; 2], [0.0; 2], [0.0; 2]);
         let mut local = vec![0.0; ku * kv];
+        let mut scratch = Scratch::new([ku, kv]);
         for (s, patch) in self.spans.iter().zip(&self.patches) {
             let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
             let (mut fine, mut coarse) = (0.0, 0.0);
@@ -259,7 +260,7 @@ impl VolumeForm {
                         CROSSING_TOLERANCE * depth * s.area[0],
                         CROSSING_TOLERANCE * s.area[0],
                     ];
-                    let (v, e) = patch.below(&b, &self.rules, tolerance);
+                    let (v, e) = patch.below(&b, &self.rules, tolerance, &mut scratch);
                     // V_above = V_below + value on this span.
                     below[0] += v[0];
                     below[1] += e[0];
