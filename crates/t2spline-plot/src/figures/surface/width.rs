@@ -6,7 +6,7 @@
 use super::bins::Bins;
 use super::plan_tiles::tiles;
 use crate::chart::paint::Fill;
-use crate::chart::scene::{Figure, LegendEntry, Mark, Panel, Priority};
+use crate::chart::scene::{Figure, LegendEntry, Mark, Panel};
 use crate::chart::ticks::short;
 use crate::terrain_view::WidthMap;
 
@@ -41,10 +41,11 @@ pub fn width_figure(map: &WidthMap, heights: &[f64], every_panel: bool) -> Figur
         p.push("cells", Mark::Tiles { tiles: t });
         let label = match widths {
             Some(_) => Mark::Empty,
-            None => Mark::Label {
-                anchor: [0.5 * (x0 + x1), 0.5 * (y0 + y1)],
+            // A fixed text, not a placed label: a placed one has a part
+            // of its own, and the report's frames must keep their parts.
+            None => Mark::Text {
+                at: [0.5 * (x0 + x1), 0.5 * (y0 + y1)],
                 text: format!("no cut at α = {alpha}"),
-                priority: Priority::Always,
             },
         };
         p.push("absent", label);
