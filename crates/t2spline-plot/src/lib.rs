@@ -73,6 +73,7 @@ mod measure_view;
 mod output;
 mod report;
 mod set_view;
+mod terrain_view;
 
 pub use chart::geometry::{Px, Rect};
 pub use chart::labels::{place as place_labels, Placed};
@@ -89,12 +90,15 @@ pub use error::Error;
 pub use figures::surface::View;
 pub use figures::{
     all_figures, measures_notebook_figure, notebook_figures, number_notebook_figure, palette,
-    region_notebook_figure, section_notebook_figure, Aspect, FigureOptions, NumberChoice, Stages,
-    FIGURE_NAMES, MEASURES_MAX_POINTS, NOTEBOOK_MAX_REGION_POINTS, NOTEBOOK_MAX_SAMPLES,
-    NOTEBOOK_SURFACE_GRID,
+    region_notebook_figure, section_notebook_figure, terrain_figures, terrain_left_out, Aspect,
+    FigureOptions, NumberChoice, Stages, TerrainFigures, FIGURE_NAMES, MEASURES_MAX_POINTS,
+    NOTEBOOK_MAX_REGION_POINTS, NOTEBOOK_MAX_SAMPLES, NOTEBOOK_SURFACE_GRID, TERRAIN_FIGURE_NAMES,
 };
 pub use output::{render_files, Format};
 pub use report::{render as render_report, Stops, DATA_BUDGET, MAX_FILE_GRID, MAX_FILE_SAMPLES};
+pub use terrain_view::{
+    DATUM, SURFACE_AREA_LEVELS, SURFACE_AREA_MAX_POINTS, TERRAIN_MEASURE_LEVELS, WIDTH_MAP_CELLS,
+};
 
 /// The colours of the figures: the Okabe–Ito palette, distinguishable with
 /// the common colour-vision deficiencies, and greys.

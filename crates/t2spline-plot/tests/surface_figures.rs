@@ -7,7 +7,8 @@ use std::path::{Path, PathBuf};
 use t2spline::job::Job;
 use t2spline::{Alpha, Axis};
 use t2spline_plot::{
-    all_figures, render_svg, Error, Figure, FigureOptions, Mark, NumberChoice, View,
+    all_figures, render_svg, terrain_left_out, Error, Figure, FigureOptions, Mark, NumberChoice,
+    View, TERRAIN_FIGURE_NAMES,
 };
 
 #[allow(dead_code)]
@@ -64,7 +65,13 @@ fn every_stage_of_a_surface_job_is_drawn() {
         let job = read(path);
         let figs = figures(&job, FigureOptions::default());
         let names: Vec<&str> = figs.iter().map(|f| f.name).collect();
-        assert_eq!(names, NAMES, "{path}");
+        // The terrain has its terrain figures after the stages; the
+        // cylinder (a fuzzy plan, not the graph of a height) has none.
+        let mut want = NAMES.to_vec();
+        if path.contains("terrain") {
+            want.extend(TERRAIN_FIGURE_NAMES);
+        }
+        assert_eq!(names, want, "{path}");
         for fig in &figs {
             let svg = render_svg(fig);
             let texts = texts(&svg);
@@ -238,4 +245,116 @@ fn large_nets_draw_a_capped_grid_whatever_the_samples() {
         .notes
         .iter()
         .any(|n| n.contains("interval bars left out")));
+}
+
+/// The number after `prefix` in `text` (`−` read as a minus sign).
+fn number_after(text: &str, prefix: &str) -> f64 {
+    let at = text
+        .find(prefix)
+        .unwrap_or_else(|| panic!("{prefix:?} in {text:?}"))
+        + prefix.len();
+    let n: String = text[at..]
+        .replace('−', "-")
+        .chars()
+        .take_while(|c| c.is_ascii_digit() || matches!(c, '.' | '-' | 'e' | '+'))
+        .collect();
+    n.parse()
+        .unwrap_or_else(|_| panic!("a number after {prefix:?} in {text:?}"))
+}
+
+#[test]
+fn terrain_figures_hold_what_the_core_says() {
+    let alpha = Alpha::try_new(0.5).unwrap();
+    for path in [
+        "examples/fuzzy-terrain.json",
+        "examples/salish-sea-seabed.json",
+    ] {
+        let job = read(path);
+        let figs = all_figures(&job, alpha, &FigureOptions::default()).unwrap();
+        let by = |name: &str| figs.iter().find(|f| f.name == name).unwrap();
+        for name in TERRAIN_FIGURE_NAMES {
+            let svg = render_svg(by(name));
+            let texts = texts(&svg);
+            for entry in &by(name).legend {
+                assert!(
+                    texts.contains(&entry.label),
+                    "{path} {name}: {:?}",
+                    entry.label
+                );
+            }
+        }
+        // The width at a plan point is Σ R·(right − left) of the heights'
+        // cuts with R ≥ 0 summing to 1: at most the widest cut at α, at
+        // least the narrowest.
+        let t2spline::job::Model::Surface(s) = &job.model else {
+            panic!()
+        };
+        let cut_widths: Vec<f64> = s
+            .points()
+            .iter()
+            .map(|p| p.coords()[2].alpha_cut(alpha).upper().width())
+            .collect();
+        let widest = cut_widths.iter().copied().fold(0.0, f64::max);
+        let narrowest = cut_widths.iter().copied().fold(f64::INFINITY, f64::min);
+        let width = by("envelope-width");
+        let bar = width.colorbar.as_ref().unwrap();
+        let (max, label) = &bar.marks[0];
+        assert!(
+            *max <= widest * (1.0 + 1e-12) && *max >= narrowest,
+            "{path}: {max} {widest}"
+        );
+        assert_eq!(
+            number_after(label, "max "),
+            number_after(&width.subtitle, "largest width ")
+        );
+        // Lower function at 0.5 (h ≥ 0.5 in both jobs): three panels.
+        assert_eq!(width.panels.len(), 3, "{path}");
+        // The bands nest: upper ⊇ primary ⊇ lower, so their areas do.
+        let shore = by("shoreline");
+        let note = &shore.notes[0];
+        let areas = ["upper ", "primary ", "lower "].map(|k| number_after(note, k));
+        assert!(
+            areas[0] >= areas[1] && areas[1] >= areas[2],
+            "{path}: {areas:?}"
+        );
+        let measures = by("terrain-measures");
+        if path.contains("salish") {
+            // The seabed crosses z = 0: bands and a crisp shoreline.
+            assert!(areas[2] > 0.0, "{path}: {areas:?}");
+            let crisp = shore.panels[0]
+                .items
+                .iter()
+                .find(|i| i.key == "crisp")
+                .unwrap();
+            assert!(matches!(crisp.mark, Mark::Line { .. }));
+            // 320 control points: the surface area is left out, and said so.
+            assert_eq!(measures.panels.len(), 3);
+            assert!(measures
+                .notes
+                .iter()
+                .any(|n| n.contains("Surface area left out")));
+        } else {
+            // The terrain lies some 100 above z = 0: no band.
+            assert_eq!(areas, [0.0; 3]);
+            assert_eq!(measures.panels.len(), 4);
+            // Nothing lies below z = 0: the volume below is 0 at every level.
+            let Mark::Line { points, .. } = &measures.panels[0].items[2].mark else {
+                panic!()
+            };
+            assert!(points.iter().all(|p| p[0] == 0.0), "{points:?}");
+        }
+    }
+}
+
+#[test]
+fn a_surface_that_is_not_a_terrain_says_why() {
+    let job = read("examples/fuzzy-cylinder.json");
+    let why = terrain_left_out(&job)
+        .unwrap()
+        .expect("the cylinder is not a terrain");
+    assert!(why.contains("fuzzy"), "{why}");
+    assert_eq!(
+        terrain_left_out(&read("examples/fuzzy-terrain.json")).unwrap(),
+        None
+    );
 }

@@ -3,7 +3,9 @@
 
 use t2spline::job::Job;
 use t2spline::Axis;
-use t2spline_plot::{all_figures, render_files, Aspect, FigureOptions, Format, NumberChoice};
+use t2spline_plot::{
+    all_figures, render_files, terrain_left_out, Aspect, FigureOptions, Format, NumberChoice,
+};
 
 use super::prepare::{note_alpha, prepare, reduction_overrides, OptionError};
 use crate::clash::Claims;
@@ -117,6 +119,14 @@ pub fn plot(args: &PlotArgs) -> anyhow::Result<()> {
     // nothing; the paths written go to standard output.
     let figures =
         all_figures(job, alpha, &figure_options(&args.figures, job)?).map_err(about_number)?;
+    if job.model.is_surface() {
+        if let Some(reason) = terrain_left_out(job)? {
+            crate::output::note(
+                "plot",
+                format!("the terrain figures (envelope-width, shoreline, terrain-measures) are left out: {reason}"),
+            );
+        }
+    }
     let files = render_files(&figures, format)?;
     crate::output::refuse_extension(
         "--output",

@@ -8,7 +8,7 @@
 //! bracket's width.
 
 use t2spline::job::Job;
-use t2spline::measure::{AreaKind, Level};
+use t2spline::measure::{AreaKind, Level, PerMembership};
 use t2spline::Layer;
 
 use super::number::rules;
@@ -29,7 +29,13 @@ pub fn traced(levels: &[Level]) -> Vec<Xy> {
 
 /// The largest bracket gap of a quantity's cuts, `None` where all are exact.
 fn widest_gap(q: &FuzzyQuantity) -> Option<f64> {
-    [&q.levels.upper, &q.levels.primary, &q.levels.lower]
+    widest_gap_of(&q.levels)
+}
+
+/// The largest bracket gap of cuts per function, `None` where all are exact.
+#[must_use]
+pub fn widest_gap_of(levels: &PerMembership<Vec<Level>>) -> Option<f64> {
+    [&levels.upper, &levels.primary, &levels.lower]
         .into_iter()
         .flatten()
         .filter(|l| !l.exact)
@@ -39,13 +45,21 @@ fn widest_gap(q: &FuzzyQuantity) -> Option<f64> {
 
 /// One panel: the footprint, the three functions, h and the crisp value.
 fn panel(name: &str, q: &FuzzyQuantity) -> Panel {
+    quantity_panel(name, &q.levels, q.crisp)
+}
+
+/// The panel of a fuzzy quantity `name` traced by its cuts `levels`: the
+/// footprint, the three functions, h and the value `crisp` of the crisp
+/// curve or surface.
+#[must_use]
+pub fn quantity_panel(name: &str, levels: &PerMembership<Vec<Level>>, crisp: f64) -> Panel {
     let mut p = Panel::graph(name, "membership grade");
     p.title = Some(format!("fuzzy {name}"));
     p.y_range = Some([-0.07, 1.12]);
     let (u, pr, l) = (
-        traced(&q.levels.upper),
-        traced(&q.levels.primary),
-        traced(&q.levels.lower),
+        traced(&levels.upper),
+        traced(&levels.primary),
+        traced(&levels.lower),
     );
     p.push(
         "fou",
@@ -54,7 +68,7 @@ fn panel(name: &str, q: &FuzzyQuantity) -> Panel {
             fill: upper_band(),
         },
     );
-    if let Some(top) = q.levels.lower.last() {
+    if let Some(top) = levels.lower.last() {
         rules(&mut p, top.alpha);
     }
     for (key, points, layer) in [
@@ -73,15 +87,15 @@ fn panel(name: &str, q: &FuzzyQuantity) -> Panel {
     p.push(
         "crisp",
         Mark::Markers {
-            points: vec![[q.crisp, 1.0]],
+            points: vec![[crisp, 1.0]],
             marker: crisp_marker(),
         },
     );
     p.push(
         "crisp-text",
         Mark::Label {
-            anchor: [q.crisp, 1.0],
-            text: format!("crisp {}", short(q.crisp, 4)),
+            anchor: [crisp, 1.0],
+            text: format!("crisp {}", short(crisp, 4)),
             priority: Priority::Always,
         },
     );
@@ -91,6 +105,12 @@ fn panel(name: &str, q: &FuzzyQuantity) -> Panel {
 /// The legend: the functions as the `number` figure names them, the
 /// crisp curve's value.
 fn legend() -> Vec<LegendEntry> {
+    legend_of("crisp curve's value")
+}
+
+/// The legend of a figure of fuzzy quantities, the crisp value named `crisp`.
+#[must_use]
+pub fn legend_of(crisp: &str) -> Vec<LegendEntry> {
     vec![
         LegendEntry::line("UMF (upper)", layer_stroke(Layer::UpperLeft)),
         LegendEntry::line("primary MF", layer_stroke(Layer::PrimaryLeft)),
@@ -99,7 +119,7 @@ fn legend() -> Vec<LegendEntry> {
             layer_stroke(Layer::LowerLeft),
         ),
         LegendEntry::area("footprint of uncertainty", upper_band()),
-        LegendEntry::marker("crisp curve's value", crisp_marker()),
+        LegendEntry::marker(crisp, crisp_marker()),
     ]
 }
 

@@ -14,6 +14,9 @@
 //! | `measures` | the fuzzy arc length and (plane curves) area as fuzzy numbers, the crisp curve's values marked | docs/method.md §11 |
 //! | `membership` | plane curves: `mu_upper` and `mu_lower` in the plane as maps, region outlines as contours | docs/method.md §10 |
 //! | `section` | plane curves: the fuzzy value of y at a station `x = x0` | docs/method.md §10 |
+//! | `envelope-width` | terrains: greatest − least height over the plan at α, per function | docs/method.md §12 |
+//! | `shoreline` | terrains: the fuzzy contour at z = 0 per function over the crisp contour map | docs/method.md §13 |
+//! | `terrain-measures` | terrains: volumes about z = 0, plan area below, surface area as fuzzy numbers | docs/method.md §14 |
 //!
 //! Stages 2–4 follow the run's type reduction (docs/method.md §9); `alpha-sweep` and
 //! `distance-alpha` show the paper's, the one that uses α.
@@ -29,6 +32,8 @@ mod number;
 mod number_reductions;
 pub mod style;
 pub mod surface;
+mod terrain;
+mod terrain_measures;
 
 use t2spline::job::Job;
 use t2spline::Alpha;
@@ -43,6 +48,10 @@ pub use notebook::{
 };
 pub use number::{number_figure, NumberChoice};
 pub use style::{palette, reduction_label};
+pub use terrain::{
+    contour_map, terrain_figures, terrain_left_out, TerrainFigures, TERRAIN_FIGURE_NAMES,
+};
+pub use terrain_measures::terrain_measures_figure;
 
 use crate::chart::scene::Figure;
 use crate::error::Error;
@@ -88,7 +97,9 @@ pub struct FigureOptions {
 /// Every figure of the job at `alpha`, in the order of [`FIGURE_NAMES`]; a
 /// space curve has all but `membership` and `section` (figures of the
 /// plane), a surface job all but those and `alpha-sweep`, `reductions` and `measures`
-/// (nor a curve of more than [`MEASURES_MAX_POINTS`] control points). Stages 2–4 follow
+/// (nor a curve of more than [`MEASURES_MAX_POINTS`] control points), and
+/// after them, for a terrain, the figures of [`TERRAIN_FIGURE_NAMES`] (a
+/// surface that is not one has none: [`terrain_left_out`] says why). Stages 2–4 follow
 /// the job's type reduction, as `t2spline run` does (a reduction other than
 /// the paper's cuts stage 2 at 0); `alpha` is the paper's level in the
 /// `number`, `distance-alpha` and `reductions` figures.
@@ -102,14 +113,18 @@ pub fn all_figures(job: &Job, alpha: Alpha, options: &FigureOptions) -> Result<V
     let heights = job.model.heights();
     if job.model.is_surface() {
         let scene = SurfaceScene::new(&result, &heights, options.view, options.aspect);
-        return Ok(vec![
+        let mut figures = vec![
             number,
             surface::stage1_figure(&scene),
             surface::stage2_figure(&scene),
             surface::stage3_figure(&scene),
             surface::stage4_figure(job, &scene)?,
             curve::distance_figure(job, alpha.get())?,
-        ]);
+        ];
+        if let TerrainFigures::Drawn(terrain) = terrain_figures(job, alpha)? {
+            figures.extend(terrain);
+        }
+        return Ok(figures);
     }
     let scene = CurveScene::new(&result, &heights, options.aspect);
     let axes = scene.axes();

@@ -76,6 +76,22 @@ pub fn lower_band() -> Fill {
     }
 }
 
+/// The middle fill of the primary function's region (the fuzzy shoreline's
+/// primary band), between the upper's and the lower's.
+#[must_use]
+pub fn primary_band() -> Fill {
+    Fill {
+        color: GREEN,
+        opacity: 0.22,
+    }
+}
+
+/// The crisp surface's contour lines under a terrain figure: thin grey.
+#[must_use]
+pub fn level_stroke() -> Stroke {
+    Stroke::solid(GREY, 0.6)
+}
+
 /// The contours of a membership map (the outlines of its regions): thin
 /// ink, drawn over a white halo so that they show on every colour of the
 /// map.

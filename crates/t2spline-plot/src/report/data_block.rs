@@ -12,6 +12,7 @@ use super::file_stops::FileStops;
 use super::frames::{frames, Frames, Strings};
 use super::stops::Stops;
 use super::tables::{self, number_text, rounded};
+use super::terrain_frames::TerrainFrames;
 use super::{downloads, page, reductions};
 use crate::chart::scene::Figure;
 use crate::error::Error;
@@ -21,8 +22,8 @@ use crate::figures::curve::distance_figure;
 pub(super) struct DataBlock {
     /// The JSON the page embeds.
     pub json: Value,
-    /// The changing figures (number, stages 2–4, distance against alpha),
-    /// each with its starting SVG.
+    /// The changing figures (number, stages 2–4, distance against alpha;
+    /// a terrain's width map and shoreline), each with its starting SVG.
     pub figures: Vec<Frames>,
     /// The tables of stages 2–4.
     pub tables: Vec<tables::Table>,
@@ -36,6 +37,7 @@ impl DataBlock {
         stops: &Stops,
         with_files: &FileStops,
         c: &Computed,
+        terrain: &TerrainFrames,
     ) -> Result<DataBlock, Error> {
         let heights = job.model.heights();
         // The distance against alpha is the paper's: a frame per slider stop,
@@ -59,6 +61,19 @@ impl DataBlock {
         let mut da = frames(&distances, stops.initial, &probes, "da-", &mut strings);
         da.data["paper"] = json!(true);
         figs.push(da);
+        // A terrain's width map and shoreline: a frame per slider stop,
+        // shown at the slider's stop whatever the reduction (they do not
+        // depend on it).
+        if let TerrainFrames::Drawn {
+            widths, shorelines, ..
+        } = terrain
+        {
+            for (list, prefix) in [(widths, "ew-"), (shorelines, "sh-")] {
+                let mut f = frames(list, stops.initial, &probes, prefix, &mut strings);
+                f.data["paper"] = json!(true);
+                figs.push(f);
+            }
+        }
         let table_defs = tables::tables(c.start_run()?);
         let stops_json: Vec<Value> = c
             .shown

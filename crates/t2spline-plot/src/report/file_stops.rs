@@ -12,6 +12,7 @@ use super::downloads::files_of;
 use super::frames::static_svg;
 use super::stop_figures::stop_figures;
 use super::stops::{self, finest_within, Stops};
+use super::terrain_frames::slider_figures;
 use super::{pack, reductions};
 use crate::data;
 use crate::error::Error;
@@ -72,12 +73,16 @@ pub(super) fn choose_stops(
             let files: Vec<String> = files_of(&run)?.into_iter().map(|(_, t)| t).collect();
             // Drawn as the report stores them: lines and regions simplified
             // to the report's tolerance.
-            let figures: Vec<String> =
+            let mut figures: Vec<String> =
                 stop_figures(job, alpha, TypeReduction::Paper, &heights, options)?
                     .0
                     .iter()
                     .map(static_svg)
                     .collect();
+            // A terrain's width map and shoreline follow the slider too.
+            if let Some((widths, shorelines)) = slider_figures(job, &[a])? {
+                figures.extend(widths.iter().chain(&shorelines).map(static_svg));
+            }
             Ok((
                 pack::packed_len(&json!(files)),
                 pack::packed_len(&json!(figures)),

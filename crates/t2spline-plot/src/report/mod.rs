@@ -36,6 +36,7 @@ mod sections;
 mod stop_figures;
 mod stops;
 pub mod tables;
+mod terrain_frames;
 
 pub use budget::{DATA_BUDGET, MAX_FILE_GRID, MAX_FILE_SAMPLES};
 pub use stops::Stops;
@@ -48,14 +49,17 @@ use crate::figures::FigureOptions;
 use computed::Computed;
 use data_block::DataBlock;
 use sections::Still;
+use terrain_frames::TerrainFrames;
 
 /// Renders the report of `job` (whose file text is `job_text`) with the
 /// slider at `start`; `options` chooses the number shown and the aspect of
 /// curve panels.
 ///
-/// Four steps, a module each: the stops (`file_stops`), every frame computed
-/// (`computed`), the data block the page swaps in (`data_block`), and the
-/// page's sections around the figures that do not change (`sections`).
+/// Five steps, a module each: the stops (`file_stops`), every frame computed
+/// (`computed`), a terrain's width maps and shorelines at every stop and
+/// its fuzzy measures (`terrain_frames`), the data block the page swaps in
+/// (`data_block`), and the page's sections around the figures that do not
+/// change (`sections`).
 ///
 /// # Errors
 /// [`Error::NoSuchPoint`] or [`Error::NoSuchAxis`] if `options.number` names
@@ -70,8 +74,9 @@ pub fn render(
 ) -> Result<String, Error> {
     let (stops, with_files) = file_stops::choose_stops(job, start, options)?;
     let frames = Computed::all(job, start, &stops, &with_files, options)?;
-    let block = DataBlock::build(job, start, &stops, &with_files, &frames)?;
-    let still = Still::draw(job, &frames.figure_run, start, options)?;
+    let terrain = TerrainFrames::compute(job, &stops.alphas)?;
+    let block = DataBlock::build(job, start, &stops, &with_files, &frames, &terrain)?;
+    let still = Still::draw(job, &frames.figure_run, start, options, &terrain)?;
     sections::page(
         job, job_text, start, options, &stops, &frames, &still, &block,
     )

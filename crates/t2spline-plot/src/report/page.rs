@@ -207,6 +207,16 @@ impl Page {
         self.html.push_str("</section>\n");
     }
 
+    /// A section without a figure: its heading and a note saying why.
+    pub fn note_section(&mut self, id: &str, title: &str, note: &str) {
+        let _ = write!(
+            self.html,
+            "<section id=\"{id}\">\n<h2>{}</h2>\n<p class=\"note\">{}</p>\n</section>\n",
+            escape(title),
+            escape(note)
+        );
+    }
+
     /// The job file's text (its first `MAX_JOB_TEXT` bytes).
     pub fn job(&mut self, text: &str) {
         const MAX_JOB_TEXT: usize = 200_000;

@@ -12,6 +12,7 @@ use super::frames::static_svg;
 use super::page::{Page, Section};
 use super::stops::Stops;
 use super::tables::{self, number_text, rounded};
+use super::terrain_frames::TerrainFrames;
 use super::{pack, reductions};
 use crate::error::Error;
 use crate::figures::curve::{
@@ -34,6 +35,9 @@ pub(super) struct Still {
     /// The fuzzy length and area (curves of at most
     /// [`MEASURES_MAX_POINTS`] control points).
     measures: Option<String>,
+    /// A terrain's fuzzy volumes and areas, or (a surface that is not a
+    /// terrain) why its terrain figures are left out.
+    terrain: Option<Result<String, String>>,
 }
 
 impl Still {
@@ -43,8 +47,14 @@ impl Still {
         figure_run: &RunOutput,
         start: Alpha,
         options: &FigureOptions,
+        terrain: &TerrainFrames,
     ) -> Result<Still, Error> {
         let heights = job.model.heights();
+        let terrain = match terrain {
+            _ if !job.model.is_surface() => None,
+            TerrainFrames::Drawn { measures, .. } => Some(Ok(static_svg(measures))),
+            TerrainFrames::LeftOut(reason) => Some(Err(reason.clone())),
+        };
         let (stage1, sweep, compared, set_figures, measures) = if job.model.is_surface() {
             let scene = SurfaceScene::new(figure_run, &heights, options.view, options.aspect);
             (
@@ -84,6 +94,7 @@ impl Still {
             compared,
             set_figures,
             measures,
+            terrain,
         })
     }
 }
@@ -117,6 +128,7 @@ pub(super) fn page(
         ("stage4", "Stage 4"),
         ("distance", "Distance and α"),
         ("measures", "Measures"),
+        ("terrain", "Terrain"),
         ("membership", "Membership"),
         ("section", "Section"),
         ("reductions", "Type reductions"),
@@ -125,6 +137,7 @@ pub(super) fn page(
     .into_iter()
     .filter(|(id, _)| *id != "reductions" || still.compared.is_some())
     .filter(|(id, _)| *id != "measures" || still.measures.is_some())
+    .filter(|(id, _)| *id != "terrain" || still.terrain.is_some())
     .filter(|(id, _)| !matches!(*id, "membership" | "section") || still.set_figures.is_some())
     .collect();
     page.header(job.description.as_deref(), start_run, &heights, &contents);
@@ -159,6 +172,23 @@ pub(super) fn page(
         Section { id: "distance", title: "The distance as α varies", svg: &block.figures[4].svg, figure: "distance-alpha", caption: "Largest and rms distance against α for the paper's type reduction, with both sides of every h; the vertical line is the slider's α.", csv: None, tables: vec![] },
     ] {
         page.section(&s);
+    }
+    match (&still.terrain, block.figures.get(5), block.figures.get(6)) {
+        (Some(Ok(measures)), Some(width), Some(shoreline)) => {
+            for s in [
+                Section { id: "terrain", title: "Envelope width (docs/method.md §12)", svg: &width.svg, figure: "envelope-width", caption: "How far apart the least and the greatest height of every surface whose heights lie inside their cuts are above each plan point, at the slider's α, per membership function (a function without a cut there is empty); blank cells are NODATA. t2spline envelope --alpha A gives the numbers.", csv: None, tables: vec![] },
+                Section { id: "shoreline", title: "Fuzzy shoreline at z = 0 (docs/method.md §13)", svg: &shoreline.svg, figure: "shoreline", caption: "Where a surface whose heights lie inside their cuts can cross the datum z = 0 at the slider's α, per membership function, over the crisp surface's contour lines; the black line is the crisp surface's shoreline. t2spline contour --z 0 --alpha A gives the polygons (on a finer grid).", csv: None, tables: vec![] },
+                Section { id: "terrain-measures", title: "Fuzzy volumes and areas (docs/method.md §14)", svg: measures, figure: "terrain-measures", caption: "The volumes below and above z = 0, the plan area below it and the surface area as type-2 fuzzy numbers: at each level the upper, primary and lower functions' intervals; the crisp surface's values marked. Does not depend on the slider; t2spline measure prints the intervals.", csv: None, tables: vec![] },
+            ] {
+                page.section(&s);
+            }
+        }
+        (Some(Err(reason)), _, _) => page.note_section(
+            "terrain",
+            "Terrain figures",
+            &format!("The envelope width, the fuzzy shoreline and the fuzzy volumes are drawn for terrains (x and y crisp, the surface the graph of a height); they are left out here: {reason}"),
+        ),
+        _ => {}
     }
     if let Some(measures) = &still.measures {
         page.section(&Section {

@@ -340,3 +340,58 @@ fn the_slider_shows_the_region_at_each_stop() {
         assert!(html.contains(&format!("<section id=\"{id}\">")), "{id}");
     }
 }
+
+#[test]
+fn a_terrain_report_has_its_width_map_and_shoreline_at_every_stop() {
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/fuzzy-terrain.json");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let job = t2spline_io::parse_job(&text, "terrain").unwrap();
+    let html = render_at_037(&job, &text);
+    for figure in ["envelope-width", "shoreline", "terrain-measures"] {
+        assert!(
+            html.contains(&format!("data-name=\"{figure}\"")),
+            "{figure}"
+        );
+    }
+    let data = data_block(&html);
+    let stops = data["stops"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .filter(|s| !s["alpha"].is_null())
+        .count();
+    for prefix in ["ew-", "sh-"] {
+        let f = data["figures"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|f| f["prefix"] == prefix)
+            .unwrap_or_else(|| panic!("{prefix}"));
+        assert_eq!(f["paper"], json!(true), "{prefix} follows the slider");
+        assert_eq!(f["frames"].as_array().unwrap().len(), stops, "{prefix}");
+        assert!(
+            !f["parts"].as_array().unwrap().is_empty(),
+            "{prefix} changes"
+        );
+    }
+    // The slider's stops are within the budget with the terrain's frames.
+    assert!(html.len() < 5_000_000, "{}", html.len());
+}
+
+#[test]
+fn a_surface_that_is_not_a_terrain_has_a_note_instead() {
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/fuzzy-cylinder.json");
+    let text = std::fs::read_to_string(&path).unwrap();
+    let job = t2spline_io::parse_job(&text, "cylinder").unwrap();
+    let html = render_at_037(&job, &text);
+    assert!(html.contains("they are left out here"));
+    assert!(!html.contains("data-name=\"envelope-width\""));
+    let data = data_block(&html);
+    assert!(data["figures"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .all(|f| f["prefix"] != "ew-" && f["prefix"] != "sh-"));
+}
