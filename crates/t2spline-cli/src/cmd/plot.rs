@@ -123,7 +123,7 @@ pub fn plot(args: &PlotArgs) -> anyhow::Result<()> {
         if let Some(reason) = terrain_left_out(job)? {
             crate::output::note(
                 "plot",
-                format!("the terrain figures (envelope-width, shoreline, terrain-measures) are left out: {reason}"),
+                format!("note: the terrain figures (envelope-width, shoreline, terrain-measures) are left out: {reason}"),
             );
         }
     }

@@ -65,7 +65,7 @@ pub(super) fn choose_stops(
     let heights = job.model.heights();
     // The packed sizes of each sample stop's files and figures, the two
     // stops in parallel.
-    let sizes: Vec<Result<(usize, usize), Error>> = [0.3, 0.9]
+    let sizes: Vec<Result<(usize, usize, usize), Error>> = [0.3, 0.9]
         .par_iter()
         .map(|&a| {
             let alpha = Alpha::try_new(a)?;
@@ -73,25 +73,35 @@ pub(super) fn choose_stops(
             let files: Vec<String> = files_of(&run)?.into_iter().map(|(_, t)| t).collect();
             // Drawn as the report stores them: lines and regions simplified
             // to the report's tolerance.
-            let mut figures: Vec<String> =
+            let figures: Vec<String> =
                 stop_figures(job, alpha, TypeReduction::Paper, &heights, options)?
                     .0
                     .iter()
                     .map(static_svg)
                     .collect();
-            // A terrain's width map and shoreline follow the slider too.
-            if let Some((widths, shorelines)) = slider_figures(job, &[a])? {
-                figures.extend(widths.iter().chain(&shorelines).map(static_svg));
-            }
+            // A terrain's width map and shoreline follow the slider too,
+            // in the paper's frames only, each drawn anew at every stop.
+            let terrain: Vec<String> = match slider_figures(job, &[a])? {
+                Some((widths, shorelines)) => {
+                    widths.iter().chain(&shorelines).map(static_svg).collect()
+                }
+                None => Vec::new(),
+            };
             Ok((
                 pack::packed_len(&json!(files)),
                 pack::packed_len(&json!(figures)),
+                if terrain.is_empty() {
+                    0
+                } else {
+                    pack::packed_len(&json!(terrain))
+                },
             ))
         })
         .collect();
-    let (mut total, mut whole, mut figures_cost) = (0, 0, 0);
+    let (mut total, mut whole, mut figures_cost, mut terrain_cost) = (0, 0, 0, 0);
     for size in sizes {
-        let (f, g) = size?;
+        let (f, g, t) = size?;
+        terrain_cost += t;
         // Measured on jobs of 4 to 200 points: a stop's packed downloads take
         // a third of a whole result's files packed alone (half its numbers
         // change, and the CSV files repeat the result's), and its figure
@@ -100,9 +110,11 @@ pub(super) fn choose_stops(
         whole += f;
         figures_cost += g;
     }
+    let terrain_cost = terrain_cost / 2;
     let per_stop = (total / 2).max(1);
     let others = reductions::count();
     let budget = DATA_BUDGET.saturating_sub(others.saturating_mul(per_stop));
+    let per_stop = per_stop + terrain_cost;
     let all = finest_within(job, start, per_stop, budget);
     if all.per_unit >= FILES_EVERYWHERE || !job.model.is_surface() {
         return Ok((all, FileStops::Every));
@@ -114,6 +126,7 @@ pub(super) fn choose_stops(
     let (whole, figures_cost) = ((whole / 2).max(1), (figures_cost * 3 / 8).max(1));
     let files_cost = (whole / 3).max(1);
     let budget = DATA_BUDGET.saturating_sub(others.saturating_mul(figures_cost));
+    let figures_cost = figures_cost + terrain_cost;
     if whole > budget / 2 {
         // A result this large takes most of a stop's time to compute (every
         // stop needs its exact distance), so the figures get half the budget.
