@@ -40,7 +40,9 @@ def test_the_shoreline_opens_in_geopandas_as_the_terrain_page_says(
     run(cli, "contour", SEABED, "--z", "0", "--alpha", "0.5", "-o", out)
     features = json.loads(out.read_text())["features"]
 
-    bands = geopandas.read_file(out)
+    # The job's coordinates are EPSG:3857 (GeoJSON without a CRS is read as
+    # EPSG:4326, whose areas GeoPandas would not compute in the plane).
+    bands = geopandas.read_file(out).set_crs("EPSG:3857", allow_override=True)
     assert len(bands) == len(features)
     assert {"membership", "alpha", "area"} <= set(bands.columns)
     polygons = bands[bands.geometry.geom_type == "MultiPolygon"]
