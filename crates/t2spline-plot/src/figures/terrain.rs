@@ -33,7 +33,7 @@ pub enum TerrainFigures {
 /// core's check of the plan and one volume of the crisp surface.
 ///
 /// # Errors
-/// As [`terrain_view::terrain`].
+/// As `terrain_view::terrain` (the core refusing a computation).
 pub fn terrain_left_out(job: &Job) -> Result<Option<String>, Error> {
     Ok(match terrain_view::terrain(&job.model)? {
         Terrain::Yes(_) => None,
