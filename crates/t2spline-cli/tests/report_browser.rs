@@ -536,8 +536,7 @@ fn surface_report_in_headless_chromium_matches_t2spline_run() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../..");
     let driver = Driver::start(&chromedriver);
     // Six figures (no sweep along t, no reductions figure); stage 4 is two
-    // panels and a colour bar,
-    // 1096 units wide.
+    // panels and a colour bar, 1096 units wide.
     let surface = Expected {
         figures: 6,
         png_width: 3288,
@@ -557,7 +556,10 @@ fn surface_report_in_headless_chromium_matches_t2spline_run() {
         &driver,
         &root.join("examples/fuzzy-terrain.json"),
         &[0, 3],
+        // And the three of a terrain: the width map, the shoreline and the
+        // fuzzy measures.
         &Expected {
+            figures: 9,
             files_everywhere: false,
             ..surface
         },
