@@ -142,6 +142,7 @@ impl<const D: usize> FuzzyCurve<D> {
     /// ```
     pub fn membership(&self, p: &[f64; D]) -> Result<Grades, Error> {
         check_point(0, p)?;
+        self.crisp_weights_for("membership")?;
         Ok(Grader::new(self).grades(p))
     }
 
@@ -167,6 +168,7 @@ impl<const D: usize> FuzzyCurve<D> {
         for (i, p) in points.iter().enumerate() {
             check_point(i, p)?;
         }
+        self.crisp_weights_for("membership")?;
         let grader = Grader::new(self);
         let mut work = Work::default();
         Ok(points
