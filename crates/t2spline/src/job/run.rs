@@ -2,7 +2,7 @@
 //! curve sampled, the distance, and the derivatives when asked for.
 
 use crate::error::{Error, Setting};
-use crate::fuzzy::{Layer, Nt2Point};
+use crate::fuzzy::{Layer, Nt2Number, Nt2Point};
 use crate::nurbs::{Direction, NurbsCurve};
 use crate::pipeline::point_stages::PointStages;
 use crate::pipeline::{FuzzyCurve, FuzzySurface, Side};
@@ -13,7 +13,7 @@ use super::model::ModelVisitor;
 use super::output::RunOutput;
 use super::output::{
     ControlPoints, CrispDefuzzified, Distance, LeftRight, Parameter, Parameters, Regime, Sampled,
-    SixLayers, Spline,
+    SixLayers, Spline, WeightStages,
 };
 use super::points::Points;
 use super::settings::{Samples, Settings};
@@ -95,6 +95,7 @@ impl ModelVisitor for Run<'_> {
             regime: regime(solution.stages()),
             near_height: s.near_height(),
             control_points: control_points(curve.points(), solution.stages(), None),
+            weight_stages: weight_stages(curve.weight_numbers(), solution.weight_stages()),
             samples: sampled(
                 sweep,
                 Parameters::Along(curve.domain().uniform(samples)?),
@@ -155,6 +156,7 @@ impl ModelVisitor for Run<'_> {
             regime: regime(solution.stages()),
             near_height: s.near_height(),
             control_points: control_points(surface.points(), solution.stages(), Some([nu, nv])),
+            weight_stages: None,
             samples: sampled(
                 grid.into_samples(),
                 Parameters::Grid {
@@ -241,6 +243,15 @@ fn control_points<const D: usize>(
         ),
         defuzzified: shaped(Points::from_points(stages.defuzzified_points()), grid),
     }
+}
+
+/// The weights of every stage where they are fuzzy.
+fn weight_stages(
+    numbers: Option<&[Nt2Number]>,
+    stages: Option<&PointStages<1>>,
+) -> Option<WeightStages> {
+    let points: Vec<Nt2Point<1>> = numbers?.iter().map(|&w| Nt2Point::new([w])).collect();
+    Some(WeightStages::of(&control_points(&points, stages?, None)))
 }
 
 /// The sampled stages of a sweep at one level, as lists or (for a surface) as

@@ -88,6 +88,11 @@ impl<M: Layered<D>, const D: usize> Stages<M, D> {
         &self.stages
     }
 
+    /// The per-number stages of the fuzzy weights; `None` with crisp weights.
+    pub(crate) fn weight_stages(&self) -> Option<&PointStages<1>> {
+        self.weights.as_ref()
+    }
+
     /// Stage 1: the fuzzy object.
     #[must_use]
     pub fn fuzzy(&self) -> &M {
