@@ -44,6 +44,7 @@ mod scan;
 mod section;
 pub(crate) mod surface;
 mod sweep;
+mod weighted_grades;
 
 pub use certify::GRADE_TOLERANCE;
 pub use contour::{
