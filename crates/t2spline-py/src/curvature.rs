@@ -7,15 +7,66 @@
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
-use t2spline::SurfaceCurvature;
+use t2spline::{Curvature, Layers, SurfaceCurvature};
 
 use crate::arrays::array;
 use crate::dim::{ByDim, Family};
 use crate::errors::compute;
+use crate::py_types::{DictResult, Obj};
 use crate::sample::{check_output, Pairs};
 
 /// The numbers of one [`SurfaceCurvature`]: K, H, k₁, k₂, e₁ and e₂.
 const NUMBERS: usize = 10;
+
+/// The curvature of a surface at one pair `(u, v)`: one
+/// [`SurfaceCurvature`], or the seven of a fuzzy surface's layers.
+pub(crate) trait Curvatures {
+    /// The axes before the quantities' own: `[]`, or `[7]` for the layers.
+    const LAYERS: &'static [usize];
+
+    /// Appends the curvatures.
+    fn extend_into(self, out: &mut Vec<SurfaceCurvature>);
+}
+
+impl Curvatures for SurfaceCurvature {
+    const LAYERS: &'static [usize] = &[];
+
+    fn extend_into(self, out: &mut Vec<SurfaceCurvature>) {
+        out.push(self);
+    }
+}
+
+impl Curvatures for Layers<SurfaceCurvature> {
+    const LAYERS: &'static [usize] = &[7];
+
+    fn extend_into(self, out: &mut Vec<SurfaceCurvature>) {
+        out.extend(self.into_array());
+    }
+}
+
+/// The curvature of the surface in space inside `value` at every pair of
+/// `u` and `v`, crisp or fuzzy (the dict of [`curvature_dict`]).
+///
+/// # Errors
+/// `ValueError` naming `what` for a surface in the plane; those of
+/// [`curvature_dict`].
+pub(crate) fn surface_curvature<'py, F: Family>(
+    py: Python<'py>,
+    value: &ByDim<F>,
+    what: &str,
+    [u, v]: [&Obj<'py>; 2],
+) -> DictResult<'py>
+where
+    F::Of<3>: Curvature<Param = [f64; 2]>,
+    <F::Of<3> as Curvature>::Curvature: Curvatures,
+{
+    let s = spatial(value, what)?;
+    let layers = <<F::Of<3> as Curvature>::Curvature as Curvatures>::LAYERS;
+    curvature_dict(py, u, v, layers, |u, v, out| {
+        s.curvature_at([u, v])?.extend_into(out);
+        Ok(())
+    })
+}
 
 /// The surface in space inside `value`.
 ///
@@ -40,7 +91,7 @@ pub(crate) fn spatial<'a, F: Family>(value: &'a ByDim<F>, what: &str) -> PyResul
 /// # Errors
 /// The errors of reading `u` and `v`, shapes that do not broadcast, an
 /// output beyond the size limit; the first error of `f`.
-pub(crate) fn curvature_dict<'py>(
+fn curvature_dict<'py>(
     py: Python<'py>,
     u: &Bound<'py, PyAny>,
     v: &Bound<'py, PyAny>,

@@ -184,6 +184,19 @@ macro_rules! curve_methods {
                     .into())))
             }
         }
+
+        impl $class {
+            /// What its descriptions say (`__repr__`, `_repr_html_`).
+            fn facts(&self) -> $crate::describe::CurveFacts {
+                let (dimension, domain) = (self.0.dimension(), self.domain());
+                $crate::dim::by_dim!(&self.0, |c| $crate::describe::CurveFacts {
+                    dimension,
+                    degree: c.degree(),
+                    points: c.weights().len(),
+                    domain,
+                })
+            }
+        }
     };
 }
 

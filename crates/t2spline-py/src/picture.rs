@@ -134,6 +134,16 @@ pub(crate) fn crisp_fuzzy_surface<const D: usize>(
     .map_err(core_error)
 }
 
+/// The picture of stage 1 of a fuzzy model (level 0, the paper's type
+/// reduction) as a page under the table of `rows`.
+///
+/// # Errors
+/// Those of [`stage_figures`].
+pub(crate) fn first_stage_page(model: Model, rows: &[(&str, String)]) -> PyResult<String> {
+    let figures = stage_figures(model, Alpha::ZERO, TypeReduction::Paper, Stages::First)?;
+    Ok(page(&figures, rows))
+}
+
 /// The picture of a crisp curve or surface: stage 1 of the crisp fuzzy
 /// model, retitled.
 pub(crate) fn crisp_page(model: Model, title: &str, rows: &[(&str, String)]) -> PyResult<String> {

@@ -6,11 +6,12 @@
 
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use pyo3::types::{PyBool, PyInt};
+use pyo3::types::{PyBool, PyDict, PyInt};
 use rayon::prelude::*;
 use t2spline::sampling::{Params, SampleBuffer};
+use t2spline::{Error, Layer};
 
-use crate::arrays::{array, broadcast_shape, floats, shape_text};
+use crate::arrays::{array, broadcast_shape, coords_last, floats, shape_text};
 use crate::errors::{compute, core_error};
 
 /// The most bytes the arrays of one sampling call may take (8 GiB, the limit
@@ -73,6 +74,28 @@ impl ParamsArg {
     /// The number of parameters.
     pub(crate) fn len(&self) -> usize {
         self.params().len()
+    }
+
+    /// The curve sampled at the parameters by `fill` with the GIL released:
+    /// `fill(params, channels)` writes `lead`'s product of `d` channels of
+    /// `len` values each (structure of arrays); seen as an array of shape
+    /// `lead + (len, d)`, points last, without a copy.
+    ///
+    /// # Errors
+    /// An output beyond the size limit (naming `params`); the error of
+    /// `fill`.
+    pub(crate) fn sample<'py>(
+        &self,
+        py: Python<'py>,
+        lead: &[usize],
+        d: usize,
+        fill: impl FnOnce(Params<'_>, &mut [&mut [f64]]) -> Result<(), Error> + Send,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let (n, per_param) = (self.len(), lead.iter().product::<usize>() * d);
+        let mut buffer = output_buffer(n, per_param, "params")?;
+        let mut out = channels(&mut buffer, per_param, n);
+        compute(py, || fill(self.params(), &mut out))?;
+        coords_last(py, buffer, lead, d, &[n])
     }
 }
 
@@ -165,6 +188,28 @@ impl GridArg {
         Ok(SampleBuffer::for_overwrite(su * sv * per_point))
     }
 
+    /// The surface sampled on the grid by `fill` with the GIL released:
+    /// `fill(u, v, channels)` writes `lead`'s product of `d` channels of
+    /// `su·sv` values each (structure of arrays); seen as an array of shape
+    /// `lead + (su, sv, d)`, points last, without a copy.
+    ///
+    /// # Errors
+    /// An output beyond the size limit; the error of `fill`.
+    pub(crate) fn sample<'py>(
+        &self,
+        py: Python<'py>,
+        lead: &[usize],
+        d: usize,
+        fill: impl FnOnce(Params<'_>, Params<'_>, &mut [&mut [f64]]) -> Result<(), Error> + Send,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let per_point = lead.iter().product::<usize>() * d;
+        let [su, sv] = self.shape();
+        let mut buffer = self.buffer(per_point)?;
+        let mut out = channels(&mut buffer, per_point, su * sv);
+        compute(py, || fill(self.u.params(), self.v.params(), &mut out))?;
+        coords_last(py, buffer, lead, d, &[su, sv])
+    }
+
     /// The parameters along u and along v as arrays: the uniform ones over
     /// the `domains` for counts.
     ///
@@ -190,6 +235,27 @@ pub(crate) fn channels(buffer: &mut [f64], count: usize, len: usize) -> Vec<&mut
         return (0..count).map(|_| <&mut [f64]>::default()).collect();
     }
     buffer.chunks_mut(len).collect()
+}
+
+/// The dict of a fuzzy object's sample: the `parameters` (name and array),
+/// then for each layer name (`"upper_left"` … `"upper_right"`) its points,
+/// the views `layers[i]` of one `(7, …)` array.
+///
+/// # Errors
+/// Those of setting a dict's items.
+pub(crate) fn layer_dict<'py, const N: usize>(
+    py: Python<'py>,
+    parameters: [(&str, Bound<'py, PyAny>); N],
+    layers: &Bound<'py, PyAny>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let out = PyDict::new(py);
+    for (name, values) in parameters {
+        out.set_item(name, values)?;
+    }
+    for l in Layer::ALL {
+        out.set_item(l.name(), layers.get_item(l.index())?)?;
+    }
+    Ok(out)
 }
 
 /// `f(t, out)` at every value of `t` (a number, or an array of any shape),

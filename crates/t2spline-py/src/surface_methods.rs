@@ -255,6 +255,17 @@ macro_rules! surface_methods {
         }
 
         impl $class {
+            /// What its descriptions say (`__repr__`, `_repr_html_`).
+            fn facts(&self) -> $crate::describe::SurfaceFacts {
+                let (dimension, domain) = (self.0.dimension(), self.domain());
+                $crate::dim::by_dim!(&self.0, |s| $crate::describe::SurfaceFacts {
+                    dimension,
+                    degree: s.degree(),
+                    net: s.shape(),
+                    domain,
+                })
+            }
+
             /// The domains in u and in v.
             fn domains(&self) -> [t2spline::Domain; 2] {
                 $crate::dim::by_dim!(&self.0, |s| t2spline::Direction::BOTH.map(|d| s.domain(d)))
