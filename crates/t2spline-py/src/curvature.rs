@@ -4,7 +4,6 @@
 //! numpy does), and the refusal of quantities that need a normal on surfaces
 //! in the plane.
 
-use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use t2spline::{Curvature, Layers, SurfaceCurvature};
@@ -45,11 +44,15 @@ impl Curvatures for Layers<SurfaceCurvature> {
 }
 
 /// The curvature of the surface in space inside `value` at every pair of
-/// `u` and `v`, crisp or fuzzy (the dict of [`curvature_dict`]).
+/// `u` and `v` (broadcast as numpy does), crisp or fuzzy, as a dict of
+/// arrays: `gaussian` and `mean` of shape `broadcast(u, v).shape + layers`
+/// (`layers`: `(7,)` for a fuzzy surface), `principal` that `+ (2,)`,
+/// `directions` that `+ (2, 3)`. Runs with the GIL released.
 ///
 /// # Errors
-/// `ValueError` naming `what` for a surface in the plane; those of
-/// [`curvature_dict`].
+/// `ValueError` naming `what` for a surface in the plane; the errors of
+/// reading `u` and `v`, shapes that do not broadcast, an output beyond the
+/// size limit; the first error of the core.
 pub(crate) fn surface_curvature<'py, F: Family>(
     py: Python<'py>,
     value: &ByDim<F>,
@@ -62,49 +65,13 @@ where
 {
     let s = spatial(value, what)?;
     let layers = <<F::Of<3> as Curvature>::Curvature as Curvatures>::LAYERS;
-    curvature_dict(py, u, v, layers, |u, v, out| {
-        s.curvature_at([u, v])?.extend_into(out);
-        Ok(())
-    })
-}
-
-/// The surface in space inside `value`.
-///
-/// # Errors
-/// `ValueError` naming `what` for a surface in the plane, which has no
-/// normal.
-pub(crate) fn spatial<'a, F: Family>(value: &'a ByDim<F>, what: &str) -> PyResult<&'a F::Of<3>> {
-    match value {
-        ByDim::Spatial(s) => Ok(s),
-        ByDim::Planar(_) => Err(PyValueError::new_err(format!(
-            "{what}: a surface in the plane has none (it needs 3 coordinates)"
-        ))),
-    }
-}
-
-/// `f(u, v, out)` at every pair of `u` and `v`, each call appending
-/// `layers`'s product of curvatures to `out` (one, or seven layers), as a
-/// dict of arrays: `gaussian` and `mean` of shape `broadcast(u, v).shape +
-/// layers`, `principal` that `+ (2,)`, `directions` that `+ (2, 3)`. Runs with
-/// the GIL released.
-///
-/// # Errors
-/// The errors of reading `u` and `v`, shapes that do not broadcast, an
-/// output beyond the size limit; the first error of `f`.
-fn curvature_dict<'py>(
-    py: Python<'py>,
-    u: &Bound<'py, PyAny>,
-    v: &Bound<'py, PyAny>,
-    layers: &[usize],
-    f: impl Fn(f64, f64, &mut Vec<SurfaceCurvature>) -> Result<(), t2spline::Error> + Send + Sync,
-) -> PyResult<Bound<'py, PyDict>> {
     let pairs = Pairs::extract(u, v)?;
     let per_pair: usize = layers.iter().product();
     check_output(pairs.u.len(), per_pair * NUMBERS, "u, v")?;
     let values = compute(py, || {
         let mut out = Vec::with_capacity(pairs.u.len() * per_pair);
         for (&u, &v) in pairs.u.iter().zip(&pairs.v) {
-            f(u, v, &mut out)?;
+            s.curvature_at([u, v])?.extend_into(&mut out);
         }
         Ok(out)
     })?;
@@ -130,4 +97,13 @@ fn curvature_dict<'py>(
         .collect();
     out.set_item("directions", array(py, directions, &shape(&[2, 3]))?)?;
     Ok(out)
+}
+
+/// The surface in space inside `value`.
+///
+/// # Errors
+/// `ValueError` naming `what` for a surface in the plane, which has no
+/// normal.
+pub(crate) fn spatial<'a, F: Family>(value: &'a ByDim<F>, what: &str) -> PyResult<&'a F::Of<3>> {
+    value.spatial_or(|| format!("{what}: a surface in the plane has none (it needs 3 coordinates)"))
 }

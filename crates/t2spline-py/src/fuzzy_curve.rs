@@ -198,7 +198,8 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
         let params = ParamsArg::extract(params, "params")?;
         // (layer, parameter, coordinate), seen through the engine's (layer,
         // coordinate, parameter).
-        let layers = by_dim!(&self.0, |c| params.sample(py, &[7], self.dimension(), |t, out| c
+        let d = self.dimension();
+        let layers = by_dim!(&self.0, |c| params.sample(py, [&[7], &[d]], |t, out| c
             .sample_layers_into_slices(t, out)))?;
         let domain = by_dim!(&self.0, |c| c.domain());
         let t = array(py, params.values(domain)?, &[params.len()])?;
@@ -436,7 +437,7 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
     fn distance_sweep<'py>(
         &self, py: Python<'py>, alphas: &Obj<'py>, samples: Option<&Obj<'py>>,
     ) -> DictResult<'py> {
-        crate::distance_sweep::curve_sweep(py, &self.0, alphas, samples)
+        crate::distance_sweep::distance_sweep(py, &self.0, alphas, samples)
     }
 
     /// The membership grades of the cell centres of a regular grid over a

@@ -193,7 +193,8 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
         let grid = GridArg::extract(u, v)?;
         // (layer, u, v, coordinate), seen through the engine's (layer,
         // coordinate, u, v).
-        let layers = by_dim!(&self.0, |s| grid.sample(py, &[7], self.dimension(), |u, v, out| s
+        let d = self.dimension();
+        let layers = by_dim!(&self.0, |s| grid.sample(py, [&[7], &[d]], |[u, v], out| s
             .sample_layers_into_slices(u, v, out)))?;
         let [u, v] = grid.arrays(py, self.domains())?;
         layer_dict(py, [("u", u), ("v", v)], &layers)
@@ -352,7 +353,7 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
     fn distance_sweep<'py>(
         &self, py: Python<'py>, alphas: &Obj<'py>, samples: Option<&Obj<'py>>,
     ) -> DictResult<'py> {
-        crate::distance_sweep::surface_sweep(py, &self.0, alphas, samples)
+        crate::distance_sweep::distance_sweep(py, &self.0, alphas, samples)
     }
 
     /// The picture in a notebook: stage 1 (the shaded crisp surface, the

@@ -126,9 +126,8 @@ curve_methods!(PyNurbsCurve {
     fn sample<'py>(&self, py: Python<'py>, params: &Obj<'py>) -> ObjResult<'py> {
         let params = ParamsArg::extract(params, "params")?;
         // One row per coordinate: the (d, n) buffer seen as (n, d).
-        by_dim!(&self.0, |c| params.sample(py, &[], self.dimension(), |t, out| c
-            .sampler()
-            .sample_into(t, out)))
+        let d = self.dimension();
+        by_dim!(&self.0, |c| params.sample(py, [&[], &[d]], |t, out| c.sampler().sample_into(t, out)))
     }
 
     /// The derivatives ``C⁽ʲ⁾(t)``, ``j = 0 … order``, at every value of ``t``

@@ -130,7 +130,10 @@ surface_methods!(PyNurbsSurface, PyNurbsCurve {
     ///     ``S(u[a], v[b])``, as ``run``'s ``surfaces`` grids.
     fn sample<'py>(&self, py: Python<'py>, u: &Obj<'py>, v: &Obj<'py>) -> ObjResult<'py> {
         let grid = GridArg::extract(u, v)?;
-        by_dim!(&self.0, |s| grid.sample(py, &[], self.dimension(), |u, v, out| s.grid_sampler().sample_into(u, v, out)))
+        let d = self.dimension();
+        by_dim!(&self.0, |s| grid.sample(py, [&[], &[d]], |[u, v], out| s
+            .grid_sampler()
+            .sample_into(u, v, out)))
     }
 
     /// The partial derivatives ``∂ᵏ⁺ˡS/∂uᵏ∂vˡ`` for ``k + l <= order`` at

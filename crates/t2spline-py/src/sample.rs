@@ -87,15 +87,12 @@ impl ParamsArg {
     pub(crate) fn sample<'py>(
         &self,
         py: Python<'py>,
-        lead: &[usize],
-        d: usize,
+        [lead, d]: [&[usize]; 2],
         fill: impl FnOnce(Params<'_>, &mut [&mut [f64]]) -> Result<(), Error> + Send,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let (n, per_param) = (self.len(), lead.iter().product::<usize>() * d);
-        let mut buffer = output_buffer(n, per_param, "params")?;
-        let mut out = channels(&mut buffer, per_param, n);
-        compute(py, || fill(self.params(), &mut out))?;
-        coords_last(py, buffer, lead, d, &[n])
+        let n = self.len();
+        let buffer = output_buffer(n, lead.iter().chain(d).product(), "params")?;
+        filled(py, buffer, [lead, d, &[n]], |out| fill(self.params(), out))
     }
 }
 
@@ -189,7 +186,7 @@ impl GridArg {
     }
 
     /// The surface sampled on the grid by `fill` with the GIL released:
-    /// `fill(u, v, channels)` writes `lead`'s product of `d` channels of
+    /// `fill([u, v], channels)` writes `lead`'s product of `d` channels of
     /// `su·sv` values each (structure of arrays); seen as an array of shape
     /// `lead + (su, sv, d)`, points last, without a copy.
     ///
@@ -198,16 +195,12 @@ impl GridArg {
     pub(crate) fn sample<'py>(
         &self,
         py: Python<'py>,
-        lead: &[usize],
-        d: usize,
-        fill: impl FnOnce(Params<'_>, Params<'_>, &mut [&mut [f64]]) -> Result<(), Error> + Send,
+        [lead, d]: [&[usize]; 2],
+        fill: impl FnOnce([Params<'_>; 2], &mut [&mut [f64]]) -> Result<(), Error> + Send,
     ) -> PyResult<Bound<'py, PyAny>> {
-        let per_point = lead.iter().product::<usize>() * d;
-        let [su, sv] = self.shape();
-        let mut buffer = self.buffer(per_point)?;
-        let mut out = channels(&mut buffer, per_point, su * sv);
-        compute(py, || fill(self.u.params(), self.v.params(), &mut out))?;
-        coords_last(py, buffer, lead, d, &[su, sv])
+        let buffer = self.buffer(lead.iter().chain(d).product())?;
+        let grid = [self.u.params(), self.v.params()];
+        filled(py, buffer, [lead, d, &self.shape()], |out| fill(grid, out))
     }
 
     /// The parameters along u and along v as arrays: the uniform ones over
@@ -235,6 +228,25 @@ pub(crate) fn channels(buffer: &mut [f64], count: usize, len: usize) -> Vec<&mut
         return (0..count).map(|_| <&mut [f64]>::default()).collect();
     }
     buffer.chunks_mut(len).collect()
+}
+
+/// `buffer` filled by `fill` with the GIL released, as the engine writes:
+/// `lead`'s product of `d` channels (`d = [dimension]`), each of `samples`'
+/// product of values; seen as an array of shape `lead + samples + d`,
+/// points last, without a copy.
+///
+/// # Errors
+/// The error of `fill`.
+fn filled<'py>(
+    py: Python<'py>,
+    mut buffer: SampleBuffer,
+    [lead, d, samples]: [&[usize]; 3],
+    fill: impl FnOnce(&mut [&mut [f64]]) -> Result<(), Error> + Send,
+) -> PyResult<Bound<'py, PyAny>> {
+    let count = lead.iter().chain(d).product();
+    let mut out = channels(&mut buffer, count, samples.iter().product());
+    compute(py, || fill(&mut out))?;
+    coords_last(py, buffer, lead, d.iter().product(), samples)
 }
 
 /// The dict of a fuzzy object's sample: the `parameters` (name and array),
