@@ -66,6 +66,7 @@ mod fuzzy_surface;
 mod job_dict;
 mod json;
 mod keyword;
+mod knot_ops;
 mod many;
 mod measure;
 mod memory;

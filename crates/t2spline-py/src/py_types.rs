@@ -1,6 +1,6 @@
 //! Short names for the PyO3 types that the bindings' signatures repeat: a
-//! borrowed Python object and the results made of
-//! them. A method then reads as its arguments, not as PyO3's lifetimes.
+//! borrowed Python object and the results made of them. A method then reads
+//! as its arguments, not as PyO3's lifetimes.
 
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
