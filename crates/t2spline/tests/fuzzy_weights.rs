@@ -423,3 +423,92 @@ fn membership_with_fuzzy_weights_holds_every_admissible_curve_and_is_not_above_t
         }
     }
 }
+
+#[test]
+fn the_envelope_is_reached_at_vertex_choices_and_holds_every_choice() {
+    use t2spline::Membership as M;
+    let c = curve();
+    let p = c.degree();
+    let mut rng = Lcg(5);
+    for k in 0..40 {
+        let t = f64::from(k) / 39.0;
+        let m = [M::Upper, M::Primary, M::Lower][k as usize % 3];
+        let alpha = Alpha::try_new(if m == M::Lower { 0.3 } else { 0.6 }).unwrap();
+        let env = c.envelope_at(t, m, alpha).unwrap().unwrap();
+        let span = c.knots().find_span(t);
+        let n =
+            t2spline::nurbs::basis::try_basis_functions(c.knots().as_slice(), p, span, t).unwrap();
+        let terms: Vec<usize> = (0..=p).map(|j| span - p + j).collect();
+        let w: Vec<[f64; 2]> = terms
+            .iter()
+            .map(|&i| cut_of(&weights()[i], m, alpha).unwrap())
+            .collect();
+        for (axis, range) in env.iter().enumerate() {
+            let cuts: Vec<[f64; 2]> = terms
+                .iter()
+                .map(|&i| cut_of(&c.points()[i].coords()[axis], m, alpha).unwrap())
+                .collect();
+            // Every weight at an end of its cut: the extremes.
+            let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
+            for mask in 0..(1u32 << terms.len()) {
+                let ws: Vec<f64> = (0..terms.len())
+                    .map(|j| w[j][((mask >> j) & 1) as usize])
+                    .collect();
+                let den: f64 = (0..terms.len()).map(|j| ws[j] * n[j]).sum();
+                let at = |side: usize| {
+                    (0..terms.len())
+                        .map(|j| ws[j] * n[j] * cuts[j][side])
+                        .sum::<f64>()
+                        / den
+                };
+                lo = lo.min(at(0));
+                hi = hi.max(at(1));
+            }
+            assert!(
+                (range.left() - lo).abs() < 1e-12,
+                "{t} {m:?}: {} vs {lo}",
+                range.left()
+            );
+            assert!(
+                (range.right() - hi).abs() < 1e-12,
+                "{t} {m:?}: {} vs {hi}",
+                range.right()
+            );
+            // Any choice inside the cuts lies inside.
+            for _ in 0..20 {
+                let ws: Vec<f64> = w.iter().map(|&b| rng.between(b)).collect();
+                let xs: Vec<f64> = cuts.iter().map(|&b| rng.between(b)).collect();
+                let den: f64 = (0..terms.len()).map(|j| ws[j] * n[j]).sum();
+                let x = (0..terms.len()).map(|j| ws[j] * n[j] * xs[j]).sum::<f64>() / den;
+                assert!(range.left() - 1e-12 <= x && x <= range.right() + 1e-12);
+            }
+        }
+    }
+    // Above the lower height (0.5) there is no lower envelope.
+    assert!(c
+        .envelope_at(0.5, M::Lower, Alpha::try_new(0.7).unwrap())
+        .unwrap()
+        .is_none());
+}
+
+#[test]
+fn with_crisp_weights_the_envelope_is_the_curves_of_the_cut_ends() {
+    let c = FuzzyCurve::try_new(2, points(), vec![1.0, 2.0, 0.7, 1.5], None).unwrap();
+    let alpha = Alpha::try_new(0.4).unwrap();
+    let s = c.solve(alpha);
+    let (left, right) = (
+        s.alpha_cut_curve(Layer::UpperLeft).unwrap(),
+        s.alpha_cut_curve(Layer::UpperRight).unwrap(),
+    );
+    for t in c.domain().uniform(21).unwrap() {
+        let env = c
+            .envelope_at(t, t2spline::Membership::Upper, alpha)
+            .unwrap()
+            .unwrap();
+        let (l, r) = (left.eval(t).unwrap(), right.eval(t).unwrap());
+        for axis in 0..2 {
+            assert!((env[axis].left() - l[axis]).abs() < 1e-13);
+            assert!((env[axis].right() - r[axis]).abs() < 1e-13);
+        }
+    }
+}

@@ -299,6 +299,11 @@ pub struct Sampled {
     /// defuzzified curve.
     #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
     pub arc_length: Option<CrispDefuzzified<f64>>,
+    /// With fuzzy weights (curves): the exact envelope of the curve at each
+    /// parameter at the run's alpha (docs/method.md §16), where the stage
+    /// curves, each with one choice of weights, do not bound it.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub envelope: Option<Envelope>,
 }
 
 impl Sampled {
@@ -358,6 +363,23 @@ impl<T> SixLayers<T> {
 pub struct LeftRight<T> {
     pub left: T,
     pub right: T,
+}
+
+/// The envelope of a curve with fuzzy weights at every sample parameter,
+/// per membership function: the least (`left`) and the largest (`right`)
+/// value of each coordinate over every choice of points and weights inside
+/// their cuts at the run's alpha (docs/method.md §16), exact at the
+/// Karnik–Mendel switch points. The lower function's is absent where alpha
+/// lies above a lower height.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct Envelope {
+    /// Under the upper membership functions.
+    pub upper: LeftRight<Points>,
+    /// Under the primary membership functions.
+    pub primary: LeftRight<Points>,
+    /// Under the lower membership functions, where every number has a cut.
+    pub lower: Option<LeftRight<Points>>,
 }
 
 /// One value for the crisp and one for the defuzzified curve.

@@ -2,7 +2,7 @@
 //! curve sampled, the distance, and the derivatives when asked for.
 
 use crate::error::{Error, Setting};
-use crate::fuzzy::{Layer, Nt2Number, Nt2Point};
+use crate::fuzzy::{Alpha, Layer, Membership, Nt2Number, Nt2Point};
 use crate::nurbs::{Direction, NurbsCurve};
 use crate::pipeline::point_stages::PointStages;
 use crate::pipeline::{FuzzyCurve, FuzzySurface, Side};
@@ -10,6 +10,7 @@ use crate::reduction::TypeReduction;
 use crate::sampling::{CurveSamples, Params, SweepSamples};
 
 use super::model::ModelVisitor;
+use super::output::Envelope;
 use super::output::RunOutput;
 use super::output::{
     ControlPoints, CrispDefuzzified, Distance, LeftRight, Parameter, Parameters, Regime, Sampled,
@@ -107,6 +108,10 @@ impl ModelVisitor for Run<'_> {
                 rms: d.rms,
             },
         };
+        if curve.weight_numbers().is_some() {
+            let params = out.samples.params.along();
+            out.samples.envelope = Some(envelope(curve, params, solution.alpha())?);
+        }
         if let Some(order) = derivatives {
             let params = out.samples.params.along();
             let (d, lengths) =
@@ -254,6 +259,45 @@ fn weight_stages(
     Some(WeightStages::of(&control_points(&points, stages?, None)))
 }
 
+/// The exact envelope of a curve at `params` at level `alpha`, per
+/// membership function (docs/method.md §16).
+fn envelope<const D: usize>(
+    curve: &FuzzyCurve<D>,
+    params: &[f64],
+    alpha: Alpha,
+) -> Result<Envelope, Error> {
+    let of = |m: Membership| -> Result<Option<LeftRight<Points>>, Error> {
+        let (mut left, mut right) = (
+            Vec::with_capacity(params.len()),
+            Vec::with_capacity(params.len()),
+        );
+        for &t in params {
+            let Some(ranges) = curve.envelope_at(t, m, alpha)? else {
+                return Ok(None);
+            };
+            left.push(ranges.map(|r| r.left()));
+            right.push(ranges.map(|r| r.right()));
+        }
+        Ok(Some(LeftRight {
+            left: Points::from_points(&left),
+            right: Points::from_points(&right),
+        }))
+    };
+    // Every number has upper and primary cuts at every level.
+    let missing = || Error::Setting {
+        setting: Setting::Alpha,
+        message: format!(
+            "alpha = {}: a number has no upper or primary cut",
+            alpha.get()
+        ),
+    };
+    Ok(Envelope {
+        upper: of(Membership::Upper)?.ok_or_else(missing)?,
+        primary: of(Membership::Primary)?.ok_or_else(missing)?,
+        lower: of(Membership::Lower)?,
+    })
+}
+
 /// The sampled stages of a sweep at one level, as lists or (for a surface) as
 /// grids of `grid`'s shape.
 fn sampled<const D: usize>(
@@ -284,6 +328,7 @@ fn sampled<const D: usize>(
         },
         derivatives: None,
         arc_length: None,
+        envelope: None,
     })
 }
 

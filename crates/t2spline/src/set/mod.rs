@@ -34,6 +34,7 @@
 pub(crate) mod bernstein;
 mod certify;
 mod contour;
+mod curve_envelope;
 mod cut_lines;
 mod envelope;
 mod grid;

@@ -24,12 +24,13 @@
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
-use crate::fuzzy::{Alpha, Layer, Membership, Nt2Number, Nt2Point};
+use crate::fuzzy::{Alpha, Membership, Nt2Number, Nt2Point};
 use crate::interval_weights::IntervalTerms;
 use crate::nurbs::basis::basis_functions;
 use crate::pipeline::FuzzyCurve;
 use crate::set::bernstein::{bezier_matrix, restrict};
 use crate::set::certify::GRADE_TOLERANCE;
+use crate::set::curve_envelope::cut;
 use crate::set::membership::Grades;
 
 /// Pieces examined per membership function before the largest upper bound
@@ -279,17 +280,6 @@ impl<const D: usize> WeightedGrader<'_, D> {
             .contains(self.q)
             .unwrap_or(false)
     }
-}
-
-/// The cut `[left, right]` of `x` under `m` at `alpha`, if it has one.
-fn cut(x: &Nt2Number, m: Membership, alpha: Alpha) -> Option<[f64; 2]> {
-    let c = x.alpha_cut(alpha);
-    let (l, r) = match m {
-        Membership::Upper => (Layer::UpperLeft, Layer::UpperRight),
-        Membership::Primary => (Layer::PrimaryLeft, Layer::PrimaryRight),
-        Membership::Lower => (Layer::LowerLeft, Layer::LowerRight),
-    };
-    Some([c.layer(l)?, c.layer(r)?])
 }
 
 #[cfg(test)]
