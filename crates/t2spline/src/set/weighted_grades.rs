@@ -24,14 +24,11 @@
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
-use crate::fuzzy::{Alpha, Membership, Nt2Number, Nt2Point};
-use crate::interval_weights::IntervalTerms;
-use crate::nurbs::basis::basis_functions;
+use crate::fuzzy::{Membership, Nt2Number};
 use crate::pipeline::FuzzyCurve;
-use crate::set::bernstein::{bezier_matrix, restrict};
 use crate::set::certify::GRADE_TOLERANCE;
-use crate::set::curve_envelope::cut;
 use crate::set::membership::Grades;
+use crate::set::weighted_terms::{BasisBounds, PieceSet, Weighted};
 
 /// Pieces examined per membership function before the largest upper bound
 /// left is returned (still an upper bound, then possibly more than
@@ -41,10 +38,6 @@ const MAX_PIECES: usize = 4000;
 /// Bisections of a level: `2⁻³⁰ ≈ 1e-9`, well inside [`GRADE_TOLERANCE`].
 const LEVEL_BISECTIONS: usize = 30;
 
-/// The relative widening of the bounds of a basis function on a piece,
-/// against the rounding of its Bézier coefficients.
-const BASIS_WIDENING: f64 = 1e-12;
-
 /// The grades of `q` in a curve with fuzzy weights, all three functions.
 pub(crate) fn weighted_grades<const D: usize>(
     curve: &FuzzyCurve<D>,
@@ -52,8 +45,7 @@ pub(crate) fn weighted_grades<const D: usize>(
     q: &[f64; D],
 ) -> Grades {
     let grader = WeightedGrader {
-        curve,
-        weights,
+        on: Weighted { curve, weights },
         q: *q,
     };
     Grades::ordered(
@@ -63,8 +55,7 @@ pub(crate) fn weighted_grades<const D: usize>(
 
 /// One point's search.
 struct WeightedGrader<'a, const D: usize> {
-    curve: &'a FuzzyCurve<D>,
-    weights: &'a [Nt2Number],
+    on: Weighted<'a, D>,
     q: [f64; D],
 }
 
@@ -93,17 +84,13 @@ impl Ord for Piece {
     }
 }
 
-/// Per term of a span: the least and the largest value of its basis
-/// function on a piece.
-type BasisBounds = Vec<[f64; 2]>;
-
 impl<const D: usize> WeightedGrader<'_, D> {
     /// The certified grade of `q` under `m` (module docs).
     fn grade(&self, m: Membership) -> f64 {
-        let knots = self.curve.knots();
+        let knots = self.on.curve.knots();
         let mut heap = BinaryHeap::new();
         for (span, _) in knots.spans() {
-            let upper = self.piece_bound(m, span, [0.0, 1.0]);
+            let upper = self.level(m, span, &self.on.on(span, [0.0, 1.0]), true);
             heap.push(Piece {
                 upper,
                 span,
@@ -121,13 +108,14 @@ impl<const D: usize> WeightedGrader<'_, D> {
             let [s0, s1] = piece.s;
             let mid = s0 + (s1 - s0) / 2.0;
             for s in [s0, mid, s1] {
-                best = best.max(self.grade_at(m, piece.span, s));
+                best = best.max(self.level(m, piece.span, &self.on.at(piece.span, s), false));
             }
             for half in [[s0, mid], [mid, s1]] {
                 if half[0] >= half[1] {
                     continue;
                 }
-                let upper = self.piece_bound(m, piece.span, half).min(piece.upper);
+                let bounds = self.on.on(piece.span, half);
+                let upper = self.level(m, piece.span, &bounds, true).min(piece.upper);
                 if upper <= best + GRADE_TOLERANCE {
                     pruned = pruned.max(upper);
                 } else {
@@ -142,63 +130,18 @@ impl<const D: usize> WeightedGrader<'_, D> {
         heap.peek().map_or(best, |p| p.upper).max(best).max(pruned)
     }
 
-    /// The parameter of `s` in the knot span `span`.
-    fn param(&self, span: usize, s: f64) -> f64 {
-        let u = self.curve.knots().as_slice();
-        let (a, b) = (u[span], u[span + 1]);
-        (a + s * (b - a)).clamp(a, b)
-    }
-
-    /// The grade at the parameter of `s` in `span`: the largest level at
-    /// which `q` is in the set there (a lower bound of the grade).
-    fn grade_at(&self, m: Membership, span: usize, s: f64) -> f64 {
-        let p = self.curve.degree();
-        let mut basis = vec![0.0; p + 1];
-        basis_functions(
-            self.curve.knots().as_slice(),
-            p,
-            span,
-            self.param(span, s),
-            &mut basis,
-        );
-        let bounds: BasisBounds = basis.iter().map(|&n| [n, n]).collect();
-        self.level(m, span, &bounds, false)
-    }
-
-    /// An upper bound of the grades on the piece `[s₀, s₁]` of `span`.
-    fn piece_bound(&self, m: Membership, span: usize, [s0, s1]: [f64; 2]) -> f64 {
-        let p = self.curve.degree();
-        let n = p + 1;
-        let matrix = bezier_matrix(self.curve.knots().as_slice(), p, span);
-        let bounds: BasisBounds = (0..n)
-            .map(|i| {
-                let mut column: Vec<f64> = (0..n).map(|k| matrix[k * n + i]).collect();
-                restrict(&mut column, 1, n, [s0, s1]);
-                let lo = column.iter().copied().fold(f64::INFINITY, f64::min);
-                let hi = column.iter().copied().fold(0.0, f64::max);
-                [
-                    (lo * (1.0 - BASIS_WIDENING)).max(0.0),
-                    hi * (1.0 + BASIS_WIDENING),
-                ]
-            })
-            .collect();
-        self.level(m, span, &bounds, true)
-    }
-
     /// The largest level in `[0, top]` at which `q` lies in the set of the
     /// terms of `span` with basis values within `bounds`; `top` is the least
     /// top of the functions of the terms that count everywhere there. With
     /// `upper`, the level found is rounded up (an upper bound of the grade),
     /// else down (a level at which `q` is a member).
     fn level(&self, m: Membership, span: usize, bounds: &BasisBounds, upper: bool) -> f64 {
-        let first = span - self.curve.degree();
-        let top = bounds
-            .iter()
-            .enumerate()
-            .filter(|(_, b)| b[0] > 0.0)
-            .map(|(i, _)| self.top(m, first + i))
-            .fold(1.0_f64, f64::min);
-        let inside = |a: f64| self.contains(m, first, bounds, a);
+        let top = self.on.least_top(m, span, bounds);
+        let inside = |a: f64| match self.on.set(m, span, bounds, a) {
+            PieceSet::Empty => false,
+            PieceSet::Unbounded => true,
+            PieceSet::Terms(terms) => terms.contains(self.q).unwrap_or(false),
+        };
         if !inside(0.0) {
             return 0.0;
         }
@@ -220,71 +163,12 @@ impl<const D: usize> WeightedGrader<'_, D> {
             lo
         }
     }
-
-    /// The top of term `i`'s functions under `m`: 1, or for the lower
-    /// function the least height of its point's numbers and its weight.
-    fn top(&self, m: Membership, i: usize) -> f64 {
-        match m {
-            Membership::Lower => {
-                let point: &Nt2Point<D> = &self.curve.points()[i];
-                point
-                    .coords()
-                    .iter()
-                    .chain(std::iter::once(&self.weights[i]))
-                    .map(|x| x.height().get())
-                    .fold(1.0, f64::min)
-            }
-            _ => 1.0,
-        }
-    }
-
-    /// Whether `q` lies in the set at level `a` of the terms from `first`
-    /// with basis values within `bounds`. A term whose number has no cut at
-    /// `a` empties the set where its basis value is positive; where it may
-    /// be 0 on the piece it is left out (the set there has no such term).
-    fn contains(&self, m: Membership, first: usize, bounds: &BasisBounds, a: f64) -> bool {
-        let Ok(alpha) = Alpha::try_new(a) else {
-            return false;
-        };
-        let (mut lower, mut upper, mut points) = (Vec::new(), Vec::new(), Vec::new());
-        for (i, &[n_lo, n_hi]) in bounds.iter().enumerate() {
-            if n_hi <= 0.0 {
-                continue;
-            }
-            let (k, point) = (first + i, &self.curve.points()[first + i]);
-            let w = cut(&self.weights[k], m, alpha);
-            let mut box_ = [[0.0; 2]; D];
-            let mut has_cut = w.is_some();
-            for (b, x) in box_.iter_mut().zip(point.coords()) {
-                match cut(x, m, alpha) {
-                    Some(c) => *b = c,
-                    None => has_cut = false,
-                }
-            }
-            match (has_cut, w) {
-                (true, Some([w_lo, w_hi])) => {
-                    lower.push(w_lo * n_lo);
-                    upper.push(w_hi * n_hi);
-                    points.push(box_);
-                }
-                _ if n_lo > 0.0 => return false,
-                _ => {}
-            }
-        }
-        if lower.iter().sum::<f64>() <= 0.0 {
-            // No term is sure to count on the piece: nothing is excluded
-            // (at one parameter some term always counts).
-            return true;
-        }
-        IntervalTerms::from_bounds(lower, upper, points)
-            .contains(self.q)
-            .unwrap_or(false)
-    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::fuzzy::Nt2Point;
     use crate::set::membership::Grader;
 
     fn number(c: f64, spread: f64) -> Nt2Number {
