@@ -79,11 +79,8 @@ impl FuzzyCurve<2> {
         crate::set::membership::check_point(0, &[x0])?;
         let tolerance = self.checked_tolerance([0, 1], tolerance)?;
         if let Some(weights) = self.weight_numbers() {
-            let on = Weighted {
-                curve: self,
-                weights,
-            };
-            return Ok(weighted_section(on, x0, membership, alpha, tolerance));
+            let on = Weighted::new(self, weights);
+            return Ok(weighted_section(&on, x0, membership, alpha, tolerance));
         }
         let sweep = Sweep::of(self, membership, alpha.get(), [0, 1], 0.25 * tolerance).map_err(
             |TooManyBoxes| Error::Tolerance {

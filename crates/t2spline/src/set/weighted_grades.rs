@@ -24,8 +24,7 @@
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
-use crate::fuzzy::{Membership, Nt2Number};
-use crate::pipeline::FuzzyCurve;
+use crate::fuzzy::Membership;
 use crate::set::certify::GRADE_TOLERANCE;
 use crate::set::membership::Grades;
 use crate::set::weighted_terms::{BasisBounds, PieceSet, Weighted};
@@ -39,23 +38,16 @@ const MAX_PIECES: usize = 4000;
 const LEVEL_BISECTIONS: usize = 30;
 
 /// The grades of `q` in a curve with fuzzy weights, all three functions.
-pub(crate) fn weighted_grades<const D: usize>(
-    curve: &FuzzyCurve<D>,
-    weights: &[Nt2Number],
-    q: &[f64; D],
-) -> Grades {
-    let grader = WeightedGrader {
-        on: Weighted { curve, weights },
-        q: *q,
-    };
+pub(crate) fn weighted_grades<const D: usize>(on: &Weighted<'_, D>, q: &[f64; D]) -> Grades {
+    let grader = WeightedGrader { on, q: *q };
     Grades::ordered(
         [Membership::Upper, Membership::Primary, Membership::Lower].map(|m| grader.grade(m)),
     )
 }
 
 /// One point's search.
-struct WeightedGrader<'a, const D: usize> {
-    on: Weighted<'a, D>,
+struct WeightedGrader<'a, 'c, const D: usize> {
+    on: &'a Weighted<'c, D>,
     q: [f64; D],
 }
 
@@ -84,20 +76,26 @@ impl Ord for Piece {
     }
 }
 
-impl<const D: usize> WeightedGrader<'_, D> {
+impl<const D: usize> WeightedGrader<'_, '_, D> {
     /// The certified grade of `q` under `m` (module docs).
     fn grade(&self, m: Membership) -> f64 {
         let knots = self.on.curve.knots();
         let mut heap = BinaryHeap::new();
+        let mut best = 0.0_f64;
         for (span, _) in knots.spans() {
-            let upper = self.level(m, span, &self.on.on(span, [0.0, 1.0]), true);
+            for s in [0.0, 1.0] {
+                best = best.max(self.member_level(m, span, &self.on.at(span, s), best));
+            }
+        }
+        for (span, _) in knots.spans() {
+            let upper = self.bound(m, span, &self.on.on(span, [0.0, 1.0]), 0.0, 1.0);
             heap.push(Piece {
                 upper,
                 span,
                 s: [0.0, 1.0],
             });
         }
-        let (mut best, mut pruned) = (0.0_f64, 0.0_f64);
+        let mut pruned = 0.0_f64;
         for _ in 0..MAX_PIECES {
             let Some(piece) = heap.pop() else {
                 return best.max(pruned);
@@ -107,16 +105,15 @@ impl<const D: usize> WeightedGrader<'_, D> {
             }
             let [s0, s1] = piece.s;
             let mid = s0 + (s1 - s0) / 2.0;
-            for s in [s0, mid, s1] {
-                best = best.max(self.level(m, piece.span, &self.on.at(piece.span, s), false));
-            }
+            best = best.max(self.member_level(m, piece.span, &self.on.at(piece.span, mid), best));
             for half in [[s0, mid], [mid, s1]] {
                 if half[0] >= half[1] {
                     continue;
                 }
                 let bounds = self.on.on(piece.span, half);
-                let upper = self.level(m, piece.span, &bounds, true).min(piece.upper);
-                if upper <= best + GRADE_TOLERANCE {
+                let floor = best + GRADE_TOLERANCE;
+                let upper = self.bound(m, piece.span, &bounds, floor, piece.upper);
+                if upper <= floor {
                     pruned = pruned.max(upper);
                 } else {
                     heap.push(Piece {
@@ -130,45 +127,79 @@ impl<const D: usize> WeightedGrader<'_, D> {
         heap.peek().map_or(best, |p| p.upper).max(best).max(pruned)
     }
 
-    /// The largest level in `[0, top]` at which `q` lies in the set of the
-    /// terms of `span` with basis values within `bounds`; `top` is the least
-    /// top of the functions of the terms that count everywhere there. With
-    /// `upper`, the level found is rounded up (an upper bound of the grade),
-    /// else down (a level at which `q` is a member).
-    fn level(&self, m: Membership, span: usize, bounds: &BasisBounds, upper: bool) -> f64 {
-        let top = self.on.least_top(m, span, bounds);
-        let inside = |a: f64| match self.on.set(m, span, bounds, a) {
+    /// Whether `q` lies in the set at level `a` of the terms of `span` with
+    /// basis values within `bounds`.
+    fn inside(&self, m: Membership, span: usize, bounds: &BasisBounds, a: f64) -> bool {
+        match self.on.set(m, span, bounds, a) {
             PieceSet::Empty => false,
             PieceSet::Unbounded => true,
             PieceSet::Terms(terms) => terms.contains(self.q).unwrap_or(false),
-        };
-        if !inside(0.0) {
-            return 0.0;
         }
-        if inside(top) {
+    }
+
+    /// An upper bound of the grades on the piece of `bounds` (a superset's
+    /// level, rounded up), at most `ceiling` (a bound already known) and
+    /// no more than `floor` when the piece cannot reach `floor`: one test
+    /// prunes a piece that cannot beat the best grade found.
+    fn bound(
+        &self,
+        m: Membership,
+        span: usize,
+        bounds: &BasisBounds,
+        floor: f64,
+        ceiling: f64,
+    ) -> f64 {
+        let top = self.on.least_top(m, span, bounds).min(ceiling);
+        if floor >= top {
             return top;
         }
-        let (mut lo, mut hi) = (0.0, top);
+        if !self.inside(m, span, bounds, floor) {
+            return floor;
+        }
+        if self.inside(m, span, bounds, top) {
+            return top;
+        }
+        let (mut lo, mut hi) = (floor, top);
         for _ in 0..LEVEL_BISECTIONS {
             let mid = lo + (hi - lo) / 2.0;
-            if inside(mid) {
+            if self.inside(m, span, bounds, mid) {
                 lo = mid;
             } else {
                 hi = mid;
             }
         }
-        if upper {
-            hi
-        } else {
-            lo
+        hi
+    }
+
+    /// A level at which `q` is a member at the one parameter of `bounds`
+    /// (rounded down), searched above `floor` (a grade already found); 0
+    /// where `q` is not a member at `floor`.
+    fn member_level(&self, m: Membership, span: usize, bounds: &BasisBounds, floor: f64) -> f64 {
+        let top = self.on.least_top(m, span, bounds);
+        if floor > top || !self.inside(m, span, bounds, floor) {
+            return 0.0;
         }
+        if self.inside(m, span, bounds, top) {
+            return top;
+        }
+        let (mut lo, mut hi) = (floor, top);
+        for _ in 0..LEVEL_BISECTIONS {
+            let mid = lo + (hi - lo) / 2.0;
+            if self.inside(m, span, bounds, mid) {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        lo
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::fuzzy::Nt2Point;
+    use crate::fuzzy::{Nt2Number, Nt2Point};
+    use crate::pipeline::FuzzyCurve;
     use crate::set::membership::Grader;
 
     fn number(c: f64, spread: f64) -> Nt2Number {
@@ -205,7 +236,8 @@ mod tests {
             })
             .enumerate()
         {
-            let (a, b) = (weighted_grades(&curve, &numbers, &q), grader.grades(&q));
+            let on = Weighted::new(&curve, &numbers);
+            let (a, b) = (weighted_grades(&on, &q), grader.grades(&q));
             for m in [Membership::Upper, Membership::Primary, Membership::Lower] {
                 assert!(
                     (a.get(m) - b.get(m)).abs() <= 2.0 * GRADE_TOLERANCE + 1e-9,

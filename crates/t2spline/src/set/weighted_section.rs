@@ -44,7 +44,7 @@ struct Piece {
 /// half of `tolerance`; `None` where no number that counts has a cut at
 /// `alpha` (the lower function above the heights).
 pub(crate) fn weighted_section(
-    on: Weighted<'_, 2>,
+    on: &Weighted<'_, 2>,
     x0: f64,
     m: Membership,
     alpha: Alpha,

@@ -34,14 +34,31 @@ pub(crate) enum PieceSet<const D: usize> {
     Terms(IntervalTerms<D>),
 }
 
-/// The curve with its fuzzy weights.
-#[derive(Clone, Copy)]
+/// The curve with its fuzzy weights, and the Bézier matrix of each of its
+/// knot spans.
+#[derive(Clone)]
 pub(crate) struct Weighted<'a, const D: usize> {
     pub(crate) curve: &'a FuzzyCurve<D>,
     pub(crate) weights: &'a [Nt2Number],
+    /// Per span index, its `bezier_matrix` (empty for an empty span).
+    matrices: Vec<Vec<f64>>,
 }
 
-impl<const D: usize> Weighted<'_, D> {
+impl<'a, const D: usize> Weighted<'a, D> {
+    /// The curve `curve` with its fuzzy weights `weights`.
+    pub(crate) fn new(curve: &'a FuzzyCurve<D>, weights: &'a [Nt2Number]) -> Self {
+        let (u, p) = (curve.knots().as_slice(), curve.degree());
+        let mut matrices = vec![Vec::new(); u.len()];
+        for (span, _) in curve.knots().spans() {
+            matrices[span] = bezier_matrix(u, p, span);
+        }
+        Weighted {
+            curve,
+            weights,
+            matrices,
+        }
+    }
+
     /// The parameter of `s ∈ [0, 1]` in the knot span `span`.
     pub(crate) fn param(&self, span: usize, s: f64) -> f64 {
         let u = self.curve.knots().as_slice();
@@ -62,7 +79,7 @@ impl<const D: usize> Weighted<'_, D> {
     pub(crate) fn on(&self, span: usize, [s0, s1]: [f64; 2]) -> BasisBounds {
         let p = self.curve.degree();
         let n = p + 1;
-        let matrix = bezier_matrix(self.curve.knots().as_slice(), p, span);
+        let matrix = &self.matrices[span];
         (0..n)
             .map(|i| {
                 let mut column: Vec<f64> = (0..n).map(|k| matrix[k * n + i]).collect();
