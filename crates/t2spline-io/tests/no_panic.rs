@@ -25,10 +25,7 @@ use t2spline_io::{
 
 /// The readings of a net, fuzzified and written as a data file read back.
 fn net_on(net: &NetReadings) {
-    let options = ReadingsOptions {
-        degree: Some(1),
-        ..ReadingsOptions::default()
-    };
+    let options = ReadingsOptions::new(None, None, [Some(1), None], [None, None], None).unwrap();
     if let Ok(data) = returns("fuzzify_net", || fuzzify_net(net, &options)) {
         let json = returns("data_json", || data_json(&data)).to_string();
         returns("parse_data of a net", || parse_data(&json, "d.json")).ok();
