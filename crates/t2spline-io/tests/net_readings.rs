@@ -299,7 +299,7 @@ fn a_net_is_fitted_as_a_surface_with_the_same_options_in_both_directions() {
     let outcome = data
         .points
         .fit(
-            &t2spline::fit::FitOptions::interpolation(1),
+            &t2spline::fit::FitOptions::interpolation(1).unwrap(),
             t2spline::fit::FuzzyFitMode::Valid,
         )
         .unwrap();

@@ -80,8 +80,9 @@ fn read_and_write(text: &str) {
     }
     if let Ok(data) = returns("parse_data", || parse_data(text, "d.json")) {
         returns("data_json", || data_json(&data));
-        let options = FitOptions::interpolation(data.degree);
-        if let Ok(outcome) = returns("fit", || data.points.fit(&options, FuzzyFitMode::Valid)) {
+        let options = returns("FitOptions", || FitOptions::interpolation(data.degree));
+        let fitted = options.map(|o| returns("fit", || data.points.fit(&o, FuzzyFitMode::Valid)));
+        if let Ok(Ok(outcome)) = fitted {
             if let Ok(model) = &outcome.model {
                 returns("FitData::job_json", || data.job_json(model, false));
             }
