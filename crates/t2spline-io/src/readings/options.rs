@@ -118,13 +118,13 @@ impl ReadingsOptions {
     /// The instrument's accuracy `T`.
     #[must_use]
     pub fn tolerance(&self) -> f64 {
-        self.rule.tolerance
+        self.rule.tolerance()
     }
 
     /// The lower membership function's height.
     #[must_use]
     pub fn lower_height(&self) -> f64 {
-        self.rule.lower_height.get()
+        self.rule.lower_height().get()
     }
 
     /// The degree of a curve, or of a net along u.
