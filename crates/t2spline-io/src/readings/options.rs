@@ -1,8 +1,9 @@
 //! Readings to the data of a fit by the options of `t2spline fuzzify`
 //! (and `fit` of a readings file, and Python's `t2spline.fuzzify`): the
 //! rule's tolerance and lower height, the curve's degree or order (default
-//! [`DEFAULT_DEGREE`]), the alpha to carry, and enough stations for the
-//! degree. Each front end spells the option an error names
+//! [`DEFAULT_DEGREE`]), the alpha to carry, each checked when the
+//! [`ReadingsOptions`] are made, and enough stations for the degree, checked
+//! with the file. Each front end spells the option an error names
 //! ([`ReadingsOption`]: `--tolerance`, `tolerance=`).
 
 use std::fmt;
@@ -207,9 +208,9 @@ fn refused(option: ReadingsOption, message: impl Into<String>) -> ReadingsError 
 /// with a description of how.
 ///
 /// # Errors
-/// [`ReadingsError::Option`] for an option out of its range or a degree
-/// the stations cannot carry; [`ReadingsError::File`] for the file's
-/// problems.
+/// [`ReadingsError::Option`] for a degree the stations cannot carry or a
+/// pair of degrees for a curve (the options' ranges were checked when they
+/// were made); [`ReadingsError::File`] for the file's problems.
 ///
 /// # Examples
 /// ```
@@ -269,9 +270,9 @@ pub fn fuzzify_readings(
 /// [`DEFAULT_DEGREE`] for both).
 ///
 /// # Errors
-/// [`ReadingsError::Option`] for an option out of its range or a degree
-/// the rows or columns of the net cannot carry; [`ReadingsError::File`]
-/// for a value the rule takes beyond the range of coordinates.
+/// [`ReadingsError::Option`] for a degree the rows or columns of the net
+/// cannot carry; [`ReadingsError::File`] for a value the rule takes beyond
+/// the range of coordinates.
 ///
 /// # Examples
 /// ```
