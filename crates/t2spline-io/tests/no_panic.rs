@@ -108,12 +108,13 @@ fn read_and_write(text: &str) {
                 returns("render_csv", || render_csv(&result));
             }
             if let Ok(geometry) = returns("geometry", || job.geometry(&settings)) {
-                let meta = CadMeta {
-                    name: "x".into(),
-                    description: job.description.clone(),
-                    timestamp: "2000-01-01T00:00:00".into(),
-                    units: Default::default(),
-                };
+                let meta = CadMeta::new(
+                    "x".into(),
+                    job.description.clone(),
+                    "2000-01-01T00:00:00",
+                    Default::default(),
+                )
+                .unwrap();
                 for format in CadFormat::ALL {
                     returns("render_cad", || {
                         render_cad(format, &geometry, &meta, "j.json")
