@@ -50,7 +50,7 @@ pub fn job_json(job: &Job) -> Value {
 }
 
 /// The model's keys of a job file, in the order of docs/jobs.md: `degree`,
-/// `weights`, `knots`, `points` (for a surface, docs/method.md §8: `degree` a pair,
+/// `weights` (fuzzy numbers where they are fuzzy), `knots`, `points` (for a surface, docs/method.md §8: `degree` a pair,
 /// `weights` and `points` rows of the net, `knots` an object with `u` and
 /// `v`); a number's `lower_height` is left out when it equals `top_height`.
 pub(crate) fn model_json(model: &Model, top_height: Option<f64>) -> Map<String, Value> {
@@ -60,7 +60,23 @@ pub(crate) fn model_json(model: &Model, top_height: Option<f64>) -> Map<String, 
         fn curve<const D: usize>(self, c: &FuzzyCurve<D>) -> Map<String, Value> {
             let mut out = Map::new();
             out.insert("degree".into(), json!(c.degree()));
-            out.insert("weights".into(), json!(c.weights()));
+            let weights = match c.weight_numbers() {
+                // Serializing keys and floats into a tree of values cannot fail.
+                Some(numbers) => Value::Array(
+                    numbers
+                        .iter()
+                        .map(|w| {
+                            serde_json::to_value(NumberView {
+                                number: w,
+                                top_height: self.0,
+                            })
+                            .unwrap_or(Value::Null)
+                        })
+                        .collect(),
+                ),
+                None => json!(c.weights()),
+            };
+            out.insert("weights".into(), weights);
             out.insert("knots".into(), json!(c.knots().as_slice()));
             let points = c.points().iter().map(|p| point_json(p, self.0)).collect();
             out.insert("points".into(), Value::Array(points));

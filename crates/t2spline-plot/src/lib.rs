@@ -90,9 +90,10 @@ pub use error::Error;
 pub use figures::surface::View;
 pub use figures::{
     all_figures, measures_notebook_figure, notebook_figures, number_notebook_figure, palette,
-    region_notebook_figure, section_notebook_figure, terrain_figures, terrain_left_out, Aspect,
-    FigureOptions, NumberChoice, Stages, TerrainFigures, FIGURE_NAMES, MEASURES_MAX_POINTS,
-    NOTEBOOK_MAX_REGION_POINTS, NOTEBOOK_MAX_SAMPLES, NOTEBOOK_SURFACE_GRID, TERRAIN_FIGURE_NAMES,
+    region_notebook_figure, section_notebook_figure, set_figures_left_out, terrain_figures,
+    terrain_left_out, Aspect, FigureOptions, NumberChoice, Stages, TerrainFigures, FIGURE_NAMES,
+    MEASURES_MAX_POINTS, NOTEBOOK_MAX_REGION_POINTS, NOTEBOOK_MAX_SAMPLES, NOTEBOOK_SURFACE_GRID,
+    TERRAIN_FIGURE_NAMES,
 };
 pub use output::{render_files, Format};
 pub use report::{render as render_report, Stops, DATA_BUDGET, MAX_FILE_GRID, MAX_FILE_SAMPLES};

@@ -8,11 +8,15 @@
 use pyo3::prelude::*;
 use t2spline::{
     Bounded, Closest, ClosestPoint, ClosestSurfacePoint, Curvature, Differentiable, Layers,
+    Parametric,
 };
 
 use crate::arrays::array;
 use crate::closest::Targets;
+use crate::construct::count;
 use crate::errors::{compute, internal_error};
+use crate::keyword;
+use crate::py_types::{Obj, ObjResult, Pair};
 use crate::sample::{at_pairs, at_params};
 
 /// A capability's value at one parameter, as numbers in C order.
@@ -31,6 +35,15 @@ impl Values for f64 {
 
     fn extend_into(self, _rows: usize, out: &mut Vec<f64>) {
         out.push(self);
+    }
+}
+
+/// A point: its coordinates.
+impl<const D: usize> Values for [f64; D] {
+    const LAYERS: &'static [usize] = &[];
+
+    fn extend_into(self, _rows: usize, out: &mut Vec<f64>) {
+        out.extend(self);
     }
 }
 
@@ -74,13 +87,60 @@ fn tail<V: Values>(own: &[usize]) -> Vec<usize> {
     V::LAYERS.iter().chain(own).copied().collect()
 }
 
+/// The order of the derivatives asked for: `order`, default 1.
+///
+/// # Errors
+/// `TypeError` or `ValueError` naming `order` for a value that is not a
+/// count.
+fn derivative_order(order: Option<&Obj<'_>>) -> PyResult<usize> {
+    count(keyword::opt_int(order, "order")?.unwrap_or(1), "order", 0)
+}
+
+/// The point of a curve with `dimension` coordinates at every value of `t`
+/// (the straightforward evaluator): shape `t.shape + (dimension,)`, with
+/// `(7,)` before the last axis for a fuzzy curve's layers.
+pub(crate) fn curve_points<'py, T>(
+    py: Python<'py>,
+    object: &T,
+    t: &Obj<'py>,
+    dimension: usize,
+) -> ObjResult<'py>
+where
+    T: Parametric<Param = f64> + Sync,
+    T::Point: Values,
+{
+    at_params(py, t, &tail::<T::Point>(&[dimension]), |v, out| {
+        object.point_at(v)?.extend_into(0, out);
+        Ok(())
+    })
+}
+
+/// The point of a surface with `dimension` coordinates at every pair of `u`
+/// and `v`: shape `broadcast(u, v).shape + (dimension,)`, with `(7,)` before
+/// the last axis for a fuzzy surface's layers.
+pub(crate) fn surface_points<'py, T>(
+    py: Python<'py>,
+    object: &T,
+    [u, v]: [&Obj<'py>; 2],
+    dimension: usize,
+) -> ObjResult<'py>
+where
+    T: Parametric<Param = [f64; 2]> + Sync,
+    T::Point: Values,
+{
+    at_pairs(py, u, v, &tail::<T::Point>(&[dimension]), |u, v, out| {
+        object.point_at([u, v])?.extend_into(0, out);
+        Ok(())
+    })
+}
+
 /// The axis-aligned box `(min, max)` of a curve or surface, crisp or fuzzy
 /// (a fuzzy object's box holds all seven layers), each of shape
 /// `(dimension,)`.
 pub(crate) fn bounding_box<'py, const D: usize, T: Bounded<D> + Sync>(
     py: Python<'py>,
     object: &T,
-) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+) -> PyResult<Pair<'py>> {
     let (lo, hi) = compute(py, || {
         let b = object.bounding_box();
         Ok((b.min.to_vec(), b.max.to_vec()))
@@ -106,19 +166,20 @@ where
 }
 
 /// The derivatives of a curve with `dimension` coordinates up to `order`
-/// at every value of `t`: shape `t.shape + (order + 1, dimension)`, with `(7,)` before the last two axes
+/// (default 1) at every value of `t`: shape `t.shape + (order + 1, dimension)`, with `(7,)` before the last two axes
 /// for a fuzzy curve.
 pub(crate) fn curve_derivatives<'py, T>(
     py: Python<'py>,
     object: &T,
-    t: &Bound<'py, PyAny>,
-    order: usize,
+    t: &Obj<'py>,
+    order: Option<&Obj<'py>>,
     dimension: usize,
-) -> PyResult<Bound<'py, PyAny>>
+) -> ObjResult<'py>
 where
     T: Differentiable<Param = f64> + Sync,
     T::Derivatives: Values,
 {
+    let order = derivative_order(order)?;
     // The order is checked by the core before anything is computed.
     let rows = order.min(t2spline::nurbs::MAX_DERIVATIVE_ORDER) + 1;
     at_params(
@@ -132,22 +193,22 @@ where
     )
 }
 
-/// The derivatives of a surface up to `order` at every pair of `u` and `v`:
+/// The derivatives of a surface up to `order` (default 1) at every pair of `u` and `v`:
 /// shape `broadcast(u, v).shape + (order + 1, order + 1, dimension)`, NaN
 /// where `k + l > order`, with `(7,)` before the last three axes for a fuzzy
 /// surface.
 pub(crate) fn surface_derivatives<'py, T>(
     py: Python<'py>,
     object: &T,
-    u: &Bound<'py, PyAny>,
-    v: &Bound<'py, PyAny>,
-    order: usize,
+    [u, v]: [&Obj<'py>; 2],
+    order: Option<&Obj<'py>>,
     dimension: usize,
-) -> PyResult<Bound<'py, PyAny>>
+) -> ObjResult<'py>
 where
     T: Differentiable<Param = [f64; 2]> + Sync,
     T::Derivatives: Values,
 {
+    let order = derivative_order(order)?;
     let rows = order.min(t2spline::nurbs::MAX_DERIVATIVE_ORDER) + 1;
     at_pairs(
         py,
@@ -212,19 +273,23 @@ impl<X: Nearest> Nearest for Layers<X> {
     }
 }
 
-/// The nearest point of a curve or surface, crisp or fuzzy, to every target:
-/// the arrays `(parameters…, point, distance)`, each of the targets' shape
-/// (a float for one target), then `(7,)` for a fuzzy object, then `(D,)`
-/// for the point.
-pub(crate) fn closest<'py, const D: usize, T>(
+/// The nearest point of a curve or surface, crisp or fuzzy, to every target
+/// of `point` (one point `(D,)` or many `(m, D)`): the `N` arrays
+/// `(parameters…, point, distance)`, each of the targets' shape (a float for
+/// one target), then `(7,)` for a fuzzy object, then `(D,)` for the point.
+///
+/// # Errors
+/// Those of [`Targets::extract`]; the core's.
+pub(crate) fn closest<'py, const D: usize, const N: usize, T>(
     py: Python<'py>,
     object: &T,
-    targets: &Targets,
-) -> PyResult<Vec<Bound<'py, PyAny>>>
+    point: &Obj<'py>,
+) -> PyResult<[Obj<'py>; N]>
 where
     T: Closest<D> + Sync,
     T::Nearest: Nearest,
 {
+    let targets = Targets::extract(point, D)?;
     let params = <T::Nearest as Nearest>::PARAMS;
     let columns = compute(py, || {
         let mut columns = vec![Vec::new(); params + 2];
@@ -235,20 +300,19 @@ where
     })?;
     let layers = <T::Nearest as Nearest>::LAYERS;
     let point: Vec<usize> = layers.iter().copied().chain([D]).collect();
-    columns
+    let arrays = columns
         .into_iter()
         .enumerate()
         .map(|(k, values)| {
             let inner = if k == params { &point[..] } else { layers };
             targets.pack(py, values, inner)
         })
-        .collect()
+        .collect::<PyResult<Vec<_>>>()?;
+    items(arrays)
 }
 
 /// `N` results as a tuple's items.
-pub(crate) fn items<'py, const N: usize>(
-    values: Vec<Bound<'py, PyAny>>,
-) -> PyResult<[Bound<'py, PyAny>; N]> {
+fn items<'py, const N: usize>(values: Vec<Obj<'py>>) -> PyResult<[Obj<'py>; N]> {
     values.try_into().map_err(|v: Vec<_>| {
         internal_error(&format!("{} results where {N} were expected", v.len()))
     })

@@ -134,10 +134,9 @@ macro_rules! curve_methods {
                         ))
                     }
                 };
-                let times = $crate::keyword::times(times)?;
-                $crate::dim::by_dim!(&self.0, |c| $crate::errors::compute(py, || Ok(c
-                    .insert_knot(at, times)?
-                    .into())))
+                let op = $crate::knot_ops::KnotOp::Insert(at, $crate::keyword::times(times)?);
+                let [c] = $crate::knot_ops::apply(py, &self.0, (), op)?;
+                Ok(Self(c))
             }
 
             /// The same curve with all of ``knots`` inserted (knot
@@ -145,9 +144,9 @@ macro_rules! curve_methods {
             fn refine_knots(&self, py: Python<'_>, knots: &Bound<'_, PyAny>) -> PyResult<Self> {
                 let new = $crate::arrays::optional_vector(Some(knots), "knots")?
                     .unwrap_or_default();
-                $crate::dim::by_dim!(&self.0, |c| $crate::errors::compute(py, || Ok(c
-                    .refine_knots(&new)?
-                    .into())))
+                let op = $crate::knot_ops::KnotOp::Refine(&new);
+                let [c] = $crate::knot_ops::apply(py, &self.0, (), op)?;
+                Ok(Self(c))
             }
 
             /// The same curve of degree ``degree + times`` (The NURBS Book
@@ -155,20 +154,17 @@ macro_rules! curve_methods {
             /// curve on all layers.
             #[pyo3(signature = (times=None), text_signature = "($self, times=1)")]
             fn elevate_degree(&self, py: Python<'_>, times: Option<&Bound<'_, PyAny>>) -> PyResult<Self> {
-                let times = $crate::keyword::times(times)?;
-                $crate::dim::by_dim!(&self.0, |c| $crate::errors::compute(py, || Ok(c
-                    .elevate_degree(times)?
-                    .into())))
+                let op = $crate::knot_ops::KnotOp::Elevate($crate::keyword::times(times)?);
+                let [c] = $crate::knot_ops::apply(py, &self.0, (), op)?;
+                Ok(Self(c))
             }
 
             /// The two curves left and right of ``t``, strictly inside the
             /// domain, with domains ``(a, t)`` and ``(t, b)``.
             fn split_at(&self, py: Python<'_>, t: &Bound<'_, PyAny>) -> PyResult<(Self, Self)> {
-                let t = $crate::keyword::real(t, "t")?;
-                $crate::dim::by_dim!(&self.0, |c| $crate::errors::compute(py, || {
-                    let [a, b] = c.split_at(t)?;
-                    Ok((a.into(), b.into()))
-                }))
+                let op = $crate::knot_ops::KnotOp::Split($crate::keyword::real(t, "t")?);
+                let [a, b] = $crate::knot_ops::apply(py, &self.0, (), op)?;
+                Ok((Self(a), Self(b)))
             }
 
             /// The piece of the curve over ``[a, b]``, as a curve of its own.
@@ -182,6 +178,19 @@ macro_rules! curve_methods {
                 $crate::dim::by_dim!(&self.0, |c| $crate::errors::compute(py, || Ok(c
                     .segment(a, b)?
                     .into())))
+            }
+        }
+
+        impl $class {
+            /// What its descriptions say (`__repr__`, `_repr_html_`).
+            fn facts(&self) -> $crate::describe::CurveFacts {
+                let (dimension, domain) = (self.0.dimension(), self.domain());
+                $crate::dim::by_dim!(&self.0, |c| $crate::describe::CurveFacts {
+                    dimension,
+                    degree: c.degree(),
+                    points: c.weights().len(),
+                    domain,
+                })
             }
         }
     };

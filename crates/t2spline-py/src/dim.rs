@@ -4,6 +4,8 @@
 //! macros are the only places that tell them apart: code written once for
 //! any `D` runs on both.
 
+use pyo3::exceptions::PyValueError;
+use pyo3::PyResult;
 use t2spline::job::Model;
 use t2spline::{
     FuzzyCurve, FuzzySurface, Nt2Point, NurbsCurve, NurbsSurface, Solution, SurfaceSolution,
@@ -24,53 +26,34 @@ pub(crate) enum ByDim<F: Family> {
     Spatial(F::Of<3>),
 }
 
-/// [`NurbsCurve`]s.
-#[derive(Clone, Debug, PartialEq)]
-pub(crate) struct Nurbs;
-impl Family for Nurbs {
-    type Of<const D: usize> = NurbsCurve<D>;
+/// `families! { Family: Type<D>; … }`: a marker type per family of core
+/// types, each with its doc comment.
+macro_rules! families {
+    ($($(#[$doc:meta])* $family:ident: $ty:ty;)*) => {$(
+        $(#[$doc])*
+        #[derive(Clone, Debug, PartialEq)]
+        pub(crate) struct $family;
+        impl Family for $family {
+            type Of<const D: usize> = $ty;
+        }
+    )*};
 }
 
-/// [`FuzzyCurve`]s.
-#[derive(Clone, Debug, PartialEq)]
-pub(crate) struct Fuzzy;
-impl Family for Fuzzy {
-    type Of<const D: usize> = FuzzyCurve<D>;
-}
-
-/// Lists of fuzzy points.
-#[derive(Clone, Debug, PartialEq)]
-pub(crate) struct PointList;
-impl Family for PointList {
-    type Of<const D: usize> = Vec<Nt2Point<D>>;
-}
-
-/// [`Solution`]s.
-#[derive(Clone, Debug, PartialEq)]
-pub(crate) struct Solved;
-impl Family for Solved {
-    type Of<const D: usize> = Solution<D>;
-}
-
-/// [`NurbsSurface`]s.
-#[derive(Clone, Debug, PartialEq)]
-pub(crate) struct NurbsNet;
-impl Family for NurbsNet {
-    type Of<const D: usize> = NurbsSurface<D>;
-}
-
-/// [`FuzzySurface`]s.
-#[derive(Clone, Debug, PartialEq)]
-pub(crate) struct FuzzyNet;
-impl Family for FuzzyNet {
-    type Of<const D: usize> = FuzzySurface<D>;
-}
-
-/// [`SurfaceSolution`]s.
-#[derive(Clone, Debug, PartialEq)]
-pub(crate) struct SolvedNet;
-impl Family for SolvedNet {
-    type Of<const D: usize> = SurfaceSolution<D>;
+families! {
+    /// [`NurbsCurve`]s.
+    Nurbs: NurbsCurve<D>;
+    /// [`FuzzyCurve`]s.
+    Fuzzy: FuzzyCurve<D>;
+    /// Lists of fuzzy points.
+    PointList: Vec<Nt2Point<D>>;
+    /// [`Solution`]s.
+    Solved: Solution<D>;
+    /// [`NurbsSurface`]s.
+    NurbsNet: NurbsSurface<D>;
+    /// [`FuzzySurface`]s.
+    FuzzyNet: FuzzySurface<D>;
+    /// [`SurfaceSolution`]s.
+    SolvedNet: SurfaceSolution<D>;
 }
 
 /// `by_dim!(value, |c| body)`: `body` with `c` bound to the value inside a
@@ -121,6 +104,28 @@ impl<F: Family> ByDim<F> {
         match self {
             ByDim::Planar(_) => 2,
             ByDim::Spatial(_) => 3,
+        }
+    }
+
+    /// The value in the plane.
+    ///
+    /// # Errors
+    /// `ValueError` with the message `refusal()` for one in space.
+    pub(crate) fn planar_or(&self, refusal: impl FnOnce() -> String) -> PyResult<&F::Of<2>> {
+        match self {
+            ByDim::Planar(c) => Ok(c),
+            ByDim::Spatial(_) => Err(PyValueError::new_err(refusal())),
+        }
+    }
+
+    /// The value in space.
+    ///
+    /// # Errors
+    /// `ValueError` with the message `refusal()` for one in the plane.
+    pub(crate) fn spatial_or(&self, refusal: impl FnOnce() -> String) -> PyResult<&F::Of<3>> {
+        match self {
+            ByDim::Spatial(c) => Ok(c),
+            ByDim::Planar(_) => Err(PyValueError::new_err(refusal())),
         }
     }
 }

@@ -9,12 +9,13 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use t2spline::sampling::DistanceSweep;
-use t2spline::Alpha;
+use t2spline::{Alpha, Error};
 
 use crate::arrays::{array, floats, shape_text};
 use crate::dim::{by_dim, ByDim, Fuzzy, FuzzyNet};
 use crate::errors::compute;
 use crate::keyword::{self, PerDirection};
+use crate::py_types::{DictResult, Obj};
 use crate::sample::check_output;
 
 /// The most levels of one sweep.
@@ -68,39 +69,64 @@ fn to_dict<'py>(
     Ok(d)
 }
 
-/// `FuzzyCurve.distance_sweep(alphas, samples=1001)`.
-pub(crate) fn curve_sweep<'py>(
-    py: Python<'py>,
-    curve: &ByDim<Fuzzy>,
-    alphas: &Bound<'py, PyAny>,
-    samples: Option<&Bound<'py, PyAny>>,
-) -> PyResult<Bound<'py, PyDict>> {
-    let alphas = levels(alphas)?;
-    let n = match keyword::opt_int(samples, "samples")? {
-        None => 1001,
-        Some(n) => samples_along(n, "samples")?,
-    };
-    check_output(n, alphas.len(), "samples")?;
-    let sweep = by_dim!(curve, |c| compute(py, || c.distance_sweep(&alphas, n)))?;
-    to_dict(py, &alphas, sweep, &[n])
+/// What a sweep runs on: a fuzzy curve (`samples` uniform parameters,
+/// default 1001) or a fuzzy surface (a grid, default 101 × 101), of either
+/// dimension.
+pub(crate) trait Swept: Sync {
+    /// The samples along each direction.
+    ///
+    /// # Errors
+    /// `TypeError` or `ValueError` naming `samples`.
+    fn samples(samples: Option<&Obj<'_>>) -> PyResult<Vec<usize>>;
+
+    /// The core's sweep at `alphas` on the `samples`.
+    ///
+    /// # Errors
+    /// The core's.
+    fn sweep(&self, alphas: &[Alpha], samples: &[usize]) -> Result<DistanceSweep, Error>;
 }
 
+impl Swept for ByDim<Fuzzy> {
+    fn samples(samples: Option<&Obj<'_>>) -> PyResult<Vec<usize>> {
+        Ok(vec![match keyword::opt_int(samples, "samples")? {
+            None => 1001,
+            Some(n) => samples_along(n, "samples")?,
+        }])
+    }
+
+    fn sweep(&self, alphas: &[Alpha], samples: &[usize]) -> Result<DistanceSweep, Error> {
+        by_dim!(self, |c| c.distance_sweep(alphas, samples[0]))
+    }
+}
+
+impl Swept for ByDim<FuzzyNet> {
+    fn samples(samples: Option<&Obj<'_>>) -> PyResult<Vec<usize>> {
+        let [u, v] = keyword::opt_per_direction(samples, "samples")?
+            .unwrap_or(PerDirection::One(101))
+            .pair();
+        Ok(vec![
+            samples_along(u, "samples[0]")?,
+            samples_along(v, "samples[1]")?,
+        ])
+    }
+
+    fn sweep(&self, alphas: &[Alpha], samples: &[usize]) -> Result<DistanceSweep, Error> {
+        by_dim!(self, |s| s.distance_sweep(alphas, [samples[0], samples[1]]))
+    }
+}
+
+/// `FuzzyCurve.distance_sweep(alphas, samples=1001)` and
 /// `FuzzySurface.distance_sweep(alphas, samples=(101, 101))`.
-pub(crate) fn surface_sweep<'py>(
+pub(crate) fn distance_sweep<'py, S: Swept>(
     py: Python<'py>,
-    surface: &ByDim<FuzzyNet>,
-    alphas: &Bound<'py, PyAny>,
-    samples: Option<&Bound<'py, PyAny>>,
-) -> PyResult<Bound<'py, PyDict>> {
+    value: &S,
+    alphas: &Obj<'py>,
+    samples: Option<&Obj<'py>>,
+) -> DictResult<'py> {
     let alphas = levels(alphas)?;
-    let [u, v] = keyword::opt_per_direction(samples, "samples")?
-        .unwrap_or(PerDirection::One(101))
-        .pair();
-    let grid = [
-        samples_along(u, "samples[0]")?,
-        samples_along(v, "samples[1]")?,
-    ];
-    check_output(grid[0].saturating_mul(grid[1]), alphas.len(), "samples")?;
-    let sweep = by_dim!(surface, |s| compute(py, || s.distance_sweep(&alphas, grid)))?;
-    to_dict(py, &alphas, sweep, &grid)
+    let samples = S::samples(samples)?;
+    let points = samples.iter().fold(1, |n: usize, &k| n.saturating_mul(k));
+    check_output(points, alphas.len(), "samples")?;
+    let sweep = compute(py, || value.sweep(&alphas, &samples))?;
+    to_dict(py, &alphas, sweep, &samples)
 }

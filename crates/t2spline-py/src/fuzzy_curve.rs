@@ -4,20 +4,20 @@
 //! at once, and `solve` for stages 2–4.
 
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyTuple};
-use t2spline::{FuzzyCurve, Layer};
+use pyo3::types::PyTuple;
+use t2spline::FuzzyCurve;
 
-use crate::arrays::{array, coords_last, optional_vector};
+use crate::arrays::{array, optional_vector};
 use crate::capability;
 use crate::classes::{PyFuzzyCurve, PyNurbsCurve, PySolution};
-use crate::closest::Targets;
-use crate::construct::{count, degree, layer, FuzzyArrays};
+use crate::construct::{degree, layer, FuzzyArrays};
 use crate::curve_methods::curve_methods;
 use crate::dim::by_dim;
 use crate::errors::compute;
 use crate::fuzzy_methods::{fuzzy_methods, index, numbers};
 use crate::keyword;
-use crate::sample::{at_params, channels, output_buffer, ParamsArg};
+use crate::py_types::{DictResult, Obj, ObjResult, Pair, Triple};
+use crate::sample::{layer_dict, ParamsArg};
 
 fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
 
@@ -31,15 +31,15 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
     #[allow(clippy::too_many_arguments)]
     fn new(
         py: Python<'_>,
-        crisp: &Bound<'_, PyAny>,
-        upper: Option<&Bound<'_, PyAny>>,
-        primary: Option<&Bound<'_, PyAny>>,
-        lower: Option<&Bound<'_, PyAny>>,
-        lower_height: Option<&Bound<'_, PyAny>>,
-        weights: Option<&Bound<'_, PyAny>>,
-        knots: Option<&Bound<'_, PyAny>>,
-        degree: Option<&Bound<'_, PyAny>>,
-        order: Option<&Bound<'_, PyAny>>,
+        crisp: &Obj<'_>,
+        upper: Option<&Obj<'_>>,
+        primary: Option<&Obj<'_>>,
+        lower: Option<&Obj<'_>>,
+        lower_height: Option<&Obj<'_>>,
+        weights: Option<&Obj<'_>>,
+        knots: Option<&Obj<'_>>,
+        degree: Option<&Obj<'_>>,
+        order: Option<&Obj<'_>>,
     ) -> PyResult<Self> {
         let (degree, order) = (
             keyword::opt_int(degree, "degree")?,
@@ -58,11 +58,7 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
     }
 
     /// The fuzzy control point ``index``: one ``FuzzyNumber`` per coordinate.
-    fn point<'py>(
-        &self,
-        py: Python<'py>,
-        index: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyTuple>> {
+    fn point<'py>(&self, py: Python<'py>, index: &Obj<'py>) -> PyResult<Bound<'py, PyTuple>> {
         let n = by_dim!(&self.0, |c| c.points().len());
         let i = self::index(keyword::int(index, "index")?, n, "index")?;
         by_dim!(&self.0, |c| numbers(py, &c.points()[i]))
@@ -70,7 +66,7 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
 
     /// The layer curve through one value of every control point, as a
     /// ``NurbsCurve`` (``"crisp"``: the crisp curve).
-    fn layer_curve(&self, layer: &Bound<'_, PyAny>) -> PyResult<PyNurbsCurve> {
+    fn layer_curve(&self, layer: &Obj<'_>) -> PyResult<PyNurbsCurve> {
         let l = self::layer(layer, "layer")?;
         Ok(by_dim!(&self.0, |c| c.layer_curve(l).into()))
     }
@@ -89,16 +85,8 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
     /// numpy.ndarray
     ///     Shape ``t.shape + (7, d)``, layers in the order of docs/method.md §1 (``upper_left`` …
     ///     ``upper_right``, ``crisp`` at index 3).
-    fn eval_layers<'py>(
-        &self,
-        py: Python<'py>,
-        t: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        let d = self.dimension();
-        by_dim!(&self.0, |c| at_params(py, t, &[7, d], |v, out| {
-            out.extend(c.eval_layers(v)?.as_array().iter().flatten());
-            Ok(())
-        }))
+    fn eval_layers<'py>(&self, py: Python<'py>, t: &Obj<'py>) -> ObjResult<'py> {
+        by_dim!(&self.0, |c| capability::curve_points(py, c, t, self.dimension()))
     }
 
     /// The point of every layer curve closest to ``point`` (see
@@ -127,15 +115,9 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
     /// >>> t, p, d = band.closest_points([2.0, 3.0])
     /// >>> t.shape, p.shape, [round(float(x), 12) for x in d]
     /// ((7,), (7, 2), [4.0, 3.5, 3.25, 3.0, 2.75, 2.5, 2.0])
-    fn closest_points<'py>(
-        &self,
-        py: Python<'py>,
-        point: &Bound<'py, PyAny>,
-    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>, Bound<'py, PyAny>)> {
-        let targets = Targets::extract(point, self.dimension())?;
-        let found = by_dim!(&self.0, |c| capability::closest(py, c, &targets))?;
-        let [t, points, distances] = capability::items(found)?;
-        Ok((t, points, distances))
+    fn closest_points<'py>(&self, py: Python<'py>, point: &Obj<'py>) -> PyResult<Triple<'py>> {
+        let [t, p, d] = by_dim!(&self.0, |c| capability::closest(py, c, point))?;
+        Ok((t, p, d))
     }
 
     /// The derivatives ``C⁽⁰⁾ … C⁽ᵒʳᵈᵉʳ⁾`` of every layer curve at every value
@@ -149,12 +131,8 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
     ///     of docs/method.md §1; ``[..., i, 0, :]`` is the point of layer ``i``.
     #[pyo3(signature = (t, order=None), text_signature = "($self, t, order=1)")]
     fn derivatives<'py>(
-        &self,
-        py: Python<'py>,
-        t: &Bound<'py, PyAny>,
-        order: Option<&Bound<'py, PyAny>>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        let order = count(keyword::opt_int(order, "order")?.unwrap_or(1), "order", 0)?;
+        &self, py: Python<'py>, t: &Obj<'py>, order: Option<&Obj<'py>>,
+    ) -> ObjResult<'py> {
         by_dim!(&self.0, |c| capability::curve_derivatives(py, c, t, order, self.dimension()))
     }
 
@@ -182,23 +160,20 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
     /// ...                  np.stack([c, c], -1), lower_height=0.5, weights=[1, w, 1], degree=2)
     /// >>> arc.curvatures(0.3).round(12).tolist()   # radii 0.5, 1 and 2
     /// [2.0, 1.0, 1.0, 1.0, 1.0, 1.0, 0.5]
-    fn curvatures<'py>(&self, py: Python<'py>, t: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+    fn curvatures<'py>(&self, py: Python<'py>, t: &Obj<'py>) -> ObjResult<'py> {
         by_dim!(&self.0, |c| capability::curve_curvature(py, c, t))
     }
 
     /// The tight axis-aligned box ``(min, max)`` of all seven layer curves,
     /// each of shape ``(dimension,)``: the region the fuzzy curve can occupy
     /// (as ``FuzzySurface.bounding_box``).
-    fn bounding_box<'py>(
-        &self,
-        py: Python<'py>,
-    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+    fn bounding_box<'py>(&self, py: Python<'py>) -> PyResult<Pair<'py>> {
         by_dim!(&self.0, |c| capability::bounding_box(py, c))
     }
 
     /// ``curve(t)`` is ``curve.eval_layers(t)``: the seven layer curves at
     /// ``t``, shape ``t.shape + (7, d)``.
-    fn __call__<'py>(&self, py: Python<'py>, t: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+    fn __call__<'py>(&self, py: Python<'py>, t: &Obj<'py>) -> ObjResult<'py> {
         self.eval_layers(py, t)
     }
 
@@ -219,26 +194,16 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
     ///     ``"params"``: the parameters, shape ``(m,)``; and for each layer name
     ///     (``"upper_left"`` … ``"upper_right"``) the points, shape ``(m, d)``.
     ///     The layers are views of one ``(7, d, m)`` array.
-    fn sample<'py>(
-        &self,
-        py: Python<'py>,
-        params: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyDict>> {
+    fn sample<'py>(&self, py: Python<'py>, params: &Obj<'py>) -> DictResult<'py> {
         let params = ParamsArg::extract(params, "params")?;
-        let (n, d) = (params.len(), self.dimension());
-        let mut buffer = output_buffer(n, 7 * d, "params")?;
+        // (layer, parameter, coordinate), seen through the engine's (layer,
+        // coordinate, parameter).
+        let d = self.dimension();
+        let layers = by_dim!(&self.0, |c| params.sample(py, [&[7], &[d]], |t, out| c
+            .sample_layers_into_slices(t, out)))?;
         let domain = by_dim!(&self.0, |c| c.domain());
-        by_dim!(&self.0, |c| compute(py, || {
-            c.sample_layers_into_slices(params.params(), &mut channels(&mut buffer, 7 * d, n))
-        }))?;
-        let out = PyDict::new(py);
-        out.set_item("params", array(py, params.values(domain)?, &[n])?)?;
-        // (layer, coordinate, parameter) seen as (layer, parameter, coordinate).
-        let layers = coords_last(py, buffer, &[7], d, &[n])?;
-        for l in Layer::ALL {
-            out.set_item(l.name(), layers.get_item(l.index())?)?;
-        }
-        Ok(out)
+        let t = array(py, params.values(domain)?, &[params.len()])?;
+        layer_dict(py, [("params", t)], &layers)
     }
 
     /// The membership grades of points in the fuzzy curve as a set
@@ -279,11 +244,7 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
     /// A grade is certified to 1e-7 and never below the truth; a point on a
     /// foot, as (2, 0.5) is on the primary one, may grade a few 1e-12 above
     /// 0 (the one slack of docs/set.md), hence the rounding.
-    fn membership<'py>(
-        &self,
-        py: Python<'py>,
-        points: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyDict>> {
+    fn membership<'py>(&self, py: Python<'py>, points: &Obj<'py>) -> DictResult<'py> {
         crate::set::curve_membership(py, &self.0, points)
     }
 
@@ -325,10 +286,10 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
     fn region(
         &self,
         py: Python<'_>,
-        alpha: &Bound<'_, PyAny>,
-        membership: Option<&Bound<'_, PyAny>>,
-        tolerance: Option<&Bound<'_, PyAny>>,
-        plane: Option<&Bound<'_, PyAny>>,
+        alpha: &Obj<'_>,
+        membership: Option<&Obj<'_>>,
+        tolerance: Option<&Obj<'_>>,
+        plane: Option<&Obj<'_>>,
     ) -> PyResult<Option<crate::set::PyRegion>> {
         crate::set::curve_region(py, &self.0, alpha, membership, tolerance, plane)
     }
@@ -372,10 +333,10 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
     fn section<'py>(
         &self,
         py: Python<'py>,
-        x0: &Bound<'py, PyAny>,
-        levels: Option<&Bound<'py, PyAny>>,
-        tolerance: Option<&Bound<'py, PyAny>>,
-    ) -> PyResult<Bound<'py, PyAny>> {
+        x0: &Obj<'py>,
+        levels: Option<&Obj<'py>>,
+        tolerance: Option<&Obj<'py>>,
+    ) -> ObjResult<'py> {
         crate::set::curve_section(py, &self.0, x0, levels, tolerance)
     }
 
@@ -434,11 +395,11 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
     fn measure<'py>(
         &self,
         py: Python<'py>,
-        levels: Option<&Bound<'py, PyAny>>,
-        at: Option<&Bound<'py, PyAny>>,
-        order: Option<&Bound<'py, PyAny>>,
-        closed: Option<&Bound<'py, PyAny>>,
-    ) -> PyResult<Bound<'py, PyAny>> {
+        levels: Option<&Obj<'py>>,
+        at: Option<&Obj<'py>>,
+        order: Option<&Obj<'py>>,
+        closed: Option<&Obj<'py>>,
+    ) -> ObjResult<'py> {
         crate::measure::curve_measure(py, &self.0, levels, at, order, closed)
     }
 
@@ -474,12 +435,9 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
     /// ((2, 5), [0.111111111111, 0.0])
     #[pyo3(signature = (alphas, samples=None), text_signature = "($self, alphas, samples=1001)")]
     fn distance_sweep<'py>(
-        &self,
-        py: Python<'py>,
-        alphas: &Bound<'py, PyAny>,
-        samples: Option<&Bound<'py, PyAny>>,
-    ) -> PyResult<Bound<'py, PyDict>> {
-        crate::distance_sweep::curve_sweep(py, &self.0, alphas, samples)
+        &self, py: Python<'py>, alphas: &Obj<'py>, samples: Option<&Obj<'py>>,
+    ) -> DictResult<'py> {
+        crate::distance_sweep::distance_sweep(py, &self.0, alphas, samples)
     }
 
     /// The membership grades of the cell centres of a regular grid over a
@@ -514,12 +472,8 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
     /// >>> g["xs"].shape, g["ys"].shape, g["upper"].shape
     /// ((80,), (40,), (40, 80))
     fn membership_grid<'py>(
-        &self,
-        py: Python<'py>,
-        x_range: &Bound<'py, PyAny>,
-        y_range: &Bound<'py, PyAny>,
-        shape: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyDict>> {
+        &self, py: Python<'py>, x_range: &Obj<'py>, y_range: &Obj<'py>, shape: &Obj<'py>,
+    ) -> DictResult<'py> {
         crate::set::curve_membership_grid(py, &self.0, x_range, y_range, shape)
     }
 
@@ -529,33 +483,10 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
     /// curve is drawn thinned and the figure says so.
     fn _repr_html_(&self) -> PyResult<String> {
         use crate::dim::ToModel as _;
-        let (a, b) = self.domain();
-        let rows = by_dim!(&self.0, |c| vec![
-            ("dimension", self.dimension().to_string()),
-            ("degree (order)", format!("{} ({})", c.degree(), c.order())),
-            ("control points", c.points().len().to_string()),
-            ("domain", format!("[{a:?}, {b:?}]")),
-        ]);
-        let figures = crate::picture::stage_figures(
-            self.0.to_model()?,
-            t2spline::Alpha::ZERO,
-            t2spline::TypeReduction::Paper,
-            t2spline_plot::Stages::First,
-        )?;
-        Ok(crate::picture::page(&figures, &rows))
+        crate::picture::first_stage_page(self.0.to_model()?, &self.facts().rows())
     }
 
     fn __repr__(&self) -> String {
-        let (a, b) = self.domain();
-        by_dim!(&self.0, |c| {
-            format!(
-            "FuzzyCurve(dimension={}, degree={}, order={}, control_points=({}, {}), domain=({a:?}, {b:?}))",
-            self.dimension(),
-            c.degree(),
-            c.order(),
-            c.points().len(),
-            self.dimension(),
-        )
-        })
+        self.facts().repr("FuzzyCurve", None)
     }
 }));

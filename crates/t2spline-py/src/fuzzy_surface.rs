@@ -5,20 +5,21 @@
 //! (`fuzzy_methods.rs`), and `solve` for stages 2–4.
 
 use pyo3::prelude::*;
-use pyo3::types::{PyDict, PyTuple};
-use t2spline::{FuzzySurface, Layer};
+use pyo3::types::PyTuple;
+use t2spline::FuzzySurface;
 
-use crate::arrays::{coords_last, optional_vector};
+use crate::arrays::optional_vector;
 use crate::capability;
 use crate::classes::{PyFuzzyCurve, PyFuzzySurface, PyNurbsSurface, PySurfaceSolution};
-use crate::closest::{ClosestArrays, Targets};
-use crate::construct::{count, layer, net_weights, rows, surface_degrees, FuzzyArrays};
-use crate::curvature::{curvature_dict, spatial};
+use crate::closest::ClosestArrays;
+use crate::construct::{layer, net_weights, rows, surface_degrees, FuzzyArrays};
+use crate::curvature::surface_curvature;
 use crate::dim::by_dim;
 use crate::errors::compute;
 use crate::fuzzy_methods::{fuzzy_methods, index, numbers};
 use crate::keyword;
-use crate::sample::{at_pairs, channels, GridArg};
+use crate::py_types::{DictResult, Obj, ObjResult};
+use crate::sample::{layer_dict, GridArg};
 use crate::surface_methods::surface_methods;
 
 fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzzySurface, PyFuzzyCurve {
@@ -33,16 +34,16 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
     #[allow(clippy::too_many_arguments)]
     fn new(
         py: Python<'_>,
-        crisp: &Bound<'_, PyAny>,
-        upper: Option<&Bound<'_, PyAny>>,
-        primary: Option<&Bound<'_, PyAny>>,
-        lower: Option<&Bound<'_, PyAny>>,
-        lower_height: Option<&Bound<'_, PyAny>>,
-        weights: Option<&Bound<'_, PyAny>>,
-        knots_u: Option<&Bound<'_, PyAny>>,
-        knots_v: Option<&Bound<'_, PyAny>>,
-        degree: Option<&Bound<'_, PyAny>>,
-        order: Option<&Bound<'_, PyAny>>,
+        crisp: &Obj<'_>,
+        upper: Option<&Obj<'_>>,
+        primary: Option<&Obj<'_>>,
+        lower: Option<&Obj<'_>>,
+        lower_height: Option<&Obj<'_>>,
+        weights: Option<&Obj<'_>>,
+        knots_u: Option<&Obj<'_>>,
+        knots_v: Option<&Obj<'_>>,
+        degree: Option<&Obj<'_>>,
+        order: Option<&Obj<'_>>,
     ) -> PyResult<Self> {
         let (degree, order) = (
             keyword::opt_per_direction(degree, "degree")?,
@@ -71,10 +72,7 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
     /// The fuzzy control point ``P̃ᵢⱼ`` (row ``i`` along u, column ``j``
     /// along v): one ``FuzzyNumber`` per coordinate.
     fn point<'py>(
-        &self,
-        py: Python<'py>,
-        i: &Bound<'py, PyAny>,
-        j: &Bound<'py, PyAny>,
+        &self, py: Python<'py>, i: &Obj<'py>, j: &Obj<'py>,
     ) -> PyResult<Bound<'py, PyTuple>> {
         let [nu, nv] = by_dim!(&self.0, |s| s.shape());
         let (i, j) = (
@@ -86,7 +84,7 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
 
     /// The layer surface through one value of every control point, as a
     /// ``NurbsSurface`` (``"crisp"``: the crisp surface).
-    fn layer_surface(&self, layer: &Bound<'_, PyAny>) -> PyResult<PyNurbsSurface> {
+    fn layer_surface(&self, layer: &Obj<'_>) -> PyResult<PyNurbsSurface> {
         let l = self::layer(layer, "layer")?;
         Ok(by_dim!(&self.0, |s| s.layer_surface(l).into()))
     }
@@ -110,15 +108,9 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
     ///     For one point: arrays ``(7,)``, ``(7,)``, ``(7, dimension)`` and
     ///     ``(7,)``; for ``m`` points: ``(m, 7)``, ``(m, 7)``,
     ///     ``(m, 7, dimension)`` and ``(m, 7)``.
-    fn closest_points<'py>(
-        &self,
-        py: Python<'py>,
-        point: &Bound<'py, PyAny>,
-    ) -> PyResult<ClosestArrays<'py>> {
-        let targets = Targets::extract(point, self.dimension())?;
-        let found = by_dim!(&self.0, |s| capability::closest(py, s, &targets))?;
-        let [u, v, points, distances] = capability::items(found)?;
-        Ok((u, v, points, distances))
+    fn closest_points<'py>(&self, py: Python<'py>, point: &Obj<'py>) -> PyResult<ClosestArrays<'py>> {
+        let [u, v, p, d] = by_dim!(&self.0, |s| capability::closest(py, s, point))?;
+        Ok((u, v, p, d))
     }
 
     /// The curvature of every layer surface at every pair of ``u`` and ``v``
@@ -140,17 +132,8 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
     ///     For a parameter outside its domain; where the normal of a layer
     ///     is undefined (the message names the layer); for a surface in the
     ///     plane.
-    fn curvatures<'py>(
-        &self,
-        py: Python<'py>,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyDict>> {
-        let s = spatial(&self.0, "curvatures")?;
-        curvature_dict(py, u, v, &[7], |u, v, out| {
-            out.extend(s.curvatures(u, v)?.into_array());
-            Ok(())
-        })
+    fn curvatures<'py>(&self, py: Python<'py>, u: &Obj<'py>, v: &Obj<'py>) -> DictResult<'py> {
+        surface_curvature(py, &self.0, "curvatures", [u, v])
     }
 
     /// The derivatives of every layer surface at every pair of ``u`` and
@@ -165,14 +148,9 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
     ///     ``k + l > order``.
     #[pyo3(signature = (u, v, order=None), text_signature = "($self, u, v, order=1)")]
     fn derivatives<'py>(
-        &self,
-        py: Python<'py>,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-        order: Option<&Bound<'py, PyAny>>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        let order = count(keyword::opt_int(order, "order")?.unwrap_or(1), "order", 0)?;
-        by_dim!(&self.0, |s| capability::surface_derivatives(py, s, u, v, order, self.dimension()))
+        &self, py: Python<'py>, u: &Obj<'py>, v: &Obj<'py>, order: Option<&Obj<'py>>,
+    ) -> ObjResult<'py> {
+        by_dim!(&self.0, |s| capability::surface_derivatives(py, s, [u, v], order, self.dimension()))
     }
 
     /// The seven layer surfaces at every pair of ``u`` and ``v`` (broadcast
@@ -184,27 +162,13 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
     /// numpy.ndarray
     ///     Shape ``broadcast(u, v).shape + (7, d)``, layers in the order of docs/method.md §1
     ///     (``upper_left`` … ``upper_right``, ``crisp`` at index 3).
-    fn eval_layers<'py>(
-        &self,
-        py: Python<'py>,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        let d = self.dimension();
-        by_dim!(&self.0, |s| at_pairs(py, u, v, &[7, d], |u, v, out| {
-            out.extend(s.eval_layers(u, v)?.as_array().iter().flatten());
-            Ok(())
-        }))
+    fn eval_layers<'py>(&self, py: Python<'py>, u: &Obj<'py>, v: &Obj<'py>) -> ObjResult<'py> {
+        by_dim!(&self.0, |s| capability::surface_points(py, s, [u, v], self.dimension()))
     }
 
     /// ``surface(u, v)`` is ``surface.eval_layers(u, v)``: the seven layer
     /// surfaces, shape ``broadcast(u, v).shape + (7, d)``.
-    fn __call__<'py>(
-        &self,
-        py: Python<'py>,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyAny>> {
+    fn __call__<'py>(&self, py: Python<'py>, u: &Obj<'py>, v: &Obj<'py>) -> ObjResult<'py> {
         self.eval_layers(py, u, v)
     }
 
@@ -225,31 +189,15 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
     ///     ``(sv,)``; for each layer name (``"upper_left"`` …
     ///     ``"upper_right"``) the grid, shape ``(su, sv, d)``, views of one
     ///     ``(7, d, su, sv)`` array.
-    fn sample<'py>(
-        &self,
-        py: Python<'py>,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyDict>> {
+    fn sample<'py>(&self, py: Python<'py>, u: &Obj<'py>, v: &Obj<'py>) -> DictResult<'py> {
         let grid = GridArg::extract(u, v)?;
+        // (layer, u, v, coordinate), seen through the engine's (layer,
+        // coordinate, u, v).
         let d = self.dimension();
-        let [su, sv] = grid.shape();
-        let mut buffer = grid.buffer(7 * d)?;
-        by_dim!(&self.0, |s| compute(py, || s.sample_layers_into_slices(
-            grid.u.params(),
-            grid.v.params(),
-            &mut channels(&mut buffer, 7 * d, su * sv)
-        )))?;
-        let out = PyDict::new(py);
+        let layers = by_dim!(&self.0, |s| grid.sample(py, [&[7], &[d]], |[u, v], out| s
+            .sample_layers_into_slices(u, v, out)))?;
         let [u, v] = grid.arrays(py, self.domains())?;
-        out.set_item("u", u)?;
-        out.set_item("v", v)?;
-        // (layer, coordinate, u, v) seen as (layer, u, v, coordinate).
-        let layers = coords_last(py, buffer, &[7], d, &grid.shape())?;
-        for l in Layer::ALL {
-            out.set_item(l.name(), layers.get_item(l.index())?)?;
-        }
-        Ok(out)
+        layer_dict(py, [("u", u), ("v", v)], &layers)
     }
 
     /// The membership grades of points in the fuzzy surface as a set
@@ -286,11 +234,7 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
     /// >>> g = flat.membership([1.0, 1.0, 0.5])           # one point: arrays of shape ()
     /// >>> round(float(g["upper"]), 9), round(float(g["lower"]), 9)
     /// (0.5, 0.0)
-    fn membership<'py>(
-        &self,
-        py: Python<'py>,
-        points: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyDict>> {
+    fn membership<'py>(&self, py: Python<'py>, points: &Obj<'py>) -> DictResult<'py> {
         crate::set::surface_membership(py, &self.0, points)
     }
 
@@ -313,11 +257,7 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
     ///     As ``FuzzyCurve.section``, with intervals of z.
     #[pyo3(signature = (x0, y0, levels=None), text_signature = "($self, x0, y0, levels=11)")]
     fn section<'py>(
-        &self,
-        py: Python<'py>,
-        x0: &Bound<'py, PyAny>,
-        y0: &Bound<'py, PyAny>,
-        levels: Option<&Bound<'py, PyAny>>,
+        &self, py: Python<'py>, x0: &Obj<'py>, y0: &Obj<'py>, levels: Option<&Obj<'py>>,
     ) -> PyResult<Bound<'py, pyo3::types::PyList>> {
         crate::set::surface_section(py, &self.0, x0, y0, levels)
     }
@@ -371,11 +311,11 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
     fn measure<'py>(
         &self,
         py: Python<'py>,
-        levels: Option<&Bound<'py, PyAny>>,
+        levels: Option<&Obj<'py>>,
         datum: f64,
         area: bool,
         against: Option<PyRef<'py, PyFuzzySurface>>,
-    ) -> PyResult<Bound<'py, PyAny>> {
+    ) -> ObjResult<'py> {
         let against = against.as_ref().map(|a| &a.0);
         crate::measure::surface_measure(py, &self.0, levels, datum, area, against)
     }
@@ -411,12 +351,9 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
     /// ((1, 3, 4), 0.111111111111)
     #[pyo3(signature = (alphas, samples=None), text_signature = "($self, alphas, samples=101)")]
     fn distance_sweep<'py>(
-        &self,
-        py: Python<'py>,
-        alphas: &Bound<'py, PyAny>,
-        samples: Option<&Bound<'py, PyAny>>,
-    ) -> PyResult<Bound<'py, PyDict>> {
-        crate::distance_sweep::surface_sweep(py, &self.0, alphas, samples)
+        &self, py: Python<'py>, alphas: &Obj<'py>, samples: Option<&Obj<'py>>,
+    ) -> DictResult<'py> {
+        crate::distance_sweep::distance_sweep(py, &self.0, alphas, samples)
     }
 
     /// The picture in a notebook: stage 1 (the shaded crisp surface, the
@@ -429,34 +366,10 @@ fuzzy_methods!("surface", "nu, nv", PySurfaceSolution => surface_methods!(PyFuzz
         let Ok(model) = self.0.to_model() else {
             return Ok(None);
         };
-        let rows = by_dim!(&self.0, |s| {
-            let ([p, q], [nu, nv]) = (s.degree(), s.shape());
-            vec![
-                ("dimension", self.dimension().to_string()),
-                ("degree (u, v)", format!("({p}, {q})")),
-                ("control net", format!("{nu} × {nv}")),
-            ]
-        });
-        let figures = crate::picture::stage_figures(
-            model,
-            t2spline::Alpha::ZERO,
-            t2spline::TypeReduction::Paper,
-            t2spline_plot::Stages::First,
-        )?;
-        Ok(Some(crate::picture::page(&figures, &rows)))
+        crate::picture::first_stage_page(model, &self.facts().rows()).map(Some)
     }
 
     fn __repr__(&self) -> String {
-        let ((a, b), (c, e)) = self.domain();
-        by_dim!(&self.0, |s| {
-            let ([p, q], [nu, nv]) = (s.degree(), s.shape());
-            format!(
-                "FuzzySurface(dimension={}, degree=({p}, {q}), order=({}, {}), control_points=({nu}, {nv}, {}), domain=(({a:?}, {b:?}), ({c:?}, {e:?})))",
-                self.dimension(),
-                p + 1,
-                q + 1,
-                self.dimension(),
-            )
-        })
+        self.facts().repr("FuzzySurface", None)
     }
 }));

@@ -96,12 +96,9 @@ fn spatial<'a>(
     surface: &'a ByDim<FuzzyNet>,
     what: &str,
 ) -> PyResult<&'a t2spline::FuzzySurface<3>> {
-    match surface {
-        ByDim::Spatial(s) => Ok(s),
-        ByDim::Planar(_) => Err(PyValueError::new_err(format!(
-            "{what}: taken of surfaces in space (heights z over a plan); this surface is in the plane"
-        ))),
-    }
+    surface.spatial_or(|| {
+        format!("{what}: taken of surfaces in space (heights z over a plan); this surface is in the plane")
+    })
 }
 
 /// `FuzzySurface.measure(levels=11, datum=0.0, area=True, *, against=None)`.

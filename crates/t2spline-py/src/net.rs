@@ -19,40 +19,26 @@ pub(crate) trait Net {
     fn net(&self) -> Vec<usize>;
 }
 
-impl<const D: usize> Net for NurbsCurve<D> {
-    fn net(&self) -> Vec<usize> {
-        vec![self.control_points().len()]
-    }
+/// `nets! { Type: |value| net; … }`: [`Net`] for `Type<D>` of every
+/// dimension, the net read off `value`.
+macro_rules! nets {
+    ($($ty:ident: |$value:ident| $net:expr;)*) => {$(
+        impl<const D: usize> Net for $ty<D> {
+            fn net(&self) -> Vec<usize> {
+                let $value = self;
+                $net
+            }
+        }
+    )*};
 }
 
-impl<const D: usize> Net for FuzzyCurve<D> {
-    fn net(&self) -> Vec<usize> {
-        vec![self.points().len()]
-    }
-}
-
-impl<const D: usize> Net for Solution<D> {
-    fn net(&self) -> Vec<usize> {
-        self.fuzzy_curve().net()
-    }
-}
-
-impl<const D: usize> Net for NurbsSurface<D> {
-    fn net(&self) -> Vec<usize> {
-        self.shape().to_vec()
-    }
-}
-
-impl<const D: usize> Net for FuzzySurface<D> {
-    fn net(&self) -> Vec<usize> {
-        self.shape().to_vec()
-    }
-}
-
-impl<const D: usize> Net for SurfaceSolution<D> {
-    fn net(&self) -> Vec<usize> {
-        self.fuzzy_surface().net()
-    }
+nets! {
+    NurbsCurve: |c| vec![c.control_points().len()];
+    FuzzyCurve: |c| vec![c.points().len()];
+    Solution: |s| s.fuzzy_curve().net();
+    NurbsSurface: |s| s.shape().to_vec();
+    FuzzySurface: |s| s.shape().to_vec();
+    SurfaceSolution: |s| s.fuzzy_surface().net();
 }
 
 /// `net` followed by `tail`: the shape of an array of per-point values.

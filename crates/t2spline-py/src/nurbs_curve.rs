@@ -5,16 +5,16 @@
 use pyo3::prelude::*;
 use t2spline::{KnotVector, NurbsCurve};
 
-use crate::arrays::{coords_last, floats, optional_vector, rows_array, Floats};
+use crate::arrays::{floats, optional_vector, rows_array, Floats};
 use crate::capability;
 use crate::classes::PyNurbsCurve;
-use crate::closest::Targets;
-use crate::construct::{count, degree};
+use crate::construct::degree;
 use crate::curve_methods::curve_methods;
 use crate::dim::by_dim;
 use crate::errors::compute;
 use crate::keyword;
-use crate::sample::{at_params, channels, output_buffer, ParamsArg};
+use crate::py_types::{Obj, ObjResult, Pair, Triple};
+use crate::sample::{at_params, ParamsArg};
 
 /// A curve of dimension `D` through the rows of `points`.
 fn build<const D: usize>(
@@ -44,11 +44,11 @@ curve_methods!(PyNurbsCurve {
     #[pyo3(signature = (control_points, weights=None, knots=None, *, degree=None, order=None))]
     fn new(
         py: Python<'_>,
-        control_points: &Bound<'_, PyAny>,
-        weights: Option<&Bound<'_, PyAny>>,
-        knots: Option<&Bound<'_, PyAny>>,
-        degree: Option<&Bound<'_, PyAny>>,
-        order: Option<&Bound<'_, PyAny>>,
+        control_points: &Obj<'_>,
+        weights: Option<&Obj<'_>>,
+        knots: Option<&Obj<'_>>,
+        degree: Option<&Obj<'_>>,
+        order: Option<&Obj<'_>>,
     ) -> PyResult<Self> {
         let (degree, order) = (
             keyword::opt_int(degree, "degree")?,
@@ -69,7 +69,7 @@ curve_methods!(PyNurbsCurve {
 
     /// The control points, shape ``(n, dimension)``.
     #[getter]
-    fn control_points<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+    fn control_points<'py>(&self, py: Python<'py>) -> ObjResult<'py> {
         by_dim!(&self.0, |c| rows_array(py, c.control_points().to_vec()))
     }
 
@@ -92,12 +92,8 @@ curve_methods!(PyNurbsCurve {
     /// ValueError
     ///     For a parameter outside the domain (``parameter t = 2 is outside
     ///     the domain [0, 1]``), NaN or infinity.
-    fn eval<'py>(&self, py: Python<'py>, t: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
-        let d = self.dimension();
-        by_dim!(&self.0, |c| at_params(py, t, &[d], |v, out| {
-            out.extend(c.eval(v)?);
-            Ok(())
-        }))
+    fn eval<'py>(&self, py: Python<'py>, t: &Obj<'py>) -> ObjResult<'py> {
+        by_dim!(&self.0, |c| capability::curve_points(py, c, t, self.dimension()))
     }
 
     /// ``curve(t)`` is ``curve.eval(t)`` (as splipy's curves are called).
@@ -108,7 +104,7 @@ curve_methods!(PyNurbsCurve {
     /// >>> line = NurbsCurve(np.array([[0.0, 0.0], [2.0, 4.0]]), degree=1)
     /// >>> line(0.25).tolist(), line([0.0, 1.0]).shape
     /// ([0.5, 1.0], (2, 2))
-    fn __call__<'py>(&self, py: Python<'py>, t: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+    fn __call__<'py>(&self, py: Python<'py>, t: &Obj<'py>) -> ObjResult<'py> {
         self.eval(py, t)
     }
 
@@ -127,20 +123,11 @@ curve_methods!(PyNurbsCurve {
     /// numpy.ndarray
     ///     Shape ``(len(params), dimension)``; each coordinate is contiguous
     ///     (the engine's structure of arrays, seen through a transpose).
-    fn sample<'py>(
-        &self,
-        py: Python<'py>,
-        params: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyAny>> {
+    fn sample<'py>(&self, py: Python<'py>, params: &Obj<'py>) -> ObjResult<'py> {
         let params = ParamsArg::extract(params, "params")?;
-        let (n, d) = (params.len(), self.dimension());
-        let mut buffer = output_buffer(n, d, "params")?;
-        by_dim!(&self.0, |c| compute(py, || {
-            c.sampler()
-                .sample_into(params.params(), &mut channels(&mut buffer, d, n))
-        }))?;
         // One row per coordinate: the (d, n) buffer seen as (n, d).
-        coords_last(py, buffer, &[], d, &[n])
+        let d = self.dimension();
+        by_dim!(&self.0, |c| params.sample(py, [&[], &[d]], |t, out| c.sampler().sample_into(t, out)))
     }
 
     /// The derivatives ``C⁽ʲ⁾(t)``, ``j = 0 … order``, at every value of ``t``
@@ -159,12 +146,8 @@ curve_methods!(PyNurbsCurve {
     /// [[1.5, 2.0], [3.0, 4.0], [0.0, 0.0]]
     #[pyo3(signature = (t, order=None), text_signature = "($self, t, order=1)")]
     fn derivatives<'py>(
-        &self,
-        py: Python<'py>,
-        t: &Bound<'py, PyAny>,
-        order: Option<&Bound<'py, PyAny>>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        let order = count(keyword::opt_int(order, "order")?.unwrap_or(1), "order", 0)?;
+        &self, py: Python<'py>, t: &Obj<'py>, order: Option<&Obj<'py>>,
+    ) -> ObjResult<'py> {
         by_dim!(&self.0, |c| capability::curve_derivatives(py, c, t, order, self.dimension()))
     }
 
@@ -175,7 +158,7 @@ curve_methods!(PyNurbsCurve {
     /// ------
     /// ValueError
     ///     Where the curve has zero speed.
-    fn tangent<'py>(&self, py: Python<'py>, t: &Bound<'py, PyAny>) -> PyResult<Bound<'py, PyAny>> {
+    fn tangent<'py>(&self, py: Python<'py>, t: &Obj<'py>) -> ObjResult<'py> {
         let d = self.dimension();
         by_dim!(&self.0, |c| at_params(py, t, &[d], |v, out| {
             out.extend(c.tangent(v)?);
@@ -192,22 +175,14 @@ curve_methods!(PyNurbsCurve {
     /// >>> arc = NurbsCurve([[1, 0], [1, 1], [0, 1]], weights=[1, np.sqrt(0.5), 1], degree=2)
     /// >>> bool(np.allclose(arc.curvature([0.0, 0.3, 1.0]), 1.0))   # the unit circle
     /// True
-    fn curvature<'py>(
-        &self,
-        py: Python<'py>,
-        t: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyAny>> {
+    fn curvature<'py>(&self, py: Python<'py>, t: &Obj<'py>) -> ObjResult<'py> {
         by_dim!(&self.0, |c| capability::curve_curvature(py, c, t))
     }
 
     /// The rational basis ``Rᵢ(t) = wᵢNᵢ,ₚ(t) / Σⱼ wⱼNⱼ,ₚ(t)`` of every control
     /// point at every value of ``t``: non-negative, summing to 1; shape
     /// ``t.shape + (n,)``.
-    fn rational_basis<'py>(
-        &self,
-        py: Python<'py>,
-        t: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyAny>> {
+    fn rational_basis<'py>(&self, py: Python<'py>, t: &Obj<'py>) -> ObjResult<'py> {
         let n = by_dim!(&self.0, |c| c.control_points().len());
         by_dim!(&self.0, |c| at_params(py, t, &[n], |v, out| {
             out.extend(c.rational_basis(v)?);
@@ -226,10 +201,7 @@ curve_methods!(PyNurbsCurve {
     /// knot span (tolerance 1e-10 relative).
     #[pyo3(signature = (a=None, b=None))]
     fn arc_length(
-        &self,
-        py: Python<'_>,
-        a: Option<&Bound<'_, PyAny>>,
-        b: Option<&Bound<'_, PyAny>>,
+        &self, py: Python<'_>, a: Option<&Obj<'_>>, b: Option<&Obj<'_>>,
     ) -> PyResult<f64> {
         let (a, b) = (keyword::opt_real(a, "a")?, keyword::opt_real(b, "b")?);
         by_dim!(&self.0, |c| compute(py, || match (a, b) {
@@ -243,7 +215,7 @@ curve_methods!(PyNurbsCurve {
 
     /// The parameter at which the arc length from the start of the domain is
     /// ``length`` (Newton's method safeguarded by bisection).
-    fn param_at_length(&self, py: Python<'_>, length: &Bound<'_, PyAny>) -> PyResult<f64> {
+    fn param_at_length(&self, py: Python<'_>, length: &Obj<'_>) -> PyResult<f64> {
         let length = keyword::real(length, "length")?;
         by_dim!(&self.0, |c| compute(py, || c.param_at_length(length)))
     }
@@ -261,23 +233,14 @@ curve_methods!(PyNurbsCurve {
     /// (t, point, distance)
     ///     For one point: a float, an array ``(dimension,)`` and a float; for
     ///     ``m`` points: arrays ``(m,)``, ``(m, dimension)`` and ``(m,)``.
-    fn closest_point<'py>(
-        &self,
-        py: Python<'py>,
-        point: &Bound<'py, PyAny>,
-    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>, Bound<'py, PyAny>)> {
-        let targets = Targets::extract(point, self.dimension())?;
-        let found = by_dim!(&self.0, |c| capability::closest(py, c, &targets))?;
-        let [t, points, distances] = capability::items(found)?;
-        Ok((t, points, distances))
+    fn closest_point<'py>(&self, py: Python<'py>, point: &Obj<'py>) -> PyResult<Triple<'py>> {
+        let [t, p, d] = by_dim!(&self.0, |c| capability::closest(py, c, point))?;
+        Ok((t, p, d))
     }
 
     /// The tight axis-aligned box of the curve ``(min, max)``, each of shape
     /// ``(dimension,)`` (from the roots of each coordinate's derivative).
-    fn bounding_box<'py>(
-        &self,
-        py: Python<'py>,
-    ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+    fn bounding_box<'py>(&self, py: Python<'py>) -> PyResult<Pair<'py>> {
         by_dim!(&self.0, |c| capability::bounding_box(py, c))
     }
 
@@ -288,28 +251,11 @@ curve_methods!(PyNurbsCurve {
         use crate::dim::ToModel as _;
         let fuzzy: crate::dim::ByDim<crate::dim::Fuzzy> =
             by_dim!(&self.0, |c| crate::picture::crisp_fuzzy_curve(c)?.into());
-        let (a, b) = self.domain();
-        let rows = by_dim!(&self.0, |c| vec![
-            ("dimension", self.dimension().to_string()),
-            ("degree (order)", format!("{} ({})", c.degree(), c.order())),
-            ("control points", c.control_points().len().to_string()),
-            ("domain", format!("[{a:?}, {b:?}]")),
-        ]);
-        crate::picture::crisp_page(fuzzy.to_model()?, "NURBS curve", &rows)
+        crate::picture::crisp_page(fuzzy.to_model()?, "NURBS curve", &self.facts().rows())
     }
 
     fn __repr__(&self) -> String {
-        let (a, b) = self.domain();
-        by_dim!(&self.0, |c| {
-            format!(
-            "NurbsCurve(dimension={}, degree={}, order={}, control_points=({}, {}), knots=({},), domain=({a:?}, {b:?}))",
-            self.dimension(),
-            c.degree(),
-            c.order(),
-            c.control_points().len(),
-            self.dimension(),
-            c.knots().as_slice().len(),
-        )
-        })
+        let knots = by_dim!(&self.0, |c| c.knots().as_slice().len());
+        self.facts().repr("NurbsCurve", Some(knots))
     }
 });

@@ -5,20 +5,20 @@
 //! box (the last ones shared with `FuzzySurface`, `surface_methods.rs`).
 
 use pyo3::prelude::*;
-use pyo3::types::PyDict;
 use t2spline::{Direction, NurbsSurface};
 
-use crate::arrays::{coords_last, floats, optional_vector, Floats};
+use crate::arrays::{floats, optional_vector, Floats};
 use crate::capability;
 use crate::classes::{PyNurbsCurve, PyNurbsSurface};
-use crate::closest::{ClosestArrays, Targets};
-use crate::construct::{count, knot_vector, net_weights, rows, surface_degrees};
-use crate::curvature::{curvature_dict, spatial};
+use crate::closest::ClosestArrays;
+use crate::construct::{knot_vector, net_weights, rows, surface_degrees};
+use crate::curvature::{spatial, surface_curvature};
 use crate::dim::by_dim;
 use crate::errors::compute;
 use crate::keyword;
 use crate::net::{points_array, Net};
-use crate::sample::{at_pairs, channels, GridArg};
+use crate::py_types::{DictResult, Obj, ObjResult};
+use crate::sample::{at_pairs, GridArg};
 use crate::surface_methods::surface_methods;
 
 /// A surface of dimension `D` on the net of `points`.
@@ -47,12 +47,12 @@ surface_methods!(PyNurbsSurface, PyNurbsCurve {
     #[pyo3(signature = (control_points, weights=None, knots_u=None, knots_v=None, *, degree=None, order=None))]
     fn new(
         py: Python<'_>,
-        control_points: &Bound<'_, PyAny>,
-        weights: Option<&Bound<'_, PyAny>>,
-        knots_u: Option<&Bound<'_, PyAny>>,
-        knots_v: Option<&Bound<'_, PyAny>>,
-        degree: Option<&Bound<'_, PyAny>>,
-        order: Option<&Bound<'_, PyAny>>,
+        control_points: &Obj<'_>,
+        weights: Option<&Obj<'_>>,
+        knots_u: Option<&Obj<'_>>,
+        knots_v: Option<&Obj<'_>>,
+        degree: Option<&Obj<'_>>,
+        order: Option<&Obj<'_>>,
     ) -> PyResult<Self> {
         let (degree, order) = (
             keyword::opt_per_direction(degree, "degree")?,
@@ -78,7 +78,7 @@ surface_methods!(PyNurbsSurface, PyNurbsCurve {
 
     /// The control net, shape ``(nu, nv, dimension)``.
     #[getter]
-    fn control_points<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+    fn control_points<'py>(&self, py: Python<'py>) -> ObjResult<'py> {
         by_dim!(&self.0, |s| points_array(py, s.control_points().to_vec(), &s.net()))
     }
 
@@ -103,27 +103,13 @@ surface_methods!(PyNurbsSurface, PyNurbsCurve {
     ///     For a parameter outside its domain (``parameter v = 2 is outside
     ///     the domain [0, 1]``), NaN or infinity, shapes that do not
     ///     broadcast.
-    fn eval<'py>(
-        &self,
-        py: Python<'py>,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        let d = self.dimension();
-        by_dim!(&self.0, |s| at_pairs(py, u, v, &[d], |u, v, out| {
-            out.extend(s.eval(u, v)?);
-            Ok(())
-        }))
+    fn eval<'py>(&self, py: Python<'py>, u: &Obj<'py>, v: &Obj<'py>) -> ObjResult<'py> {
+        by_dim!(&self.0, |s| capability::surface_points(py, s, [u, v], self.dimension()))
     }
 
     /// ``surface(u, v)`` is ``surface.eval(u, v)`` (as splipy's surfaces are
     /// called).
-    fn __call__<'py>(
-        &self,
-        py: Python<'py>,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyAny>> {
+    fn __call__<'py>(&self, py: Python<'py>, u: &Obj<'py>, v: &Obj<'py>) -> ObjResult<'py> {
         self.eval(py, u, v)
     }
 
@@ -142,21 +128,12 @@ surface_methods!(PyNurbsSurface, PyNurbsCurve {
     /// numpy.ndarray
     ///     Shape ``(len(u), len(v), dimension)``: the point ``[a, b]`` is
     ///     ``S(u[a], v[b])``, as ``run``'s ``surfaces`` grids.
-    fn sample<'py>(
-        &self,
-        py: Python<'py>,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyAny>> {
+    fn sample<'py>(&self, py: Python<'py>, u: &Obj<'py>, v: &Obj<'py>) -> ObjResult<'py> {
         let grid = GridArg::extract(u, v)?;
-        let ([su, sv], d) = (grid.shape(), self.dimension());
-        let mut buffer = grid.buffer(d)?;
-        by_dim!(&self.0, |s| compute(py, || s.grid_sampler().sample_into(
-            grid.u.params(),
-            grid.v.params(),
-            &mut channels(&mut buffer, d, su * sv)
-        )))?;
-        coords_last(py, buffer, &[], d, &[su, sv])
+        let d = self.dimension();
+        by_dim!(&self.0, |s| grid.sample(py, [&[], &[d]], |[u, v], out| s
+            .grid_sampler()
+            .sample_into(u, v, out)))
     }
 
     /// The partial derivatives ``∂ᵏ⁺ˡS/∂uᵏ∂vˡ`` for ``k + l <= order`` at
@@ -179,14 +156,9 @@ surface_methods!(PyNurbsSurface, PyNurbsCurve {
     /// ([1.0, 0.0, 0.5], [0.0, 1.0, 0.25], [0.0, 0.0, 1.0])
     #[pyo3(signature = (u, v, order=None), text_signature = "($self, u, v, order=1)")]
     fn derivatives<'py>(
-        &self,
-        py: Python<'py>,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-        order: Option<&Bound<'py, PyAny>>,
-    ) -> PyResult<Bound<'py, PyAny>> {
-        let order = count(keyword::opt_int(order, "order")?.unwrap_or(1), "order", 0)?;
-        by_dim!(&self.0, |s| capability::surface_derivatives(py, s, u, v, order, self.dimension()))
+        &self, py: Python<'py>, u: &Obj<'py>, v: &Obj<'py>, order: Option<&Obj<'py>>,
+    ) -> ObjResult<'py> {
+        by_dim!(&self.0, |s| capability::surface_derivatives(py, s, [u, v], order, self.dimension()))
     }
 
     /// The unit normal ``S_u × S_v / |S_u × S_v|`` at every pair of ``u`` and
@@ -198,12 +170,7 @@ surface_methods!(PyNurbsSurface, PyNurbsCurve {
     /// ValueError
     ///     Where ``S_u`` and ``S_v`` are parallel or zero; for a surface in
     ///     the plane.
-    fn normal<'py>(
-        &self,
-        py: Python<'py>,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyAny>> {
+    fn normal<'py>(&self, py: Python<'py>, u: &Obj<'py>, v: &Obj<'py>) -> ObjResult<'py> {
         let s = spatial(&self.0, "normal")?;
         at_pairs(py, u, v, &[3], |u, v, out| {
             out.extend(s.normal(u, v)?);
@@ -246,29 +213,15 @@ surface_methods!(PyNurbsSurface, PyNurbsCurve {
     /// [[0.0, -0.5], [0.0, -0.5]]
     /// >>> (c["directions"][0, 0].round(12) + 0.0).tolist()
     /// [0.0, 0.0, 1.0]
-    fn curvature<'py>(
-        &self,
-        py: Python<'py>,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyDict>> {
-        let s = spatial(&self.0, "curvature")?;
-        curvature_dict(py, u, v, &[], |u, v, out| {
-            out.push(s.curvature(u, v)?);
-            Ok(())
-        })
+    fn curvature<'py>(&self, py: Python<'py>, u: &Obj<'py>, v: &Obj<'py>) -> DictResult<'py> {
+        surface_curvature(py, &self.0, "curvature", [u, v])
     }
 
     /// The rational basis ``Rᵢⱼ(u, v) = wᵢⱼNᵢ,ₚ(u)Mⱼ,q(v) / Σₖₗ
     /// wₖₗNₖ,ₚ(u)Mₗ,q(v)`` of every control point at every pair of ``u`` and
     /// ``v``: non-negative, summing to 1; shape ``broadcast(u, v).shape +
     /// (nu, nv)``.
-    fn rational_basis<'py>(
-        &self,
-        py: Python<'py>,
-        u: &Bound<'py, PyAny>,
-        v: &Bound<'py, PyAny>,
-    ) -> PyResult<Bound<'py, PyAny>> {
+    fn rational_basis<'py>(&self, py: Python<'py>, u: &Obj<'py>, v: &Obj<'py>) -> ObjResult<'py> {
         let net = by_dim!(&self.0, |s| s.net());
         by_dim!(&self.0, |s| at_pairs(py, u, v, &net, |u, v, out| {
             out.extend(s.rational_basis(u, v)?.into_iter().flatten());
@@ -299,15 +252,9 @@ surface_methods!(PyNurbsSurface, PyNurbsCurve {
     /// >>> u, v, p, d = s.closest_point([1.2, 0.5, 4.0])     # S(u, v) = (3u, 2v, 0)
     /// >>> round(u, 12), round(v, 12), round(d, 12)
     /// (0.4, 0.25, 4.0)
-    fn closest_point<'py>(
-        &self,
-        py: Python<'py>,
-        point: &Bound<'py, PyAny>,
-    ) -> PyResult<ClosestArrays<'py>> {
-        let targets = Targets::extract(point, self.dimension())?;
-        let found = by_dim!(&self.0, |s| capability::closest(py, s, &targets))?;
-        let [u, v, points, distances] = capability::items(found)?;
-        Ok((u, v, points, distances))
+    fn closest_point<'py>(&self, py: Python<'py>, point: &Obj<'py>) -> PyResult<ClosestArrays<'py>> {
+        let [u, v, p, d] = by_dim!(&self.0, |s| capability::closest(py, s, point))?;
+        Ok((u, v, p, d))
     }
 
     /// The picture in a notebook: the shaded surface and its control net,
@@ -321,29 +268,11 @@ surface_methods!(PyNurbsSurface, PyNurbsCurve {
         let Ok(model) = fuzzy.to_model() else {
             return Ok(None);
         };
-        let rows = by_dim!(&self.0, |s| {
-            let ([p, q], [nu, nv]) = (s.degree(), s.shape());
-            vec![
-                ("dimension", self.dimension().to_string()),
-                ("degree (u, v)", format!("({p}, {q})")),
-                ("control net", format!("{nu} × {nv}")),
-            ]
-        });
-        crate::picture::crisp_page(model, "NURBS surface", &rows).map(Some)
+        crate::picture::crisp_page(model, "NURBS surface", &self.facts().rows()).map(Some)
     }
 
     fn __repr__(&self) -> String {
-        let ((a, b), (c, e)) = self.domain();
-        by_dim!(&self.0, |s| {
-            let ([p, q], [nu, nv]) = (s.degree(), s.shape());
-            let [ku, kv] = Direction::BOTH.map(|k| s.knots(k).as_slice().len());
-            format!(
-                "NurbsSurface(dimension={}, degree=({p}, {q}), order=({}, {}), control_points=({nu}, {nv}, {}), knots=({ku}, {kv}), domain=(({a:?}, {b:?}), ({c:?}, {e:?})))",
-                self.dimension(),
-                p + 1,
-                q + 1,
-                self.dimension(),
-            )
-        })
+        let knots = by_dim!(&self.0, |s| Direction::BOTH.map(|k| s.knots(k).as_slice().len()));
+        self.facts().repr("NurbsSurface", Some(knots))
     }
 });

@@ -92,14 +92,18 @@ fn crisp_point<const D: usize>(p: &[f64; D]) -> Result<Nt2Point<D>, t2spline::Er
     Ok(Nt2Point::new(coords))
 }
 
-/// The fuzzy curve whose every number is crisp: the curve itself.
-pub(crate) fn crisp_fuzzy_curve<const D: usize>(c: &NurbsCurve<D>) -> PyResult<FuzzyCurve<D>> {
-    let points = c
-        .control_points()
+/// Crisp points of `D` coordinates, one per row of `points`.
+fn crisp_points<const D: usize>(points: &[[f64; D]]) -> PyResult<Vec<Nt2Point<D>>> {
+    points
         .iter()
         .map(crisp_point)
         .collect::<Result<Vec<_>, _>>()
-        .map_err(core_error)?;
+        .map_err(core_error)
+}
+
+/// The fuzzy curve whose every number is crisp: the curve itself.
+pub(crate) fn crisp_fuzzy_curve<const D: usize>(c: &NurbsCurve<D>) -> PyResult<FuzzyCurve<D>> {
+    let points = crisp_points(c.control_points())?;
     FuzzyCurve::try_new(
         c.degree(),
         points,
@@ -114,12 +118,7 @@ pub(crate) fn crisp_fuzzy_surface<const D: usize>(
     s: &NurbsSurface<D>,
 ) -> PyResult<FuzzySurface<D>> {
     let [_, nv] = s.shape();
-    let points = s
-        .control_points()
-        .iter()
-        .map(crisp_point)
-        .collect::<Result<Vec<_>, _>>()
-        .map_err(core_error)?;
+    let points = crisp_points(s.control_points())?;
     let rows: Vec<Vec<Nt2Point<D>>> = points.chunks(nv.max(1)).map(<[_]>::to_vec).collect();
     let weights: Vec<Vec<f64>> = s.weights().chunks(nv.max(1)).map(<[_]>::to_vec).collect();
     FuzzySurface::try_new(
@@ -132,6 +131,16 @@ pub(crate) fn crisp_fuzzy_surface<const D: usize>(
         ],
     )
     .map_err(core_error)
+}
+
+/// The picture of stage 1 of a fuzzy model (level 0, the paper's type
+/// reduction) as a page under the table of `rows`.
+///
+/// # Errors
+/// Those of [`stage_figures`].
+pub(crate) fn first_stage_page(model: Model, rows: &[(&str, String)]) -> PyResult<String> {
+    let figures = stage_figures(model, Alpha::ZERO, TypeReduction::Paper, Stages::First)?;
+    Ok(page(&figures, rows))
 }
 
 /// The picture of a crisp curve or surface: stage 1 of the crisp fuzzy

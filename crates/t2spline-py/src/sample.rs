@@ -6,11 +6,12 @@
 
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
-use pyo3::types::{PyBool, PyInt};
+use pyo3::types::{PyBool, PyDict, PyInt};
 use rayon::prelude::*;
 use t2spline::sampling::{Params, SampleBuffer};
+use t2spline::{Error, Layer};
 
-use crate::arrays::{array, broadcast_shape, floats, shape_text};
+use crate::arrays::{array, broadcast_shape, coords_last, floats, shape_text};
 use crate::errors::{compute, core_error};
 
 /// The most bytes the arrays of one sampling call may take (8 GiB, the limit
@@ -73,6 +74,25 @@ impl ParamsArg {
     /// The number of parameters.
     pub(crate) fn len(&self) -> usize {
         self.params().len()
+    }
+
+    /// The curve sampled at the parameters by `fill` with the GIL released:
+    /// `fill(params, channels)` writes `lead`'s product of `d` channels of
+    /// `len` values each (structure of arrays); seen as an array of shape
+    /// `lead + (len, d)`, points last, without a copy.
+    ///
+    /// # Errors
+    /// An output beyond the size limit (naming `params`); the error of
+    /// `fill`.
+    pub(crate) fn sample<'py>(
+        &self,
+        py: Python<'py>,
+        [lead, d]: [&[usize]; 2],
+        fill: impl FnOnce(Params<'_>, &mut [&mut [f64]]) -> Result<(), Error> + Send,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let n = self.len();
+        let buffer = output_buffer(n, lead.iter().chain(d).product(), "params")?;
+        filled(py, buffer, [lead, d, &[n]], |out| fill(self.params(), out))
     }
 }
 
@@ -165,6 +185,24 @@ impl GridArg {
         Ok(SampleBuffer::for_overwrite(su * sv * per_point))
     }
 
+    /// The surface sampled on the grid by `fill` with the GIL released:
+    /// `fill([u, v], channels)` writes `lead`'s product of `d` channels of
+    /// `su·sv` values each (structure of arrays); seen as an array of shape
+    /// `lead + (su, sv, d)`, points last, without a copy.
+    ///
+    /// # Errors
+    /// An output beyond the size limit; the error of `fill`.
+    pub(crate) fn sample<'py>(
+        &self,
+        py: Python<'py>,
+        [lead, d]: [&[usize]; 2],
+        fill: impl FnOnce([Params<'_>; 2], &mut [&mut [f64]]) -> Result<(), Error> + Send,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let buffer = self.buffer(lead.iter().chain(d).product())?;
+        let grid = [self.u.params(), self.v.params()];
+        filled(py, buffer, [lead, d, &self.shape()], |out| fill(grid, out))
+    }
+
     /// The parameters along u and along v as arrays: the uniform ones over
     /// the `domains` for counts.
     ///
@@ -190,6 +228,46 @@ pub(crate) fn channels(buffer: &mut [f64], count: usize, len: usize) -> Vec<&mut
         return (0..count).map(|_| <&mut [f64]>::default()).collect();
     }
     buffer.chunks_mut(len).collect()
+}
+
+/// `buffer` filled by `fill` with the GIL released, as the engine writes:
+/// `lead`'s product of `d` channels (`d = [dimension]`), each of `samples`'
+/// product of values; seen as an array of shape `lead + samples + d`,
+/// points last, without a copy.
+///
+/// # Errors
+/// The error of `fill`.
+fn filled<'py>(
+    py: Python<'py>,
+    mut buffer: SampleBuffer,
+    [lead, d, samples]: [&[usize]; 3],
+    fill: impl FnOnce(&mut [&mut [f64]]) -> Result<(), Error> + Send,
+) -> PyResult<Bound<'py, PyAny>> {
+    let count = lead.iter().chain(d).product();
+    let mut out = channels(&mut buffer, count, samples.iter().product());
+    compute(py, || fill(&mut out))?;
+    coords_last(py, buffer, lead, d.iter().product(), samples)
+}
+
+/// The dict of a fuzzy object's sample: the `parameters` (name and array),
+/// then for each layer name (`"upper_left"` … `"upper_right"`) its points,
+/// the views `layers[i]` of one `(7, …)` array.
+///
+/// # Errors
+/// Those of setting a dict's items.
+pub(crate) fn layer_dict<'py, const N: usize>(
+    py: Python<'py>,
+    parameters: [(&str, Bound<'py, PyAny>); N],
+    layers: &Bound<'py, PyAny>,
+) -> PyResult<Bound<'py, PyDict>> {
+    let out = PyDict::new(py);
+    for (name, values) in parameters {
+        out.set_item(name, values)?;
+    }
+    for l in Layer::ALL {
+        out.set_item(l.name(), layers.get_item(l.index())?)?;
+    }
+    Ok(out)
 }
 
 /// `f(t, out)` at every value of `t` (a number, or an array of any shape),

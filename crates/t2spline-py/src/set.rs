@@ -474,12 +474,9 @@ fn sections_list<'py>(py: Python<'py>, sections: &[SectionLevel]) -> PyResult<Bo
 
 /// The curve of a plane curve's query, `what` naming the method.
 fn planar<'a>(curve: &'a ByDim<Fuzzy>, what: &str) -> PyResult<&'a FuzzyCurve<2>> {
-    match curve {
-        ByDim::Planar(c) => Ok(c),
-        ByDim::Spatial(_) => Err(PyValueError::new_err(format!(
-            "{what}: taken of plane curves; for a space curve, take its region's projections (region(alpha, plane='xy'|'xz'|'yz'))"
-        ))),
-    }
+    curve.planar_or(|| {
+        format!("{what}: taken of plane curves; for a space curve, take its region's projections (region(alpha, plane='xy'|'xz'|'yz'))")
+    })
 }
 
 /// `FuzzyCurve.section(x0, levels=, tolerance=)`.

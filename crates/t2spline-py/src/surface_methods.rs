@@ -169,9 +169,9 @@ macro_rules! surface_methods {
                 )?;
                 let t = $crate::keyword::real(&$crate::directed::required(t, "insert_knot", "t")?, "t")?;
                 let times = $crate::keyword::times(times.as_ref())?;
-                $crate::dim::by_dim!(&self.0, |s| $crate::errors::compute(py, || Ok(s
-                    .insert_knot(direction, t, times)?
-                    .into())))
+                let op = $crate::knot_ops::KnotOp::Insert(t, times);
+                let [s] = $crate::knot_ops::apply(py, &self.0, direction, op)?;
+                Ok(Self(s))
             }
 
             /// The same surface with all of ``knots`` inserted in
@@ -191,9 +191,9 @@ macro_rules! surface_methods {
                 let knots = $crate::directed::required(knots, "refine_knots", "knots")?;
                 let new = $crate::arrays::optional_vector(Some(&knots), "knots")?
                     .unwrap_or_default();
-                $crate::dim::by_dim!(&self.0, |s| $crate::errors::compute(py, || Ok(s
-                    .refine_knots(direction, &new)?
-                    .into())))
+                let op = $crate::knot_ops::KnotOp::Refine(&new);
+                let [s] = $crate::knot_ops::apply(py, &self.0, direction, op)?;
+                Ok(Self(s))
             }
 
             /// The same surface with its degree in ``direction`` raised by
@@ -212,9 +212,9 @@ macro_rules! surface_methods {
                     class, "elevate_degree", ["times"], args, [times], direction,
                 )?;
                 let times = $crate::keyword::times(times.as_ref())?;
-                $crate::dim::by_dim!(&self.0, |s| $crate::errors::compute(py, || Ok(s
-                    .elevate_degree(direction, times)?
-                    .into())))
+                let op = $crate::knot_ops::KnotOp::Elevate(times);
+                let [s] = $crate::knot_ops::apply(py, &self.0, direction, op)?;
+                Ok(Self(s))
             }
 
             /// The two surfaces on either side of ``t`` in ``direction``,
@@ -232,10 +232,9 @@ macro_rules! surface_methods {
                 let (direction, [t]) =
                     $crate::directed::directed(class, "split_at", ["t"], args, [t], direction)?;
                 let t = $crate::keyword::real(&$crate::directed::required(t, "split_at", "t")?, "t")?;
-                $crate::dim::by_dim!(&self.0, |s| $crate::errors::compute(py, || {
-                    let [a, b] = s.split_at(direction, t)?;
-                    Ok((a.into(), b.into()))
-                }))
+                let op = $crate::knot_ops::KnotOp::Split(t);
+                let [a, b] = $crate::knot_ops::apply(py, &self.0, direction, op)?;
+                Ok((Self(a), Self(b)))
             }
 
             /// The piece of the surface over the rectangle ``u × v`` of its
@@ -255,6 +254,17 @@ macro_rules! surface_methods {
         }
 
         impl $class {
+            /// What its descriptions say (`__repr__`, `_repr_html_`).
+            fn facts(&self) -> $crate::describe::SurfaceFacts {
+                let (dimension, domain) = (self.0.dimension(), self.domain());
+                $crate::dim::by_dim!(&self.0, |s| $crate::describe::SurfaceFacts {
+                    dimension,
+                    degree: s.degree(),
+                    net: s.shape(),
+                    domain,
+                })
+            }
+
             /// The domains in u and in v.
             fn domains(&self) -> [t2spline::Domain; 2] {
                 $crate::dim::by_dim!(&self.0, |s| t2spline::Direction::BOTH.map(|d| s.domain(d)))

@@ -1283,6 +1283,28 @@ pub enum Error {
         end: Vec<f64>,
     },
 
+    /// An operation that does not yet take fuzzy weights was asked of a
+    /// model that has them (docs/method.md §16 lists what does).
+    ///
+    /// ```
+    /// # use t2spline::{Error, FuzzyCurve, Nt2Number, Nt2Point};
+    /// let n = |c: f64| Nt2Number::try_new(c, [c - 1.0, c + 1.0], [c - 0.5, c + 0.5], [c - 0.2, c + 0.2], 0.5);
+    /// let points = vec![Nt2Point::new([n(0.0)?, n(0.0)?]), Nt2Point::new([n(3.0)?, n(4.0)?])];
+    /// let c = FuzzyCurve::try_new(1, points, vec![1.0, 1.0], None)?
+    ///     .with_weight_numbers(vec![
+    ///         Nt2Number::try_new(1.0, [0.5, 1.5], [0.7, 1.3], [0.9, 1.1], 0.5)?,
+    ///         Nt2Number::try_new(2.0, [1.0, 3.0], [1.5, 2.5], [1.8, 2.2], 0.5)?,
+    ///     ])?;
+    /// let e = c.insert_knot(0.5, 1).unwrap_err();
+    /// assert_eq!(e.to_string(), "knot insertion is not available for a model with fuzzy weights");
+    /// # Ok::<(), t2spline::Error>(())
+    /// ```
+    #[error("{what} is not available for a model with fuzzy weights")]
+    FuzzyWeights {
+        /// The operation, as the start of the message.
+        what: &'static str,
+    },
+
     /// The cut `[left, right]` of an uncertain weight is not valid
     /// (docs/method.md §15): both ends finite, `0 < left ≤ right` (at least
     /// 0 for [`weighted_average_range`](crate::interval_weights::weighted_average_range)).

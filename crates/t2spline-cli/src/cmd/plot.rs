@@ -120,6 +120,12 @@ pub fn plot(args: &PlotArgs) -> anyhow::Result<()> {
     // nothing; the paths written go to standard output.
     let figures =
         all_figures(job, alpha, &figure_options(&args.figures, job)?).map_err(about_number)?;
+    if let Some(reason) = t2spline_plot::set_figures_left_out(job) {
+        crate::output::note(
+            "plot",
+            format!("note: the figures membership, section and measures are left out, and stages 1–2 shade no regions: {reason}"),
+        );
+    }
     if job.model.is_surface() {
         if let Some(reason) = terrain_left_out(job)? {
             crate::output::note(

@@ -21,6 +21,7 @@ mod surface;
 mod tests;
 mod valid;
 mod walker;
+mod weights;
 
 pub use crate::job_json::job_json;
 pub use crate::limits::{

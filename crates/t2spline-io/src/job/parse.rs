@@ -27,6 +27,7 @@ use super::schema::{CLOSURE_RULE, DATA_KEYS, FIT_MAKES, FIT_MAKES_RULE, TOP_KEYS
 use super::surface;
 use super::valid;
 use super::walker::{kind, Walker};
+use super::weights::CurveWeights;
 use crate::error::Problem;
 use crate::fit_data::FitData;
 use crate::limits::{MAX_ARRAY, MAX_KEYS, MAX_NESTING, MAX_POINTS, MAX_PROBLEMS, MAX_VALUES};
@@ -153,6 +154,23 @@ fn walk<T>(
     }
 }
 
+/// The fuzzy curve of degree `degree` through `points` with `weights`,
+/// crisp or fuzzy (docs/method.md §16).
+fn weighted<const D: usize>(
+    degree: usize,
+    points: Vec<Nt2Point<D>>,
+    weights: CurveWeights,
+    knots: Option<Vec<f64>>,
+) -> Result<FuzzyCurve<D>, t2spline::Error> {
+    match weights {
+        CurveWeights::Crisp(w) => FuzzyCurve::try_new(degree, points, w, knots),
+        CurveWeights::Fuzzy(w) => {
+            let crisp = w.iter().map(t2spline::Nt2Number::crisp).collect();
+            FuzzyCurve::try_new(degree, points, crisp, knots)?.with_weight_numbers(w)
+        }
+    }
+}
+
 /// A JSON syntax error with its line and column (in characters), without
 /// serde's own suffix, and in plain words for the errors a hostile file meets.
 fn syntax_problem(text: &str, e: &serde_json::Error) -> Problem {
@@ -244,6 +262,7 @@ impl Walker {
             degree,
             alpha: common.alpha,
             lower_height: common.height.ok().flatten(),
+            height: common.height,
             samples,
             points,
             count: o.get("points").and_then(Value::as_array).map(Vec::len),
@@ -259,7 +278,9 @@ impl Walker {
         let type_reduction = self.type_reduction(o);
         let closed = o.get("closed").and_then(|v| self.boolean(v, "closed"));
         let units = self.units(o);
-        let weights = o.get("weights").and_then(|v| self.numbers(v, "weights"));
+        let weights = o
+            .get("weights")
+            .and_then(|v| self.curve_weights(v, header.height));
         let knots = o.get("knots").and_then(|v| {
             if v.is_object() {
                 self.report(
@@ -275,11 +296,12 @@ impl Walker {
         let n = header.count;
         let weights = match (weights, o.contains_key("weights")) {
             (Some(w), _) => Some(w),
-            (None, false) => n.map(|n| vec![1.0; n]),
+            (None, false) => n.map(|n| CurveWeights::Crisp(vec![1.0; n])),
             (None, true) => None,
         };
         if let (Some(degree), Some(n)) = (header.degree, n) {
-            self.curve_rules(degree, n, weights.as_deref(), knots.as_deref());
+            let crisp = weights.as_ref().map(CurveWeights::crisp);
+            self.curve_rules(degree, n, crisp.as_deref(), knots.as_deref());
         }
         // A key that failed to parse is None here and has been reported.
         if !self.problems.is_empty() {
@@ -293,10 +315,8 @@ impl Walker {
             type_reduction?,
         );
         let model = match points {
-            Points::Planar(p) => FuzzyCurve::try_new(degree, p, weights, knots).map(Model::Planar),
-            Points::Spatial(p) => {
-                FuzzyCurve::try_new(degree, p, weights, knots).map(Model::Spatial)
-            }
+            Points::Planar(p) => weighted(degree, p, weights, knots).map(Model::Planar),
+            Points::Spatial(p) => weighted(degree, p, weights, knots).map(Model::Spatial),
         };
         if let (Ok(model), Some(true)) = (&model, closed) {
             if let Err(e) = closure_gap(model) {
@@ -497,6 +517,9 @@ struct Header {
     degree: Option<usize>,
     alpha: Option<Alpha>,
     lower_height: Option<f64>,
+    /// The top-level `lower_height` as the numbers read it: `Err(())`
+    /// where it was given and refused.
+    height: Result<Option<f64>, ()>,
     /// `Some(None)`: not given.
     samples: Option<Option<usize>>,
     points: Option<Points>,

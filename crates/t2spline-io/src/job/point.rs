@@ -54,6 +54,22 @@ impl Walker {
         height: Result<Option<f64>, ()>,
     ) -> Option<Nt2Number> {
         let key = child(point, place.axis.map_or("?", Axis::name));
+        self.number_at(v, &key, place, height)
+    }
+
+    /// One fuzzy number at `key` (a coordinate, or a fuzzy weight
+    /// `weights[2]`): a bare number (crisp) or an object with `crisp`,
+    /// `upper`, `primary`, `lower` and perhaps its own `lower_height`,
+    /// checked by the core's rules (docs/method.md §1); the core's errors
+    /// carry `place`.
+    pub(super) fn number_at(
+        &mut self,
+        v: &Value,
+        key: &str,
+        place: Place,
+        height: Result<Option<f64>, ()>,
+    ) -> Option<Nt2Number> {
+        let key = key.to_owned();
         // A bare number is a crisp number: the job's height, else 1.
         if let Some(x) = v.as_f64() {
             let h = height.ok().flatten().unwrap_or(1.0);
@@ -63,7 +79,7 @@ impl Walker {
                 matches!(e, t2spline::Error::NotFinite { what, .. }
                     | t2spline::Error::OutOfRange { what, .. } if *what == "crisp")
             }) {
-                self.located(&key, e.at(place));
+                self.number_problem(&key, &key, place, e);
             }
             return Nt2Number::try_new(x, [x; 2], [x; 2], [x; 2], h).ok();
         }
@@ -113,12 +129,25 @@ impl Walker {
                 | t2spline::Error::OutOfRange { what, .. } => value_path(&key, what),
                 _ => key.clone(),
             };
-            self.located(&path, e.at(place));
+            self.number_problem(&path, &key, place, e);
         }
         if stand_in {
             return None;
         }
         Nt2Number::try_new(crisp, upper, primary, lower, h).ok()
+    }
+}
+
+impl Walker {
+    /// A problem `e` of the number at `key`, placed at `path`: the core's
+    /// error names a coordinate's place itself (`points[1].y: …`); a number
+    /// with no such place (a fuzzy weight) is named by its key.
+    fn number_problem(&mut self, path: &str, key: &str, place: Place, e: t2spline::Error) {
+        if place == Place::NONE {
+            self.located(path, format!("{key}: {e}"));
+        } else {
+            self.located(path, e.at(place));
+        }
     }
 }
 

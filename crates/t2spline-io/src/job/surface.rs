@@ -375,6 +375,20 @@ impl Walker {
         let mut out = Vec::with_capacity(rows.len());
         for (i, row) in rows.iter().enumerate() {
             let key = element("weights", i);
+            let fuzzy: Vec<usize> = row.as_array().map_or_else(Vec::new, |r| {
+                let objects = r.iter().enumerate().filter(|(_, x)| x.is_object());
+                objects.map(|(j, _)| j).collect()
+            });
+            if !fuzzy.is_empty() {
+                for j in fuzzy {
+                    self.report(
+                        &element(&key, j),
+                        "fuzzy weights are read for curves so far: a surface's weights are numbers",
+                    );
+                }
+                out.push(None);
+                continue;
+            }
             let values = self.numbers(row, &key);
             let length = row.as_array().map(Vec::len);
             let columns = points.and_then(|p| p.get(i)?.as_array().map(Vec::len));

@@ -94,10 +94,21 @@ pub struct FigureOptions {
     pub station: Option<f64>,
 }
 
+/// Why a curve's figures of the set view (`membership`, `section`,
+/// `measures`, and the regions shaded in stages 1–2) are left out, if they
+/// are: a curve with fuzzy weights has no set view yet (docs/method.md §16).
+#[must_use]
+pub fn set_figures_left_out(job: &Job) -> Option<&'static str> {
+    job.model.has_fuzzy_weights().then_some(
+        "the set view (regions, membership, sections, measures) of a curve with fuzzy weights is not available yet",
+    )
+}
+
 /// Every figure of the job at `alpha`, in the order of [`FIGURE_NAMES`]; a
 /// space curve has all but `membership` and `section` (figures of the
 /// plane), a surface job all but those and `alpha-sweep`, `reductions` and `measures`
-/// (nor a curve of more than [`MEASURES_MAX_POINTS`] control points), and
+/// (nor a curve of more than [`MEASURES_MAX_POINTS`] control points, nor a
+/// curve with fuzzy weights: [`set_figures_left_out`]), and
 /// after them, for a terrain, the figures of [`TERRAIN_FIGURE_NAMES`] (a
 /// surface that is not one has none: [`terrain_left_out`] says why). Stages 2–4 follow
 /// the job's type reduction, as `t2spline run` does (a reduction other than
@@ -148,14 +159,17 @@ pub fn all_figures(job: &Job, alpha: Alpha, options: &FigureOptions) -> Result<V
             ]
             .into_iter()
             .chain(
-                (job.model.control_point_count() <= MEASURES_MAX_POINTS)
-                    .then(|| measures_figure(job))
-                    .transpose()?,
+                (job.model.control_point_count() <= MEASURES_MAX_POINTS
+                    && !job.model.has_fuzzy_weights())
+                .then(|| measures_figure(job))
+                .transpose()?,
             )
             .collect())
         },
         || -> Result<Vec<Figure>, Error> {
-            if !matches!(job.model, t2spline::job::Model::Planar(_)) {
+            if !matches!(job.model, t2spline::job::Model::Planar(_))
+                || job.model.has_fuzzy_weights()
+            {
                 return Ok(Vec::new());
             }
             let (map, section) = rayon::join(

@@ -67,8 +67,9 @@ impl Still {
         } else {
             let scene = CurveScene::new(figure_run, &heights, options.aspect);
             let zero = set_view::regions(&job.model, Alpha::ZERO, &scene.axes())?;
+            let fuzzy_weights = job.model.has_fuzzy_weights();
             let set_figures = match job.model {
-                t2spline::job::Model::Planar(_) => Some((
+                t2spline::job::Model::Planar(_) if !fuzzy_weights => Some((
                     static_svg(&membership_figure(job, &scene)?),
                     static_svg(&section_figure(job, &scene, options.station)?),
                 )),
@@ -76,8 +77,10 @@ impl Still {
             };
             // Beyond MEASURES_MAX_POINTS the largest length and the area are
             // branch-and-bound brackets, too slow for a page (`t2spline measure`
-            // gives them), and the section is left out.
-            let measures = (job.model.control_point_count() <= MEASURES_MAX_POINTS)
+            // gives them), and the section is left out; with fuzzy weights
+            // there is no set view yet (docs/method.md §16).
+            let measures = (job.model.control_point_count() <= MEASURES_MAX_POINTS
+                && !fuzzy_weights)
                 .then(|| measures_figure(job).map(|f| static_svg(&f)))
                 .transpose()?;
             (

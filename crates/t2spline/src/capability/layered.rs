@@ -1,12 +1,13 @@
 //! A fuzzy object as its seven layers: the crisp object through one value of
 //! every control point, with the fuzzy object's weights and knots
-//! (docs/method.md §6). What is measured on a layer — derivatives,
-//! curvature, bounding box, closest point — is measured on the fuzzy object
-//! layer by layer, written here once for curves and surfaces.
+//! (docs/method.md §6) — with fuzzy weights, the same value of every weight
+//! (docs/method.md §16). What is measured on a layer — derivatives,
+//! curvature, closest point — is measured on the fuzzy object layer by
+//! layer, written here once for curves and surfaces.
 
 use crate::capability::{Bounded, Closest, Curvature, Differentiable, Parametric};
 use crate::error::Error;
-use crate::fuzzy::{Layer, Layers, Nt2Point};
+use crate::fuzzy::{Layer, Layers, Nt2Number, Nt2Point};
 use crate::nurbs::BoundingBox;
 
 /// A fuzzy curve or surface: its fuzzy control points, and the crisp object
@@ -21,13 +22,29 @@ pub trait Layered<const D: usize> {
     fn fuzzy_points(&self) -> &[Nt2Point<D>];
 
     /// The crisp object with this object's weights and knots through
-    /// `points` (one per fuzzy control point, in the same order).
+    /// `points` (one per fuzzy control point, in the same order); with fuzzy
+    /// weights, their crisp values.
     fn through(&self, points: Vec<[f64; D]>) -> Self::Crisp;
 
+    /// The fuzzy weights, one per control point in the order of
+    /// [`Layered::fuzzy_points`], or `None` where the weights are crisp
+    /// (docs/method.md §16).
+    fn weight_numbers(&self) -> Option<&[Nt2Number]>;
+
+    /// The crisp object with this object's knots through `points` with the
+    /// weights `weights` (one per control point, each a value of its fuzzy
+    /// weight, so valid weights).
+    fn through_weighted(&self, points: Vec<[f64; D]>, weights: Vec<f64>) -> Self::Crisp;
+
     /// The layer object through one value of every control point
-    /// (docs/method.md §6).
+    /// (docs/method.md §6) and, with fuzzy weights, the same value of every
+    /// weight (docs/method.md §16).
     fn layer(&self, layer: Layer) -> Self::Crisp {
-        self.through(self.fuzzy_points().iter().map(|p| p.layer(layer)).collect())
+        let points = self.fuzzy_points().iter().map(|p| p.layer(layer)).collect();
+        match self.weight_numbers() {
+            None => self.through(points),
+            Some(w) => self.through_weighted(points, w.iter().map(|w| w.layer(layer)).collect()),
+        }
     }
 }
 
@@ -81,15 +98,29 @@ where
     per_layer(fuzzy, |c| c.curvature_at(at))
 }
 
-/// The union of the seven layers' bounding boxes: the box the fuzzy object
-/// can occupy. Since the layers are ordered at every parameter, its lower
-/// corner comes from the `upper_left` layer and its upper corner from the
-/// `upper_right` layer.
+/// A box the fuzzy object can occupy. With crisp weights it is the union
+/// of the seven layers' bounding boxes, the least such box: since the
+/// layers are ordered at every parameter, its lower corner comes from the
+/// `upper_left` layer and its upper corner from the `upper_right` layer.
+/// With fuzzy weights the layers are not ordered and do not bound the
+/// object, and the box is that of every upper cut at level 0 of the control
+/// points: every admissible choice is a weighted average of points inside
+/// them with non-negative weights (docs/method.md §16). It contains the
+/// object, but need not be the least box that does.
 pub fn bounding_box<const D: usize, T>(fuzzy: &T) -> BoundingBox<D>
 where
     T: Layered<D> + ?Sized,
     T::Crisp: Bounded<D>,
 {
+    if fuzzy.weight_numbers().is_some() {
+        let mut boxes = fuzzy.fuzzy_points().iter().map(|p| BoundingBox {
+            min: p.layer(Layer::UpperLeft),
+            max: p.layer(Layer::UpperRight),
+        });
+        if let Some(first) = boxes.next() {
+            return boxes.fold(first, BoundingBox::union);
+        }
+    }
     let [first, rest @ ..] = Layer::ALL;
     rest.iter()
         .fold(fuzzy.layer(first).bounding_box(), |b, &l| {

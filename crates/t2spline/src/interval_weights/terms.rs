@@ -207,6 +207,25 @@ impl<const D: usize> IntervalTerms<D> {
         Ok(Self::new_unchecked(basis, weights, points))
     }
 
+    /// Terms with the bounds `θᵢ ∈ [lower[i], upper[i]]` of the weighted
+    /// average's weights given directly (basis values 1), for supersets of
+    /// the sets over a range of parameters: `0 ≤ lowerᵢ ≤ upperᵢ` finite,
+    /// `Σ lowerᵢ > 0`, checked by the caller. A lower bound may be 0.
+    pub(crate) fn from_bounds(
+        lower: Vec<f64>,
+        upper: Vec<f64>,
+        points: Vec<[[f64; 2]; D]>,
+    ) -> Self {
+        debug_assert!(lower.iter().sum::<f64>() > 0.0);
+        IntervalTerms {
+            basis: vec![1.0; lower.len()],
+            weights: lower.iter().zip(&upper).map(|(&l, &u)| [l, u]).collect(),
+            points,
+            lower,
+            upper,
+        }
+    }
+
     /// The terms from values a caller has checked.
     pub(crate) fn new_unchecked(
         basis: &[f64],

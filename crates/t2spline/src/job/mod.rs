@@ -50,8 +50,8 @@ pub use geometry::{Geometry, NamedCurve};
 pub use model::{Model, ModelVisitor};
 pub use near_height::{NearHeight, NEAR_HEIGHT_ULPS};
 pub use output::{
-    ControlPoints, CrispDefuzzified, Distance, LeftRight, Parameter, Parameters, Regime, RunOutput,
-    Sampled, SixLayers, Spline,
+    ControlPoints, CrispDefuzzified, Distance, Envelope, LeftRight, Parameter, Parameters, Regime,
+    RunOutput, Sampled, SixLayers, Spline,
 };
 pub use points::Points;
 pub use settings::{

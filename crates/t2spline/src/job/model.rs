@@ -57,6 +57,17 @@ impl Model {
             .fold(1.0, f64::min)
     }
 
+    /// Whether some weight of the model is a fuzzy number (docs/method.md
+    /// §16).
+    #[must_use]
+    pub fn has_fuzzy_weights(&self) -> bool {
+        match self {
+            Model::Planar(c) => c.weight_numbers().is_some(),
+            Model::Spatial(c) => c.weight_numbers().is_some(),
+            Model::Surface(_) => false,
+        }
+    }
+
     /// Whether the model is a surface.
     #[must_use]
     pub fn is_surface(&self) -> bool {

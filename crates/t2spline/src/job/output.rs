@@ -49,6 +49,9 @@ pub struct RunOutput {
     pub near_height: Option<NearHeight>,
     /// Control points of every stage.
     pub control_points: ControlPoints,
+    /// The weights of every stage where they are fuzzy (docs/method.md
+    /// §16); `None` with crisp weights.
+    pub weight_stages: Option<WeightStages>,
     /// Curves or surfaces sampled at `samples.params`.
     pub samples: Sampled,
     /// Distance between the crisp and the defuzzified curve or surface.
@@ -230,6 +233,47 @@ pub struct ControlPoints {
     pub defuzzified: Points,
 }
 
+/// The weights of every stage of a curve with fuzzy weights (docs/method.md
+/// §16), one value per control point, each stage's curve taking its
+/// stage's weights.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct WeightStages {
+    /// The crisp values.
+    pub crisp: Vec<f64>,
+    /// Stage 1: the six non-crisp values of every weight.
+    pub layers: SixLayers<Vec<f64>>,
+    /// Stage 2: the alpha-cut ends of every weight; a lower end is absent
+    /// where the level is above that weight's lower height.
+    pub alpha_cut: SixLayers<Vec<Option<f64>>>,
+    /// Stage 3: the left type-reduced weights.
+    pub type_reduced_left: Vec<f64>,
+    /// Stage 3: the right type-reduced weights.
+    pub type_reduced_right: Vec<f64>,
+    /// Stage 4: the defuzzified weights.
+    pub defuzzified: Vec<f64>,
+}
+
+impl WeightStages {
+    /// The weights of every stage from the same stages of the control
+    /// points of one coordinate.
+    pub(crate) fn of(stages: &ControlPoints) -> Self {
+        fn flat<T: Copy>(p: &Points<T>) -> Vec<T> {
+            p.coord(0).to_vec()
+        }
+        WeightStages {
+            crisp: flat(&stages.crisp),
+            layers: SixLayers::from_fn(|l| stages.layers.get(l).map(flat).unwrap_or_default()),
+            alpha_cut: SixLayers::from_fn(|l| {
+                stages.alpha_cut.get(l).map(flat).unwrap_or_default()
+            }),
+            type_reduced_left: flat(&stages.type_reduced_left),
+            type_reduced_right: flat(&stages.type_reduced_right),
+            defuzzified: flat(&stages.defuzzified),
+        }
+    }
+}
+
 /// The sampled curves or surfaces (lists or grids of points).
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
@@ -255,6 +299,11 @@ pub struct Sampled {
     /// defuzzified curve.
     #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
     pub arc_length: Option<CrispDefuzzified<f64>>,
+    /// With fuzzy weights (curves): the exact envelope of the curve at each
+    /// parameter at the run's alpha (docs/method.md §16), where the stage
+    /// curves, each with one choice of weights, do not bound it.
+    #[cfg_attr(feature = "serde", serde(skip_serializing_if = "Option::is_none"))]
+    pub envelope: Option<Envelope>,
 }
 
 impl Sampled {
@@ -314,6 +363,23 @@ impl<T> SixLayers<T> {
 pub struct LeftRight<T> {
     pub left: T,
     pub right: T,
+}
+
+/// The envelope of a curve with fuzzy weights at every sample parameter,
+/// per membership function: the least (`left`) and the largest (`right`)
+/// value of each coordinate over every choice of points and weights inside
+/// their cuts at the run's alpha (docs/method.md §16), exact at the
+/// Karnik–Mendel switch points. The lower function's is absent where alpha
+/// lies above a lower height.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct Envelope {
+    /// Under the upper membership functions.
+    pub upper: LeftRight<Points>,
+    /// Under the primary membership functions.
+    pub primary: LeftRight<Points>,
+    /// Under the lower membership functions, where every number has a cut.
+    pub lower: Option<LeftRight<Points>>,
 }
 
 /// One value for the crisp and one for the defuzzified curve.

@@ -2,7 +2,7 @@
 //! curve sampled, the distance, and the derivatives when asked for.
 
 use crate::error::{Error, Setting};
-use crate::fuzzy::{Layer, Nt2Point};
+use crate::fuzzy::{Alpha, Layer, Membership, Nt2Number, Nt2Point};
 use crate::nurbs::{Direction, NurbsCurve};
 use crate::pipeline::point_stages::PointStages;
 use crate::pipeline::{FuzzyCurve, FuzzySurface, Side};
@@ -10,10 +10,11 @@ use crate::reduction::TypeReduction;
 use crate::sampling::{CurveSamples, Params, SweepSamples};
 
 use super::model::ModelVisitor;
+use super::output::Envelope;
 use super::output::RunOutput;
 use super::output::{
     ControlPoints, CrispDefuzzified, Distance, LeftRight, Parameter, Parameters, Regime, Sampled,
-    SixLayers, Spline,
+    SixLayers, Spline, WeightStages,
 };
 use super::points::Points;
 use super::settings::{Samples, Settings};
@@ -95,6 +96,7 @@ impl ModelVisitor for Run<'_> {
             regime: regime(solution.stages()),
             near_height: s.near_height(),
             control_points: control_points(curve.points(), solution.stages(), None),
+            weight_stages: weight_stages(curve.weight_numbers(), solution.weight_stages()),
             samples: sampled(
                 sweep,
                 Parameters::Along(curve.domain().uniform(samples)?),
@@ -106,6 +108,10 @@ impl ModelVisitor for Run<'_> {
                 rms: d.rms,
             },
         };
+        if curve.weight_numbers().is_some() {
+            let params = out.samples.params.along();
+            out.samples.envelope = Some(envelope(curve, params, solution.alpha())?);
+        }
         if let Some(order) = derivatives {
             let params = out.samples.params.along();
             let (d, lengths) =
@@ -155,6 +161,7 @@ impl ModelVisitor for Run<'_> {
             regime: regime(solution.stages()),
             near_height: s.near_height(),
             control_points: control_points(surface.points(), solution.stages(), Some([nu, nv])),
+            weight_stages: None,
             samples: sampled(
                 grid.into_samples(),
                 Parameters::Grid {
@@ -243,6 +250,54 @@ fn control_points<const D: usize>(
     }
 }
 
+/// The weights of every stage where they are fuzzy.
+fn weight_stages(
+    numbers: Option<&[Nt2Number]>,
+    stages: Option<&PointStages<1>>,
+) -> Option<WeightStages> {
+    let points: Vec<Nt2Point<1>> = numbers?.iter().map(|&w| Nt2Point::new([w])).collect();
+    Some(WeightStages::of(&control_points(&points, stages?, None)))
+}
+
+/// The exact envelope of a curve at `params` at level `alpha`, per
+/// membership function (docs/method.md §16).
+fn envelope<const D: usize>(
+    curve: &FuzzyCurve<D>,
+    params: &[f64],
+    alpha: Alpha,
+) -> Result<Envelope, Error> {
+    let of = |m: Membership| -> Result<Option<LeftRight<Points>>, Error> {
+        let (mut left, mut right) = (
+            Vec::with_capacity(params.len()),
+            Vec::with_capacity(params.len()),
+        );
+        for &t in params {
+            let Some(ranges) = curve.envelope_at(t, m, alpha)? else {
+                return Ok(None);
+            };
+            left.push(ranges.map(|r| r.left()));
+            right.push(ranges.map(|r| r.right()));
+        }
+        Ok(Some(LeftRight {
+            left: Points::from_points(&left),
+            right: Points::from_points(&right),
+        }))
+    };
+    // Every number has upper and primary cuts at every level.
+    let missing = || Error::Setting {
+        setting: Setting::Alpha,
+        message: format!(
+            "alpha = {}: a number has no upper or primary cut",
+            alpha.get()
+        ),
+    };
+    Ok(Envelope {
+        upper: of(Membership::Upper)?.ok_or_else(missing)?,
+        primary: of(Membership::Primary)?.ok_or_else(missing)?,
+        lower: of(Membership::Lower)?,
+    })
+}
+
 /// The sampled stages of a sweep at one level, as lists or (for a surface) as
 /// grids of `grid`'s shape.
 fn sampled<const D: usize>(
@@ -273,6 +328,7 @@ fn sampled<const D: usize>(
         },
         derivatives: None,
         arc_length: None,
+        envelope: None,
     })
 }
 

@@ -26,8 +26,8 @@ impl Serialize for RunOutput {
     /// `type_reduction`, `alpha`, `alpha_used`, `regime` (`null` for a
     /// reduction other than the paper's), `note` (only for an alpha a few
     /// ulps above a lower height: the [`NearHeight`](super::NearHeight)'s
-    /// text, naming the height), `control_points`, `curves` or `surfaces`,
-    /// `error`. A
+    /// text, naming the height), `control_points`, `weight_stages` (only
+    /// with fuzzy weights), `curves` or `surfaces`, `error`. A
     /// surface's `order` and `degree` are pairs, its `weights` rows, its
     /// `knots` and `domain` objects with `u` and `v`.
     fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
@@ -74,6 +74,9 @@ impl Serialize for RunOutput {
             o.serialize_field("note", &near.to_string())?;
         }
         o.serialize_field("control_points", &self.control_points)?;
+        if let Some(w) = &self.weight_stages {
+            o.serialize_field("weight_stages", w)?;
+        }
         o.serialize_field(samples_key, &self.samples)?;
         o.serialize_field("error", &self.error)?;
         o.end()

@@ -439,6 +439,7 @@ impl<const D: usize> FuzzyCurve<D> {
     /// ```
     pub fn measure(&self, options: &MeasureOptions) -> Result<Measures, Error> {
         self.check_measure(options)?;
+        self.crisp_weights_for("measure")?;
         let prepared = Prepared::of(self, options.area(), options.closing())?;
         let boxes = self.cut_boxes(options.levels());
         let finish = |l: PerMembership<Vec<(f64, Option<Bracket>)>>| {
@@ -549,9 +550,13 @@ impl<const D: usize> FuzzyCurve<D> {
     }
 
     /// The arc length's bracket over the box of cut control points under
-    /// `membership` at `alpha`; `None` where the function has no cut there.
+    /// `membership` at `alpha`; `None` where the function has no cut there,
+    /// and with fuzzy weights (not bounded yet: docs/method.md §16).
     #[must_use]
     pub fn length_bracket(&self, membership: Membership, alpha: Alpha) -> Option<Bracket> {
+        if self.weight_numbers().is_some() {
+            return None;
+        }
         let cut = CutBox::of(self.points(), membership, alpha)?;
         Some(length_bracket(&Prepared::rules_of(self), &cut, &|x| {
             self.adaptive_length(x)
@@ -572,6 +577,7 @@ impl<const D: usize> FuzzyCurve<D> {
         membership: Membership,
         alpha: Alpha,
     ) -> Result<Option<[[f64; 2]; D]>, Error> {
+        self.crisp_weights_for("a derivative bracket")?;
         self.domain().check(t)?;
         check_order(order)?;
         let Some(cut) = CutBox::of(self.points(), membership, alpha) else {
@@ -594,6 +600,7 @@ impl<const D: usize> FuzzyCurve<D> {
         membership: Membership,
         alpha: Alpha,
     ) -> Result<Option<Bracket>, Error> {
+        self.crisp_weights_for("a curvature bracket")?;
         self.domain().check(t)?;
         let Some(cut) = CutBox::of(self.points(), membership, alpha) else {
             return Ok(None);
@@ -609,6 +616,9 @@ impl FuzzyCurve<2> {
     /// `alpha`; `None` where the function has no cut.
     #[must_use]
     pub fn area_bracket(&self, membership: Membership, alpha: Alpha) -> Option<Bracket> {
+        if self.weight_numbers().is_some() {
+            return None;
+        }
         let cut = CutBox::of(self.points(), membership, alpha)?;
         // Closed as the geometry says: no closure is asked, none refused.
         let prepared = Prepared::of(self, true, None).ok()?;
@@ -637,6 +647,7 @@ impl FuzzyCurve<2> {
         membership: Membership,
         alpha: Alpha,
     ) -> Result<Option<Option<Bracket>>, Error> {
+        self.crisp_weights_for("a tangent-angle bracket")?;
         Ok(self
             .derivative_bracket(t, 1, membership, alpha)?
             .map(|b| angle_range(&b)))

@@ -8,9 +8,10 @@ use crate::capability::knots::{curve_knot_operations, surface_knot_operations};
 use crate::capability::layered;
 use crate::capability::{Bounded, Closest, Curvature, Differentiable, Layered, Parametric};
 use crate::error::Error;
-use crate::fuzzy::{Layers, Nt2Point};
+use crate::fuzzy::{Layers, Nt2Number, Nt2Point};
 use crate::nurbs::{
-    BoundingBox, ClosestPoint, ClosestSurfacePoint, NurbsCurve, NurbsSurface, SurfaceCurvature,
+    BoundingBox, ClosestPoint, ClosestSurfacePoint, Direction, NurbsCurve, NurbsSurface,
+    SurfaceCurvature,
 };
 use crate::pipeline::{FuzzyCurve, FuzzySurface};
 
@@ -24,6 +25,14 @@ impl<const D: usize> Layered<D> for FuzzyCurve<D> {
     fn through(&self, points: Vec<[f64; D]>) -> NurbsCurve<D> {
         self.with_control_points(points)
     }
+
+    fn weight_numbers(&self) -> Option<&[Nt2Number]> {
+        FuzzyCurve::weight_numbers(self)
+    }
+
+    fn through_weighted(&self, points: Vec<[f64; D]>, weights: Vec<f64>) -> NurbsCurve<D> {
+        NurbsCurve::from_parts_unchecked(points, weights, self.knots().clone())
+    }
 }
 
 impl<const D: usize> Layered<D> for FuzzySurface<D> {
@@ -35,6 +44,18 @@ impl<const D: usize> Layered<D> for FuzzySurface<D> {
 
     fn through(&self, points: Vec<[f64; D]>) -> NurbsSurface<D> {
         self.with_control_points(points)
+    }
+
+    fn weight_numbers(&self) -> Option<&[Nt2Number]> {
+        None
+    }
+
+    fn through_weighted(&self, points: Vec<[f64; D]>, weights: Vec<f64>) -> NurbsSurface<D> {
+        NurbsSurface::from_parts_unchecked(
+            points,
+            weights,
+            [Direction::U, Direction::V].map(|d| self.knots(d).clone()),
+        )
     }
 }
 

@@ -3,7 +3,7 @@
 use crate::brent::brent_min;
 use crate::nurbs::pieces::{tame_pieces, Piece};
 use crate::nurbs::span_eval::SpanEvaluator;
-use crate::nurbs::NurbsCurve;
+use crate::nurbs::{KnotVector, NurbsCurve};
 use crate::quadrature::{integrate_pieces, Tolerance};
 use crate::vector::euclidean_norm;
 
@@ -77,22 +77,38 @@ impl Distance {
             domain.start,
             domain.end,
         );
-        let mut eval = SpanEvaluator::new(difference.degree());
-        eval.set_span(difference, difference.knots().find_span(domain.start));
-        let mut max = (
-            euclidean_norm(&eval.point(difference, domain.start)),
-            domain.start,
-        );
+        Distance::of_gap(&mut Gap::new(difference, None), &pieces)
+    }
+
+    /// Measures `‖a(t) − b(t)‖` over the domain of two curves with the same
+    /// knots and weights of their own (fuzzy weights, docs/method.md §16),
+    /// on the pieces where both curves' weights are tame.
+    pub(crate) fn between<const D: usize>(a: &NurbsCurve<D>, b: &NurbsCurve<D>) -> Distance {
+        let domain = a.domain();
+        let pieces = |c: &NurbsCurve<D>| {
+            let w = c.weights();
+            tame_pieces(c.knots(), w, |i| vec![w[i]], domain.start, domain.end)
+        };
+        let pieces = common_pieces(a.knots(), &pieces(a), &pieces(b));
+        Distance::of_gap(&mut Gap::new(a, Some(b)), &pieces)
+    }
+
+    /// The maximum and the rms of `gap` over its domain, on `pieces`.
+    fn of_gap<const D: usize>(gap: &mut Gap<'_, D>, pieces: &[Piece]) -> Distance {
+        let domain = gap.a.domain();
+        gap.set_span(gap.a.knots().find_span(domain.start));
+        let start = gap.at(domain.start);
+        let mut max = (start, domain.start);
         let mut scan = Vec::with_capacity(SCAN_STEPS + 1);
         for &Piece {
             span, lo: a, hi: b, ..
-        } in &pieces
+        } in pieces
         {
             if a >= b {
                 continue;
             }
-            eval.set_span(difference, span);
-            let mut norm = |t: f64| distance_at(difference, &mut eval, span, t);
+            gap.set_span(span);
+            let mut norm = |t: f64| gap.at(t);
             let step = (b - a) / SCAN_STEPS as f64;
             let tolerance = REFINEMENT * (b - a).max(f64::MIN_POSITIVE);
             scan.clear();
@@ -128,7 +144,7 @@ impl Distance {
         let scale = max.0;
         let mut rms = 0.0;
         if scale > 0.0 {
-            let (mean, seen) = mean_square(difference, &pieces, scale);
+            let (mean, seen) = mean_square(gap, pieces, scale);
             rms = scale * mean.sqrt();
             // The quadrature's nodes are distances too; one above the scan's
             // maximum (a peak narrower than the scan's steps) is the maximum.
@@ -144,49 +160,104 @@ impl Distance {
     }
 }
 
-/// `d(t)` for `t` in the knot span `span` (chosen on `eval`), as `eval`
-/// gives the curve: at the knot that ends the span inside the domain, the
-/// value from the right. The span's polynomial gives the left limit there,
-/// which no parameter reaches where the curve jumps (a knot of full
-/// multiplicity) and which, with weights far apart, can differ from every
-/// value at parameters before it.
-fn distance_at<const D: usize>(
-    difference: &NurbsCurve<D>,
-    eval: &mut SpanEvaluator,
+/// The distance `d(t)` between a curve and a second curve with the same
+/// knots (or `0`), evaluated on a chosen knot span without allocation.
+struct Gap<'a, const D: usize> {
+    a: &'a NurbsCurve<D>,
+    b: Option<&'a NurbsCurve<D>>,
+    eval_a: SpanEvaluator,
+    eval_b: SpanEvaluator,
     span: usize,
-    t: f64,
-) -> f64 {
-    let end = difference.knots().as_slice()[span + 1];
-    if t >= end && end < difference.domain().end {
-        euclidean_norm(&difference.eval_unchecked(t))
-    } else {
-        euclidean_norm(&eval.point(difference, t))
+}
+
+impl<'a, const D: usize> Gap<'a, D> {
+    fn new(a: &'a NurbsCurve<D>, b: Option<&'a NurbsCurve<D>>) -> Self {
+        Gap {
+            a,
+            b,
+            eval_a: SpanEvaluator::new(a.degree()),
+            eval_b: SpanEvaluator::new(a.degree()),
+            span: usize::MAX,
+        }
     }
+
+    /// Chooses the knot span of the parameters asked next.
+    fn set_span(&mut self, span: usize) {
+        if span != self.span {
+            self.span = span;
+            self.eval_a.set_span(self.a, span);
+            if let Some(b) = self.b {
+                self.eval_b.set_span(b, span);
+            }
+        }
+    }
+
+    /// `d(t)` for `t` in the chosen span, as the span evaluator gives the
+    /// curves: at the knot that ends the span inside the domain, the value
+    /// from the right. The span's polynomial gives the left limit there,
+    /// which no parameter reaches where the curve jumps (a knot of full
+    /// multiplicity) and which, with weights far apart, can differ from every
+    /// value at parameters before it.
+    fn at(&mut self, t: f64) -> f64 {
+        let end = self.a.knots().as_slice()[self.span + 1];
+        let from_right = t >= end && end < self.a.domain().end;
+        let mut p = if from_right {
+            self.a.eval_unchecked(t)
+        } else {
+            self.eval_a.point(self.a, t)
+        };
+        if let Some(b) = self.b {
+            let q = if from_right {
+                b.eval_unchecked(t)
+            } else {
+                self.eval_b.point(b, t)
+            };
+            for (x, y) in p.iter_mut().zip(q) {
+                *x -= y;
+            }
+        }
+        euclidean_norm(&p)
+    }
+}
+
+/// The pieces of both lists cut at every end of either: each lies in one
+/// knot span of `knots` and inside a piece of each list.
+fn common_pieces(knots: &KnotVector, a: &[Piece], b: &[Piece]) -> Vec<Piece> {
+    let mut cuts: Vec<f64> = a.iter().chain(b).flat_map(|p| [p.lo, p.hi]).collect();
+    cuts.sort_by(f64::total_cmp);
+    cuts.dedup();
+    cuts.windows(2)
+        .filter_map(|w| match *w {
+            [lo, hi] if lo < hi => Some(Piece {
+                span: knots.find_span(lo + (hi - lo) / 2.0),
+                lo,
+                hi,
+                tame: true,
+                bezier: None,
+            }),
+            _ => None,
+        })
+        .collect()
 }
 
 /// `1/(b − a) · ∫ₐᵇ (d(t)/scale)² dt`, integrated over `s ∈ [0, 1]` on the
 /// tame pieces, and the largest distance met on the way with its parameter.
 fn mean_square<const D: usize>(
-    difference: &NurbsCurve<D>,
+    gap: &mut Gap<'_, D>,
     pieces: &[Piece],
     scale: f64,
 ) -> (f64, (f64, f64)) {
-    let domain = difference.domain();
+    let domain = gap.a.domain();
     let width = domain.end - domain.start;
     let to_s = |t: f64| ((t - domain.start) / width).clamp(0.0, 1.0);
     let ranges: Vec<[f64; 2]> = pieces.iter().map(|p| [to_s(p.lo), to_s(p.hi)]).collect();
-    let mut eval = SpanEvaluator::new(difference.degree());
-    let mut chosen = usize::MAX;
     let mut seen = (0.0, domain.start);
     let (integral, _) = integrate_pieces(
         |k, s| {
             let piece = &pieces[k];
-            if piece.span != chosen {
-                eval.set_span(difference, piece.span);
-                chosen = piece.span;
-            }
+            gap.set_span(piece.span);
             let t = (domain.start + s * width).clamp(piece.lo, piece.hi);
-            let d = distance_at(difference, &mut eval, piece.span, t);
+            let d = gap.at(t);
             if d > seen.0 {
                 seen = (d, t);
             }

@@ -6,6 +6,7 @@ use crate::error::Error;
 use crate::fuzzy::{Alpha, Axis, Height, Layer, Layers, Nt2Number, Nt2Point};
 use crate::nurbs::curve::{check_weights, rational_basis_span};
 use crate::nurbs::{Domain, KnotVector, NurbsCurve};
+use crate::pipeline::weight_numbers::{check_weight_numbers, is_crisp};
 use crate::pipeline::Solution;
 use crate::reduction::TypeReduction;
 
@@ -38,7 +39,10 @@ use crate::reduction::TypeReduction;
 #[derive(Clone, Debug, PartialEq)]
 pub struct FuzzyCurve<const D: usize> {
     points: Vec<Nt2Point<D>>,
+    /// The crisp weights, or the crisp values of the fuzzy weights.
     weights: Vec<f64>,
+    /// The fuzzy weights (docs/method.md §16), `None` where they are crisp.
+    weight_numbers: Option<Vec<Nt2Number>>,
     knots: KnotVector,
 }
 
@@ -66,7 +70,28 @@ impl<const D: usize> FuzzyCurve<D> {
         Ok(FuzzyCurve {
             points,
             weights,
+            weight_numbers: None,
             knots,
+        })
+    }
+
+    /// This curve with fuzzy weights (docs/method.md §16): one normal
+    /// type-2 fuzzy number per control point, every value of each (its
+    /// upper cut's feet included) a valid weight. The crisp values become
+    /// [`FuzzyCurve::weights`]. Numbers that are all crisp (every value
+    /// equal) leave the curve with crisp weights.
+    ///
+    /// # Errors
+    /// [`Error::WeightCount`] unless there is one number per control point;
+    /// [`Error::Weight`] or [`Error::WeightOutOfRange`] for the first value
+    /// (the least first) that is not a valid weight.
+    pub fn with_weight_numbers(self, numbers: Vec<Nt2Number>) -> Result<Self, Error> {
+        let weights = check_weight_numbers(&numbers, self.points.len())?;
+        let fuzzy = numbers.iter().any(|w| !is_crisp(w));
+        Ok(FuzzyCurve {
+            weights,
+            weight_numbers: fuzzy.then_some(numbers),
+            ..self
         })
     }
 
@@ -82,6 +107,7 @@ impl<const D: usize> FuzzyCurve<D> {
         FuzzyCurve {
             points,
             weights,
+            weight_numbers: None,
             knots,
         }
     }
@@ -92,10 +118,26 @@ impl<const D: usize> FuzzyCurve<D> {
         &self.points
     }
 
-    /// The weights.
+    /// The weights: with fuzzy weights, their crisp values.
     #[must_use]
     pub fn weights(&self) -> &[f64] {
         &self.weights
+    }
+
+    /// The fuzzy weights (docs/method.md §16), or `None` where the weights
+    /// are crisp.
+    #[must_use]
+    pub fn weight_numbers(&self) -> Option<&[Nt2Number]> {
+        self.weight_numbers.as_deref()
+    }
+
+    /// `Err(`[`Error::FuzzyWeights`]`)` naming `what` where the weights are
+    /// fuzzy: the guard of the operations that take crisp weights only.
+    pub(crate) fn crisp_weights_for(&self, what: &'static str) -> Result<(), Error> {
+        match self.weight_numbers {
+            Some(_) => Err(Error::FuzzyWeights { what }),
+            None => Ok(()),
+        }
     }
 
     /// The knot vector.
@@ -146,6 +188,12 @@ impl<const D: usize> FuzzyCurve<D> {
     /// [`Error::OutOfDomain`] if `t` is NaN or outside the domain.
     pub fn eval_layers(&self, t: f64) -> Result<Layers<[f64; D]>, Error> {
         self.domain().check(t)?;
+        if self.weight_numbers.is_some() {
+            // Each layer has weights of its own (docs/method.md §16).
+            return Ok(Layers::from_fn(|layer| {
+                self.layer_curve(layer).eval_unchecked(t)
+            }));
+        }
         // All layer curves share one rational basis.
         let (first, r) = rational_basis_span(&self.knots, &self.weights, t);
         let mut out = Layers::from_fn(|_| [0.0; D]);
@@ -178,13 +226,18 @@ impl<const D: usize> FuzzyCurve<D> {
 
     /// The fuzzy curve at `t` as a fuzzy point, when each coordinate has one
     /// lower height for all control points (then the point's numbers have that
-    /// height); `Ok(None)` otherwise, since a mix of heights does not combine
-    /// into one number (docs/method.md §6).
+    /// height) and the weights are crisp; `Ok(None)` otherwise, since a mix
+    /// of heights does not combine into one number (docs/method.md §6), nor
+    /// do layers with weights of their own, which need not be ordered
+    /// (docs/method.md §16).
     ///
     /// # Errors
     /// [`Error::OutOfDomain`] if `t` is NaN or outside the domain.
     pub fn eval(&self, t: f64) -> Result<Option<Nt2Point<D>>, Error> {
         let layers = self.eval_layers(t)?;
+        if self.weight_numbers.is_some() {
+            return Ok(None);
+        }
         Ok(self.coordinate_heights().map(|heights| {
             Nt2Point::new(std::array::from_fn(|d| {
                 let values = layers.map(|p| p[d]);

@@ -132,6 +132,7 @@ impl<const D: usize> FuzzyCurve<D> {
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn insert_knot(&self, u: f64, times: usize) -> Result<Self, Error> {
+        self.crisp_weights_for("knot insertion")?;
         Ok(self.map_rows(|k, r| insert(k, r, u, times))?.0)
     }
 
@@ -141,6 +142,7 @@ impl<const D: usize> FuzzyCurve<D> {
     /// # Errors
     /// Those of `NurbsCurve::refine_knots`, and [`Error::MixedHeights`].
     pub fn refine_knots(&self, new: &[f64]) -> Result<Self, Error> {
+        self.crisp_weights_for("knot refinement")?;
         Ok(self.map_rows(|k, r| refine(k, r, new))?.0)
     }
 
@@ -152,6 +154,7 @@ impl<const D: usize> FuzzyCurve<D> {
     /// [`Error::MixedHeights`].
     pub fn elevate_degree(&self, times: usize) -> Result<Self, Error> {
         check_elevation(self.degree(), times)?;
+        self.crisp_weights_for("degree elevation")?;
         Ok(self.map_rows(|k, r| Ok(elevate(k, r, times)))?.0)
     }
 
@@ -179,6 +182,7 @@ impl<const D: usize> FuzzyCurve<D> {
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn split_at(&self, t: f64) -> Result<[Self; 2], Error> {
+        self.crisp_weights_for("splitting")?;
         let heights = self.common_heights()?;
         let pieces = split(self.knots(), &self.stacked_rows(), t)?;
         Ok(pieces.map(|(knots, rows)| rebuild(knots, &rows, heights).0))
@@ -200,6 +204,7 @@ impl<const D: usize> FuzzyCurve<D> {
                 end: domain.end,
             });
         }
+        self.crisp_weights_for("a segment")?;
         Ok(self.map_rows(|k, r| segment(k, r, a, b))?.0)
     }
 
@@ -250,7 +255,9 @@ impl<const D: usize> FuzzyCurve<D> {
     /// The bounding box of all seven layer curves: the region the fuzzy curve
     /// can occupy. Since the layers are ordered at every `t`, its lower corner
     /// comes from the `upper_left` curve and its upper corner from the
-    /// `upper_right` curve.
+    /// `upper_right` curve. With fuzzy weights, a box that contains the
+    /// curve without being the least (see
+    /// [`capability::layered::bounding_box`](crate::capability::layered::bounding_box)).
     ///
     /// # Examples
     /// ```

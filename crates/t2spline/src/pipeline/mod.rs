@@ -19,6 +19,7 @@ mod solution;
 mod stages;
 mod surface_distance;
 mod surface_solution;
+mod weight_numbers;
 
 pub use distance::Distance;
 pub use fuzzy_curve::FuzzyCurve;

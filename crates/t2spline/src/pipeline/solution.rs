@@ -79,6 +79,10 @@ impl<const D: usize> Solution<D> {
     /// over the whole domain (docs/method.md §7); see [`Distance`].
     #[must_use]
     pub fn distance(&self) -> Distance {
+        if self.fuzzy_curve().weight_numbers().is_some() {
+            // The two curves have weights of their own (docs/method.md §16).
+            return Distance::between(&self.defuzzified_curve(), &self.crisp_curve());
+        }
         Distance::of_curve(&self.offsets())
     }
 }

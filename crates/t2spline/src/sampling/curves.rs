@@ -12,6 +12,7 @@ use crate::pipeline::point_stages::PointStages;
 use crate::pipeline::{FuzzyCurve, Solution};
 use crate::reduction::TypeReduction;
 use crate::sampling::plan::Plan;
+use crate::sampling::weighted::sweep_weighted;
 
 impl<const D: usize> NurbsCurve<D> {
     /// A [`Sampler`] for this curve: one channel per coordinate.
@@ -158,6 +159,25 @@ impl<const D: usize> FuzzyCurve<D> {
                 expected: 7 * D,
                 found: out.len(),
             });
+        }
+        if self.weight_numbers().is_some() {
+            let samples = self.sample_layers(params)?;
+            for (k, layer) in crate::Layer::ALL.into_iter().enumerate() {
+                for (d, from) in samples[layer].coords().iter().enumerate() {
+                    let to = out.get_mut(k * D + d).map(|s| &mut **s);
+                    match to {
+                        Some(to) if to.len() == from.len() => to.copy_from_slice(from),
+                        _ => {
+                            return Err(Error::Length {
+                                what: "an output slice (one value per parameter)",
+                                expected: from.len(),
+                                found: to.map_or(0, |s| s.len()),
+                            })
+                        }
+                    }
+                }
+            }
+            return Ok(());
         }
         let plan = Plan::new(self.points(), &[], true);
         // The plan orders its channels its own way.
@@ -310,7 +330,8 @@ impl<const D: usize> Solution<D> {
 }
 
 /// Samples the crisp curve, the six other layers if `layers`, and the curves of
-/// stages 2–4 of every solution, with one sampler, into buffers taken from
+/// stages 2–4 of every solution, with one sampler (with fuzzy weights, one
+/// per curve: `weighted.rs`), into buffers taken from
 /// `buffers` where it has them and new ones from `fresh`.
 fn sweep<const D: usize>(
     curve: &FuzzyCurve<D>,
@@ -320,6 +341,9 @@ fn sweep<const D: usize>(
     mut buffers: Vec<SampleBuffer>,
     fresh: Fresh,
 ) -> Result<SweepSamples<D>, Error> {
+    if curve.weight_numbers().is_some() {
+        return sweep_weighted(curve, params, solutions, layers, buffers, fresh);
+    }
     let stages: Vec<&PointStages<D>> = solutions.iter().map(Solution::stages).collect();
     let plan = Plan::new(curve.points(), &stages, layers);
     let sampler =

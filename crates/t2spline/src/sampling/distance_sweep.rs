@@ -113,6 +113,9 @@ impl<const D: usize> FuzzyCurve<D> {
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn distance_sweep(&self, alphas: &[Alpha], samples: usize) -> Result<DistanceSweep, Error> {
+        if self.weight_numbers().is_some() {
+            return self.distance_sweep_weighted(alphas, samples);
+        }
         let column = |pts: &[[f64; D]], d: usize| pts.iter().map(|p| p[d]).collect::<Vec<f64>>();
         let crisp: Vec<[f64; D]> = self.points().iter().map(|p| p.crisp()).collect();
         let mut levels = Vec::with_capacity(alphas.len());
@@ -135,6 +138,39 @@ impl<const D: usize> FuzzyCurve<D> {
                 levels.push(d);
             }
         }
+        Ok(DistanceSweep {
+            shape: [1, samples],
+            levels,
+        })
+    }
+}
+
+impl<const D: usize> FuzzyCurve<D> {
+    /// [`FuzzyCurve::distance_sweep`] with fuzzy weights (docs/method.md
+    /// §16): the crisp and each defuzzified curve have weights of their own,
+    /// so each is sampled by its own sampler.
+    fn distance_sweep_weighted(
+        &self,
+        alphas: &[Alpha],
+        samples: usize,
+    ) -> Result<DistanceSweep, Error> {
+        let crisp = self.crisp_curve().sample_soa(Params::Uniform(samples))?;
+        let levels = alphas
+            .iter()
+            .map(|&a| {
+                let solved = self
+                    .solve(a)
+                    .defuzzified_curve()
+                    .sample_soa(Params::Uniform(samples))?;
+                Ok((0..samples)
+                    .map(|i| {
+                        let diff: [f64; D] =
+                            std::array::from_fn(|k| solved.coord(k)[i] - crisp.coord(k)[i]);
+                        euclidean_norm(&diff)
+                    })
+                    .collect())
+            })
+            .collect::<Result<Vec<Vec<f64>>, Error>>()?;
         Ok(DistanceSweep {
             shape: [1, samples],
             levels,

@@ -107,6 +107,7 @@ mod power_form;
 mod sampler;
 mod samples;
 mod surfaces;
+mod weighted;
 
 pub use benchmark::{benchmark_curve, benchmark_levels, benchmark_surface};
 pub use buffer::{release_cached_memory, SampleBuffer, LARGE_BYTES};

@@ -50,7 +50,6 @@ pub(crate) fn bezier_matrix(knots: &[f64], p: usize, span: usize) -> Vec<f64> {
 /// two de Casteljau subdivisions (at `s0`, keeping the right part; then at
 /// the matching point of that part, keeping the left). Each step is a
 /// convex combination, so non-negative coefficients stay non-negative.
-#[cfg(test)]
 pub(crate) fn restrict(c: &mut [f64], stride: usize, count: usize, [s0, s1]: [f64; 2]) {
     if s0 > 0.0 {
         for r in 1..count {

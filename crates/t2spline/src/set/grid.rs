@@ -69,6 +69,7 @@ impl FuzzyCurve<2> {
         [y0, y1]: [f64; 2],
         [columns, rows]: [usize; 2],
     ) -> Result<MembershipGrid, Error> {
+        self.crisp_weights_for("a membership grid")?;
         let cells = columns.saturating_mul(rows);
         if cells == 0 || cells > MAX_GRID_CELLS {
             return Err(Error::GridTooLarge {

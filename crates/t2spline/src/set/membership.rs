@@ -13,6 +13,7 @@ use crate::set::bernstein::bezier_matrix;
 pub(crate) use crate::set::certify::sup_of;
 use crate::set::certify::{Form, Work};
 use crate::set::cut_lines::{slack, CutLines, MEMBERSHIPS};
+use crate::set::weighted_grades::weighted_grades;
 
 /// The grades of one point under the three membership functions, each in
 /// `[0, 1]` (the lower in `[0, h]`), with `lower ≤ primary ≤ upper`.
@@ -121,7 +122,9 @@ impl<const D: usize> FuzzyCurve<D> {
     /// within [`GRADE_TOLERANCE`](crate::set::GRADE_TOLERANCE): never below
     /// the true grade, at most that far above it. Numbers with their own
     /// heights are handled: the lower function's top on a span is the least
-    /// height of the control points that count there.
+    /// height of the control points that count there. With fuzzy weights
+    /// the weights are cut too, and the set at each parameter is decided
+    /// exactly (docs/method.md §15–§16), with the same certificate.
     ///
     /// # Errors
     /// [`Error::QueryPoint`] if a coordinate of `p` is NaN or infinite.
@@ -142,6 +145,9 @@ impl<const D: usize> FuzzyCurve<D> {
     /// ```
     pub fn membership(&self, p: &[f64; D]) -> Result<Grades, Error> {
         check_point(0, p)?;
+        if let Some(weights) = self.weight_numbers() {
+            return Ok(weighted_grades(self, weights, p));
+        }
         Ok(Grader::new(self).grades(p))
     }
 
@@ -166,6 +172,12 @@ impl<const D: usize> FuzzyCurve<D> {
     pub fn memberships(&self, points: &[[f64; D]]) -> Result<Vec<Grades>, Error> {
         for (i, p) in points.iter().enumerate() {
             check_point(i, p)?;
+        }
+        if let Some(weights) = self.weight_numbers() {
+            return Ok(points
+                .iter()
+                .map(|p| weighted_grades(self, weights, p))
+                .collect());
         }
         let grader = Grader::new(self);
         let mut work = Work::default();

@@ -34,6 +34,7 @@
 pub(crate) mod bernstein;
 mod certify;
 mod contour;
+mod curve_envelope;
 mod cut_lines;
 mod envelope;
 mod grid;
@@ -44,6 +45,7 @@ mod scan;
 mod section;
 pub(crate) mod surface;
 mod sweep;
+mod weighted_grades;
 
 pub use certify::GRADE_TOLERANCE;
 pub use contour::{

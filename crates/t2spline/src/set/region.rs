@@ -128,6 +128,7 @@ impl<const D: usize> FuzzyCurve<D> {
         alpha: Alpha,
         tolerance: Option<f64>,
     ) -> Result<Option<Region>, Error> {
+        self.crisp_weights_for("a region")?;
         let axes = plane.axes();
         if axes[1] >= D {
             return Err(Error::Index {

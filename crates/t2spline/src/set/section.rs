@@ -71,6 +71,7 @@ impl FuzzyCurve<2> {
         tolerance: Option<f64>,
     ) -> Result<Option<Vec<[f64; 2]>>, Error> {
         crate::set::membership::check_point(0, &[x0])?;
+        self.crisp_weights_for("a section of a curve")?;
         let tolerance = self.checked_tolerance([0, 1], tolerance)?;
         let sweep = Sweep::of(self, membership, alpha.get(), [0, 1], 0.25 * tolerance).map_err(
             |TooManyBoxes| Error::Tolerance {
