@@ -55,10 +55,12 @@ def from_arrays(weights: List[Any]) -> FuzzyCurve:
 
 
 def example_weights() -> List[Any]:
-    """The example's weights: plain numbers where the job has bare ones,
-    a `FuzzyNumber` where it has a number."""
+    """The example's weights as `FuzzyNumber`s: a bare weight of the job is
+    a crisp number with the job's lower height (a plain number given to
+    `FuzzyCurve` is one of height 1, as `FuzzyNumber(w)`)."""
     j = job()
-    return [w if isinstance(w, (int, float)) else number(w, j["lower_height"]) for w in j["weights"]]
+    h = j["lower_height"]
+    return [FuzzyNumber(w, lower_height=h) if isinstance(w, (int, float)) else number(w, h) for w in j["weights"]]
 
 
 @pytest.fixture(scope="module")
@@ -80,6 +82,19 @@ def test_the_curve_from_arrays_is_the_jobs(curve: FuzzyCurve) -> None:
     # Bare weights are crisp numbers; `weights` holds the crisp values.
     assert numbers[0].upper == numbers[0].lower == (1.0, 1.0)
     np.testing.assert_array_equal(curve.weights, [1.0, 1.0, 3.0, 1.0])
+    # Plain numbers beside a `FuzzyNumber` are `FuzzyNumber(w)`, height 1:
+    # the same curve but for the heights of the crisp weights, which change
+    # no value (only where their lower cut ends, above every point's here).
+    plain = from_arrays([1.0, 1, numbers[2], 1.0])
+    plain_numbers = plain.weight_numbers
+    assert plain_numbers is not None
+    assert plain_numbers[0] == FuzzyNumber(1.0) and plain_numbers[2] == numbers[2]
+    for alpha in (0.3, 0.8):
+        a, b = plain.solve(alpha).sample(33), curve.solve(alpha).sample(33)
+        np.testing.assert_array_equal(a["defuzzified"], b["defuzzified"])
+        for layer in CUT_LAYERS:
+            if b["alpha_cut"][layer] is not None:
+                np.testing.assert_array_equal(a["alpha_cut"][layer], b["alpha_cut"][layer])
     assert repr(curve).endswith("domain=(0.0, 1.0), fuzzy_weights=True)")
     assert "fuzzy_weights" not in repr(t2spline.FuzzyCurve.from_job(ROOT / "examples" / "paper-alg-1-1.json"))
     # The job written back is the example's curve.
@@ -118,10 +133,11 @@ def test_the_stages_are_the_cli_result(curve: FuzzyCurve, result: Dict[str, Any]
         values = [getattr(w, function)[0 if side == "left" else 1] for w in numbers]
         assert values == ws["layers"][layer], layer
     for layer in CUT_LAYERS:
+        # An absent cut (alpha above the lower height) is null in the result.
         want = ws["alpha_cut"][layer]
         got = solution.alpha_cut_weights(layer)
         crisp_curve = solution.alpha_cut_curve(layer)
-        if want is None:
+        if all(w is None for w in want):
             assert got is None and crisp_curve is None, layer
         else:
             assert got is not None and crisp_curve is not None
@@ -252,8 +268,8 @@ def test_bad_weights_are_named(curve: FuzzyCurve) -> None:
     with pytest.raises(ValueError, match=r"^weights\[1\] = -0\.5 must be finite and greater than 0$"):
         from_arrays(w)
     w = example_weights()
-    w[3] = FuzzyNumber(1.0, upper=(1.0, 1e300))
-    with pytest.raises(ValueError, match=r"^weights\[3\] = "):
+    w[3] = FuzzyNumber(1.0, upper=(1e-151, 1.0))
+    with pytest.raises(ValueError, match=r"^weights\[3\] = 1e-151 is outside \[1e-150, 1e150\]$"):
         from_arrays(w)
     with pytest.raises(ValueError, match=r"^weights\[0\] = NaN"):
         from_arrays([float("nan"), *example_weights()[1:]])

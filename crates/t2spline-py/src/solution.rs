@@ -67,7 +67,7 @@ stage_methods!(PySolution, fuzzy_curve, "n" {
     /// >>> s.alpha_cut_weights("upper_right").tolist()        # 3 cut at 0.5 toward 2
     /// [1.0, 2.5]
     /// >>> s.type_reduced_weights("left").tolist(), s.defuzzified_weights().tolist()
-    /// ([1.0, 1.625], [1.0, 2.0])
+    /// ([1.0, 1.75], [1.0, 2.0])
     fn alpha_cut_weights<'py>(
         &self,
         py: Python<'py>,
