@@ -96,6 +96,7 @@ def test_the_curve_from_arrays_is_the_jobs(curve: FuzzyCurve) -> None:
             if b["alpha_cut"][layer] is not None:
                 np.testing.assert_array_equal(a["alpha_cut"][layer], b["alpha_cut"][layer])
     assert repr(curve).endswith("domain=(0.0, 1.0), fuzzy_weights=True)")
+    assert "fuzzy (docs/method.md §16)" in curve._repr_html_()
     assert "fuzzy_weights" not in repr(t2spline.FuzzyCurve.from_job(ROOT / "examples" / "paper-alg-1-1.json"))
     # The job written back is the example's curve.
     assert FuzzyCurve.from_job(curve.to_job(0.8)) == curve
@@ -174,7 +175,7 @@ def test_the_envelope_is_the_cli_result_at_every_sample(curve: FuzzyCurve, resul
     for membership in ("upper", "primary", "lower"):
         want = envelope[membership]
         for i, t in enumerate(result["curves"]["params"]):
-            got = curve.envelope(t, membership, alpha)  # type: ignore[arg-type]
+            got = curve.envelope(t, membership, alpha)
             if want is None:
                 assert got is None, (membership, t)
                 continue

@@ -569,10 +569,15 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
     /// The picture in a notebook: stage 1 (the fuzzy control points, the
     /// seven layer curves and the regions at level 0), drawn by the figure
     /// code of ``t2spline plot``, as inline SVG under a short table; a large
-    /// curve is drawn thinned and the figure says so.
+    /// curve is drawn thinned and the figure says so. The table says
+    /// where the weights are fuzzy.
     fn _repr_html_(&self) -> PyResult<String> {
         use crate::dim::ToModel as _;
-        crate::picture::first_stage_page(self.0.to_model()?, &self.facts().rows())
+        let mut rows = self.facts().rows();
+        if by_dim!(&self.0, |c| c.weight_numbers().is_some()) {
+            rows.push(("weights", "fuzzy (docs/method.md §16)".to_owned()));
+        }
+        crate::picture::first_stage_page(self.0.to_model()?, &rows)
     }
 
     /// ``FuzzyCurve(dimension=…, …, domain=(a, b))``, with
