@@ -222,6 +222,15 @@ def test_the_membership_is_the_cli_result(cli: Path, tmp_path: Path, curve: Fuzz
     np.testing.assert_array_equal(got["upper"][-5:], 1.0)
 
 
+def test_the_section_is_the_cli_result(cli: Path, curve: FuzzyCurve) -> None:
+    out = subprocess.run(
+        [str(cli), "section", str(JOB), "--x", "3.5", "--levels", "3"], check=True, capture_output=True, text=True
+    ).stdout
+    got = curve.section(3.5, levels=3)
+    assert got == json.loads(out)["levels"]
+    assert got[0]["upper"], "the station meets the curve's region"
+
+
 def test_what_takes_crisp_weights_only_says_so_as_the_core_does(curve: FuzzyCurve) -> None:
     def refused(what: str) -> str:
         return f"^{what} is not available for a model with fuzzy weights$"
@@ -229,8 +238,8 @@ def test_what_takes_crisp_weights_only_says_so_as_the_core_does(curve: FuzzyCurv
     with pytest.raises(ValueError, match=refused("knot insertion")):
         curve.insert_knot(0.5)
     for call in (lambda: curve.refine_knots([0.3]), lambda: curve.elevate_degree(),
-                 lambda: curve.split_at(0.5), lambda: curve.region(0.2),
-                 lambda: curve.section(3.0), lambda: curve.measure(levels=3),
+                 lambda: curve.split_at(0.5), lambda: curve.segment(0.2, 0.6),
+                 lambda: curve.region(0.2), lambda: curve.measure(levels=3),
                  lambda: curve.membership_grid((0, 7), (0, 6), 8)):
         with pytest.raises(ValueError, match="is not available for a model with fuzzy weights$"):
             call()

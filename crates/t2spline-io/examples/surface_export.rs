@@ -88,12 +88,13 @@ fn main() -> Result<(), String> {
         (CadFormat::Iges, "iges"),
         (CadFormat::Obj, "obj"),
     ] {
-        let meta = CadMeta {
-            name: format!("surfaces.{extension}"),
-            description: None,
-            timestamp: "1970-01-01T00:00:00".into(),
-            units: Default::default(),
-        };
+        let meta = CadMeta::new(
+            format!("surfaces.{extension}"),
+            None,
+            "1970-01-01T00:00:00",
+            Default::default(),
+        )
+        .map_err(|e| e.to_string())?;
         let text = render_cad(format, &geometry, &meta, "<stdin>").map_err(|e| e.to_string())?;
         std::fs::write(folder.join(format!("surfaces.{extension}")), text)
             .map_err(|e| e.to_string())?;

@@ -75,7 +75,7 @@ impl FitData {
     ///   {"x": {"crisp": 1, "upper": [0, 2], "primary": [0.5, 1.5], "lower": [0.8, 1.2]},
     ///    "y": {"crisp": 1, "upper": [0, 3], "primary": [0.5, 2], "lower": [0.8, 1.5]}}
     /// ]}"#, "data.json")?;
-    /// let outcome = data.points.fit(&FitOptions::interpolation(data.degree), FuzzyFitMode::Valid)?;
+    /// let outcome = data.points.fit(&FitOptions::interpolation(data.degree)?, FuzzyFitMode::Valid)?;
     /// let job = data.job_json(&outcome.model.expect("a valid fit"), false);
     /// assert_eq!(job["knots"], serde_json::json!([0.0, 0.0, 1.0, 1.0]));
     /// assert!(t2spline_io::parse_job(&job.to_string(), "job.json").is_ok());

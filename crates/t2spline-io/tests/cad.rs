@@ -38,12 +38,13 @@ fn geometry(n: usize, degree: usize, knots: Option<Vec<f64>>) -> Geometry {
 }
 
 fn render(format: CadFormat, g: &Geometry) -> String {
-    let meta = CadMeta {
-        name: format!("curves.{format}"),
-        description: Some("a beach's profile, café".into()),
-        timestamp: "2026-01-02T03:04:05".into(),
-        units: Default::default(),
-    };
+    let meta = CadMeta::new(
+        format!("curves.{format}"),
+        Some("a beach's profile, café".into()),
+        "2026-01-02T03:04:05",
+        Default::default(),
+    )
+    .unwrap();
     render_cad(format, g, &meta, "job.json").unwrap()
 }
 
@@ -218,12 +219,13 @@ fn jumps_make_pieces_under_one_name() {
 #[test]
 fn degree_0_is_refused() {
     let g = geometry(3, 0, None);
-    let meta = CadMeta {
-        name: "a.step".into(),
-        description: None,
-        timestamp: "2026-01-01T00:00:00".into(),
-        units: Default::default(),
-    };
+    let meta = CadMeta::new(
+        "a.step".into(),
+        None,
+        "2026-01-01T00:00:00",
+        Default::default(),
+    )
+    .unwrap();
     let e = render_cad(CadFormat::Step, &g, &meta, "job.json").unwrap_err();
     assert_eq!(
         e.to_string(),
@@ -317,12 +319,13 @@ fn surfaces_are_written_as_nurbs_surfaces_except_in_dxf() {
         obj.contains("g crisp\nv 0.0 0.0 0.0 1.0\nv 1.0 0.0 0.0 1.2\n"),
         "{obj}"
     );
-    let meta = CadMeta {
-        name: "s.dxf".into(),
-        description: None,
-        timestamp: "2026-01-01T00:00:00".into(),
-        units: Default::default(),
-    };
+    let meta = CadMeta::new(
+        "s.dxf".into(),
+        None,
+        "2026-01-01T00:00:00",
+        Default::default(),
+    )
+    .unwrap();
     let e = render_cad(CadFormat::Dxf, &g, &meta, "job.json").unwrap_err();
     assert_eq!(
         e.to_string(),
@@ -577,12 +580,13 @@ fn surfaces_cut_at_their_domain_ends_are_exact_and_obey_step_s_rule() {
 #[test]
 fn control_characters_of_the_description_never_reach_a_file_raw() {
     let description = "line one \u{1b}[31mred\u{7}\r\nline two\tends\rthree\u{85}\u{7f}";
-    let meta = CadMeta {
-        name: "curves\u{1b}.x".into(),
-        description: Some(description.into()),
-        timestamp: "2026-01-02T03:04:05".into(),
-        units: Default::default(),
-    };
+    let meta = CadMeta::new(
+        "curves\u{1b}.x".into(),
+        Some(description.into()),
+        "2026-01-02T03:04:05",
+        Default::default(),
+    )
+    .unwrap();
     let curves = geometry(5, 2, None);
     let surfaces = surface_geometry(2, None);
     for format in CadFormat::ALL {
@@ -636,12 +640,13 @@ fn a_surface_of_degree_0_in_one_direction_is_named_a_set_of_curves() {
     let g = job
         .geometry(&job.settings(&Overrides::default()).unwrap())
         .unwrap();
-    let meta = CadMeta {
-        name: "a.step".into(),
-        description: None,
-        timestamp: "2026-01-01T00:00:00".into(),
-        units: Default::default(),
-    };
+    let meta = CadMeta::new(
+        "a.step".into(),
+        None,
+        "2026-01-01T00:00:00",
+        Default::default(),
+    )
+    .unwrap();
     let e = render_cad(CadFormat::Step, &g, &meta, "job.json").unwrap_err();
     assert_eq!(
         e.to_string(),
@@ -657,12 +662,13 @@ fn every_format_records_the_unit() {
     use t2spline::job::LengthUnit;
     let g = geometry(5, 2, None);
     let with = |format: CadFormat, units: LengthUnit| {
-        let meta = CadMeta {
-            name: format!("curves.{format}"),
-            description: None,
-            timestamp: "2026-01-02T03:04:05".into(),
+        let meta = CadMeta::new(
+            format!("curves.{format}"),
+            None,
+            "2026-01-02T03:04:05",
             units,
-        };
+        )
+        .unwrap();
         render_cad(format, &g, &meta, "job.json").unwrap()
     };
     let cases = [

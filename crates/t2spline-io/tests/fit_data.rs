@@ -24,9 +24,14 @@ fn fit(
     options: &FitOptions,
     mode: FuzzyFitMode,
 ) -> Result<Fitted, t2spline_io::Error> {
-    let options = FitOptions {
-        degree: data.degree,
-        ..*options
+    let given = *options;
+    let options = FitOptions::new(data.degree, given.control_points())
+        .map_err(|e| data.fit_error(&e))?
+        .with_parametrization(given.parametrization());
+    let options = if given.is_closed() {
+        options.closed()
+    } else {
+        options
     };
     let outcome = data
         .points
@@ -34,7 +39,9 @@ fn fit(
         .map_err(|e| data.fit_error(&e))?;
     Ok(Fitted {
         summary: outcome.summary,
-        job: outcome.model.map(|m| data.job_json(&m, options.closed)),
+        job: outcome
+            .model
+            .map(|m| data.job_json(&m, options.is_closed())),
     })
 }
 
@@ -95,7 +102,7 @@ fn fitted_job_parses_back_and_carries_the_data_keys() {
     let data = parse(&profile()).unwrap();
     assert_eq!((data.degree, data.degree_key), (3, "order"));
     for mode in [FuzzyFitMode::Valid, FuzzyFitMode::Independent] {
-        let outcome = fit(&data, &FitOptions::interpolation(99), mode).unwrap();
+        let outcome = fit(&data, &FitOptions::interpolation(99).unwrap(), mode).unwrap();
         let Ok(job_json) = outcome.job else {
             assert_eq!(mode, FuzzyFitMode::Independent);
             continue;
@@ -133,7 +140,7 @@ fn fitted_job_parses_back_and_carries_the_data_keys() {
         let FuzzyData::Planar(points) = &data.points else {
             panic!("2-D data")
         };
-        let fit = fit_fuzzy(points, &FitOptions::interpolation(3), mode).unwrap();
+        let fit = fit_fuzzy(points, &FitOptions::interpolation(3).unwrap(), mode).unwrap();
         let Model::Planar(curve) = &job.model else {
             panic!("2-D job")
         };
@@ -155,10 +162,14 @@ fn degree_key_samples_and_alpha_are_carried_only_when_given() {
     o.remove("description");
     o.insert("degree".into(), json!(2));
     let data = parse(&v).unwrap();
-    let job = fit(&data, &FitOptions::interpolation(2), FuzzyFitMode::Valid)
-        .unwrap()
-        .job
-        .unwrap();
+    let job = fit(
+        &data,
+        &FitOptions::interpolation(2).unwrap(),
+        FuzzyFitMode::Valid,
+    )
+    .unwrap()
+    .job
+    .unwrap();
     let keys: Vec<&str> = job
         .as_object()
         .unwrap()
@@ -178,10 +189,14 @@ fn a_type_reduction_is_read_and_carried_to_the_job() {
     v["type_reduction"] = json!("nie-tan");
     let data = parse(&v).unwrap();
     assert_eq!(data.type_reduction, Some(t2spline::TypeReduction::NieTan));
-    let job = fit(&data, &FitOptions::interpolation(3), FuzzyFitMode::Valid)
-        .unwrap()
-        .job
-        .unwrap();
+    let job = fit(
+        &data,
+        &FitOptions::interpolation(3).unwrap(),
+        FuzzyFitMode::Valid,
+    )
+    .unwrap()
+    .job
+    .unwrap();
     let keys: Vec<&str> = job
         .as_object()
         .unwrap()
@@ -232,7 +247,12 @@ fn mixed_heights_give_per_number_heights() {
     let mut v = profile();
     v["points"][2]["x"]["lower_height"] = json!(0.3);
     let data = parse(&v).unwrap();
-    let outcome = fit(&data, &FitOptions::interpolation(3), FuzzyFitMode::Valid).unwrap();
+    let outcome = fit(
+        &data,
+        &FitOptions::interpolation(3).unwrap(),
+        FuzzyFitMode::Valid,
+    )
+    .unwrap();
     assert_eq!(outcome.summary.mixed_heights.len(), 1);
     assert_eq!(outcome.summary.mixed_heights[0].1.get(), 0.3);
     let job = outcome.job.unwrap();
@@ -254,8 +274,9 @@ fn spatial_data_and_least_squares() {
         .collect();
     let v = json!({"degree": 3, "lower_height": 1.0, "points": points});
     let data = parse(&v).unwrap();
-    let options =
-        FitOptions::approximation(3, 6).with_parametrization(Parametrization::Centripetal);
+    let options = FitOptions::approximation(3, 6)
+        .unwrap()
+        .with_parametrization(Parametrization::Centripetal);
     let outcome = fit(&data, &options, FuzzyFitMode::Valid).unwrap();
     assert_eq!(outcome.summary.control_points, 6);
     let job = t2spline_io::parse_job(&outcome.job.unwrap().to_string(), "job.json").unwrap();
@@ -298,7 +319,12 @@ fn repeated_data_points_are_refused_with_their_names() {
     let mut v = profile();
     v["points"][3] = v["points"][2].clone();
     let data = parse(&v).unwrap();
-    let e = fit(&data, &FitOptions::interpolation(3), FuzzyFitMode::Valid).unwrap_err();
+    let e = fit(
+        &data,
+        &FitOptions::interpolation(3).unwrap(),
+        FuzzyFitMode::Valid,
+    )
+    .unwrap_err();
     assert_eq!(
         e.lines(),
         ["data.json: points[2] and points[3]: consecutive data points at the same crisp position get the same parameter; remove or merge the repeat, or use uniform parameters"]
@@ -337,7 +363,7 @@ proptest! {
     ) {
         let degree = degree.min(points.len() - 1);
         let data = t2spline_io::parse_data(&data_json(&points, degree).to_string(), "data.json").unwrap();
-        let options = FitOptions::interpolation(degree).with_parametrization(parametrization);
+        let options = FitOptions::interpolation(degree).unwrap().with_parametrization(parametrization);
         let outcome = fit(&data, &options, FuzzyFitMode::Valid).unwrap();
         let text = to_json_pretty(&outcome.job.unwrap());
         let job = t2spline_io::parse_job(&text, "job.json");

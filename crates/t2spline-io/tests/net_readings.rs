@@ -34,10 +34,7 @@ fn net_rows(rows: usize, columns: usize, n: usize) -> Vec<String> {
 }
 
 fn options(degree: u64) -> ReadingsOptions {
-    ReadingsOptions {
-        degree: Some(degree),
-        ..ReadingsOptions::default()
-    }
+    ReadingsOptions::new(None, None, [Some(degree), None], [None, None], None).unwrap()
 }
 
 #[test]
@@ -185,44 +182,31 @@ fn a_net_too_small_for_its_degree_is_refused_naming_the_direction() {
         other => panic!("{other:?}"),
     };
     assert_eq!(
-        refused(ReadingsOptions::default()),
+        refused(ReadingsOptions::new(None, None, [None; 2], [None; 2], None).unwrap()),
         "degree: n.csv: a net of 2 × 5 stations has 2 row(s), but degree 3 along u needs at least 4; give a lower degree"
     );
-    let o = ReadingsOptions {
-        order: Some(2),
-        order_v: Some(7),
-        ..ReadingsOptions::default()
-    };
+    let o = ReadingsOptions::new(None, None, [None, None], [Some(2), Some(7)], None).unwrap();
     assert_eq!(
         refused(o),
         "order: n.csv: a net of 2 × 5 stations has 5 station(s) per row, but degree 6 along v needs at least 7; give a lower degree"
     );
-    let o = ReadingsOptions {
-        degree: Some(1),
-        degree_v: Some(0),
-        ..ReadingsOptions::default()
-    };
-    assert_eq!(
-        refused(o),
-        "degree: a fit needs degree 1 to 31 (order 2 to 32) in each direction"
-    );
+    // A degree out of its range is refused when the options are made.
+    match ReadingsOptions::new(None, None, [Some(1), Some(0)], [None, None], None) {
+        Err(ReadingsError::Option { option, message }) => assert_eq!(
+            format!("{option}: {message}"),
+            "degree: a fit needs degree 1 to 31 (order 2 to 32) in each direction"
+        ),
+        other => panic!("{other:?}"),
+    }
     // Orders keep their key in the data file.
-    let o = ReadingsOptions {
-        order: Some(2),
-        order_v: Some(3),
-        ..ReadingsOptions::default()
-    };
+    let o = ReadingsOptions::new(None, None, [None, None], [Some(2), Some(3)], None).unwrap();
     let json = data_json(&fuzzify_net(&net, &o).unwrap());
     assert_eq!(json["order"], serde_json::json!([2, 3]));
 }
 
 #[test]
 fn a_pair_of_degrees_is_refused_for_the_stations_of_a_curve() {
-    let o = ReadingsOptions {
-        degree: Some(1),
-        degree_v: Some(2),
-        ..ReadingsOptions::default()
-    };
+    let o = ReadingsOptions::new(None, None, [Some(1), Some(2)], [None, None], None).unwrap();
     match fuzzify_readings("station,x,y\nA,0,0\nA,1,1\nB,2,0\nB,3,1\n", "r.csv", &o) {
         Err(ReadingsError::Option { message, .. }) => assert_eq!(
             message,
@@ -248,12 +232,7 @@ fn the_readings_of_a_curve_may_interleave_stations() {
 #[test]
 fn data_files_of_a_net_read_back_and_keep_their_rules() {
     let text = format!("row,col,x,y,z\n{}\n", net_rows(3, 4, 4).join("\n"));
-    let o = ReadingsOptions {
-        degree: Some(2),
-        degree_v: Some(3),
-        alpha: Some(0.5),
-        ..ReadingsOptions::default()
-    };
+    let o = ReadingsOptions::new(None, None, [Some(2), Some(3)], [None, None], Some(0.5)).unwrap();
     let data = fuzzify_readings(&text, "n.csv", &o).unwrap();
     let json = data_json(&data);
     let back = parse_data(&json.to_string(), "d.json").unwrap();
@@ -320,7 +299,7 @@ fn a_net_is_fitted_as_a_surface_with_the_same_options_in_both_directions() {
     let outcome = data
         .points
         .fit(
-            &t2spline::fit::FitOptions::interpolation(1),
+            &t2spline::fit::FitOptions::interpolation(1).unwrap(),
             t2spline::fit::FuzzyFitMode::Valid,
         )
         .unwrap();
@@ -336,13 +315,14 @@ fn the_text_of_a_data_file_is_that_of_its_tree_of_values() {
     // A net with the order key, and a data file whose numbers mix lower
     // heights (each written where it differs from the top-level one).
     let text = format!("row,col,x,y,z\n{}\n", net_rows(3, 4, 4).join("\n"));
-    let o = ReadingsOptions {
-        order: Some(3),
-        order_v: Some(2),
-        alpha: Some(0.25),
-        tolerance: Some(0.01),
-        ..ReadingsOptions::default()
-    };
+    let o = ReadingsOptions::new(
+        Some(0.01),
+        None,
+        [None, None],
+        [Some(3), Some(2)],
+        Some(0.25),
+    )
+    .unwrap();
     let net = fuzzify_readings(&text, "n.csv", &o).unwrap();
     let mixed = parse_data(
         r#"{"degree": 1, "lower_height": 0.5, "samples": 7, "points": [

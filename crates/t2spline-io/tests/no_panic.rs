@@ -25,10 +25,7 @@ use t2spline_io::{
 
 /// The readings of a net, fuzzified and written as a data file read back.
 fn net_on(net: &NetReadings) {
-    let options = ReadingsOptions {
-        degree: Some(1),
-        ..ReadingsOptions::default()
-    };
+    let options = ReadingsOptions::new(None, None, [Some(1), None], [None, None], None).unwrap();
     if let Ok(data) = returns("fuzzify_net", || fuzzify_net(net, &options)) {
         let json = returns("data_json", || data_json(&data)).to_string();
         returns("parse_data of a net", || parse_data(&json, "d.json")).ok();
@@ -83,8 +80,9 @@ fn read_and_write(text: &str) {
     }
     if let Ok(data) = returns("parse_data", || parse_data(text, "d.json")) {
         returns("data_json", || data_json(&data));
-        let options = FitOptions::interpolation(data.degree);
-        if let Ok(outcome) = returns("fit", || data.points.fit(&options, FuzzyFitMode::Valid)) {
+        let options = returns("FitOptions", || FitOptions::interpolation(data.degree));
+        let fitted = options.map(|o| returns("fit", || data.points.fit(&o, FuzzyFitMode::Valid)));
+        if let Ok(Ok(outcome)) = fitted {
             if let Ok(model) = &outcome.model {
                 returns("FitData::job_json", || data.job_json(model, false));
             }
@@ -110,12 +108,13 @@ fn read_and_write(text: &str) {
                 returns("render_csv", || render_csv(&result));
             }
             if let Ok(geometry) = returns("geometry", || job.geometry(&settings)) {
-                let meta = CadMeta {
-                    name: "x".into(),
-                    description: job.description.clone(),
-                    timestamp: "2000-01-01T00:00:00".into(),
-                    units: Default::default(),
-                };
+                let meta = CadMeta::new(
+                    "x".into(),
+                    job.description.clone(),
+                    "2000-01-01T00:00:00",
+                    Default::default(),
+                )
+                .unwrap();
                 for format in CadFormat::ALL {
                     returns("render_cad", || {
                         render_cad(format, &geometry, &meta, "j.json")

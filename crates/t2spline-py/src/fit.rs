@@ -17,7 +17,7 @@ use t2spline_io::{parse_data, parse_job, to_json_pretty};
 use crate::classes::{PyFuzzyCurve, PyFuzzySurface};
 use crate::construct::{degree, rows as rows_of, FuzzyArrays};
 use crate::dim::{ByDim, FromModel, Fuzzy, FuzzyNet};
-use crate::errors::{compute, io_error, without_gil};
+use crate::errors::{compute, core_error, io_error, without_gil};
 use crate::json::loads;
 use crate::keyword;
 
@@ -170,11 +170,9 @@ pub(crate) fn fit<'py>(
                 count_within(n, &names[1], degree[1] + 1, cols, "columns")?,
             ])
         });
-        let options = SurfaceFitOptions {
-            degree,
-            parametrization,
-            control_points: counts.transpose()?,
-        };
+        let options = SurfaceFitOptions::new(degree, counts.transpose()?)
+            .map_err(core_error)?
+            .with_parametrization(parametrization);
         let outcome = compute(py, move || {
             let ByDim::Spatial(points) = data.points()? else {
                 return Err(t2spline::Error::Length {
@@ -209,14 +207,15 @@ pub(crate) fn fit<'py>(
             ))
         }
     };
-    let options = FitOptions {
-        degree: self::degree(Some(degree), None, None, data.n)?,
-        parametrization,
-        control_points: control_points
+    let options = FitOptions::new(
+        self::degree(Some(degree), None, None, data.n)?,
+        control_points
             .map(|m| crate::construct::count(m, "control_points", 1))
             .transpose()?,
-        closed,
-    };
+    )
+    .map_err(core_error)?
+    .with_parametrization(parametrization);
+    let options = if closed { options.closed() } else { options };
     let outcome = compute(py, move || {
         let points = match data.points()? {
             ByDim::Planar(p) => FuzzyData::Planar(p),
@@ -381,17 +380,12 @@ pub(crate) fn fit_job<'py>(
                     ])
                 })
                 .transpose()?;
-            let surface = SurfaceFitOptions {
-                degree,
-                parametrization,
-                control_points: counts,
-            };
-            let options = FitOptions {
-                degree: data.degree,
-                parametrization,
-                control_points: counts.map(|[m, _]| m),
-                closed: false,
-            };
+            let surface = SurfaceFitOptions::new(degree, counts)
+                .map_err(core_error)?
+                .with_parametrization(parametrization);
+            let options = FitOptions::new(data.degree, counts.map(|[m, _]| m))
+                .map_err(core_error)?
+                .with_parametrization(parametrization);
             (options, Some(surface))
         }
         _ => {
@@ -410,12 +404,10 @@ pub(crate) fn fit_job<'py>(
                     ))
                 }
             };
-            let options = FitOptions {
-                degree: data.degree,
-                parametrization,
-                control_points: m,
-                closed,
-            };
+            let options = FitOptions::new(data.degree, m)
+                .map_err(core_error)?
+                .with_parametrization(parametrization);
+            let options = if closed { options.closed() } else { options };
             (options, None)
         }
     };

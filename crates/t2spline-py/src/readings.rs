@@ -175,15 +175,14 @@ pub(crate) fn fuzzify<'py>(
     };
     let (degree, degree_v) = split(degree, "degree")?;
     let (order, order_v) = split(order, "order")?;
-    let options = ReadingsOptions {
-        tolerance: keyword::opt_real(tolerance, "tolerance")?,
-        lower_height: keyword::opt_real(lower_height, "lower_height")?,
-        degree,
-        order,
-        degree_v,
-        order_v,
-        alpha: keyword::opt_real(alpha, "alpha")?,
-    };
+    let options = ReadingsOptions::new(
+        keyword::opt_real(tolerance, "tolerance")?,
+        keyword::opt_real(lower_height, "lower_height")?,
+        [degree, degree_v],
+        [order, order_v],
+        keyword::opt_real(alpha, "alpha")?,
+    )
+    .map_err(|e| readings_error(py, e))?;
     let block = keyword::opt_int(block, "block")?
         .map(|k| {
             usize::try_from(k).ok().filter(|&k| k >= 2).ok_or_else(|| {
@@ -227,12 +226,7 @@ pub(crate) fn fuzzify<'py>(
         let (data, note) = fit_data(given, block, geometry, &options)?;
         Ok((data_json_text(&data), note))
     })?
-    .map_err(|e| match e {
-        ReadingsError::File(e) => io_error(py, e),
-        ReadingsError::Option { option, message } => {
-            PyValueError::new_err(format!("{option}: {message}"))
-        }
-    })?;
+    .map_err(|e| readings_error(py, e))?;
     if let Some(note) = note {
         crate::reduction::warn(py, &note)?;
     }
@@ -240,6 +234,17 @@ pub(crate) fn fuzzify<'py>(
     parse_data(&json, "<fuzzify>")
         .map_err(|e| internal_error(&format!("the data file does not validate: {e}")))?;
     loads(py, &json)
+}
+
+/// The I/O crate's error as Python's: a file's problems as its exception,
+/// an option's as `ValueError` naming the keyword.
+fn readings_error(py: Python<'_>, e: ReadingsError) -> PyErr {
+    match e {
+        ReadingsError::File(e) => io_error(py, e),
+        ReadingsError::Option { option, message } => {
+            PyValueError::new_err(format!("{option}: {message}"))
+        }
+    }
 }
 
 /// A pair of finite reals, or `None`.

@@ -65,7 +65,7 @@ fn valid_fit(c: &mut Criterion) {
         (10_000, 9, 20),
     ] {
         let points = data(count, 1);
-        let options = FitOptions::interpolation(degree);
+        let options = FitOptions::interpolation(degree).unwrap();
         g.throughput(Throughput::Elements(count as u64))
             .measurement_time(Duration::from_secs(seconds));
         g.bench_function(BenchmarkId::new(format!("degree_{degree}"), count), |b| {
@@ -109,7 +109,7 @@ fn terrain(size: usize, seed: u64) -> Vec<Vec<Nt2Point<3>>> {
 fn valid_surface_fit(c: &mut Criterion) {
     let mut g = c.benchmark_group("fit_fuzzy_surface_valid");
     g.sample_size(10);
-    let options = SurfaceFitOptions::approximation([3, 3], [40, 40]);
+    let options = SurfaceFitOptions::approximation([3, 3], [40, 40]).unwrap();
     for size in [125, 250, 500] {
         let net = terrain(size, 2);
         g.throughput(Throughput::Elements((size * size) as u64))

@@ -83,6 +83,10 @@ pub enum Setting {
     Order,
     /// The height of the plane a surface's volumes are measured from.
     Datum,
+    /// The degree of a fit.
+    Degree,
+    /// The number of control points of a least-squares fit.
+    ControlPoints,
 }
 
 impl Setting {
@@ -99,6 +103,8 @@ impl Setting {
             Setting::At => "at",
             Setting::Order => "order",
             Setting::Datum => "datum",
+            Setting::Degree => "degree",
+            Setting::ControlPoints => "control_points",
         }
     }
 }
@@ -479,8 +485,9 @@ pub enum Error {
     /// ```
     /// # use t2spline::Error;
     /// # use t2spline::fit::{fit_curve, FitOptions};
-    /// let e = fit_curve(&[[0.0, 0.0], [1.0, 1.0]], &FitOptions::interpolation(2)).unwrap_err();
+    /// let e = fit_curve(&[[0.0, 0.0], [1.0, 1.0]], &FitOptions::interpolation(2)?).unwrap_err();
     /// assert_eq!(e.to_string(), "points: a curve of degree 2 needs at least 3 data points, got 2");
+    /// # Ok::<(), t2spline::Error>(())
     /// ```
     #[error("points: a curve of degree {degree} needs at least {} data points, got {count}", degree.saturating_add(1))]
     TooFewDataPoints {
@@ -498,9 +505,10 @@ pub enum Error {
     /// # use t2spline::Error;
     /// # use t2spline::fit::{fit_curve, FitOptions};
     /// let q = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 0.0]];
-    /// let e = fit_curve(&q, &FitOptions::interpolation(3).closed()).unwrap_err();
+    /// let e = fit_curve(&q, &FitOptions::interpolation(3)?.closed()).unwrap_err();
     /// assert_eq!(e, Error::TooFewClosedDataPoints { degree: 3, count: 3, repeated: true });
     /// assert_eq!(e.to_string(), "points: a closed curve of degree 3 needs at least 4 distinct data points around its loop, got 3 (the last point repeats the first and counts once)");
+    /// # Ok::<(), t2spline::Error>(())
     /// ```
     #[error("points: a closed curve of degree {degree} needs at least {} distinct data points around its loop, got {count}{}", degree.saturating_add(1), if *repeated { " (the last point repeats the first and counts once)" } else { "" })]
     TooFewClosedDataPoints {
@@ -522,7 +530,7 @@ pub enum Error {
     /// let net = (0..3)
     ///     .map(|i| (0..3).map(|j| Ok(Nt2Point::new([c(i as f64)?, c(j as f64)?, c(0.0)?]))).collect())
     ///     .collect::<Result<Vec<Vec<_>>, Error>>()?;
-    /// let e = FuzzyData::Net(net).fit(&FitOptions::interpolation(2).closed(), FuzzyFitMode::Valid).unwrap_err();
+    /// let e = FuzzyData::Net(net).fit(&FitOptions::interpolation(2)?.closed(), FuzzyFitMode::Valid).unwrap_err();
     /// assert_eq!(e, Error::ClosedSurfaceFit);
     /// # Ok::<(), Error>(())
     /// ```
@@ -553,8 +561,8 @@ pub enum Error {
     ///
     /// ```
     /// # use t2spline::Error;
-    /// # use t2spline::fit::{fit_curve, FitOptions};
-    /// let e = fit_curve(&[[0.0, 0.0], [1.0, 1.0]], &FitOptions::interpolation(0)).unwrap_err();
+    /// # use t2spline::fit::averaging_knots;
+    /// let e = averaging_knots(&[0.0, 1.0], 0).unwrap_err();
     /// assert_eq!(e, Error::ZeroDegreeFit);
     /// ```
     #[error("degree 0 cannot be fitted: a piecewise-constant curve does not pass through its data; give degree 1 or more")]
@@ -567,8 +575,9 @@ pub enum Error {
     /// # use t2spline::Error;
     /// # use t2spline::fit::{fit_curve, FitOptions};
     /// let q = [[0.0, 0.0], [1.0, 1.0], [2.0, 0.0]];
-    /// let e = fit_curve(&q, &FitOptions::approximation(1, 5)).unwrap_err();
+    /// let e = fit_curve(&q, &FitOptions::approximation(1, 5)?).unwrap_err();
     /// assert_eq!(e.to_string(), "control points: 5 is outside [2, 3] (degree + 1 to the number of data points)");
+    /// # Ok::<(), t2spline::Error>(())
     /// ```
     #[error("control points: {count} is outside [{min}, {max}] (degree + 1 to the number of data points)")]
     ControlPointCount {
@@ -587,8 +596,9 @@ pub enum Error {
     /// # use t2spline::Error;
     /// # use t2spline::fit::{fit_curve, FitOptions};
     /// let q = [[0.0, 0.0], [1.0, 1.0], [1.0, 1.0], [2.0, 0.0]];
-    /// let e = fit_curve(&q, &FitOptions::interpolation(2)).unwrap_err();
+    /// let e = fit_curve(&q, &FitOptions::interpolation(2)?).unwrap_err();
     /// assert_eq!(e, Error::CoincidentDataPoints { first: 1, second: 2 });
+    /// # Ok::<(), t2spline::Error>(())
     /// ```
     #[error("points[{first}] and points[{second}]: consecutive data points at the same crisp position get the same parameter; remove or merge the repeat, or use uniform parameters")]
     CoincidentDataPoints {
@@ -607,8 +617,9 @@ pub enum Error {
     /// // points[1] and points[2] are 1e-15 apart: their parameters differ, but
     /// // the two equations agree to working precision.
     /// let q = [[0.0, 0.0], [1.0, 0.0], [1.0 + 1e-15, 0.0], [2.0, 1.0]];
-    /// let e = fit_curve(&q, &FitOptions::interpolation(2)).unwrap_err();
+    /// let e = fit_curve(&q, &FitOptions::interpolation(2)?).unwrap_err();
     /// assert_eq!(e, Error::SingularFit { column: 2 });
+    /// # Ok::<(), t2spline::Error>(())
     /// ```
     #[error("the fitting system is singular to working precision: control point {column} is not determined by the data (are data points repeated, or their parameters too close?)")]
     SingularFit {
@@ -627,9 +638,10 @@ pub enum Error {
     /// # use t2spline::fit::{fit_curve, FitOptions};
     /// // 39 points spaced ever wider (chords grow by 10 % each), degree 5.
     /// let q: Vec<[f64; 2]> = (0..39).map(|k| [1.1f64.powi(k), 0.0]).collect();
-    /// let e = fit_curve(&q, &FitOptions::approximation(5, 38)).unwrap_err();
+    /// let e = fit_curve(&q, &FitOptions::approximation(5, 38)?).unwrap_err();
     /// assert!(matches!(e, Error::IllConditionedFit { .. }), "{e}");
-    /// assert!(fit_curve(&q, &FitOptions::approximation(5, 20)).is_ok());
+    /// assert!(fit_curve(&q, &FitOptions::approximation(5, 20)?).is_ok());
+    /// # Ok::<(), t2spline::Error>(())
     /// ```
     #[error("the fitting system is too ill-conditioned (condition number {condition:.1e}): the control points would keep fewer than four correct digits; use fewer control points, or check for nearly repeated data points")]
     IllConditionedFit {
@@ -654,7 +666,7 @@ pub enum Error {
     ///     Nt2Point::new([n(3.0, 0.2)?, n(3.0, 0.2)?]),
     ///     Nt2Point::new([n(4.0, 0.3)?, n(4.0, 0.3)?]),
     /// ];
-    /// let fit = fit_fuzzy(&data, &FitOptions::interpolation(3), FuzzyFitMode::Independent)?;
+    /// let fit = fit_fuzzy(&data, &FitOptions::interpolation(3)?, FuzzyFitMode::Independent)?;
     /// assert!(matches!(fit.to_curve(), Err(Error::UnorderedFit { .. })));
     /// # Ok::<(), Error>(())
     /// ```
@@ -680,7 +692,7 @@ pub enum Error {
     ///     .enumerate()
     ///     .map(|(i, &y)| Ok(Nt2Point::new([n(i as f64)?, n(y)?])))
     ///     .collect::<Result<_, Error>>()?;
-    /// let e = fit_fuzzy(&data, &FitOptions::interpolation(3), FuzzyFitMode::Valid).unwrap_err();
+    /// let e = fit_fuzzy(&data, &FitOptions::interpolation(3)?, FuzzyFitMode::Valid).unwrap_err();
     /// assert!(matches!(e, Error::FitBeyondLimit { layer: Some(Layer::Crisp), .. }), "{e}");
     /// assert!(e.to_string().contains("is beyond the limit of coordinates, [-1e150, 1e150]"));
     /// # Ok::<(), Error>(())

@@ -46,7 +46,9 @@ fn interpolation_recovers_a_spline_on_the_averaging_knots() {
     ];
     let truth = NurbsCurve::try_new(control.clone(), vec![1.0; 8], knots.clone()).unwrap();
     let data = truth.sample(&params).unwrap();
-    let options = FitOptions::interpolation(3).with_parametrization(Parametrization::Uniform);
+    let options = FitOptions::interpolation(3)
+        .unwrap()
+        .with_parametrization(Parametrization::Uniform);
     let fit = fit_curve(&data, &options).unwrap();
     assert_eq!(fit.curve.knots(), &knots);
     for (got, want) in fit.curve.control_points().iter().zip(&control) {
@@ -61,7 +63,9 @@ fn interpolation_reproduces_a_polynomial_of_the_same_degree() {
     let poly = |t: f64| [t, 1.0 - 3.0 * t + 2.0 * t.powi(3) - t.powi(4) + t.powi(5)];
     let params = uniform(11);
     let data: Vec<[f64; 2]> = params.iter().map(|&t| poly(t)).collect();
-    let options = FitOptions::interpolation(5).with_parametrization(Parametrization::Uniform);
+    let options = FitOptions::interpolation(5)
+        .unwrap()
+        .with_parametrization(Parametrization::Uniform);
     let fit = fit_curve(&data, &options).unwrap();
     for t in fit.curve.domain().uniform(201).unwrap() {
         let (got, want) = (fit.curve.eval(t).unwrap(), poly(t));
@@ -83,7 +87,7 @@ fn chord_length_interpolation_of_points_on_a_line_is_the_line() {
         .map(|&s| std::array::from_fn(|d| a[d] + s * (b[d] - a[d])))
         .collect();
     for p in 1..=5 {
-        let fit = fit_curve(&data, &FitOptions::interpolation(p)).unwrap();
+        let fit = fit_curve(&data, &FitOptions::interpolation(p).unwrap()).unwrap();
         for (u, &want) in fit.params.iter().zip(&s) {
             assert!(
                 close(*u, want, 1e-15),
@@ -117,7 +121,9 @@ fn least_squares_recovers_a_spline_on_its_own_knots() {
     ];
     let truth = NurbsCurve::try_new(control.clone(), vec![1.0; 6], knots).unwrap();
     let data = truth.sample(&params).unwrap();
-    let options = FitOptions::approximation(2, 6).with_parametrization(Parametrization::Uniform);
+    let options = FitOptions::approximation(2, 6)
+        .unwrap()
+        .with_parametrization(Parametrization::Uniform);
     let fit = fit_curve(&data, &options).unwrap();
     for (got, want) in fit.curve.control_points().iter().zip(&control) {
         assert!(close_point(got, want, 1e-12), "{got:?} != {want:?}");
@@ -175,7 +181,7 @@ fn order_detection_names_the_broken_place() {
             Nt2Point::new([number(c, left, spread, 1.0), number(c, spread, spread, 1.0)])
         })
         .collect();
-    let options = FitOptions::interpolation(3);
+    let options = FitOptions::interpolation(3).unwrap();
     let independent = fit_fuzzy(&data, &options, FuzzyFitMode::Independent).unwrap();
     let found = independent.violations();
     assert!(!found.is_empty());
@@ -226,8 +232,8 @@ fn constant_spreads_are_fitted_exactly_by_the_valid_fit() {
         .map(|c| Nt2Point::new(c.map(|x| number(x, [0.1, 0.4, 0.5], [0.05, 0.3, 0.9], 0.6))))
         .collect();
     for options in [
-        FitOptions::interpolation(3),
-        FitOptions::approximation(2, 4),
+        FitOptions::interpolation(3).unwrap(),
+        FitOptions::approximation(2, 4).unwrap(),
     ] {
         let fit = fit_fuzzy(&data, &options, FuzzyFitMode::Valid).unwrap();
         let crisp_error = fit.deviations()[Layer::Crisp].max;
@@ -254,7 +260,12 @@ fn mixed_heights_take_the_smallest() {
             ])
         })
         .collect();
-    let fit = fit_fuzzy(&data, &FitOptions::interpolation(2), FuzzyFitMode::Valid).unwrap();
+    let fit = fit_fuzzy(
+        &data,
+        &FitOptions::interpolation(2).unwrap(),
+        FuzzyFitMode::Valid,
+    )
+    .unwrap();
     assert_eq!(fit.heights().map(|h| h.get()), [0.3, 0.5]);
     assert_eq!(fit.mixed_heights(), [true, false]);
 }
@@ -262,23 +273,37 @@ fn mixed_heights_take_the_smallest() {
 #[test]
 fn bad_data_are_clear_errors() {
     let q = [[0.0, 0.0], [1.0, 1.0], [2.0, f64::NAN]];
-    let e = fit_curve(&q, &FitOptions::interpolation(1)).unwrap_err();
+    let e = fit_curve(&q, &FitOptions::interpolation(1).unwrap()).unwrap_err();
     assert_eq!(
         e.to_string(),
         "points[2].y: coordinate = NaN is not a finite number"
     );
     let q = [[0.0, 0.0], [0.0, 0.0], [2.0, 1.0]];
     for p in [Parametrization::ChordLength, Parametrization::Centripetal] {
-        let e = fit_curve(&q, &FitOptions::interpolation(1).with_parametrization(p)).unwrap_err();
+        let e = fit_curve(
+            &q,
+            &FitOptions::interpolation(1)
+                .unwrap()
+                .with_parametrization(p),
+        )
+        .unwrap_err();
         assert!(e
             .to_string()
             .starts_with("points[0] and points[1]: consecutive data points"));
     }
     let q = [[0.0, 0.0], [1.0, 0.0], [2.0, 0.0]];
+    // Fewer control points than degree + 1: refused when the options are
+    // made; more than the data: by the fit.
+    let e = FitOptions::approximation(2, 2).unwrap_err();
+    assert_eq!(e.setting(), Some(t2spline::job::Setting::ControlPoints));
+    assert_eq!(
+        e.to_string(),
+        "2 is fewer than degree + 1 (the degree is 2)"
+    );
     assert!(matches!(
-        fit_curve(&q, &FitOptions::approximation(2, 2)),
+        fit_curve(&q, &FitOptions::approximation(2, 4).unwrap()),
         Err(Error::ControlPointCount {
-            count: 2,
+            count: 4,
             min: 3,
             max: 3
         })
@@ -304,12 +329,9 @@ fn options_strategy(points: usize) -> impl Strategy<Value = FitOptions> {
                 let (lo, hi) = (degree + 1, points);
                 lo + ((hi - lo) as f64 * s).round() as usize
             });
-            FitOptions {
-                degree,
-                parametrization,
-                control_points,
-                closed: false,
-            }
+            FitOptions::new(degree, control_points)
+                .unwrap()
+                .with_parametrization(parametrization)
         })
 }
 
@@ -340,7 +362,7 @@ fn scale<const D: usize>(q: &[[f64; D]]) -> f64 {
 fn fit_or_skip<const D: usize>(q: &[[f64; D]], options: &FitOptions) -> Option<CurveFit<D>> {
     match fit_curve(q, options) {
         Ok(fit) => Some(fit),
-        Err(Error::IllConditionedFit { .. }) if options.control_points.is_some() => None,
+        Err(Error::IllConditionedFit { .. }) if options.control_points().is_some() => None,
         Err(e) => panic!("{options:?}: {e}"),
     }
 }
@@ -360,10 +382,10 @@ proptest! {
         prop_assert_eq!(fit.params[0], 0.0);
         prop_assert_eq!(fit.params[m], 1.0);
         let knots: &KnotVector = fit.curve.knots();
-        prop_assert_eq!(knots.count(), options.control_points.unwrap_or(q.len()));
+        prop_assert_eq!(knots.count(), options.control_points().unwrap_or(q.len()));
         let at = fit.curve.sample(&fit.params).unwrap();
         for k in 0..=m {
-            let exact = options.control_points.is_none() || k == 0 || k == m;
+            let exact = options.control_points().is_none() || k == 0 || k == m;
             if exact {
                 let e = at[k].iter().zip(&q[k]).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
                 prop_assert!(e <= tol, "point {k}: {:?} != {:?} ({options:?})", at[k], q[k]);
@@ -375,8 +397,8 @@ proptest! {
     fn least_squares_with_as_many_control_points_as_data_is_interpolation(
         (q, options) in data_and_options::<2>()
     ) {
-        let interpolation = FitOptions { control_points: None, ..options };
-        let full = FitOptions { control_points: Some(q.len()), ..options };
+        let interpolation = FitOptions::new(options.degree(), None).unwrap().with_parametrization(options.parametrization());
+        let full = FitOptions::new(options.degree(), Some(q.len())).unwrap().with_parametrization(options.parametrization());
         prop_assert_eq!(fit_curve(&q, &full).unwrap(), fit_curve(&q, &interpolation).unwrap());
     }
 
@@ -426,7 +448,7 @@ proptest! {
         (data, options) in fuzzy_data_and_options::<2>()
     ) {
         let fit = match fit_fuzzy(&data, &options, FuzzyFitMode::Valid) {
-            Err(Error::IllConditionedFit { .. }) if options.control_points.is_some() => return Ok(()),
+            Err(Error::IllConditionedFit { .. }) if options.control_points().is_some() => return Ok(()),
             other => other.unwrap(),
         };
         prop_assert!(fit.violations().is_empty(), "{:?}", fit.violations());
@@ -441,11 +463,11 @@ proptest! {
             for d in 0..2 {
                 prop_assert!(values.windows(2).all(|w| w[0][d] <= w[1][d]), "t {t}: {values:?}");
             }
-            if options.control_points.is_none() || k == 0 || k == m {
+            if options.control_points().is_none() || k == 0 || k == m {
                 prop_assert!(close_point(&at[Layer::Crisp], &crisp[k], tol), "point {k}");
             }
         }
-        if options.control_points.is_none() {
+        if options.control_points().is_none() {
             prop_assert!(fit.deviations()[Layer::Crisp].max <= tol);
         }
     }
@@ -455,7 +477,7 @@ proptest! {
         (data, options) in fuzzy_data_and_options::<2>()
     ) {
         let independent = match fit_fuzzy(&data, &options, FuzzyFitMode::Independent) {
-            Err(Error::IllConditionedFit { .. }) if options.control_points.is_some() => return Ok(()),
+            Err(Error::IllConditionedFit { .. }) if options.control_points().is_some() => return Ok(()),
             other => other.unwrap(),
         };
         let valid = fit_fuzzy(&data, &options, FuzzyFitMode::Valid).unwrap();

@@ -66,6 +66,7 @@ fn interpolation_passes_through_every_crisp_and_layer_value() {
     for p in 1..=5 {
         for method in Parametrization::ALL {
             let options = FitOptions::interpolation(p)
+                .unwrap()
                 .with_parametrization(method)
                 .closed();
             // Independent: every layer interpolates its own data.
@@ -105,10 +106,7 @@ fn the_seam_is_c_p_minus_1_and_the_curve_closes_with_its_points_merged() {
             if control_points.is_some_and(|n| n > 9) {
                 continue;
             }
-            let options = FitOptions {
-                control_points,
-                ..FitOptions::interpolation(p).closed()
-            };
+            let options = FitOptions::new(p, control_points).unwrap().closed();
             let fit = fit_curve(&q, &options).unwrap();
             let c = &fit.curve;
             let n = c.control_points().len() - p;
@@ -184,12 +182,10 @@ fn a_periodic_spline_is_recovered_from_its_samples() {
             (13, 40),
         ] {
             let (control, samples) = known_spline(p, n, big_n);
-            let options = FitOptions {
-                control_points: (n < big_n).then_some(n),
-                ..FitOptions::interpolation(p)
-                    .with_parametrization(Parametrization::Uniform)
-                    .closed()
-            };
+            let options = FitOptions::new(p, (n < big_n).then_some(n))
+                .unwrap()
+                .with_parametrization(Parametrization::Uniform)
+                .closed();
             let fit = fit_curve(&samples, &options).unwrap();
             for (i, (got, want)) in fit.curve.control_points().iter().zip(&control).enumerate() {
                 for d in 0..2 {
@@ -208,7 +204,7 @@ fn a_last_point_repeating_the_first_is_the_same_point() {
     let q = star(10);
     let mut again = q.clone();
     again.push([q[0][0] + 1e-12, q[0][1]]);
-    let options = FitOptions::interpolation(3).closed();
+    let options = FitOptions::interpolation(3).unwrap().closed();
     let (a, b) = (
         fit_curve(&q, &options).unwrap(),
         fit_curve(&again, &options).unwrap(),
@@ -253,7 +249,7 @@ fn least_squares_residuals_are_orthogonal_to_the_folded_basis() {
     let q = star(30);
     for p in 1..=4 {
         for n in [p + 1, 7, 12, 29] {
-            let options = FitOptions::approximation(p, n).closed();
+            let options = FitOptions::approximation(p, n).unwrap().closed();
             let fit = fit_curve(&q, &options).unwrap();
             let a = folded_basis(&fit.curve, &fit.params, p);
             let r = residual(&fit.curve, &fit.params, &q);
@@ -282,12 +278,10 @@ fn on_nested_knots_the_residual_does_not_grow() {
     for p in [1, 3, 5] {
         let mut previous = f64::INFINITY;
         for n in [8, 16, 32, 64] {
-            let options = FitOptions {
-                control_points: Some(n),
-                ..FitOptions::interpolation(p)
-                    .with_parametrization(Parametrization::Uniform)
-                    .closed()
-            };
+            let options = FitOptions::approximation(p, n)
+                .unwrap()
+                .with_parametrization(Parametrization::Uniform)
+                .closed();
             let fit = fit_curve(&q, &options).unwrap();
             let knots = fit.curve.knots().as_slice();
             for j in 0..=n {
@@ -311,7 +305,15 @@ fn on_nested_knots_the_residual_does_not_grow() {
 #[test]
 fn bad_closed_fits_name_the_rule() {
     let square = [[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
-    let closed = |p| FitOptions::interpolation(p).closed();
+    let closed = |p| FitOptions::interpolation(p).unwrap().closed();
+    // Degree 0 is refused when the options are made.
+    assert!(matches!(
+        FitOptions::interpolation(0),
+        Err(Error::Setting {
+            setting: t2spline::job::Setting::Degree,
+            ..
+        })
+    ));
     assert_eq!(
         fit_curve(&square, &closed(4)).unwrap_err(),
         Error::TooFewClosedDataPoints {
@@ -321,11 +323,7 @@ fn bad_closed_fits_name_the_rule() {
         }
     );
     assert_eq!(
-        fit_curve(&square, &closed(0)).unwrap_err(),
-        Error::ZeroDegreeFit
-    );
-    assert_eq!(
-        fit_curve(&square, &FitOptions::approximation(2, 5).closed()).unwrap_err(),
+        fit_curve(&square, &FitOptions::approximation(2, 5).unwrap().closed()).unwrap_err(),
         Error::ControlPointCount {
             count: 5,
             min: 3,

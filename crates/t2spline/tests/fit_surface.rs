@@ -47,10 +47,10 @@ fn interpolation_and_least_squares_recover_a_polynomial_patch() {
     let net = sampled(7, 9, patch);
     let uniform_params = |o: SurfaceFitOptions| o.with_parametrization(Parametrization::Uniform);
     for options in [
-        uniform_params(SurfaceFitOptions::interpolation([2, 3])),
-        uniform_params(SurfaceFitOptions::interpolation([3, 4])),
-        uniform_params(SurfaceFitOptions::approximation([2, 3], [4, 5])),
-        uniform_params(SurfaceFitOptions::approximation([3, 3], [5, 6])),
+        uniform_params(SurfaceFitOptions::interpolation([2, 3]).unwrap()),
+        uniform_params(SurfaceFitOptions::interpolation([3, 4]).unwrap()),
+        uniform_params(SurfaceFitOptions::approximation([2, 3], [4, 5]).unwrap()),
+        uniform_params(SurfaceFitOptions::approximation([3, 3], [5, 6]).unwrap()),
     ] {
         let fit = fit_surface(&net, &options).unwrap();
         // The polynomial lies in the spline space: reproduced everywhere.
@@ -93,8 +93,9 @@ fn interpolation_recovers_a_spline_on_the_averaging_knots() {
         .iter()
         .map(|&u| pv.iter().map(|&v| truth.eval(u, v).unwrap()).collect())
         .collect();
-    let options =
-        SurfaceFitOptions::interpolation([3, 2]).with_parametrization(Parametrization::Uniform);
+    let options = SurfaceFitOptions::interpolation([3, 2])
+        .unwrap()
+        .with_parametrization(Parametrization::Uniform);
     let fit = fit_surface(&net, &options).unwrap();
     assert_eq!(fit.surface.knots(Direction::U), &knots[0]);
     assert_eq!(fit.surface.knots(Direction::V), &knots[1]);
@@ -108,12 +109,16 @@ fn interpolation_recovers_a_spline_on_the_averaging_knots() {
 #[test]
 fn bad_nets_are_clear_errors() {
     let net = sampled(3, 4, patch);
-    let e = fit_surface(&net, &SurfaceFitOptions::interpolation([3, 2])).unwrap_err();
+    let e = fit_surface(&net, &SurfaceFitOptions::interpolation([3, 2]).unwrap()).unwrap_err();
     assert_eq!(
         e.to_string(),
         "in u: points: a curve of degree 3 needs at least 4 data points, got 3"
     );
-    let e = fit_surface(&net, &SurfaceFitOptions::approximation([2, 2], [3, 5])).unwrap_err();
+    let e = fit_surface(
+        &net,
+        &SurfaceFitOptions::approximation([2, 2], [3, 5]).unwrap(),
+    )
+    .unwrap_err();
     assert!(
         matches!(
             e,
@@ -127,12 +132,16 @@ fn bad_nets_are_clear_errors() {
     let mut ragged = net.clone();
     ragged[1].pop();
     assert!(matches!(
-        fit_surface(&ragged, &SurfaceFitOptions::interpolation([1, 1])),
+        fit_surface(&ragged, &SurfaceFitOptions::interpolation([1, 1]).unwrap()),
         Err(Error::NetShape { row: 1, .. })
     ));
     let mut repeated = net.clone();
     repeated[2] = repeated[1].clone();
-    let e = fit_surface(&repeated, &SurfaceFitOptions::interpolation([1, 1])).unwrap_err();
+    let e = fit_surface(
+        &repeated,
+        &SurfaceFitOptions::interpolation([1, 1]).unwrap(),
+    )
+    .unwrap_err();
     assert!(
         matches!(
             e,
@@ -146,7 +155,7 @@ fn bad_nets_are_clear_errors() {
     let mut nan = net;
     nan[2][1][2] = f64::NAN;
     assert!(matches!(
-        fit_surface(&nan, &SurfaceFitOptions::interpolation([1, 1])),
+        fit_surface(&nan, &SurfaceFitOptions::interpolation([1, 1]).unwrap()),
         Err(Error::NotFinite { .. })
     ));
 }
@@ -193,8 +202,8 @@ fn constant_spreads_are_fitted_exactly_by_the_valid_fit() {
     let crisp = sampled(6, 5, patch);
     let net = fuzzy_net(&crisp, |_, _| ([0.1, 0.2, 0.4], [0.05, 0.3, 0.35]));
     for options in [
-        SurfaceFitOptions::interpolation([3, 2]),
-        SurfaceFitOptions::approximation([2, 2], [4, 4]),
+        SurfaceFitOptions::interpolation([3, 2]).unwrap(),
+        SurfaceFitOptions::approximation([2, 2], [4, 4]).unwrap(),
     ] {
         let fit = fit_fuzzy_surface(&net, &options, FuzzyFitMode::Valid).unwrap();
         assert!(fit.violations().is_empty());
@@ -219,7 +228,7 @@ fn spreads_that_swing_are_kept_valid_by_the_valid_fit() {
         let s = if (k + l) % 3 == 0 { 1.0 } else { 0.0 };
         ([0.0, 0.5 * s, s], [0.0, 0.0, 2.0 * s])
     });
-    let options = SurfaceFitOptions::interpolation([3, 3]);
+    let options = SurfaceFitOptions::interpolation([3, 3]).unwrap();
     let independent = fit_fuzzy_surface(&net, &options, FuzzyFitMode::Independent).unwrap();
     assert!(
         !independent.violations().is_empty(),
@@ -287,7 +296,7 @@ proptest! {
         (net, degree) in random_net(),
         method in prop_oneof![Just(Parametrization::ChordLength), Just(Parametrization::Centripetal), Just(Parametrization::Uniform)],
     ) {
-        let options = SurfaceFitOptions::interpolation(degree).with_parametrization(method);
+        let options = SurfaceFitOptions::interpolation(degree).unwrap().with_parametrization(method);
         let crisp: Vec<Vec<[f64; 3]>> = net.iter().map(|r| r.iter().map(|p| p.layer(Layer::Crisp)).collect()).collect();
         let fit = match fit_surface(&crisp, &options) {
             Ok(f) => f,
@@ -328,8 +337,8 @@ proptest! {
     ) {
         let crisp: Vec<Vec<[f64; 3]>> = net.iter().map(|r| r.iter().map(|p| p.layer(Layer::Crisp)).collect()).collect();
         let shape = [crisp.len(), crisp[0].len()];
-        let a = fit_surface(&crisp, &SurfaceFitOptions::interpolation(degree));
-        let b = fit_surface(&crisp, &SurfaceFitOptions::approximation(degree, shape));
+        let a = fit_surface(&crisp, &SurfaceFitOptions::interpolation(degree).unwrap());
+        let b = fit_surface(&crisp, &SurfaceFitOptions::approximation(degree, shape).unwrap());
         match (a, b) {
             (Ok(a), Ok(b)) => prop_assert_eq!(a, b),
             (Err(a), Err(b)) => prop_assert_eq!(a, b),

@@ -229,11 +229,6 @@ fn what_takes_crisp_weights_only_says_so() {
             .unwrap_err(),
         "a region",
     );
-    says(
-        c.section(1.0, t2spline::Membership::Upper, alpha, None)
-            .unwrap_err(),
-        "a section of a curve",
-    );
     assert!(c
         .length_bracket(t2spline::Membership::Upper, alpha)
         .is_none());
@@ -511,4 +506,119 @@ fn with_crisp_weights_the_envelope_is_the_curves_of_the_cut_ends() {
             assert!((env[axis].right() - r[axis]).abs() < 1e-13);
         }
     }
+}
+
+/// The exact section at `t` (`IntervalTerms::section`, tested on its own).
+fn section_at(
+    c: &FuzzyCurve<2>,
+    m: t2spline::Membership,
+    alpha: Alpha,
+    t: f64,
+    x0: f64,
+) -> Option<[f64; 2]> {
+    let p = c.degree();
+    let span = c.knots().find_span(t);
+    let basis =
+        t2spline::nurbs::basis::try_basis_functions(c.knots().as_slice(), p, span, t).unwrap();
+    let w = c.weight_numbers().unwrap();
+    let (mut ns, mut ws, mut ps) = (Vec::new(), Vec::new(), Vec::new());
+    for (k, &n) in basis.iter().enumerate() {
+        let i = span - p + k;
+        if n == 0.0 {
+            continue;
+        }
+        ns.push(n);
+        ws.push(cut_of(&w[i], m, alpha)?);
+        let [x, y] = c.points()[i].coords();
+        ps.push([cut_of(x, m, alpha)?, cut_of(y, m, alpha)?]);
+    }
+    t2spline::interval_weights::IntervalTerms::try_new(&ns, &ws, &ps)
+        .unwrap()
+        .section(t2spline::Axis::X, x0, t2spline::Axis::Y)
+        .unwrap()
+        .map(|iv| [iv.left(), iv.right()])
+}
+
+#[test]
+fn sections_with_fuzzy_weights_hold_every_parameters_section_within_the_tolerance() {
+    use t2spline::Membership as M;
+    let c = curve();
+    let tol = 1e-6;
+    for (x0, m, a) in [
+        (1.0, M::Upper, 0.0),
+        (2.0, M::Upper, 0.5),
+        (2.0, M::Primary, 0.2),
+        (3.3, M::Lower, 0.3),
+        (0.2, M::Upper, 0.1),
+        (3.9, M::Primary, 0.0),
+    ] {
+        let alpha = Alpha::try_new(a).unwrap();
+        let got = c.section(x0, m, alpha, Some(tol)).unwrap().unwrap();
+        // Brute force: the exact section on a fine grid of parameters, and
+        // finer around the parameters of the least and the largest value
+        // (near where the line first touches a set, an end moves like the
+        // square root of the parameter).
+        let at = |t: f64| section_at(&c, m, alpha, t, x0);
+        let grid: Vec<(f64, [f64; 2])> = (0..=20_000)
+            .filter_map(|k| {
+                let t = f64::from(k) / 20_000.0;
+                at(t).map(|iv| (t, iv))
+            })
+            .collect();
+        let mut exact: Vec<[f64; 2]> = grid.iter().map(|&(_, iv)| iv).collect();
+        for side in [0, 1] {
+            let sign = if side == 0 { 1.0 } else { -1.0 };
+            let Some(&(mut centre, _)) = grid
+                .iter()
+                .min_by(|a, b| (sign * a.1[side]).total_cmp(&(sign * b.1[side])))
+            else {
+                continue;
+            };
+            let mut half = 2.0 / 20_000.0;
+            for _ in 0..5 {
+                let mut best = (f64::INFINITY, centre);
+                for j in 0..=200 {
+                    let t = (centre - half + 2.0 * half * f64::from(j) / 200.0).clamp(0.0, 1.0);
+                    if let Some(iv) = at(t) {
+                        exact.push(iv);
+                        if sign * iv[side] < best.0 {
+                            best = (sign * iv[side], t);
+                        }
+                    }
+                }
+                centre = best.1;
+                half /= 20.0;
+            }
+        }
+        assert!(!exact.is_empty(), "{x0} {m:?}");
+        // Every parameter's section lies in the answer.
+        for iv in &exact {
+            assert!(
+                got.iter()
+                    .any(|g| g[0] <= iv[0] + 1e-12 && iv[1] <= g[1] + 1e-12),
+                "{x0} {m:?}: {iv:?} not in {got:?}"
+            );
+        }
+        // Every end of the answer is within the tolerance (and the grid's
+        // error) of a value some parameter attains.
+        let lo = exact.iter().map(|iv| iv[0]).fold(f64::INFINITY, f64::min);
+        let hi = exact
+            .iter()
+            .map(|iv| iv[1])
+            .fold(f64::NEG_INFINITY, f64::max);
+        assert!(
+            got.first().unwrap()[0] >= lo - tol - 1e-7,
+            "{x0} {m:?}: {got:?} vs {lo}"
+        );
+        assert!(
+            got.last().unwrap()[1] <= hi + tol + 1e-7,
+            "{x0} {m:?}: {got:?} vs {hi}"
+        );
+    }
+    // Above every lower height: no lower cut.
+    assert_eq!(
+        c.section(2.0, M::Lower, Alpha::try_new(0.8).unwrap(), Some(tol))
+            .unwrap(),
+        None
+    );
 }

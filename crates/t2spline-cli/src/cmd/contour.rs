@@ -5,12 +5,12 @@
 
 use std::path::Path;
 
-use t2spline::job::Model;
 use t2spline::Error;
 use t2spline_io::set::write_contour_geojson;
 
 use super::envelope::{invalid, parse_extent, parse_grid, plan_grid};
 use super::levels::{Levels, MAX_LEVELS};
+use super::model_kind::ModelKind;
 use crate::clash::Claims;
 use crate::cli::ContourArgs;
 use crate::output::{is_stdio, read_job, Outputs};
@@ -29,7 +29,7 @@ pub fn contour(args: &ContourArgs) -> anyhow::Result<()> {
     }
     let plan = plan(args)?;
     let job = read_job(&args.job)?;
-    let Model::Surface(surface) = &job.model else {
+    let Some(surface) = ModelKind::of(&job.model)?.surface() else {
         return Err(crate::output::unsuited(
             &args.job,
             "contours are traced on surfaces (a net of control points); this job is a curve: ask `t2spline region` or `t2spline section`",

@@ -5,12 +5,12 @@
 
 use std::path::Path;
 
-use t2spline::job::Model;
 use t2spline::set::{PlanGrid, MAX_ENVELOPE_VALUES};
 use t2spline::{Alpha, Error};
 use t2spline_io::set::{write_envelope_csv, write_envelope_geotiff, write_envelope_parquet, Crs};
 
 use super::levels::{uniform, MAX_LEVELS};
+use super::model_kind::ModelKind;
 use super::prepare::OptionError;
 use crate::clash::Claims;
 use crate::cli::EnvelopeArgs;
@@ -39,7 +39,7 @@ pub fn envelope(args: &EnvelopeArgs) -> anyhow::Result<()> {
     }
     let plan = plan(args)?;
     let job = read_job(&args.job)?;
-    let Model::Surface(surface) = &job.model else {
+    let Some(surface) = ModelKind::of(&job.model)?.surface() else {
         return Err(crate::output::unsuited(
             &args.job,
             "envelopes are taken of surfaces (a net of control points); this job is a curve: ask `t2spline section` or `t2spline region`",

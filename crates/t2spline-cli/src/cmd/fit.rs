@@ -11,7 +11,7 @@ use t2spline::fit::{
 use t2spline::{Alpha, Error, Layer};
 use t2spline_io::{is_readings, parse_data, parse_job, printable, to_json_pretty, FitData};
 
-use super::prepare::OptionError;
+use super::prepare::{about_option, OptionError};
 use crate::clash::Claims;
 use crate::cli::FitArgs;
 use crate::output::{job_name, read_input, shown, Outputs};
@@ -128,11 +128,9 @@ impl Plan {
                         )?;
                     }
                 }
-                let surface = SurfaceFitOptions {
-                    degree,
-                    parametrization,
-                    control_points: counts,
-                };
+                let surface = SurfaceFitOptions::new(degree, counts)
+                    .map_err(about_option)?
+                    .with_parametrization(parametrization);
                 (counts.map(|[m, _]| m), Some(surface))
             }
             _ => {
@@ -170,13 +168,16 @@ impl Plan {
                 (m, None)
             }
         };
+        let options = FitOptions::new(data.degree, control_points)
+            .map_err(about_option)?
+            .with_parametrization(parametrization);
+        let options = if args.closed {
+            options.closed()
+        } else {
+            options
+        };
         Ok(Plan {
-            options: FitOptions {
-                degree: data.degree,
-                parametrization,
-                control_points,
-                closed: args.closed,
-            },
+            options,
             surface,
             data,
             mode,
@@ -200,7 +201,7 @@ pub fn fit(args: FitArgs) -> anyhow::Result<()> {
         }
     }
     let job = match outcome.model {
-        Ok(model) => plan.data.job_json(&model, plan.options.closed),
+        Ok(model) => plan.data.job_json(&model, plan.options.is_closed()),
         Err(violations) => {
             return Err(plan
                 .data
@@ -230,7 +231,7 @@ fn report(plan: &Plan, s: &FitSummary) -> Vec<String> {
     // interpolates them: its knots are those of interpolation.
     let interpolates = match s.closed {
         Some(l) => s.control_points == l.data,
-        None => plan.options.control_points.is_none(),
+        None => plan.options.control_points().is_none(),
     };
     let method = match (interpolates, s.closed) {
         (true, None) => "interpolation",
@@ -245,9 +246,9 @@ fn report(plan: &Plan, s: &FitSummary) -> Vec<String> {
             printable(&plan.data.source),
             net.data[0],
             net.data[1],
-            o.degree[0],
-            o.degree[1],
-            o.parametrization,
+            o.degree()[0],
+            o.degree()[1],
+            o.parametrization(),
             net.control[0],
             net.control[1],
             s.condition,
@@ -262,8 +263,8 @@ fn report(plan: &Plan, s: &FitSummary) -> Vec<String> {
                 "{}: a closed loop of {} data points{repeat}, degree {}, {} parameters with the closing chord: {method}, periodic knots, {} control points and the first {} again at the end, condition number {:.1e}",
                 printable(&plan.data.source),
                 l.data,
-                plan.options.degree,
-                plan.options.parametrization,
+                plan.options.degree(),
+                plan.options.parametrization(),
                 s.control_points,
                 l.wrap,
                 s.condition,
@@ -273,8 +274,8 @@ fn report(plan: &Plan, s: &FitSummary) -> Vec<String> {
             "{}: {} data points, degree {}, {} parameters: {method}, {} control points, condition number {:.1e}",
             printable(&plan.data.source),
             s.data_points,
-            plan.options.degree,
-            plan.options.parametrization,
+            plan.options.degree(),
+            plan.options.parametrization(),
             s.control_points,
             s.condition,
         )),

@@ -35,15 +35,14 @@ fn options(args: &ReadingsArgs, alpha: Option<f64>) -> anyhow::Result<ReadingsOp
     };
     let (degree, degree_v) = pair(&args.degree, "--degree")?;
     let (order, order_v) = pair(&args.order, "--order")?;
-    Ok(ReadingsOptions {
-        tolerance: args.tolerance,
-        lower_height: args.lower_height,
-        degree,
-        order,
-        degree_v,
-        order_v,
+    ReadingsOptions::new(
+        args.tolerance,
+        args.lower_height,
+        [degree, degree_v],
+        [order, order_v],
         alpha,
-    })
+    )
+    .map_err(spelled)
 }
 
 /// The error of the I/O crate with the option it names spelled as a flag.

@@ -6,17 +6,17 @@
 //! of crisp plan (§14), and with `--against` the cut and fill between it
 //! and a second surface of the same plan map, as intervals at each level.
 
-use t2spline::job::Model;
 use t2spline::measure::{
     MeasureOptions, Measures, SurfaceMeasureOptions, DEFAULT_MEASURE_LEVELS, MAX_MEASURE_LEVELS,
 };
 use t2spline::{Alpha, Error, FuzzyCurve, FuzzySurface};
 
 use super::levels::Levels;
+use super::model_kind::ModelKind;
 use super::prepare::{about_option, OptionError};
 use crate::clash::Claims;
 use crate::cli::MeasureArgs;
-use crate::output::{is_stdio, read_job, shown, unsuited, Outputs};
+use crate::output::{is_stdio, read_job, shown, Outputs};
 
 pub fn measure(args: &MeasureArgs) -> anyhow::Result<()> {
     if let Some(out) = &args.output {
@@ -40,10 +40,10 @@ pub fn measure(args: &MeasureArgs) -> anyhow::Result<()> {
             .map_err(about_option)
     };
     let mut bytes = Vec::new();
-    match &job.model {
-        Model::Planar(c) => write(&mut bytes, &run(c, &curve(true)?, args)?)?,
-        Model::Spatial(c) => write(&mut bytes, &run(c, &curve(false)?, args)?)?,
-        Model::Surface(s) => {
+    match ModelKind::of(&job.model)? {
+        ModelKind::PlaneCurve(c) => write(&mut bytes, &run(c, &curve(true)?, args)?)?,
+        ModelKind::SpaceCurve(c) => write(&mut bytes, &run(c, &curve(false)?, args)?)?,
+        ModelKind::Surface(s) => {
             if args.at.is_some() {
                 return Err(invalid(
                     "--at",
@@ -75,7 +75,6 @@ pub fn measure(args: &MeasureArgs) -> anyhow::Result<()> {
             t2spline_io::check_finite(&measures)?;
             t2spline_io::write_json_pretty(&mut bytes, &measures)?;
         }
-        _ => return Err(unsuited(&args.job, "this kind of job is not measured")),
     }
     let mut out = Outputs::default();
     out.to(args.output.as_deref(), bytes);
@@ -85,13 +84,14 @@ pub fn measure(args: &MeasureArgs) -> anyhow::Result<()> {
 /// The surface of the job `--against` names; a job of another kind is
 /// refused, naming the file.
 fn surface_job(path: &std::path::Path) -> anyhow::Result<FuzzySurface<3>> {
-    match read_job(path)?.model {
-        Model::Surface(s) => Ok(s),
-        _ => Err(anyhow::anyhow!(
+    let job = read_job(path)?;
+    let surface = ModelKind::of(&job.model).ok().and_then(ModelKind::surface);
+    surface.cloned().ok_or_else(|| {
+        anyhow::anyhow!(
             "--against {}: not a surface job; cut and fill are measured between two surfaces",
             shown(path)
-        )),
-    }
+        )
+    })
 }
 
 fn write(bytes: &mut Vec<u8>, measures: &Measures) -> anyhow::Result<()> {

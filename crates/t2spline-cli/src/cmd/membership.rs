@@ -3,11 +3,12 @@
 
 use std::path::Path;
 
-use t2spline::job::{Job, Model, ModelVisitor};
+use t2spline::job::{Job, ModelVisitor};
 use t2spline::set::Grades;
 use t2spline::{FuzzyCurve, FuzzySurface};
 use t2spline_io::set::{parse_points, write_membership_csv, QueryPoints};
 
+use super::model_kind::ModelKind;
 use super::prepare::OptionError;
 use crate::clash::Claims;
 use crate::cli::MembershipArgs;
@@ -39,12 +40,8 @@ pub fn membership(args: &MembershipArgs) -> anyhow::Result<()> {
 /// # Errors
 /// Points of another dimension than the model's.
 pub fn grades_csv(job: &Job, points: &QueryPoints, points_file: &Path) -> anyhow::Result<Vec<u8>> {
-    let (model_dimension, what) = match &job.model {
-        Model::Planar(_) => (2, "a plane curve"),
-        Model::Spatial(_) => (3, "a space curve"),
-        Model::Surface(_) => (3, "a surface"),
-        _ => (0, "of a kind this command does not know"),
-    };
+    let kind = ModelKind::of(&job.model)?;
+    let (model_dimension, what) = (kind.dimension(), kind.name());
     if points.dimension() != model_dimension {
         let header = if model_dimension == 2 { "x,y" } else { "x,y,z" };
         return Err(OptionError {

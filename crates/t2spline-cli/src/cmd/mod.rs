@@ -11,6 +11,7 @@ mod fuzzify;
 mod levels;
 mod measure;
 pub mod membership;
+mod model_kind;
 mod plot;
 pub mod prepare;
 pub mod region;

@@ -7,6 +7,7 @@ use t2spline_plot::{
     all_figures, render_files, terrain_left_out, Aspect, FigureOptions, Format, NumberChoice,
 };
 
+use super::model_kind::ModelKind;
 use super::prepare::{note_alpha, prepare, reduction_overrides, OptionError};
 use crate::clash::Claims;
 use crate::cli::{AspectArg, AxisArg, FigureArgs, FormatArg, PlotArgs, PointArg};
@@ -45,7 +46,7 @@ fn station(x0: Option<f64>, job: &Job) -> Result<Option<f64>, OptionError> {
     };
     let message = if !x0.is_finite() {
         format!("the station must be a finite x, got {x0}")
-    } else if !matches!(job.model, t2spline::job::Model::Planar(_)) {
+    } else if !ModelKind::of(&job.model)?.is_plane_curve() {
         "the section at a station is drawn for plane curves (x, y) only".to_owned()
     } else {
         return Ok(Some(x0));

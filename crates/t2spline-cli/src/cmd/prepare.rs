@@ -32,6 +32,8 @@ pub fn option_name(setting: Setting) -> &'static str {
         Setting::At => "--at",
         Setting::Order => "--order",
         Setting::Datum => "--datum",
+        Setting::Degree => "--degree",
+        Setting::ControlPoints => "--control-points",
     }
 }
 

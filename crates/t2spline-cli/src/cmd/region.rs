@@ -2,12 +2,13 @@
 //! [--tolerance T]`: the region a fuzzy curve can occupy at a level (the
 //! job's alpha when neither is given), as GeoJSON.
 
-use t2spline::job::{Job, Model};
+use t2spline::job::Job;
 use t2spline::set::{Plane, Region, MEMBERSHIPS};
 use t2spline::{Alpha, FuzzyCurve, Membership};
 use t2spline_io::set::{write_region_geojson, RegionFeature};
 
 use super::levels::{Levels, MAX_LEVELS};
+use super::model_kind::ModelKind;
 use super::prepare::OptionError;
 use crate::clash::Claims;
 use crate::cli::RegionArgs;
@@ -22,7 +23,7 @@ pub fn region(args: &RegionArgs) -> anyhow::Result<()> {
     }
     let levels = Levels::from_arg(&args.levels, None, MAX_LEVELS)?;
     let job = read_job(&args.job)?;
-    if matches!(job.model, Model::Surface(_)) {
+    if ModelKind::of(&job.model)?.surface().is_some() {
         return Err(crate::output::unsuited(&args.job, NOT_A_CURVE));
     }
     let levels = levels.resolve(&job)?;
@@ -40,12 +41,13 @@ pub fn region(args: &RegionArgs) -> anyhow::Result<()> {
 /// # Errors
 /// A surface (regions are drawn for curves), a `tolerance` out of its range.
 pub fn geojson(job: &Job, levels: &[Alpha], tolerance: Option<f64>) -> anyhow::Result<Vec<u8>> {
+    let kind = ModelKind::of(&job.model)?;
     let mut regions: Vec<(Alpha, Membership, Plane, Region)> = Vec::new();
     for &alpha in levels {
-        let at_level = match &job.model {
-            Model::Planar(c) => self::regions(c, &[Plane::Xy], alpha, tolerance)?,
-            Model::Spatial(c) => self::regions(c, &Plane::ALL, alpha, tolerance)?,
-            _ => {
+        let at_level = match kind {
+            ModelKind::PlaneCurve(c) => self::regions(c, &[Plane::Xy], alpha, tolerance)?,
+            ModelKind::SpaceCurve(c) => self::regions(c, &Plane::ALL, alpha, tolerance)?,
+            ModelKind::Surface(_) => {
                 return Err(OptionError {
                     option: "JOB",
                     message: NOT_A_CURVE.into(),

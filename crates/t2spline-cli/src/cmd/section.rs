@@ -2,10 +2,10 @@
 //! [-o OUT.json]`:
 //! the fuzzy value at a station.
 
-use t2spline::job::Model;
 use t2spline_io::set::{write_section_json, Station};
 
 use super::levels::{Levels, MAX_LEVELS};
+use super::model_kind::ModelKind;
 use super::prepare::OptionError;
 use crate::clash::Claims;
 use crate::cli::SectionArgs;
@@ -31,12 +31,12 @@ pub fn section(args: &SectionArgs) -> anyhow::Result<()> {
         }
         other => other.into(),
     };
-    let (station, sections) = match (&job.model, args.x, at) {
-        (Model::Planar(c), Some(x0), None) => (
+    let (station, sections) = match (ModelKind::of(&job.model)?, args.x, at) {
+        (ModelKind::PlaneCurve(c), Some(x0), None) => (
             Station::X(x0),
             c.sections(x0, &levels, args.tolerance).map_err(tolerance_error)?,
         ),
-        (Model::Surface(s), None, Some([x0, y0])) => {
+        (ModelKind::Surface(s), None, Some([x0, y0])) => {
             if args.tolerance.is_some() {
                 return Err(OptionError {
                     option: "--tolerance",
@@ -46,9 +46,9 @@ pub fn section(args: &SectionArgs) -> anyhow::Result<()> {
             }
             (Station::Xy(x0, y0), s.sections([x0, y0], &levels)?)
         }
-        (Model::Planar(_), _, _) => return Err(missing("--x", "the job is a plane curve: give its station as --x X0")),
-        (Model::Surface(_), _, _) => return Err(missing("--at", "the job is a surface: give its station as --at X0,Y0")),
-        _ => {
+        (ModelKind::PlaneCurve(_), _, _) => return Err(missing("--x", "the job is a plane curve: give its station as --x X0")),
+        (ModelKind::Surface(_), _, _) => return Err(missing("--at", "the job is a surface: give its station as --at X0,Y0")),
+        (ModelKind::SpaceCurve(_), _, _) => {
             return Err(crate::output::unsuited(
                 &args.job,
                 "sections are taken of plane curves (--x) and surfaces (--at); for a space curve, ask `t2spline region` for its projections",

@@ -39,7 +39,7 @@ pub(super) fn render(geometry: &Geometry, meta: &CadMeta) -> String {
         w.var("$DWGCODEPAGE", 3, "ANSI_1252");
         w.point_var("$EXTMIN", lo);
         w.point_var("$EXTMAX", hi);
-        let (insunits, measurement) = match meta.units {
+        let (insunits, measurement) = match meta.units() {
             LengthUnit::Inch => ("1", "0"),
             LengthUnit::Foot => ("2", "0"),
             LengthUnit::Millimetre => ("4", "1"),

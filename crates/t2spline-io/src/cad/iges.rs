@@ -34,7 +34,7 @@ pub(super) fn render(geometry: &Geometry, meta: &CadMeta) -> String {
     let mut start = String::from(
         "t2spline: a run's curves or surfaces as exact rational B-splines (entities 126 and 128).",
     );
-    if let Some(d) = &meta.description {
+    if let Some(d) = meta.description() {
         start.push(' ');
         start.push_str(d);
     }
@@ -178,13 +178,13 @@ fn unit_name(units: LengthUnit) -> &'static str {
 }
 
 fn global(meta: &CadMeta) -> String {
-    let date = meta.timestamp.replace(['-', ':'], "").replace('T', ".");
+    let date = meta.timestamp().replace(['-', ':'], "").replace('T', ".");
     let version = concat!("t2spline ", env!("CARGO_PKG_VERSION"));
     [
         hollerith(","),
         hollerith(";"),
         hollerith("t2spline"),
-        hollerith(&meta.name),
+        hollerith(meta.name()),
         hollerith(version),
         hollerith(version),
         "32".into(),
@@ -194,8 +194,8 @@ fn global(meta: &CadMeta) -> String {
         "17".into(),
         hollerith("t2spline"),
         "1.0".into(),
-        unit_flag(meta.units).into(),
-        hollerith(unit_name(meta.units)),
+        unit_flag(meta.units()).into(),
+        hollerith(unit_name(meta.units())),
         "1".into(),
         "1.0".into(),
         hollerith(&date),
@@ -390,12 +390,15 @@ mod tests {
         let mut s = Sections::default();
         s.start.push("x".into());
         s.global = pack(
-            &global(&CadMeta {
-                name: "a.igs".into(),
-                description: None,
-                timestamp: "2026-01-02T03:04:05".into(),
-                units: Default::default(),
-            }),
+            &global(
+                &CadMeta::new(
+                    "a.igs".into(),
+                    None,
+                    "2026-01-02T03:04:05",
+                    Default::default(),
+                )
+                .unwrap(),
+            ),
             72,
         );
         s.entity(406, 15, "406,1,5Hcrisp;", "NAME", 0, "00010200");

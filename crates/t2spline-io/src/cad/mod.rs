@@ -138,7 +138,7 @@ impl fmt::Display for CadFormat {
 /// let text = std::fs::read_to_string("../../examples/paper-alg-1-1.json")?;
 /// let job = t2spline_io::parse_job(&text, "paper-alg-1-1.json")?;
 /// let geometry = job.geometry(&job.settings(&Overrides::default())?)?;
-/// let meta = CadMeta { name: "out.obj".into(), description: None, timestamp: "2026-01-01T00:00:00".into(), units: Default::default() };
+/// let meta = CadMeta::new("out.obj".into(), None, "2026-01-01T00:00:00", Default::default())?;
 /// let obj = render_cad(CadFormat::Obj, &geometry, &meta, "paper-alg-1-1.json")?;
 /// assert!(obj.contains("g defuzzified\n") && obj.contains("cstype rat bspline\n"));
 /// # Ok::<(), Box<dyn std::error::Error>>(())

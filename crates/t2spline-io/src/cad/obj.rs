@@ -27,7 +27,7 @@ pub(super) fn render(geometry: &Geometry, meta: &CadMeta) -> String {
     let r = |x: f64| real(x, 'e');
     let mut out = String::new();
     out.push_str("# t2spline: a run's curves or surfaces as exact rational B-splines\n");
-    if let Some(d) = &meta.description {
+    if let Some(d) = meta.description() {
         for line in d.lines().flat_map(|l| l.split('\r')) {
             let _ = writeln!(out, "# {}", comment_text(line));
         }
@@ -35,8 +35,8 @@ pub(super) fn render(geometry: &Geometry, meta: &CadMeta) -> String {
     let _ = writeln!(
         out,
         "# written {} UTC; units: {} (OBJ itself records none)",
-        meta.timestamp,
-        meta.units.name()
+        meta.timestamp(),
+        meta.units().name()
     );
     let mut next = 1;
     for curve in &geometry.curves {

@@ -39,8 +39,8 @@ pub(super) fn render(geometry: &Geometry, meta: &CadMeta) -> String {
         "APPLICATION_PROTOCOL_DEFINITION('international standard','automotive_design',2000,{context})"
     ));
     let product_context = data.add(&format!("PRODUCT_CONTEXT('',{context},'mechanical')"));
-    let title = string(&meta.name);
-    let description = string(meta.description.as_deref().unwrap_or(""));
+    let title = string(meta.name());
+    let description = string(meta.description().unwrap_or(""));
     let product = data.add(&format!(
         "PRODUCT({title},{title},{description},({product_context}))"
     ));
@@ -55,7 +55,7 @@ pub(super) fn render(geometry: &Geometry, meta: &CadMeta) -> String {
         "PRODUCT_DEFINITION('design','',{formation},{definition_context})"
     ));
     let shape = data.add(&format!("PRODUCT_DEFINITION_SHAPE('','',{definition})"));
-    let length = length_unit(&mut data, meta.units);
+    let length = length_unit(&mut data, meta.units());
     let angle = data.add("(NAMED_UNIT(*) PLANE_ANGLE_UNIT() SI_UNIT($,.RADIAN.))");
     let solid = data.add("(NAMED_UNIT(*) SI_UNIT($,.STERADIAN.) SOLID_ANGLE_UNIT())");
     let uncertainty = data.add(&format!(
@@ -118,7 +118,7 @@ pub(super) fn render(geometry: &Geometry, meta: &CadMeta) -> String {
     let _ = writeln!(
         out,
         "FILE_NAME({title},'{}',(''),(''),{version},{version},'');",
-        meta.timestamp
+        meta.timestamp()
     );
     out.push_str("FILE_SCHEMA(('AUTOMOTIVE_DESIGN { 1 0 10303 214 1 1 1 1 }'));\nENDSEC;\nDATA;\n");
     out.push_str(&data.text);

@@ -29,9 +29,9 @@ impl ReadingsFile {
             self.source,
             self.stations.len(),
             self.readings.readings(),
-            Num(rule.lower_height.get()),
+            Num(rule.lower_height().get()),
             // `-0` is 0 (adding 0 turns -0 into +0).
-            Num(rule.tolerance + 0.0),
+            Num(rule.tolerance() + 0.0),
         );
         FitData {
             source: self.source.clone(),
@@ -41,7 +41,7 @@ impl ReadingsFile {
             degree_v: None,
             alpha,
             type_reduction: None,
-            lower_height: Some(rule.lower_height.get()),
+            lower_height: Some(rule.lower_height().get()),
             samples: None,
             points,
         }

@@ -439,7 +439,7 @@ impl NetReadings {
                 let crisp = centre.and_then(|c| c.get(axis.index()));
                 let number = match crisp {
                     Some(&c) => {
-                        Nt2Number::try_new(c, [c, c], [c, c], [c, c], rule.lower_height.get())
+                        Nt2Number::try_new(c, [c, c], [c, c], [c, c], rule.lower_height().get())
                     }
                     None => {
                         column.clear();
@@ -514,9 +514,9 @@ impl NetReadings {
             "Fuzzified by t2spline from {}: a net of {rows} × {columns} stations ({what}points[i][j]: row i along u, column j along v), {} readings. {coordinates}: crisp = median, lower = [25th, 75th percentile] (lower_height {}), primary = [10th, 90th percentile], upper = [min - T, max + T] with T = {} (percentiles by linear interpolation, type 7).",
             self.source,
             self.readings(),
-            Num(rule.lower_height.get()),
+            Num(rule.lower_height().get()),
             // `-0` is 0 (adding 0 turns -0 into +0).
-            Num(rule.tolerance + 0.0),
+            Num(rule.tolerance() + 0.0),
         );
         let [p, q] = degrees;
         FitData {
@@ -527,7 +527,7 @@ impl NetReadings {
             degree_v: Some(q),
             alpha,
             type_reduction: None,
-            lower_height: Some(rule.lower_height.get()),
+            lower_height: Some(rule.lower_height().get()),
             samples: None,
             points: FuzzyData::Net(points),
         }

@@ -100,7 +100,7 @@ pub struct FigureOptions {
 #[must_use]
 pub fn set_figures_left_out(job: &Job) -> Option<&'static str> {
     job.model.has_fuzzy_weights().then_some(
-        "the set view (regions, membership, sections, measures) of a curve with fuzzy weights is not available yet",
+        "regions, membership maps and measures of a curve with fuzzy weights are not available yet (`t2spline membership` and `t2spline section` take them)",
     )
 }
 

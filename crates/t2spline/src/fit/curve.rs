@@ -2,7 +2,7 @@
 //! NURBS Book §9.2.1, Algorithm A9.1) and least squares with the end points
 //! interpolated (§9.4.1).
 
-use crate::error::Error;
+use crate::error::{Error, Setting};
 use crate::fit::knots::{
     approximation_knots, averaging_knots, check_counts, check_loop_counts, periodic_knots,
 };
@@ -12,57 +12,76 @@ use crate::nurbs::{KnotVector, NurbsCurve};
 
 /// What to fit: the degree, how the data get their parameters, and whether
 /// the curve interpolates the data or approximates them with fewer control
-/// points.
+/// points; checked once, when made ([`FitOptions::new`]): the fields are
+/// private, so options that exist keep the rules that need no data. What
+/// needs the data (enough data points for the degree and the control
+/// points) is checked by the fit.
 ///
 /// # Examples
 /// ```
 /// # use t2spline::fit::{FitOptions, Parametrization};
-/// let o = FitOptions::interpolation(3).with_parametrization(Parametrization::Centripetal);
-/// assert_eq!((o.degree, o.control_points), (3, None));
-/// assert_eq!(FitOptions::approximation(2, 7).control_points, Some(7));
+/// let o = FitOptions::interpolation(3)?.with_parametrization(Parametrization::Centripetal);
+/// assert_eq!((o.degree(), o.control_points()), (3, None));
+/// assert_eq!(FitOptions::approximation(2, 7)?.control_points(), Some(7));
+/// assert!(FitOptions::approximation(2, 2).is_err()); // fewer than degree + 1
+/// # Ok::<(), t2spline::Error>(())
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct FitOptions {
-    /// The degree `p ≥ 1` of the curve.
-    pub degree: usize,
-    /// How the data points get their parameters.
-    pub parametrization: Parametrization,
-    /// `None`: interpolate, one control point per data point (§9.2.1).
-    /// `Some(n)`: least squares with `n` control points, `p + 1 ≤ n ≤` the
-    /// number of data points, the end points interpolated (§9.4.1).
-    /// For a closed fit, `n` distinct control points, `p + 1 ≤ n ≤` the
-    /// number of distinct data points, and no end points.
-    pub control_points: Option<usize>,
-    /// Whether the data are a loop and the curve closed: periodic knots
-    /// ([`periodic_knots`](crate::fit::periodic_knots)) on the loop
-    /// parameters ([`Parametrization::loop_parameters`]), the last `p`
-    /// control points repeating the first `p`, so that the curve is
-    /// `C^{p−1}` where it closes. A last data point whose crisp values equal
-    /// the first's (within [`CLOSURE_TOLERANCE`](crate::measure::CLOSURE_TOLERANCE)
-    /// of the data's size) is the first point again, not another.
-    pub closed: bool,
+    degree: usize,
+    parametrization: Parametrization,
+    control_points: Option<usize>,
+    closed: bool,
 }
 
 impl FitOptions {
-    /// Interpolation of degree `degree`, chord-length parameters.
-    #[must_use]
-    pub fn interpolation(degree: usize) -> Self {
-        FitOptions {
+    /// A fit of degree `degree`, chord-length parameters, open: with
+    /// `control_points` `None`, interpolation, one control point per data
+    /// point (§9.2.1); with `Some(n)`, least squares with `n` control points
+    /// (§9.4.1), at most the number of data points (checked by the fit).
+    ///
+    /// # Errors
+    /// [`Error::Setting`]: [`Setting::Degree`] for degree 0 (a
+    /// piecewise-constant curve does not pass through its data);
+    /// [`Setting::ControlPoints`] for fewer than `degree + 1` control points.
+    pub fn new(degree: usize, control_points: Option<usize>) -> Result<Self, Error> {
+        if degree == 0 {
+            return Err(Error::Setting {
+                setting: Setting::Degree,
+                message:
+                    "0 is outside 1 ..: a piecewise-constant curve does not pass through its data"
+                        .into(),
+            });
+        }
+        if let Some(n) = control_points.filter(|&n| n <= degree) {
+            return Err(Error::Setting {
+                setting: Setting::ControlPoints,
+                message: format!("{n} is fewer than degree + 1 (the degree is {degree})"),
+            });
+        }
+        Ok(FitOptions {
             degree,
             parametrization: Parametrization::ChordLength,
-            control_points: None,
+            control_points,
             closed: false,
-        }
+        })
     }
 
-    /// Least squares of degree `degree` with `control_points` control points,
-    /// chord-length parameters.
-    #[must_use]
-    pub fn approximation(degree: usize, control_points: usize) -> Self {
-        FitOptions {
-            control_points: Some(control_points),
-            ..FitOptions::interpolation(degree)
-        }
+    /// Interpolation of degree `degree` ([`FitOptions::new`] with no count).
+    ///
+    /// # Errors
+    /// As [`FitOptions::new`].
+    pub fn interpolation(degree: usize) -> Result<Self, Error> {
+        FitOptions::new(degree, None)
+    }
+
+    /// Least squares of degree `degree` with `control_points` control points
+    /// ([`FitOptions::new`]).
+    ///
+    /// # Errors
+    /// As [`FitOptions::new`].
+    pub fn approximation(degree: usize, control_points: usize) -> Result<Self, Error> {
+        FitOptions::new(degree, Some(control_points))
     }
 
     /// The same options with another parametrization.
@@ -74,8 +93,42 @@ impl FitOptions {
         }
     }
 
-    /// The same options for a closed curve through a loop of data points
+    /// The degree `p ≥ 1` of the curve.
+    #[must_use]
+    pub fn degree(&self) -> usize {
+        self.degree
+    }
+
+    /// How the data points get their parameters.
+    #[must_use]
+    pub fn parametrization(&self) -> Parametrization {
+        self.parametrization
+    }
+
+    /// `None`: interpolate, one control point per data point (§9.2.1).
+    /// `Some(n)`: least squares with `n ≥ p + 1` control points, at most the
+    /// number of data points, the end points interpolated (§9.4.1). For a
+    /// closed fit, `n` distinct control points, at most the number of
+    /// distinct data points, and no end points.
+    #[must_use]
+    pub fn control_points(&self) -> Option<usize> {
+        self.control_points
+    }
+
+    /// Whether the data are a loop and the curve closed
     /// ([`FitOptions::closed`]).
+    #[must_use]
+    pub fn is_closed(&self) -> bool {
+        self.closed
+    }
+
+    /// The same options for a closed curve through a loop of data points:
+    /// periodic knots ([`periodic_knots`](crate::fit::periodic_knots)) on
+    /// the loop parameters ([`Parametrization::loop_parameters`]), the last
+    /// `p` control points repeating the first `p`, so that the curve is
+    /// `C^{p−1}` where it closes. A last data point whose crisp values equal
+    /// the first's (within [`CLOSURE_TOLERANCE`](crate::measure::CLOSURE_TOLERANCE)
+    /// of the data's size) is the first point again, not another.
     ///
     /// # Examples
     /// ```
@@ -84,7 +137,7 @@ impl FitOptions {
     /// let q: Vec<[f64; 2]> = (0..8)
     ///     .map(|k| { let a = f64::from(k) * std::f64::consts::FRAC_PI_4; [a.cos(), a.sin()] })
     ///     .collect();
-    /// let fit = fit_curve(&q, &FitOptions::interpolation(3).closed())?;
+    /// let fit = fit_curve(&q, &FitOptions::interpolation(3)?.closed())?;
     /// assert_eq!(fit.curve.control_points().len(), 8 + 3); // the first 3 repeated
     /// let (a, b) = (fit.curve.eval(0.0)?, fit.curve.eval(1.0)?);
     /// assert!((a[0] - b[0]).abs() < 1e-14 && (a[1] - b[1]).abs() < 1e-14);
@@ -191,8 +244,8 @@ pub struct CurveFit<const D: usize> {
 /// estimated and returned.
 ///
 /// # Errors
-/// [`Error::ZeroDegreeFit`]; [`Error::TooFewDataPoints`] for fewer than `p + 1`
-/// points; [`Error::ControlPointCount`]; [`Error::CoincidentDataPoints`] for
+/// [`Error::TooFewDataPoints`] for fewer than `p + 1`
+/// points; [`Error::ControlPointCount`] for more control points than data points; [`Error::CoincidentDataPoints`] for
 /// equal neighbours under chord-length or centripetal parameters;
 /// [`Error::NotFinite`] for a non-finite coordinate; [`Error::SingularFit`] if
 /// the system is singular to working precision; [`Error::IllConditionedFit`]
@@ -205,7 +258,7 @@ pub struct CurveFit<const D: usize> {
 /// ```
 /// # use t2spline::fit::{fit_curve, FitOptions};
 /// let q: Vec<[f64; 2]> = (0..6).map(|i| { let x = i as f64 / 5.0; [x, x * x] }).collect();
-/// let fit = fit_curve(&q, &FitOptions::interpolation(2))?;
+/// let fit = fit_curve(&q, &FitOptions::interpolation(2)?)?;
 /// for (t, qk) in fit.params.iter().zip(&q) {
 ///     let c = fit.curve.eval(*t)?;
 ///     assert!((c[0] - qk[0]).abs() < 1e-14 && (c[1] - qk[1]).abs() < 1e-14);
@@ -218,7 +271,7 @@ pub fn fit_curve<const D: usize>(
 ) -> Result<CurveFit<D>, Error> {
     check_finite(points)?;
     let (params, knots) = options.parameters_and_knots(points)?;
-    let design = System::new(&params, &knots, options.closed)?;
+    let design = System::new(&params, &knots, options.is_closed())?;
     let control = design.fit(&points[..params.len()])?;
     check_within_limit(&control, None)?;
     let weights = vec![1.0; knots.count()];

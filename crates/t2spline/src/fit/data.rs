@@ -151,7 +151,7 @@ impl FuzzyData {
     ///     Nt2Point::new([n(1.0)?, n(2.0)?]),
     ///     Nt2Point::new([n(2.0)?, n(1.0)?]),
     /// ]);
-    /// let outcome = data.fit(&FitOptions::interpolation(2), FuzzyFitMode::Valid)?;
+    /// let outcome = data.fit(&FitOptions::interpolation(2)?, FuzzyFitMode::Valid)?;
     /// assert_eq!(outcome.summary.control_points, 3);
     /// assert_eq!(outcome.model.expect("valid by construction").control_point_count(), 3);
     /// # Ok::<(), t2spline::Error>(())
@@ -165,13 +165,13 @@ impl FuzzyData {
             FuzzyData::Spatial(p) => {
                 outcome(p.len(), &fit_fuzzy(p, options, mode)?, Model::Spatial)
             }
-            FuzzyData::Net(_) if options.closed => Err(Error::ClosedSurfaceFit),
+            FuzzyData::Net(_) if options.is_closed() => Err(Error::ClosedSurfaceFit),
             FuzzyData::Net(_) => self.fit_net(
-                &SurfaceFitOptions {
-                    degree: [options.degree; 2],
-                    parametrization: options.parametrization,
-                    control_points: options.control_points.map(|n| [n; 2]),
-                },
+                &SurfaceFitOptions::new(
+                    [options.degree(); 2],
+                    options.control_points().map(|n| [n; 2]),
+                )?
+                .with_parametrization(options.parametrization()),
                 mode,
             ),
         }
@@ -191,7 +191,7 @@ impl FuzzyData {
     /// let net = (0..3)
     ///     .map(|i| (0..4).map(|j| Ok(Nt2Point::new([n(i as f64)?, n(j as f64)?, n(0.0)?]))).collect())
     ///     .collect::<Result<Vec<Vec<_>>, t2spline::Error>>()?;
-    /// let outcome = FuzzyData::Net(net).fit_net(&SurfaceFitOptions::interpolation([2, 3]), FuzzyFitMode::Valid)?;
+    /// let outcome = FuzzyData::Net(net).fit_net(&SurfaceFitOptions::interpolation([2, 3])?, FuzzyFitMode::Valid)?;
     /// assert_eq!(outcome.summary.net.map(|n| n.control), Some([3, 4]));
     /// assert_eq!(outcome.model.expect("valid by construction").control_point_count(), 12);
     /// # Ok::<(), t2spline::Error>(())
@@ -201,12 +201,11 @@ impl FuzzyData {
         options: &SurfaceFitOptions,
         mode: FuzzyFitMode,
     ) -> Result<FitOutcome, Error> {
-        let curve = FitOptions {
-            degree: options.degree[0],
-            parametrization: options.parametrization,
-            control_points: options.control_points.map(|[n, _]| n),
-            closed: false,
-        };
+        let curve = FitOptions::new(
+            options.degree()[0],
+            options.control_points().map(|[n, _]| n),
+        )?
+        .with_parametrization(options.parametrization());
         match self {
             FuzzyData::Planar(_) | FuzzyData::Spatial(_) => self.fit(&curve, mode),
             FuzzyData::Net(rows) => net_outcome(rows, &fit_fuzzy_surface(rows, options, mode)?),

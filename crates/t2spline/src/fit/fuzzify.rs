@@ -53,14 +53,12 @@ pub const MIN_READINGS: usize = 2;
 pub const DEFAULT_LOWER_HEIGHT: f64 = 0.5;
 
 /// How readings become fuzzy numbers: the instrument's accuracy and the lower
-/// height.
+/// height, checked once, when made ([`FuzzifyRule::try_new`]): the fields
+/// are private.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct FuzzifyRule {
-    /// The accuracy `T` of the instrument: the upper membership function
-    /// reaches `T` beyond the smallest and the largest reading. At least 0.
-    pub tolerance: f64,
-    /// The height `h` of the lower membership function.
-    pub lower_height: Height,
+    tolerance: f64,
+    lower_height: Height,
 }
 
 impl FuzzifyRule {
@@ -94,6 +92,19 @@ impl FuzzifyRule {
             tolerance,
             lower_height,
         })
+    }
+
+    /// The accuracy `T ≥ 0` of the instrument: the upper membership
+    /// function reaches `T` beyond the smallest and the largest reading.
+    #[must_use]
+    pub fn tolerance(&self) -> f64 {
+        self.tolerance
+    }
+
+    /// The height `h` of the lower membership function.
+    #[must_use]
+    pub fn lower_height(&self) -> Height {
+        self.lower_height
     }
 }
 
@@ -187,12 +198,12 @@ pub fn fuzzify_number(readings: &mut [f64], rule: &FuzzifyRule) -> Result<Nt2Num
     Nt2Number::try_new(
         p50,
         [
-            (min - rule.tolerance).min(p10),
-            (max + rule.tolerance).max(p90),
+            (min - rule.tolerance()).min(p10),
+            (max + rule.tolerance()).max(p90),
         ],
         [p10.min(p25), p90.max(p75)],
         [p25, p75],
-        rule.lower_height.get(),
+        rule.lower_height().get(),
     )
 }
 

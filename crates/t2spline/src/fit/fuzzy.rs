@@ -133,7 +133,7 @@ pub struct FuzzyFit<const D: usize> {
 ///     Nt2Point::new([n(2.0, 0.1)?, n(1.0, 0.2)?]),
 ///     Nt2Point::new([n(3.0, 0.1)?, n(3.0, 0.1)?]),
 /// ];
-/// let fit = fit_fuzzy(&data, &FitOptions::interpolation(2), FuzzyFitMode::Valid)?;
+/// let fit = fit_fuzzy(&data, &FitOptions::interpolation(2)?, FuzzyFitMode::Valid)?;
 /// assert!(fit.violations().is_empty());
 /// assert!(fit.deviations()[Layer::Crisp].max < 1e-14);
 /// let curve = fit.to_curve()?; // a valid fuzzy curve, always, in this mode
@@ -154,7 +154,7 @@ pub fn fit_fuzzy<const D: usize>(
     for layer in Layer::ALL {
         layer_data[layer].truncate(params.len());
     }
-    let design = System::new(&params, &knots, options.closed)?;
+    let design = System::new(&params, &knots, options.is_closed())?;
     let crisp = design.fit(&layer_data[Layer::Crisp])?;
     let mut independent = Layers::from_fn(|_| Vec::new());
     for layer in Layer::ALL {
@@ -164,7 +164,11 @@ pub fn fit_fuzzy<const D: usize>(
             design.fit(&layer_data[layer])?
         };
     }
-    let wrap = if options.closed { knots.degree() } else { 0 };
+    let wrap = if options.is_closed() {
+        knots.degree()
+    } else {
+        0
+    };
     let independent_violations = violations(&independent, wrap);
     let control = match mode {
         FuzzyFitMode::Independent => independent,

@@ -68,7 +68,7 @@ pub struct FuzzySurfaceFit {
 ///         .map(|j| Ok(Nt2Point::new([crisp(i as f64)?, crisp(j as f64)?, z((i * j) as f64, 0.1 + 0.05 * j as f64)?])))
 ///         .collect::<Result<Vec<_>, t2spline::Error>>())
 ///     .collect::<Result<Vec<_>, _>>()?;
-/// let fit = fit_fuzzy_surface(&net, &SurfaceFitOptions::interpolation([2, 2]), FuzzyFitMode::Valid)?;
+/// let fit = fit_fuzzy_surface(&net, &SurfaceFitOptions::interpolation([2, 2])?, FuzzyFitMode::Valid)?;
 /// assert!(fit.violations().is_empty());
 /// assert!(fit.deviations()[Layer::Crisp].max < 1e-12);
 /// let surface = fit.to_surface()?;

@@ -27,7 +27,7 @@
 //! ```
 //! use t2spline::fit::{fit_curve, FitOptions, Parametrization};
 //! let q = [[0.0, 0.0], [1.0, 2.0], [3.0, 3.0], [4.0, 1.0], [6.0, 0.0]];
-//! let options = FitOptions::interpolation(3).with_parametrization(Parametrization::Centripetal);
+//! let options = FitOptions::interpolation(3)?.with_parametrization(Parametrization::Centripetal);
 //! let fit = fit_curve(&q, &options)?;
 //! let c = fit.curve.eval(fit.params[2])?;
 //! assert!((c[0] - 3.0).abs() < 1e-12 && (c[1] - 3.0).abs() < 1e-12);

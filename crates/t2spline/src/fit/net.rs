@@ -3,7 +3,7 @@
 //! Book §9.2.5, Algorithm A9.3), and the tensor-product fit as curve fits in
 //! one direction, then the other (Algorithms A9.4 and A9.7).
 
-use crate::error::Error;
+use crate::error::{Error, Setting};
 use crate::fit::design::Design;
 use crate::fit::knots::{approximation_knots, averaging_knots, check_counts};
 use crate::fit::Parametrization;
@@ -14,49 +14,80 @@ use crate::place::Direction;
 /// What to fit to a net of data points `Q[k][l]` (`k` along u, `l` along v):
 /// the degree in each direction, how the rows and columns get their
 /// parameters, and whether the surface interpolates the net or approximates
-/// it with fewer control points.
+/// it with fewer control points; checked once, when made
+/// ([`SurfaceFitOptions::new`]): the fields are private. What needs the net
+/// (enough rows and columns for the degrees and the control points) is
+/// checked by the fit.
 ///
 /// # Examples
 /// ```
 /// # use t2spline::fit::{Parametrization, SurfaceFitOptions};
-/// let o = SurfaceFitOptions::interpolation([3, 2]);
-/// assert_eq!((o.degree, o.control_points, o.parametrization), ([3, 2], None, Parametrization::ChordLength));
-/// assert_eq!(SurfaceFitOptions::approximation([3, 3], [8, 6]).control_points, Some([8, 6]));
+/// let o = SurfaceFitOptions::interpolation([3, 2])?;
+/// assert_eq!((o.degree(), o.control_points(), o.parametrization()), ([3, 2], None, Parametrization::ChordLength));
+/// assert_eq!(SurfaceFitOptions::approximation([3, 3], [8, 6])?.control_points(), Some([8, 6]));
+/// assert!(SurfaceFitOptions::approximation([3, 3], [8, 3]).is_err()); // fewer than q + 1 along v
+/// # Ok::<(), t2spline::Error>(())
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct SurfaceFitOptions {
-    /// The degrees `[p, q] ≥ 1` in u and in v.
-    pub degree: [usize; 2],
-    /// How the rows and columns of the net get their parameters; the
-    /// parameters of a direction are the average over the lines of the net
-    /// in that direction (A9.3).
-    pub parametrization: Parametrization,
-    /// `None`: interpolate, one control point per data point (A9.4).
-    /// `Some([n, m])`: least squares with `n × m` control points, each at
-    /// least its degree + 1 and at most the data along its direction, the
-    /// boundary curves' end points interpolated (A9.7).
-    pub control_points: Option<[usize; 2]>,
+    degree: [usize; 2],
+    parametrization: Parametrization,
+    control_points: Option<[usize; 2]>,
 }
 
 impl SurfaceFitOptions {
-    /// Interpolation of degrees `degree`, chord-length parameters.
-    #[must_use]
-    pub fn interpolation(degree: [usize; 2]) -> Self {
-        SurfaceFitOptions {
+    /// A fit of degrees `degree = [p, q]` in u and in v, chord-length
+    /// parameters: with `control_points` `None`, interpolation, one control
+    /// point per data point (A9.4); with `Some([n, m])`, least squares with
+    /// `n × m` control points, the boundary curves' end points interpolated
+    /// (A9.7), each count at most the data along its direction (checked by
+    /// the fit).
+    ///
+    /// # Errors
+    /// [`Error::Setting`]: [`Setting::Degree`] for degree 0 in a direction;
+    /// [`Setting::ControlPoints`] for fewer control points in a direction
+    /// than its degree + 1.
+    pub fn new(degree: [usize; 2], control_points: Option<[usize; 2]>) -> Result<Self, Error> {
+        for (d, direction) in ["u", "v"].into_iter().enumerate() {
+            if degree[d] == 0 {
+                return Err(Error::Setting {
+                    setting: Setting::Degree,
+                    message: format!("0 along {direction} is outside 1 ..: a piecewise-constant surface does not pass through its data"),
+                });
+            }
+            if let Some(n) = control_points.map(|c| c[d]).filter(|&n| n <= degree[d]) {
+                return Err(Error::Setting {
+                    setting: Setting::ControlPoints,
+                    message: format!(
+                        "{n} along {direction} is fewer than degree + 1 (the degree is {})",
+                        degree[d]
+                    ),
+                });
+            }
+        }
+        Ok(SurfaceFitOptions {
             degree,
             parametrization: Parametrization::ChordLength,
-            control_points: None,
-        }
+            control_points,
+        })
+    }
+
+    /// Interpolation of degrees `degree` ([`SurfaceFitOptions::new`] with no
+    /// counts).
+    ///
+    /// # Errors
+    /// As [`SurfaceFitOptions::new`].
+    pub fn interpolation(degree: [usize; 2]) -> Result<Self, Error> {
+        SurfaceFitOptions::new(degree, None)
     }
 
     /// Least squares of degrees `degree` with `control_points` control
-    /// points in u and in v, chord-length parameters.
-    #[must_use]
-    pub fn approximation(degree: [usize; 2], control_points: [usize; 2]) -> Self {
-        SurfaceFitOptions {
-            control_points: Some(control_points),
-            ..SurfaceFitOptions::interpolation(degree)
-        }
+    /// points in u and in v ([`SurfaceFitOptions::new`]).
+    ///
+    /// # Errors
+    /// As [`SurfaceFitOptions::new`].
+    pub fn approximation(degree: [usize; 2], control_points: [usize; 2]) -> Result<Self, Error> {
+        SurfaceFitOptions::new(degree, Some(control_points))
     }
 
     /// The same options with another parametrization.
@@ -66,6 +97,27 @@ impl SurfaceFitOptions {
             parametrization,
             ..self
         }
+    }
+
+    /// The degrees `[p, q] ≥ 1` in u and in v.
+    #[must_use]
+    pub fn degree(&self) -> [usize; 2] {
+        self.degree
+    }
+
+    /// How the rows and columns of the net get their parameters; the
+    /// parameters of a direction are the average over the lines of the net
+    /// in that direction (A9.3).
+    #[must_use]
+    pub fn parametrization(&self) -> Parametrization {
+        self.parametrization
+    }
+
+    /// `None`: interpolate (A9.4). `Some([n, m])`: least squares with
+    /// `n × m` control points (A9.7).
+    #[must_use]
+    pub fn control_points(&self) -> Option<[usize; 2]> {
+        self.control_points
     }
 
     /// The parameters of the net's rows (`u`) and columns (`v`) and the knot
@@ -323,6 +375,7 @@ mod tests {
     fn averaged_parameters_of_a_flat_grid_are_its_spacing() {
         let net = grid(4, 5, |_, _| 0.0);
         let [(u, _), (v, _)] = SurfaceFitOptions::interpolation([2, 2])
+            .unwrap()
             .parameters_and_knots(&net)
             .unwrap();
         for (k, uk) in u.iter().enumerate() {

@@ -47,7 +47,7 @@ pub struct SurfaceFit {
 /// let net: Vec<Vec<[f64; 3]>> = (0..4)
 ///     .map(|i| (0..5).map(|j| { let (x, y) = (i as f64, j as f64); [x, y, 0.5 * x * y] }).collect())
 ///     .collect();
-/// let fit = fit_surface(&net, &SurfaceFitOptions::interpolation([2, 2]))?;
+/// let fit = fit_surface(&net, &SurfaceFitOptions::interpolation([2, 2])?)?;
 /// let [u, v] = &fit.params;
 /// let p = fit.surface.eval(u[2], v[3])?;
 /// assert!((p[0] - 2.0).abs() < 1e-12 && (p[1] - 3.0).abs() < 1e-12 && (p[2] - 3.0).abs() < 1e-12);

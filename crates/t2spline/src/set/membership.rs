@@ -14,6 +14,7 @@ pub(crate) use crate::set::certify::sup_of;
 use crate::set::certify::{Form, Work};
 use crate::set::cut_lines::{slack, CutLines, MEMBERSHIPS};
 use crate::set::weighted_grades::weighted_grades;
+use crate::set::weighted_terms::Weighted;
 
 /// The grades of one point under the three membership functions, each in
 /// `[0, 1]` (the lower in `[0, h]`), with `lower ≤ primary ≤ upper`.
@@ -146,7 +147,7 @@ impl<const D: usize> FuzzyCurve<D> {
     pub fn membership(&self, p: &[f64; D]) -> Result<Grades, Error> {
         check_point(0, p)?;
         if let Some(weights) = self.weight_numbers() {
-            return Ok(weighted_grades(self, weights, p));
+            return Ok(weighted_grades(&Weighted::new(self, weights), p));
         }
         Ok(Grader::new(self).grades(p))
     }
@@ -174,10 +175,8 @@ impl<const D: usize> FuzzyCurve<D> {
             check_point(i, p)?;
         }
         if let Some(weights) = self.weight_numbers() {
-            return Ok(points
-                .iter()
-                .map(|p| weighted_grades(self, weights, p))
-                .collect());
+            let on = Weighted::new(self, weights);
+            return Ok(points.iter().map(|p| weighted_grades(&on, p)).collect());
         }
         let grader = Grader::new(self);
         let mut work = Work::default();

@@ -42,10 +42,12 @@ pub(crate) mod membership;
 mod polygon;
 pub(crate) mod region;
 mod scan;
-mod section;
+pub(crate) mod section;
 pub(crate) mod surface;
 mod sweep;
 mod weighted_grades;
+mod weighted_section;
+mod weighted_terms;
 
 pub use certify::GRADE_TOLERANCE;
 pub use contour::{

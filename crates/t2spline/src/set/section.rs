@@ -6,6 +6,8 @@ use crate::fuzzy::{Alpha, Membership};
 use crate::pipeline::FuzzyCurve;
 use crate::set::cut_lines::MEMBERSHIPS;
 use crate::set::sweep::{hull_of, PlaneBox, Sweep, TooManyBoxes};
+use crate::set::weighted_section::weighted_section;
+use crate::set::weighted_terms::Weighted;
 
 /// The section of every membership function at one level: the intervals of
 /// the station's value, in increasing order (several where the curve passes
@@ -45,7 +47,11 @@ impl FuzzyCurve<2> {
     /// line, and intervals closer than half the tolerance are joined. A line
     /// within the set view's slack of the region
     /// ([`RELATIVE_SLACK`](crate::set::RELATIVE_SLACK) of the job's extent)
-    /// meets it, as [`FuzzyCurve::membership`] counts such points in.
+    /// meets it, as [`FuzzyCurve::membership`] counts such points in. With
+    /// fuzzy weights the section is the union over `t` of the exact
+    /// sections of the sets at `t`, bounded piece by piece
+    /// (docs/method.md §16): never narrower than the truth, each end
+    /// within `tolerance` of a value some choice attains.
     ///
     /// # Errors
     /// [`Error::QueryPoint`] if `x0` is not finite; [`Error::Tolerance`] as
@@ -71,8 +77,11 @@ impl FuzzyCurve<2> {
         tolerance: Option<f64>,
     ) -> Result<Option<Vec<[f64; 2]>>, Error> {
         crate::set::membership::check_point(0, &[x0])?;
-        self.crisp_weights_for("a section of a curve")?;
         let tolerance = self.checked_tolerance([0, 1], tolerance)?;
+        if let Some(weights) = self.weight_numbers() {
+            let on = Weighted::new(self, weights);
+            return Ok(weighted_section(&on, x0, membership, alpha, tolerance));
+        }
         let sweep = Sweep::of(self, membership, alpha.get(), [0, 1], 0.25 * tolerance).map_err(
             |TooManyBoxes| Error::Tolerance {
                 value: tolerance,
@@ -158,7 +167,7 @@ fn cut(b0: &PlaneBox, b1: &PlaneBox, x0: f64, slack: f64) -> Option<[f64; 2]> {
 }
 
 /// The union of `intervals`, joining those less than `gap` apart.
-fn join(mut intervals: Vec<[f64; 2]>, gap: f64) -> Vec<[f64; 2]> {
+pub(crate) fn join(mut intervals: Vec<[f64; 2]>, gap: f64) -> Vec<[f64; 2]> {
     intervals.sort_by(|a, b| a[0].total_cmp(&b[0]));
     let mut out: Vec<[f64; 2]> = Vec::new();
     for iv in intervals {
