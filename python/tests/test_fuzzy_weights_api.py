@@ -204,6 +204,17 @@ def test_the_envelope_is_the_cli_result_at_every_sample(curve: FuzzyCurve, resul
         curve.envelope(0.5, "upper", 1.5)
 
 
+def test_with_crisp_weights_the_envelope_is_the_box_of_the_layer_curves() -> None:
+    crisp_weights = FuzzyCurve.from_job(ROOT / "examples" / "paper-alg-1-1.json")
+    for t in np.linspace(0.0, 1.0, 9):
+        layers = crisp_weights.eval_layers(t)  # (7, d): upper_left ... upper_right
+        for membership, (left, right) in (("upper", (0, 6)), ("primary", (1, 5))):
+            got = crisp_weights.envelope(t, membership)  # type: ignore[arg-type]
+            assert got is not None
+            np.testing.assert_allclose(got[:, 0], layers[left], rtol=0, atol=1e-12)
+            np.testing.assert_allclose(got[:, 1], layers[right], rtol=0, atol=1e-12)
+
+
 def test_the_membership_is_the_cli_result(cli: Path, tmp_path: Path, curve: FuzzyCurve) -> None:
     rng = np.random.default_rng(7)
     points = np.column_stack([rng.uniform(0.5, 6.5, 24), rng.uniform(0.5, 5.0, 24)])
