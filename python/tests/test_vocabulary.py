@@ -113,6 +113,9 @@ CURVE_ONLY = {
         "crisp_curve": "its surface counterpart is crisp_surface",
         "region": "alpha-regions are polygons of plane curves; a surface has envelopes and contours",
         "membership_grid": "a surface's grades over a plan are its envelope (t2spline envelope)",
+        "envelope": "the range at one parameter over weights and points in their cuts; a surface's "
+        "weights are crisp and its envelope is over a plan (t2spline envelope)",
+        "weight_numbers": "fuzzy weights are read for curves only (docs/method.md §16)",
     },
 }
 SURFACE_ONLY = {

@@ -105,8 +105,11 @@ classes! {
 ///     ``h`` of every number: shape ``(n, d)``, or anything that broadcasts
 ///     to it (one number for all, ``(d,)`` one per coordinate, ``(n, 1)``
 ///     one per point).
-/// weights : array_like, shape (n,), optional
-///     Default: all 1.
+/// weights : array_like, shape (n,), or sequence of FuzzyNumber and float, optional
+///     Default: all 1. Fuzzy weights (docs/method.md §16): one
+///     ``FuzzyNumber`` per point, a plain number beside them a crisp
+///     weight (``FuzzyNumber(w)``); every value of each must be a weight.
+///     ``weight_numbers`` gives them back, ``weights`` their crisp values.
 /// knots : array_like, shape (n + degree + 1,), optional
 ///     Default: clamped uniform.
 /// degree, order : int, optional
@@ -118,7 +121,8 @@ classes! {
 /// TypeError, ValueError
 ///     For a wrong dtype or shape (naming the argument and the shape
 ///     expected), NaN or infinity, and every rule of docs/method.md §1 and §6, naming
-///     the place: ``points[2].y: the order lower.left <= crisp is broken: 2.1 > 2``.
+///     the place: ``points[2].y: the order lower.left <= crisp is broken: 2.1 > 2``,
+///     ``weights[1] = -0.5 must be finite and greater than 0``.
 ///
 /// Examples
 /// --------

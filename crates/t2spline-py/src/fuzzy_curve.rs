@@ -16,15 +16,20 @@ use crate::dim::by_dim;
 use crate::errors::compute;
 use crate::fuzzy_methods::{fuzzy_methods, index, numbers};
 use crate::keyword;
+use crate::number::PyFuzzyNumber;
 use crate::py_types::{DictResult, Obj, ObjResult, Pair, Triple};
 use crate::sample::{layer_dict, ParamsArg};
+use crate::weight_numbers::{number_list, WeightsArg};
 
 fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
 
     /// Pickling and copying: the constructor with ``(crisp, upper, primary, lower, lower_height, weights, knots)``
-    /// (the degree following from the knots), an equal object.
+    /// (the degree following from the knots), fuzzy weights as their
+    /// numbers (``weight_numbers``), an equal object.
     fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<crate::pickle::Reduced<'py>> {
-        crate::pickle::by_constructor(slf, &["crisp", "upper", "primary", "lower", "lower_height", "weights", "knots"])
+        let fuzzy = by_dim!(&slf.get().0, |c| c.weight_numbers().is_some());
+        let weights = if fuzzy { "weight_numbers" } else { "weights" };
+        crate::pickle::by_constructor(slf, &["crisp", "upper", "primary", "lower", "lower_height", weights, "knots"])
     }
     #[new]
     #[pyo3(signature = (crisp, upper=None, primary=None, lower=None, lower_height=None, weights=None, knots=None, *, degree=None, order=None))]
@@ -46,15 +51,99 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
             keyword::opt_int(order, "order")?,
         );
         let data = FuzzyArrays::read(crisp, [upper, primary, lower, lower_height], 1)?;
-        let weights = optional_vector(weights, "weights")?.unwrap_or_else(|| vec![1.0; data.n]);
+        let (weights, numbers) = match WeightsArg::read(weights)? {
+            WeightsArg::Crisp(w) => (w.unwrap_or_else(|| vec![1.0; data.n]), None),
+            // Valid crisp weights first: the numbers' own values are checked
+            // by `with_weight_numbers`, its message naming `weights[i]`.
+            WeightsArg::Numbers(w) => (vec![1.0; data.n], Some(w)),
+        };
         let knots = optional_vector(knots, "knots")?;
         let degree = self::degree(degree, order, knots.as_ref().map(Vec::len), data.n)?;
         compute(py, move || {
-            Ok(by_dim!(data.points()?, |p| FuzzyCurve::try_new(
-                degree, p, weights, knots
-            )?
-            .into()))
+            Ok(by_dim!(data.points()?, |p| {
+                let curve = FuzzyCurve::try_new(degree, p, weights, knots)?;
+                match numbers {
+                    Some(w) => curve.with_weight_numbers(w)?,
+                    None => curve,
+                }
+                .into()
+            }))
         })
+    }
+
+    /// The fuzzy weights (docs/method.md §16): one ``FuzzyNumber`` per
+    /// control point, or ``None`` where the weights are crisp. ``weights``
+    /// holds their crisp values.
+    #[getter]
+    fn weight_numbers(&self) -> Option<Vec<PyFuzzyNumber>> {
+        by_dim!(&self.0, |c| number_list(c.weight_numbers()))
+    }
+
+    /// The envelope of the curve at the parameter ``t`` (docs/method.md
+    /// §15–§16): the least and the largest value of each coordinate over
+    /// every choice of control points and weights inside their cuts under
+    /// ``membership`` at ``alpha``, as the result file's
+    /// ``curves.envelope`` gives it at each sample. With crisp weights it
+    /// is the box between the curves through the cuts' ends; with fuzzy
+    /// weights each end is a Karnik–Mendel weighted average, exact at its
+    /// switch point. The stage curves, each with one choice of weights, do
+    /// not bound the curve; this does.
+    ///
+    /// Parameters
+    /// ----------
+    /// t : float
+    ///     A parameter in the domain.
+    /// membership : {"upper", "primary", "lower"}, optional
+    ///     Default ``"upper"``.
+    /// alpha : float, optional
+    ///     The level in ``[0, 1]``, default 0.
+    ///
+    /// Returns
+    /// -------
+    /// numpy.ndarray or None
+    ///     Shape ``(d, 2)``: ``[min, max]`` per coordinate; ``None`` where a
+    ///     number that counts at ``t`` has no cut (the lower function above
+    ///     its height).
+    ///
+    /// Raises
+    /// ------
+    /// ValueError
+    ///     For a parameter outside the domain, an alpha outside ``[0, 1]``
+    ///     or an unknown membership, naming the argument.
+    ///
+    /// Examples
+    /// --------
+    /// Points 0 and 1 (crisp), weights 1 and 1 to 3: at t = 1/2 the curve
+    /// runs from 1/2 (equal weights) to 3/4 (weight 3 on the second point).
+    ///
+    /// >>> line = FuzzyCurve([[0.0, 0.0], [1.0, 1.0]], degree=1,
+    /// ...                   weights=[1.0, FuzzyNumber(2.0, upper=(1.0, 3.0), primary=(1.5, 2.5))])
+    /// >>> line.envelope(0.5).tolist()
+    /// [[0.5, 0.75], [0.5, 0.75]]
+    /// >>> line.envelope(0.5, "upper", alpha=1.0).tolist()      # the crisp weights 1, 2
+    /// [[0.6666666666666666, 0.6666666666666666], [0.6666666666666666, 0.6666666666666666]]
+    #[pyo3(
+        signature = (t, membership=None, alpha=None),
+        text_signature = "($self, t, membership='upper', alpha=0.0)"
+    )]
+    fn envelope<'py>(
+        &self,
+        py: Python<'py>,
+        t: &Obj<'py>,
+        membership: Option<&Obj<'py>>,
+        alpha: Option<&Obj<'py>>,
+    ) -> PyResult<Option<Bound<'py, PyAny>>> {
+        let t = keyword::real(t, "t")?;
+        let membership = crate::set::membership(membership)?;
+        let alpha = crate::number::alpha(keyword::opt_real(alpha, "alpha")?.unwrap_or(0.0))?;
+        let Some(ranges) = by_dim!(&self.0, |c| compute(py, || Ok(c
+            .envelope_at(t, membership, alpha)?
+            .map(|e| e.iter().flat_map(|i| [i.left(), i.right()]).collect::<Vec<_>>()))))?
+        else {
+            return Ok(None);
+        };
+        let d = self.dimension();
+        array(py, ranges, &[d, 2]).map(Some)
     }
 
     /// The fuzzy control point ``index``: one ``FuzzyNumber`` per coordinate.
@@ -480,13 +569,24 @@ fuzzy_methods!("curve", "n", PySolution => curve_methods!(PyFuzzyCurve {
     /// The picture in a notebook: stage 1 (the fuzzy control points, the
     /// seven layer curves and the regions at level 0), drawn by the figure
     /// code of ``t2spline plot``, as inline SVG under a short table; a large
-    /// curve is drawn thinned and the figure says so.
+    /// curve is drawn thinned and the figure says so. The table says
+    /// where the weights are fuzzy.
     fn _repr_html_(&self) -> PyResult<String> {
         use crate::dim::ToModel as _;
-        crate::picture::first_stage_page(self.0.to_model()?, &self.facts().rows())
+        let mut rows = self.facts().rows();
+        if by_dim!(&self.0, |c| c.weight_numbers().is_some()) {
+            rows.push(("weights", "fuzzy (docs/method.md §16)".to_owned()));
+        }
+        crate::picture::first_stage_page(self.0.to_model()?, &rows)
     }
 
+    /// ``FuzzyCurve(dimension=…, …, domain=(a, b))``, with
+    /// ``fuzzy_weights=True`` at the end where the weights are fuzzy.
     fn __repr__(&self) -> String {
-        self.facts().repr("FuzzyCurve", None)
+        let repr = self.facts().repr("FuzzyCurve", None);
+        match by_dim!(&self.0, |c| c.weight_numbers().is_some()) {
+            true => format!("{}, fuzzy_weights=True)", repr.strip_suffix(')').unwrap_or(&repr)),
+            false => repr,
+        }
     }
 }));

@@ -87,6 +87,7 @@ mod stage_methods;
 mod surface_methods;
 mod surface_solution;
 mod value;
+mod weight_numbers;
 
 use pyo3::prelude::*;
 

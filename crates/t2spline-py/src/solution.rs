@@ -14,6 +14,12 @@ use crate::errors::compute;
 use crate::sample::{check_output, ParamsArg};
 use crate::stage_methods::{stage_methods, stage_samples, stage_samples_dict};
 
+/// One weight per control point as an array of shape `(n,)`.
+fn weight_array(py: Python<'_>, weights: Vec<f64>) -> PyResult<Bound<'_, PyAny>> {
+    let n = weights.len();
+    array(py, weights, &[n])
+}
+
 stage_methods!(PySolution, fuzzy_curve, "n" {
 
     /// Pickling and copying: ``FuzzyCurve.solve`` again at this alpha and type
@@ -45,6 +51,62 @@ stage_methods!(PySolution, fuzzy_curve, "n" {
     /// points.
     fn defuzzified_curve(&self) -> PyNurbsCurve {
         by_dim!(&self.0, |s| s.defuzzified_curve().into())
+    }
+
+    /// Stage 2: the weights of ``alpha_cut_curve(layer)``, shape ``(n,)``:
+    /// with fuzzy weights (docs/method.md §16) the layer's values of the
+    /// weights' alpha-cuts, else the curve's weights; ``None`` where that
+    /// curve is ``None`` (a lower layer with some point or weight cut above
+    /// its lower height).
+    ///
+    /// Examples
+    /// --------
+    /// >>> w = FuzzyNumber(2.0, upper=(1.0, 3.0), primary=(1.5, 2.5))
+    /// >>> line = FuzzyCurve([[0.0, 0.0], [1.0, 1.0]], weights=[1.0, w], degree=1)
+    /// >>> s = line.solve(0.5)
+    /// >>> s.alpha_cut_weights("upper_right").tolist()        # 3 cut at 0.5 toward 2
+    /// [1.0, 2.5]
+    /// >>> s.type_reduced_weights("left").tolist(), s.defuzzified_weights().tolist()
+    /// ([1.0, 1.75], [1.0, 2.0])
+    fn alpha_cut_weights<'py>(
+        &self,
+        py: Python<'py>,
+        layer: &Bound<'py, PyAny>,
+    ) -> PyResult<Option<Bound<'py, PyAny>>> {
+        let l = self::layer(layer, "layer")?;
+        let weights = by_dim!(&self.0, |s| match s.alpha_cut_weights(l) {
+            Some(fuzzy) => fuzzy,
+            None => s
+                .alpha_cut_layer(l)
+                .map(|_| s.fuzzy_curve().weights().to_vec()),
+        });
+        weights.map(|w| weight_array(py, w)).transpose()
+    }
+
+    /// Stage 3: the weights of ``type_reduced_curve(side)``, shape ``(n,)``:
+    /// with fuzzy weights their left or right type-reduced values (each
+    /// weight reduced as a coordinate is, docs/method.md §16), else the
+    /// curve's weights.
+    fn type_reduced_weights<'py>(
+        &self,
+        py: Python<'py>,
+        side: &Bound<'py, PyAny>,
+    ) -> PyResult<Bound<'py, PyAny>> {
+        let side = self::side(side)?;
+        let weights = by_dim!(&self.0, |s| s
+            .type_reduced_weights(side)
+            .unwrap_or_else(|| s.fuzzy_curve().weights().to_vec()));
+        weight_array(py, weights)
+    }
+
+    /// Stage 4: the weights of ``defuzzified_curve()``, shape ``(n,)``: with
+    /// fuzzy weights their defuzzified values (docs/method.md §16), else the
+    /// curve's weights.
+    fn defuzzified_weights<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
+        let weights = by_dim!(&self.0, |s| s
+            .defuzzified_weights()
+            .unwrap_or_else(|| s.fuzzy_curve().weights().to_vec()));
+        weight_array(py, weights)
     }
 
     /// The crisp curve, through the crisp control points.
