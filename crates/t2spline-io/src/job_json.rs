@@ -94,10 +94,21 @@ pub(crate) fn model_json(model: &Model, top_height: Option<f64>) -> Map<String, 
             };
             let mut out = Map::new();
             out.insert("degree".into(), json!(s.degree()));
-            out.insert(
-                "weights".into(),
-                rows(s.weights().iter().map(|w| json!(w)).collect()),
-            );
+            let weights = match s.weight_numbers() {
+                // Serializing keys and floats into a tree of values cannot fail.
+                Some(numbers) => numbers
+                    .iter()
+                    .map(|w| {
+                        serde_json::to_value(NumberView {
+                            number: w,
+                            top_height: self.0,
+                        })
+                        .unwrap_or(Value::Null)
+                    })
+                    .collect(),
+                None => s.weights().iter().map(|w| json!(w)).collect(),
+            };
+            out.insert("weights".into(), rows(weights));
             out.insert(
                 "knots".into(),
                 json!({

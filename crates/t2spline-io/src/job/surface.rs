@@ -10,7 +10,7 @@
 //! |---|---|---|
 //! | `order` / `degree` | a number | a pair `[u, v]` |
 //! | `points` | a list of points (x, y and optionally z) | rows of points along u, each row along v, all of one length; x, y and z |
-//! | `weights` | a list, one per point | rows, the shape of `points` |
+//! | `weights` | a list, one per point | rows, the shape of `points` (either may hold fuzzy numbers) |
 //! | `knots` | an array of `n + k` numbers | an object with `u` (`nu + ku` numbers) and/or `v` (`nv + kv`) |
 //! | `samples` | a number (default 101) | a pair `[su, sv]`, or one number for both (default `[21, 21]`) |
 
@@ -18,7 +18,9 @@ use serde_json::{Map, Value};
 use t2spline::fit::FuzzyData;
 use t2spline::job::{check_grid_samples, Job, Model, Samples, DEFAULT_SURFACE_SAMPLES};
 use t2spline::nurbs::net_weight_problems;
-use t2spline::{Direction, Error as CoreError, FuzzySurface, KnotVector, Nt2Point, Place};
+use t2spline::{
+    Direction, Error as CoreError, FuzzySurface, KnotVector, Nt2Number, Nt2Point, Place,
+};
 
 use super::common::knot_error_path;
 use super::place::{child, element};
@@ -56,6 +58,50 @@ struct Net {
     points: Option<Vec<Vec<Nt2Point<3>>>>,
 }
 
+/// One row of a surface's `weights` as read.
+enum WeightRow {
+    /// Numbers: crisp weights.
+    Crisp(Vec<f64>),
+    /// Some entry a fuzzy number (a bare number among them a crisp one).
+    Fuzzy(Vec<Nt2Number>),
+}
+
+/// A surface's `weights` once read: the crisp weights (with fuzzy ones,
+/// their crisp values), and the fuzzy numbers row by row where some row has
+/// one (docs/method.md §16).
+struct NetWeights {
+    crisp: Vec<Vec<f64>>,
+    numbers: Option<Vec<Nt2Number>>,
+}
+
+impl NetWeights {
+    /// The weights of `rows`; the numbers of every row, a crisp row's
+    /// values as crisp numbers of lower height `height` (as a bare number
+    /// among fuzzy ones is read), where some row is fuzzy.
+    fn of(rows: Vec<WeightRow>, height: f64) -> Self {
+        let crisp = rows
+            .iter()
+            .map(|r| match r {
+                WeightRow::Crisp(w) => w.clone(),
+                WeightRow::Fuzzy(w) => w.iter().map(Nt2Number::crisp).collect(),
+            })
+            .collect();
+        let fuzzy = rows.iter().any(|r| matches!(r, WeightRow::Fuzzy(_)));
+        let numbers = fuzzy.then(|| {
+            rows.into_iter()
+                .flat_map(|r| match r {
+                    WeightRow::Crisp(w) => w
+                        .into_iter()
+                        .filter_map(|x| Nt2Number::try_new(x, [x; 2], [x; 2], [x; 2], height).ok())
+                        .collect(),
+                    WeightRow::Fuzzy(w) => w,
+                })
+                .collect()
+        });
+        NetWeights { crisp, numbers }
+    }
+}
+
 /// The knot values of a surface as given, `[u, v]` (`None`: the default).
 type KnotValues = [Option<Vec<f64>>; 2];
 
@@ -83,8 +129,13 @@ impl Walker {
         let shape = net.as_ref().and_then(|n| n.shape);
         let weights = match o.get("weights") {
             // The shape is within the limit of the net's size.
-            None => shape.map(|[nu, nv]| vec![vec![1.0; nv]; nu]),
-            Some(v) => self.net_weights(v, o.get("points").and_then(Value::as_array)),
+            None => shape.map(|[nu, nv]| NetWeights {
+                crisp: vec![vec![1.0; nv]; nu],
+                numbers: None,
+            }),
+            Some(v) => {
+                self.net_weights(v, o.get("points").and_then(Value::as_array), common.height)
+            }
         };
         let knots = match o.get("knots") {
             None => Some([None, None]),
@@ -109,7 +160,12 @@ impl Walker {
             knots?,
             type_reduction?,
         );
-        match FuzzySurface::try_new(degree, points, weights, knots) {
+        let made = FuzzySurface::try_new(degree, points, weights.crisp, knots);
+        let made = match weights.numbers {
+            Some(numbers) => made.and_then(|s| s.with_weight_numbers(numbers)),
+            None => made,
+        };
+        match made {
             Ok(surface) => Some(Job {
                 description: common.description,
                 alpha: common.alpha,
@@ -352,8 +408,16 @@ impl Walker {
     }
 
     /// `weights`: rows of numbers of the shape of `points` (the rows as
-    /// given, when an array), each finite and within the core's range.
-    fn net_weights(&mut self, v: &Value, points: Option<&Vec<Value>>) -> Option<Vec<Vec<f64>>> {
+    /// given, when an array), each finite and within the core's range; an
+    /// entry may be a fuzzy number as a curve's weight may
+    /// (docs/method.md §16, [`Walker::curve_weights`]), its place
+    /// `weights[i][j]`, each foot of its upper cut checked as a weight.
+    fn net_weights(
+        &mut self,
+        v: &Value,
+        points: Option<&Vec<Value>>,
+        height: Result<Option<f64>, ()>,
+    ) -> Option<NetWeights> {
         let rule = "rows of numbers, the shape of points";
         let Some(rows) = v.as_array() else {
             self.report("weights", format!("expected {rule}, got {}", kind(v)));
@@ -372,24 +436,9 @@ impl Walker {
                 format!("{}, points has {nu}", count(rows.len(), "row")),
             );
         }
-        let mut out = Vec::with_capacity(rows.len());
+        let mut out: Vec<Option<WeightRow>> = Vec::with_capacity(rows.len());
         for (i, row) in rows.iter().enumerate() {
             let key = element("weights", i);
-            let fuzzy: Vec<usize> = row.as_array().map_or_else(Vec::new, |r| {
-                let objects = r.iter().enumerate().filter(|(_, x)| x.is_object());
-                objects.map(|(j, _)| j).collect()
-            });
-            if !fuzzy.is_empty() {
-                for j in fuzzy {
-                    self.report(
-                        &element(&key, j),
-                        "fuzzy weights are read for curves so far: a surface's weights are numbers",
-                    );
-                }
-                out.push(None);
-                continue;
-            }
-            let values = self.numbers(row, &key);
             let length = row.as_array().map(Vec::len);
             let columns = points.and_then(|p| p.get(i)?.as_array().map(Vec::len));
             if let (Some(length), Some(nv)) = (length, columns) {
@@ -400,12 +449,35 @@ impl Walker {
                     );
                 }
             }
+            let fuzzy = row.as_array().filter(|r| r.iter().any(Value::is_object));
+            if let Some(items) = fuzzy {
+                // Every value of a fuzzy weight lies between the feet of its
+                // upper cut, the crisp value too: checking the feet checks all.
+                let numbers: Vec<Option<Nt2Number>> = items
+                    .iter()
+                    .enumerate()
+                    .map(|(j, item)| {
+                        let at = element(&key, j);
+                        let number = self.number_at(item, &at, Place::NONE, height)?;
+                        self.weight_feet(&at, &number).then_some(number)
+                    })
+                    .collect();
+                out.push(
+                    numbers
+                        .into_iter()
+                        .collect::<Option<_>>()
+                        .map(WeightRow::Fuzzy),
+                );
+                continue;
+            }
+            let values = self.numbers(row, &key);
             for e in values.iter().flat_map(|w| net_weight_problems(i, w)) {
                 self.located(&surface_error_path(&e), e);
             }
-            out.push(values);
+            out.push(values.map(WeightRow::Crisp));
         }
-        out.into_iter().collect()
+        let rows: Vec<WeightRow> = out.into_iter().collect::<Option<_>>()?;
+        Some(NetWeights::of(rows, height.ok().flatten().unwrap_or(1.0)))
     }
 
     /// `knots`: an object with the knot values of `u` and/or `v`.

@@ -64,7 +64,7 @@ impl Walker {
     /// Whether the feet of the upper cut of the fuzzy weight at `key` are
     /// valid weights (finite, within [`MIN_WEIGHT`], [`MAX_WEIGHT`]);
     /// reports each that is not.
-    fn weight_feet(&mut self, key: &str, w: &Nt2Number) -> bool {
+    pub(super) fn weight_feet(&mut self, key: &str, w: &Nt2Number) -> bool {
         let mut fine = true;
         for (side, layer) in [(0, Layer::UpperLeft), (1, Layer::UpperRight)] {
             let value = w.layer(layer);

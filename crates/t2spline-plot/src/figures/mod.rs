@@ -97,9 +97,11 @@ pub struct FigureOptions {
 /// Why a curve's figures of the set view (`membership`, `section`,
 /// `measures`, and the regions shaded in stages 1–2) are left out, if they
 /// are: a curve with fuzzy weights has no set view yet (docs/method.md §16).
+/// A surface has none of these figures; with fuzzy weights its terrain
+/// figures are left out ([`terrain_left_out`] says why).
 #[must_use]
 pub fn set_figures_left_out(job: &Job) -> Option<&'static str> {
-    job.model.has_fuzzy_weights().then_some(
+    (!job.model.is_surface() && job.model.has_fuzzy_weights()).then_some(
         "regions, membership maps and measures of a curve with fuzzy weights are not available yet (`t2spline membership` and `t2spline section` take them)",
     )
 }

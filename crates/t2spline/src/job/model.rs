@@ -64,7 +64,7 @@ impl Model {
         match self {
             Model::Planar(c) => c.weight_numbers().is_some(),
             Model::Spatial(c) => c.weight_numbers().is_some(),
-            Model::Surface(_) => false,
+            Model::Surface(s) => s.weight_numbers().is_some(),
         }
     }
 

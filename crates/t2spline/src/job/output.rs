@@ -233,9 +233,10 @@ pub struct ControlPoints {
     pub defuzzified: Points,
 }
 
-/// The weights of every stage of a curve with fuzzy weights (docs/method.md
-/// §16), one value per control point, each stage's curve taking its
-/// stage's weights.
+/// The weights of every stage of a curve or surface with fuzzy weights
+/// (docs/method.md §16), one value per control point (a surface's net row
+/// by row, in one list), each stage's curve or surface taking its stage's
+/// weights.
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct WeightStages {

@@ -161,7 +161,8 @@ impl ModelVisitor for Run<'_> {
             regime: regime(solution.stages()),
             near_height: s.near_height(),
             control_points: control_points(surface.points(), solution.stages(), Some([nu, nv])),
-            weight_stages: None,
+            // Row by row in one list, as `Surface::weight_numbers` holds them.
+            weight_stages: weight_stages(surface.weight_numbers(), solution.weight_stages()),
             samples: sampled(
                 grid.into_samples(),
                 Parameters::Grid {

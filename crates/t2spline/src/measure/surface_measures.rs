@@ -74,7 +74,8 @@ impl FuzzySurface<3> {
     /// each level and under each membership function (docs/method.md §14).
     ///
     /// # Errors
-    /// [`Error::FuzzyPlan`] where x or y of a control point is fuzzy;
+    /// [`Error::FuzzyWeights`] where the weights are fuzzy (docs/method.md
+    /// §16); [`Error::FuzzyPlan`] where x or y of a control point is fuzzy;
     /// [`Error::NotAGraph`] where the surface folds over its plan or has a
     /// vertical part.
     ///
@@ -152,6 +153,10 @@ impl FuzzySurface<3> {
         other: Option<&FuzzySurface<3>>,
         options: &SurfaceMeasureOptions,
     ) -> Result<SurfaceMeasures, Error> {
+        self.crisp_weights_for("a surface measure")?;
+        if let Some(other) = other {
+            other.crisp_weights_for("a surface measure")?;
+        }
         let plan = Plan::of(self)?;
         plan.check_graph()?;
         let second = match other {

@@ -47,7 +47,7 @@ impl<const D: usize> Layered<D> for FuzzySurface<D> {
     }
 
     fn weight_numbers(&self) -> Option<&[Nt2Number]> {
-        None
+        FuzzySurface::weight_numbers(self)
     }
 
     fn through_weighted(&self, points: Vec<[f64; D]>, weights: Vec<f64>) -> NurbsSurface<D> {

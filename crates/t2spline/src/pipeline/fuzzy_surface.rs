@@ -15,6 +15,7 @@ use crate::nurbs::{
     BoundingBox, ClosestSurfacePoint, Direction, Domain, KnotVector, NurbsSurface, SurfaceCurvature,
 };
 use crate::pipeline::fuzzy_ops::{common_heights, from_stacked_rows, stacked_rows};
+use crate::pipeline::weight_numbers::{check_weight_numbers, is_crisp};
 use crate::pipeline::{FuzzyCurve, SurfaceSolution};
 use crate::reduction::TypeReduction;
 
@@ -50,7 +51,11 @@ use crate::reduction::TypeReduction;
 pub struct FuzzySurface<const D: usize> {
     /// Row-major: `points[i·nv + j]` is `P̃ᵢⱼ`.
     points: Vec<Nt2Point<D>>,
+    /// The crisp weights, or the crisp values of the fuzzy weights; row by row.
     weights: Vec<f64>,
+    /// The fuzzy weights (docs/method.md §16), row by row; `None` where they
+    /// are crisp.
+    weight_numbers: Option<Vec<Nt2Number>>,
     knots: [KnotVector; 2],
 }
 
@@ -83,8 +88,64 @@ impl<const D: usize> FuzzySurface<D> {
         Ok(FuzzySurface {
             points: points.into_iter().flatten().collect(),
             weights,
+            weight_numbers: None,
             knots,
         })
+    }
+
+    /// This surface with fuzzy weights (docs/method.md §16): one normal
+    /// type-2 fuzzy number per net point, row by row (`numbers[i·nv + j]`
+    /// is the weight of `P̃ᵢⱼ`), every value of each (its upper cut's feet
+    /// included) a valid weight. The crisp values become
+    /// [`FuzzySurface::weights`]. Numbers that are all crisp (every value
+    /// equal) leave the surface with crisp weights.
+    ///
+    /// # Errors
+    /// [`Error::WeightCount`] unless there is one number per net point;
+    /// [`Error::Weight`] or [`Error::WeightOutOfRange`] for the first value
+    /// (the least first) that is not a valid weight, its index counted row
+    /// by row.
+    ///
+    /// # Examples
+    /// ```
+    /// # use t2spline::{FuzzySurface, Layer, Nt2Number, Nt2Point};
+    /// let c = |x: f64| Nt2Number::try_crisp(x);
+    /// let p = |x: f64, y: f64, z: f64| Ok::<_, t2spline::Error>(Nt2Point::new([c(x)?, c(y)?, c(z)?]));
+    /// let net = vec![vec![p(0.0, 0.0, 0.0)?, p(0.0, 1.0, 0.0)?], vec![p(1.0, 0.0, 0.0)?, p(1.0, 1.0, 1.0)?]];
+    /// let w = Nt2Number::try_new(1.0, [0.5, 3.0], [0.75, 2.0], [1.0, 1.0], 1.0)?;
+    /// let s = FuzzySurface::try_new([1, 1], net, vec![vec![1.0; 2]; 2], [None, None])?
+    ///     .with_weight_numbers(vec![c(1.0)?, c(1.0)?, c(1.0)?, w])?;
+    /// // The upper right layer weighs the corner (1, 1, 1) by 3: at the centre
+    /// // z = 3/(1 + 1 + 1 + 3).
+    /// let at = s.eval_layers(0.5, 0.5)?;
+    /// assert!((at[Layer::UpperRight][2] - 0.5).abs() < 1e-15);
+    /// assert!((at[Layer::Crisp][2] - 0.25).abs() < 1e-15);
+    /// # Ok::<(), t2spline::Error>(())
+    /// ```
+    pub fn with_weight_numbers(self, numbers: Vec<Nt2Number>) -> Result<Self, Error> {
+        let weights = check_weight_numbers(&numbers, self.points.len())?;
+        let fuzzy = numbers.iter().any(|w| !is_crisp(w));
+        Ok(FuzzySurface {
+            weights,
+            weight_numbers: fuzzy.then_some(numbers),
+            ..self
+        })
+    }
+
+    /// The fuzzy weights (docs/method.md §16), row by row, or `None` where
+    /// the weights are crisp.
+    #[must_use]
+    pub fn weight_numbers(&self) -> Option<&[Nt2Number]> {
+        self.weight_numbers.as_deref()
+    }
+
+    /// `Err(`[`Error::FuzzyWeights`]`)` naming `what` where the weights are
+    /// fuzzy: the guard of the operations that take crisp weights only.
+    pub(crate) fn crisp_weights_for(&self, what: &'static str) -> Result<(), Error> {
+        match self.weight_numbers {
+            Some(_) => Err(Error::FuzzyWeights { what }),
+            None => Ok(()),
+        }
     }
 
     /// A fuzzy surface from parts an exact algorithm derived from a valid one.
@@ -98,6 +159,7 @@ impl<const D: usize> FuzzySurface<D> {
         FuzzySurface {
             points,
             weights,
+            weight_numbers: None,
             knots,
         }
     }
@@ -108,7 +170,7 @@ impl<const D: usize> FuzzySurface<D> {
         &self.points
     }
 
-    /// The weights, row by row.
+    /// The weights, row by row: with fuzzy weights, their crisp values.
     #[must_use]
     pub fn weights(&self) -> &[f64] {
         &self.weights
@@ -163,12 +225,18 @@ impl<const D: usize> FuzzySurface<D> {
 
     /// The seven layer surfaces at `(u, v)`, from one evaluation of the
     /// rational basis; their values keep the docs/method.md §1 order exactly.
+    /// With fuzzy weights each layer surface has weights of its own
+    /// (docs/method.md §16), is evaluated by itself, and the values need not
+    /// be ordered.
     ///
     /// # Errors
     /// [`Error::InDirection`] wrapping [`Error::OutOfDomain`] if `u` or `v` is
     /// NaN or outside its domain.
     pub fn eval_layers(&self, u: f64, v: f64) -> Result<Layers<[f64; D]>, Error> {
         check_params(&self.knots, u, v)?;
+        if self.weight_numbers.is_some() {
+            return Layers::try_from_fn(|layer| self.layer_surface(layer).eval(u, v));
+        }
         let basis = TensorBasis::new(&self.knots, &self.weights, u, v);
         let mut out = Layers::from_fn(|_| [0.0; D]);
         basis.for_each(self.shape()[1], |k, r| {
@@ -190,12 +258,17 @@ impl<const D: usize> FuzzySurface<D> {
     }
 
     /// The fuzzy surface at `(u, v)` as a fuzzy point when each coordinate has
-    /// one lower height for all control points; `Ok(None)` otherwise (docs/method.md §6).
+    /// one lower height for all control points and the weights are crisp;
+    /// `Ok(None)` otherwise (docs/method.md §6; layers with weights of their
+    /// own need not be ordered, docs/method.md §16).
     ///
     /// # Errors
     /// As [`FuzzySurface::eval_layers`].
     pub fn eval(&self, u: f64, v: f64) -> Result<Option<Nt2Point<D>>, Error> {
         let layers = self.eval_layers(u, v)?;
+        if self.weight_numbers.is_some() {
+            return Ok(None);
+        }
         Ok(self.coordinate_heights().map(|heights| {
             Nt2Point::new(std::array::from_fn(|d| {
                 Nt2Number::from_layers_unchecked(&layers.map(|p| p[d]), heights[d])
@@ -239,7 +312,10 @@ impl<const D: usize> FuzzySurface<D> {
     /// [`NurbsSurface::bounding_box`]): the region the fuzzy surface can
     /// occupy. Since the layers are ordered at every `(u, v)`, its lower
     /// corner comes from the `upper_left` surface and its upper corner from
-    /// the `upper_right` surface.
+    /// the `upper_right` surface. With fuzzy weights the box is that of
+    /// the control points' upper cuts at level 0, which holds every surface
+    /// with its weights inside their cuts (see
+    /// [`layered::bounding_box`](crate::capability::layered::bounding_box)).
     ///
     /// # Examples
     /// ```
@@ -296,6 +372,7 @@ impl<const D: usize> FuzzySurface<D> {
         direction: Direction,
         op: impl FnOnce(&KnotVector, &[Row]) -> Result<(KnotVector, Vec<Row>), Error>,
     ) -> Result<(Self, f64), Error> {
+        self.crisp_weights_for("a knot operation")?;
         let heights = self.common_heights()?;
         let rows = stacked_rows(&self.points, &self.weights);
         rebuild(map_net((&self.knots, &rows), direction, op)?, heights)
@@ -307,11 +384,12 @@ impl<const D: usize> FuzzySurface<D> {
     ///
     /// # Errors
     /// [`Error::InDirection`] wrapping [`Error::OutOfDomain`];
-    /// [`Error::MixedHeights`] if a coordinate mixes lower heights.
+    /// [`Error::MixedHeights`] if a coordinate mixes lower heights; [`Error::FuzzyWeights`] where the weights are fuzzy (docs/method.md §16).
     pub fn isocurve(&self, direction: Direction, t: f64) -> Result<FuzzyCurve<D>, Error> {
         self.domain(direction)
             .check(t)
             .map_err(|e| e.in_direction(direction))?;
+        self.crisp_weights_for("an isocurve")?;
         let heights = self.common_heights()?;
         let rows = isocurve_rows(
             (&self.knots, &stacked_rows(&self.points, &self.weights)),
@@ -329,8 +407,9 @@ impl<const D: usize> FuzzySurface<D> {
     ///
     /// # Errors
     /// Those of `NurbsSurface::insert_knot`, and [`Error::MixedHeights`] if a
-    /// coordinate mixes lower heights.
+    /// coordinate mixes lower heights; [`Error::FuzzyWeights`] where the weights are fuzzy (docs/method.md §16).
     pub fn insert_knot(&self, direction: Direction, t: f64, times: usize) -> Result<Self, Error> {
+        self.crisp_weights_for("knot insertion")?;
         Ok(self.map_rows(direction, |k, r| insert(k, r, t, times))?.0)
     }
 
@@ -340,6 +419,7 @@ impl<const D: usize> FuzzySurface<D> {
     /// # Errors
     /// As [`FuzzySurface::insert_knot`].
     pub fn refine_knots(&self, direction: Direction, new: &[f64]) -> Result<Self, Error> {
+        self.crisp_weights_for("knot refinement")?;
         Ok(self.map_rows(direction, |k, r| refine(k, r, new))?.0)
     }
 
@@ -347,8 +427,9 @@ impl<const D: usize> FuzzySurface<D> {
     /// `times`, in every layer (see [`NurbsSurface::elevate_degree`]).
     ///
     /// # Errors
-    /// As `NurbsSurface::elevate_degree`, and [`Error::MixedHeights`].
+    /// As `NurbsSurface::elevate_degree`, and [`Error::MixedHeights`]; [`Error::FuzzyWeights`] where the weights are fuzzy (docs/method.md §16).
     pub fn elevate_degree(&self, direction: Direction, times: usize) -> Result<Self, Error> {
+        self.crisp_weights_for("degree elevation")?;
         check_elevation(self.degree()[direction.index()], times)
             .map_err(|e| e.in_direction(direction))?;
         Ok(self.map_rows(direction, |k, r| Ok(elevate(k, r, times)))?.0)
@@ -358,7 +439,7 @@ impl<const D: usize> FuzzySurface<D> {
     /// layer split there (see [`NurbsSurface::split_at`]).
     ///
     /// # Errors
-    /// As `NurbsSurface::split_at`, and [`Error::MixedHeights`].
+    /// As `NurbsSurface::split_at`, and [`Error::MixedHeights`]; [`Error::FuzzyWeights`] where the weights are fuzzy (docs/method.md §16).
     ///
     /// # Examples
     /// ```
@@ -377,6 +458,7 @@ impl<const D: usize> FuzzySurface<D> {
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn split_at(&self, direction: Direction, t: f64) -> Result<[Self; 2], Error> {
+        self.crisp_weights_for("splitting")?;
         let heights = self.common_heights()?;
         let rows = stacked_rows(&self.points, &self.weights);
         let [a, b] = split_net((&self.knots, &rows), direction, t)?;
@@ -387,8 +469,9 @@ impl<const D: usize> FuzzySurface<D> {
     /// both directions (see [`NurbsSurface::segment`]).
     ///
     /// # Errors
-    /// As `NurbsSurface::segment`, and [`Error::MixedHeights`].
+    /// As `NurbsSurface::segment`, and [`Error::MixedHeights`]; [`Error::FuzzyWeights`] where the weights are fuzzy (docs/method.md §16).
     pub fn segment(&self, u: [f64; 2], v: [f64; 2]) -> Result<Self, Error> {
+        self.crisp_weights_for("a segment")?;
         let heights = self.common_heights()?;
         let rows = stacked_rows(&self.points, &self.weights);
         let net = segment_net((&self.knots, &rows), u, v)?;

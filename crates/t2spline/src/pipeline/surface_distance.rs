@@ -17,8 +17,11 @@ use crate::vector::euclidean_norm;
 /// ```
 /// Both surfaces share weights and knots, so `D − C` is itself a rational
 /// surface whose control points are the differences `Dᵢⱼ − Pᵢⱼ`; on each span
-/// rectangle `d` is the norm of one smooth rational patch. Neither figure
-/// depends on a sampling grid:
+/// rectangle `d` is the norm of one smooth rational patch. With fuzzy
+/// weights (docs/method.md §16) the two surfaces have weights of their own
+/// and the same knots: `d` is then the norm of the difference of two smooth
+/// rational patches on each span rectangle, measured the same way. Neither
+/// figure depends on a sampling grid:
 ///
 /// - **max**: each span rectangle is scanned on a 17 × 17 grid, and every
 ///   local maximum of the scan (edges and corners included) is refined by
@@ -57,22 +60,40 @@ const SUBDIVISIONS: usize = 20_000;
 impl SurfaceDistance {
     /// Measures the norm of `difference(u, v)` over its domain.
     pub(crate) fn of_surface<const D: usize>(difference: &NurbsSurface<D>) -> SurfaceDistance {
-        let patches = difference.patches();
+        SurfaceDistance::of_gap(&Gap {
+            a: difference,
+            b: None,
+        })
+    }
+
+    /// Measures `‖a(u, v) − b(u, v)‖` over the domain of two surfaces with
+    /// the same knots and weights of their own (fuzzy weights,
+    /// docs/method.md §16).
+    pub(crate) fn between<const D: usize>(
+        a: &NurbsSurface<D>,
+        b: &NurbsSurface<D>,
+    ) -> SurfaceDistance {
+        SurfaceDistance::of_gap(&Gap { a, b: Some(b) })
+    }
+
+    /// The maximum and the rms of `gap` over its domain.
+    fn of_gap<const D: usize>(gap: &Gap<'_, D>) -> SurfaceDistance {
+        let surface = gap.a;
+        let patches = surface.patches();
         // By the convex hull property (positive weights), `d` on a patch is at
-        // most the largest norm of the patch's difference control points
-        // (plus rounding: a few units in the last place per basis term,
-        // covered by HULL_SLACK). Patches are measured from the largest bound
-        // down, and one whose bound is below the largest distance found so
-        // far is skipped: it cannot hold the maximum. Ties go to the patch first in the net's
+        // most a bound from the control points acting on it (`Gap::bound`).
+        // Patches are measured from the largest bound down, and one whose
+        // bound is below the largest distance found so far is skipped: it
+        // cannot hold the maximum. Ties go to the patch first in the net's
         // order, as if every patch had been measured in that order.
-        let bounds: Vec<f64> = patches.iter().map(|p| hull_bound(difference, p)).collect();
+        let bounds: Vec<f64> = patches.iter().map(|p| gap.bound(p)).collect();
         let mut by_bound: Vec<usize> = (0..patches.len()).collect();
         by_bound.sort_by(|&a, &b| bounds[b].total_cmp(&bounds[a]));
         let mut best = (
             0.0,
             [
-                difference.domain(Direction::U).start,
-                difference.domain(Direction::V).start,
+                surface.domain(Direction::U).start,
+                surface.domain(Direction::V).start,
             ],
             usize::MAX,
         );
@@ -80,13 +101,13 @@ impl SurfaceDistance {
             if bounds[k] < best.0 {
                 break;
             }
-            let found = patch_max(difference, &patches[k]);
+            let found = patch_max(gap, &patches[k]);
             if found.0 > best.0 || (found.0 == best.0 && found.0 > 0.0 && k < best.2) {
                 best = (found.0, found.1, k);
             }
         }
         let rms = if best.0 > 0.0 {
-            best.0 * mean_square(difference, &patches, best.0).sqrt()
+            best.0 * mean_square(gap, &patches, best.0).sqrt()
         } else {
             0.0
         };
@@ -98,20 +119,59 @@ impl SurfaceDistance {
     }
 }
 
-/// The largest norm of the control points that act on a patch: an upper
-/// bound of the patch's norm, which is a convex combination of them.
-fn hull_bound<const D: usize>(s: &NurbsSurface<D>, patch: &Patch) -> f64 {
-    s.patch_points(patch)
-        .map(|p| euclidean_norm(p))
-        .fold(0.0_f64, f64::max)
-        * (1.0 + HULL_SLACK)
+/// The distance `d(u, v)` between a surface and a second surface with the
+/// same knots (or `0`).
+struct Gap<'a, const D: usize> {
+    a: &'a NurbsSurface<D>,
+    b: Option<&'a NurbsSurface<D>>,
+}
+
+impl<const D: usize> Gap<'_, D> {
+    /// `d(u, v)` on the patch of the span indices `spans`.
+    fn at(&self, spans: [usize; 2], u: f64, v: f64) -> f64 {
+        let mut p = self.a.eval_in_spans(spans, u, v);
+        if let Some(b) = self.b {
+            for (x, y) in p.iter_mut().zip(b.eval_in_spans(spans, u, v)) {
+                *x -= y;
+            }
+        }
+        euclidean_norm(&p)
+    }
+
+    /// An upper bound of `d` on a patch. One surface: the largest norm of
+    /// the control points acting there, of which the patch is a convex
+    /// combination. Two: both points are convex combinations of their own
+    /// control points, so their difference is one of the differences
+    /// `Pₖ − Qₗ`, and its norm is at most the largest of theirs; the
+    /// rounding of the two evaluations, relative to the points' own size,
+    /// is added.
+    fn bound(&self, patch: &Patch) -> f64 {
+        let norms = |s: &NurbsSurface<D>| {
+            s.patch_points(patch)
+                .map(|p| euclidean_norm(p))
+                .fold(0.0_f64, f64::max)
+        };
+        match self.b {
+            None => norms(self.a) * (1.0 + HULL_SLACK),
+            Some(b) => {
+                let mut largest = 0.0_f64;
+                for p in self.a.patch_points(patch) {
+                    for q in b.patch_points(patch) {
+                        let diff: [f64; D] = std::array::from_fn(|k| p[k] - q[k]);
+                        largest = largest.max(euclidean_norm(&diff));
+                    }
+                }
+                largest * (1.0 + HULL_SLACK) + HULL_SLACK * (norms(self.a) + norms(b))
+            }
+        }
+    }
 }
 
 /// The largest distance on one patch and where it is reached: the smallest
 /// value of `−d` ([`patch_min`]), refined from the scan's local maxima of
 /// positive `d`.
-fn patch_max<const D: usize>(s: &NurbsSurface<D>, patch: &Patch) -> (f64, [f64; 2]) {
-    let minus = |[u, v]: [f64; 2]| -euclidean_norm(&s.eval_in_spans(patch.0, u, v));
+fn patch_max<const D: usize>(gap: &Gap<'_, D>, patch: &Patch) -> (f64, [f64; 2]) {
+    let minus = |[u, v]: [f64; 2]| -gap.at(patch.0, u, v);
     let (value, at) = patch_min(patch, minus, |v| v < 0.0);
     (-value, at)
 }
@@ -119,14 +179,14 @@ fn patch_max<const D: usize>(s: &NurbsSurface<D>, patch: &Patch) -> (f64, [f64; 
 /// The mean of `(d/scale)²` over the domain: per patch, its share of the
 /// domain's area times the patch's own mean (in patch coordinates, so that
 /// neither a tiny domain nor a tiny patch underflows).
-fn mean_square<const D: usize>(s: &NurbsSurface<D>, patches: &[Patch], scale: f64) -> f64 {
-    let (du, dv) = (s.domain(Direction::U), s.domain(Direction::V));
+fn mean_square<const D: usize>(gap: &Gap<'_, D>, patches: &[Patch], scale: f64) -> f64 {
+    let (du, dv) = (gap.a.domain(Direction::U), gap.a.domain(Direction::V));
     let cubature = Cubature::new();
     let integrand = |&(spans, [[a0, b0], [a1, b1]]): &Patch| {
         move |x: f64, y: f64| {
             let u = (a0 + (b0 - a0) * x).min(b0);
             let v = (a1 + (b1 - a1) * y).min(b1);
-            let d = euclidean_norm(&s.eval_in_spans(spans, u, v)) / scale;
+            let d = gap.at(spans, u, v) / scale;
             d * d
         }
     };
@@ -160,7 +220,7 @@ mod tests {
             [s.domain(Direction::U).start, s.domain(Direction::V).start],
         );
         for patch in s.patches() {
-            let found = patch_max(s, &patch);
+            let found = patch_max(&Gap { a: s, b: None }, &patch);
             if found.0 > best.0 {
                 best = found;
             }

@@ -82,6 +82,10 @@ impl<const D: usize> SurfaceSolution<D> {
     /// `(u, v)` over the whole domain (docs/method.md §8); see [`SurfaceDistance`].
     #[must_use]
     pub fn distance(&self) -> SurfaceDistance {
+        if self.fuzzy_surface().weight_numbers().is_some() {
+            // The two surfaces have weights of their own (docs/method.md §16).
+            return SurfaceDistance::between(&self.defuzzified_surface(), &self.crisp_surface());
+        }
         SurfaceDistance::of_surface(&self.offsets())
     }
 }

@@ -11,6 +11,7 @@ use crate::pipeline::point_stages::PointStages;
 use crate::pipeline::{FuzzySurface, SurfaceSolution};
 use crate::reduction::TypeReduction;
 use crate::sampling::plan::Plan;
+use crate::sampling::weighted::grid_sweep_weighted;
 use crate::sampling::GridSampler;
 
 impl<const D: usize> NurbsSurface<D> {
@@ -170,6 +171,25 @@ impl<const D: usize> FuzzySurface<D> {
                 found: out.len(),
             });
         }
+        if self.weight_numbers().is_some() {
+            let grid = self.sample_layers(u, v)?;
+            for (k, layer) in crate::Layer::ALL.into_iter().enumerate() {
+                for (d, from) in grid.samples()[layer].coords().iter().enumerate() {
+                    let to = out.get_mut(k * D + d).map(|s| &mut **s);
+                    match to {
+                        Some(to) if to.len() == from.len() => to.copy_from_slice(from),
+                        _ => {
+                            return Err(Error::Length {
+                                what: "an output slice (one value per grid point)",
+                                expected: from.len(),
+                                found: to.map_or(0, |s| s.len()),
+                            })
+                        }
+                    }
+                }
+            }
+            return Ok(());
+        }
         let plan = Plan::new(self.points(), &[], true);
         // The plan orders its channels its own way.
         let mut ordered = plan.by_layer(out);
@@ -318,8 +338,9 @@ impl<const D: usize> SurfaceSolution<D> {
 }
 
 /// Samples the crisp surface, the six other layers if `layers`, and the
-/// surfaces of stages 2–4 of every solution with one grid sampler. The grid
-/// engine keeps every order exactly, so the plan's bounds are not needed.
+/// surfaces of stages 2–4 of every solution with one grid sampler (with
+/// fuzzy weights, one per surface: `weighted.rs`). The grid engine keeps
+/// every order exactly, so the plan's bounds are not needed.
 fn grid_sweep<const D: usize>(
     surface: &FuzzySurface<D>,
     u: Params<'_>,
@@ -329,6 +350,9 @@ fn grid_sweep<const D: usize>(
     mut buffers: Vec<SampleBuffer>,
     fresh: Fresh,
 ) -> Result<Grid<SweepSamples<D>>, Error> {
+    if surface.weight_numbers().is_some() {
+        return grid_sweep_weighted(surface, [u, v], solutions, layers, buffers, fresh);
+    }
     let stages: Vec<&PointStages<D>> = solutions.iter().map(SurfaceSolution::stages).collect();
     let plan = Plan::new(surface.points(), &stages, layers);
     let knots = Direction::BOTH.map(|d| surface.knots(d).clone());

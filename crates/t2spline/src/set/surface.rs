@@ -194,7 +194,7 @@ impl<const D: usize> FuzzySurface<D> {
     /// patches whose control points' box at level 0 misses `p` are skipped.
     ///
     /// # Errors
-    /// [`Error::QueryPoint`] if a coordinate of `p` is NaN or infinite.
+    /// [`Error::QueryPoint`] if a coordinate of `p` is NaN or infinite; [`Error::FuzzyWeights`] where the weights are fuzzy (docs/method.md §16).
     ///
     /// # Examples
     /// ```
@@ -208,6 +208,7 @@ impl<const D: usize> FuzzySurface<D> {
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn membership(&self, p: &[f64; D]) -> Result<Grades, Error> {
+        self.crisp_weights_for("membership")?;
         check_point(0, p)?;
         Ok(SurfaceGrader::new(self).grades(p))
     }
@@ -221,8 +222,9 @@ impl<const D: usize> FuzzySurface<D> {
     /// [`FuzzySurface::membership`] of many points, sharing the preparation.
     ///
     /// # Errors
-    /// [`Error::QueryPoint`] naming the first point that is not finite.
+    /// [`Error::QueryPoint`] naming the first point that is not finite; [`Error::FuzzyWeights`] where the weights are fuzzy (docs/method.md §16).
     pub fn memberships(&self, points: &[[f64; D]]) -> Result<Vec<Grades>, Error> {
+        self.crisp_weights_for("membership")?;
         for (i, p) in points.iter().enumerate() {
             check_point(i, p)?;
         }
@@ -249,12 +251,13 @@ impl FuzzySurface<3> {
     /// grade (accurate to about 1e-9 of the region's height).
     ///
     /// # Errors
-    /// [`Error::QueryPoint`] if `x0` or `y0` is not finite.
+    /// [`Error::QueryPoint`] if `x0` or `y0` is not finite; [`Error::FuzzyWeights`] where the weights are fuzzy (docs/method.md §16).
     pub fn sections(
         &self,
         [x0, y0]: [f64; 2],
         levels: &[Alpha],
     ) -> Result<Vec<SectionLevel>, Error> {
+        self.crisp_weights_for("a section of a surface")?;
         check_point(0, &[x0, y0])?;
         Ok(self.sections_with(&SurfaceGrader::new(self), [x0, y0], levels))
     }

@@ -179,7 +179,7 @@ impl FuzzySurface<3> {
     ///
     /// # Errors
     /// [`Error::NotFinite`] if `z` is not finite; the errors of
-    /// [`FuzzySurface::envelope`] for a grid of one more corner each way.
+    /// [`FuzzySurface::envelope`] for a grid of one more corner each way; [`Error::FuzzyWeights`] where the weights are fuzzy (docs/method.md §16).
     ///
     /// # Examples
     /// A plane rising along x from 0 to 2, its heights `±0.5` wide at level
@@ -201,6 +201,7 @@ impl FuzzySurface<3> {
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn contour(&self, grid: &PlanGrid, z: f64, levels: &[Alpha]) -> Result<Contour, Error> {
+        self.crisp_weights_for("a contour")?;
         if !z.is_finite() {
             return Err(Error::NotFinite {
                 place: Place::NONE,

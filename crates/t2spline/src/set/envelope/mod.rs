@@ -105,7 +105,7 @@ impl FuzzySurface<3> {
     /// # Errors
     /// [`Error::EnvelopeTooLarge`] past [`MAX_ENVELOPE_VALUES`] values, or
     /// (x or y fuzzy) past [`MAX_FUZZY_ENVELOPE_CELLS`] cells × levels;
-    /// checked before anything is computed.
+    /// checked before anything is computed; [`Error::FuzzyWeights`] where the weights are fuzzy (docs/method.md §16).
     ///
     /// # Examples
     /// A plane `z = 0` over `[0, 2]²` whose heights are `±1` wide at level 0:
@@ -190,6 +190,7 @@ impl FuzzySurface<3> {
 
     /// The limits on an envelope's size, checked before it is computed.
     fn check_envelope_size(&self, [columns, rows]: [usize; 2], levels: usize) -> Result<(), Error> {
+        self.crisp_weights_for("an envelope")?;
         let cells = columns.saturating_mul(rows);
         let values = cells.saturating_mul(levels).saturating_mul(6);
         let too_large = |limit: usize, counted: &'static str| Error::EnvelopeTooLarge {
