@@ -60,23 +60,8 @@ pub(crate) fn model_json(model: &Model, top_height: Option<f64>) -> Map<String, 
         fn curve<const D: usize>(self, c: &FuzzyCurve<D>) -> Map<String, Value> {
             let mut out = Map::new();
             out.insert("degree".into(), json!(c.degree()));
-            let weights = match c.weight_numbers() {
-                // Serializing keys and floats into a tree of values cannot fail.
-                Some(numbers) => Value::Array(
-                    numbers
-                        .iter()
-                        .map(|w| {
-                            serde_json::to_value(NumberView {
-                                number: w,
-                                top_height: self.0,
-                            })
-                            .unwrap_or(Value::Null)
-                        })
-                        .collect(),
-                ),
-                None => json!(c.weights()),
-            };
-            out.insert("weights".into(), weights);
+            let weights = weights_json(c.weights(), c.weight_numbers(), self.0);
+            out.insert("weights".into(), Value::Array(weights));
             out.insert("knots".into(), json!(c.knots().as_slice()));
             let points = c.points().iter().map(|p| point_json(p, self.0)).collect();
             out.insert("points".into(), Value::Array(points));
@@ -94,20 +79,7 @@ pub(crate) fn model_json(model: &Model, top_height: Option<f64>) -> Map<String, 
             };
             let mut out = Map::new();
             out.insert("degree".into(), json!(s.degree()));
-            let weights = match s.weight_numbers() {
-                // Serializing keys and floats into a tree of values cannot fail.
-                Some(numbers) => numbers
-                    .iter()
-                    .map(|w| {
-                        serde_json::to_value(NumberView {
-                            number: w,
-                            top_height: self.0,
-                        })
-                        .unwrap_or(Value::Null)
-                    })
-                    .collect(),
-                None => s.weights().iter().map(|w| json!(w)).collect(),
-            };
+            let weights = weights_json(s.weights(), s.weight_numbers(), self.0);
             out.insert("weights".into(), rows(weights));
             out.insert(
                 "knots".into(),
@@ -122,6 +94,30 @@ pub(crate) fn model_json(model: &Model, top_height: Option<f64>) -> Map<String, 
         }
     }
     model.visit(Keys(top_height))
+}
+
+/// The weights as in a job file, one value per control point: numbers, or
+/// the fuzzy weights as fuzzy numbers (a `lower_height` left out when it
+/// equals `top_height`).
+fn weights_json(
+    crisp: &[f64],
+    numbers: Option<&[Nt2Number]>,
+    top_height: Option<f64>,
+) -> Vec<Value> {
+    match numbers {
+        // Serializing keys and floats into a tree of values cannot fail.
+        Some(numbers) => numbers
+            .iter()
+            .map(|w| {
+                serde_json::to_value(NumberView {
+                    number: w,
+                    top_height,
+                })
+                .unwrap_or(Value::Null)
+            })
+            .collect(),
+        None => crisp.iter().map(|w| json!(w)).collect(),
+    }
 }
 
 /// A point as in a job file; a number's `lower_height` is left out when it

@@ -159,7 +159,19 @@ impl<const D: usize> WeightedGrader<'_, '_, D> {
         if self.inside(m, span, bounds, top) {
             return top;
         }
-        let (mut lo, mut hi) = (floor, top);
+        self.bisect(m, span, bounds, [floor, top])[1]
+    }
+
+    /// `[lo, hi]` narrowed from `range` (`q` inside at `lo`, not at `hi`) by
+    /// [`LEVEL_BISECTIONS`] halvings, keeping that.
+    fn bisect(
+        &self,
+        m: Membership,
+        span: usize,
+        bounds: &BasisBounds,
+        range: [f64; 2],
+    ) -> [f64; 2] {
+        let [mut lo, mut hi] = range;
         for _ in 0..LEVEL_BISECTIONS {
             let mid = lo + (hi - lo) / 2.0;
             if self.inside(m, span, bounds, mid) {
@@ -168,7 +180,7 @@ impl<const D: usize> WeightedGrader<'_, '_, D> {
                 hi = mid;
             }
         }
-        hi
+        [lo, hi]
     }
 
     /// A level at which `q` is a member at the one parameter of `bounds`
@@ -182,16 +194,7 @@ impl<const D: usize> WeightedGrader<'_, '_, D> {
         if self.inside(m, span, bounds, top) {
             return top;
         }
-        let (mut lo, mut hi) = (floor, top);
-        for _ in 0..LEVEL_BISECTIONS {
-            let mid = lo + (hi - lo) / 2.0;
-            if self.inside(m, span, bounds, mid) {
-                lo = mid;
-            } else {
-                hi = mid;
-            }
-        }
-        lo
+        self.bisect(m, span, bounds, [floor, top])[0]
     }
 }
 
