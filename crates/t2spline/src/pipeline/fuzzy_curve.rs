@@ -6,7 +6,7 @@ use crate::error::Error;
 use crate::fuzzy::{Alpha, Axis, Height, Layer, Layers, Nt2Number, Nt2Point};
 use crate::nurbs::curve::{check_weights, rational_basis_span};
 use crate::nurbs::{Domain, KnotVector, NurbsCurve};
-use crate::pipeline::weight_numbers::{check_weight_numbers, is_crisp};
+use crate::pipeline::weight_numbers::{crisp_only, weights_of};
 use crate::pipeline::Solution;
 use crate::reduction::TypeReduction;
 
@@ -86,11 +86,10 @@ impl<const D: usize> FuzzyCurve<D> {
     /// [`Error::Weight`] or [`Error::WeightOutOfRange`] for the first value
     /// (the least first) that is not a valid weight.
     pub fn with_weight_numbers(self, numbers: Vec<Nt2Number>) -> Result<Self, Error> {
-        let weights = check_weight_numbers(&numbers, self.points.len())?;
-        let fuzzy = numbers.iter().any(|w| !is_crisp(w));
+        let (weights, weight_numbers) = weights_of(numbers, self.points.len())?;
         Ok(FuzzyCurve {
             weights,
-            weight_numbers: fuzzy.then_some(numbers),
+            weight_numbers,
             ..self
         })
     }
@@ -134,10 +133,7 @@ impl<const D: usize> FuzzyCurve<D> {
     /// `Err(`[`Error::FuzzyWeights`]`)` naming `what` where the weights are
     /// fuzzy: the guard of the operations that take crisp weights only.
     pub(crate) fn crisp_weights_for(&self, what: &'static str) -> Result<(), Error> {
-        match self.weight_numbers {
-            Some(_) => Err(Error::FuzzyWeights { what }),
-            None => Ok(()),
-        }
+        crisp_only(self.weight_numbers(), what)
     }
 
     /// The knot vector.

@@ -15,7 +15,7 @@ use crate::nurbs::{
     BoundingBox, ClosestSurfacePoint, Direction, Domain, KnotVector, NurbsSurface, SurfaceCurvature,
 };
 use crate::pipeline::fuzzy_ops::{common_heights, from_stacked_rows, stacked_rows};
-use crate::pipeline::weight_numbers::{check_weight_numbers, is_crisp};
+use crate::pipeline::weight_numbers::{crisp_only, weights_of};
 use crate::pipeline::{FuzzyCurve, SurfaceSolution};
 use crate::reduction::TypeReduction;
 
@@ -123,11 +123,10 @@ impl<const D: usize> FuzzySurface<D> {
     /// # Ok::<(), t2spline::Error>(())
     /// ```
     pub fn with_weight_numbers(self, numbers: Vec<Nt2Number>) -> Result<Self, Error> {
-        let weights = check_weight_numbers(&numbers, self.points.len())?;
-        let fuzzy = numbers.iter().any(|w| !is_crisp(w));
+        let (weights, weight_numbers) = weights_of(numbers, self.points.len())?;
         Ok(FuzzySurface {
             weights,
-            weight_numbers: fuzzy.then_some(numbers),
+            weight_numbers,
             ..self
         })
     }
@@ -142,10 +141,7 @@ impl<const D: usize> FuzzySurface<D> {
     /// `Err(`[`Error::FuzzyWeights`]`)` naming `what` where the weights are
     /// fuzzy: the guard of the operations that take crisp weights only.
     pub(crate) fn crisp_weights_for(&self, what: &'static str) -> Result<(), Error> {
-        match self.weight_numbers {
-            Some(_) => Err(Error::FuzzyWeights { what }),
-            None => Ok(()),
-        }
+        crisp_only(self.weight_numbers(), what)
     }
 
     /// A fuzzy surface from parts an exact algorithm derived from a valid one.

@@ -14,7 +14,7 @@ use crate::nurbs::curve::weight_problems;
 /// [`Error::Weight`] or [`Error::WeightOutOfRange`] for the first value that
 /// is not a valid weight, the upper cut's left feet first: every other value
 /// of a number lies between its upper feet.
-pub(crate) fn check_weight_numbers(numbers: &[Nt2Number], count: usize) -> Result<Vec<f64>, Error> {
+fn check_weight_numbers(numbers: &[Nt2Number], count: usize) -> Result<Vec<f64>, Error> {
     for layer in [Layer::UpperLeft, Layer::UpperRight] {
         let values: Vec<f64> = numbers.iter().map(|w| w.layer(layer)).collect();
         if let Some(e) = weight_problems(&values, count).into_iter().next() {
@@ -26,7 +26,31 @@ pub(crate) fn check_weight_numbers(numbers: &[Nt2Number], count: usize) -> Resul
 
 /// Whether every value of `number` is its crisp value: a crisp weight
 /// written as a number.
-pub(crate) fn is_crisp(number: &Nt2Number) -> bool {
+fn is_crisp(number: &Nt2Number) -> bool {
     let c = number.crisp();
     Layer::ALL.iter().all(|&l| number.layer(l) == c)
+}
+
+/// The weights of `count` control points from `numbers`: their crisp values,
+/// and the numbers themselves unless every one is crisp (then the weights
+/// are crisp).
+///
+/// # Errors
+/// As [`check_weight_numbers`].
+pub(crate) fn weights_of(
+    numbers: Vec<Nt2Number>,
+    count: usize,
+) -> Result<(Vec<f64>, Option<Vec<Nt2Number>>), Error> {
+    let weights = check_weight_numbers(&numbers, count)?;
+    let fuzzy = numbers.iter().any(|w| !is_crisp(w));
+    Ok((weights, fuzzy.then_some(numbers)))
+}
+
+/// `Err(`[`Error::FuzzyWeights`]`)` naming `what` where there are fuzzy
+/// weights: the guard of the operations that take crisp weights only.
+pub(crate) fn crisp_only(numbers: Option<&[Nt2Number]>, what: &'static str) -> Result<(), Error> {
+    match numbers {
+        Some(_) => Err(Error::FuzzyWeights { what }),
+        None => Ok(()),
+    }
 }
