@@ -37,12 +37,14 @@ mod contour;
 mod curve_envelope;
 mod cut_lines;
 mod envelope;
+mod grades;
 mod grid;
+mod intervals;
 pub(crate) mod membership;
 mod polygon;
 pub(crate) mod region;
 mod scan;
-pub(crate) mod section;
+mod section;
 pub(crate) mod surface;
 mod sweep;
 mod weighted_grades;
@@ -58,8 +60,8 @@ pub use envelope::{
     Envelope, EnvelopeBounds, EnvelopeLevel, PlanGrid, MAX_ENVELOPE_VALUES,
     MAX_FUZZY_ENVELOPE_CELLS,
 };
+pub use grades::Grades;
 pub use grid::{MembershipGrid, MAX_GRID_CELLS};
-pub use membership::Grades;
 pub use polygon::{Polygon, Region};
 pub use region::{Plane, DEFAULT_RELATIVE_TOLERANCE, LEAST_RELATIVE_TOLERANCE};
 pub use section::SectionLevel;

@@ -5,6 +5,7 @@ use crate::error::Error;
 use crate::fuzzy::{Alpha, Membership};
 use crate::pipeline::FuzzyCurve;
 use crate::set::cut_lines::MEMBERSHIPS;
+use crate::set::intervals::join;
 use crate::set::sweep::{hull_of, PlaneBox, Sweep, TooManyBoxes};
 use crate::set::weighted_section::weighted_section;
 use crate::set::weighted_terms::Weighted;
@@ -164,17 +165,4 @@ fn cut(b0: &PlaneBox, b1: &PlaneBox, x0: f64, slack: f64) -> Option<[f64; 2]> {
         }
     }
     (lo <= hi).then_some([lo, hi])
-}
-
-/// The union of `intervals`, joining those less than `gap` apart.
-pub(crate) fn join(mut intervals: Vec<[f64; 2]>, gap: f64) -> Vec<[f64; 2]> {
-    intervals.sort_by(|a, b| a[0].total_cmp(&b[0]));
-    let mut out: Vec<[f64; 2]> = Vec::new();
-    for iv in intervals {
-        match out.last_mut() {
-            Some(last) if iv[0] <= last[1] + gap => last[1] = last[1].max(iv[1]),
-            _ => out.push(iv),
-        }
-    }
-    out
 }

@@ -12,7 +12,8 @@ use crate::pipeline::FuzzySurface;
 use crate::set::bernstein::bezier_matrix;
 use crate::set::certify::{Form, Work, GRADE_TOLERANCE};
 use crate::set::cut_lines::{slack, CutLines, MEMBERSHIPS};
-use crate::set::membership::{check_point, sup_of, Grades};
+use crate::set::grades::Grades;
+use crate::set::membership::{check_point, sup_of};
 use crate::set::section::SectionLevel;
 
 /// Scan cells per patch and direction for the station's heights.

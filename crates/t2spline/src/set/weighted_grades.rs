@@ -26,7 +26,7 @@ use std::collections::BinaryHeap;
 
 use crate::fuzzy::Membership;
 use crate::set::certify::GRADE_TOLERANCE;
-use crate::set::membership::Grades;
+use crate::set::grades::Grades;
 use crate::set::weighted_terms::{BasisBounds, PieceSet, Weighted};
 
 /// Pieces examined per membership function before the largest upper bound

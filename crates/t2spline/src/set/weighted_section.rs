@@ -20,7 +20,7 @@
 use std::collections::VecDeque;
 
 use crate::fuzzy::{Alpha, Axis, Membership};
-use crate::set::section::join;
+use crate::set::intervals::join;
 use crate::set::weighted_terms::{PieceSet, Weighted};
 
 /// Pieces each knot span starts as.
