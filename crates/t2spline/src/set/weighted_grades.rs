@@ -21,10 +21,10 @@
 //! [`GRADE_TOLERANCE`] of the best grade found, and that upper bound is
 //! returned: never below the true grade, at most that far above it.
 
-use std::cmp::Ordering;
 use std::collections::BinaryHeap;
 
 use crate::fuzzy::Membership;
+use crate::heap_key::heap_ordered_by;
 use crate::set::certify::GRADE_TOLERANCE;
 use crate::set::grades::Grades;
 use crate::set::weighted_terms::{BasisBounds, PieceSet, Weighted};
@@ -59,22 +59,7 @@ struct Piece {
     s: [f64; 2],
 }
 
-impl PartialEq for Piece {
-    fn eq(&self, other: &Self) -> bool {
-        self.upper.total_cmp(&other.upper) == Ordering::Equal
-    }
-}
-impl Eq for Piece {}
-impl PartialOrd for Piece {
-    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
-        Some(self.cmp(other))
-    }
-}
-impl Ord for Piece {
-    fn cmp(&self, other: &Self) -> Ordering {
-        self.upper.total_cmp(&other.upper)
-    }
-}
+heap_ordered_by!(Piece, upper);
 
 impl<const D: usize> WeightedGrader<'_, '_, D> {
     /// The certified grade of `q` under `m` (module docs).
